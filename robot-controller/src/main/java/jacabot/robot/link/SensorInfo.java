@@ -1,0 +1,98 @@
+package jacabot.robot.link;
+
+import java.io.Serializable;
+import java.util.Arrays;
+
+/**
+ * One sensor reading as it travels from the robot controller to the middleware artifact
+ * (thesis Appendix A): the kind of reading and its value, which is a single double, a coordinate
+ * triple, an int array (image sections or RGB) or a double array.
+ *
+ * <p>Unlike the thesis' class, the double-array constructor keeps the id, and the value fields are
+ * primitive so that the deserialization filter only has to allow this class and primitive arrays.
+ */
+public final class SensorInfo implements Serializable {
+    private static final long serialVersionUID = 1L;
+    private static final int[] NO_INTS = {};
+    private static final double[] NO_DOUBLES = {};
+
+    private final int id;
+    private final double value;
+    private final int[] intValues;
+    private final double x;
+    private final double y;
+    private final double z;
+    private final double[] doubleValues;
+
+    private SensorInfo(int id, double value, int[] ints, double x, double y, double z, double[] doubles) {
+        this.id = id;
+        this.value = value;
+        this.intValues = ints;
+        this.x = x;
+        this.y = y;
+        this.z = z;
+        this.doubleValues = doubles;
+    }
+
+    /** A scalar reading, e.g. a distance sensor or the battery level. */
+    public SensorInfo(int id, double value) {
+        this(id, value, NO_INTS, 0, 0, 0, NO_DOUBLES);
+    }
+
+    /** An int-array reading, e.g. the RGB levels of the camera's image sections. */
+    public SensorInfo(int id, int[] values) {
+        this(id, 0, values.clone(), 0, 0, 0, NO_DOUBLES);
+    }
+
+    /** A coordinate triple, e.g. a GPS position. */
+    public SensorInfo(int id, double x, double y, double z) {
+        this(id, 0, NO_INTS, x, y, z, NO_DOUBLES);
+    }
+
+    /** A double-array reading. */
+    public SensorInfo(int id, double[] values) {
+        this(id, 0, NO_INTS, 0, 0, 0, values.clone());
+    }
+
+    public int getId() {
+        return id;
+    }
+
+    public double getVal() {
+        return value;
+    }
+
+    public double[] getCoord() {
+        return new double[] {x, y, z};
+    }
+
+    public int[] getIntValues() {
+        return intValues.clone();
+    }
+
+    public double[] getDoubleValues() {
+        return doubleValues.clone();
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        if (!(o instanceof SensorInfo)) {
+            return false;
+        }
+        SensorInfo s = (SensorInfo) o;
+        return id == s.id && Double.compare(value, s.value) == 0 && Arrays.equals(intValues, s.intValues)
+                && Double.compare(x, s.x) == 0 && Double.compare(y, s.y) == 0 && Double.compare(z, s.z) == 0
+                && Arrays.equals(doubleValues, s.doubleValues);
+    }
+
+    @Override
+    public int hashCode() {
+        return 31 * (31 * Integer.hashCode(id) + Double.hashCode(value)) + Arrays.hashCode(intValues);
+    }
+
+    @Override
+    public String toString() {
+        return "SensorInfo[id=" + id + ", value=" + value + ", ints=" + Arrays.toString(intValues)
+                + ", xyz=(" + x + "," + y + "," + z + "), doubles=" + Arrays.toString(doubleValues) + "]";
+    }
+}
