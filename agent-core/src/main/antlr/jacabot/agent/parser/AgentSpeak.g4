@@ -1,13 +1,96 @@
+/*
+ * AgentSpeak as Jason 3.2 reads it (our own grammar, written from Jason's documented syntax).
+ * Operator precedence, from loosest to tightest: | , & , not , relational (< <= > >= == \== = =..),
+ * + - , * / div mod , ** (right associative), unary + - .
+ */
 grammar AgentSpeak;
 
-// Placeholder for the foundation: literals only. Replaced by the full Jason grammar (issue 3).
-literalFile : literal EOF ;
-literal     : TILDE? ATOM ( '(' term ( ',' term )* ')' )? ;
-term        : literal | VAR | NUMBER | STRING ;
+agent       : component* EOF ;
+termOnly    : term EOF ;
+planOnly    : plan EOF ;
+component   : directive | belief | initialGoal | plan ;
 
-TILDE  : '~' ;
-ATOM   : [a-z] [a-zA-Z0-9_]* ;
-VAR    : [A-Z_] [a-zA-Z0-9_]* ;
-NUMBER : [0-9]+ ( '.' [0-9]+ )? ;
-STRING : '"' ( ~["\\\r\n] | '\\' . )* '"' ;
-WS     : [ \t\r\n]+ -> skip ;
+directive   : '{' literal '}' ;
+belief      : literal ( ':-' logExpr )? '.' ;
+initialGoal : '!' literal '.' ;
+
+plan        : planLabel? trigger ( ':' logExpr )? ( '<-' planBody )? '.' ;
+planLabel   : '@' ( literal | list ) ;
+trigger     : op=( '+' | '-' | '^' ) kind=( '!' | '?' )? literal ;
+
+// A plan body: formulas separated by ';'. if/while/for need no ';' after their closing brace.
+planBody    : bodyItem ( ';' bodyItem | {_input.LA(-1) == RBRACE}? bodyItem )* ';'? ;
+bodyItem    : statement | bodyFormula ;
+
+statement   : 'if' '(' logExpr ')' block elifPart* elsePart?    # ifStatement
+            | 'while' '(' logExpr ')' block                      # whileStatement
+            | 'for' '(' logExpr ')' block                        # forStatement
+            ;
+elifPart    : 'elif' '(' logExpr ')' block ;
+elsePart    : 'else' block ;
+block       : '{' planBody? RBRACE ;
+
+bodyFormula : '!' literal                       # achieve
+            | '!!' literal                      # achieveNewFocus
+            | '?' logExpr                       # testGoal
+            | '+' '+' logExpr                   # addBelNewFocus
+            | '+' '<' logExpr                   # addBelBegin
+            | '+' '>' logExpr                   # addBelEnd
+            | '-' '+' logExpr                   # delAddBel
+            | '-' '-' logExpr                   # delBelNewFocus
+            | '+' logExpr                       # addBel
+            | '-' logExpr                       # delBel
+            | logExpr                           # actionOrConstraint
+            ;
+
+logExpr     : logTerm ( '|' logExpr )? ;
+logTerm     : logFactor ( '&' logTerm )? ;
+logFactor   : 'not' logFactor                   # notFactor
+            | relExpr                           # relFactor
+            ;
+relExpr     : relOperand ( op=( '<' | '<=' | '>' | '>=' | '==' | '\\==' | '=' | '=..' ) relOperand )? ;
+relOperand  : arithExpr | STRING | list | braceTerm ;
+
+arithExpr   : arithTerm ( op+=( '+' | '-' ) arithTerm )* ;
+arithTerm   : arithFactor ( op+=( '*' | '/' | 'div' | 'mod' ) arithFactor )* ;
+arithFactor : arithSimple ( '**' arithFactor )? ;
+arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
+
+literal     : 'true'                                                       # trueLiteral
+            | 'false'                                                      # falseLiteral
+            | neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
+            | neg='~'? VAR list?                                           # varLiteral
+            | neg='~'? UNNAMEDVAR list?                                    # unnamedVarLiteral
+            ;
+terms       : term ( ',' term )* ;
+term        : logExpr ;
+
+list        : '[' ( listElement ( ',' listElement )* ( '|' listTail )? )? ']' ;
+listElement : arithExpr | STRING | list | braceTerm ;
+listTail    : VAR | UNNAMEDVAR | list ;
+
+// { +b }, { +!g : c <- body }, { a; b }, { h :- body }
+braceTerm   : '{' ( planLabel? trigger ( ':' logExpr )? ( '<-' planBody )?
+                  | planBody ( ':-' logExpr )? )? RBRACE ;
+
+RBRACE      : '}' ;
+NUMBER      : DIGIT+
+            | DIGIT* '.' DIGIT+ EXPONENT?
+            | DIGIT+ EXPONENT ;
+STRING      : '"' ( ~["\\\r\n] | '\\' . )* '"' ;
+ATOM        : ( LC_LETTER | '.' CHAR ) ( CHAR | '.' CHAR )*
+            | '\'' ~[']* '\'' ;
+VAR         : UC_LETTER CHAR* ;
+UNNAMEDVAR  : '_' CHAR* ;
+
+LINE_COMMENT  : '//' ~[\r\n]* -> skip ;
+BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+WS            : [ \t\r\n\f]+ -> skip ;
+// Anything else is a lexical error reported with its position.
+ERROR_CHAR    : . ;
+
+fragment EXPONENT  : [eE] [+-]? DIGIT+ ;
+fragment CHAR      : LC_LETTER | UC_LETTER | DIGIT | '_' ;
+fragment LC_LETTER : [a-z] ;
+fragment UC_LETTER : [A-Z] ;
+fragment DIGIT     : [0-9] ;

@@ -1,0 +1,28 @@
+/* Jason's project files (.mas2j), as far as a local infrastructure needs them. */
+grammar Mas2j;
+
+project      : 'MAS' ID '{' setting* '}' EOF ;
+setting      : 'infrastructure' ':' ID ( '(' ~')'* ')' )?           # infrastructure
+             | 'environment' ':' className arguments? ( 'at' STRING )?  # environment
+             | 'executionControl' ':' className arguments?          # executionControl
+             | 'agents' ':' agentDecl*                              # agents
+             | 'aslSourcePath' ':' STRING ( ';' STRING )* ';'?      # aslSourcePath
+             | 'classpath' ':' STRING ( ';' STRING )* ';'?          # classpath
+             | 'directives' ':' ~';'* ';'                           # directives
+             ;
+agentDecl    : ID fileName? optionList? archClass* ( '#' NUMBER )? ( 'at' STRING )? ';' ;
+fileName     : ( ID | STRING ) ( '.' ID )* ;
+optionList   : '[' ( option ( ',' option )* )? ']' ;
+option       : ID '=' ( ID | NUMBER | STRING ) ;
+archClass    : kind=( 'agentArchClass' | 'agentClass' | 'beliefBaseClass' ) className arguments? ;
+className    : ID ( '.' ID )* ;
+arguments    : '(' ( argument ( ',' argument )* )? ')' ;
+argument     : NUMBER | STRING | className | '-' NUMBER ;
+
+ID      : [a-zA-Z_] [a-zA-Z0-9_\-]* ;
+NUMBER  : [0-9]+ ( '.' [0-9]+ )? ;
+STRING  : '"' ( ~["\\\r\n] | '\\' . )* '"' ;
+LINE_COMMENT  : '//' ~[\r\n]* -> skip ;
+BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+WS      : [ \t\r\n\f]+ -> skip ;
+ERROR_CHAR : . ;

@@ -1,0 +1,161 @@
+package jacabot.agent.parser;
+
+import jacabot.agent.parser.AgentSpeakParser.ComponentContext;
+import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.antlr.v4.runtime.CharStreams;
+import org.antlr.v4.runtime.CommonTokenStream;
+
+/**
+ * Reads AgentSpeak: whole agent programs (with {@code { include("f.asl") }} directives),
+ * single terms and single plans. Every error carries {@code file:line:col}.
+ */
+public final class AslParser {
+    private final List<Path> sourcePath;
+
+    /** @param sourcePath directories searched for included files, after the including file's own */
+    public AslParser(List<Path> sourcePath) {
+        this.sourcePath = List.copyOf(sourcePath);
+    }
+
+    public AslParser() {
+        this(List.of());
+    }
+
+    /** Parses an agent program from a file. */
+    public AgentProgram parseFile(Path file) throws AslSyntaxException, IOException {
+        return parseFile(file, new HashSet<>());
+    }
+
+    private AgentProgram parseFile(Path file, Set<Path> including) throws AslSyntaxException, IOException {
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        Path key = file.toAbsolutePath().normalize();
+        including.add(key);
+        try {
+            return parse(text, file.toString(), file.toAbsolutePath().getParent(), including);
+        } finally {
+            including.remove(key);
+        }
+    }
+
+    /** Parses an agent program held in a string; {@code file} names it in error messages. */
+    public AgentProgram parse(String text, String file) throws AslSyntaxException {
+        try {
+            return parse(text, file, null, new HashSet<>());
+        } catch (IOException e) {
+            throw new AslSyntaxException(List.of(new SyntaxError(
+                    new jacabot.agent.syntax.SourceInfo(file, 0, 0), e.getMessage())));
+        }
+    }
+
+    private AgentProgram parse(String text, String file, Path dir, Set<Path> including)
+            throws AslSyntaxException, IOException {
+        var errors = new ErrorCollector(file);
+        AgentSpeakParser parser = newParser(text, errors);
+        var tree = parser.agent();
+        var builder = new AstBuilder(file, errors);
+        var beliefs = new ArrayList<Object>();
+        var goals = new ArrayList<Literal>();
+        var plans = new ArrayList<Plan>();
+        if (errors.errors().isEmpty()) {
+            for (ComponentContext c : tree.component()) {
+                if (c.belief() != null) {
+                    beliefs.add(builder.belief(c.belief()));
+                } else if (c.initialGoal() != null) {
+                    goals.add(builder.initialGoal(c.initialGoal()));
+                } else if (c.plan() != null) {
+                    plans.add(builder.plan(c.plan()));
+                } else {
+                    Term d = builder.literal(c.directive().literal());
+                    if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
+                            && l.arg(0) instanceof StringTerm name) {
+                        Path included = resolve(name.value(), dir);
+                        if (included == null) {
+                            errors.add(builder.where(c), "included file '" + name.value() + "' not found");
+                        } else if (including.contains(included.toAbsolutePath().normalize())) {
+                            errors.add(builder.where(c), "file '" + name.value() + "' includes itself");
+                        } else {
+                            AgentProgram sub = parseFile(included, including);
+                            beliefs.addAll(sub.beliefs());
+                            goals.addAll(sub.goals());
+                            plans.addAll(sub.plans());
+                        }
+                    } else {
+                        errors.add(builder.where(c), "unknown directive '" + d + "'");
+                    }
+                }
+            }
+        }
+        if (!errors.errors().isEmpty()) {
+            throw new AslSyntaxException(errors.errors());
+        }
+        return new AgentProgram(file, beliefs, goals, plans);
+    }
+
+    private Path resolve(String name, Path dir) {
+        var candidates = new ArrayList<Path>();
+        Path p = Path.of(name);
+        if (p.isAbsolute()) {
+            candidates.add(p);
+        } else {
+            if (dir != null) {
+                candidates.add(dir.resolve(name));
+            }
+            for (Path d : sourcePath) {
+                candidates.add(d.resolve(name));
+            }
+            candidates.add(p);
+        }
+        for (Path c : candidates) {
+            if (Files.isRegularFile(c)) {
+                return c;
+            }
+        }
+        return null;
+    }
+
+    /** Parses one term, e.g. for {@code .term2string(T, "f(x)")}. */
+    public Term parseTerm(String text) throws AslSyntaxException {
+        var errors = new ErrorCollector("<term>");
+        var parser = newParser(text, errors);
+        var tree = parser.termOnly();
+        Term t = errors.errors().isEmpty() ? new AstBuilder("<term>", errors).term(tree.term()) : null;
+        if (!errors.errors().isEmpty()) {
+            throw new AslSyntaxException(errors.errors());
+        }
+        return t;
+    }
+
+    /** Parses one plan, e.g. for {@code .add_plan("+!g <- ...")}. */
+    public Plan parsePlan(String text) throws AslSyntaxException {
+        var errors = new ErrorCollector("<plan>");
+        var parser = newParser(text, errors);
+        var tree = parser.planOnly();
+        Plan p = errors.errors().isEmpty() ? new AstBuilder("<plan>", errors).plan(tree.plan()) : null;
+        if (!errors.errors().isEmpty()) {
+            throw new AslSyntaxException(errors.errors());
+        }
+        return p;
+    }
+
+    private static AgentSpeakParser newParser(String text, ErrorCollector errors) {
+        var lexer = new AgentSpeakLexer(CharStreams.fromString(text));
+        lexer.removeErrorListeners();
+        lexer.addErrorListener(errors);
+        var parser = new AgentSpeakParser(new CommonTokenStream(lexer));
+        parser.removeErrorListeners();
+        parser.addErrorListener(errors);
+        return parser;
+    }
+}

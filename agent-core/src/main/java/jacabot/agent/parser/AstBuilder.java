@@ -1,0 +1,419 @@
+package jacabot.agent.parser;
+
+import jacabot.agent.parser.AgentSpeakParser.*;
+import jacabot.agent.syntax.ArithExpr;
+import jacabot.agent.syntax.ArithFunction;
+import jacabot.agent.syntax.ArithFunctions;
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.BodyStep.Kind;
+import jacabot.agent.syntax.BodyTerm;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.LogExpr;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.RelExpr;
+import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.SourceInfo;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.TriggerTerm;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.List;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.Token;
+
+/** Turns ANTLR parse trees into our immutable syntax (terms, plans, bodies). */
+final class AstBuilder {
+    private final String file;
+    private final ErrorCollector errors;
+    private long unnamedSerial;
+
+    AstBuilder(String file, ErrorCollector errors) {
+        this.file = file;
+        this.errors = errors;
+    }
+
+    SourceInfo where(ParserRuleContext ctx) {
+        return where(ctx.getStart());
+    }
+
+    SourceInfo where(Token t) {
+        return new SourceInfo(file, t.getLine(), t.getCharPositionInLine() + 1);
+    }
+
+    // ---- clauses -------------------------------------------------------------------------------
+
+    Object belief(BeliefContext ctx) {
+        Term head = literal(ctx.literal());
+        if (!(head instanceof Literal lit)) {
+            errors.add(where(ctx), "a belief must be a literal, not '" + head + "'");
+            return Literal.TRUE;
+        }
+        if (ctx.logExpr() != null) {
+            return new Rule(lit, logExpr(ctx.logExpr()));
+        }
+        return lit;
+    }
+
+    Literal initialGoal(InitialGoalContext ctx) {
+        Term g = literal(ctx.literal());
+        if (g instanceof Literal lit) {
+            return lit;
+        }
+        errors.add(where(ctx), "a variable cannot be a goal");
+        return Literal.TRUE;
+    }
+
+    Plan plan(PlanContext ctx) {
+        Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
+        Trigger trigger = trigger(ctx.trigger());
+        Term context = ctx.logExpr() == null ? null : logExpr(ctx.logExpr());
+        BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
+        SourceInfo src = where(ctx);
+        return new Plan(label, trigger, context, body, src);
+    }
+
+    Literal planLabel(PlanLabelContext ctx) {
+        if (ctx.literal() != null) {
+            Term t = literal(ctx.literal());
+            if (t instanceof Literal l) {
+                return l;
+            }
+            errors.add(where(ctx), "a plan label must be an atom");
+            return null;
+        }
+        // @[atomic]: an unnamed label, named by the plan library
+        return new Literal("undefined", List.of(), list(ctx.list()).elements(), false);
+    }
+
+    Trigger trigger(TriggerContext ctx) {
+        Trigger.Op op;
+        switch (ctx.op.getText()) {
+            case "+": op = Trigger.Op.ADD; break;
+            case "-": op = Trigger.Op.DEL; break;
+            default: op = Trigger.Op.GOAL_STATE; break;
+        }
+        Trigger.Type type = Trigger.Type.BELIEF;
+        if (ctx.kind != null) {
+            type = ctx.kind.getText().equals("!") ? Trigger.Type.ACHIEVE : Trigger.Type.TEST;
+        }
+        return new Trigger(op, type, literal(ctx.literal()));
+    }
+
+    // ---- plan bodies ---------------------------------------------------------------------------
+
+    BodyTerm planBody(PlanBodyContext ctx) {
+        var steps = new ArrayList<BodyStep>();
+        for (BodyItemContext item : ctx.bodyItem()) {
+            steps.add(item.statement() != null ? statement(item.statement()) : bodyFormula(item.bodyFormula()));
+        }
+        return new BodyTerm(steps);
+    }
+
+    private BodyTerm block(BlockContext ctx) {
+        return ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
+    }
+
+    private BodyStep statement(StatementContext ctx) {
+        SourceInfo src = where(ctx);
+        if (ctx instanceof IfStatementContext s) {
+            return ifChain(s.logExpr(), s.block(), s.elifPart(), 0, s.elsePart(), src);
+        }
+        if (ctx instanceof WhileStatementContext s) {
+            return new BodyStep(Kind.INTERNAL_ACTION,
+                    Literal.of(".loop", logExpr(s.logExpr()), block(s.block())), src);
+        }
+        ForStatementContext s = (ForStatementContext) ctx;
+        return new BodyStep(Kind.INTERNAL_ACTION,
+                Literal.of(".foreach", logExpr(s.logExpr()), block(s.block())), src);
+    }
+
+    /** if/elif/else becomes nested {@code .if_then_else(Cond, {Then}, {Else})}, as in Jason. */
+    private BodyStep ifChain(LogExprContext cond, BlockContext then, List<ElifPartContext> elifs, int next,
+            ElsePartContext elsePart, SourceInfo src) {
+        BodyTerm elseBody = null;
+        if (next < elifs.size()) {
+            ElifPartContext e = elifs.get(next);
+            elseBody = new BodyTerm(List.of(ifChain(e.logExpr(), e.block(), elifs, next + 1, elsePart, where(e))));
+        } else if (elsePart != null) {
+            elseBody = block(elsePart.block());
+        }
+        Term c = logExpr(cond);
+        Literal ite = elseBody == null
+                ? Literal.of(".if_then_else", c, block(then))
+                : Literal.of(".if_then_else", c, block(then), elseBody);
+        return new BodyStep(Kind.INTERNAL_ACTION, ite, src);
+    }
+
+    private BodyStep bodyFormula(BodyFormulaContext ctx) {
+        SourceInfo src = where(ctx);
+        if (ctx instanceof AchieveContext c) {
+            return new BodyStep(Kind.ACHIEVE, literal(c.literal()), src);
+        }
+        if (ctx instanceof AchieveNewFocusContext c) {
+            return new BodyStep(Kind.ACHIEVE_NEW_FOCUS, literal(c.literal()), src);
+        }
+        if (ctx instanceof TestGoalContext c) {
+            return new BodyStep(Kind.TEST, logExpr(c.logExpr()), src);
+        }
+        if (ctx instanceof ActionOrConstraintContext c) {
+            Term t = logExpr(c.logExpr());
+            if (t instanceof Literal l) {
+                return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
+            }
+            if (t instanceof Var) {
+                return new BodyStep(Kind.ACTION, t, src);
+            }
+            if (t instanceof RelExpr || t instanceof LogExpr) {
+                return new BodyStep(Kind.CONSTRAINT, t, src);
+            }
+            errors.add(src, "'" + t + "' is not a valid plan body formula");
+            return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);
+        }
+        Kind kind;
+        LogExprContext operand;
+        if (ctx instanceof AddBelContext c) {
+            kind = Kind.ADD_BEL;
+            operand = c.logExpr();
+        } else if (ctx instanceof AddBelBeginContext c) {
+            kind = Kind.ADD_BEL;
+            operand = c.logExpr();
+        } else if (ctx instanceof AddBelEndContext c) {
+            kind = Kind.ADD_BEL_END;
+            operand = c.logExpr();
+        } else if (ctx instanceof AddBelNewFocusContext c) {
+            kind = Kind.ADD_BEL_NEW_FOCUS;
+            operand = c.logExpr();
+        } else if (ctx instanceof DelBelContext c) {
+            kind = Kind.DEL_BEL;
+            operand = c.logExpr();
+        } else if (ctx instanceof DelBelNewFocusContext c) {
+            kind = Kind.DEL_BEL_NEW_FOCUS;
+            operand = c.logExpr();
+        } else {
+            kind = Kind.DEL_ADD_BEL;
+            operand = ((DelAddBelContext) ctx).logExpr();
+        }
+        Term t = logExpr(operand);
+        if (!(t instanceof Literal) && !(t instanceof Var)) {
+            errors.add(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
+            t = Literal.TRUE;
+        } else if (t instanceof Literal l && l.isInternalAction()) {
+            errors.add(src, "wrong combination of operator '" + kind.prefix() + "' and internal action " + l);
+        }
+        return new BodyStep(kind, t, src);
+    }
+
+    // ---- logical and arithmetic expressions ----------------------------------------------------
+
+    Term logExpr(LogExprContext ctx) {
+        Term left = logTerm(ctx.logTerm());
+        return ctx.logExpr() == null ? left : new LogExpr(LogExpr.Op.OR, left, logExpr(ctx.logExpr()));
+    }
+
+    private Term logTerm(LogTermContext ctx) {
+        Term left = logFactor(ctx.logFactor());
+        return ctx.logTerm() == null ? left : new LogExpr(LogExpr.Op.AND, left, logTerm(ctx.logTerm()));
+    }
+
+    private Term logFactor(LogFactorContext ctx) {
+        if (ctx instanceof NotFactorContext n) {
+            return LogExpr.not(logFactor(n.logFactor()));
+        }
+        return relExpr(((RelFactorContext) ctx).relExpr());
+    }
+
+    private Term relExpr(RelExprContext ctx) {
+        Term left = relOperand(ctx.relOperand(0));
+        if (ctx.op == null) {
+            return left;
+        }
+        Term right = relOperand(ctx.relOperand(1));
+        RelExpr.Op op;
+        switch (ctx.op.getText()) {
+            case "<": op = RelExpr.Op.LT; break;
+            case "<=": op = RelExpr.Op.LTE; break;
+            case ">": op = RelExpr.Op.GT; break;
+            case ">=": op = RelExpr.Op.GTE; break;
+            case "==": op = RelExpr.Op.EQ; break;
+            case "\\==": op = RelExpr.Op.DIF; break;
+            case "=": op = RelExpr.Op.UNIFY; break;
+            default: op = RelExpr.Op.UNIV; break;
+        }
+        return new RelExpr(op, left, right);
+    }
+
+    private Term relOperand(RelOperandContext ctx) {
+        if (ctx.arithExpr() != null) {
+            return arithExpr(ctx.arithExpr());
+        }
+        if (ctx.STRING() != null) {
+            return string(ctx.STRING().getText());
+        }
+        if (ctx.list() != null) {
+            return list(ctx.list());
+        }
+        return braceTerm(ctx.braceTerm());
+    }
+
+    private Term arithExpr(ArithExprContext ctx) {
+        Term t = arithTerm(ctx.arithTerm(0));
+        for (int i = 1; i < ctx.arithTerm().size(); i++) {
+            var op = ctx.op.get(i - 1).getText().equals("+") ? ArithExpr.Op.PLUS : ArithExpr.Op.MINUS;
+            t = new ArithExpr(op, t, arithTerm(ctx.arithTerm(i)));
+        }
+        return t;
+    }
+
+    private Term arithTerm(ArithTermContext ctx) {
+        Term t = arithFactor(ctx.arithFactor(0));
+        for (int i = 1; i < ctx.arithFactor().size(); i++) {
+            ArithExpr.Op op;
+            switch (ctx.op.get(i - 1).getText()) {
+                case "*": op = ArithExpr.Op.TIMES; break;
+                case "/": op = ArithExpr.Op.DIV; break;
+                case "div": op = ArithExpr.Op.INTDIV; break;
+                default: op = ArithExpr.Op.MOD; break;
+            }
+            t = new ArithExpr(op, t, arithFactor(ctx.arithFactor(i)));
+        }
+        return t;
+    }
+
+    private Term arithFactor(ArithFactorContext ctx) {
+        Term base = arithSimple(ctx.arithSimple());
+        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, base, arithFactor(ctx.arithFactor()));
+    }
+
+    private Term arithSimple(ArithSimpleContext ctx) {
+        Term t;
+        if (ctx.NUMBER() != null) {
+            t = new NumberTerm(Double.parseDouble(ctx.NUMBER().getText()));
+        } else if (ctx.logExpr() != null) {
+            t = logExpr(ctx.logExpr());
+        } else {
+            t = literal(ctx.literal());
+            if (t instanceof Literal l && !l.negated() && l.annots().isEmpty()
+                    && ArithFunctions.isFunction(l.functor(), l.arity())) {
+                t = new ArithFunction(l.functor(), l.args());
+            }
+        }
+        if (ctx.sign == null) {
+            return t;
+        }
+        var op = ctx.sign.getText().equals("-") ? ArithExpr.Op.MINUS : ArithExpr.Op.PLUS;
+        if (t instanceof NumberTerm n && op == ArithExpr.Op.MINUS) {
+            return new NumberTerm(-n.value());
+        }
+        return ArithExpr.unary(op, t);
+    }
+
+    // ---- literals and terms --------------------------------------------------------------------
+
+    Term literal(LiteralContext ctx) {
+        if (ctx instanceof TrueLiteralContext) {
+            return Literal.TRUE;
+        }
+        if (ctx instanceof FalseLiteralContext) {
+            return Literal.FALSE;
+        }
+        if (ctx instanceof VarLiteralContext v) {
+            return new Var(v.VAR().getText());
+        }
+        if (ctx instanceof UnnamedVarLiteralContext u) {
+            String name = u.UNNAMEDVAR().getText();
+            return name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+        }
+        StructureContext s = (StructureContext) ctx;
+        String functor = s.name.getText();
+        List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
+        List<Term> annots = s.list() == null ? List.of() : list(s.list()).elements();
+        boolean negated = s.neg != null;
+        if (functor.indexOf('.') >= 0 && functor.charAt(0) != '\'') {
+            if (!annots.isEmpty()) {
+                errors.add(where(ctx), "internal actions cannot have annotations");
+            }
+            if (negated) {
+                errors.add(where(ctx), "internal actions cannot be negated");
+            }
+        }
+        return new Literal(functor, args, annots, negated);
+    }
+
+    private List<Term> terms(TermsContext ctx) {
+        var out = new ArrayList<Term>(ctx.term().size());
+        for (TermContext t : ctx.term()) {
+            out.add(logExpr(t.logExpr()));
+        }
+        return out;
+    }
+
+    Term term(TermContext ctx) {
+        return logExpr(ctx.logExpr());
+    }
+
+    ListTerm list(ListContext ctx) {
+        var items = new ArrayList<Term>();
+        for (ListElementContext e : ctx.listElement()) {
+            if (e.arithExpr() != null) {
+                items.add(arithExpr(e.arithExpr()));
+            } else if (e.STRING() != null) {
+                items.add(string(e.STRING().getText()));
+            } else if (e.list() != null) {
+                items.add(list(e.list()));
+            } else {
+                items.add(braceTerm(e.braceTerm()));
+            }
+        }
+        Term tail = ListTerm.EMPTY;
+        ListTailContext t = ctx.listTail();
+        if (t != null) {
+            if (t.VAR() != null) {
+                tail = new Var(t.VAR().getText());
+            } else if (t.UNNAMEDVAR() != null) {
+                String name = t.UNNAMEDVAR().getText();
+                tail = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+            } else {
+                tail = list(t.list());
+            }
+        }
+        return ListTerm.of(items, tail);
+    }
+
+    private Term braceTerm(BraceTermContext ctx) {
+        if (ctx.trigger() != null) {
+            Trigger trigger = trigger(ctx.trigger());
+            boolean hasContext = ctx.logExpr() != null;
+            boolean hasBody = ctx.planBody() != null;
+            if (ctx.planLabel() == null && !hasContext && !hasBody) {
+                return new TriggerTerm(trigger);
+            }
+            Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
+            Term context = hasContext ? logExpr(ctx.logExpr()) : null;
+            BodyTerm body = hasBody ? planBody(ctx.planBody()) : BodyTerm.EMPTY;
+            return new PlanTerm(new Plan(label, trigger, context, body, where(ctx)));
+        }
+        if (ctx.planBody() == null) {
+            return BodyTerm.EMPTY;
+        }
+        BodyTerm body = planBody(ctx.planBody());
+        if (ctx.logExpr() != null) {
+            // { head :- body }: a rule as a term
+            if (body.steps().size() == 1 && body.steps().get(0).term() instanceof Literal head) {
+                return Literal.of("rule__", head, logExpr(ctx.logExpr()));
+            }
+            errors.add(where(ctx), "wrong place for a rule");
+        }
+        return body;
+    }
+
+    /** Jason reads only two escapes in strings: {@code \\n} and {@code \\"}. */
+    static StringTerm string(String token) {
+        String raw = token.substring(1, token.length() - 1);
+        return new StringTerm(raw.replace("\\n", "\n").replace("\\\"", "\""));
+    }
+}

@@ -1,0 +1,259 @@
+package jacabot.agent.runtime;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.AgentArch;
+import jacabot.agent.semantics.InternalAction;
+import jacabot.agent.semantics.Message;
+import jacabot.agent.stdlib.Stdlib;
+import jacabot.agent.syntax.AgentProgram;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Function;
+
+/**
+ * Jason's local infrastructure: agents in one JVM, messages by direct delivery, one console.
+ *
+ * <p>Two ways to run. {@link #runThreads()}: each agent on its own thread, free running, sleeping
+ * when it has nothing to do (Jason's default). {@link #runUntilQuiescent(long)} and
+ * {@link #runStepping()}: one thread runs the agents' cycles in a fixed round-robin order, so the
+ * same program and seed give the same run (used for lockstep simulation and tests).
+ */
+public final class LocalMAS {
+    private final Map<String, Agent> agents = new LinkedHashMap<>();
+    private final Map<String, Waker> wakers = new ConcurrentHashMap<>();
+    private final Clock clock;
+    private final PrintStream out;
+    private final long seed;
+    private Environment environment = new DefaultEnvironment();
+    private final ReentrantLock stepLock = new ReentrantLock();
+    private final Condition stepCondition = stepLock.newCondition();
+    private volatile boolean stopped;
+    private volatile boolean wokenInStepping;
+    private final CountDownLatch finished = new CountDownLatch(1);
+
+    /** Wakes one sleeping agent thread. */
+    private static final class Waker {
+        final ReentrantLock lock = new ReentrantLock();
+        final Condition condition = lock.newCondition();
+        volatile boolean woken;
+    }
+
+    public LocalMAS(Clock clock, PrintStream out, long seed) {
+        this.clock = clock;
+        this.out = out;
+        this.seed = seed;
+    }
+
+    public LocalMAS() {
+        this(Clock.wall(), System.out, 0);
+    }
+
+    public void setEnvironment(Environment environment, List<String> args) {
+        this.environment = environment;
+        environment.init(this, args);
+    }
+
+    public Environment environment() {
+        return environment;
+    }
+
+    public Clock clock() {
+        return clock;
+    }
+
+    /**
+     * Creates an agent running a program. {@code archFactory} may wrap the local architecture
+     * (e.g. the JaCa bridge); null keeps it.
+     */
+    public synchronized Agent createAgent(String name, AgentProgram program, AslParser parser,
+            Function<LocalArch, AgentArch> archFactory) {
+        if (agents.containsKey(name)) {
+            throw new IllegalArgumentException("an agent named '" + name + "' already exists");
+        }
+        LocalArch local = new LocalArch(this, name);
+        AgentArch arch = archFactory == null ? local : archFactory.apply(local);
+        Map<String, InternalAction> ias = Stdlib.defaults();
+        Agent ag = new Agent(name, arch, ias, seed + agents.size(), parser);
+        agents.put(name, ag);
+        wakers.put(name, new Waker());
+        ag.load(program);
+        return ag;
+    }
+
+    public synchronized Agent agent(String name) {
+        return agents.get(name);
+    }
+
+    public synchronized List<String> agentNames() {
+        return new ArrayList<>(agents.keySet());
+    }
+
+    private synchronized List<Agent> agentList() {
+        return new ArrayList<>(agents.values());
+    }
+
+    boolean deliver(Message m) {
+        Agent receiver = agent(m.receiver());
+        if (receiver == null) {
+            return false;
+        }
+        receiver.deliver(m);
+        return true;
+    }
+
+    /** Prints a console line; lines of different agents never interleave. */
+    public void console(String line) {
+        synchronized (out) {
+            out.println(line);
+            out.flush();
+        }
+    }
+
+    public boolean isStopped() {
+        return stopped;
+    }
+
+    /** Stops every agent ({@code .stopMAS}); the run methods return. */
+    public void stop() {
+        stopped = true;
+        for (Agent a : agentList()) {
+            a.stop();
+        }
+        for (String name : wakers.keySet()) {
+            wake(name);
+        }
+        wakeStepping();
+        environment.stop();
+        finished.countDown();
+    }
+
+    void wake(String name) {
+        Waker w = wakers.get(name);
+        if (w != null) {
+            w.lock.lock();
+            try {
+                w.woken = true;
+                w.condition.signalAll();
+            } finally {
+                w.lock.unlock();
+            }
+        }
+        wakeStepping();
+    }
+
+    private void wakeStepping() {
+        stepLock.lock();
+        try {
+            wokenInStepping = true;
+            stepCondition.signalAll();
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    // ---- stepping ---------------------------------------------------------------------------------
+
+    /**
+     * Runs reasoning cycles, agent after agent in a fixed order, until every agent can sleep or
+     * {@code budget} cycles have run. {@return the number of cycles run}
+     */
+    public long runUntilQuiescent(long budget) {
+        long run = 0;
+        List<Agent> list = agentList();
+        boolean any = true;
+        while (any && run < budget && !stopped) {
+            any = false;
+            for (Agent a : list) {
+                if (stopped || run >= budget) {
+                    break;
+                }
+                if (!a.canSleep()) {
+                    a.reasoningCycle();
+                    run++;
+                    any = true;
+                }
+            }
+        }
+        return run;
+    }
+
+    /** Runs in stepping mode until {@code .stopMAS}, sleeping while every agent is idle. */
+    public void runStepping() throws InterruptedException {
+        while (!stopped) {
+            runUntilQuiescent(Long.MAX_VALUE);
+            if (stopped) {
+                break;
+            }
+            long due = Long.MAX_VALUE;
+            for (Agent a : agentList()) {
+                due = Math.min(due, a.nextTimerDue());
+            }
+            stepLock.lock();
+            try {
+                if (!wokenInStepping) {
+                    long wait = due == Long.MAX_VALUE ? 1000 : Math.max(0, due - clock.millis());
+                    if (wait > 0) {
+                        stepCondition.await(wait, TimeUnit.MILLISECONDS);
+                    }
+                }
+                wokenInStepping = false;
+            } finally {
+                stepLock.unlock();
+            }
+        }
+    }
+
+    // ---- threads ----------------------------------------------------------------------------------
+
+    /** Runs each agent on its own thread until {@code .stopMAS}. */
+    public void runThreads() throws InterruptedException {
+        var threads = new ArrayList<Thread>();
+        for (Agent a : agentList()) {
+            Thread t = new Thread(() -> agentLoop(a), "agent-" + a.name());
+            t.setDaemon(true);
+            threads.add(t);
+        }
+        threads.forEach(Thread::start);
+        finished.await();
+        for (Thread t : threads) {
+            t.join(2000);
+        }
+    }
+
+    private void agentLoop(Agent a) {
+        Waker w = wakers.get(a.name());
+        try {
+            while (!stopped && !a.isStopped()) {
+                if (!a.canSleep()) {
+                    a.reasoningCycle();
+                    continue;
+                }
+                w.lock.lock();
+                try {
+                    if (!w.woken && a.canSleep()) {
+                        long due = a.nextTimerDue();
+                        long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, due - clock.millis());
+                        w.condition.await(wait, TimeUnit.MILLISECONDS);
+                    }
+                    w.woken = false;
+                } finally {
+                    w.lock.unlock();
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (RuntimeException e) {
+            console("[" + a.name() + "] *** internal error: " + e);
+            e.printStackTrace();
+        }
+    }
+}

@@ -1,0 +1,148 @@
+package jacabot.agent.runtime;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.semantics.AgentArch;
+import jacabot.agent.syntax.AgentProgram;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * Builds a {@link LocalMAS} from a {@code .mas2j} project or a single {@code .asl} file (a
+ * one-agent system named after the file) and runs it until {@code .stopMAS}.
+ */
+public final class MasLauncher {
+    /** A problem with the user's input: printed without a stack trace, exit code 2. */
+    public static final class UserError extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        public UserError(String message) {
+            super(message);
+        }
+    }
+
+    private final PrintStream out;
+    private final long seed;
+    private final boolean stepping;
+
+    public MasLauncher(PrintStream out, long seed, boolean stepping) {
+        this.out = out;
+        this.seed = seed;
+        this.stepping = stepping;
+    }
+
+    /** The agent name for a lone {@code .asl} file: {@code 23_interleave.asl} runs as {@code interleave}. */
+    public static String agentNameFor(Path asl) {
+        String base = asl.getFileName().toString().replaceFirst("\\.asl$", "");
+        base = base.replaceFirst("^[0-9]+_", "");
+        if (base.isEmpty()) {
+            return "agent";
+        }
+        return Character.toLowerCase(base.charAt(0)) + base.substring(1);
+    }
+
+    /** Loads the system described by a file. */
+    public LocalMAS load(Path file) throws UserError {
+        if (!Files.isRegularFile(file)) {
+            throw new UserError(file + ": no such file");
+        }
+        String name = file.getFileName().toString();
+        try {
+            var mas = new LocalMAS(Clock.wall(), out, seed);
+            if (name.endsWith(".mas2j")) {
+                MasProject project = Mas2jReader.read(file);
+                if (project.environment() != null) {
+                    mas.setEnvironment(newInstance(project.environment(), Environment.class), project.environmentArgs());
+                } else {
+                    mas.setEnvironment(new DefaultEnvironment(), List.of());
+                }
+                var sourcePath = new ArrayList<Path>(project.aslSourcePath());
+                sourcePath.add(project.directory());
+                var parser = new AslParser(sourcePath);
+                for (MasProject.AgentSpec spec : project.agents()) {
+                    Path asl = locate(spec.file(), sourcePath);
+                    AgentProgram program = parser.parseFile(asl);
+                    Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
+                    for (int k = 1; k <= spec.instances(); k++) {
+                        String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
+                        mas.createAgent(agName, program, parser, arch);
+                    }
+                }
+            } else {
+                mas.setEnvironment(new DefaultEnvironment(), List.of());
+                var parser = new AslParser(List.of(file.toAbsolutePath().getParent()));
+                AgentProgram program = parser.parseFile(file);
+                mas.createAgent(agentNameFor(file), program, parser, null);
+            }
+            return mas;
+        } catch (AslSyntaxException e) {
+            throw new UserError(e.getMessage());
+        } catch (NoSuchFileException e) {
+            throw new UserError(e.getFile() + ": no such file");
+        } catch (IOException e) {
+            throw new UserError(file + ": " + e.getMessage());
+        }
+    }
+
+    /** Loads and runs until {@code .stopMAS}. */
+    public void run(Path file) throws UserError, InterruptedException {
+        LocalMAS mas = load(file);
+        if (stepping) {
+            mas.runStepping();
+        } else {
+            mas.runThreads();
+        }
+    }
+
+    private static Path locate(String file, List<Path> sourcePath) throws UserError {
+        for (Path dir : sourcePath) {
+            Path p = dir.resolve(file);
+            if (Files.isRegularFile(p)) {
+                return p;
+            }
+        }
+        throw new UserError("agent source '" + file + "' not found in " + sourcePath);
+    }
+
+    private static <T> T newInstance(String className, Class<T> type) throws UserError {
+        try {
+            Class<?> c = Class.forName(className);
+            if (!type.isAssignableFrom(c)) {
+                throw new UserError("class " + className + " is not a " + type.getSimpleName());
+            }
+            return type.cast(c.getConstructor().newInstance());
+        } catch (ClassNotFoundException e) {
+            throw new UserError("class " + className + " not found");
+        } catch (ReflectiveOperationException e) {
+            throw new UserError("cannot create " + className + ": " + e);
+        }
+    }
+
+    /** An {@code agentArchClass} must have a public constructor taking the {@link LocalArch} it wraps. */
+    private static Function<LocalArch, AgentArch> archFactory(String className) throws UserError {
+        try {
+            Class<?> c = Class.forName(className);
+            if (!AgentArch.class.isAssignableFrom(c)) {
+                throw new UserError("class " + className + " is not an agent architecture");
+            }
+            var ctor = c.getConstructor(LocalArch.class);
+            return local -> {
+                try {
+                    return (AgentArch) ctor.newInstance(local);
+                } catch (ReflectiveOperationException e) {
+                    throw new IllegalStateException("cannot create " + className, e);
+                }
+            };
+        } catch (ClassNotFoundException e) {
+            throw new UserError("agent architecture class " + className + " not found");
+        } catch (NoSuchMethodException e) {
+            throw new UserError("agent architecture class " + className + " needs a constructor (LocalArch)");
+        }
+    }
+}

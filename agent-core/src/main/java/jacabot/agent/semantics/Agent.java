@@ -1,0 +1,388 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.runtime.Clock;
+import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashSet;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.Random;
+import java.util.Set;
+import java.util.concurrent.ConcurrentLinkedQueue;
+
+/**
+ * A BDI agent: beliefs, plans, circumstance and the reasoning cycle that runs them. All of its
+ * state is its own (no statics): ids, fresh variables, timers and the random generator.
+ *
+ * <p>Thread model: one thread at a time runs {@link #reasoningCycle()}; other threads talk to the
+ * agent only through {@link #actionExecuted}, {@link #deliver(Message)} and
+ * {@link #runAtBeginOfNextCycle(Runnable)}, which are thread-safe.
+ */
+public final class Agent {
+    private final String name;
+    private final AgentArch arch;
+    private final BeliefBase beliefBase = new BeliefBase();
+    private final PlanLibrary planLibrary = new PlanLibrary();
+    private final Circumstance circumstance = new Circumstance();
+    private final Solver solver = new Solver(this);
+    private final ReasoningCycle cycle = new ReasoningCycle(this);
+    private final Map<String, InternalAction> internalActions;
+    private final ArithEvaluator arith = new ArithEvaluator(this);
+    private final ConcurrentLinkedQueue<Runnable> beginOfCycle = new ConcurrentLinkedQueue<>();
+    private final PriorityQueue<Timer> timers = new PriorityQueue<>();
+    private final Set<Literal> perceptBeliefs = new HashSet<>();
+    private final AslParser parser;
+    private Random random;
+    private long freshSerial;
+    private int intentionSerial;
+    private long timerSerial;
+    private int messageSerial;
+    private long cycles;
+    private volatile boolean stopped;
+
+    private record Timer(long due, long seq, Runnable task) implements Comparable<Timer> {
+        @Override
+        public int compareTo(Timer o) {
+            return due != o.due ? Long.compare(due, o.due) : Long.compare(seq, o.seq);
+        }
+    }
+
+    public Agent(String name, AgentArch arch, Map<String, InternalAction> internalActions, long seed,
+            AslParser parser) {
+        this.name = name;
+        this.arch = arch;
+        this.internalActions = internalActions;
+        this.random = new Random(seed);
+        this.parser = parser;
+    }
+
+    /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */
+    public void load(AgentProgram program) {
+        for (Plan p : program.plans()) {
+            planLibrary.add(p, false);
+        }
+        for (Object b : program.beliefs()) {
+            if (b instanceof Rule r) {
+                Literal head = r.head().hasSource() ? r.head() : r.head().addAnnot(Literal.SOURCE_SELF);
+                beliefBase.addRule(new Rule(head, r.body()));
+            } else {
+                Literal l = (Literal) b;
+                Literal bel = l.hasSource() ? l : l.addAnnot(Literal.SOURCE_SELF);
+                Literal added = beliefBase.add(bel, true);
+                if (added != null) {
+                    circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                }
+            }
+        }
+        for (Literal g : program.goals()) {
+            Literal goal = g.hasSource() ? g : g.addAnnot(Literal.SOURCE_SELF);
+            circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal), null));
+        }
+    }
+
+    // ---- the reasoning cycle ------------------------------------------------------------------
+
+    /** Runs one reasoning cycle (sense, deliberate, act). */
+    public void reasoningCycle() {
+        cycles++;
+        cycle.run();
+    }
+
+    /** {@return whether a cycle now would do nothing (the agent may sleep until woken)} */
+    public boolean canSleep() {
+        if (!beginOfCycle.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()) {
+            return false;
+        }
+        if (nextTimerDue() <= clock().millis()) {
+            return false;
+        }
+        if (circumstance.isAtomicIntentionSuspended()) {
+            return true;
+        }
+        return !circumstance.hasEvent() && !circumstance.hasRunningIntention();
+    }
+
+    /** {@return when the earliest timer is due, or {@code Long.MAX_VALUE}} */
+    public synchronized long nextTimerDue() {
+        Timer t = timers.peek();
+        return t == null ? Long.MAX_VALUE : t.due;
+    }
+
+    public long cycles() {
+        return cycles;
+    }
+
+    public boolean isStopped() {
+        return stopped;
+    }
+
+    public void stop() {
+        stopped = true;
+    }
+
+    /** Schedules a task for the start of the next cycle's deliberation (any thread). */
+    public void runAtBeginOfNextCycle(Runnable task) {
+        beginOfCycle.add(task);
+        arch.wake();
+    }
+
+    void runBeginOfCycleTasks() {
+        Runnable r;
+        while ((r = beginOfCycle.poll()) != null) {
+            r.run();
+        }
+    }
+
+    /** Runs {@code task} at the start of a cycle once the clock reaches {@code due} (ms). */
+    public synchronized void schedule(long due, Runnable task) {
+        timers.add(new Timer(due, timerSerial++, task));
+    }
+
+    /** Fires the timers that are due: their tasks run at the start of this cycle's deliberation. */
+    void fireDueTimers() {
+        long now = clock().millis();
+        while (true) {
+            Timer t;
+            synchronized (this) {
+                t = timers.peek();
+                if (t == null || t.due > now) {
+                    return;
+                }
+                timers.poll();
+            }
+            beginOfCycle.add(t.task);
+        }
+    }
+
+    // ---- architecture callbacks (thread-safe) ------------------------------------------------
+
+    /** Called by the architecture when an environment action has finished (any thread). */
+    public void actionExecuted(ActionExec action) {
+        circumstance.addFeedbackAction(action);
+        arch.wake();
+    }
+
+    /** Delivers a message to this agent's mailbox (any thread). */
+    public void deliver(Message m) {
+        circumstance.addMessage(m);
+        arch.wake();
+    }
+
+    // ---- accessors ----------------------------------------------------------------------------
+
+    public String name() {
+        return name;
+    }
+
+    public AgentArch arch() {
+        return arch;
+    }
+
+    public BeliefBase beliefBase() {
+        return beliefBase;
+    }
+
+    public PlanLibrary planLibrary() {
+        return planLibrary;
+    }
+
+    public Circumstance circumstance() {
+        return circumstance;
+    }
+
+    public Solver solver() {
+        return solver;
+    }
+
+    public Clock clock() {
+        return arch.clock();
+    }
+
+    public Random random() {
+        return random;
+    }
+
+    public void setRandomSeed(long seed) {
+        random = new Random(seed);
+    }
+
+    public AslParser parser() {
+        return parser;
+    }
+
+    ReasoningCycle cycle() {
+        return cycle;
+    }
+
+    public InternalAction internalAction(String functor) {
+        return internalActions.get(functor);
+    }
+
+    /** {@return a variable that no other variable equals} */
+    public Var freshVar(Var like) {
+        return new Var(like.name(), ++freshSerial);
+    }
+
+    int nextIntentionId() {
+        return ++intentionSerial;
+    }
+
+    public String nextMessageId() {
+        return "mid" + (++messageSerial);
+    }
+
+    /** {@return a unifier that evaluates this agent's arithmetic functions} */
+    public Unifier newUnifier() {
+        var u = new Unifier();
+        u.setEvaluator(arith);
+        return u;
+    }
+
+    /** Applies the unifier to the arguments, unless the action takes them raw. */
+    public Term[] prepareArguments(InternalAction ia, Literal l, Unifier u) throws IaException {
+        int n = l.arity();
+        if (n < ia.minArgs() || n > ia.maxArgs()) {
+            throw IaException.wrongArgumentCount(l.functor(), n);
+        }
+        Term[] args = new Term[n];
+        for (int i = 0; i < n; i++) {
+            args[i] = ia.appliesArguments() ? u.apply(l.arg(i)) : l.arg(i);
+        }
+        return args;
+    }
+
+    // ---- console ------------------------------------------------------------------------------
+
+    /** Prints a console line as {@code [name] text}, as Jason's console does. */
+    public void print(String text) {
+        arch.console("[" + name + "] " + text);
+    }
+
+    /** Prints a warning on the console, in the same form. */
+    public void warn(String text) {
+        arch.console("[" + name + "] " + text);
+    }
+
+    // ---- belief revision --------------------------------------------------------------------
+
+    /**
+     * Adds a belief. {@return the literal of the {@code +b} event, or null when nothing changed}
+     */
+    public Literal addBelief(Literal l, boolean atEnd) {
+        return beliefBase.add(l, atEnd);
+    }
+
+    /**
+     * Removes the first belief matching {@code l} (annotations as a subset): its annotations in
+     * {@code l} go, and the belief goes when it has no source left. {@return the removed part}
+     */
+    public Literal removeBelief(Literal l, Unifier u) {
+        Literal q = (Literal) u.apply(l);
+        for (BeliefBase.Entry e : beliefBase.candidates(q)) {
+            if (e.rule() != null) {
+                continue;
+            }
+            Unifier c = u.copy();
+            if (c.unifies(q, e.literal())) {
+                u.setFrom(c);
+                return beliefBase.remove(e.literal(), (Literal) c.apply(q));
+            }
+        }
+        return null;
+    }
+
+    /** Jason's default belief update: percepts replace the beliefs with {@code source(percept)}. */
+    void beliefUpdate(List<Literal> percepts) {
+        var now = new HashSet<Literal>();
+        for (Literal p : percepts) {
+            now.add(p.hasSource() ? p : p.addAnnot(Literal.SOURCE_PERCEPT));
+        }
+        for (Iterator<Literal> it = perceptBeliefs.iterator(); it.hasNext();) {
+            Literal old = it.next();
+            if (!now.contains(old)) {
+                it.remove();
+                if (beliefBase.remove(old, Literal.of("x").withAnnots(List.of(Literal.SOURCE_PERCEPT))) != null) {
+                    circumstance.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, old), null));
+                }
+            }
+        }
+        for (Literal p : now) {
+            if (perceptBeliefs.add(p)) {
+                Literal added = beliefBase.add(p, false);
+                if (added != null) {
+                    circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                }
+            }
+        }
+    }
+
+    /** Adds an external event (e.g. a signal from an artifact); call from the agent's cycle. */
+    public void addExternalEvent(Trigger trigger) {
+        circumstance.addEvent(new Event(trigger, null));
+    }
+
+    /** {@return the intentions that have an intended means for goal {@code g}} */
+    public List<Intention> intentionsFor(Literal g, Unifier u) {
+        var out = new ArrayList<Intention>();
+        for (Intention i : circumstance.allIntentions()) {
+            if (i.hasGoal(g, u)) {
+                out.add(i);
+            }
+        }
+        return out;
+    }
+
+    /** Drops an intention from everywhere it may be (I, PI, PA, events). */
+    public void dropIntention(Intention i) {
+        boolean removed = circumstance.removeRunningIntention(i);
+        removed |= circumstance.removePendingEntriesOf(i);
+        removed |= circumstance.removePendingActionOf(i);
+        for (Event e : circumstance.eventList()) {
+            if (e.intention() == i) {
+                circumstance.removeEvent(e);
+                removed = true;
+            }
+        }
+        if (circumstance.selectedIntention == i) {
+            cycle.dropSelected();
+            removed = true;
+        }
+        if (removed) {
+            circumstance.notifyDropped(i);
+        }
+    }
+
+    /** Keeps the running intention out of the queue after the current internal action. */
+    public void holdSelectedIntention() {
+        cycle.holdSelected();
+    }
+
+    /** ClrInt on an intention (after goals were removed from it). */
+    public void clearIntention(Intention i) {
+        cycle.applyClrInt(i);
+    }
+
+    /** {@return the failure event for a goal of the intention, or null when no plan handles it} */
+    public Event failureEventFor(Intention i, Trigger goal) {
+        return cycle.findEventForFailure(i, goal);
+    }
+
+    /** Generates the failure of the intention's current goal, as Jason's goal deletion. */
+    public boolean failIntention(Intention i, String errorId, String message) {
+        return cycle.generateGoalDeletion(i, ReasoningCycle.errorAnnots(errorId, message));
+    }
+
+    public List<Plan> plans() {
+        return Collections.unmodifiableList(planLibrary.plans());
+    }
+}

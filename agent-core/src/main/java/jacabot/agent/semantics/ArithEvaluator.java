@@ -1,0 +1,130 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.ArithFunction;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import java.util.Iterator;
+import java.util.List;
+
+/** Jason's arithmetic functions: {@code math.*}, {@code .count} and {@code .length}. */
+final class ArithEvaluator implements Unifier.Evaluator {
+    private final Agent agent;
+
+    ArithEvaluator(Agent agent) {
+        this.agent = agent;
+    }
+
+    @Override
+    public Term evaluate(ArithFunction f, Unifier u) {
+        List<Term> a = f.args();
+        switch (f.name()) {
+            case ".count": {
+                int n = 0;
+                Iterator<Unifier> it = agent.solver().solve(a.get(0), u);
+                while (it.hasNext()) {
+                    it.next();
+                    n++;
+                }
+                return new NumberTerm(n);
+            }
+            case ".length":
+                if (a.get(0) instanceof ListTerm l) {
+                    return new NumberTerm(l.elements().size());
+                }
+                if (a.get(0) instanceof StringTerm s) {
+                    return new NumberTerm(s.value().length());
+                }
+                return null;
+            case "math.sum":
+            case "math.average":
+            case "math.mean":
+            case "math.median":
+            case "math.std_dev":
+                return listFunction(f.name(), a.get(0));
+            case "math.pi":
+                return new NumberTerm(Math.PI);
+            case "math.e":
+                return new NumberTerm(Math.E);
+            case "math.random":
+                return new NumberTerm(a.isEmpty() ? agent.random().nextDouble()
+                        : num(a.get(0)) == null ? Double.NaN : agent.random().nextDouble() * num(a.get(0)));
+            default:
+                break;
+        }
+        double[] x = new double[a.size()];
+        for (int i = 0; i < x.length; i++) {
+            Double d = num(a.get(i));
+            if (d == null) {
+                return null;
+            }
+            x[i] = d;
+        }
+        switch (f.name()) {
+            case "math.abs": return new NumberTerm(Math.abs(x[0]));
+            case "math.sqrt": return new NumberTerm(Math.sqrt(x[0]));
+            case "math.round": return new NumberTerm(Math.round(x[0]));
+            case "math.floor": return new NumberTerm(Math.floor(x[0]));
+            case "math.ceil": return new NumberTerm(Math.ceil(x[0]));
+            case "math.max": return new NumberTerm(Math.max(x[0], x[1]));
+            case "math.min": return new NumberTerm(Math.min(x[0], x[1]));
+            case "math.log": return new NumberTerm(Math.log(x[0]));
+            case "math.sin": return new NumberTerm(Math.sin(x[0]));
+            case "math.cos": return new NumberTerm(Math.cos(x[0]));
+            case "math.tan": return new NumberTerm(Math.tan(x[0]));
+            case "math.asin": return new NumberTerm(Math.asin(x[0]));
+            case "math.acos": return new NumberTerm(Math.acos(x[0]));
+            case "math.atan": return new NumberTerm(Math.atan(x[0]));
+            case "math.atan2": return new NumberTerm(Math.atan2(x[0], x[1]));
+            case "math.pow": return new NumberTerm(Math.pow(x[0], x[1]));
+            case "math.signum": return new NumberTerm(Math.signum(x[0]));
+            default: return null;
+        }
+    }
+
+    private static Double num(Term t) {
+        return t instanceof NumberTerm n ? n.value() : null;
+    }
+
+    private static Term listFunction(String name, Term t) {
+        if (!(t instanceof ListTerm l)) {
+            return null;
+        }
+        List<Term> items = l.elements();
+        double[] x = new double[items.size()];
+        for (int i = 0; i < x.length; i++) {
+            Double d = num(items.get(i));
+            if (d == null) {
+                return null;
+            }
+            x[i] = d;
+        }
+        double sum = 0;
+        for (double v : x) {
+            sum += v;
+        }
+        switch (name) {
+            case "math.sum":
+                return new NumberTerm(sum);
+            case "math.median": {
+                if (x.length == 0) {
+                    return null;
+                }
+                double[] s = x.clone();
+                java.util.Arrays.sort(s);
+                return new NumberTerm(s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2);
+            }
+            case "math.std_dev": {
+                double mean = sum / x.length;
+                double sq = 0;
+                for (double v : x) {
+                    sq += (v - mean) * (v - mean);
+                }
+                return new NumberTerm(Math.sqrt(sq / (x.length - 1)));
+            }
+            default:
+                return new NumberTerm(sum / x.length);
+        }
+    }
+}

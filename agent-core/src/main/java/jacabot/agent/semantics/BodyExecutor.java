@@ -1,0 +1,241 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.BodyTerm;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
+import java.util.Iterator;
+import java.util.List;
+
+/** ExecInt: runs the current step of the selected intention, one handler per kind of formula. */
+final class BodyExecutor {
+    private final Agent ag;
+    private final ReasoningCycle rc;
+    private final Circumstance c;
+
+    BodyExecutor(Agent ag, ReasoningCycle rc) {
+        this.ag = ag;
+        this.rc = rc;
+        this.c = ag.circumstance();
+    }
+
+    void execute(Intention i) {
+        if (i.isFinished()) {
+            return;
+        }
+        IntendedMeans im = i.peek();
+        if (im.isFinished()) {
+            rc.removeActionReQueue(i);
+            return;
+        }
+        BodyStep step = im.currentStep();
+        Term term = step.term();
+        BodyStep.Kind kind = step.kind();
+        if (term instanceof Var) {
+            term = im.unif.apply(term);
+            if (term instanceof Var) {
+                rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_without_value",
+                        step.source() + ": Variable '" + step.term() + "' must be ground."));
+                return;
+            }
+            if (term instanceof BodyTerm b && kind == BodyStep.Kind.ACTION) {
+                im.replaceCurrentStep(step.withTerm(Literal.TRUE));
+                im.insertAfterCurrent(b.steps());
+                rc.removeActionReQueue(i);
+                return;
+            }
+            if (term instanceof Literal l && l.isInternalAction() && kind == BodyStep.Kind.ACTION) {
+                kind = BodyStep.Kind.INTERNAL_ACTION;
+            }
+        }
+        try {
+            run(i, im, step, kind, term);
+        } catch (IllegalStateException e) {
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_not_literal", e.getMessage()));
+        }
+    }
+
+    private void run(Intention i, IntendedMeans im, BodyStep step, BodyStep.Kind kind, Term term) {
+        switch (kind) {
+            case ACTION:
+                action(i, im, term);
+                break;
+            case INTERNAL_ACTION:
+                internalAction(i, im, step, (Literal) term);
+                break;
+            case CONSTRAINT:
+                constraint(i, im, step, term);
+                break;
+            case ACHIEVE:
+                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, prepareForEvent(term, im, im)), i));
+                break;
+            case ACHIEVE_NEW_FOCUS:
+                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, prepareForEvent(term, im, null)), null));
+                rc.removeActionReQueue(i);
+                break;
+            case TEST:
+                test(i, im, term);
+                break;
+            case DEL_ADD_BEL:
+                delAddBel(i, im, term);
+                break;
+            case ADD_BEL:
+            case ADD_BEL_END:
+            case ADD_BEL_NEW_FOCUS:
+                addBel(i, im, kind, term);
+                break;
+            default:
+                delBel(i, im, kind, term);
+                break;
+        }
+    }
+
+    private void action(Intention i, IntendedMeans im, Term term) {
+        Term applied = im.unif.apply(term);
+        if (!(applied instanceof Literal l)) {
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_not_literal",
+                    "'" + applied + "' is not an action"));
+            return;
+        }
+        c.action = new ActionExec(l, i);
+    }
+
+    private void internalAction(Intention i, IntendedMeans im, BodyStep step, Literal body) {
+        InternalAction ia = ag.internalAction(body.functor());
+        if (ia == null) {
+            String msg = "The internal action '" + body.functor() + "' is unknown (" + step.source() + ").";
+            if (!rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ia_failed", msg))) {
+                ag.warn(msg);
+            }
+            return;
+        }
+        boolean ok;
+        try {
+            Term[] args = ag.prepareArguments(ia, body, im.unif);
+            Object result = ia.execute(ag, im.unif, args);
+            ok = false;
+            if (result instanceof Boolean b) {
+                ok = b;
+            } else if (result instanceof Iterator<?> it && it.hasNext()) {
+                im.unif = (Unifier) it.next();
+                ok = true;
+            }
+            if (ok) {
+                if (!ia.suspendsIntention() && !rc.isSelectedHeld() && !ag.isStopped()) {
+                    rc.removeActionReQueue(i);
+                }
+                return;
+            }
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ia_failed", ""));
+        } catch (IaException e) {
+            if (!rc.generateGoalDeletion(i, e.failureAnnots())) {
+                ag.warn(step.source() + ": " + e.getMessage());
+            }
+        } catch (RuntimeException e) {
+            String msg = "error in internal action " + body.functor() + ": " + e;
+            if (!rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ia_failed", msg))) {
+                ag.warn(msg);
+            }
+        }
+    }
+
+    private void constraint(Intention i, IntendedMeans im, BodyStep step, Term term) {
+        Iterator<Unifier> it = ag.solver().solve(term, im.unif);
+        if (it.hasNext()) {
+            im.unif = it.next();
+            rc.removeActionReQueue(i);
+        } else {
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("constraint_failed",
+                    "Constraint " + step + " was not satisfied (" + step.source() + ")"));
+        }
+    }
+
+    private void test(Intention i, IntendedMeans im, Term term) {
+        if (ag.solver().believes(term, im.unif)) {
+            rc.removeActionReQueue(i);
+            return;
+        }
+        if (term instanceof Literal || term instanceof Var) {
+            Term applied = im.unif.apply(term);
+            if (applied instanceof Literal) {
+                Literal body = prepareForEvent(term, im, im);
+                Trigger te = new Trigger(Trigger.Op.ADD, Trigger.Type.TEST, body);
+                if (ag.planLibrary().hasCandidate(te)) {
+                    c.addEvent(new Event(te, i));
+                    return;
+                }
+            }
+        }
+        rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("test_goal_failed", "Failed to test '" + term + "'"));
+    }
+
+    private void addBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
+        boolean sameFocus = kind != BodyStep.Kind.ADD_BEL_NEW_FOCUS;
+        Literal body = prepareForEvent(term, im, sameFocus ? im : null);
+        Literal added = ag.addBelief(body, kind == BodyStep.Kind.ADD_BEL_END);
+        if (added != null) {
+            c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), sameFocus ? i : null));
+            if (!sameFocus) {
+                rc.removeActionReQueue(i);
+            }
+        } else {
+            rc.removeActionReQueue(i);
+        }
+    }
+
+    private void delBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
+        boolean sameFocus = kind != BodyStep.Kind.DEL_BEL_NEW_FOCUS;
+        Literal body = prepareForEvent(term, im, sameFocus ? im : null);
+        Literal removed = ag.removeBelief(body, ag.newUnifier());
+        if (removed != null) {
+            c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), sameFocus ? i : null));
+            if (!sameFocus) {
+                rc.removeActionReQueue(i);
+            }
+        } else {
+            rc.removeActionReQueue(i);
+        }
+    }
+
+    /** {@code -+b}: removes the first belief like b (any arguments), then adds b. */
+    private void delAddBel(Intention i, IntendedMeans im, Term term) {
+        Literal body = prepareForEvent(term, im, im);
+        Literal pattern = body.withArgs(body.args().stream().map(a -> (Term) ag.freshVar(new Var("_"))).toList());
+        Literal removed = ag.removeBelief(pattern, ag.newUnifier());
+        if (removed != null) {
+            c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
+        }
+        Literal added = ag.addBelief(body, false);
+        if (added != null) {
+            c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), i));
+        } else {
+            rc.removeActionReQueue(i);
+        }
+    }
+
+    /**
+     * Applies the unifier, renames the free variables apart (remembering the renaming in
+     * {@code caller} so that results come back) and adds {@code source(self)} when no source is
+     * given.
+     */
+    Literal prepareForEvent(Term term, IntendedMeans im, IntendedMeans caller) {
+        Term applied = im.unif.apply(term);
+        if (!(applied instanceof Literal)) {
+            throw new IllegalStateException("not a literal: " + applied);
+        }
+        var renamed = new java.util.LinkedHashMap<Var, Var>();
+        applied.collectVars(v -> renamed.computeIfAbsent(v, ag::freshVar));
+        Literal body = (Literal) (renamed.isEmpty() ? applied : Renamer.rename(applied, renamed));
+        if (caller != null) {
+            caller.renamedVars = renamed.isEmpty() ? null : renamed;
+        }
+        return body.hasSource() ? body : body.addAnnot(Literal.SOURCE_SELF);
+    }
+
+    static List<Term> elementsOf(Term t) {
+        return t instanceof ListTerm l ? l.elements() : List.of();
+    }
+}

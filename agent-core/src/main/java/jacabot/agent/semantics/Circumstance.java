@@ -1,0 +1,270 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.Term;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentLinkedQueue;
+
+/**
+ * The agent's circumstance, with Jason's formal components: events {@code E}, running intentions
+ * {@code I}, pending intentions {@code PI}, pending actions {@code PA}, action feedback
+ * {@code FA}, mailbox {@code MB}, and the selected event and intention {@code SE}, {@code SI}.
+ */
+public final class Circumstance {
+    /** A suspended intention and why it waits. */
+    public record Pending(Intention intention, Term reason) {
+    }
+
+    private final ArrayDeque<Event> events = new ArrayDeque<>();
+    private Event atomicEvent;
+    private final ArrayDeque<Intention> running = new ArrayDeque<>();
+    private Intention atomicIntention;
+    private boolean atomicIntentionSuspended;
+    private final LinkedHashMap<String, Pending> pending = new LinkedHashMap<>();
+    private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
+    private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
+    private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
+    private final List<CircumstanceListener> listeners = new ArrayList<>();
+
+    Event selectedEvent;
+    Intention selectedIntention;
+    ActionExec action;
+
+    // ---- events (E) -----------------------------------------------------------------------------
+
+    public void addEvent(Event e) {
+        if (e.isAtomic()) {
+            atomicEvent = e;
+        } else {
+            events.add(e);
+        }
+        for (CircumstanceListener l : List.copyOf(listeners)) {
+            l.eventAdded(e);
+        }
+    }
+
+    Event pollAtomicEvent() {
+        Event e = atomicEvent;
+        atomicEvent = null;
+        return e;
+    }
+
+    public boolean hasEvent() {
+        return !events.isEmpty() || atomicEvent != null;
+    }
+
+    ArrayDeque<Event> events() {
+        return events;
+    }
+
+    /** {@return a snapshot of the pending events} */
+    public List<Event> eventList() {
+        var out = new ArrayList<Event>(events);
+        if (atomicEvent != null) {
+            out.add(0, atomicEvent);
+        }
+        return out;
+    }
+
+    public boolean removeEvent(Event e) {
+        if (e == atomicEvent) {
+            atomicEvent = null;
+            return true;
+        }
+        return events.remove(e);
+    }
+
+    public Event selectedEvent() {
+        return selectedEvent;
+    }
+
+    // ---- running intentions (I) -------------------------------------------------------------------
+
+    public void addRunningIntention(Intention i) {
+        if (i.isAtomic()) {
+            atomicIntention = i;
+        } else {
+            running.offer(i);
+        }
+        for (CircumstanceListener l : List.copyOf(listeners)) {
+            l.intentionAdded(i);
+        }
+    }
+
+    Intention pollRunningIntention() {
+        return running.poll();
+    }
+
+    Intention takeAtomicIntention() {
+        if (atomicIntention == null || atomicIntentionSuspended) {
+            return null;
+        }
+        Intention i = atomicIntention;
+        atomicIntention = null;
+        return i;
+    }
+
+    public boolean hasAtomicIntention() {
+        return atomicIntention != null;
+    }
+
+    boolean isAtomicIntentionSuspended() {
+        return atomicIntention != null && atomicIntentionSuspended;
+    }
+
+    public boolean hasRunningIntention() {
+        return !running.isEmpty() || (atomicIntention != null && !atomicIntentionSuspended);
+    }
+
+    public boolean hasRunningIntention(Intention i) {
+        return running.contains(i) || atomicIntention == i;
+    }
+
+    /** Removes an intention from I. {@return whether it was there} */
+    public boolean removeRunningIntention(Intention i) {
+        if (i == atomicIntention) {
+            atomicIntention = null;
+            atomicIntentionSuspended = false;
+            return true;
+        }
+        return running.remove(i);
+    }
+
+    /** {@return every intention: selected, running, pending, and those waiting in events or actions} */
+    public List<Intention> allIntentions() {
+        var out = new ArrayList<Intention>();
+        if (selectedIntention != null) {
+            out.add(selectedIntention);
+        }
+        if (atomicIntention != null && !out.contains(atomicIntention)) {
+            out.add(atomicIntention);
+        }
+        for (Intention i : running) {
+            if (!out.contains(i)) {
+                out.add(i);
+            }
+        }
+        for (Pending p : pending.values()) {
+            if (!out.contains(p.intention())) {
+                out.add(p.intention());
+            }
+        }
+        for (ActionExec a : pendingActions.values()) {
+            if (!out.contains(a.intention())) {
+                out.add(a.intention());
+            }
+        }
+        for (Event e : eventList()) {
+            if (e.intention() != null && !out.contains(e.intention())) {
+                out.add(e.intention());
+            }
+        }
+        return out;
+    }
+
+    public Collection<Intention> runningIntentions() {
+        return List.copyOf(running);
+    }
+
+    public Intention selectedIntention() {
+        return selectedIntention;
+    }
+
+    // ---- pending intentions (PI) ------------------------------------------------------------------
+
+    public void addPendingIntention(String key, Term reason, Intention i) {
+        pending.put(key, new Pending(i, reason));
+        if (i == atomicIntention) {
+            atomicIntentionSuspended = true;
+        }
+    }
+
+    public Intention removePendingIntention(String key) {
+        Pending p = pending.remove(key);
+        if (p == null) {
+            return null;
+        }
+        if (p.intention() == atomicIntention) {
+            atomicIntentionSuspended = false;
+        }
+        return p.intention();
+    }
+
+    public Map<String, Pending> pendingIntentions() {
+        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pending));
+    }
+
+    /** Removes every pending entry of an intention. {@return whether there was one} */
+    boolean removePendingEntriesOf(Intention i) {
+        return pending.values().removeIf(p -> p.intention() == i);
+    }
+
+    // ---- actions (PA, FA) ----------------------------------------------------------------------------
+
+    void addPendingAction(ActionExec a) {
+        pendingActions.put(a.intention().id(), a);
+    }
+
+    ActionExec removePendingAction(int intentionId) {
+        return pendingActions.remove(intentionId);
+    }
+
+    List<Intention> pendingActionIntentions() {
+        var out = new ArrayList<Intention>();
+        pendingActions.values().forEach(a -> out.add(a.intention()));
+        return out;
+    }
+
+    boolean removePendingActionOf(Intention i) {
+        return pendingActions.remove(i.id()) != null;
+    }
+
+    /** Called by the architecture (any thread) when an action has been executed. */
+    public void addFeedbackAction(ActionExec a) {
+        feedback.add(a);
+    }
+
+    ActionExec pollFeedbackAction() {
+        return feedback.poll();
+    }
+
+    public boolean hasFeedbackAction() {
+        return !feedback.isEmpty();
+    }
+
+    // ---- mailbox (MB) -----------------------------------------------------------------------------
+
+    /** Called by the infrastructure (any thread) to deliver a message. */
+    public void addMessage(Message m) {
+        mailbox.add(m);
+    }
+
+    Message pollMessage() {
+        return mailbox.poll();
+    }
+
+    public boolean hasMessage() {
+        return !mailbox.isEmpty();
+    }
+
+    // ---- listeners ----------------------------------------------------------------------------------
+
+    public void addListener(CircumstanceListener l) {
+        listeners.add(l);
+    }
+
+    public void removeListener(CircumstanceListener l) {
+        listeners.remove(l);
+    }
+
+    void notifyDropped(Intention i) {
+        for (CircumstanceListener l : List.copyOf(listeners)) {
+            l.intentionDropped(i);
+        }
+    }
+}

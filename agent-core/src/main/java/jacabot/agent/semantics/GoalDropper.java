@@ -1,0 +1,115 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import java.util.List;
+import java.util.Map;
+
+/** {@code .succeed_goal(g)} and {@code .fail_goal(g)}: end goal g wherever it is pursued. */
+public final class GoalDropper {
+    /** Whether the dropped goal counts as achieved or as failed. */
+    public enum Mode { SUCCEED, FAIL }
+
+    private final Agent ag;
+    private final Mode mode;
+    private final Literal goal;
+    private final Trigger trigger;
+
+    public GoalDropper(Agent ag, Mode mode, Literal goal) {
+        this.ag = ag;
+        this.mode = mode;
+        this.goal = goal;
+        this.trigger = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+    }
+
+    public void drop() {
+        Circumstance c = ag.circumstance();
+        for (Event e : c.eventList()) {
+            Intention i = e.intention();
+            int r = dropIn(i);
+            if (r > 0) {
+                c.removeEvent(e);
+                if (r == 1) {
+                    c.addRunningIntention(i);
+                }
+            } else if (e.trigger().isAchieveGoal() && e.trigger().isAddition()
+                    && ag.newUnifier().unifies(goal, i == null ? e.trigger().literal() : i.peek() == null
+                            ? e.trigger().literal() : i.peek().unif.apply(e.trigger().literal()))) {
+                c.removeEvent(e);
+                if (i != null && !i.isFinished()) {
+                    if (mode == Mode.SUCCEED) {
+                        ag.cycle().removeActionReQueue(i);
+                    } else {
+                        ag.failIntention(i, "ia_failed", "");
+                    }
+                }
+            }
+        }
+        for (Intention i : c.runningIntentions()) {
+            if (dropIn(i) > 1) {
+                c.removeRunningIntention(i);
+            }
+        }
+        Intention si = c.selectedIntention();
+        if (si != null) {
+            int r = dropIn(si);
+            if (r > 1 || (r == 1 && mode == Mode.FAIL)) {
+                ag.holdSelectedIntention();
+            }
+        }
+        for (Intention i : c.pendingActionIntentions()) {
+            int r = dropIn(i);
+            if (r > 0) {
+                c.removePendingAction(i.id());
+                if (r == 1) {
+                    c.addRunningIntention(i);
+                }
+            }
+        }
+        for (Map.Entry<String, Circumstance.Pending> p : c.pendingIntentions().entrySet()) {
+            Intention i = p.getValue().intention();
+            int r = dropIn(i);
+            if (r > 0) {
+                c.removePendingIntention(p.getKey());
+                if (r == 1) {
+                    c.addRunningIntention(i);
+                }
+            }
+        }
+    }
+
+    /**
+     * {@return 0 when the intention does not pursue the goal, 1 when it goes on, 2 when a failure
+     * event was generated for it, 3 when it ended}
+     */
+    private int dropIn(Intention i) {
+        if (i == null) {
+            return 0;
+        }
+        IntendedMeans im = i.dropGoal(goal, ag.newUnifier());
+        if (im == null) {
+            return 0;
+        }
+        if (mode == Mode.SUCCEED) {
+            if (!i.isFinished()) {
+                if (ag.circumstance().selectedIntention() != i) {
+                    i.peek().removeCurrentStep();
+                }
+                ag.clearIntention(i);
+                return 1;
+            }
+            return 3;
+        }
+        Event failEvent = ag.failureEventFor(i, trigger);
+        if (failEvent != null) {
+            Literal lit = (Literal) failEvent.trigger().literal();
+            List<Term> annots = List.of(Literal.of("error", Literal.atom("ia_failed")),
+                    Literal.of("error_msg", new StringTerm("")));
+            ag.circumstance().addEvent(new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i));
+            return 2;
+        }
+        return 3;
+    }
+}

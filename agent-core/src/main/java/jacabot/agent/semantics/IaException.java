@@ -1,0 +1,42 @@
+package jacabot.agent.semantics;
+
+/**
+ * An internal action could not run (wrong arguments, unbound variable, ...). It fails the
+ * intention with {@code error(errorId)} and {@code error_msg(message)}, as Jason does.
+ */
+public class IaException extends Exception {
+    private static final long serialVersionUID = 1L;
+    private final String errorId;
+    private final transient java.util.List<jacabot.agent.syntax.Term> annots;
+
+    public IaException(String errorId, String message) {
+        this(errorId, message, java.util.List.of());
+    }
+
+    /** A failure with the given annotations for the {@code -!g} event (as {@code .fail(a1, ...)}). */
+    public IaException(String errorId, String message, java.util.List<jacabot.agent.syntax.Term> annots) {
+        super(message);
+        this.errorId = errorId;
+        this.annots = java.util.List.copyOf(annots);
+    }
+
+    public String errorId() {
+        return errorId;
+    }
+
+    /** {@return the failure annotations: error and error_msg unless the action gave its own} */
+    public java.util.List<jacabot.agent.syntax.Term> failureAnnots() {
+        if (!annots.isEmpty()) {
+            return new java.util.ArrayList<>(annots);
+        }
+        return ReasoningCycle.errorAnnots(errorId, getMessage() == null ? "" : getMessage());
+    }
+
+    public static IaException wrongArguments(String ia, String why) {
+        return new IaException("wrong_arguments", "Wrong arguments for '" + ia + "': " + why);
+    }
+
+    public static IaException wrongArgumentCount(String ia, int got) {
+        return new IaException("wrong_arguments", "Wrong number of arguments (" + got + ") for '" + ia + "'");
+    }
+}

@@ -1,0 +1,92 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A plan instance on an intention's stack: the plan, the event it handles, its unifier and the
+ * steps still to run.
+ */
+public final class IntendedMeans {
+    private final Plan plan;
+    private final Trigger trigger;
+    Unifier unif;
+    private StepList steps;
+    /** Variables of the current step renamed apart when it posted an event (caller side). */
+    Map<Var, Var> renamedVars;
+
+    IntendedMeans(Plan plan, Trigger trigger, Unifier unif) {
+        this.plan = plan;
+        this.trigger = trigger;
+        this.unif = unif;
+        this.steps = StepList.of(plan.body().steps(), null);
+    }
+
+    public Plan plan() {
+        return plan;
+    }
+
+    /** {@return the event's trigger, with the plan's unifier applied when asked} */
+    public Trigger trigger() {
+        return trigger;
+    }
+
+    public Unifier unifier() {
+        return unif;
+    }
+
+    public void setUnifier(Unifier u) {
+        this.unif = u;
+    }
+
+    public boolean isFinished() {
+        return steps == null;
+    }
+
+    /** {@return the step to run next, or null} */
+    public BodyStep currentStep() {
+        return steps == null ? null : steps.head;
+    }
+
+    /** {@return whether the current step is the last one} */
+    public boolean isLastStep() {
+        return steps != null && steps.next == null;
+    }
+
+    public void removeCurrentStep() {
+        if (steps != null) {
+            steps = steps.next;
+        }
+    }
+
+    /** Places steps right after the current step (how if/while/for unfold). */
+    public void insertAfterCurrent(List<BodyStep> more) {
+        if (steps == null) {
+            steps = StepList.of(more, null);
+        } else {
+            steps = new StepList(steps.head, StepList.of(more, steps.next));
+        }
+    }
+
+    /** Replaces the current step (e.g. a loop step with its saved state). */
+    public void replaceCurrentStep(BodyStep step) {
+        steps = new StepList(step, steps == null ? null : steps.next);
+    }
+
+    Map<Var, Var> renamedVarsOrNew() {
+        if (renamedVars == null) {
+            renamedVars = new LinkedHashMap<>();
+        }
+        return renamedVars;
+    }
+
+    @Override
+    public String toString() {
+        return plan.label() == null ? trigger.toString() : trigger + " (@" + plan.label().functor() + ")";
+    }
+}

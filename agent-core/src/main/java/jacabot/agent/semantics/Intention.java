@@ -1,0 +1,126 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Trigger;
+import java.util.ArrayDeque;
+import java.util.Iterator;
+
+/** A stack of intended means, the top being the plan that runs. */
+public final class Intention implements Iterable<IntendedMeans> {
+    private final int id;
+    private final ArrayDeque<IntendedMeans> stack = new ArrayDeque<>();
+    private int atomicCount;
+    private boolean suspended;
+
+    Intention(int id) {
+        this.id = id;
+    }
+
+    public int id() {
+        return id;
+    }
+
+    public void push(IntendedMeans im) {
+        stack.push(im);
+        if (im.plan().isAtomic()) {
+            atomicCount++;
+        }
+    }
+
+    public IntendedMeans pop() {
+        IntendedMeans im = stack.pop();
+        if (im.plan().isAtomic()) {
+            atomicCount--;
+        }
+        return im;
+    }
+
+    public IntendedMeans peek() {
+        return stack.peek();
+    }
+
+    public int size() {
+        return stack.size();
+    }
+
+    public boolean isFinished() {
+        return stack.isEmpty();
+    }
+
+    public boolean isAtomic() {
+        return atomicCount > 0;
+    }
+
+    public boolean isSuspended() {
+        return suspended;
+    }
+
+    public void markSuspended(boolean suspended) {
+        this.suspended = suspended;
+    }
+
+    /** {@return whether some intended means of this intention handles a goal unifying with g} */
+    public boolean hasGoal(Literal g, Unifier u) {
+        for (IntendedMeans im : stack) {
+            Trigger t = im.trigger();
+            if (t.isAchieveGoal() && t.isAddition() && u.copy().unifies(g, t.literal())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** {@return whether some intended means handles {@code +!g}; binds {@code u} to the first match} */
+    public boolean hasGoalBinding(Literal g, Unifier u) {
+        for (IntendedMeans im : stack) {
+            Trigger t = im.trigger();
+            if (t.isAchieveGoal() && t.isAddition() && u.unifies(g, t.literal())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Removes the intended means down to and including the topmost one for goal {@code g}, as
+     * many times as the goal occurs. {@return the last removed intended means for g, or null}
+     */
+    public IntendedMeans dropGoal(Literal g, Unifier u) {
+        IntendedMeans result = null;
+        IntendedMeans target = findGoal(g, u);
+        while (target != null) {
+            result = target;
+            while (peek() != target) {
+                pop();
+            }
+            pop();
+            target = findGoal(g, u);
+        }
+        return result;
+    }
+
+    private IntendedMeans findGoal(Literal g, Unifier u) {
+        for (IntendedMeans im : stack) {
+            Trigger t = im.trigger();
+            if (t.isAchieveGoal() && t.isAddition() && u.copy().unifies(g, t.literal())) {
+                return im;
+            }
+        }
+        return null;
+    }
+
+    /** Iterates from the top of the stack down. */
+    @Override
+    public Iterator<IntendedMeans> iterator() {
+        return stack.iterator();
+    }
+
+    @Override
+    public String toString() {
+        var sb = new StringBuilder();
+        for (IntendedMeans im : stack) {
+            sb.append("    ").append(im).append('\n');
+        }
+        return sb.toString();
+    }
+}

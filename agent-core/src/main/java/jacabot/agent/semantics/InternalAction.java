@@ -1,0 +1,29 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.Term;
+
+/**
+ * An internal action such as {@code .print} or {@code .member}. {@link #execute} returns a
+ * {@link Boolean} or an {@code Iterator<Unifier>} of solutions (for backtracking actions).
+ */
+public interface InternalAction {
+    Object execute(Agent agent, Unifier un, Term[] args) throws IaException;
+
+    /** {@return whether the intention must not be requeued after the action (e.g. {@code .wait})} */
+    default boolean suspendsIntention() {
+        return false;
+    }
+
+    /** {@return whether arguments are given with the unifier applied (control structures say no)} */
+    default boolean appliesArguments() {
+        return true;
+    }
+
+    default int minArgs() {
+        return 0;
+    }
+
+    default int maxArgs() {
+        return Integer.MAX_VALUE;
+    }
+}

@@ -1,0 +1,127 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+
+/** ProcMsg: how a received message changes beliefs, goals or a waiting ask. */
+final class MessageHandler {
+    private final Agent ag;
+    private final ReasoningCycle rc;
+
+    MessageHandler(Agent ag, ReasoningCycle rc) {
+        this.ag = ag;
+        this.rc = rc;
+    }
+
+    void handle(Message m) {
+        Circumstance c = ag.circumstance();
+        if (m.inReplyTo() != null) {
+            Intention waiting = c.removePendingIntention(m.inReplyTo());
+            if (waiting != null) {
+                answerAsk(waiting, m);
+                return;
+            }
+        }
+        String sender = m.sender().equals(ag.name()) ? "self" : m.sender();
+        Literal source = Literal.of("source", Literal.atom(sender));
+        Term content = m.content();
+        switch (m.performative()) {
+            case "tell":
+                for (Literal l : literals(content)) {
+                    Literal added = ag.addBelief(l.addAnnot(source), false);
+                    if (added != null) {
+                        c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                    }
+                }
+                break;
+            case "untell":
+                for (Literal l : literals(content)) {
+                    Literal removed = ag.removeBelief(l.addAnnot(source), ag.newUnifier());
+                    if (removed != null) {
+                        c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
+                    }
+                }
+                break;
+            case "achieve":
+                if (content instanceof Literal l) {
+                    c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, l.addAnnot(source)), null));
+                }
+                break;
+            case "unachieve":
+                if (content instanceof Literal l) {
+                    for (Intention i : ag.intentionsFor(l, ag.newUnifier())) {
+                        ag.dropIntention(i);
+                    }
+                }
+                break;
+            case "askOne":
+            case "askAll":
+                answer(m, content);
+                break;
+            default:
+                ag.warn("Unknown performative '" + m.performative() + "' in " + m);
+        }
+    }
+
+    private static List<Literal> literals(Term content) {
+        var out = new ArrayList<Literal>();
+        if (content instanceof Literal l) {
+            out.add(l);
+        } else if (content instanceof ListTerm list) {
+            for (Term t : list.elements()) {
+                if (t instanceof Literal l) {
+                    out.add(l);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Answers askOne with the first solution (untell when none) and askAll with the list. */
+    private void answer(Message m, Term content) {
+        Iterator<Unifier> it = ag.solver().solve(content, ag.newUnifier());
+        Message reply;
+        if (m.performative().equals("askOne")) {
+            reply = it.hasNext()
+                    ? new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", it.next().apply(content), m.id())
+                    : new Message(ag.nextMessageId(), ag.name(), m.sender(), "untell", content, m.id());
+        } else {
+            var answers = new ArrayList<Term>();
+            while (it.hasNext()) {
+                answers.add(it.next().apply(content));
+            }
+            reply = new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", ListTerm.of(answers), m.id());
+        }
+        ag.arch().sendMessage(reply);
+    }
+
+    /** A sync ask got its answer: bind the fourth argument of the {@code .send} and resume. */
+    private void answerAsk(Intention i, Message m) {
+        IntendedMeans im = i.peek();
+        Literal send = (Literal) im.currentStep().term();
+        Term answer = m.content();
+        Literal from = Literal.of("source", Literal.atom(m.sender()));
+        if (m.performative().equals("untell") && send.arity() > 1 && send.arg(1).toString().equals("askOne")) {
+            answer = Literal.FALSE;
+        } else if (answer instanceof Literal l) {
+            answer = l.addAnnot(from);
+        } else if (answer instanceof ListTerm list) {
+            var items = new ArrayList<Term>();
+            for (Term t : list.elements()) {
+                items.add(t instanceof Literal l ? l.addAnnot(from) : t);
+            }
+            answer = ListTerm.of(items);
+        }
+        if (im.unif.unifies(send.arg(3), answer)) {
+            rc.removeActionReQueue(i);
+        } else {
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ask_failed",
+                    "reply of an ask message ('" + answer + "') does not unify with fourth argument of .send"));
+        }
+    }
+}

@@ -1,0 +1,89 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.Trigger;
+import java.util.ArrayList;
+import java.util.List;
+
+/** The plan library: plans in file order, each with a unique label ({@code p__N} when unnamed). */
+public final class PlanLibrary {
+    private final List<Plan> plans = new ArrayList<>();
+    private int lastLabel;
+
+    /** Adds a plan (at the end, or at the beginning); names it and marks its source. */
+    public Plan add(Plan p, boolean atBeginning) {
+        Literal label = p.label();
+        if (label == null) {
+            label = uniqueLabel();
+        } else if (label.functor().equals("undefined")) {
+            label = uniqueLabel().withAnnots(label.annots());
+        }
+        if (!label.hasSource()) {
+            label = label.addAnnot(Literal.SOURCE_SELF);
+        }
+        Plan named = p.withLabel(label);
+        if (atBeginning) {
+            plans.add(0, named);
+        } else {
+            plans.add(named);
+        }
+        return named;
+    }
+
+    private Literal uniqueLabel() {
+        while (true) {
+            String l = "p__" + (++lastLabel);
+            if (get(l) == null) {
+                return Literal.atom(l);
+            }
+        }
+    }
+
+    public Plan get(String label) {
+        for (Plan p : plans) {
+            if (p.label().functor().equals(label)) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    public boolean remove(String label) {
+        return plans.removeIf(p -> p.label().functor().equals(label));
+    }
+
+    /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */
+    public List<Plan> candidates(Trigger te) {
+        var out = new ArrayList<Plan>();
+        for (Plan p : plans) {
+            if (isCandidate(p.trigger(), te)) {
+                out.add(p);
+            }
+        }
+        return out;
+    }
+
+    public boolean hasCandidate(Trigger te) {
+        for (Plan p : plans) {
+            if (isCandidate(p.trigger(), te)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static boolean isCandidate(Trigger pt, Trigger te) {
+        if (pt.op() != te.op() || pt.type() != te.type()) {
+            return false;
+        }
+        if (!(pt.literal() instanceof Literal pl)) {
+            return true; // a variable trigger, e.g. +!G
+        }
+        return te.literal() instanceof Literal el && pl.samePredicate(el);
+    }
+
+    public List<Plan> plans() {
+        return plans;
+    }
+}

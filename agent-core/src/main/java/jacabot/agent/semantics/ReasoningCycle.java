@@ -1,0 +1,436 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Jason's reasoning cycle: sense (ProcMsg), deliberate (SelEv, FindOp, AddIM) and act (ProcAct,
+ * SelInt, ExecInt, ClrInt). Each rule is a method named after it; plan-body formulas are run by
+ * {@link BodyExecutor}.
+ */
+final class ReasoningCycle {
+    private final Agent ag;
+    private final Circumstance c;
+    private final BodyExecutor exec;
+    private final MessageHandler messages;
+    private boolean selectedDropped;
+    private boolean selectedHeld;
+
+    ReasoningCycle(Agent ag) {
+        this.ag = ag;
+        this.c = ag.circumstance();
+        this.exec = new BodyExecutor(ag, this);
+        this.messages = new MessageHandler(ag, this);
+    }
+
+    void run() {
+        sense();
+        if (ag.isStopped()) {
+            return;
+        }
+        deliberate();
+        if (ag.isStopped()) {
+            return;
+        }
+        act();
+    }
+
+    // ---- sense --------------------------------------------------------------------------------
+
+    private void sense() {
+        ag.fireDueTimers();
+        List<Literal> percepts = ag.arch().perceive();
+        if (percepts != null) {
+            ag.beliefUpdate(percepts);
+        }
+        applyProcMsg();
+    }
+
+    /** ProcMsg: handle one message of the mailbox. */
+    private void applyProcMsg() {
+        Message m = c.pollMessage();
+        if (m != null) {
+            messages.handle(m);
+        }
+    }
+
+    // ---- deliberate ---------------------------------------------------------------------------
+
+    private void deliberate() {
+        ag.runBeginOfCycleTasks();
+        c.selectedEvent = null;
+        while (true) {
+            // SelEv
+            if (c.hasAtomicIntention()) {
+                return;
+            }
+            Event se = c.pollAtomicEvent();
+            if (se == null) {
+                se = c.events().poll();
+            }
+            if (se == null) {
+                return;
+            }
+            c.selectedEvent = se;
+            if (applyFindOp(se)) {
+                return;
+            }
+            // an irrelevant external event is discarded and another one selected
+        }
+    }
+
+    /**
+     * FindOp (and AddIM): the first applicable plan, in file order, with its first unifier.
+     * {@return whether deliberation is over for this cycle}
+     */
+    private boolean applyFindOp(Event se) {
+        boolean relevant = false;
+        for (Plan p : ag.planLibrary().candidates(se.trigger())) {
+            Unifier u = ag.newUnifier();
+            if (!isRelevant(p.trigger(), se.trigger(), u)) {
+                continue;
+            }
+            relevant = true;
+            Unifier option = u;
+            if (p.context() != null) {
+                Iterator<Unifier> it = ag.solver().solve(p.context(), u);
+                if (!it.hasNext()) {
+                    continue;
+                }
+                option = it.next();
+            }
+            applyAddIM(se, p, option);
+            return true;
+        }
+        return applyRelApplPlRule2(se, relevant ? "applicable" : "relevant");
+    }
+
+    private static boolean isRelevant(Trigger planTrigger, Trigger event, Unifier u) {
+        return planTrigger.op() == event.op() && planTrigger.type() == event.type()
+                && u.unifies(planTrigger.literal(), event.literal());
+    }
+
+    /** No relevant or applicable plan: goals fail, internal events go on, external ones are dropped. */
+    private boolean applyRelApplPlRule2(Event se, String what) {
+        Trigger te = se.trigger();
+        if (te.isGoal() && te.op() != Trigger.Op.GOAL_STATE) {
+            String msg = "Found a goal for which there is no " + what + " plan: " + te;
+            if (!generateGoalDeletionFromEvent(se, errorAnnots("no_" + what, msg))) {
+                ag.warn(msg);
+            }
+            return true;
+        }
+        if (!se.isExternal()) {
+            Intention i = se.intention();
+            joinRenamedVars(i.peek(), i.peek().unif);
+            removeActionReQueue(i);
+            return true;
+        }
+        return false;
+    }
+
+    /** AddIM: a new intention for an external event, or a new top of the event's intention. */
+    private void applyAddIM(Event se, Plan p, Unifier u) {
+        IntendedMeans im = new IntendedMeans(p, se.trigger(), u);
+        if (se.isExternal()) {
+            Intention i = new Intention(ag.nextIntentionId());
+            i.push(im);
+            c.addRunningIntention(i);
+            return;
+        }
+        Intention i = se.intention();
+        IntendedMeans top = i.peek();
+        // tail recursion optimisation: !g as the last step of a plan for g replaces that plan
+        if (top != null && top.trigger().isAddition() && im.trigger().isAddition()
+                && top.trigger().isGoal() && im.trigger().isGoal() && top.isLastStep()
+                && samePredicate(top.trigger(), im.trigger())) {
+            i.pop();
+            IntendedMeans base = i.peek();
+            if (base != null && base.renamedVars != null) {
+                for (Map.Entry<Var, Var> e : base.renamedVars.entrySet()) {
+                    Term value = top.unif.deref(e.getValue());
+                    if (value instanceof Var w) {
+                        Var again = top.renamedVars == null ? null : top.renamedVars.get(w);
+                        if (again != null) {
+                            e.setValue(again);
+                        }
+                    } else {
+                        im.unif.bind(e.getValue(), top.unif.apply(value));
+                    }
+                }
+            }
+        }
+        i.push(im);
+        c.addRunningIntention(i);
+    }
+
+    private static boolean samePredicate(Trigger a, Trigger b) {
+        return a.literal() instanceof Literal la && b.literal() instanceof Literal lb
+                && la.functor().equals(lb.functor()) && la.arity() == lb.arity();
+    }
+
+    // ---- act ----------------------------------------------------------------------------------
+
+    private void act() {
+        if (applyProcAct()) {
+            return;
+        }
+        Intention si = applySelInt();
+        if (si == null) {
+            return;
+        }
+        c.selectedIntention = si;
+        selectedDropped = false;
+        selectedHeld = false;
+        exec.execute(si);
+        c.selectedIntention = null;
+        if (!selectedDropped) {
+            applyClrInt(si);
+        }
+        ActionExec a = c.action;
+        c.action = null;
+        if (a != null && !selectedDropped) {
+            c.addPendingAction(a);
+            ag.arch().act(a, ag);
+        }
+    }
+
+    /** ProcAct: handle the feedback of one executed action. */
+    private boolean applyProcAct() {
+        ActionExec a;
+        while ((a = c.pollFeedbackAction()) != null) {
+            Intention i = a.intention();
+            if (c.removePendingAction(i.id()) == null) {
+                continue; // the intention was dropped meanwhile
+            }
+            if (a.result()) {
+                if (a.outputs() != null) {
+                    Unifier u = i.peek().unif;
+                    for (Map.Entry<Var, Term> e : a.outputs().bindings().entrySet()) {
+                        u.unifies(e.getKey(), e.getValue());
+                    }
+                }
+                removeActionReQueue(i);
+                applyClrInt(i);
+            } else {
+                var annots = errorAnnots("action_failed", a.failureMessage() == null ? "" : a.failureMessage());
+                annots.addAll(a.failureReason());
+                generateGoalDeletion(i, annots);
+            }
+            break;
+        }
+        return false;
+    }
+
+    /** SelInt: the atomic intention if any, else the first running one (round robin). */
+    private Intention applySelInt() {
+        Intention i = c.takeAtomicIntention();
+        if (i != null) {
+            return i;
+        }
+        if (c.isAtomicIntentionSuspended()) {
+            return null;
+        }
+        return c.pollRunningIntention();
+    }
+
+    void dropSelected() {
+        selectedDropped = true;
+    }
+
+    /** Keeps the selected intention out of I after its current internal action. */
+    void holdSelected() {
+        selectedHeld = true;
+    }
+
+    boolean isSelectedHeld() {
+        return selectedHeld || selectedDropped;
+    }
+
+    /** Removes the step just done and puts the intention back at the end of I. */
+    void removeActionReQueue(Intention i) {
+        if (!i.isFinished()) {
+            i.peek().removeCurrentStep();
+            c.addRunningIntention(i);
+        }
+    }
+
+    /** ClrInt: pops finished intended means, passing results back to the caller's step. */
+    void applyClrInt(Intention i) {
+        while (true) {
+            if (i.isFinished()) {
+                c.removeRunningIntention(i);
+                return;
+            }
+            IntendedMeans im = i.peek();
+            if (!im.isFinished()) {
+                return;
+            }
+            IntendedMeans topIM = i.pop();
+            Trigger topTrigger = topIM.trigger();
+            Term topLiteral = topTrigger.literal();
+            if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
+                // a failure plan finished: drop the intended means up to the goal that failed
+                im = i.peek();
+                if (im.isFinished() || !(im.currentStep().kind() == BodyStep.Kind.ACHIEVE
+                        && im.unif.copy().unifies(im.currentStep().term(), topLiteral))) {
+                    im = i.pop();
+                }
+                while (!i.isFinished()
+                        && !(im.trigger().isGoal() && im.unif.copy().unifies(im.trigger().literal(), topLiteral))
+                        && !(!im.isFinished() && im.currentStep().kind() == BodyStep.Kind.ACHIEVE
+                                && im.unif.copy().unifies(im.currentStep().term(), topLiteral))) {
+                    im = i.pop();
+                }
+            }
+            if (!i.isFinished()) {
+                im = i.peek();
+                if (!im.isFinished()) {
+                    joinRenamedVars(im, topIM.unif);
+                    im.removeCurrentStep();
+                }
+            }
+        }
+    }
+
+    /** Binds the caller's variables renamed for an event to the values the callee gave them. */
+    void joinRenamedVars(IntendedMeans im, Unifier values) {
+        if (im.renamedVars == null) {
+            return;
+        }
+        for (Map.Entry<Var, Var> e : im.renamedVars.entrySet()) {
+            Var vt = e.getValue();
+            im.unif.unifies(e.getKey(), vt);
+            Term value = values.deref(vt);
+            if (!(value instanceof Var)) {
+                Term applied = values.apply(value);
+                im.unif.bind(vt, renameApart(applied));
+            }
+        }
+    }
+
+    /** Gives the free variables of a value fresh names (they came from another plan). */
+    Term renameApart(Term t) {
+        if (t.isGround()) {
+            return t;
+        }
+        var map = new java.util.HashMap<Var, Var>();
+        t.collectVars(v -> map.computeIfAbsent(v, ag::freshVar));
+        return Renamer.rename(t, map);
+    }
+
+    // ---- failure ------------------------------------------------------------------------------
+
+    static List<Term> errorAnnots(String id, String message) {
+        var out = new ArrayList<Term>();
+        out.add(Literal.of("error", Literal.atom(id)));
+        out.add(Literal.of("error_msg", new StringTerm(message)));
+        return out;
+    }
+
+    /** Generates {@code -!g} for the intention's top goal (or the nearest goal with a failure plan). */
+    boolean generateGoalDeletion(Intention i, List<Term> annots) {
+        IntendedMeans im = i.peek();
+        Event failEvent = findEventForFailure(i, im.trigger());
+        boolean relevant = failEvent != null;
+        if (!relevant) {
+            failEvent = new Event(im.trigger(), i);
+        }
+        BodyStep step = im.currentStep();
+        failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unif.apply(step.term())), annots);
+        if (failEvent.trigger().isGoal()) {
+            if (relevant) {
+                c.addEvent(failEvent);
+            } else {
+                ag.warn("No failure event was generated for " + failEvent.trigger());
+                ag.dropIntention(i);
+            }
+        } else {
+            ag.warn("Could not finish intention: " + failEvent.trigger());
+            ag.dropIntention(i);
+        }
+        return relevant;
+    }
+
+    private boolean generateGoalDeletionFromEvent(Event se, List<Term> annots) {
+        Trigger te = se.trigger();
+        if (te.isAddition() && te.isGoal()) {
+            Event failEvent = se.isExternal() ? externalFailureEvent(te) : findEventForFailure(se.intention(), te);
+            if (failEvent != null) {
+                Literal lit = (Literal) te.literal();
+                c.addEvent(withFailureAnnots(failEvent, new BodyStep(BodyStep.Kind.ACHIEVE, lit, null), annots));
+                return true;
+            }
+            ag.warn("No failure event was generated for " + te);
+            if (se.intention() != null) {
+                ag.dropIntention(se.intention());
+            }
+            return true;
+        }
+        if (!se.isExternal()) {
+            ag.warn("Could not finish intention: " + te);
+            ag.dropIntention(se.intention());
+        }
+        return true;
+    }
+
+    private Event externalFailureEvent(Trigger te) {
+        Trigger fail = new Trigger(Trigger.Op.DEL, te.type(), te.literal());
+        return ag.planLibrary().hasCandidate(fail) ? new Event(fail, null) : null;
+    }
+
+    /** Jason's search down the stack for a goal with a relevant failure plan. */
+    Event findEventForFailure(Intention i, Trigger tevent) {
+        Iterator<IntendedMeans> ii = i.iterator();
+        if (tevent.isGoal() && !tevent.isAddition()) {
+            // failure inside a failure plan: continue below the goal that failed
+            IntendedMeans im = ii.next();
+            boolean found = false;
+            while (ii.hasNext() && !found) {
+                im = ii.next();
+                while (ii.hasNext() && im.unif.copy().unifies(im.trigger().literal(), tevent.literal())) {
+                    im = ii.next();
+                    found = true;
+                }
+            }
+            tevent = im.trigger();
+        }
+        Trigger failTrigger = new Trigger(Trigger.Op.DEL, tevent.type(), tevent.literal());
+        while (!ag.planLibrary().hasCandidate(failTrigger) && ii.hasNext()) {
+            tevent = ii.next().trigger();
+            failTrigger = new Trigger(Trigger.Op.DEL, tevent.type(), tevent.literal());
+        }
+        if (tevent.isGoal() && ag.planLibrary().hasCandidate(failTrigger)) {
+            return new Event(failTrigger, i);
+        }
+        return null;
+    }
+
+    /** Adds error, error_msg, code, code_src and code_line annotations to a failure event. */
+    private static Event withFailureAnnots(Event e, BodyStep step, List<Term> annots) {
+        if (!(e.trigger().literal() instanceof Literal lit)) {
+            return e;
+        }
+        var all = new ArrayList<Term>(annots);
+        if (step != null && step.source() != null) {
+            all.add(Literal.of("code_src", new StringTerm(step.source().file())));
+            all.add(Literal.of("code_line", new jacabot.agent.syntax.NumberTerm(step.source().line())));
+        }
+        if (lit.getAnnot("code") == null && annots.stream().noneMatch(a -> a instanceof Literal l && l.functor().equals("code"))) {
+            Term code = step == null ? Literal.atom("no_code") : step.kind() == BodyStep.Kind.ACHIEVE
+                    || step.kind() == BodyStep.Kind.ACTION || step.kind() == BodyStep.Kind.INTERNAL_ACTION
+                    || step.kind() == BodyStep.Kind.CONSTRAINT ? step.term() : Literal.atom(step.toString());
+            all.add(Literal.of("code", code));
+        }
+        return new Event(e.trigger().withLiteral(lit.addAnnots(all)), e.intention());
+    }
+}

@@ -1,0 +1,314 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.LogExpr;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.RelExpr;
+import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.NoSuchElementException;
+
+/**
+ * Logical consequence: the solutions (unifiers) of a formula against the belief base, rules,
+ * relational expressions and internal actions, lazily and in Jason's order.
+ */
+public final class Solver {
+    private final Agent agent;
+
+    Solver(Agent agent) {
+        this.agent = agent;
+    }
+
+    /** {@return whether the formula has a solution; binds {@code u} to the first one} */
+    public boolean believes(Term formula, Unifier u) {
+        Iterator<Unifier> it = solve(formula, u);
+        if (it.hasNext()) {
+            u.setFrom(it.next());
+            return true;
+        }
+        return false;
+    }
+
+    /** {@return the solutions of a formula, each an extension of {@code u} (never changed)} */
+    public Iterator<Unifier> solve(Term formula, Unifier u) {
+        Term f = u.deref(formula);
+        if (f instanceof Var) {
+            return Collections.emptyIterator();
+        }
+        if (f instanceof Literal l) {
+            if (l.equals(Literal.TRUE)) {
+                return single(u.copy());
+            }
+            if (l.equals(Literal.FALSE)) {
+                return Collections.emptyIterator();
+            }
+            if (l.isInternalAction()) {
+                return internalAction(l, u);
+            }
+            return literal(l, u);
+        }
+        if (f instanceof LogExpr e) {
+            switch (e.op()) {
+                case NOT:
+                    return solve(e.left(), u).hasNext() ? Collections.emptyIterator() : single(u.copy());
+                case AND:
+                    return new FlatMap(solve(e.left(), u), s -> solve(e.right(), s));
+                default:
+                    return new Concat(solve(e.left(), u), () -> solve(e.right(), u));
+            }
+        }
+        if (f instanceof RelExpr r) {
+            return relational(r, u);
+        }
+        return Collections.emptyIterator();
+    }
+
+    // ---- literals against the belief base ------------------------------------------------------
+
+    private Iterator<Unifier> literal(Literal query, Unifier u) {
+        Literal q = (Literal) u.apply(query);
+        List<BeliefBase.Entry> candidates = agent.beliefBase().candidates(q);
+        if (candidates.isEmpty()) {
+            return Collections.emptyIterator();
+        }
+        return new FlatMap(candidates.iterator(), e -> match(q, e, u));
+    }
+
+    private Iterator<Unifier> match(Literal q, BeliefBase.Entry e, Unifier u) {
+        if (e.rule() != null) {
+            Rule r = rename(e.rule());
+            Unifier ru = u.copy();
+            if (!ru.unifies(q.withoutAnnots(), r.head().withoutAnnots())) {
+                return Collections.emptyIterator();
+            }
+            if (!q.annots().isEmpty() && !ru.unifies(q.withAnnots(q.annots()), r.head())) {
+                return Collections.emptyIterator();
+            }
+            return solve(r.body(), ru);
+        }
+        Unifier bu = u.copy();
+        Literal belief = e.literal();
+        if (!belief.isGround()) {
+            // a fact with variables, like in(X, [X|_]): its variables are its own
+            var map = new HashMap<Var, Var>();
+            belief.collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
+            belief = (Literal) Renamer.rename(belief, map);
+        }
+        if (!bu.unifies(q.withoutAnnots(), belief.withoutAnnots())) {
+            return Collections.emptyIterator();
+        }
+        if (q.annots().isEmpty()) {
+            return single(bu);
+        }
+        return annotationMatches(q.annots(), belief.annots(), bu);
+    }
+
+    /** Every way of matching each query annotation with a distinct belief annotation, in order. */
+    private static Iterator<Unifier> annotationMatches(List<Term> query, List<Term> belief, Unifier u) {
+        var out = new ArrayList<Unifier>();
+        matchAnnots(query, 0, belief, new boolean[belief.size()], u, out);
+        return out.iterator();
+    }
+
+    private static void matchAnnots(List<Term> query, int i, List<Term> belief, boolean[] used, Unifier u,
+            List<Unifier> out) {
+        if (i == query.size()) {
+            out.add(u);
+            return;
+        }
+        for (int j = 0; j < belief.size(); j++) {
+            if (!used[j]) {
+                Unifier next = u.copy();
+                if (next.unifies(query.get(i), belief.get(j))) {
+                    used[j] = true;
+                    matchAnnots(query, i + 1, belief, used, next, out);
+                    used[j] = false;
+                }
+            }
+        }
+    }
+
+    /** Renames a rule's variables apart from every other variable. */
+    private Rule rename(Rule r) {
+        var map = new HashMap<Var, Var>();
+        r.head().collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
+        r.body().collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
+        if (map.isEmpty()) {
+            return r;
+        }
+        return new Rule((Literal) Renamer.rename(r.head(), map), Renamer.rename(r.body(), map));
+    }
+
+    // ---- internal actions in formulas -----------------------------------------------------------
+
+    @SuppressWarnings("unchecked")
+    private Iterator<Unifier> internalAction(Literal l, Unifier u) {
+        InternalAction ia = agent.internalAction(l.functor());
+        if (ia == null) {
+            agent.warn("unknown internal action '" + l.functor() + "' in a formula");
+            return Collections.emptyIterator();
+        }
+        Unifier copy = u.copy();
+        try {
+            Term[] args = agent.prepareArguments(ia, l, copy);
+            Object result = ia.execute(agent, copy, args);
+            if (result instanceof Boolean b) {
+                return b ? single(copy) : Collections.emptyIterator();
+            }
+            if (result instanceof Iterator<?> it) {
+                return (Iterator<Unifier>) it;
+            }
+            return Collections.emptyIterator();
+        } catch (IaException e) {
+            agent.warn(e.getMessage());
+            return Collections.emptyIterator();
+        }
+    }
+
+    // ---- relational expressions ---------------------------------------------------------------
+
+    private Iterator<Unifier> relational(RelExpr r, Unifier u) {
+        Term x = u.apply(r.left());
+        Term y = u.apply(r.right());
+        switch (r.op()) {
+            case UNIFY: {
+                Unifier c = u.copy();
+                return c.unifies(x, y) ? single(c) : Collections.emptyIterator();
+            }
+            case UNIV:
+                return univ(x, y, u);
+            case EQ:
+                return x.equals(y) ? single(u.copy()) : Collections.emptyIterator();
+            case DIF:
+                return !x.equals(y) ? single(u.copy()) : Collections.emptyIterator();
+            default:
+                int c = x.compareTo(y);
+                boolean ok;
+                switch (r.op()) {
+                    case LT: ok = c < 0; break;
+                    case LTE: ok = c <= 0; break;
+                    case GT: ok = c > 0; break;
+                    default: ok = c >= 0; break;
+                }
+                return ok ? single(u.copy()) : Collections.emptyIterator();
+        }
+    }
+
+    /** {@code T =.. L}: L is [namespace, functor, args, annots]; 2 and 3 elements also build. */
+    private Iterator<Unifier> univ(Term x, Term y, Unifier u) {
+        Unifier c = u.copy();
+        if (x instanceof Literal l) {
+            Term decomposed = ListTerm.of(Literal.atom("default"), Literal.atom(l.functor()),
+                    ListTerm.of(l.args()), ListTerm.of(l.annots()));
+            return c.unifies(decomposed, y) ? single(c) : Collections.emptyIterator();
+        }
+        if (x instanceof Var && y instanceof ListTerm list) {
+            List<Term> parts = list.elements();
+            Term functor;
+            Term args;
+            Term annots = ListTerm.EMPTY;
+            if (parts.size() == 2) {
+                functor = parts.get(0);
+                args = parts.get(1);
+            } else if (parts.size() == 3) {
+                functor = parts.get(0);
+                args = parts.get(1);
+                annots = parts.get(2);
+            } else if (parts.size() == 4) {
+                functor = parts.get(1);
+                args = parts.get(2);
+                annots = parts.get(3);
+            } else {
+                return Collections.emptyIterator();
+            }
+            String name = functor instanceof Literal fl ? fl.functor()
+                    : functor instanceof StringTerm s ? s.value() : null;
+            if (name == null || !(args instanceof ListTerm al) || !(annots instanceof ListTerm nl)) {
+                return Collections.emptyIterator();
+            }
+            Literal built = new Literal(name, al.elements(), nl.elements(), false);
+            return c.unifies(x, built) ? single(c) : Collections.emptyIterator();
+        }
+        if (x instanceof NumberTerm || x instanceof StringTerm) {
+            return c.unifies(ListTerm.of(x), y) ? single(c) : Collections.emptyIterator();
+        }
+        return Collections.emptyIterator();
+    }
+
+    // ---- lazy iterator helpers -----------------------------------------------------------------
+
+    static Iterator<Unifier> single(Unifier u) {
+        return Collections.singletonList(u).iterator();
+    }
+
+    /** For each outer element, the solutions it leads to, lazily. */
+    private static final class FlatMap implements Iterator<Unifier> {
+        private final Iterator<?> outer;
+        private final java.util.function.Function<Object, Iterator<Unifier>> inner;
+        private Iterator<Unifier> current = Collections.emptyIterator();
+
+        @SuppressWarnings("unchecked")
+        <T> FlatMap(Iterator<T> outer, java.util.function.Function<T, Iterator<Unifier>> inner) {
+            this.outer = outer;
+            this.inner = (java.util.function.Function<Object, Iterator<Unifier>>) inner;
+        }
+
+        @Override
+        public boolean hasNext() {
+            while (!current.hasNext()) {
+                if (!outer.hasNext()) {
+                    return false;
+                }
+                current = inner.apply(outer.next());
+            }
+            return true;
+        }
+
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new NoSuchElementException();
+            }
+            return current.next();
+        }
+    }
+
+    /** The first iterator's solutions, then the second's (computed only when reached). */
+    private static final class Concat implements Iterator<Unifier> {
+        private final Iterator<Unifier> first;
+        private final java.util.function.Supplier<Iterator<Unifier>> second;
+        private Iterator<Unifier> rest;
+
+        Concat(Iterator<Unifier> first, java.util.function.Supplier<Iterator<Unifier>> second) {
+            this.first = first;
+            this.second = second;
+        }
+
+        @Override
+        public boolean hasNext() {
+            if (first.hasNext()) {
+                return true;
+            }
+            if (rest == null) {
+                rest = second.get();
+            }
+            return rest.hasNext();
+        }
+
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new NoSuchElementException();
+            }
+            return first.hasNext() ? first.next() : rest.next();
+        }
+    }
+}

@@ -1,0 +1,338 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.ArithExpr;
+import jacabot.agent.syntax.ArithFunction;
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.BodyTerm;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.LogExpr;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.RelExpr;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.TriggerTerm;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A substitution of variables by terms: the only mutable piece of the term machinery.
+ * {@link #unifies} undoes its own bindings when it fails; {@link #copy()} makes an
+ * independent copy for backtracking.
+ */
+public final class Unifier {
+    private final HashMap<Var, Term> bindings;
+    /** Evaluates arithmetic functions; null means only plain arithmetic is evaluated. */
+    private Evaluator evaluator;
+
+    /** Evaluates {@link ArithFunction}s (they may need the agent, e.g. {@code .count}). */
+    public interface Evaluator {
+        /** {@return the function's value, or null when its arguments are not bound numbers} */
+        Term evaluate(ArithFunction f, Unifier u);
+    }
+
+    public Unifier() {
+        this.bindings = new HashMap<>();
+    }
+
+    private Unifier(HashMap<Var, Term> bindings, Evaluator evaluator) {
+        this.bindings = bindings;
+        this.evaluator = evaluator;
+    }
+
+    public Unifier copy() {
+        return new Unifier(new HashMap<>(bindings), evaluator);
+    }
+
+    public void setEvaluator(Evaluator evaluator) {
+        this.evaluator = evaluator;
+    }
+
+    public Evaluator evaluator() {
+        return evaluator;
+    }
+
+    /** Replaces this unifier's bindings with another's. */
+    public void setFrom(Unifier other) {
+        if (other != this) {
+            bindings.clear();
+            bindings.putAll(other.bindings);
+        }
+    }
+
+    public boolean isEmpty() {
+        return bindings.isEmpty();
+    }
+
+    public Map<Var, Term> bindings() {
+        return java.util.Collections.unmodifiableMap(bindings);
+    }
+
+    /** {@return the term at the end of the variable's chain of bindings (itself when unbound)} */
+    public Term deref(Term t) {
+        while (t instanceof Var v) {
+            Term b = bindings.get(v);
+            if (b == null) {
+                return v;
+            }
+            t = b;
+        }
+        return t;
+    }
+
+    /** {@return the value of a variable with every inner variable replaced, or null when unbound} */
+    public Term get(Var v) {
+        Term t = deref(v);
+        return t instanceof Var ? null : apply(t);
+    }
+
+    /** Binds a variable directly (no check). */
+    public void bind(Var v, Term value) {
+        bindings.put(v, value);
+    }
+
+    public void unbind(Var v) {
+        bindings.remove(v);
+    }
+
+    // ---- application -------------------------------------------------------------------------
+
+    /** Replaces bound variables and evaluates arithmetic whose operands are all bound. */
+    public Term apply(Term t) {
+        if (t instanceof Var v) {
+            Term d = deref(v);
+            return d instanceof Var ? d : apply(d);
+        }
+        if (t instanceof Literal l) {
+            if (!needsApply(l)) {
+                return l;
+            }
+            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated());
+        }
+        if (t instanceof ListTerm.Cons) {
+            if (!needsApply(t)) {
+                return t;
+            }
+            var items = new ArrayList<Term>();
+            Term x = t;
+            while (x instanceof ListTerm.Cons c) {
+                items.add(apply(c.head()));
+                x = c.tail();
+                if (x instanceof Var) {
+                    x = deref(x);
+                }
+            }
+            return ListTerm.of(items, x instanceof ListTerm ? x : apply(x));
+        }
+        if (t instanceof ArithExpr e) {
+            Term l = apply(e.left());
+            Term r = e.right() == null ? null : apply(e.right());
+            if (l instanceof NumberTerm nl && (r == null || r instanceof NumberTerm)) {
+                if (r == null) {
+                    return e.op() == ArithExpr.Op.MINUS ? new NumberTerm(-nl.value()) : nl;
+                }
+                return new NumberTerm(e.op().apply(nl.value(), ((NumberTerm) r).value()));
+            }
+            return new ArithExpr(e.op(), l, r);
+        }
+        if (t instanceof ArithFunction f) {
+            var applied = new ArithFunction(f.name(), applyAll(f.args()));
+            if (evaluator != null) {
+                Term value = evaluator.evaluate(applied, this);
+                if (value != null) {
+                    return value;
+                }
+            }
+            return applied;
+        }
+        if (t instanceof RelExpr r) {
+            return new RelExpr(r.op(), apply(r.left()), apply(r.right()));
+        }
+        if (t instanceof LogExpr e) {
+            return new LogExpr(e.op(), apply(e.left()), e.right() == null ? null : apply(e.right()));
+        }
+        if (t instanceof TriggerTerm tt) {
+            return new TriggerTerm(tt.trigger().withLiteral(apply(tt.trigger().literal())));
+        }
+        if (t instanceof BodyTerm b) {
+            var steps = new ArrayList<BodyStep>(b.steps().size());
+            for (BodyStep s : b.steps()) {
+                steps.add(s.withTerm(apply(s.term())));
+            }
+            return new BodyTerm(steps);
+        }
+        if (t instanceof PlanTerm) {
+            return t;
+        }
+        return t;
+    }
+
+    /** {@return whether applying a unifier could change the term (variables or arithmetic)} */
+    static boolean needsApply(Term t) {
+        if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
+            return false;
+        }
+        if (t instanceof Literal l) {
+            for (Term a : l.args()) {
+                if (needsApply(a)) {
+                    return true;
+                }
+            }
+            for (Term a : l.annots()) {
+                if (needsApply(a)) {
+                    return true;
+                }
+            }
+            return false;
+        }
+        if (t instanceof ListTerm) {
+            Term x = t;
+            while (x instanceof ListTerm.Cons c) {
+                if (needsApply(c.head())) {
+                    return true;
+                }
+                x = c.tail();
+            }
+            return !(x instanceof ListTerm.Empty);
+        }
+        return !(t instanceof jacabot.agent.syntax.ObjectTerm);
+    }
+
+    private List<Term> applyAll(List<Term> terms) {
+        if (terms.isEmpty()) {
+            return terms;
+        }
+        var out = new ArrayList<Term>(terms.size());
+        for (Term t : terms) {
+            out.add(apply(t));
+        }
+        return out;
+    }
+
+    // ---- unification -------------------------------------------------------------------------
+
+    /**
+     * Unifies two terms, binding variables of both. Annotations follow Jason: those of the first
+     * term must be a subset of those of the second. Nothing is bound when it fails.
+     */
+    public boolean unifies(Term a, Term b) {
+        var trail = new ArrayList<Var>(4);
+        if (unify(a, b, trail)) {
+            return true;
+        }
+        for (Var v : trail) {
+            bindings.remove(v);
+        }
+        return false;
+    }
+
+    /** Unifies without annotation checks (annotations ignored on both sides). */
+    public boolean unifiesIgnoringAnnots(Literal a, Literal b) {
+        return unifies(a.withoutAnnots(), b.withoutAnnots());
+    }
+
+    private void bindTrail(Var v, Term t, List<Var> trail) {
+        bindings.put(v, t);
+        trail.add(v);
+    }
+
+    boolean unify(Term a, Term b, List<Var> trail) {
+        a = deref(a);
+        b = deref(b);
+        if (a instanceof Var va) {
+            if (b instanceof Var vb && va.equals(vb)) {
+                return true;
+            }
+            bindTrail(va, b, trail);
+            return true;
+        }
+        if (b instanceof Var vb) {
+            bindTrail(vb, a, trail);
+            return true;
+        }
+        if (a instanceof ArithExpr || a instanceof ArithFunction) {
+            a = apply(a);
+        }
+        if (b instanceof ArithExpr || b instanceof ArithFunction) {
+            b = apply(b);
+        }
+        if (a instanceof NumberTerm na) {
+            return b instanceof NumberTerm nb && na.value() == nb.value();
+        }
+        if (a instanceof Literal la) {
+            if (!(b instanceof Literal lb) || !la.samePredicate(lb)) {
+                return false;
+            }
+            for (int i = 0; i < la.arity(); i++) {
+                if (!unify(la.arg(i), lb.arg(i), trail)) {
+                    return false;
+                }
+            }
+            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots(), trail);
+        }
+        if (a instanceof ListTerm.Cons ca) {
+            if (!(b instanceof ListTerm.Cons cb)) {
+                return false;
+            }
+            return unify(ca.head(), cb.head(), trail) && unify(ca.tail(), cb.tail(), trail);
+        }
+        if (a instanceof RelExpr ra) {
+            return b instanceof RelExpr rb && ra.op() == rb.op()
+                    && unify(ra.left(), rb.left(), trail) && unify(ra.right(), rb.right(), trail);
+        }
+        if (a instanceof LogExpr ea) {
+            return b instanceof LogExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left(), trail)
+                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right(), trail));
+        }
+        if (a instanceof TriggerTerm ta) {
+            return b instanceof TriggerTerm tb && ta.trigger().op() == tb.trigger().op()
+                    && ta.trigger().type() == tb.trigger().type()
+                    && unify(ta.trigger().literal(), tb.trigger().literal(), trail);
+        }
+        if (a instanceof ArithExpr ea) {
+            return b instanceof ArithExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left(), trail)
+                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right(), trail));
+        }
+        return a.equals(b);
+    }
+
+    /** Each annotation of {@code sub} unifies with some annotation of {@code sup} (greedy, as Jason). */
+    private boolean subsetAnnots(List<Term> sub, List<Term> sup, List<Var> trail) {
+        for (Term x : sub) {
+            boolean found = false;
+            for (Term y : sup) {
+                int mark = trail.size();
+                if (unify(x, y, trail)) {
+                    found = true;
+                    break;
+                }
+                undoTo(trail, mark);
+            }
+            if (!found) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    void undoTo(List<Var> trail, int mark) {
+        for (int i = trail.size() - 1; i >= mark; i--) {
+            bindings.remove(trail.remove(i));
+        }
+    }
+
+    @Override
+    public String toString() {
+        var sb = new StringBuilder("{");
+        bindings.forEach((k, v) -> {
+            if (sb.length() > 1) {
+                sb.append(", ");
+            }
+            sb.append(k).append('=').append(v);
+        });
+        return sb.append('}').toString();
+    }
+}

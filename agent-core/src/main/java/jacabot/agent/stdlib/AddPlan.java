@@ -1,0 +1,46 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import java.util.List;
+
+/** {@code .add_plan(P[, Source[, begin|end]])}: adds a plan (a plan term, a string, or a list of them). */
+final class AddPlan extends DefaultInternalAction {
+    AddPlan() {
+        super(".add_plan", 1, 3);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        boolean begin = args.length == 3 && args[2].toString().equals("begin");
+        List<Term> items = args[0] instanceof ListTerm l ? l.elements() : List.of(args[0]);
+        for (Term t : items) {
+            Plan p;
+            if (t instanceof PlanTerm pt) {
+                p = pt.plan();
+            } else if (t instanceof StringTerm s) {
+                try {
+                    p = ag.parser().parsePlan(s.value());
+                } catch (jacabot.agent.parser.AslSyntaxException e) {
+                    throw IaException.wrongArguments(name(), e.getMessage());
+                }
+            } else {
+                throw IaException.wrongArguments(name(), "'" + t + "' is not a plan");
+            }
+            if (args.length >= 2 && p.label() != null) {
+                p = p.withLabel(p.label().addAnnot(Literal.of("source", args[1])));
+            } else if (args.length >= 2) {
+                p = p.withLabel(new Literal("undefined", List.of(), List.of(Literal.of("source", args[1])), false));
+            }
+            ag.planLibrary().add(p, begin);
+        }
+        return true;
+    }
+}

@@ -1,0 +1,41 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.Event;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.IntendedMeans;
+import jacabot.agent.semantics.Intention;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+
+/** {@code .desire(G)}: succeeds for each pending {@code +!G} event or intention pursuing G. */
+final class Desire extends DefaultInternalAction {
+    Desire() {
+        super(".desire", 1, 2);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        Literal g = literal(args[0]);
+        var out = new java.util.ArrayList<Unifier>();
+        for (Event e : ag.circumstance().eventList()) {
+            Trigger t = e.trigger();
+            Unifier c = un.copy();
+            if (t.isAchieveGoal() && t.isAddition() && c.unifies(g, t.literal())) {
+                out.add(c);
+            }
+        }
+        for (Intention i : ag.circumstance().allIntentions()) {
+            for (IntendedMeans im : i) {
+                Trigger t = im.trigger();
+                Unifier c = un.copy();
+                if (t.isAchieveGoal() && t.isAddition() && c.unifies(g, t.literal())) {
+                    out.add(c);
+                }
+            }
+        }
+        return out.iterator();
+    }
+}

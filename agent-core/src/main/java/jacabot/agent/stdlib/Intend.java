@@ -1,0 +1,33 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.IntendedMeans;
+import jacabot.agent.semantics.Intention;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+
+/** {@code .intend(G)}: succeeds for each intention pursuing G (backtracking). */
+final class Intend extends DefaultInternalAction {
+    Intend() {
+        super(".intend", 1, 2);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        Literal g = literal(args[0]);
+        var out = new java.util.ArrayList<Unifier>();
+        for (Intention i : ag.circumstance().allIntentions()) {
+            for (IntendedMeans im : i) {
+                Trigger t = im.trigger();
+                Unifier c = un.copy();
+                if (t.isAchieveGoal() && t.isAddition() && c.unifies(g, t.literal())) {
+                    out.add(c);
+                }
+            }
+        }
+        return out.iterator();
+    }
+}

@@ -1,0 +1,18 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Term;
+
+/** {@code .structure(X)}: X is a structure (a list, or a literal that is not an atom). */
+final class IsStructure extends DefaultInternalAction {
+    IsStructure() {
+        super(".structure", 1, 1);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        return args[0] instanceof jacabot.agent.syntax.ListTerm || args[0] instanceof jacabot.agent.syntax.Literal l && !l.isAtom();
+    }
+}

@@ -1,0 +1,48 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.IntendedMeans;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.BodyTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.ObjectTerm;
+import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.Iterator;
+
+/**
+ * {@code while (C) {B}}, as Jason's {@code .loop}: the condition is tested against the unifier the
+ * loop started with, so variables bound in one iteration are free again in the next.
+ */
+final class Loop extends DefaultInternalAction {
+    Loop() {
+        super(".loop", 2, 3);
+    }
+
+    @Override
+    public boolean appliesArguments() {
+        return false;
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        IntendedMeans im = ag.circumstance().selectedIntention().peek();
+        BodyStep loopStep = im.currentStep();
+        if (args.length == 2) {
+            Literal withBackup = Literal.of(".loop", args[0], args[1], new ObjectTerm(un.copy()));
+            loopStep = loopStep.withTerm(withBackup);
+        } else {
+            un.setFrom((Unifier) ((ObjectTerm) args[2]).value());
+        }
+        Iterator<Unifier> it = ag.solver().solve(args[0], un);
+        if (it.hasNext()) {
+            un.setFrom(it.next());
+            var steps = new ArrayList<>(((BodyTerm) args[1]).steps());
+            steps.add(loopStep);
+            im.insertAfterCurrent(steps);
+        }
+        return true;
+    }
+}

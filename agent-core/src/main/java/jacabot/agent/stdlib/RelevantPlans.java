@@ -1,0 +1,32 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.TriggerTerm;
+
+/** {@code .relevant_plans({+!g}, Plans[, Labels])}: the plans relevant for a trigger, in order. */
+final class RelevantPlans extends DefaultInternalAction {
+    RelevantPlans() {
+        super(".relevant_plans", 2, 3);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        if (!(args[0] instanceof TriggerTerm tt)) {
+            throw IaException.wrongArguments(name(), "'" + args[0] + "' is not a trigger");
+        }
+        var plans = new java.util.ArrayList<Term>();
+        var labels = new java.util.ArrayList<Term>();
+        for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
+            if (ag.newUnifier().unifies(p.trigger().literal(), tt.trigger().literal())) {
+                plans.add(new PlanTerm(p));
+                labels.add(p.label());
+            }
+        }
+        return un.unifies(args[1], listOf(plans)) && (args.length < 3 || un.unifies(args[2], listOf(labels)));
+    }
+}

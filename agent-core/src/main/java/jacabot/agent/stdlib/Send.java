@@ -1,0 +1,54 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.Intention;
+import jacabot.agent.semantics.Message;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Term;
+import java.util.List;
+
+/**
+ * {@code .send(Receiver, Performative, Content[, Answer[, Timeout]])}: sends a message. An ask
+ * with an answer argument suspends the intention until the reply (or the timeout, which binds
+ * the answer to {@code timeout}).
+ */
+final class Send extends DefaultInternalAction {
+    Send() {
+        super(".send", 3, 5);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        String performative = text(args[1]);
+        List<Term> receivers = args[0] instanceof ListTerm l ? l.elements() : List.of(args[0]);
+        boolean syncAsk = args.length >= 4 && performative.startsWith("ask");
+        String id = ag.nextMessageId();
+        for (Term r : receivers) {
+            String receiver = text(r);
+            Message m = new Message(id, ag.name(), receiver, performative, args[2], null);
+            if (!ag.arch().sendMessage(m)) {
+                throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
+            }
+        }
+        if (syncAsk) {
+            Intention si = ag.circumstance().selectedIntention();
+            ag.circumstance().addPendingIntention(id, Literal.of("ask", Literal.atom(id)), si);
+            ag.holdSelectedIntention();
+            if (args.length == 5) {
+                long due = ag.clock().millis() + (long) number(args[4]);
+                Term answer = args[3];
+                ag.schedule(due, () -> {
+                    if (ag.circumstance().removePendingIntention(id) == si) {
+                        si.peek().unifier().unifies(answer, Literal.atom("timeout"));
+                        si.peek().removeCurrentStep();
+                        ag.circumstance().addRunningIntention(si);
+                    }
+                });
+            }
+        }
+        return true;
+    }
+}

@@ -1,0 +1,82 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.InternalAction;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/** The standard internal actions, registered explicitly by name (no class-path scanning). */
+public final class Stdlib {
+    private Stdlib() {
+    }
+
+    /** {@return a fresh map from action name (e.g. {@code .print}) to implementation} */
+    public static Map<String, InternalAction> defaults() {
+        var map = new LinkedHashMap<String, InternalAction>();
+        put(map, new Abolish());
+        put(map, new AddAnnot());
+        put(map, new AddPlan());
+        put(map, new AllNames());
+        put(map, new Broadcast());
+        put(map, new Concat());
+        put(map, new Count());
+        put(map, new Delete());
+        put(map, new Desire());
+        put(map, new Difference());
+        put(map, new DropAllDesires());
+        put(map, new DropAllEvents());
+        put(map, new DropAllIntentions());
+        put(map, new DropDesire());
+        put(map, new DropEvent());
+        put(map, new DropIntention());
+        put(map, new Fail());
+        put(map, new FailGoal());
+        put(map, new Findall());
+        put(map, new Foreach());
+        put(map, new IfThenElse());
+        put(map, new Intend());
+        put(map, new Intersection());
+        put(map, new IsAtom());
+        put(map, new IsGround());
+        put(map, new IsList());
+        put(map, new IsLiteral());
+        put(map, new IsNumber());
+        put(map, new IsString());
+        put(map, new IsStructure());
+        put(map, new IsVar());
+        put(map, new Length());
+        put(map, new Loop());
+        put(map, new Max());
+        put(map, new Member());
+        put(map, new Min());
+        put(map, new MyName());
+        put(map, new Nth());
+        put(map, new Print());
+        put(map, new Printf());
+        put(map, new Println());
+        put(map, new Random());
+        put(map, new Range());
+        put(map, new RelevantPlans());
+        put(map, new RemovePlan());
+        put(map, new Resume());
+        put(map, new Reverse());
+        put(map, new Send());
+        put(map, new SetRandomSeed());
+        put(map, new Setof());
+        put(map, new Sort());
+        put(map, new StopMAS());
+        put(map, new Substring());
+        put(map, new SucceedGoal());
+        put(map, new Suspend());
+        put(map, new Suspended());
+        put(map, new SystemTime());
+        put(map, new Term2string());
+        put(map, new Time());
+        put(map, new Union());
+        put(map, new Wait());
+        return map;
+    }
+
+    private static void put(Map<String, InternalAction> map, DefaultInternalAction ia) {
+        map.put(ia.name(), ia);
+    }
+}

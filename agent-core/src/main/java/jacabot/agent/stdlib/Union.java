@@ -1,0 +1,20 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Term;
+
+/** {@code .union(A, B, U)}: the sorted set union. */
+final class Union extends DefaultInternalAction {
+    Union() {
+        super(".union", 3, 3);
+    }
+
+    @Override
+    public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        var set = new java.util.TreeSet<Term>(list(args[0]).elements());
+        set.addAll(list(args[1]).elements());
+        return un.unifies(args[2], listOf(new java.util.ArrayList<>(set)));
+    }
+}

@@ -1,0 +1,157 @@
+package jacabot.agent.syntax;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * A literal: an atom, a structure {@code f(t1,...,tn)}, with optional annotations
+ * {@code [a1,...]} and strong negation {@code ~}. Annotations are kept sorted and without
+ * duplicates, as Jason keeps them. Atoms are literals with no arguments and no annotations.
+ */
+public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated)
+        implements Term {
+
+    public static final Literal TRUE = atom("true");
+    public static final Literal FALSE = atom("false");
+    public static final Literal SELF = atom("self");
+    public static final Literal SOURCE_SELF = of("source", SELF);
+    public static final Literal SOURCE_PERCEPT = of("source", atom("percept"));
+
+    public Literal {
+        args = List.copyOf(args);
+        annots = annots.isEmpty() ? List.of() : sortAnnots(annots);
+    }
+
+    public static Literal atom(String functor) {
+        return new Literal(functor, List.of(), List.of(), false);
+    }
+
+    public static Literal of(String functor, Term... args) {
+        return new Literal(functor, List.of(args), List.of(), false);
+    }
+
+    public static Literal of(String functor, List<Term> args) {
+        return new Literal(functor, args, List.of(), false);
+    }
+
+    private static List<Term> sortAnnots(List<Term> annots) {
+        var sorted = new ArrayList<Term>(annots);
+        Collections.sort(sorted);
+        for (int i = sorted.size() - 1; i > 0; i--) {
+            if (sorted.get(i).equals(sorted.get(i - 1))) {
+                sorted.remove(i);
+            }
+        }
+        return List.copyOf(sorted);
+    }
+
+    public int arity() {
+        return args.size();
+    }
+
+    public Term arg(int i) {
+        return args.get(i);
+    }
+
+    /** {@return whether this is a plain atom (no arguments, annotations or negation)} */
+    public boolean isAtom() {
+        return args.isEmpty() && annots.isEmpty() && !negated;
+    }
+
+    /** {@return whether the functor names an internal action ({@code .print}, {@code jia.f})} */
+    public boolean isInternalAction() {
+        return functor.indexOf('.') >= 0 && functor.charAt(0) != '\'';
+    }
+
+    public Literal withAnnots(List<Term> newAnnots) {
+        return new Literal(functor, args, newAnnots, negated);
+    }
+
+    public Literal withArgs(List<Term> newArgs) {
+        return new Literal(functor, newArgs, annots, negated);
+    }
+
+    public Literal withoutAnnots() {
+        return annots.isEmpty() ? this : new Literal(functor, args, List.of(), negated);
+    }
+
+    public Literal addAnnots(List<Term> more) {
+        if (more.isEmpty()) {
+            return this;
+        }
+        var all = new ArrayList<Term>(annots);
+        all.addAll(more);
+        return withAnnots(all);
+    }
+
+    public Literal addAnnot(Term annot) {
+        return addAnnots(List.of(annot));
+    }
+
+    /** {@return the first annotation with this functor, or null} */
+    public Literal getAnnot(String annotFunctor) {
+        for (Term t : annots) {
+            if (t instanceof Literal l && l.functor.equals(annotFunctor)) {
+                return l;
+            }
+        }
+        return null;
+    }
+
+    /** {@return whether some annotation is {@code source(_)}} */
+    public boolean hasSource() {
+        return getAnnot("source") != null;
+    }
+
+    /** {@return the same functor, arity and negation (the belief base's key)} */
+    public boolean samePredicate(Literal o) {
+        return negated == o.negated && args.size() == o.args.size() && functor.equals(o.functor);
+    }
+
+    @Override
+    public boolean isGround() {
+        for (Term t : args) {
+            if (!t.isGround()) {
+                return false;
+            }
+        }
+        for (Term t : annots) {
+            if (!t.isGround()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    @Override
+    public void collectVars(Consumer<Var> sink) {
+        for (Term t : args) {
+            t.collectVars(sink);
+        }
+        for (Term t : annots) {
+            t.collectVars(sink);
+        }
+    }
+
+    @Override
+    public String toString() {
+        var sb = new StringBuilder();
+        if (negated) {
+            sb.append('~');
+        }
+        sb.append(functor);
+        if (!args.isEmpty()) {
+            sb.append('(');
+            TermOrder.join(sb, args);
+            sb.append(')');
+        }
+        if (!annots.isEmpty()) {
+            sb.append('[');
+            TermOrder.join(sb, annots);
+            sb.append(']');
+        }
+        return sb.toString();
+    }
+}

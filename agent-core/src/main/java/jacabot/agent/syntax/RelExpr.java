@@ -1,0 +1,39 @@
+package jacabot.agent.syntax;
+
+import java.util.function.Consumer;
+
+/** A relational expression: comparison, unification ({@code =}) or {@code =..}. */
+public record RelExpr(Op op, Term left, Term right) implements Term {
+
+    /** Relational operators, with Jason's printed forms. */
+    public enum Op {
+        LT(" < "), LTE(" <= "), GT(" > "), GTE(" >= "), EQ(" == "), DIF(" \\== "), UNIFY(" = "), UNIV(" =.. ");
+
+        private final String symbol;
+
+        Op(String symbol) {
+            this.symbol = symbol;
+        }
+
+        @Override
+        public String toString() {
+            return symbol;
+        }
+    }
+
+    @Override
+    public boolean isGround() {
+        return left.isGround() && right.isGround();
+    }
+
+    @Override
+    public void collectVars(Consumer<Var> sink) {
+        left.collectVars(sink);
+        right.collectVars(sink);
+    }
+
+    @Override
+    public String toString() {
+        return "(" + left + op + right + ")";
+    }
+}

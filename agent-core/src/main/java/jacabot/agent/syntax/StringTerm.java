@@ -1,0 +1,18 @@
+package jacabot.agent.syntax;
+
+/** A string; printed with its quotes when nested in a term, without them by {@code .print}. */
+public record StringTerm(String value) implements Term {
+    @Override
+    public boolean isGround() {
+        return true;
+    }
+
+    @Override
+    public void collectVars(java.util.function.Consumer<Var> sink) {
+    }
+
+    @Override
+    public String toString() {
+        return "\"" + value + "\"";
+    }
+}

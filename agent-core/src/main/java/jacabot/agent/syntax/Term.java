@@ -1,0 +1,24 @@
+package jacabot.agent.syntax;
+
+/**
+ * An AgentSpeak term. Terms are immutable values with structural equality; variables are
+ * bound by a {@code Unifier}, never by changing a term.
+ *
+ * <p>Ordering follows Jason's standard order: numbers, then strings, then lists, then
+ * literals (by functor, negation, arguments and annotations), then variables.
+ */
+public sealed interface Term extends Comparable<Term>
+        permits Literal, NumberTerm, StringTerm, Var, ListTerm, ArithExpr, ArithFunction,
+                RelExpr, LogExpr, TriggerTerm, BodyTerm, PlanTerm, ObjectTerm {
+
+    /** {@return whether the term has no variable} */
+    boolean isGround();
+
+    /** Visits every variable of the term, in textual order. */
+    void collectVars(java.util.function.Consumer<Var> sink);
+
+    @Override
+    default int compareTo(Term other) {
+        return TermOrder.compare(this, other);
+    }
+}

@@ -1,0 +1,35 @@
+package jacabot.agent.syntax;
+
+/**
+ * A variable. Source variables have serial 0; unnamed variables ({@code _}) and the fresh
+ * variables made at run time carry a serial that keeps them apart from every other variable.
+ */
+public record Var(String name, long serial) implements Term {
+    public Var(String name) {
+        this(name, 0);
+    }
+
+    /** {@return whether the variable is unnamed ({@code _}, {@code _X} or fresh)} */
+    public boolean isUnnamed() {
+        return serial != 0 || name.startsWith("_");
+    }
+
+    @Override
+    public boolean isGround() {
+        return false;
+    }
+
+    @Override
+    public void collectVars(java.util.function.Consumer<Var> sink) {
+        sink.accept(this);
+    }
+
+    @Override
+    public String toString() {
+        if (serial == 0) {
+            return name;
+        }
+        String base = name.startsWith("_") ? name.substring(1) : name;
+        return "_" + Math.abs(serial) + base;
+    }
+}
