@@ -103,6 +103,8 @@ final class Physics {
         f.setFriction(0);
         f.setDensity(50.0 / (Math.PI * radius * radius));
         body.setMass(MassType.FIXED_ANGULAR_VELOCITY);
+        body.setLinearDamping(0);
+        body.setAngularDamping(0); // dyn4j's default is not 0: the wheels alone set the velocities
         return register(new SimObject(name, ObjectKind.ROBOT, body, color, height, 2 * radius, 2 * radius, false), x, z, heading);
     }
 
