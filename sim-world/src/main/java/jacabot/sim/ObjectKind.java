@@ -1,0 +1,6 @@
+package jacabot.sim;
+
+/** The kinds of things in a world. */
+public enum ObjectKind {
+    WALL, BOX, CYLINDER, ROBOT
+}

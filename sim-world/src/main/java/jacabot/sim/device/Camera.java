@@ -1,0 +1,142 @@
+package jacabot.sim.device;
+
+import jacabot.sim.Pose;
+import jacabot.sim.Rgb;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.LongSupplier;
+import java.util.function.Supplier;
+
+/**
+ * A colour camera, after Webots' {@code Camera}: a {@code width × height} image rendered by ray
+ * casting. Column c looks at relative bearing {@code -fov/2 + (c + 0.5) fov / width} (column 0 is
+ * the robot's left); row r at elevation {@code vfov/2 - (r + 0.5) vfov / height} with
+ * {@code vfov = fov × height / width} (square pixels; row 0 is the top). A pixel takes the colour of
+ * the first object whose side the ray meets between the floor and the object's height; if the
+ * ray reaches the floor first it sees the floor colour, and past everything the background.
+ * Objects are flat-shaded (no lighting), so a red cylinder gives exactly its colour.
+ */
+public final class Camera extends Sensor {
+    private final int width, height;
+    private final double fov, mountHeight, range;
+    private final Supplier<Pose> mount;
+    private final RayCaster caster;
+    private final Rgb floor, background;
+    private int[] image;
+
+    /**
+     * @param fov         horizontal field of view in degrees
+     * @param mountHeight the lens' height above the floor in metres
+     * @param range       the farthest distance seen, metres
+     */
+    public Camera(String name, LongSupplier clock, int width, int height, double fov, double mountHeight, double range,
+                  Supplier<Pose> mount, RayCaster caster, Rgb floor, Rgb background) {
+        super(name, clock);
+        if (width < 3 || height < 1) {
+            throw new IllegalArgumentException("a camera needs width >= 3 and height >= 1");
+        }
+        this.width = width;
+        this.height = height;
+        this.fov = fov;
+        this.mountHeight = mountHeight;
+        this.range = range;
+        this.mount = mount;
+        this.caster = caster;
+        this.floor = floor;
+        this.background = background;
+    }
+
+    public int getWidth() {
+        return width;
+    }
+
+    public int getHeight() {
+        return height;
+    }
+
+    /** {@return the horizontal field of view in degrees} */
+    public double getFov() {
+        return fov;
+    }
+
+    /** {@return the last image, row-major, each pixel packed 0xRRGGBB; null before the first period} */
+    public int[] getImage() {
+        return hasValue() ? image.clone() : null;
+    }
+
+    /** {@return the red level 0..255 of pixel (x, y) of an image from {@link #getImage()}} */
+    public static int imageGetRed(int[] image, int width, int x, int y) {
+        return (image[y * width + x] >> 16) & 0xFF;
+    }
+
+    /** {@return the green level 0..255 of a pixel} */
+    public static int imageGetGreen(int[] image, int width, int x, int y) {
+        return (image[y * width + x] >> 8) & 0xFF;
+    }
+
+    /** {@return the blue level 0..255 of a pixel} */
+    public static int imageGetBlue(int[] image, int width, int x, int y) {
+        return image[y * width + x] & 0xFF;
+    }
+
+    /**
+     * {@return the mean red, green and blue levels (rounded) of one third of the last image}
+     *
+     * @throws IllegalStateException before the first image
+     */
+    public Rgb getSectionLevels(Section section) {
+        if (!hasValue()) {
+            throw new IllegalStateException("camera '" + name() + "' has no image yet: enable it and step one period");
+        }
+        long r = 0, g = 0, b = 0;
+        int from = section.firstColumn(width), to = section.endColumn(width);
+        for (int y = 0; y < height; y++) {
+            for (int x = from; x < to; x++) {
+                int p = image[y * width + x];
+                r += (p >> 16) & 0xFF;
+                g += (p >> 8) & 0xFF;
+                b += p & 0xFF;
+            }
+        }
+        long n = (long) (to - from) * height;
+        return new Rgb((int) Math.round((double) r / n), (int) Math.round((double) g / n), (int) Math.round((double) b / n));
+    }
+
+    @Override
+    protected void sample() {
+        image = render();
+    }
+
+    /** {@return an image of what the camera sees now} */
+    public int[] render() {
+        int[] img = new int[width * height];
+        Arrays.fill(img, background.packed());
+        Pose p = mount.get();
+        double vfov = fov * height / width;
+        for (int c = 0; c < width; c++) {
+            double bearing = p.heading() - fov / 2 + (c + 0.5) * fov / width;
+            List<RayHit> hits = caster.castAll(p.position(), bearing, range);
+            for (int r = 0; r < height; r++) {
+                double slope = Math.tan(Math.toRadians(vfov / 2 - (r + 0.5) * vfov / height));
+                img[r * width + c] = pixel(hits, slope).packed();
+            }
+        }
+        return img;
+    }
+
+    private Rgb pixel(List<RayHit> hits, double slope) {
+        for (RayHit h : hits) {
+            double y = mountHeight + h.distance() * slope;
+            if (y < 0) {
+                return floor;
+            }
+            if (y <= h.height()) {
+                return h.color();
+            }
+        }
+        if (slope < 0 && mountHeight + range * slope < 0) {
+            return floor;
+        }
+        return background;
+    }
+}

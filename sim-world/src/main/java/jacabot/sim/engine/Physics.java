@@ -1,0 +1,167 @@
+package jacabot.sim.engine;
+
+import jacabot.sim.ObjectKind;
+import jacabot.sim.Rgb;
+import jacabot.sim.Vec2;
+import jacabot.sim.device.RayCaster;
+import jacabot.sim.device.RayHit;
+import jacabot.sim.world.ArenaSpec;
+import jacabot.sim.world.BoxSpec;
+import jacabot.sim.world.CylinderSpec;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.dyn4j.collision.narrowphase.Raycast;
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.geometry.Geometry;
+import org.dyn4j.geometry.MassType;
+import org.dyn4j.geometry.Ray;
+import org.dyn4j.geometry.Vector2;
+import org.dyn4j.world.World;
+
+/**
+ * The dyn4j world: a top-down plane with no gravity, stepped at a fixed frequency. Floor friction
+ * on movable objects is modelled by linear and angular damping. Internal to sim-world.
+ */
+final class Physics {
+    /** Damping (1/s) standing in for floor friction on boxes and cylinders. */
+    static final double FLOOR_DAMPING = 8.0;
+
+    /** How far behind its origin a ray starts, in metres. */
+    static final double BACKOFF = 0.01;
+
+    private final World<Body> world = new World<>();
+    private final Map<String, SimObject> objects = new LinkedHashMap<>();
+
+    Physics(int basicTimeStepMs) {
+        world.setGravity(World.ZERO_GRAVITY);
+        world.getSettings().setStepFrequency(basicTimeStepMs / 1000.0);
+        world.getSettings().setAtRestDetectionEnabled(false);
+    }
+
+    void step() {
+        world.step(1);
+    }
+
+    Collection<SimObject> objects() {
+        return Collections.unmodifiableCollection(objects.values());
+    }
+
+    SimObject get(String id) {
+        return objects.get(id);
+    }
+
+    boolean contains(String id) {
+        return objects.containsKey(id);
+    }
+
+    void addArenaWalls(ArenaSpec a) {
+        double t = a.wallThickness(), hx = a.halfWidth(), hz = a.halfDepth();
+        addBox(new BoxSpec("wall-north", hx + t / 2, 0, t, a.depth() + 2 * t, 0, a.wallHeight(), false, 0, a.wallColor()), ObjectKind.WALL);
+        addBox(new BoxSpec("wall-south", -hx - t / 2, 0, t, a.depth() + 2 * t, 0, a.wallHeight(), false, 0, a.wallColor()), ObjectKind.WALL);
+        addBox(new BoxSpec("wall-east", 0, hz + t / 2, a.width(), t, 0, a.wallHeight(), false, 0, a.wallColor()), ObjectKind.WALL);
+        addBox(new BoxSpec("wall-west", 0, -hz - t / 2, a.width(), t, 0, a.wallHeight(), false, 0, a.wallColor()), ObjectKind.WALL);
+    }
+
+    SimObject addBox(BoxSpec b, ObjectKind kind) {
+        Body body = new Body();
+        BodyFixture f = body.addFixture(Geometry.createRectangle(b.sizeX(), b.sizeZ()));
+        if (b.movable()) {
+            f.setDensity(b.mass() / (b.sizeX() * b.sizeZ()));
+            body.setMass(MassType.NORMAL);
+            body.setLinearDamping(FLOOR_DAMPING);
+            body.setAngularDamping(FLOOR_DAMPING);
+        } else {
+            body.setMass(MassType.INFINITE);
+        }
+        return register(new SimObject(b.id(), kind, body, b.color(), b.height(), b.sizeX(), b.sizeZ(), b.movable()), b.x(), b.z(), b.heading());
+    }
+
+    SimObject addCylinder(CylinderSpec c) {
+        Body body = new Body();
+        BodyFixture f = body.addFixture(Geometry.createCircle(c.radius()));
+        f.setDensity(c.mass() / (Math.PI * c.radius() * c.radius()));
+        body.setMass(MassType.NORMAL);
+        body.setLinearDamping(FLOOR_DAMPING);
+        body.setAngularDamping(FLOOR_DAMPING);
+        return register(new SimObject(c.id(), ObjectKind.CYLINDER, body, c.color(), c.height(), 2 * c.radius(), 2 * c.radius(), true),
+                c.x(), c.z(), 0);
+    }
+
+    /**
+     * A robot body: a disc whose rotation only the wheels change (infinite inertia), heavy enough
+     * that pushing boxes and cylinders does not slow it, frictionless against walls.
+     */
+    SimObject addRobot(String name, double radius, double height, Rgb color, double x, double z, double heading) {
+        Body body = new Body();
+        BodyFixture f = body.addFixture(Geometry.createCircle(radius));
+        f.setFriction(0);
+        f.setDensity(50.0 / (Math.PI * radius * radius));
+        body.setMass(MassType.FIXED_ANGULAR_VELOCITY);
+        body.setLinearDamping(0);
+        body.setAngularDamping(0); // dyn4j's default is not 0: the wheels alone set the velocities
+        return register(new SimObject(name, ObjectKind.ROBOT, body, color, height, 2 * radius, 2 * radius, false), x, z, heading);
+    }
+
+    private SimObject register(SimObject o, double x, double z, double heading) {
+        if (objects.containsKey(o.id)) {
+            throw new IllegalArgumentException("an object named '" + o.id + "' already exists");
+        }
+        o.place(x, z, heading);
+        objects.put(o.id, o);
+        world.addBody(o.body);
+        return o;
+    }
+
+    SimObject remove(String id) {
+        SimObject o = objects.remove(id);
+        if (o != null) {
+            world.removeBody(o.body);
+        }
+        return o;
+    }
+
+    /** {@return whether the body touches a solid body (walls, objects, robots; ghosts excluded)} */
+    boolean inContact(SimObject o) {
+        return !world.getInContactBodies(o.body, false).isEmpty();
+    }
+
+    /** A ray caster that ignores one robot and every carried object. */
+    RayCaster rayCaster(SimObject self) {
+        return (origin, bearingDeg, maxRange) -> castAll(self, origin, bearingDeg, maxRange);
+    }
+
+    /**
+     * Rays start {@link #BACKOFF} behind their origin (inside the robot, which is ignored), so that an
+     * object pressed against the sensor, slightly penetrating, is still seen, at distance 0.
+     */
+    private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
+        double r = Math.toRadians(bearingDeg);
+        Ray ray = new Ray(new Vector2(origin.x() - BACKOFF * Math.cos(r), origin.z() - BACKOFF * Math.sin(r)), r);
+        Raycast raycast = new Raycast();
+        List<RayHit> hits = new ArrayList<>(4);
+        for (SimObject o : objects.values()) {
+            if (o == self || o.carriedBy != null) {
+                continue;
+            }
+            double best = Double.POSITIVE_INFINITY;
+            for (BodyFixture f : o.body.getFixtures()) {
+                raycast.clear();
+                if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
+                        && raycast.getDistance() - BACKOFF < best) {
+                    best = Math.max(0, raycast.getDistance() - BACKOFF);
+                }
+            }
+            if (best <= maxRange) {
+                hits.add(new RayHit(best, o.color, o.height, o.id));
+            }
+        }
+        hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable: ties keep insertion order
+        return hits;
+    }
+}

@@ -1,0 +1,107 @@
+package jacabot.sim.device;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.sim.Rgb;
+import jacabot.sim.SimWorld;
+import jacabot.sim.TestWorlds;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The Khepera's camera (64×8, 60°, lens at the front rim 2.5 cm high) and a red cylinder (radius
+ * 1.25 cm, 4 cm high) 6 cm from the lens: seen under ±12°, it fills the centre section (columns at
+ * -9.8°..9.8°) when straight ahead and the left section (-29.5°..-10.8°) when 20° to the left.
+ */
+class CameraTest {
+    static final Rgb RED = new Rgb(255, 32, 32);
+
+    /** The thesis' test: red at least twice green and twice blue. */
+    static boolean isRed(Rgb c) {
+        return c.red() > 2 * c.green() && c.red() > 2 * c.blue();
+    }
+
+    private static Camera cameraSeeingCylinderAt(double bearing) {
+        double lens = 0.0285, d = 0.06;
+        double x = lens + d * Math.cos(Math.toRadians(bearing)), z = d * Math.sin(Math.toRadians(bearing));
+        SimWorld w = TestWorlds.khepera(0, 0, 0, "\"cylinders\": [{\"id\": \"red1\", \"x\": " + x + ", \"z\": " + z + "}]");
+        Camera cam = w.robot("k").getCamera("camera");
+        cam.enable(40);
+        w.step();
+        return cam;
+    }
+
+    @Test
+    void aCylinderStraightAheadFillsTheCentreSection() {
+        Camera cam = cameraSeeingCylinderAt(0);
+        assertEquals(RED, cam.getSectionLevels(Section.CENTRE));
+        assertFalse(isRed(cam.getSectionLevels(Section.LEFT)));
+        assertFalse(isRed(cam.getSectionLevels(Section.RIGHT)));
+    }
+
+    @Test
+    void aCylinderOnTheLeftFillsTheLeftSection() {
+        Camera cam = cameraSeeingCylinderAt(-20);
+        assertEquals(RED, cam.getSectionLevels(Section.LEFT));
+        assertFalse(isRed(cam.getSectionLevels(Section.CENTRE)));
+        assertFalse(isRed(cam.getSectionLevels(Section.RIGHT)));
+    }
+
+    @Test
+    void aCylinderOnTheRightFillsTheRightSection() {
+        Camera cam = cameraSeeingCylinderAt(20);
+        assertEquals(RED, cam.getSectionLevels(Section.RIGHT));
+        assertFalse(isRed(cam.getSectionLevels(Section.LEFT)));
+        assertFalse(isRed(cam.getSectionLevels(Section.CENTRE)));
+    }
+
+    @Test
+    void withoutACylinderNoSectionIsRed() {
+        SimWorld w = TestWorlds.khepera(0, 0, 0, "\"boxes\": [{\"x\": 0.12, \"z\": 0, \"size\": 0.06}]");
+        Camera cam = w.robot("k").getCamera("camera");
+        cam.enable(40);
+        w.step();
+        for (Section s : Section.values()) {
+            assertFalse(isRed(cam.getSectionLevels(s)), s.name());
+        }
+        // the cream box fills the centre: rows see its side between the floor and 6 cm
+        assertEquals(new Rgb(255, 240, 200), cam.getSectionLevels(Section.CENTRE));
+    }
+
+    @Test
+    void theFarWallsTopAndTheFloorFillTheRowsAboveAndBelow() {
+        SimWorld w = TestWorlds.khepera(-0.45, 0, 0, "");
+        Camera cam = w.robot("k").getCamera("camera");
+        cam.enable(40);
+        w.step();
+        int[] img = cam.getImage();
+        // the north wall is 0.92 m from the lens: the bottom row (elevation -3.28°) meets the floor
+        // at 0.025 / tan(3.28°) = 0.44 m, the top row (+3.28°) meets the 10 cm wall at 7.8 cm
+        assertEquals(140, Camera.imageGetRed(img, 64, 32, 7));
+        assertEquals(255, Camera.imageGetGreen(img, 64, 32, 0));
+    }
+
+    @Test
+    void theImageComesAfterOnePeriodAndSectionsNeedIt() {
+        SimWorld w = TestWorlds.khepera(0, 0, 0, "");
+        Camera cam = w.robot("k").getCamera("camera");
+        cam.enable(64);
+        w.step(56);
+        assertNull(cam.getImage());
+        assertThrows(IllegalStateException.class, () -> cam.getSectionLevels(Section.CENTRE));
+        w.step(8);
+        assertEquals(64 * 8, cam.getImage().length);
+        assertTrue(cam.hasValue());
+    }
+
+    @Test
+    void sectionsSplitTheColumnsInThirds() {
+        assertEquals(0, Section.LEFT.firstColumn(64));
+        assertEquals(21, Section.CENTRE.firstColumn(64));
+        assertEquals(42, Section.RIGHT.firstColumn(64));
+        assertEquals(64, Section.RIGHT.endColumn(64));
+    }
+}
