@@ -100,7 +100,8 @@ public final class Agent {
 
     /** {@return whether a cycle now would do nothing (the agent may sleep until woken)} */
     public boolean canSleep() {
-        if (!beginOfCycle.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()) {
+        if (!beginOfCycle.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()
+                || !arch.canSleep()) {
             return false;
         }
         if (nextTimerDue() <= clock().millis()) {

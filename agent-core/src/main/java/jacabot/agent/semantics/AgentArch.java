@@ -47,6 +47,11 @@ public interface AgentArch {
         return Clock.wall();
     }
 
+    /** {@return false while the architecture has input for the agent (e.g. new percepts)} */
+    default boolean canSleep() {
+        return true;
+    }
+
     /** Called when the agent has something new to do (mail, feedback, a timer), from any thread. */
     default void wake() {
     }

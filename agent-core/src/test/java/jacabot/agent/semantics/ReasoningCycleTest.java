@@ -1,0 +1,117 @@
+package jacabot.agent.semantics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.agent.TestAgent;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class ReasoningCycleTest {
+
+    @Test
+    void firstApplicablePlanInFileOrderWithTheFirstUnifier() {
+        var a = new TestAgent("""
+                v(1). v(2). v(3).
+                !g.
+                +!g : v(X) & X > 1 <- .print(first, X).
+                +!g <- .print(second).
+                """);
+        a.cycles(20);
+        assertEquals(List.of("first2"), a.printed());
+    }
+
+    @Test
+    void failureAnnotationsTellWhatFailedAndWhere() {
+        var a = new TestAgent("""
+                !g.
+                +!g <- X = 1;
+                       X > 2.
+                -!g[error(E), code(C), code_line(L), error_msg(M)] <- .print(E, " ", C, " ", L).
+                """);
+        a.cycles(20);
+        assertEquals(List.of("constraint_failed (1 > 2) 3"), a.printed());
+    }
+
+    @Test
+    void unhandledFailureWarnsInJasonsWordsAndDropsTheIntention() {
+        var a = new TestAgent("""
+                !g.
+                +!g <- .fail; .print(never).
+                """);
+        a.cycles(20);
+        assertTrue(a.printed().get(0).startsWith("No failure event was generated for +!g["), a.printed().toString());
+        assertFalse(a.printed().contains("never"));
+        assertTrue(a.agent.canSleep());
+    }
+
+    @Test
+    void environmentActionsWaitForFeedbackAndFailWithActionFailed() {
+        var a = new TestAgent("""
+                !g.
+                +!g <- move(1); move(2); .print(done).
+                -!g[error(E)] <- .print(E).
+                """);
+        a.environment = act -> !act.action().toString().equals("move(2)");
+        a.cycles(30);
+        assertEquals(List.of("move(1)", "move(2)"), a.actionNames());
+        assertEquals(List.of("action_failed"), a.printed());
+    }
+
+    @Test
+    void tailRecursionKeepsTheIntentionStackFlat() {
+        var a = new TestAgent("""
+                !count(0).
+                +!count(N) : N < 5000 <- !count(N + 1).
+                +!count(N) <- .print(N).
+                """);
+        int maxDepth = 0;
+        for (int i = 0; i < 20000 && a.printed().isEmpty(); i++) {
+            a.agent.reasoningCycle();
+            for (Intention in : a.agent.circumstance().allIntentions()) {
+                maxDepth = Math.max(maxDepth, in.size());
+            }
+        }
+        assertEquals(List.of("5000"), a.printed());
+        assertTrue(maxDepth <= 2, "stack depth " + maxDepth);
+    }
+
+    @Test
+    void resultsOfSubgoalsFlowBackThroughRecursion() {
+        var a = new TestAgent("""
+                !start.
+                +!start <- !fact(10, F); .print(F).
+                +!fact(0, 1).
+                +!fact(N, F) <- !fact(N - 1, F1); F = N * F1.
+                """);
+        a.cycles(200);
+        assertEquals(List.of("3628800"), a.printed());
+    }
+
+    @Test
+    void atomicIntentionRunsAlone() {
+        var a = new TestAgent("""
+                !a. !b.
+                +!a <- .print(a1); .print(a2); .print(a3).
+                @x[atomic] +!b <- .print(b1); .print(b2); .print(b3).
+                """);
+        a.cycles(50);
+        assertEquals(List.of("a1", "b1", "b2", "b3", "a2", "a3"), a.printed());
+    }
+
+    @Test
+    void perceptsBecomeBeliefsWithSourcePerceptAndEvents() {
+        var a = new TestAgent("""
+                +obstacle(D)[source(percept)] <- .print(seen, D).
+                -obstacle(D) <- .print(gone, D).
+                """);
+        a.percepts = List.of(jacabot.agent.syntax.Literal.of("obstacle", new jacabot.agent.syntax.NumberTerm(350)));
+        a.cycles(10);
+        assertTrue(a.believes("obstacle(350)[source(percept)]"));
+        a.percepts = List.of();
+        a.cycles(10);
+        assertFalse(a.believes("obstacle(_)"));
+        assertEquals(List.of("seen350", "gone350"), a.printed());
+    }
+}

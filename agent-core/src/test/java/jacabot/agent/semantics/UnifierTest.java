@@ -1,0 +1,71 @@
+package jacabot.agent.semantics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import org.junit.jupiter.api.Test;
+
+class UnifierTest {
+    private final AslParser parser = new AslParser();
+
+    private Term t(String text) throws Exception {
+        return parser.parseTerm(text);
+    }
+
+    @Test
+    void bindsVariablesOnBothSides() throws Exception {
+        var u = new Unifier();
+        assertTrue(u.unifies(t("f(X, b, [1|T])"), t("f(a, Y, [1,2,3])")));
+        assertEquals("a", u.apply(new Var("X")).toString());
+        assertEquals("b", u.apply(new Var("Y")).toString());
+        assertEquals("[2,3]", u.apply(new Var("T")).toString());
+    }
+
+    @Test
+    void sharedVariablesMustAgree() throws Exception {
+        var u = new Unifier();
+        assertFalse(u.unifies(t("g(X, X)"), t("g(1, 2)")));
+        assertTrue(u.isEmpty(), "a failed unification leaves no binding behind");
+        assertTrue(u.unifies(t("g(X, X)"), t("g(1, 1.0)")), "1 and 1.0 are the same number");
+    }
+
+    @Test
+    void annotationsOfTheFirstTermMustBeASubset() throws Exception {
+        assertTrue(new Unifier().unifies(t("p(1)[a]"), t("p(1)[a,b]")));
+        assertFalse(new Unifier().unifies(t("p(1)[a,b]"), t("p(1)[a]")));
+        var u = new Unifier();
+        assertTrue(u.unifies(t("p[source(S)]"), t("p[x,source(bob)]")));
+        assertEquals("bob", u.apply(new Var("S")).toString());
+    }
+
+    @Test
+    void stringsAtomsAndStructuresAreDistinct() throws Exception {
+        assertFalse(new Unifier().unifies(t("\"a\""), t("a")));
+        assertFalse(new Unifier().unifies(t("f(x)"), t("g(x)")));
+        assertFalse(new Unifier().unifies(t("f(x, y)"), t("f(x)")));
+        assertFalse(new Unifier().unifies(t("~p"), t("p")));
+    }
+
+    @Test
+    void arithmeticIsEvaluatedOnceBound() throws Exception {
+        var u = new Unifier();
+        assertTrue(u.unifies(new Var("X"), t("3")));
+        assertEquals("7", u.apply(t("X * 2 + 1")).toString());
+        assertEquals("(Y+1)", u.apply(t("Y + 1")).toString(), "unbound operands keep the expression");
+        assertTrue(u.unifies(t("X + 1"), t("4")));
+    }
+
+    @Test
+    void copiesAreIndependent() throws Exception {
+        var u = new Unifier();
+        u.unifies(new Var("X"), t("1"));
+        var c = u.copy();
+        c.unifies(new Var("Y"), t("2"));
+        assertEquals("Y", u.apply(new Var("Y")).toString());
+        assertEquals("2", c.apply(new Var("Y")).toString());
+    }
+}
