@@ -8,6 +8,7 @@ package jacabot.cartago;
  */
 public final class SimulatedClock implements ArtifactClock {
     private long now;
+    private int sleepers;
 
     /** Starts at time 0. */
     public SimulatedClock() {
@@ -35,8 +36,21 @@ public final class SimulatedClock implements ArtifactClock {
 
     @Override
     public synchronized void sleepUntil(long deadlineMillis) throws InterruptedException {
-        while (now < deadlineMillis) {
-            wait();
+        sleepers++;
+        try {
+            while (now < deadlineMillis) {
+                wait();
+            }
+        } finally {
+            sleepers--;
         }
+    }
+
+    /**
+     * {@return how many threads sleep in {@link #sleepUntil(long)}}; a threaded simulation can wait
+     * for its artifacts to be asleep before advancing, so that no wake-up is missed.
+     */
+    public synchronized int sleepers() {
+        return sleepers;
     }
 }
