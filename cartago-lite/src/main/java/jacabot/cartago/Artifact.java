@@ -156,6 +156,17 @@ public abstract class Artifact {
     }
 
     /**
+     * Runs the operation {@code name(args...)} of the artifact {@code target} ({@link LINK}
+     * operations first, then ordinary ones) for the same agent, and waits for it: like an
+     * {@code await}, this commits and releases this artifact meanwhile. Outputs given as
+     * {@link OpFeedbackParam}s are set when it returns; its failure fails this operation too.
+     */
+    protected final void execLinkedOp(ArtifactId target, String name, Object... args) {
+        OpExecution step = core.current();
+        step.awaitLinked(core.workspace().resolve(target), name, args);
+    }
+
+    /**
      * Called when the artifact is disposed (by {@code disposeArtifact} or the workspace closing),
      * holding the artifact; release resources here. Operations suspended in the artifact fail
      * when they resume. Does nothing by default.

@@ -51,11 +51,13 @@ final class ArtifactType {
         for (Method m : methods) {
             OPERATION op = m.getAnnotation(OPERATION.class);
             INTERNAL_OPERATION internal = m.getAnnotation(INTERNAL_OPERATION.class);
-            if (op != null || internal != null) {
-                String guardName = op != null ? op.guard() : internal.guard();
+            LINK link = m.getAnnotation(LINK.class);
+            String guardName = op != null ? op.guard() : internal != null ? internal.guard() : link != null ? link.guard() : null;
+            if (guardName != null) {
+                OpMethod.Kind kind = op != null ? OpMethod.Kind.OPERATION
+                        : internal != null ? OpMethod.Kind.INTERNAL : OpMethod.Kind.LINK;
                 Method guard = guardName.isEmpty() ? null : result.guardFor(guardName, m);
-                result.operations.computeIfAbsent(m.getName(), k -> new ArrayList<>())
-                        .add(new OpMethod(m, op == null, guard));
+                result.operations.computeIfAbsent(m.getName(), k -> new ArrayList<>()).add(new OpMethod(m, kind, guard));
             }
         }
         return result;
@@ -94,12 +96,14 @@ final class ArtifactType {
         return type;
     }
 
-    /** {@return the operations called {@code name}, of any arity; internal ones only if asked} */
-    List<OpMethod> operations(String name, boolean includeInternal) {
+    /** {@return the operations called {@code name}, of any arity, of the given kinds in that order} */
+    List<OpMethod> operations(String name, OpMethod.Kind... kinds) {
         List<OpMethod> found = new ArrayList<>();
-        for (OpMethod op : operations.getOrDefault(name, List.of())) {
-            if (includeInternal || !op.internal()) {
-                found.add(op);
+        for (OpMethod.Kind kind : kinds) {
+            for (OpMethod op : operations.getOrDefault(name, List.of())) {
+                if (op.kind() == kind) {
+                    found.add(op);
+                }
             }
         }
         return found;

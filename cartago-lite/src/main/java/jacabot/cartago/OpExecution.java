@@ -4,6 +4,7 @@ import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -195,6 +196,27 @@ final class OpExecution implements Runnable {
         checkStartable();
         if (error != null) {
             throw error;
+        }
+    }
+
+    /** Runs an operation of a linked artifact and waits for its outcome, as an await. */
+    void awaitLinked(ArtifactCore target, String name, Object[] linkedArgs) {
+        CompletableFuture<OpOutcome> done = new CompletableFuture<>();
+        OpExecution linked = OpResolver.prepareFromArtifact(target, agent, name, linkedArgs, OpMethod.Kind.LINK, done::complete);
+        suspend();
+        Scheduler scheduler = core.workspace().scheduler();
+        scheduler.launch(linked);
+        try {
+            scheduler.awaitDone(this, done);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new OpFailedException("operation " + describe() + " interrupted: the workspace is closing", "interrupted");
+        }
+        enter(() -> true);
+        checkStartable();
+        OpOutcome outcome = done.join();
+        if (!outcome.succeeded()) {
+            throw new OpFailedException((OpOutcome.Failure) outcome);
         }
     }
 

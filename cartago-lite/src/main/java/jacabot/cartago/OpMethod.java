@@ -3,13 +3,23 @@ package jacabot.cartago;
 import java.lang.reflect.Method;
 
 /**
- * One operation of an artifact class: the method, whether it is internal, and its guard.
+ * One operation of an artifact class: the method, who may call it, and its guard.
  *
  * @param method the annotated method, made accessible
- * @param internal whether it is an {@link INTERNAL_OPERATION}
+ * @param kind who may call it
  * @param guard the {@link GUARD} method checked before it starts, or null
  */
-record OpMethod(Method method, boolean internal, Method guard) {
+record OpMethod(Method method, Kind kind, Method guard) {
+    /** Who may call an operation. */
+    enum Kind {
+        /** Agents ({@link OPERATION}); the artifact itself and linked artifacts too. */
+        OPERATION,
+        /** The artifact itself only ({@link INTERNAL_OPERATION}). */
+        INTERNAL,
+        /** Linked artifacts only ({@link LINK}). */
+        LINK
+    }
+
     String name() {
         return method.getName();
     }

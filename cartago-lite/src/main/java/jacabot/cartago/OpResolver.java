@@ -25,14 +25,14 @@ final class OpResolver {
         List<ArtifactCore> candidates = target.isAny() ? candidates(ws, agent)
                 : List.of(ws.resolve(target.id() != null ? target.id() : target.name()));
         for (ArtifactCore core : candidates) {
-            List<OpMethod> methods = matching(core, operation, args.length, false);
+            List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
             if (!methods.isEmpty()) {
                 return bind(core, methods, args, agent, callback);
             }
         }
         List<String> others = new ArrayList<>();
         for (ArtifactCore core : candidates) {
-            for (OpMethod m : core.type().operations(operation, false)) {
+            for (OpMethod m : core.type().operations(operation, OpMethod.Kind.OPERATION)) {
                 others.add(core.id().name() + " has " + m.signature());
             }
         }
@@ -45,14 +45,19 @@ final class OpResolver {
         throw new OpFailedException(where + " operation " + signature, "unknown_operation", operation, args.length);
     }
 
-    static OpExecution prepareInternal(ArtifactCore core, AgentId agent, String operation, Object[] args) {
-        List<OpMethod> methods = matching(core, operation, args.length, true);
-        methods.sort(Comparator.comparing(m -> !m.internal()));
+    /**
+     * Prepares an operation one artifact starts: an internal one on itself (internal operations
+     * preferred, then ordinary ones) or a linked one on another ({@link LINK} ones preferred).
+     */
+    static OpExecution prepareFromArtifact(ArtifactCore core, AgentId agent, String operation, Object[] args,
+            OpMethod.Kind preferred, OpCallback callback) {
+        List<OpMethod> methods = matching(core, operation, args.length, preferred, OpMethod.Kind.OPERATION);
         if (methods.isEmpty()) {
-            throw new OpFailedException("artifact " + core.id().name() + " has no operation " + operation + "/" + args.length,
-                    "unknown_operation", operation, args.length);
+            String kind = preferred == OpMethod.Kind.LINK ? "linked" : "internal";
+            throw new OpFailedException("artifact " + core.id().name() + " has no " + kind + " operation " + operation
+                    + "/" + args.length, "unknown_operation", operation, args.length);
         }
-        return bind(core, methods, args, agent, null);
+        return bind(core, methods, args, agent, callback);
     }
 
     /**
@@ -82,9 +87,9 @@ final class OpResolver {
         return new ArrayList<>(ordered);
     }
 
-    private static List<OpMethod> matching(ArtifactCore core, String operation, int count, boolean internal) {
+    private static List<OpMethod> matching(ArtifactCore core, String operation, int count, OpMethod.Kind... kinds) {
         List<OpMethod> found = new ArrayList<>();
-        for (OpMethod m : core.type().operations(operation, internal)) {
+        for (OpMethod m : core.type().operations(operation, kinds)) {
             if (m.accepts(count)) {
                 found.add(m);
             }
@@ -96,7 +101,7 @@ final class OpResolver {
     private static OpExecution bind(ArtifactCore core, List<OpMethod> methods, Object[] args, AgentId agent,
             OpCallback callback) {
         List<OpMethod> ordered = new ArrayList<>(methods);
-        ordered.sort(Comparator.comparing(m -> m.method().isVarArgs()));
+        ordered.sort(Comparator.comparing(m -> m.method().isVarArgs())); // stable: keeps kind preference
         ArgConverter.Mismatch first = null;
         for (OpMethod m : ordered) {
             try {

@@ -1,5 +1,6 @@
 package jacabot.cartago;
 
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Semaphore;
 import java.util.function.BooleanSupplier;
 
@@ -33,6 +34,9 @@ interface Scheduler {
 
     /** Blocks the carrier, which does not hold its artifact, until the clock reaches {@code deadline}. */
     void sleepUntil(OpExecution op, long deadline) throws InterruptedException;
+
+    /** Blocks the carrier, which does not hold its artifact, until {@code done} completes. */
+    void awaitDone(OpExecution op, CompletableFuture<?> done) throws InterruptedException;
 
     /** Runs a blocking command for the carrier, which does not hold its artifact. */
     void runBlocking(OpExecution op, IBlockingCmd command);

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Deque;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.ThreadPoolExecutor;
@@ -80,6 +81,11 @@ final class SteppedScheduler implements Scheduler {
     @Override
     public void sleepUntil(OpExecution op, long deadline) throws InterruptedException {
         awaitTurn(op, deadline, () -> clock.nowMillis() >= deadline, false);
+    }
+
+    @Override
+    public void awaitDone(OpExecution op, CompletableFuture<?> done) throws InterruptedException {
+        awaitTurn(op, clock.nowMillis(), done::isDone, false);
     }
 
     @Override

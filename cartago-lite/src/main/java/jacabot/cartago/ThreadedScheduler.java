@@ -1,5 +1,7 @@
 package jacabot.cartago;
 
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -60,6 +62,15 @@ final class ThreadedScheduler implements Scheduler {
     @Override
     public void sleepUntil(OpExecution op, long deadline) throws InterruptedException {
         clock.sleepUntil(deadline);
+    }
+
+    @Override
+    public void awaitDone(OpExecution op, CompletableFuture<?> done) throws InterruptedException {
+        try {
+            done.get();
+        } catch (ExecutionException e) {
+            // The outcome is read by the caller from the future itself.
+        }
     }
 
     @Override

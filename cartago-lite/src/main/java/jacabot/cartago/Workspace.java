@@ -167,7 +167,12 @@ public final class Workspace implements AutoCloseable {
 
     /** Starts an internal operation of {@code core} for {@code agent}; see {@link Artifact#execInternalOp}. */
     void startInternal(ArtifactCore core, AgentId agent, String operation, Object[] args) {
-        scheduler.launch(OpResolver.prepareInternal(core, agent, operation, args));
+        scheduler.launch(OpResolver.prepareFromArtifact(core, agent, operation, args, OpMethod.Kind.INTERNAL, null));
+    }
+
+    /** Starts a linked operation of {@code core}; see {@link Artifact#execLinkedOp}. */
+    void startLinked(ArtifactCore core, AgentId agent, String operation, Object[] args, OpCallback callback) {
+        scheduler.launch(OpResolver.prepareFromArtifact(core, agent, operation, args, OpMethod.Kind.LINK, callback));
     }
 
     /**
