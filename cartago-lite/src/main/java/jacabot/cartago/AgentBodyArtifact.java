@@ -10,13 +10,13 @@ public class AgentBodyArtifact extends Artifact {
     @OPERATION
     void focus(Object id) {
         Workspace ws = core().workspace();
-        ws.focus(getCurrentOpAgentId(), ws.resolve(id));
+        ws.focusBook().focus(getCurrentOpAgentId(), ws.resolve(id));
     }
 
     /** Stops observing an artifact; fails if the agent was not observing it. */
     @OPERATION
     void stopFocus(Object id) {
         Workspace ws = core().workspace();
-        ws.stopFocus(getCurrentOpAgentId(), ws.resolve(id));
+        ws.focusBook().stopFocus(getCurrentOpAgentId(), ws.resolve(id));
     }
 }

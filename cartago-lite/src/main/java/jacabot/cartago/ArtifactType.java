@@ -130,9 +130,4 @@ final class ArtifactType {
         }
         return found;
     }
-
-    /** {@return whether the class has any {@code init} method} */
-    boolean hasInit() {
-        return !inits.isEmpty();
-    }
 }

@@ -12,7 +12,6 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentSkipListMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -36,9 +35,6 @@ public final class Workspace implements AutoCloseable {
     private static final Set<String> RESERVED = Set.of("workspace", "console");
     private static final Method DISPOSE_HOOK = disposeHook();
 
-    private record AgentEntry(AgentId id, ArtifactObserver observer, ArtifactId body, List<ArtifactId> focused) {
-    }
-
     private final String name;
     private final Mode mode;
     private final ArtifactClock clock;
@@ -50,7 +46,7 @@ public final class Workspace implements AutoCloseable {
     private final Set<String> names = ConcurrentHashMap.newKeySet();
     private final Map<String, ArtifactCore> byName = new ConcurrentHashMap<>();
     private final Map<Integer, ArtifactCore> byId = new ConcurrentSkipListMap<>();
-    private final Map<AgentId, AgentEntry> agents = new ConcurrentHashMap<>();
+    private final FocusBook agents;
     private volatile boolean closed;
 
     private Workspace(Builder b) {
@@ -60,6 +56,7 @@ public final class Workspace implements AutoCloseable {
         this.logger = b.logger;
         this.console = b.console;
         this.factory = new ArtifactFactory(b.loader);
+        this.agents = new FocusBook(name);
         this.scheduler = mode == Mode.STEPPED
                 ? new SteppedScheduler(name, b.maxThreads, clock, logger)
                 : new ThreadedScheduler(name, b.maxThreads, clock, logger);
@@ -84,7 +81,7 @@ public final class Workspace implements AutoCloseable {
         Objects.requireNonNull(observer, "observer");
         AgentId agent = new AgentId(agentName);
         synchronized (agents) {
-            if (agents.containsKey(agent)) {
+            if (agents.has(agent)) {
                 throw new IllegalArgumentException("agent " + agentName + " has already joined workspace " + name);
             }
             ArtifactId body;
@@ -93,21 +90,25 @@ public final class Workspace implements AutoCloseable {
             } catch (OpFailedException e) {
                 throw new IllegalArgumentException("agent " + agentName + " cannot join: " + e.getMessage(), e);
             }
-            agents.put(agent, new AgentEntry(agent, observer, body, new CopyOnWriteArrayList<>()));
+            agents.add(agent, observer, body);
         }
         return agent;
     }
 
     /** Ends an agent's work: it stops focusing everything and its body is disposed. */
     public void leave(AgentId agent) {
-        AgentEntry entry = agents.get(agent);
+        FocusBook.Entry entry = agents.get(agent);
         if (entry == null) {
             return;
         }
         for (ArtifactId focused : entry.focused()) {
             ArtifactCore core = byId.get(focused.id());
-            if (core != null) {
-                stopFocus(agent, core);
+            try {
+                if (core != null) {
+                    agents.stopFocus(agent, core);
+                }
+            } catch (OpFailedException disposedMeanwhile) {
+                // Nothing to stop.
             }
         }
         ArtifactCore body = byId.get(entry.body().id());
@@ -119,18 +120,20 @@ public final class Workspace implements AutoCloseable {
 
     /** {@return the agents that have joined} */
     public List<AgentId> agents() {
-        return new ArrayList<>(agents.keySet());
+        return agents.agents();
     }
 
     /** {@return the artifacts {@code agent} focuses, in focus order} */
     public List<ArtifactId> focusedBy(AgentId agent) {
-        AgentEntry entry = agents.get(agent);
-        return entry == null ? List.of() : List.copyOf(entry.focused());
+        return agents.focusedBy(agent);
     }
 
     ArtifactObserver observerOf(AgentId agent) {
-        AgentEntry entry = agents.get(agent);
-        return entry == null ? null : entry.observer();
+        return agents.observerOf(agent);
+    }
+
+    FocusBook focusBook() {
+        return agents;
     }
 
     // ---- operations ----
@@ -305,12 +308,7 @@ public final class Workspace implements AutoCloseable {
             } catch (RuntimeException | Error e) {
                 logger.warning(core.id().name(), "dispose() failed", e);
             }
-            for (AgentId former : core.markDisposed()) {
-                AgentEntry entry = agents.get(former);
-                if (entry != null) {
-                    entry.focused().remove(core.id());
-                }
-            }
+            agents.forget(core.id(), core.markDisposed());
         } finally {
             core.lock().unlock();
         }
@@ -358,49 +356,7 @@ public final class Workspace implements AutoCloseable {
     }
 
     boolean hasJoined(AgentId agent) {
-        return agents.containsKey(agent);
-    }
-
-    // ---- focus ----
-
-    /** Makes {@code agent} observe {@code core}: it gets the current properties, then every change. */
-    void focus(AgentId agent, ArtifactCore core) {
-        AgentEntry entry = agents.get(agent);
-        if (entry == null) {
-            throw new OpFailedException("agent " + agent + " has not joined workspace " + name, "unknown_agent", agent.name());
-        }
-        if (core.artifact() instanceof AgentBodyArtifact) {
-            throw new OpFailedException("agent bodies cannot be focused", "cannot_focus", core.id().name());
-        }
-        core.lock().lock();
-        try {
-            if (core.isDisposed()) {
-                throw new OpFailedException("no artifact " + core.id().name() + " in workspace " + name,
-                        "unknown_artifact", core.id().name());
-            }
-            if (core.addObserver(agent, entry.observer())) {
-                entry.focused().add(core.id());
-            }
-        } finally {
-            core.lock().unlock();
-        }
-    }
-
-    /** Ends {@code agent}'s observation of {@code core}. */
-    void stopFocus(AgentId agent, ArtifactCore core) {
-        core.lock().lock();
-        try {
-            if (!core.removeObserver(agent)) {
-                throw new OpFailedException("agent " + agent + " is not focusing " + core.id().name(),
-                        "not_focused", core.id().name());
-            }
-        } finally {
-            core.lock().unlock();
-        }
-        AgentEntry entry = agents.get(agent);
-        if (entry != null) {
-            entry.focused().remove(core.id());
-        }
+        return agents.has(agent);
     }
 
     /** {@return the agents observing {@code id}, in focus order} */
