@@ -141,7 +141,8 @@ public final class Workspace implements AutoCloseable {
     /**
      * Asks for the operation {@code operation(args...)} on behalf of {@code agent}; the outcome
      * comes later, exactly once, through {@code callback} (never on the calling thread in threaded
-     * mode; at a {@link #runPending()} in stepped mode).
+     * mode; at a {@link #runPending()} in stepped mode), except that a closed workspace fails the
+     * call at once.
      *
      * <p>With {@link OpTarget#any()}, the artifact is the first one with an operation of that name
      * and arity among: the artifacts {@code agent} created, oldest first (its body included); then
@@ -159,6 +160,10 @@ public final class Workspace implements AutoCloseable {
         Objects.requireNonNull(operation, "operation");
         Objects.requireNonNull(callback, "callback");
         Object[] values = args == null ? new Object[0] : args.clone();
+        if (closed) {
+            callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
+            return;
+        }
         try {
             scheduler.launch(OpResolver.prepare(this, agent, target, operation, values, callback));
         } catch (OpFailedException e) {
