@@ -1,0 +1,181 @@
+package jacabot.cartago;
+
+import java.lang.reflect.Method;
+import java.util.List;
+
+/**
+ * The base class of artifacts, with CArtAgO's API: subclass it, give it a no-argument
+ * constructor, an optional {@code init(...)} (the constructor agents call, matched by number and
+ * conversion of arguments) and {@link OPERATION}-annotated methods. The protected primitives may
+ * only be used inside the artifact's own operations, guards and {@code init}; they throw
+ * {@link IllegalStateException} anywhere else.
+ *
+ * <p>Semantics: one operation step runs at a time in an artifact. Property changes stay private to
+ * the step until a commit point: the end of the operation, {@link #signal}, {@link #commit()} and
+ * every {@code await*}, which also releases the artifact until the awaited condition holds.
+ * {@link #failed} (or an exception) ends the operation and rolls back the changes made since the
+ * last commit point, including removals.
+ */
+public abstract class Artifact {
+    private ArtifactCore core;
+
+    /** Connects the artifact to its runtime, before {@code init}. */
+    final void bind(ArtifactCore core) {
+        this.core = core;
+    }
+
+    final ArtifactCore core() {
+        return core;
+    }
+
+    /** {@return the artifact's id} */
+    public final ArtifactId getId() {
+        return core.id();
+    }
+
+    /** {@return the agent that created the artifact, or null for the workspace's own} */
+    protected final AgentId getCreatorId() {
+        return core.id().creator();
+    }
+
+    /** {@return the agent whose operation (or internal operation started by it) is running} */
+    protected final AgentId getCurrentOpAgentId() {
+        return core.current().agent();
+    }
+
+    // ---- observable properties ----
+
+    /** Defines the observable property {@code name(values...)}; it must not exist yet. */
+    protected final ObsProperty defineObsProperty(String name, Object... values) {
+        return core.properties().define(name, values);
+    }
+
+    /** {@return the observable property called {@code name}, or null} */
+    protected final ObsProperty getObsProperty(String name) {
+        return core.properties().get(name);
+    }
+
+    /** {@return whether an observable property called {@code name} exists} */
+    protected final boolean hasObsProperty(String name) {
+        return core.properties().has(name);
+    }
+
+    /** Removes the observable property called {@code name}, which must exist. */
+    protected final void removeObsProperty(String name) {
+        core.properties().remove(name);
+    }
+
+    /** Replaces all values of the existing observable property {@code name}. */
+    protected final void updateObsProperty(String name, Object... values) {
+        ObsProperty property = getObsProperty(name);
+        if (property == null) {
+            throw new IllegalArgumentException("no observable property " + name + " in " + core.id().name());
+        }
+        property.updateValues(values);
+    }
+
+    // ---- signals, failure, logging ----
+
+    /** Commits, then signals {@code type(args...)} to every agent focusing the artifact. */
+    protected final void signal(String type, Object... args) {
+        core.current();
+        core.signal(null, type, Values.listOf(args));
+    }
+
+    /** Commits, then signals {@code type(args...)} to {@code agent} alone (focusing or not). */
+    protected final void signal(AgentId agent, String type, Object... args) {
+        core.current();
+        core.signal(agent, type, Values.listOf(args));
+    }
+
+    /** Publishes the pending property changes now, without ending the step. */
+    protected final void commit() {
+        core.current();
+        core.commit();
+    }
+
+    /** Fails the running operation with {@code message}; uncommitted changes are rolled back. */
+    protected final void failed(String message) {
+        core.current();
+        throw new OpFailedException(new OpOutcome.Failure(message, null, List.of()));
+    }
+
+    /**
+     * Fails the running operation with {@code message} and the reason term
+     * {@code reason(args...)}; uncommitted changes are rolled back.
+     */
+    protected final void failed(String message, String reason, Object... args) {
+        core.current();
+        throw new OpFailedException(new OpOutcome.Failure(message, reason, Values.listOf(args)));
+    }
+
+    /** Writes {@code message} to the workspace's logger, tagged with the artifact's name. */
+    protected final void log(String message) {
+        core.workspace().logger().info(core.id().name(), message);
+    }
+
+    // ---- suspension and internal operations ----
+
+    /**
+     * Commits, releases the artifact, runs {@code command} (blocking I/O, which must not touch
+     * the artifact) and takes the artifact back; an exception of the command is rethrown here.
+     */
+    protected final void await(IBlockingCmd command) {
+        core.current().awaitCommand(command);
+    }
+
+    /** Commits, releases the artifact and resumes once the guard {@code guardName(args...)} holds. */
+    protected final void await(String guardName, Object... args) {
+        OpExecution step = core.current();
+        List<Method> guards = core.type().guards(guardName, args.length);
+        if (guards.isEmpty()) {
+            throw new IllegalArgumentException("no @GUARD " + guardName + " with " + args.length + " parameter(s) in "
+                    + getClass().getName());
+        }
+        Object[] converted;
+        try {
+            converted = ArgConverter.convertAll(guards.get(0), args);
+        } catch (ArgConverter.Mismatch e) {
+            throw new IllegalArgumentException("guard " + guardName + ": " + e.getMessage(), e);
+        }
+        step.awaitGuard(guards.get(0), converted);
+    }
+
+    /** Commits, releases the artifact and resumes after {@code millis} of the workspace's clock. */
+    protected final void await_time(long millis) {
+        core.current().awaitTime(millis);
+    }
+
+    /**
+     * Starts the (internal) operation {@code name(args...)} of this artifact as a separate
+     * process, which runs once this step releases the artifact; it acts for the same agent.
+     */
+    protected final void execInternalOp(String name, Object... args) {
+        OpExecution step = core.current();
+        core.workspace().startInternal(core, step.agent(), name, args);
+    }
+
+    /**
+     * Runs the operation {@code name(args...)} of the artifact {@code target} ({@link LINK}
+     * operations first, then ordinary ones) for the same agent, and waits for it: like an
+     * {@code await}, this commits and releases this artifact meanwhile. Outputs given as
+     * {@link OpFeedbackParam}s are set when it returns; its failure fails this operation too.
+     */
+    protected final void execLinkedOp(ArtifactId target, String name, Object... args) {
+        OpExecution step = core.current();
+        step.awaitLinked(core.workspace().resolve(target), name, args);
+    }
+
+    /**
+     * Called when the artifact is disposed (by {@code disposeArtifact} or the workspace closing),
+     * holding the artifact; release resources here. Operations suspended in the artifact fail
+     * when they resume. Does nothing by default.
+     */
+    protected void dispose() {
+    }
+
+    @Override
+    public String toString() {
+        return core == null ? getClass().getSimpleName() : core.id().name();
+    }
+}

@@ -1,0 +1,116 @@
+package jacabot.cartago;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * Turns a call {@code operation(args...)} into an {@link OpExecution}: finds the artifact (given,
+ * or resolved by name and arity as JaCa does), the method and the converted arguments. Every
+ * problem is an {@link OpFailedException} naming what was asked.
+ */
+final class OpResolver {
+    private OpResolver() {
+    }
+
+    static OpExecution prepare(Workspace ws, AgentId agent, OpTarget target, String operation, Object[] args,
+            OpCallback callback) {
+        if (!ws.hasJoined(agent)) {
+            throw new OpFailedException("agent " + agent + " has not joined workspace " + ws.getName(),
+                    "unknown_agent", agent.name());
+        }
+        String signature = operation + "/" + args.length;
+        List<ArtifactCore> candidates = target.isAny() ? candidates(ws, agent)
+                : List.of(ws.resolve(target.id() != null ? target.id() : target.name()));
+        for (ArtifactCore core : candidates) {
+            List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
+            if (!methods.isEmpty()) {
+                return bind(core, methods, args, agent, callback);
+            }
+        }
+        List<String> others = new ArrayList<>();
+        for (ArtifactCore core : candidates) {
+            for (OpMethod m : core.type().operations(operation, OpMethod.Kind.OPERATION)) {
+                others.add(core.id().name() + " has " + m.signature());
+            }
+        }
+        String where = target.isAny() ? "no artifact in workspace " + ws.getName() + " has"
+                : "artifact " + candidates.get(0).id().name() + " has no";
+        if (!others.isEmpty()) {
+            throw new OpFailedException(where + " operation " + signature + " (" + String.join(", ", others) + ")",
+                    "wrong_arity", operation, args.length);
+        }
+        throw new OpFailedException(where + " operation " + signature, "unknown_operation", operation, args.length);
+    }
+
+    /**
+     * Prepares an operation one artifact starts: an internal one on itself (internal operations
+     * preferred, then ordinary ones) or a linked one on another ({@link LINK} ones preferred).
+     */
+    static OpExecution prepareFromArtifact(ArtifactCore core, AgentId agent, String operation, Object[] args,
+            OpMethod.Kind preferred, OpCallback callback) {
+        List<OpMethod> methods = matching(core, operation, args.length, preferred, OpMethod.Kind.OPERATION);
+        if (methods.isEmpty()) {
+            String kind = preferred == OpMethod.Kind.LINK ? "linked" : "internal";
+            throw new OpFailedException("artifact " + core.id().name() + " has no " + kind + " operation " + operation
+                    + "/" + args.length, "unknown_operation", operation, args.length);
+        }
+        return bind(core, methods, args, agent, callback);
+    }
+
+    /**
+     * The agent's candidates, in JaCa's preference order: created by it, then focused by it, then
+     * the rest; other agents' bodies never.
+     */
+    private static List<ArtifactCore> candidates(Workspace ws, AgentId agent) {
+        List<ArtifactCore> live = ws.cores();
+        Set<ArtifactCore> ordered = new LinkedHashSet<>();
+        for (ArtifactCore core : live) {
+            if (agent.equals(core.id().creator())) {
+                ordered.add(core);
+            }
+        }
+        for (ArtifactId focused : ws.focusedBy(agent)) {
+            for (ArtifactCore core : live) {
+                if (core.id().equals(focused)) {
+                    ordered.add(core);
+                }
+            }
+        }
+        for (ArtifactCore core : live) {
+            if (!(core.artifact() instanceof AgentBodyArtifact)) {
+                ordered.add(core);
+            }
+        }
+        return new ArrayList<>(ordered);
+    }
+
+    private static List<OpMethod> matching(ArtifactCore core, String operation, int count, OpMethod.Kind... kinds) {
+        List<OpMethod> found = new ArrayList<>();
+        for (OpMethod m : core.type().operations(operation, kinds)) {
+            if (m.accepts(count)) {
+                found.add(m);
+            }
+        }
+        return found;
+    }
+
+    /** Uses the first method whose parameters accept the arguments (exact arity before varargs). */
+    private static OpExecution bind(ArtifactCore core, List<OpMethod> methods, Object[] args, AgentId agent,
+            OpCallback callback) {
+        List<OpMethod> ordered = new ArrayList<>(methods);
+        ordered.sort(Comparator.comparing(m -> m.method().isVarArgs())); // stable: keeps kind preference
+        ArgConverter.Mismatch first = null;
+        for (OpMethod m : ordered) {
+            try {
+                return new OpExecution(core, m, ArgConverter.convertAll(m.method(), args), agent, callback);
+            } catch (ArgConverter.Mismatch e) {
+                first = first == null ? e : first;
+            }
+        }
+        throw new OpFailedException(core.id().name() + "." + ordered.get(0).name() + ": " + first.getMessage(),
+                "bad_argument", first.index + 1);
+    }
+}

@@ -1,0 +1,81 @@
+package jacabot.cartago;
+
+import static jacabot.cartago.Calls.ok;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import jacabot.cartago.examples.Counter;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** Which artifact an operation without target goes to, and who the caller is. */
+class ResolutionTest {
+    /** Tells who called, and signals the caller alone. */
+    public static class Desk extends Artifact {
+        @OPERATION
+        void whoAmI(OpFeedbackParam<String> name) {
+            name.set(getCurrentOpAgentId().getAgentName());
+            signal(getCurrentOpAgentId(), "hello", getCurrentOpAgentId().name());
+        }
+    }
+
+    @Test
+    void createdThenFocusedThenOldest() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            RecordingObserver bobSees = new RecordingObserver();
+            RecordingObserver carolSees = new RecordingObserver();
+            AgentId alice = ws.join("alice", new RecordingObserver());
+            AgentId bob = ws.join("bob", bobSees);
+            AgentId carol = ws.join("carol", carolSees);
+            ArtifactId first = ws.createArtifact("first", Counter.class);
+            ArtifactId bobs = Calls.makeArtifact(ws, bob, "bobs", Counter.class);
+            ArtifactId thirds = ws.createArtifact("third", Counter.class);
+            ok(ws, bob, "focus", first);
+            ok(ws, bob, "focus", bobs);
+            ok(ws, carol, "focus", thirds);
+            ok(ws, carol, "focus", bobs);
+            bobSees.drain();
+            carolSees.drain();
+
+            ok(ws, bob, "inc"); // bob created bobs
+            ok(ws, carol, "inc"); // carol focuses third first
+            ok(ws, alice, "inc"); // alice: the oldest, first
+            bobSees.expect("bobs count(0)->count(1)", "bobs !tick", "first count(0)->count(1)", "first !tick");
+            carolSees.expect("bobs count(0)->count(1)", "bobs !tick", "third count(0)->count(1)", "third !tick");
+            assertEquals(List.of(bob, carol), ws.observersOf(bobs));
+        }
+    }
+
+    @Test
+    void theCallerIsKnownAndCanBeSignalledAlone() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").build()) {
+            RecordingObserver aliceSees = new RecordingObserver();
+            RecordingObserver bobSees = new RecordingObserver();
+            AgentId alice = ws.join("alice", aliceSees);
+            AgentId bob = ws.join("bob", bobSees);
+            ws.createArtifact("desk", Desk.class);
+            ok(ws, bob, "focus", "desk");
+            bobSees.next();
+            assertEquals("alice", ok(ws, alice, "whoAmI", new OpFeedbackParam<>()).outputs().get(0));
+            aliceSees.expect("desk !hello[alice]");
+            assertEquals(List.of(), bobSees.drain(), "a signal to alice does not reach bob, though he focuses the desk");
+        }
+    }
+
+    @Test
+    void eachAgentsFocusGoesToItsOwnBody() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").build()) {
+            RecordingObserver aliceSees = new RecordingObserver();
+            RecordingObserver bobSees = new RecordingObserver();
+            AgentId alice = ws.join("alice", aliceSees);
+            AgentId bob = ws.join("bob", bobSees);
+            ws.createArtifact("c0", Counter.class);
+            ok(ws, bob, "focus", "c0");
+            bobSees.expect("c0 focused [count(0)]");
+            assertEquals(List.of(), aliceSees.drain());
+            ws.leave(bob);
+            bobSees.expect("c0 unfocused [count(0)]");
+            assertEquals(List.of(), ws.observersOf(ws.lookup("c0").orElseThrow()));
+            ok(ws, alice, "inc");
+        }
+    }
+}
