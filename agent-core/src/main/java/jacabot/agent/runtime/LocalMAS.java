@@ -118,6 +118,11 @@ public final class LocalMAS {
         }
     }
 
+    /** {@return the stream console lines go to (e.g. for an artifact console)} */
+    public PrintStream consoleStream() {
+        return out;
+    }
+
     public boolean isStopped() {
         return stopped;
     }

@@ -327,6 +327,27 @@ public final class Agent {
         }
     }
 
+    /**
+     * Adds a belief from the environment (e.g. an observable property) with a {@code +b} event;
+     * call from the agent's cycle. {@return whether the belief base changed}
+     */
+    public boolean addPercept(Literal l) {
+        Literal added = beliefBase.add(l, false);
+        if (added != null) {
+            circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+        }
+        return added != null;
+    }
+
+    /** Removes a belief added by {@link #addPercept} with a {@code -b} event. */
+    public boolean removePercept(Literal l) {
+        if (beliefBase.removeEntry(l)) {
+            circumstance.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, l), null));
+            return true;
+        }
+        return false;
+    }
+
     /** Adds an external event (e.g. a signal from an artifact); call from the agent's cycle. */
     public void addExternalEvent(Trigger trigger) {
         circumstance.addEvent(new Event(trigger, null));

@@ -10,6 +10,13 @@ import java.util.List;
  */
 public interface AgentArch {
 
+    /**
+     * Called at the start of each reasoning cycle, on the agent's thread: the place to apply
+     * incremental changes (new beliefs, events) the architecture has queued.
+     */
+    default void sense(Agent agent) {
+    }
+
     /** {@return the current percepts, or null when nothing changed since the last call} */
     default List<Literal> perceive() {
         return null;

@@ -48,6 +48,7 @@ final class ReasoningCycle {
 
     private void sense() {
         ag.fireDueTimers();
+        ag.arch().sense(ag);
         List<Literal> percepts = ag.arch().perceive();
         if (percepts != null) {
             ag.beliefUpdate(percepts);

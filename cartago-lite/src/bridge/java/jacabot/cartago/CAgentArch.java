@@ -1,0 +1,123 @@
+package jacabot.cartago;
+
+import jacabot.agent.runtime.Environment;
+import jacabot.agent.runtime.LocalArch;
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.cartago.bridge.TermConverter;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentLinkedQueue;
+
+/**
+ * JaCa's {@code c4jason.CAgentArch}: the agent perceives the artifacts it focuses. Each
+ * observable property {@code p(v)} is a belief
+ * {@code p(v)[artifact_id(Id), artifact_name(Name), artifact_name(Id, Name), percept_type(obs_prop), source(percept)]};
+ * each signal {@code s(a)} is a {@code +s(a)[..., percept_type(obs_ev)]} event that is never
+ * stored. Changes are queued by the artifacts' threads and applied at the start of the agent's
+ * next reasoning cycle, so they arrive at deterministic points.
+ */
+public class CAgentArch extends LocalArch {
+    private final ConcurrentLinkedQueue<java.util.function.Consumer<Agent>> pending = new ConcurrentLinkedQueue<>();
+    /** The belief each focused property became, by artifact and property name. */
+    private final Map<ArtifactId, Map<String, Literal>> beliefs = new HashMap<>();
+
+    public CAgentArch(LocalArch local) {
+        super(local.mas(), local.name());
+        Environment env = local.mas().environment();
+        if (!(env instanceof CartagoEnvironment cartago)) {
+            throw new IllegalStateException("agentArchClass jacabot.cartago.CAgentArch needs "
+                    + "environment: jacabot.cartago.CartagoEnvironment");
+        }
+        cartago.join(local.name(), new Observer());
+    }
+
+    @Override
+    public void sense(Agent agent) {
+        java.util.function.Consumer<Agent> change;
+        while ((change = pending.poll()) != null) {
+            change.accept(agent);
+        }
+    }
+
+    @Override
+    public boolean canSleep() {
+        return pending.isEmpty();
+    }
+
+    private void queue(java.util.function.Consumer<Agent> change) {
+        pending.add(change);
+        wake();
+    }
+
+    private static List<Term> annots(ArtifactId id, String type) {
+        var a = new ArrayList<Term>();
+        Term idTerm = TermConverter.toTerm(id);
+        a.add(Literal.of("artifact_id", idTerm));
+        a.add(Literal.of("artifact_name", new StringTerm(id.name())));
+        a.add(Literal.of("artifact_name", idTerm, new StringTerm(id.name())));
+        a.add(Literal.of("percept_type", Literal.atom(type)));
+        a.add(Literal.SOURCE_PERCEPT);
+        return a;
+    }
+
+    private static Literal belief(ArtifactId id, PropertySnapshot p) {
+        return new Literal(p.name(), TermConverter.toTerms(p.values()), annots(id, "obs_prop"), false);
+    }
+
+    private void add(Agent ag, ArtifactId id, PropertySnapshot p) {
+        Literal l = belief(id, p);
+        beliefs.computeIfAbsent(id, k -> new HashMap<>()).put(p.name(), l);
+        ag.addPercept(l);
+    }
+
+    private void remove(Agent ag, ArtifactId id, String name) {
+        Map<String, Literal> of = beliefs.get(id);
+        Literal l = of == null ? null : of.remove(name);
+        if (l != null) {
+            ag.removePercept(l);
+        }
+    }
+
+    /** Receives the workspace's notifications on artifact threads and queues them. */
+    private final class Observer implements ArtifactObserver {
+        @Override
+        public void focused(ArtifactId artifact, List<PropertySnapshot> properties) {
+            queue(ag -> properties.forEach(p -> add(ag, artifact, p)));
+        }
+
+        @Override
+        public void propertyAdded(ArtifactId artifact, PropertySnapshot property) {
+            queue(ag -> add(ag, artifact, property));
+        }
+
+        @Override
+        public void propertyUpdated(ArtifactId artifact, PropertySnapshot oldValue, PropertySnapshot newValue) {
+            queue(ag -> {
+                remove(ag, artifact, oldValue.name());
+                add(ag, artifact, newValue);
+            });
+        }
+
+        @Override
+        public void propertyRemoved(ArtifactId artifact, PropertySnapshot property) {
+            queue(ag -> remove(ag, artifact, property.name()));
+        }
+
+        @Override
+        public void signalled(ArtifactId artifact, String type, List<Object> args) {
+            queue(ag -> ag.addExternalEvent(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF,
+                    new Literal(type, TermConverter.toTerms(args), annots(artifact, "obs_ev"), false))));
+        }
+
+        @Override
+        public void focusEnded(ArtifactId artifact, List<PropertySnapshot> properties, boolean disposed) {
+            queue(ag -> properties.forEach(p -> remove(ag, artifact, p.name())));
+        }
+    }
+}
