@@ -32,7 +32,7 @@ class CalculatorTest {
 
             OpFeedbackParam<Object> q = new OpFeedbackParam<>();
             OpFeedbackParam<Object> r = new OpFeedbackParam<>();
-            assertEquals(Map.of(2, 3, 3, 2), ok(ws, agent, "div", 17.0, 5.0, q, r).outputs());
+            assertEquals(Map.of(2, 3, 3, 2), ok(ws, agent, "divide", 17.0, 5.0, q, r).outputs());
             assertEquals(3, q.get());
             assertEquals(2, r.get());
         }
@@ -43,7 +43,7 @@ class CalculatorTest {
         try (Workspace workspace = Calls.quiet("main").stepped().build()) {
             setUp(workspace);
             OpFeedbackParam<Object> q = new OpFeedbackParam<>();
-            OpOutcome.Failure f = failure(ws, agent, OpTarget.name("calc"), "div", 1, 0, q, new OpFeedbackParam<>());
+            OpOutcome.Failure f = failure(ws, agent, OpTarget.name("calc"), "divide", 1, 0, q, new OpFeedbackParam<>());
             assertEquals(new OpOutcome.Failure("division by zero", "division_by_zero", List.of(1)), f);
             assertFalse(q.isSet());
         }
@@ -60,7 +60,7 @@ class CalculatorTest {
             assertEquals(List.of(1, 2.5, "a"), echo(List.of(1.0, 2.5, "a")));
             assertEquals("text", echo("text"));
 
-            OpOutcome.Failure f = failure(ws, agent, OpTarget.any(), "div", 5.5, 1, new OpFeedbackParam<>(), new OpFeedbackParam<>());
+            OpOutcome.Failure f = failure(ws, agent, OpTarget.any(), "divide", 5.5, 1, new OpFeedbackParam<>(), new OpFeedbackParam<>());
             Calls.assertReason("bad_argument", f);
             assertEquals(List.of(1), f.reasonArgs());
             assertTrue(f.message().contains("argument 1"), f.message());

@@ -12,7 +12,7 @@ public class Calculator extends Artifact {
     }
 
     @OPERATION
-    void div(int a, int b, OpFeedbackParam<Integer> quotient, OpFeedbackParam<Integer> remainder) {
+    void divide(int a, int b, OpFeedbackParam<Integer> quotient, OpFeedbackParam<Integer> remainder) {
         if (b == 0) {
             failed("division by zero", "division_by_zero", a);
         }
