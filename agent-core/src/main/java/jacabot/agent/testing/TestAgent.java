@@ -1,6 +1,6 @@
-package jacabot.agent;
+package jacabot.agent.testing;
 
-import static org.junit.jupiter.api.Assertions.fail;
+
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.runtime.Clock;
@@ -18,7 +18,8 @@ import java.util.function.Function;
 /**
  * A test harness in the spirit of Jason's asunit {@code TestAgent}: an agent parsed from inline
  * AgentSpeak, a scripted architecture that records console lines and actions, a simulated clock,
- * and assertions that wait a bounded number of reasoning cycles.
+ * and assertions that wait a bounded number of reasoning cycles. Shipped in the main code (as
+ * Jason ships asunit) so that other modules' tests can script an agent's world.
  */
 public final class TestAgent implements AgentArch {
     public final List<String> console = new ArrayList<>();
@@ -30,6 +31,10 @@ public final class TestAgent implements AgentArch {
     public final Agent agent;
     private boolean stopped;
 
+    /** Binds output variables of a successful action (e.g. the id of {@code makeArtifact}). */
+    public java.util.function.BiConsumer<ActionExec, jacabot.agent.semantics.Unifier> outputs = (a, u) -> {
+    };
+
     public TestAgent(String name, String source) {
         var parser = new AslParser();
         agent = new Agent(name, this, Stdlib.defaults(), 42, parser);
@@ -38,6 +43,48 @@ public final class TestAgent implements AgentArch {
         } catch (Exception e) {
             throw new AssertionError("cannot parse test agent: " + e.getMessage(), e);
         }
+    }
+
+    private TestAgent(String name, java.nio.file.Path file) {
+        var parser = new AslParser(List.of(file.toAbsolutePath().getParent()));
+        agent = new Agent(name, this, Stdlib.defaults(), 42, parser);
+        try {
+            agent.load(parser.parseFile(file));
+        } catch (Exception e) {
+            throw new AssertionError("cannot parse " + file + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** An agent read from a source file. */
+    public static TestAgent fromFile(String name, java.nio.file.Path file) {
+        return new TestAgent(name, file);
+    }
+
+    private Term term(String text) {
+        try {
+            return agent.parser().parseTerm(text);
+        } catch (Exception e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    /** Adds a belief as an artifact's observable property would ({@code source(percept)}). */
+    public TestAgent percept(String literal) {
+        agent.addPercept(((Literal) term(literal)).addAnnot(Literal.SOURCE_PERCEPT));
+        return this;
+    }
+
+    /** Removes a belief added by {@link #percept}. */
+    public TestAgent unpercept(String literal) {
+        agent.removePercept(((Literal) term(literal)).addAnnot(Literal.SOURCE_PERCEPT));
+        return this;
+    }
+
+    /** Posts a non-persistent {@code +s} event, as an artifact's signal. */
+    public TestAgent signal(String literal) {
+        agent.addExternalEvent(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
+                jacabot.agent.syntax.Trigger.Type.BELIEF, ((Literal) term(literal)).addAnnot(Literal.SOURCE_PERCEPT)));
+        return this;
     }
 
     public TestAgent(String source) {
@@ -55,7 +102,9 @@ public final class TestAgent implements AgentArch {
     public void act(ActionExec action, Agent ag) {
         actions.add(action);
         if (environment.apply(action)) {
-            action.succeed();
+            var u = new jacabot.agent.semantics.Unifier();
+            outputs.accept(action, u);
+            action.succeed(u);
         } else {
             action.fail("scripted failure", List.of());
         }
@@ -129,7 +178,7 @@ public final class TestAgent implements AgentArch {
             }
             agent.reasoningCycle();
         }
-        fail("no belief " + formula + " within " + maxCycles + " cycles; printed " + printed());
+        throw new AssertionError("no belief " + formula + " within " + maxCycles + " cycles; printed " + printed());
     }
 
     public void assertAct(String action, int maxCycles) {
@@ -144,7 +193,7 @@ public final class TestAgent implements AgentArch {
             }
             agent.reasoningCycle();
         }
-        fail("no action " + action + " within " + maxCycles + " cycles; actions " + actions);
+        throw new AssertionError("no action " + action + " within " + maxCycles + " cycles; actions " + actions);
     }
 
     public List<String> actionNames() {
