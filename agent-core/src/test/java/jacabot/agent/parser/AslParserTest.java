@@ -1,0 +1,75 @@
+package jacabot.agent.parser;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.agent.syntax.BodyStep;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class AslParserTest {
+    private final AslParser parser = new AslParser();
+
+    @Test
+    void readsPlansWithLabelsContextsAndEveryKindOfBodyFormula() throws Exception {
+        var program = parser.parse("""
+                @p1[atomic] +!g(X) : b(X) & not c | X > 1 <- !a; !!b; ?c; +d; +>e; -f; -+h(1); --i; ++j; act(X); .print(X); Y = X + 1.
+                """, "t.asl");
+        Plan p = program.plans().get(0);
+        assertEquals("p1", p.label().functor());
+        assertTrue(p.isAtomic());
+        assertEquals("+!g(X)", p.trigger().toString());
+        assertEquals("((b(X) & not (c)) | (X > 1))", p.context().toString());
+        assertEquals("!a; !!b; ?c; +d; +>e; -f; -+h(1); --i; ++j; act(X); .print(X); (Y = (X+1))", p.body().bodyText());
+        assertEquals(BodyStep.Kind.INTERNAL_ACTION, p.body().steps().get(10).kind());
+        assertEquals(BodyStep.Kind.CONSTRAINT, p.body().steps().get(11).kind());
+    }
+
+    @Test
+    void readsBeliefsRulesGoalsAndTerms() throws Exception {
+        var program = parser.parse("""
+                ~p(1.5e3, "s\\"q", 'Quoted atom', [a, b | T], f(_))[x].
+                r(X) :- p(X) & X > 2.
+                !start.
+                """, "t.asl");
+        assertEquals("~p(1500,\"s\"q\",'Quoted atom',[a,b|T],f(_1))[x]",
+                program.beliefs().get(0).toString().replaceAll("_[0-9]+", "_1"));
+        assertEquals("r(X) :- (p(X) & (X > 2))", program.beliefs().get(1).toString());
+        assertEquals(Literal.atom("start"), program.goals().get(0));
+    }
+
+    @Test
+    void controlStructuresBecomeJasonsInternalActions() throws Exception {
+        var program = parser.parse("""
+                +!g <- if (a) { b } elif (c) { d } else { e }; while (x) { y } for (z(I)) { w(I) }.
+                """, "t.asl");
+        assertEquals(".if_then_else(a,{ b },{ .if_then_else(c,{ d },{ e }) }); .loop(x,{ y }); .foreach(z(I),{ w(I) })",
+                program.plans().get(0).body().bodyText());
+    }
+
+    @Test
+    void syntaxErrorsNameFileLineAndColumn() {
+        var e = assertThrows(AslSyntaxException.class, () -> parser.parse("!start.\n+!start <- .print(\"a\" ; b.\n", "bad.asl"));
+        assertTrue(e.errors().get(0).toString().startsWith("bad.asl:2:"), e.getMessage());
+        assertTrue(e.getMessage().contains(": error: "), e.getMessage());
+        var lexical = assertThrows(AslSyntaxException.class, () -> parser.parse("p(1) # q.\n", "lex.asl"));
+        assertTrue(lexical.errors().get(0).toString().startsWith("lex.asl:1:6: error:"), lexical.getMessage());
+    }
+
+    @Test
+    void includeDirectivesMergeFilesAndReportMissingOnes(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("lib.asl"), "shared(1).\n+!lib <- .print(lib).\n");
+        Files.writeString(dir.resolve("main.asl"), "{ include(\"lib.asl\") }\n!lib.\n");
+        var program = parser.parseFile(dir.resolve("main.asl"));
+        assertEquals(1, program.beliefs().size());
+        assertEquals(1, program.plans().size());
+        Files.writeString(dir.resolve("broken.asl"), "{ include(\"missing.asl\") }\n");
+        var e = assertThrows(AslSyntaxException.class, () -> parser.parseFile(dir.resolve("broken.asl")));
+        assertTrue(e.getMessage().contains("broken.asl:1:1: error: included file 'missing.asl' not found"), e.getMessage());
+    }
+}

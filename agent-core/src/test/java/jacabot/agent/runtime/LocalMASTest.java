@@ -1,0 +1,107 @@
+package jacabot.agent.runtime;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.agent.parser.AslParser;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Messaging between agents, .mas2j projects, and the determinism of stepping mode. */
+class LocalMASTest {
+    private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+    private final SimulatedClock clock = new SimulatedClock();
+    private final LocalMAS mas = new LocalMAS(clock, new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+    private final AslParser parser = new AslParser();
+
+    private void agent(String name, String source) throws Exception {
+        mas.createAgent(name, parser.parse(source, name + ".asl"), parser, null);
+    }
+
+    private List<String> lines() {
+        return bytes.toString(StandardCharsets.UTF_8).lines().collect(Collectors.toList());
+    }
+
+    @Test
+    void tellAchieveAndAskBetweenAgents() throws Exception {
+        agent("alice", """
+                !go.
+                +!go <- .send(bob, tell, price(10)); .send(bob, achieve, greet(alice));
+                        .send(bob, askOne, stock(S), Answer); .print("bob has ", Answer);
+                        .send(bob, askOne, nothing(_), None); .print("unknown: ", None);
+                        .send(bob, askAll, stock(_), All); .print(All).
+                """);
+        agent("bob", """
+                stock(3). stock(4).
+                +price(P)[source(A)] <- .print("price ", P, " from ", A).
+                +!greet(W)[source(A)] <- .print("hello ", W, " (asked by ", A, ")").
+                """);
+        mas.runUntilQuiescent(10_000);
+        assertEquals(List.of("[bob] price 10 from alice", "[bob] hello alice (asked by alice)",
+                "[alice] bob has stock(3)[source(bob)]", "[alice] unknown: false",
+                "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
+    }
+
+    @Test
+    void messagesFromOneSenderArriveInOrder() throws Exception {
+        agent("a", "!go.\n+!go <- for (.range(I, 1, 20)) { .send(b, tell, n(I)) }.\n");
+        agent("b", "+n(I) <- .print(I).\n");
+        mas.runUntilQuiescent(100_000);
+        List<String> expected = new java.util.ArrayList<>();
+        for (int i = 1; i <= 20; i++) {
+            expected.add("[b] " + i);
+        }
+        assertEquals(expected, lines());
+    }
+
+    @Test
+    void steppingModeIsDeterministicUnderASeed() throws Exception {
+        String program = """
+                !a. !b.
+                +!a <- for (.range(I, 1, 5)) { .random(R); .print(a, I, " ", R) }.
+                +!b <- for (.range(I, 1, 5)) { .wait(10); .print(b, I) }.
+                """;
+        List<String> first = runStepped(program);
+        List<String> second = runStepped(program);
+        assertEquals(first, second);
+        assertEquals(10, first.size());
+    }
+
+    private static List<String> runStepped(String program) throws Exception {
+        var bytes = new ByteArrayOutputStream();
+        var clock = new SimulatedClock();
+        var mas = new LocalMAS(clock, new PrintStream(bytes, true, StandardCharsets.UTF_8), 99);
+        var parser = new AslParser();
+        mas.createAgent("x", parser.parse(program, "x.asl"), parser, null);
+        for (int step = 0; step < 100; step++) {
+            mas.runUntilQuiescent(1000);
+            clock.advance(5);
+        }
+        return bytes.toString(StandardCharsets.UTF_8).lines().collect(Collectors.toList());
+    }
+
+    @Test
+    void mas2jProjectsCreateNumberedAgents(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("w.asl"), "!hi.\n+!hi <- .my_name(N); .print(N).\n");
+        Files.writeString(dir.resolve("p.mas2j"), """
+                MAS demo {
+                    infrastructure: Local
+                    agents: w #3; solo w.asl [verbose=1];
+                }
+                """);
+        var project = Mas2jReader.read(dir.resolve("p.mas2j"));
+        assertEquals("demo", project.name());
+        assertEquals(3, project.agents().get(0).instances());
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        assertEquals(List.of("w1", "w2", "w3", "solo"), launched.agentNames());
+        launched.runUntilQuiescent(1000);
+        assertTrue(lines().containsAll(List.of("[w1] w1", "[w2] w2", "[w3] w3", "[solo] solo")), lines().toString());
+    }
+}
