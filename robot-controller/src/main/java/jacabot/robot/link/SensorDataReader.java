@@ -8,6 +8,7 @@ import java.io.InvalidClassException;
 import java.io.ObjectInputStream;
 import java.io.ObjectStreamException;
 import java.io.OptionalDataException;
+import java.io.UTFDataFormatException;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -66,7 +67,7 @@ public final class SensorDataReader {
             }
         } catch (EOFException e) {
             throw new ProtocolException("truncated frame: the sensor data stream ended inside a frame (tag " + tag + ")");
-        } catch (ObjectStreamException e) {
+        } catch (ObjectStreamException | UTFDataFormatException e) {
             throw garbage(e);
         }
     }
@@ -107,7 +108,7 @@ public final class SensorDataReader {
         return (SensorInfo) o;
     }
 
-    private static ProtocolException garbage(ObjectStreamException e) {
+    private static ProtocolException garbage(IOException e) {
         return new ProtocolException("garbage on the sensor data stream: " + e, e);
     }
 }
