@@ -96,9 +96,9 @@ final class RobotConnection {
             hello = h;
             commands = new CommandWriter(out);
             socket.setSoTimeout(0);
-            var reader = new SensorDataReader(socket.getInputStream(), limits);
             owner.attached(this);
             attached = true;
+            var reader = new SensorDataReader(socket.getInputStream(), limits);
             while (true) {
                 Uplink frame = reader.read();
                 if (frame == null) {
