@@ -1,7 +1,11 @@
 package jacabot.robot.link;
 
+import java.io.IOException;
+import java.io.InvalidObjectException;
+import java.io.ObjectInputStream;
 import java.io.Serializable;
 import java.util.Arrays;
+import java.util.Optional;
 
 /**
  * One sensor reading as it travels from the robot controller to the middleware artifact
@@ -58,6 +62,11 @@ public final class SensorInfo implements Serializable {
         return id;
     }
 
+    /** {@return the registered kind of this reading's id, empty for an id this version does not know} */
+    public Optional<SensorKind> kind() {
+        return SensorKind.of(id);
+    }
+
     public double getVal() {
         return value;
     }
@@ -72,6 +81,14 @@ public final class SensorInfo implements Serializable {
 
     public double[] getDoubleValues() {
         return doubleValues.clone();
+    }
+
+    /** A stream may carry any field values: refuse the ones the constructors never make. */
+    private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
+        in.defaultReadObject();
+        if (intValues == null || doubleValues == null) {
+            throw new InvalidObjectException("SensorInfo with a null array");
+        }
     }
 
     @Override

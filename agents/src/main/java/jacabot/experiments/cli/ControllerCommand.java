@@ -1,0 +1,133 @@
+package jacabot.experiments.cli;
+
+import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
+import jacabot.sim.SimRunner;
+import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileException;
+import jacabot.sim.viewer.WorldViewer;
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import javax.swing.JFrame;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code jacabot controller}: the robot controller process on its own (thesis Chapter 4, "Start the
+ * Simulation"): runs one robot of a world and connects to the middleware's server socket, so the
+ * simulator and the agent platform can run as two processes.
+ */
+@Command(name = "controller", mixinStandardHelpOptions = true,
+        description = {"Runs one robot of a world as a robot controller process: it connects to the middleware "
+                + "(retrying until it is up), sends its sensor readings every control step and applies the commands it receives.",
+                "Real time (x --speed) by default; --lockstep waits for the agent every step."})
+final class ControllerCommand implements Callable<Integer> {
+    @Option(names = "--world", required = true, paramLabel = "FILE", description = "the world file, e.g. worlds/navigation.json")
+    private Path world;
+
+    @Option(names = "--robot", paramLabel = "NAME", description = "the robot to control (default: the world's first)")
+    private String robot;
+
+    @Option(names = "--host", paramLabel = "HOST", description = "the middleware's address (default ${DEFAULT-VALUE})")
+    private String host = "127.0.0.1";
+
+    @Option(names = "--port", paramLabel = "PORT", description = "the middleware's port (default ${DEFAULT-VALUE})")
+    private int port = 4444;
+
+    @Option(names = "--viewer", description = "show the world in a window (pause, step, slower, faster)")
+    private boolean viewer;
+
+    @Option(names = "--lockstep", description = "advance the world only when the agent has answered each step")
+    private boolean lockstep;
+
+    @Option(names = "--speed", paramLabel = "X", description = "real time x this factor (default ${DEFAULT-VALUE})")
+    private double speed = 1.0;
+
+    @Option(names = "--fail-safe-ms", paramLabel = "MS",
+            description = "stop the wheels after this long without a command or heartbeat (default ${DEFAULT-VALUE})")
+    private long failSafeMs = 1000;
+
+    @Option(names = "--seconds", paramLabel = "S", description = "stop after this much simulated time (default: run until stopped)")
+    private Double seconds;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        ControllerConfig config;
+        try {
+            config = ControllerConfig.defaults().withAddress(host, port).withRobot(robot).withLockstep(lockstep)
+                    .withSpeedFactor(speed).withFailSafeMs(failSafeMs);
+        } catch (IllegalArgumentException e) {
+            System.err.println("error: " + e.getMessage());
+            return 2;
+        }
+        if (seconds != null && !(seconds > 0)) {
+            System.err.println("error: --seconds must be a positive number, got " + seconds);
+            return 2;
+        }
+        if (viewer && GraphicsEnvironment.isHeadless()) {
+            System.err.println("error: --viewer needs a display, and this Java runs headless");
+            return 2;
+        }
+        SimWorld simWorld;
+        try {
+            simWorld = SimWorld.load(world);
+        } catch (WorldFileException e) {
+            System.err.println("error: " + e.getMessage());
+            return 2;
+        }
+        RobotController controller;
+        try {
+            controller = new RobotController(simWorld, config);
+        } catch (IllegalArgumentException e) {
+            System.err.println("error: " + e.getMessage());
+            return 2;
+        }
+        System.out.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
+                controller.robot().name(), controller.robot().model().name(), simWorld.name(),
+                lockstep ? "lockstep" : "real time x" + speed, host, port));
+        Thread hook = new Thread(controller::close, "controller-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            controller.start();
+            run(controller.runner());
+        } finally {
+            controller.close();
+            try {
+                controller.runner().stop();
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException alreadyShuttingDown) {
+                // the hook is running
+            }
+        }
+        System.out.println(String.format(Locale.ROOT, "controller: stopped at t=%.2f s after %d steps",
+                simWorld.time(), controller.steps()));
+        return 0;
+    }
+
+    private void run(SimRunner runner) throws InterruptedException {
+        if (viewer) {
+            CountDownLatch closed = new CountDownLatch(1);
+            SwingUtilities.invokeLater(() -> {
+                JFrame frame = WorldViewer.open(runner);
+                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+                    @Override
+                    public void windowClosed(java.awt.event.WindowEvent e) {
+                        closed.countDown();
+                    }
+                });
+            });
+            closed.await();
+        } else if (seconds != null) {
+            runner.runFor(seconds);
+        } else {
+            runner.start();
+            new CountDownLatch(1).await(); // until Ctrl-C: the shutdown hook says goodbye
+        }
+    }
+}

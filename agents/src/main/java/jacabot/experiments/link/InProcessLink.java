@@ -1,0 +1,55 @@
+package jacabot.experiments.link;
+
+import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
+import jacabot.sim.SimWorld;
+import java.io.IOException;
+
+/**
+ * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
+ * on a free port: what tests and single-process runs use instead of two processes. Stepping the
+ * world is left to the caller ({@code controller().runner()}).
+ */
+public final class InProcessLink implements AutoCloseable {
+    private final MiddlewareLink middleware;
+    private final RobotController controller;
+
+    private InProcessLink(MiddlewareLink middleware, RobotController controller) {
+        this.middleware = middleware;
+        this.controller = controller;
+    }
+
+    /**
+     * Opens the middleware on 127.0.0.1 and a free port, points the controller at it and starts it.
+     * The configs' addresses are overridden.
+     */
+    public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig)
+            throws IOException {
+        MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(java.net.InetAddress.getLoopbackAddress())
+                .withPort(0));
+        try {
+            RobotController controller = new RobotController(world,
+                    controllerConfig.withAddress(java.net.InetAddress.getLoopbackAddress().getHostAddress(), link.port()));
+            controller.start();
+            return new InProcessLink(link, controller);
+        } catch (RuntimeException e) {
+            link.close();
+            throw e;
+        }
+    }
+
+    public MiddlewareLink middleware() {
+        return middleware;
+    }
+
+    public RobotController controller() {
+        return controller;
+    }
+
+    /** Stops the controller (it says goodbye), then the middleware. */
+    @Override
+    public void close() {
+        controller.close();
+        middleware.close();
+    }
+}

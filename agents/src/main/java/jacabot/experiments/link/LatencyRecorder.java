@@ -1,0 +1,29 @@
+package jacabot.experiments.link;
+
+/** The last {@code capacity} samples of one latency, thread-safe; a ring so a long run stays bounded. */
+public final class LatencyRecorder {
+    private final long[] ring;
+    private int next, size;
+
+    public LatencyRecorder(int capacity) {
+        this.ring = new long[capacity];
+    }
+
+    /** Records one sample; negative ones (clock adjustments) are dropped. */
+    public synchronized void record(long micros) {
+        if (micros < 0) {
+            return;
+        }
+        ring[next] = micros;
+        next = (next + 1) % ring.length;
+        size = Math.min(size + 1, ring.length);
+    }
+
+    public synchronized LatencyStats stats() {
+        long[] s = new long[size];
+        for (int i = 0; i < size; i++) {
+            s[i] = ring[(next - size + i + ring.length) % ring.length];
+        }
+        return LatencyStats.of(s);
+    }
+}

@@ -1,0 +1,357 @@
+package jacabot.experiments.link;
+
+import jacabot.robot.link.Command;
+import jacabot.robot.link.Protocol;
+import jacabot.robot.link.Uplink;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingDeque;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingDeque;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+
+/**
+ * The middleware's end of the link (thesis §2.3: the artifact "creates a new ServerSocket on a
+ * well-known port, waits for a connection request from the robot platform"), as a plain class that
+ * the {@code MiddlewareArtifact} wraps. It listens on loopback by default, accepts the controller
+ * (a new connection replaces the old one, so a controller that reconnects after a drop is taken
+ * back at once), checks the protocol version, reads the sensor data stream on its own thread and
+ * queues {@link LinkEvent}s, and writes commands.
+ *
+ * <p>For CArtAgO: one {@link #receive()} is one {@code await(IBlockingCmd)}: its {@code exec()}
+ * blocks until the next reading, step marker or connection change arrives.
+ *
+ * <pre>{@code
+ * try (MiddlewareLink link = MiddlewareLink.open(LinkConfig.defaults().withPort(0))) {
+ *     LinkEvent e = link.receive();                 // blocks
+ *     if (e instanceof LinkEvent.Reading r && r.info().getVal() > 350) link.send(Command.stop());
+ *     if (e instanceof LinkEvent.StepMarker m && m.awaitsAck()) link.acknowledge(m.step());
+ * }
+ * }</pre>
+ */
+public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owner {
+    /** Told when the controller connects or goes ({@code connected(true|false)}). */
+    @FunctionalInterface
+    public interface ConnectionListener {
+        void connectionChanged(boolean connected);
+    }
+
+    private static final int PENDING_RESPONSES = 10_000;
+
+    private final LinkConfig config;
+    private final ServerSocket server;
+    private final BlockingDeque<LinkEvent> events = new LinkedBlockingDeque<>();
+    private final List<ConnectionListener> listeners = new CopyOnWriteArrayList<>();
+    private final AtomicInteger seq = new AtomicInteger();
+    private final LinkTimings timings;
+    private final Map<Integer, Long> actionTimes = new LinkedHashMap<>(16, 0.75f, false) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Integer, Long> eldest) {
+            return size() > PENDING_RESPONSES; // commands whose APPLIED report never came
+        }
+    };
+    private volatile RobotConnection current;
+    private volatile long simTimeMs = -1;
+    private volatile long lastSentNanos = System.nanoTime();
+    private volatile String lastCloseReason;
+    private volatile boolean closed;
+    private final Thread acceptor;
+    private final Thread heartbeat;
+
+    private MiddlewareLink(LinkConfig config, ServerSocket server) {
+        this.config = config;
+        this.server = server;
+        this.timings = new LinkTimings(config.clock());
+        this.acceptor = new Thread(this::acceptLoop, "middleware-acceptor");
+        this.heartbeat = new Thread(this::heartbeatLoop, "middleware-heartbeat");
+        acceptor.setDaemon(true);
+        heartbeat.setDaemon(true);
+    }
+
+    /**
+     * Opens the server socket and starts accepting.
+     *
+     * @throws IOException when the address cannot be bound (e.g. the port is taken)
+     */
+    public static MiddlewareLink open(LinkConfig config) throws IOException {
+        ServerSocket server = new ServerSocket();
+        try {
+            server.setReuseAddress(true);
+            server.bind(new InetSocketAddress(config.bindAddress(), config.port()));
+        } catch (IOException e) {
+            server.close();
+            throw new IOException("cannot listen on " + config.bindAddress().getHostAddress() + ":" + config.port()
+                    + ": " + e.getMessage(), e);
+        }
+        MiddlewareLink link = new MiddlewareLink(config, server);
+        link.acceptor.start();
+        if (config.heartbeatMs() > 0) {
+            link.heartbeat.start();
+        }
+        return link;
+    }
+
+    /** {@return the port listened on (the chosen one when configured with 0)} */
+    public int port() {
+        return server.getLocalPort();
+    }
+
+    public boolean isConnected() {
+        return current != null;
+    }
+
+    /** Waits until a controller is connected; {@return whether one is} */
+    public boolean awaitConnected(long timeout, TimeUnit unit) throws InterruptedException {
+        long end = System.nanoTime() + unit.toNanos(timeout);
+        synchronized (this) {
+            while (current == null && !closed) {
+                long left = end - System.nanoTime();
+                if (left <= 0) {
+                    return false;
+                }
+                TimeUnit.NANOSECONDS.timedWait(this, left);
+            }
+            return current != null;
+        }
+    }
+
+    /** {@return the connected controller's greeting (robot, world, control step, mode), or null} */
+    public Protocol.Hello robot() {
+        RobotConnection c = current;
+        return c == null ? null : c.hello();
+    }
+
+    /** {@return the simulated time of the latest step received, −1 before any} */
+    public long simTimeMs() {
+        return simTimeMs;
+    }
+
+    /** {@return why the last connection ended (or was refused), or null} */
+    public String lastCloseReason() {
+        return lastCloseReason;
+    }
+
+    public LinkTimings timings() {
+        return timings;
+    }
+
+    public void addConnectionListener(ConnectionListener l) {
+        listeners.add(l);
+    }
+
+    /** Blocks until the next event: the body of the artifact's {@code IBlockingCmd.exec()}. */
+    public LinkEvent receive() throws InterruptedException {
+        return delivered(events.take());
+    }
+
+    /** {@return the next event, or null after the timeout} */
+    public LinkEvent poll(long timeout, TimeUnit unit) throws InterruptedException {
+        return delivered(events.poll(timeout, unit));
+    }
+
+    private LinkEvent delivered(LinkEvent e) {
+        if (e instanceof LinkEvent.Reading) {
+            timings.delivered((LinkEvent.Reading) e);
+        }
+        return e;
+    }
+
+    /** Sends a command now; {@return false when no controller is connected or the socket failed} */
+    public boolean send(Command command) {
+        return send(command, config.clock().nowMicros());
+    }
+
+    /**
+     * Sends a command on behalf of an agent action executed at {@code actionMicros}
+     * ({@link jacabot.robot.link.LinkClock}): the response time runs from there to the controller's
+     * report that the actuators got it.
+     */
+    public boolean send(Command command, long actionMicros) {
+        RobotConnection c = current;
+        if (c == null) {
+            return false;
+        }
+        int n = seq.incrementAndGet();
+        boolean robotCommand = command.code().isRobotCommand();
+        if (robotCommand) {
+            synchronized (actionTimes) {
+                actionTimes.put(n, actionMicros);
+            }
+        }
+        try {
+            c.send(n, config.clock().nowMicros(), command);
+            lastSentNanos = System.nanoTime();
+            return true;
+        } catch (IOException e) {
+            c.close("cannot send " + command + ": " + e.getMessage());
+            return false;
+        }
+    }
+
+    /** Closes the current connection (the controller stops its wheels and reconnects). */
+    public void disconnect(String reason) {
+        RobotConnection c = current;
+        if (c != null) {
+            c.close(reason);
+        }
+    }
+
+    /** Lockstep: the step's commands are all sent, the simulation may advance. */
+    public boolean acknowledge(long step) {
+        return send(Command.stepAck(step));
+    }
+
+    @Override
+    public void close() {
+        closed = true;
+        try {
+            server.close();
+        } catch (IOException e) {
+            // closing anyway
+        }
+        RobotConnection c = current;
+        if (c != null) {
+            c.close("the middleware closed the link");
+        }
+        acceptor.interrupt();
+        heartbeat.interrupt();
+        synchronized (this) {
+            notifyAll();
+        }
+    }
+
+    private void acceptLoop() {
+        while (!closed) {
+            try {
+                Socket s = server.accept();
+                new RobotConnection(s, this, config.limits()).start();
+            } catch (IOException e) {
+                if (!closed) {
+                    config.log().accept("accept failed: " + e.getMessage());
+                }
+            }
+        }
+    }
+
+    private void heartbeatLoop() {
+        long periodNanos = TimeUnit.MILLISECONDS.toNanos(config.heartbeatMs());
+        try {
+            while (!closed) {
+                Thread.sleep(Math.max(1, config.heartbeatMs() / 2));
+                RobotConnection c = current;
+                // Lockstep controllers do not watch for silence: the world waits for us anyway.
+                if (c != null && !c.hello().lockstep() && System.nanoTime() - lastSentNanos >= periodNanos) {
+                    send(Command.heartbeat());
+                }
+            }
+        } catch (InterruptedException e) {
+            // closing
+        }
+    }
+
+    @Override
+    public void attached(RobotConnection c) {
+        RobotConnection old;
+        synchronized (this) {
+            old = current;
+            current = c;
+            notifyAll();
+        }
+        if (old != null) {
+            old.close("replaced by a new connection from the controller");
+        }
+        Protocol.Hello h = c.hello();
+        config.log().accept("controller connected: robot '" + h.robotName() + "' of world '" + h.worldName() + "', "
+                + (h.lockstep() ? "lockstep" : "real time") + ", control step " + h.controlStepMs() + " ms");
+        events.add(new LinkEvent.Connected(h.robotName(), h.worldName(), h.controlStepMs(), h.lockstep()));
+        for (ConnectionListener l : listeners) {
+            l.connectionChanged(true);
+        }
+    }
+
+    @Override
+    public void refused(RobotConnection c, String reason) {
+        lastCloseReason = reason;
+        config.log().accept("refused a connection: " + reason);
+    }
+
+    @Override
+    public void frame(RobotConnection c, Uplink frame) {
+        if (c != current) {
+            return; // a replaced connection's last words
+        }
+        if (frame instanceof Uplink.Batch) {
+            Uplink.Batch b = (Uplink.Batch) frame;
+            long received = config.clock().nowMicros();
+            simTimeMs = b.simTimeMs();
+            for (var info : b.readings()) {
+                LinkEvent.Reading r = new LinkEvent.Reading(info, b.step(), b.simTimeMs(), b.sampledMicros(), received);
+                timings.received(r);
+                enqueue(r);
+            }
+        } else if (frame instanceof Uplink.StepMarker) {
+            Uplink.StepMarker m = (Uplink.StepMarker) frame;
+            enqueue(new LinkEvent.StepMarker(m.step(), m.simTimeMs(), m.awaitsAck()));
+        } else if (frame instanceof Uplink.Applied) {
+            Uplink.Applied a = (Uplink.Applied) frame;
+            Long action;
+            synchronized (actionTimes) {
+                action = actionTimes.remove(a.seq());
+            }
+            if (action != null) {
+                timings.applied(action, a.appliedMicros());
+            }
+        } else if (frame instanceof Uplink.FailSafe) {
+            Uplink.FailSafe f = (Uplink.FailSafe) frame;
+            config.log().accept("the controller's fail-safe stopped the wheels: " + f.reason());
+            enqueue(new LinkEvent.FailSafe(f.simTimeMs(), f.reason()));
+        }
+    }
+
+    /** Bounded: when nobody reads, the oldest readings make room (connection events always stay). */
+    private void enqueue(LinkEvent e) {
+        if (events.size() >= config.queueCapacity()) {
+            List<LinkEvent> kept = new ArrayList<>();
+            LinkEvent old;
+            while (events.size() >= config.queueCapacity() / 2 && (old = events.poll()) != null) {
+                if (old instanceof LinkEvent.Connected || old instanceof LinkEvent.Disconnected) {
+                    kept.add(old);
+                }
+            }
+            for (int i = kept.size() - 1; i >= 0; i--) {
+                events.addFirst(kept.get(i));
+            }
+        }
+        events.add(e);
+    }
+
+    @Override
+    public void detached(RobotConnection c, String reason) {
+        boolean wasCurrent;
+        synchronized (this) {
+            wasCurrent = current == c;
+            if (wasCurrent) {
+                current = null;
+            }
+            notifyAll();
+        }
+        lastCloseReason = reason;
+        config.log().accept("connection closed: " + reason);
+        if (wasCurrent) {
+            events.add(new LinkEvent.Disconnected(reason));
+            for (ConnectionListener l : listeners) {
+                l.connectionChanged(false);
+            }
+        }
+    }
+}

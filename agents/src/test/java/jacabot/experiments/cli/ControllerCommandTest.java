@@ -1,0 +1,77 @@
+package jacabot.experiments.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.experiments.link.LinkConfig;
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.MiddlewareLink;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ControllerCommandTest {
+    private static final String NAVIGATION =
+            Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", "navigation.json").toString();
+
+    /** {@return exit code, stdout, stderr} */
+    private static String[] run(String... args) {
+        PrintStream out = System.out;
+        PrintStream err = System.err;
+        var bytesOut = new ByteArrayOutputStream();
+        var bytesErr = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(bytesOut, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(bytesErr, true, StandardCharsets.UTF_8));
+            int code = JacabotCommand.execute(args);
+            return new String[] {String.valueOf(code), bytesOut.toString(StandardCharsets.UTF_8),
+                    bytesErr.toString(StandardCharsets.UTF_8)};
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+    }
+
+    private static void assertUserError(String[] result, String message) {
+        assertEquals("2", result[0], result[2]);
+        assertTrue(result[2].contains(message), result[2]);
+        assertFalse(result[2].contains("\tat "), "no stack trace: " + result[2]);
+    }
+
+    @Test
+    void anInvalidWorldFileIsReportedWithItsJsonPathAndExitCode2(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.json");
+        Files.writeString(bad, "{ \"robots\": [ { \"name\": \"k\", \"model\": \"tank\" } ] }");
+        var result = run("controller", "--world", bad.toString());
+        assertUserError(result, bad + ": $.robots[0].model");
+        assertUserError(run("controller", "--world", dir.resolve("missing.json").toString()), "cannot read the world file");
+    }
+
+    @Test
+    void badOptionsAreUserErrors() {
+        assertUserError(run("controller", "--world", NAVIGATION, "--robot", "r2d2"), "no robot named 'r2d2'");
+        assertUserError(run("controller", "--world", NAVIGATION, "--speed", "0"), "speed factor must be a positive number");
+        assertUserError(run("controller", "--world", NAVIGATION, "--port", "70000"), "port must be in 0..65535");
+        assertUserError(run("controller"), "Missing required option: '--world=FILE'");
+    }
+
+    @Test
+    void theControllerConnectsToARunningMiddleware() throws Exception {
+        try (var link = MiddlewareLink.open(LinkConfig.defaults().withPort(0).withLog(line -> { }))) {
+            var result = run("controller", "--world", NAVIGATION, "--port", String.valueOf(link.port()), "--speed", "10",
+                    "--seconds", "5");
+            assertEquals("0", result[0], result[2]);
+            assertTrue(result[1].startsWith("controller: robot 'khepera' (khepera) of world 'navigation', real time x10.0; "
+                    + "middleware at 127.0.0.1:" + link.port()), result[1]);
+            assertTrue(result[1].contains("stopped at t=5.00 s after 125 steps"), result[1]);
+            var first = link.poll(5, TimeUnit.SECONDS);
+            assertTrue(first instanceof LinkEvent.Connected, String.valueOf(first));
+        }
+    }
+}

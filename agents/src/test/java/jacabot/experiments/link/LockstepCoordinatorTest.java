@@ -1,0 +1,61 @@
+package jacabot.experiments.link;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorKind;
+import jacabot.sim.SimWorld;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** Lockstep over the real protocol, with a scripted (non-AgentSpeak) agent side. */
+class LockstepCoordinatorTest {
+    /** Drives forward at full speed and stops for good once the front sensor reads over 350. */
+    static final class StopAtObstacle implements LockstepCoordinator.AgentSide {
+        long stoppedAt = -1;
+        final List<double[]> wheels = new ArrayList<>();
+
+        @Override
+        public List<Command> step(StepData data) {
+            wheels.add(data.reading(SensorKind.WHEEL_SPEEDS).orElseThrow().getDoubleValues());
+            if (data.step() == 0) {
+                return List.of(Command.setSpeeds(100, 100));
+            }
+            if (stoppedAt < 0 && data.value(SensorKind.CENTRAL_DISTANCE) > 350) {
+                stoppedAt = data.step();
+                return List.of(Command.stop());
+            }
+            return List.of();
+        }
+    }
+
+    private static LockstepCoordinator.Result run(StopAtObstacle agent) throws Exception {
+        SimWorld world = MiddlewareLinkTest.world("navigation");
+        return new LockstepCoordinator(world, "khepera", agent).runFor(10);
+    }
+
+    @Test
+    void twoRunsOfTheSameWorldAndAgentGiveTheSameEventLogToTheByte() throws Exception {
+        var first = run(new StopAtObstacle());
+        var second = run(new StopAtObstacle());
+        assertEquals(250, first.steps(), "10 s of 40 ms steps");
+        assertTrue(first.controllerLog().size() >= 2 * 250, "readings and pose of every step");
+        assertEquals(first.eventLog(), second.eventLog());
+    }
+
+    @Test
+    void aCommandSentDuringStepKIsInEffectAtStepKPlusOne() throws Exception {
+        var agent = new StopAtObstacle();
+        var result = run(agent);
+        long k = agent.stoppedAt;
+        assertTrue(k > 0, "the robot should meet red1 ahead within 10 s");
+        assertArrayEquals(new double[] {100, 100}, agent.wheels.get(1), "setSpeeds at step 0 is in effect at step 1");
+        assertArrayEquals(new double[] {100, 100}, agent.wheels.get((int) k));
+        assertArrayEquals(new double[] {0, 0}, agent.wheels.get((int) k + 1), "stop at step k is in effect at step k+1");
+        assertTrue(result.controllerLog().contains("step " + k + " apply stop"), "applied before the world left step k");
+        assertEquals(2, result.response().count(), "both commands reported as applied");
+    }
+}

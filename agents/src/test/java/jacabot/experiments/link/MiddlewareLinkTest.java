@@ -1,0 +1,232 @@
+package jacabot.experiments.link;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.robot.ControllerConfig;
+import jacabot.robot.link.Command;
+import jacabot.robot.link.Protocol;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+import jacabot.robot.link.Uplink;
+import jacabot.sim.SimWorld;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.ObjectOutputStream;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Predicate;
+import org.junit.jupiter.api.Test;
+
+/** The middleware's end of the link, against the real controller and against hostile clients. */
+class MiddlewareLinkTest {
+    private final List<String> log = new CopyOnWriteArrayList<>();
+
+    static SimWorld world(String name) throws Exception {
+        return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", name + ".json"));
+    }
+
+    private LinkConfig linkConfig() {
+        return LinkConfig.defaults().withPort(0).withLog(log::add);
+    }
+
+    /** Safety net only: the first event matching within 10 s. */
+    static LinkEvent await(MiddlewareLink link, Predicate<LinkEvent> p) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (System.nanoTime() < end) {
+            LinkEvent e = link.poll(100, TimeUnit.MILLISECONDS);
+            if (e != null && p.test(e)) {
+                return e;
+            }
+        }
+        throw new AssertionError("no matching event within 10 s");
+    }
+
+    static Predicate<LinkEvent> wheels(double left, double right) {
+        return e -> e instanceof LinkEvent.Reading && ((LinkEvent.Reading) e).info().getId() == SensorKind.WHEEL_SPEEDS.id()
+                && Arrays.equals(((LinkEvent.Reading) e).info().getDoubleValues(), new double[] {left, right});
+    }
+
+    @Test
+    void aControllerConnectsSendsReadingsWithSimulatedTimeAndObeysCommands() throws Exception {
+        var cc = ControllerConfig.defaults().withSpeedFactor(20).withLog(log::add);
+        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+            link.controller().runner().start();
+            MiddlewareLink m = link.middleware();
+            var connected = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
+            assertEquals("khepera", connected.robotName());
+            assertFalse(connected.lockstep());
+            assertTrue(m.isConnected());
+            var r = (LinkEvent.Reading) await(m, e -> e instanceof LinkEvent.Reading
+                    && ((LinkEvent.Reading) e).info().getId() == SensorKind.CENTRAL_DISTANCE.id());
+            assertEquals(40 * r.step(), r.simTimeMs());
+            assertTrue(m.send(Command.setSpeeds(40, 40)));
+            await(m, wheels(40, 40));
+            await(m, e -> e instanceof LinkEvent.StepMarker && !((LinkEvent.StepMarker) e).awaitsAck());
+            for (int i = 0; i < 10 && m.timings().response().count() == 0; i++) {
+                Thread.sleep(50);
+            }
+            assertEquals(1, m.timings().response().count(), "the APPLIED report gives one response time");
+            assertTrue(m.timings().transport().count() > 0);
+            link.controller().runner().stop();
+        }
+    }
+
+    @Test
+    void failSafeStopsTheRobotWhenTheAgentSideIsSilentAndReconnectionRestoresConnected() throws Exception {
+        AtomicLong nanos = new AtomicLong();
+        var cc = ControllerConfig.defaults().withSpeedFactor(20).withFailSafeMs(1000).withBackoff(20, 100)
+                .withClocks(jacabot.robot.link.LinkClock.system(), nanos::get).withLog(log::add);
+        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig().withHeartbeatMs(0))) {
+            link.controller().runner().start();
+            MiddlewareLink m = link.middleware();
+            await(m, e -> e instanceof LinkEvent.Connected);
+            m.send(Command.forward());
+            await(m, wheels(50, 50));
+            nanos.addAndGet(TimeUnit.SECONDS.toNanos(2)); // the agent side says nothing for 2 s
+            var f = (LinkEvent.FailSafe) await(m, e -> e instanceof LinkEvent.FailSafe);
+            assertTrue(f.reason().startsWith("no command or heartbeat"), f.reason());
+            await(m, wheels(0, 0));
+
+            m.send(Command.forward());
+            await(m, wheels(50, 50));
+            m.disconnect("test: pulling the cable");
+            var gone = (LinkEvent.Disconnected) await(m, e -> e instanceof LinkEvent.Disconnected);
+            assertEquals("test: pulling the cable", gone.reason());
+            await(m, e -> e instanceof LinkEvent.Connected); // the controller came back by itself
+            assertTrue(m.isConnected());
+            await(m, wheels(0, 0)); // and stopped meanwhile
+            assertEquals(2, link.controller().connections());
+            link.controller().runner().stop();
+        }
+    }
+
+    /** A client that shakes hands properly and then writes whatever the test wants. */
+    private static Socket handshake(MiddlewareLink m, int version) throws Exception {
+        Socket s = new Socket(InetAddress.getLoopbackAddress(), m.port());
+        new Protocol.Hello(version, "rogue", "none", 40, false).write(new DataOutputStream(s.getOutputStream()));
+        return s;
+    }
+
+    private static void expectClosedWith(MiddlewareLink m, String reason) throws InterruptedException {
+        var d = (LinkEvent.Disconnected) await(m, e -> e instanceof LinkEvent.Disconnected);
+        assertTrue(d.reason().contains(reason), d.reason());
+        assertFalse(m.isConnected());
+    }
+
+    private static void writeBatchWith(Socket s, Object payload) throws Exception {
+        var out = new ObjectOutputStream(new BufferedOutputStream(s.getOutputStream()));
+        out.writeByte(Uplink.BATCH);
+        out.writeLong(0);
+        out.writeLong(0);
+        out.writeLong(0);
+        out.writeInt(1);
+        out.writeObject(payload);
+        out.flush();
+    }
+
+    @Test
+    void aForeignClassOrAHugeArrayClosesTheConnectionWithALoggedReason() throws Exception {
+        try (var m = MiddlewareLink.open(linkConfig())) {
+            try (Socket s = handshake(m, Protocol.VERSION)) {
+                await(m, e -> e instanceof LinkEvent.Connected);
+                writeBatchWith(s, new java.util.Date(0));
+                expectClosedWith(m, "rejected by the deserialization filter: class java.util.Date is not allowed");
+            }
+            try (Socket s = handshake(m, Protocol.VERSION)) {
+                await(m, e -> e instanceof LinkEvent.Connected);
+                try {
+                    writeBatchWith(s, new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[10_000_000]));
+                } catch (java.net.SocketException e) {
+                    // the middleware hung up in the middle of the 40 MB: as it should
+                }
+                expectClosedWith(m, "array of 10000000 elements exceeds the limit");
+            }
+            assertTrue(log.stream().anyMatch(l -> l.startsWith("connection closed: rejected by the deserialization filter")),
+                    log.toString());
+        }
+    }
+
+    @Test
+    void garbageStrangersAndOtherVersionsAreRefusedAndTheLinkKeepsServing() throws Exception {
+        try (var m = MiddlewareLink.open(linkConfig())) {
+            try (Socket s = new Socket(InetAddress.getLoopbackAddress(), m.port())) {
+                s.getOutputStream().write("GET / HTTP/1.1\r\n\r\n".getBytes());
+                waitFor(() -> m.lastCloseReason() != null);
+                assertTrue(m.lastCloseReason().startsWith("not a jacabot controller"), m.lastCloseReason());
+            }
+            try (Socket s = handshake(m, Protocol.VERSION + 7)) {
+                var welcome = Protocol.Welcome.read(new DataInputStream(s.getInputStream()));
+                assertFalse(welcome.accepted());
+                assertTrue(welcome.message().startsWith("protocol version mismatch"), welcome.message());
+            }
+            try (Socket s = handshake(m, Protocol.VERSION)) {
+                await(m, e -> e instanceof LinkEvent.Connected);
+                var out = new ObjectOutputStream(s.getOutputStream());
+                out.writeByte(77); // an unknown frame tag
+                out.flush();
+                expectClosedWith(m, "unknown frame tag 77");
+            }
+            try (Socket s = handshake(m, Protocol.VERSION)) {
+                await(m, e -> e instanceof LinkEvent.Connected);
+                var out = new ObjectOutputStream(s.getOutputStream());
+                out.writeByte(Uplink.BATCH);
+                out.writeLong(3); // and then nothing: the frame is truncated
+                out.flush();
+                s.shutdownOutput();
+                expectClosedWith(m, "truncated frame");
+            }
+            // still serving: a real controller gets through
+            var cc = ControllerConfig.defaults().withAddress("127.0.0.1", m.port()).withLog(log::add);
+            try (var controller = new jacabot.robot.RobotController(world("obstacle-avoidance"), cc)) {
+                controller.start();
+                var c = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
+                assertEquals("mybot", c.robotName());
+                assertNotNull(m.robot());
+            }
+        }
+    }
+
+    private static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!condition.getAsBoolean() && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+        assertTrue(condition.getAsBoolean(), "condition not met within 10 s");
+    }
+
+    @Test
+    void realTimeModeKeepsTheSimulatedToWallRatioNearTheFactor() throws Exception {
+        var cc = ControllerConfig.defaults().withSpeedFactor(4).withLog(log::add);
+        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+            var runner = link.controller().runner();
+            long wall0 = System.nanoTime(), sim0 = link.controller().world().timeMs();
+            runner.start();
+            Thread.sleep(2000);
+            runner.stop();
+            double wallS = (System.nanoTime() - wall0) / 1e9;
+            double simS = (link.controller().world().timeMs() - sim0) / 1000.0;
+            double ratio = simS / wallS;
+            assertTrue(ratio > 4 * 0.7 && ratio < 4 * 1.3, "simulated/wall ratio " + ratio + " for factor 4");
+        }
+    }
+
+    @Test
+    void sendingWithoutAControllerReportsFalse() throws Exception {
+        try (var m = MiddlewareLink.open(linkConfig())) {
+            assertFalse(m.send(Command.stop()));
+            assertFalse(m.awaitConnected(10, TimeUnit.MILLISECONDS));
+            assertInstanceOf(Integer.class, m.port());
+        }
+    }
+}

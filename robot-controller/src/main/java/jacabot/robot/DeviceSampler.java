@@ -1,0 +1,188 @@
+package jacabot.robot;
+
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+import jacabot.sim.Rgb;
+import jacabot.sim.device.Camera;
+import jacabot.sim.device.DistanceSensor;
+import jacabot.sim.device.Section;
+import jacabot.sim.robot.Robot;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The polling half of the controller (thesis Chapter 4, Introduction: "polling the sensors through
+ * low-level APIs"): enables the robot's devices and, each control step, turns every enabled device
+ * that has a reading into one {@link SensorInfo}. Only the simulation thread calls it.
+ */
+final class DeviceSampler {
+    private final Robot robot;
+    private final boolean cameraImage;
+    private final Map<SensorKind, DistanceSensor> distance = new EnumMap<>(SensorKind.class);
+    private final Camera camera;
+
+    DeviceSampler(Robot robot, boolean cameraImage) {
+        this.robot = robot;
+        this.cameraImage = cameraImage;
+        for (DistanceSensor d : robot.distanceSensors()) {
+            SensorKind.ofDistanceSensor(d.name()).ifPresent(k -> distance.put(k, d));
+        }
+        this.camera = robot.model().camera() == null ? null : robot.getCamera(robot.model().camera().name());
+    }
+
+    /** Enables every device the robot has, at one sampling period (Webots: first reading one period later). */
+    void enableAll(int periodMs) {
+        for (SensorKind k : SensorKind.values()) {
+            enable(k, periodMs);
+        }
+    }
+
+    /** {@return whether the robot has a device for this kind (and it was enabled)} */
+    boolean enable(SensorKind kind, int periodMs) {
+        return toggle(kind, periodMs);
+    }
+
+    boolean disable(SensorKind kind) {
+        return toggle(kind, 0);
+    }
+
+    /** Enables (period > 0) or disables (0) the device behind a kind. */
+    private boolean toggle(SensorKind kind, int periodMs) {
+        boolean on = periodMs > 0;
+        switch (kind) {
+            case CAMERA_SECTIONS:
+            case CAMERA_IMAGE:
+                if (camera == null) {
+                    return false;
+                }
+                if (on) {
+                    camera.enable(periodMs);
+                } else {
+                    camera.disable();
+                }
+                return true;
+            case GPS:
+                if (!robot.model().gps()) {
+                    return false;
+                }
+                if (on) {
+                    robot.getGps("gps").enable(periodMs);
+                } else {
+                    robot.getGps("gps").disable();
+                }
+                return true;
+            case COMPASS:
+                if (!robot.model().compass()) {
+                    return false;
+                }
+                if (on) {
+                    robot.getCompass("compass").enable(periodMs);
+                } else {
+                    robot.getCompass("compass").disable();
+                }
+                return true;
+            case BATTERY:
+                if (!robot.hasBattery()) {
+                    return false;
+                }
+                if (on) {
+                    robot.getBattery().enable(periodMs);
+                } else {
+                    robot.getBattery().disable();
+                }
+                return true;
+            case GRIP_FORCE:
+                if (!robot.hasGripper()) {
+                    return false;
+                }
+                if (on) {
+                    robot.getGripper().enableForceFeedback(periodMs);
+                } else {
+                    robot.getGripper().disableForceFeedback();
+                }
+                return true;
+            case GRIP_PRESENCE:
+                if (!robot.hasGripper()) {
+                    return false;
+                }
+                if (on) {
+                    robot.getGripper().enablePresence(periodMs);
+                } else {
+                    robot.getGripper().disablePresence();
+                }
+                return true;
+            case GRIPPER_POSITIONS:
+                return robot.hasGripper(); // positions are actuator state, always readable
+            case WHEEL_SPEEDS:
+                return true;
+            default:
+                DistanceSensor d = distance.get(kind);
+                if (d == null) {
+                    return false;
+                }
+                if (on) {
+                    d.enable(periodMs);
+                } else {
+                    d.disable();
+                }
+                return true;
+        }
+    }
+
+    /** {@return the readings available now, in a fixed order (so a lockstep run is reproducible)} */
+    List<SensorInfo> sample() {
+        List<SensorInfo> out = new ArrayList<>();
+        for (Map.Entry<SensorKind, DistanceSensor> e : distance.entrySet()) {
+            if (e.getValue().hasValue()) {
+                out.add(new SensorInfo(e.getKey().id(), e.getValue().getValue()));
+            }
+        }
+        if (camera != null && camera.hasValue()) {
+            int[] levels = new int[9];
+            Section[] sections = {Section.LEFT, Section.CENTRE, Section.RIGHT};
+            for (int i = 0; i < 3; i++) {
+                Rgb c = camera.getSectionLevels(sections[i]);
+                levels[3 * i] = c.red();
+                levels[3 * i + 1] = c.green();
+                levels[3 * i + 2] = c.blue();
+            }
+            out.add(new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), levels));
+            if (cameraImage) {
+                int[] image = camera.getImage();
+                int[] framed = new int[image.length + 2];
+                framed[0] = camera.getWidth();
+                framed[1] = camera.getHeight();
+                System.arraycopy(image, 0, framed, 2, image.length);
+                out.add(new SensorInfo(SensorKind.CAMERA_IMAGE.id(), framed));
+            }
+        }
+        if (robot.model().gps() && robot.getGps("gps").hasValue()) {
+            double[] v = robot.getGps("gps").getValues();
+            out.add(new SensorInfo(SensorKind.GPS.id(), v[0], v[1], v[2]));
+        }
+        if (robot.model().compass() && robot.getCompass("compass").hasValue()) {
+            double[] v = robot.getCompass("compass").getValues();
+            out.add(new SensorInfo(SensorKind.COMPASS.id(), v[0], v[1], v[2]));
+        }
+        if (robot.hasBattery() && robot.getBattery().hasValue()) {
+            out.add(new SensorInfo(SensorKind.BATTERY.id(), robot.getBattery().getValue()));
+        }
+        if (robot.hasGripper()) {
+            var g = robot.getGripper();
+            addIfReady(out, SensorKind.GRIP_FORCE, g.getForceFeedback());
+            addIfReady(out, SensorKind.GRIP_PRESENCE, g.getPresence());
+            out.add(new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {g.getArmPosition(), g.getGripPosition()}));
+        }
+        var w = robot.getWheels();
+        out.add(new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {w.getLeftSpeed(), w.getRightSpeed()}));
+        return out;
+    }
+
+    private static void addIfReady(List<SensorInfo> out, SensorKind kind, double value) {
+        if (!Double.isNaN(value)) {
+            out.add(new SensorInfo(kind.id(), value));
+        }
+    }
+}

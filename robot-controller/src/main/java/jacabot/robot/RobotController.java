@@ -1,0 +1,240 @@
+package jacabot.robot;
+
+import jacabot.robot.link.Protocol;
+import jacabot.robot.link.ReceivedCommand;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.Uplink;
+import jacabot.sim.Pose;
+import jacabot.sim.SimRunner;
+import jacabot.sim.SimWorld;
+import jacabot.sim.robot.Robot;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The robot controller process of the thesis (Chapter 3 §2.3–2.4), run against a sim-world robot
+ * as Webots runs a controller: every control step it samples the enabled devices, sends one
+ * {@link SensorInfo} per reading (with the step's simulated time) to the middleware, and applies the
+ * commands received. {@link #controlStep(SimWorld)} is the body of Webots'
+ * {@code while (robot.step(TIME_STEP) != -1)} loop; a {@link SimRunner} calls it before each step.
+ *
+ * <p>Two modes. <b>Real time</b>: the runner paces the world to the wall clock × a factor, the
+ * agent runs free, commands take effect at the first step after they arrive, and a fail-safe stops
+ * the wheels when the link drops or nothing (command or heartbeat) has come for
+ * {@code failSafeMs}. <b>Lockstep</b>: after sending a step's data and its step marker the
+ * controller waits for the middleware's {@code STEP_ACK(step)}, applies the commands that came
+ * before it, and only then lets the world advance; so a command sent while step k is handled is in
+ * effect from step k to k+1, and the same world, agent and seed give the same run.
+ *
+ * <pre>{@code
+ * SimWorld world = SimWorld.load(Path.of("worlds/navigation.json"));
+ * try (RobotController c = new RobotController(world, ControllerConfig.defaults().withLockstep(true))) {
+ *     c.start();
+ *     c.runner().runFor(60);       // or runner().start() with a WorldViewer
+ * }
+ * }</pre>
+ */
+public final class RobotController implements AutoCloseable {
+    private final SimWorld world;
+    private final Robot robot;
+    private final ControllerConfig config;
+    private final DeviceSampler sampler;
+    private final CommandExecutor executor;
+    private final CommandInbox inbox;
+    private final RobotLink link;
+    private final SimRunner runner;
+    private volatile long step;
+    private boolean failSafeTripped;
+    private volatile long failSafeTrips;
+    private volatile boolean started, closed;
+
+    /** @throws IllegalArgumentException when the world has no robot of the configured name */
+    public RobotController(SimWorld world, ControllerConfig config) {
+        this.world = world;
+        this.config = config;
+        if (world.robots().isEmpty()) {
+            throw new IllegalArgumentException("world '" + world.name() + "' has no robot to control");
+        }
+        this.robot = config.robotName() == null ? world.robots().get(0) : world.robot(config.robotName());
+        this.sampler = new DeviceSampler(robot, config.sendCameraImage());
+        this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
+        this.inbox = new CommandInbox(world, config.nanoTime());
+        this.link = new RobotLink(config, new Protocol.Hello(Protocol.VERSION, robot.name(), world.name(),
+                world.controlStep(), config.lockstep()), inbox);
+        this.runner = new SimRunner(world, this::controlStep);
+        if (config.lockstep()) {
+            runner.setMode(SimRunner.Mode.FAST); // the agent's acknowledgements pace the world
+        } else {
+            runner.setMode(SimRunner.Mode.REAL_TIME);
+            runner.setSpeedFactor(config.speedFactor());
+        }
+    }
+
+    /** Enables every device of the robot (one reading per control step) and starts the link's threads. */
+    public synchronized void start() {
+        if (started) {
+            return;
+        }
+        started = true;
+        synchronized (world) {
+            sampler.enableAll(world.controlStep());
+        }
+        link.start();
+    }
+
+    /** {@return the runner that steps the world and calls {@link #controlStep} before each step} */
+    public SimRunner runner() {
+        return runner;
+    }
+
+    public SimWorld world() {
+        return world;
+    }
+
+    public Robot robot() {
+        return robot;
+    }
+
+    public ControllerConfig config() {
+        return config;
+    }
+
+    public boolean isConnected() {
+        return inbox.isConnected();
+    }
+
+    /** {@return how many connections to the middleware have come up (reconnections included)} */
+    public long connections() {
+        return inbox.connections();
+    }
+
+    /** {@return the last link problem (refused handshake, drop, garbage), or null} */
+    public String lastProblem() {
+        return link.lastProblem();
+    }
+
+    /** {@return how many times the fail-safe stopped the wheels} */
+    public long failSafeTrips() {
+        return failSafeTrips;
+    }
+
+    /** {@return the control steps done so far} */
+    public long steps() {
+        return step;
+    }
+
+    /** {@return frames discarded because the link was down or the middleware read too slowly} */
+    public long droppedFrames() {
+        return link.droppedFrames();
+    }
+
+    /**
+     * One control step, called with the world's lock held just before the world advances: sample
+     * and send, then take the commands (in lockstep, waiting for the agent's acknowledgement).
+     * Only the simulation thread calls it.
+     */
+    public void controlStep(SimWorld w) {
+        if (closed) {
+            return;
+        }
+        long now = world.timeMs();
+        List<SensorInfo> readings = sampler.sample();
+        long sampledMicros = config.clock().nowMicros();
+        logReadings(now, readings);
+        Uplink.Batch batch = new Uplink.Batch(step, now, sampledMicros, readings);
+        Uplink.StepMarker marker = new Uplink.StepMarker(step, now, config.lockstep());
+        List<ReceivedCommand> received = config.lockstep() ? exchangeLockstep(batch, marker) : exchangeRealTime(batch, marker);
+        if (received == null) {
+            return; // closed while waiting
+        }
+        for (ReceivedCommand rc : received) {
+            executor.submit(rc);
+        }
+        for (ReceivedCommand rc : executor.tick(now)) {
+            failSafeTripped = false;
+            event("apply " + rc.command());
+            long appliedMicros = config.clock().nowMicros();
+            Uplink.Applied a = new Uplink.Applied(rc.seq(), rc.command().code().code(), step, now, rc.receivedMicros(), appliedMicros);
+            link.send(out -> out.writeApplied(a));
+        }
+        Pose p = robot.pose();
+        event("pose " + p.x() + " " + p.z() + " " + p.heading());
+        step++;
+    }
+
+    private List<ReceivedCommand> exchangeRealTime(Uplink.Batch batch, Uplink.StepMarker marker) {
+        link.send(out -> out.writeStep(batch, marker));
+        CommandInbox.Drained d = inbox.drain();
+        if (d.dropped()) {
+            failSafe("the link to the middleware dropped");
+        }
+        long silence = TimeUnit.NANOSECONDS.toMillis(inbox.silenceNanos());
+        if (inbox.isConnected() && silence >= config.failSafeMs() && d.commands().isEmpty()) {
+            failSafe("no command or heartbeat for " + silence + " ms");
+        }
+        return d.commands();
+    }
+
+    private List<ReceivedCommand> exchangeLockstep(Uplink.Batch batch, Uplink.StepMarker marker) {
+        try {
+            while (true) {
+                if (!inbox.awaitConnected()) {
+                    return null;
+                }
+                link.send(out -> out.writeStep(batch, marker));
+                switch (inbox.awaitAck(batch.step())) {
+                    case ACKED:
+                        return inbox.takeCommands();
+                    case CLOSED:
+                        return null;
+                    default:
+                        failSafe("the link to the middleware dropped"); // then resend this step
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return null;
+        }
+    }
+
+    /** Stops the wheels once per silence or drop, and tells the middleware when it can. */
+    private void failSafe(String reason) {
+        if (failSafeTripped) {
+            return;
+        }
+        failSafeTripped = true;
+        boolean wasMoving = executor.moving();
+        executor.emergencyStop();
+        failSafeTrips++;
+        config.log().accept("fail-safe: " + reason + (wasMoving ? "; wheels stopped" : "; wheels already stopped"));
+        event("fail-safe " + reason);
+        long now = world.timeMs();
+        link.send(out -> out.writeFailSafe(new Uplink.FailSafe(now, reason)));
+    }
+
+    private void logReadings(long now, List<SensorInfo> readings) {
+        if (config.eventLog() == null) {
+            return;
+        }
+        StringBuilder sb = new StringBuilder();
+        sb.append("step ").append(step).append(" t=").append(now);
+        for (SensorInfo info : readings) {
+            sb.append(' ').append(Readings.format(info));
+        }
+        config.eventLog().accept(sb.toString());
+    }
+
+    private void event(String what) {
+        if (config.eventLog() != null) {
+            config.eventLog().accept("step " + step + " " + what);
+        }
+    }
+
+    /** Says goodbye to the middleware and stops the link's threads; a lockstep wait in {@link #controlStep} returns. */
+    @Override
+    public void close() {
+        closed = true;
+        inbox.close();
+        link.close("controller stopped");
+    }
+}

@@ -1,0 +1,233 @@
+package jacabot.robot;
+
+import jacabot.robot.link.CommandReader;
+import jacabot.robot.link.ProtocolException;
+import jacabot.robot.link.Protocol;
+import jacabot.robot.link.ReceivedCommand;
+import jacabot.robot.link.SensorDataWriter;
+import jacabot.robot.link.Uplink;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The controller's end of the TCP link, with the thesis' two threads (§2.4): the <b>receiver</b>
+ * connects (retrying with back-off, reconnecting after a drop), shakes hands and reads commands
+ * into the {@link CommandInbox}; the <b>sender</b> writes the frames the simulation thread queues,
+ * so neither a slow agent nor a slow socket ever blocks the other direction or the simulation.
+ */
+final class RobotLink {
+    /** A frame waiting for the sender thread. */
+    @FunctionalInterface
+    interface Frame {
+        void writeTo(SensorDataWriter out) throws IOException;
+    }
+
+    private static final int HANDSHAKE_TIMEOUT_MS = 5000;
+
+    private final ControllerConfig config;
+    private final Protocol.Hello hello;
+    private final CommandInbox inbox;
+    private final BlockingQueue<Frame> outbox;
+    private final CountDownLatch closed = new CountDownLatch(1);
+    private final AtomicLong droppedFrames = new AtomicLong();
+    private volatile Socket socket;
+    private volatile SensorDataWriter writer;
+    private volatile String lastProblem;
+    private Thread receiver, sender;
+
+    RobotLink(ControllerConfig config, Protocol.Hello hello, CommandInbox inbox) {
+        this.config = config;
+        this.hello = hello;
+        this.inbox = inbox;
+        this.outbox = new ArrayBlockingQueue<>(config.outboxCapacity());
+    }
+
+    void start() {
+        receiver = new Thread(this::receiveLoop, "controller-receiver");
+        sender = new Thread(this::sendLoop, "controller-sender");
+        receiver.setDaemon(true);
+        sender.setDaemon(true);
+        receiver.start();
+        sender.start();
+    }
+
+    boolean isConnected() {
+        return writer != null;
+    }
+
+    /** {@return the last connection problem (refused handshake, dropped link, garbage), or null} */
+    String lastProblem() {
+        return lastProblem;
+    }
+
+    /** {@return frames discarded because the link was down or the sender fell behind} */
+    long droppedFrames() {
+        return droppedFrames.get();
+    }
+
+    /**
+     * Queues a frame for the sender. When the queue is full (the middleware reads too slowly) the
+     * oldest frame goes: sensor data is polled, only the newest matters.
+     */
+    void send(Frame frame) {
+        if (!isConnected()) {
+            droppedFrames.incrementAndGet();
+            return;
+        }
+        while (!outbox.offer(frame)) {
+            if (outbox.poll() != null) {
+                droppedFrames.incrementAndGet();
+            }
+        }
+    }
+
+    /** Says goodbye (best effort), closes the socket and stops both threads. */
+    void close(String reason) {
+        if (closed.getCount() == 0) {
+            return;
+        }
+        SensorDataWriter w = writer;
+        if (w != null) {
+            try {
+                w.writeBye(new Uplink.Bye(reason));
+            } catch (IOException e) {
+                // the link is going anyway
+            }
+        }
+        closed.countDown();
+        closeSocket();
+        sender.interrupt();
+        receiver.interrupt();
+        try {
+            sender.join(2000);
+            receiver.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private boolean isClosed() {
+        return closed.getCount() == 0;
+    }
+
+    private void sendLoop() {
+        try {
+            while (!isClosed()) {
+                Frame f = outbox.take();
+                SensorDataWriter w = writer;
+                if (w == null) {
+                    droppedFrames.incrementAndGet();
+                    continue;
+                }
+                try {
+                    f.writeTo(w);
+                } catch (IOException e) {
+                    // The receiver notices the broken socket too and reconnects; drop this frame.
+                    droppedFrames.incrementAndGet();
+                    closeSocket();
+                }
+            }
+        } catch (InterruptedException e) {
+            // closing
+        }
+    }
+
+    private void receiveLoop() {
+        long backoff = config.minBackoffMs();
+        boolean everConnected = false;
+        while (!isClosed()) {
+            Socket s = new Socket();
+            boolean up = false;
+            try {
+                s.connect(new InetSocketAddress(config.host(), config.port()), HANDSHAKE_TIMEOUT_MS);
+                socket = s;
+                s.setTcpNoDelay(true);
+                s.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
+                var out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
+                hello.write(out);
+                Protocol.Welcome welcome = Protocol.Welcome.read(new DataInputStream(s.getInputStream()));
+                if (!welcome.accepted()) {
+                    throw new ProtocolException("the middleware refused the connection: " + welcome.message());
+                }
+                s.setSoTimeout(0);
+                outbox.clear();
+                writer = new SensorDataWriter(s.getOutputStream(), config.resetEvery());
+                up = true;
+                everConnected = true;
+                backoff = config.minBackoffMs();
+                config.log().accept("connected to the middleware at " + config.host() + ":" + config.port());
+                inbox.connectionChanged(true);
+                readCommands(new CommandReader(s.getInputStream(), config.clock()));
+            } catch (ProtocolException e) {
+                problem(e.getMessage(), up);
+            } catch (SocketTimeoutException e) {
+                problem("the middleware did not answer the handshake", up);
+            } catch (IOException e) {
+                if (up || !everConnected && lastProblem == null) {
+                    problem(up ? "link dropped: " + e.getMessage()
+                            : "waiting for the middleware at " + config.host() + ":" + config.port() + " (" + e.getMessage() + ")", up);
+                }
+            } finally {
+                writer = null;
+                closeSocket();
+                if (up) {
+                    inbox.connectionChanged(false);
+                }
+            }
+            if (!isClosed()) {
+                try {
+                    closed.await(backoff, TimeUnit.MILLISECONDS);
+                } catch (InterruptedException e) {
+                    return;
+                }
+                backoff = Math.min(config.maxBackoffMs(), backoff * 2);
+            }
+        }
+    }
+
+    private void readCommands(CommandReader reader) throws IOException {
+        while (!isClosed()) {
+            ReceivedCommand rc = reader.read();
+            if (rc == null) {
+                if (!isClosed()) {
+                    problem("the middleware closed the connection", true);
+                }
+                return;
+            }
+            if (rc.isValid()) {
+                inbox.offer(rc);
+            } else {
+                config.log().accept("command frame " + rc.seq() + " skipped: " + rc.skipped());
+            }
+        }
+    }
+
+    private void problem(String message, boolean wasUp) {
+        if (isClosed()) {
+            return;
+        }
+        lastProblem = message;
+        config.log().accept(message + (wasUp ? "; the wheels are stopped, reconnecting" : ""));
+    }
+
+    private void closeSocket() {
+        Socket s = socket;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException e) {
+                // nothing more to do
+            }
+        }
+    }
+}

@@ -1,0 +1,32 @@
+package jacabot.robot.link;
+
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+
+/**
+ * Writes command frames: {@code int code, int seq, long sentMicros, int argc, double × argc}. The
+ * thesis wrote {@code out.writeInt(SET_SPEED); out.writeDouble(x); out.writeDouble(y)}; the
+ * sequence number and send time let the controller report when each command took effect, and the
+ * argument count lets a reader skip a code it does not know without losing the stream.
+ */
+public final class CommandWriter {
+    private final DataOutputStream out;
+
+    public CommandWriter(OutputStream out) {
+        this.out = new DataOutputStream(out);
+    }
+
+    /** Writes and flushes one command. Thread-safe: frames are never interleaved. */
+    public synchronized void write(int seq, long sentMicros, Command command) throws IOException {
+        double[] args = command.args();
+        out.writeInt(command.code().code());
+        out.writeInt(seq);
+        out.writeLong(sentMicros);
+        out.writeInt(args.length);
+        for (double a : args) {
+            out.writeDouble(a);
+        }
+        out.flush();
+    }
+}

@@ -1,0 +1,114 @@
+package jacabot.robot.link;
+
+import java.io.BufferedInputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InvalidClassException;
+import java.io.ObjectInputStream;
+import java.io.ObjectStreamException;
+import java.io.OptionalDataException;
+import java.io.UTFDataFormatException;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The middleware's end of the sensor data stream: reads {@link Uplink} frames through an
+ * {@code ObjectInputStream} guarded by a {@link SensorInfoFilter}. Every way the stream can be wrong
+ * (a foreign class, a huge array, an unknown tag, a truncated frame, garbage) becomes one
+ * {@link ProtocolException} with a readable reason; the caller closes the connection.
+ */
+public final class SensorDataReader {
+    private final ObjectInputStream in;
+    private final SensorInfoFilter filter;
+
+    /**
+     * Reads the stream header (so it blocks until the controller has written it).
+     *
+     * @throws ProtocolException when the bytes are not an object stream
+     */
+    public SensorDataReader(InputStream in, SensorInfoFilter.Limits limits) throws IOException {
+        this.filter = new SensorInfoFilter(limits);
+        try {
+            this.in = new ObjectInputStream(new BufferedInputStream(in));
+        } catch (EOFException e) {
+            throw new ProtocolException("the controller closed the connection before its sensor data stream began");
+        } catch (ObjectStreamException e) {
+            throw new ProtocolException("garbage instead of a sensor data stream: " + e.getMessage());
+        }
+        this.in.setObjectInputFilter(filter);
+    }
+
+    /**
+     * Reads the next frame, blocking.
+     *
+     * @return the frame, or null when the controller closed the connection between two frames
+     */
+    public Uplink read() throws IOException {
+        int tag;
+        try {
+            tag = in.read();
+        } catch (ObjectStreamException e) {
+            throw garbage(e);
+        }
+        if (tag < 0) {
+            return null;
+        }
+        try {
+            switch (tag) {
+                case Uplink.BATCH: return readBatch();
+                case Uplink.STEP_MARKER: return new Uplink.StepMarker(in.readLong(), in.readLong(), in.readBoolean());
+                case Uplink.APPLIED:
+                    return new Uplink.Applied(in.readInt(), in.readInt(), in.readLong(), in.readLong(), in.readLong(),
+                            in.readLong());
+                case Uplink.FAIL_SAFE: return new Uplink.FailSafe(in.readLong(), in.readUTF());
+                case Uplink.BYE: return new Uplink.Bye(in.readUTF());
+                default: throw new ProtocolException("garbage on the sensor data stream: unknown frame tag " + tag);
+            }
+        } catch (EOFException e) {
+            throw new ProtocolException("truncated frame: the sensor data stream ended inside a frame (tag " + tag + ")");
+        } catch (ObjectStreamException | UTFDataFormatException e) {
+            throw garbage(e);
+        }
+    }
+
+    private Uplink.Batch readBatch() throws IOException {
+        long step = in.readLong(), simTime = in.readLong(), sampled = in.readLong();
+        int count = in.readInt();
+        if (count < 0 || count > Protocol.MAX_READINGS_PER_BATCH) {
+            throw new ProtocolException("garbage on the sensor data stream: a batch of " + count + " readings");
+        }
+        List<SensorInfo> readings = new ArrayList<>(count);
+        for (int i = 0; i < count; i++) {
+            readings.add(readSensorInfo());
+        }
+        return new Uplink.Batch(step, simTime, sampled, readings);
+    }
+
+    private SensorInfo readSensorInfo() throws IOException {
+        filter.beginObject();
+        Object o;
+        try {
+            o = in.readObject();
+        } catch (InvalidClassException e) {
+            String why = filter.lastRejection();
+            throw new ProtocolException("rejected by the deserialization filter: "
+                    + (why != null ? why : e.getMessage()), e);
+        } catch (OptionalDataException e) {
+            throw new ProtocolException("garbage on the sensor data stream: primitive data where a SensorInfo was expected");
+        } catch (ClassNotFoundException e) {
+            throw new ProtocolException("unknown class on the sensor data stream: " + e.getMessage());
+        } catch (RuntimeException e) {
+            // ObjectInputStream can fail with unchecked exceptions on corrupt input (e.g. a negative array size).
+            throw new ProtocolException("garbage on the sensor data stream: " + e, e);
+        }
+        if (!(o instanceof SensorInfo)) {
+            throw new ProtocolException("expected a SensorInfo, got " + (o == null ? "null" : o.getClass().getName()));
+        }
+        return (SensorInfo) o;
+    }
+
+    private static ProtocolException garbage(IOException e) {
+        return new ProtocolException("garbage on the sensor data stream: " + e, e);
+    }
+}

@@ -1,0 +1,75 @@
+package jacabot.robot.link;
+
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.ObjectOutputStream;
+import java.io.OutputStream;
+import java.util.List;
+
+/**
+ * The controller's end of the sensor data stream: an {@code ObjectOutputStream}, as in the thesis,
+ * carrying the {@link Uplink} frames (primitive headers, then one {@link SensorInfo} object per
+ * reading). The stream is {@code reset()} every {@code resetEvery} batches: an
+ * {@code ObjectOutputStream} otherwise keeps a reference to every object it ever wrote.
+ */
+public final class SensorDataWriter {
+    private final ObjectOutputStream out;
+    private final int resetEvery;
+    private int batchesSinceReset;
+
+    /** Writes the stream header at once. */
+    public SensorDataWriter(OutputStream out, int resetEvery) throws IOException {
+        if (resetEvery < 1) {
+            throw new IllegalArgumentException("resetEvery must be >= 1, got " + resetEvery);
+        }
+        this.out = new ObjectOutputStream(new BufferedOutputStream(out));
+        this.out.flush();
+        this.resetEvery = resetEvery;
+    }
+
+    /** Writes a step's batch and its step marker, and flushes. */
+    public synchronized void writeStep(Uplink.Batch batch, Uplink.StepMarker marker) throws IOException {
+        if (++batchesSinceReset >= resetEvery) {
+            out.reset();
+            batchesSinceReset = 0;
+        }
+        out.writeByte(Uplink.BATCH);
+        out.writeLong(batch.step());
+        out.writeLong(batch.simTimeMs());
+        out.writeLong(batch.sampledMicros());
+        List<SensorInfo> readings = batch.readings();
+        out.writeInt(readings.size());
+        for (SensorInfo info : readings) {
+            out.writeObject(info);
+        }
+        out.writeByte(Uplink.STEP_MARKER);
+        out.writeLong(marker.step());
+        out.writeLong(marker.simTimeMs());
+        out.writeBoolean(marker.awaitsAck());
+        out.flush();
+    }
+
+    public synchronized void writeApplied(Uplink.Applied a) throws IOException {
+        out.writeByte(Uplink.APPLIED);
+        out.writeInt(a.seq());
+        out.writeInt(a.code());
+        out.writeLong(a.step());
+        out.writeLong(a.simTimeMs());
+        out.writeLong(a.receivedMicros());
+        out.writeLong(a.appliedMicros());
+        out.flush();
+    }
+
+    public synchronized void writeFailSafe(Uplink.FailSafe f) throws IOException {
+        out.writeByte(Uplink.FAIL_SAFE);
+        out.writeLong(f.simTimeMs());
+        out.writeUTF(f.reason());
+        out.flush();
+    }
+
+    public synchronized void writeBye(Uplink.Bye bye) throws IOException {
+        out.writeByte(Uplink.BYE);
+        out.writeUTF(bye.reason());
+        out.flush();
+    }
+}

@@ -1,0 +1,75 @@
+package jacabot.robot.link;
+
+import java.io.ObjectInputFilter;
+
+/**
+ * The deserialization filter of the sensor data stream: only {@link SensorInfo} and its
+ * {@code int[]}/{@code double[]} fields may be read, with limits on depth, array length, back
+ * references and the bytes one object may take. Anything else is rejected before it is built, so a
+ * hostile or confused peer cannot make the middleware instantiate a foreign class or allocate a huge
+ * array; the reader then closes the connection with {@link #lastRejection()} as the reason.
+ *
+ * <p>One filter per stream: the byte limit is per object (the stream's own byte count grows for
+ * the life of the connection), so {@link #beginObject()} marks where each top-level object starts.
+ */
+public final class SensorInfoFilter implements ObjectInputFilter {
+    /** Limits; {@link #DEFAULT} fits a 640×480 camera image. */
+    public record Limits(int maxArrayLength, int maxDepth, long maxReferences, long maxBytesPerObject) {
+        public static final Limits DEFAULT = new Limits(640 * 480 + 2, 3, 100_000, 8L * (640 * 480 + 2) + 4096);
+    }
+
+    private final Limits limits;
+    private long objectStart = -1;
+    private String lastRejection;
+
+    public SensorInfoFilter(Limits limits) {
+        this.limits = limits;
+    }
+
+    /** Called before each top-level {@code readObject}: the byte limit counts from here. */
+    public void beginObject() {
+        objectStart = -1;
+    }
+
+    /** {@return why the last object was rejected, or null} */
+    public String lastRejection() {
+        return lastRejection;
+    }
+
+    @Override
+    public Status checkInput(FilterInfo info) {
+        if (objectStart < 0) {
+            objectStart = info.streamBytes();
+        }
+        Class<?> type = info.serialClass();
+        if (type != null) {
+            if (type.isArray()) {
+                Class<?> component = type.getComponentType();
+                if (component != int.class && component != double.class) {
+                    return reject("array of " + component.getName() + " is not allowed");
+                }
+                if (info.arrayLength() > limits.maxArrayLength()) {
+                    return reject("array of " + info.arrayLength() + " elements exceeds the limit of "
+                            + limits.maxArrayLength());
+                }
+            } else if (type != SensorInfo.class) {
+                return reject("class " + type.getName() + " is not allowed (only SensorInfo)");
+            }
+        }
+        if (info.depth() > limits.maxDepth()) {
+            return reject("nesting depth " + info.depth() + " exceeds " + limits.maxDepth());
+        }
+        if (info.references() > limits.maxReferences()) {
+            return reject(info.references() + " back references exceed " + limits.maxReferences());
+        }
+        if (info.streamBytes() - objectStart > limits.maxBytesPerObject()) {
+            return reject("object larger than " + limits.maxBytesPerObject() + " bytes");
+        }
+        return Status.ALLOWED;
+    }
+
+    private Status reject(String reason) {
+        lastRejection = reason;
+        return Status.REJECTED;
+    }
+}
