@@ -20,10 +20,12 @@ middlewarePort(4444).
 
 +!start <- !init(Id); focus(Id); accept; !waitConnection.
 
-+!init(Id) : middlewarePort(P)
+// The experiment runner may have made the middleware already (lockstep runs); otherwise make it.
++!init(Id) <- lookupArtifact("middleware", Id).
+-!init(Id) : middlewarePort(P)
     <- makeArtifact("middleware", "jacabot.experiments.ObjectPickingMiddleware", [P], Id);
        println("Artifact created").
--!init(_) <- println("artifact creation error"); .stopMAS.
+-!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
     <- println("Connection successful, waiting for sensor data"); acquireData; !moving.

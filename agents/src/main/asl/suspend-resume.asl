@@ -28,10 +28,12 @@ middlewarePort(4444).
 
 +!start <- !init(Id); focus(Id); println("focus achieved"); accept; !waitConnection.
 
-+!init(Id) : middlewarePort(P)
+// The experiment runner may have made the middleware already (lockstep runs); otherwise make it.
++!init(Id) <- lookupArtifact("middleware", Id).
+-!init(Id) : middlewarePort(P)
     <- makeArtifact("middleware", "jacabot.experiments.SuspendResumeMiddleware", [P], Id);
        println("Artifact created").
--!init(_) <- println("artifact creation error"); .stopMAS.
+-!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
     <- deltaBased(false);

@@ -28,9 +28,11 @@ class AppendixBAgentTest {
     void connect() {
         robot = TestAgent.fromFile("robot", AGENT);
         robot.outputs = AppendixBAgentTest::scriptedOutputs;
+        robot.environment = a -> !a.action().functor().equals("lookupArtifact"); // nobody made it yet
         robot.cycles(200);
-        assertEquals(List.of("makeArtifact(\"middleware\",\"jacabot.experiments.SuspendResumeMiddleware\",[4444],_1Id)"),
-                robot.actionNames().subList(0, 1).stream().map(s -> s.replaceAll("_[0-9]+Id", "_1Id")).toList());
+        assertTrue(robot.actionNames().get(0).startsWith("lookupArtifact(\"middleware\","), robot.actionNames().toString());
+        assertTrue(robot.actionNames().get(1).matches("makeArtifact\\(\"middleware\",\"jacabot.experiments.SuspendResumeMiddleware\",\\[4444\\],_[0-9]+Id\\)"),
+                robot.actionNames().toString());
         assertTrue(robot.actionNames().containsAll(List.of("focus(cobj_1)", "println(\"focus achieved\")", "accept")),
                 robot.actionNames().toString());
         robot.advance(500, 200);

@@ -33,6 +33,7 @@ class ExperimentAgentsTest {
                 u.bind(id, new ObjectTerm("cobj_1"));
             }
         };
+        robot.environment = a -> !a.action().functor().equals("lookupArtifact");
         robot.cycles(100);
         robot.percept("connected(true)");
         robot.advance(100, 200);

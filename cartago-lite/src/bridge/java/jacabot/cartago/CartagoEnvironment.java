@@ -35,7 +35,7 @@ public class CartagoEnvironment implements Environment {
     @Override
     public void init(LocalMAS mas, List<String> args) {
         if (workspace == null) {
-            var b = Workspace.builder("main").console(mas.consoleStream());
+            var b = Workspace.builder("main").console(mas.consoleStream()).logger(CartagoLogger.console(mas.consoleStream()));
             if (args.contains("stepped")) {
                 b.stepped();
             }

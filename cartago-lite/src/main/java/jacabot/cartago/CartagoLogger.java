@@ -27,6 +27,24 @@ public interface CartagoLogger {
         };
     }
 
+    /**
+     * {@return a logger writing console lines {@code [source] message}, as Jason's console shows
+     * agents' lines (warnings with their cause's message, no stack trace)}
+     */
+    static CartagoLogger console(java.io.PrintStream out) {
+        return new CartagoLogger() {
+            @Override
+            public void info(String source, String message) {
+                out.println("[" + source + "] " + message);
+            }
+
+            @Override
+            public void warning(String source, String message, Throwable cause) {
+                out.println("[" + source + "] " + message + (cause == null ? "" : ": " + cause));
+            }
+        };
+    }
+
     /** {@return a logger that drops everything} */
     static CartagoLogger silent() {
         return new CartagoLogger() {

@@ -233,6 +233,15 @@ public final class Workspace implements AutoCloseable {
         return core == null ? Optional.empty() : Optional.of(core.id());
     }
 
+    /**
+     * {@return the live artifact object behind an id, for the Java program hosting the workspace
+     * (e.g. a simulation runner collecting what an artifact produced); agents never get it}
+     */
+    public <T extends Artifact> Optional<T> artifactObject(ArtifactId id, Class<T> type) {
+        ArtifactCore core = byId.get(id.id());
+        return core != null && type.isInstance(core.artifact()) ? Optional.of(type.cast(core.artifact())) : Optional.empty();
+    }
+
     /** {@return the id of the live artifact numbered {@code id}} */
     public Optional<ArtifactId> artifact(int id) {
         ArtifactCore core = byId.get(id);

@@ -20,6 +20,7 @@ public final class SensorInfoFilter implements ObjectInputFilter {
 
     private final Limits limits;
     private long objectStart = -1;
+    private long referencesStart;
     private String lastRejection;
 
     public SensorInfoFilter(Limits limits) {
@@ -40,6 +41,7 @@ public final class SensorInfoFilter implements ObjectInputFilter {
     public Status checkInput(FilterInfo info) {
         if (objectStart < 0) {
             objectStart = info.streamBytes();
+            referencesStart = info.references();
         }
         Class<?> type = info.serialClass();
         if (type != null) {
@@ -59,8 +61,11 @@ public final class SensorInfoFilter implements ObjectInputFilter {
         if (info.depth() > limits.maxDepth()) {
             return reject("nesting depth " + info.depth() + " exceeds " + limits.maxDepth());
         }
-        if (info.references() > limits.maxReferences()) {
-            return reject(info.references() + " back references exceed " + limits.maxReferences());
+        // the JDK counts references over the whole stream (reset() does not clear the count), so
+        // the limit applies to each object read
+        long references = info.references() - referencesStart;
+        if (references > limits.maxReferences()) {
+            return reject(references + " back references exceed " + limits.maxReferences());
         }
         if (info.streamBytes() - objectStart > limits.maxBytesPerObject()) {
             return reject("object larger than " + limits.maxBytesPerObject() + " bytes");

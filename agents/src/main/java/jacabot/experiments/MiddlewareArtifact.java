@@ -1,0 +1,241 @@
+package jacabot.experiments;
+
+import jacabot.cartago.Artifact;
+import jacabot.cartago.IBlockingCmd;
+import jacabot.cartago.INTERNAL_OPERATION;
+import jacabot.cartago.OPERATION;
+import jacabot.experiments.link.LinkConfig;
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.experiments.link.StepData;
+import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * The thesis' executive layer (Chapter 3 §2, Chapter 4 "Introduction"): the artifact between the
+ * agent and the robot controller. It turns raw {@link SensorInfo} readings into observable
+ * properties and signals, and offers the robot's high-level commands as operations.
+ *
+ * <p>Two ways to reach the robot. <b>Socket</b> ({@code makeArtifact(N, C, [Port], Id)}): the
+ * artifact listens on loopback, {@code accept} waits for the controller and {@code acquireData}
+ * starts the thesis' {@code servingLoop}, which reads one reading at a time with
+ * {@code await(IBlockingCmd)}. <b>Lockstep</b> ({@code [Port, "lockstep"]}, made by the experiment
+ * runner): the runner owns the socket and hands each control step's readings to
+ * {@code deliverStep}; commands are collected and sent by the runner when the agents are idle.
+ * Subclasses interpret the readings ({@link #onReading}).
+ */
+public abstract class MiddlewareArtifact extends Artifact {
+    private MiddlewareLink link;
+    private boolean lockstep;
+    private final List<Command> outbox = new ArrayList<>();
+    private boolean acquiring;
+    private boolean stopAcquire;
+    /** Distance sensors ignored (the thesis' {@code stopDistance}), e.g. inside the storage area. */
+    protected boolean stopDistance;
+    /** The reading being interpreted, for the reactive-time measurement. */
+    private LinkEvent.Reading current;
+    private long simTimeMs;
+
+    void init(int port) throws IOException {
+        link = MiddlewareLink.open(LinkConfig.defaults().withPort(port));
+        defineObsProperty("connected", false);
+        defineProperties();
+    }
+
+    void init(int port, String mode) throws IOException {
+        if (!mode.equals("lockstep")) {
+            failed("unknown middleware mode '" + mode + "' (expected \"lockstep\")");
+        }
+        lockstep = true;
+        defineObsProperty("connected", false);
+        defineProperties();
+    }
+
+    /** Defines the experiment's observable properties. */
+    protected abstract void defineProperties();
+
+    /** Interprets one reading: update properties, signal events. */
+    protected abstract void onReading(SensorInfo info, SensorKind kind);
+
+    /** {@return the simulated time of the last reading, in ms} */
+    protected long simTimeMs() {
+        return simTimeMs;
+    }
+
+    /** {@return the reading being interpreted (null in lockstep)} */
+    protected LinkEvent.Reading currentReading() {
+        return current;
+    }
+
+    /** The socket link in socket mode, for timings; null in lockstep. */
+    public MiddlewareLink link() {
+        return link;
+    }
+
+    // ---- the connection ---------------------------------------------------------------------------
+
+    /** Waits for the robot controller to connect (the thesis' {@code accept}). */
+    @OPERATION
+    void accept() {
+        if (lockstep) {
+            return; // the runner connects; deliverStep sets connected(true)
+        }
+        if (!link.isConnected()) {
+            await((IBlockingCmd) () -> {
+                try {
+                    while (!link.awaitConnected(1, java.util.concurrent.TimeUnit.SECONDS)) {
+                        if (Thread.currentThread().isInterrupted()) {
+                            return;
+                        }
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+        }
+        getObsProperty("connected").updateValue(true);
+    }
+
+    /** Starts interpreting sensor data (the thesis' {@code acquireData} → {@code servingLoop}). */
+    @OPERATION
+    void acquireData() {
+        log("Acquiring data");
+        acquiring = true;
+        stopAcquire = false;
+        if (!lockstep) {
+            execInternalOp("servingLoop");
+        }
+    }
+
+    @INTERNAL_OPERATION
+    void servingLoop() {
+        while (!stopAcquire) {
+            LinkEvent[] next = new LinkEvent[1];
+            await((IBlockingCmd) () -> {
+                try {
+                    next[0] = link.receive();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            if (next[0] != null) {
+                handle(next[0]);
+            }
+        }
+    }
+
+    private void handle(LinkEvent e) {
+        if (e instanceof LinkEvent.Connected) {
+            getObsProperty("connected").updateValue(true);
+        } else if (e instanceof LinkEvent.Disconnected) {
+            getObsProperty("connected").updateValue(false);
+        } else if (e instanceof LinkEvent.Reading r) {
+            simTimeMs = r.simTimeMs();
+            Optional<SensorKind> kind = SensorKind.of(r.info().getId());
+            if (kind.isPresent() && acquiring) {
+                current = r;
+                onReading(r.info(), kind.get());
+                current = null;
+            }
+        }
+    }
+
+    /** Lockstep: the runner hands over one control step's readings. */
+    @OPERATION
+    void deliverStep(Object data) {
+        StepData step = (StepData) data;
+        simTimeMs = step.simTimeMs();
+        if (!getObsProperty("connected").booleanValue()) {
+            getObsProperty("connected").updateValue(true);
+        }
+        if (!acquiring || stopAcquire) {
+            return;
+        }
+        for (SensorInfo info : step.readings()) {
+            SensorKind.of(info.getId()).ifPresent(kind -> onReading(info, kind));
+        }
+    }
+
+    /** {@return the commands issued since the last call (lockstep)} */
+    public synchronized List<Command> takeCommands() {
+        var out = new ArrayList<>(outbox);
+        outbox.clear();
+        return out;
+    }
+
+    /** Sends a command to the robot. */
+    protected void send(Command c) {
+        if (lockstep) {
+            synchronized (this) {
+                outbox.add(c);
+            }
+        } else if (!link.send(c)) {
+            failed("the robot is not connected", "not_connected");
+        }
+    }
+
+    @OPERATION
+    void stopAcquire() {
+        stopAcquire = true;
+        acquiring = false;
+    }
+
+    @OPERATION
+    void stopAcquireDistance() {
+        stopDistance = true;
+    }
+
+    @OPERATION
+    void restartAcquireDistance() {
+        stopDistance = false;
+    }
+
+    // ---- robot commands -------------------------------------------------------------------------
+
+    @OPERATION
+    void setSpeeds(double left, double right) {
+        send(Command.setSpeeds(left, right));
+    }
+
+    @OPERATION
+    void stop() {
+        send(Command.stop());
+    }
+
+    @OPERATION
+    void forward() {
+        send(Command.forward());
+    }
+
+    @OPERATION
+    void backward() {
+        send(Command.backward());
+    }
+
+    @OPERATION
+    void turnLeft() {
+        send(Command.turnLeft());
+    }
+
+    @OPERATION
+    void turnRight() {
+        send(Command.turnRight());
+    }
+
+    @OPERATION
+    void turnAround() {
+        send(Command.turnAround());
+    }
+
+    @Override
+    protected void dispose() {
+        if (link != null) {
+            link.close();
+        }
+    }
+}

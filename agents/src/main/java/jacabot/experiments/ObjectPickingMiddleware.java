@@ -1,0 +1,170 @@
+package jacabot.experiments;
+
+import jacabot.cartago.OPERATION;
+import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+
+/**
+ * Experiment 2's middleware (thesis Chapter 4 §2.2), for the Khepera: on top of obstacle
+ * detection, {@code centralSensor}, {@code caught}, {@code picked}; signals {@code cylinderDetected}
+ * (the central sensor very close and red at least twice green and blue on the camera's centre
+ * section), {@code cylinderLeft}/{@code cylinderRight} (a lateral sensor close and red on that
+ * side), {@code cylinderBeyond} (the lateral cylinder lost from sight), {@code fallen} (the
+ * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}.
+ */
+public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
+    static final double VERY_CLOSE = 480;
+    static final double RED_RATIO = 2;
+    static final double HOLD_FORCE = -10;
+    private int[] rgb = new int[9];
+    private boolean cylinderSignalled;
+    private String lateralCylinder;
+    private boolean holding;
+    private double armPosition = 0;
+    /** Sides whose very-close lateral obstacle was signalled; re-armed when that side is safe. */
+    private final java.util.Set<String> lateralSignalled = new java.util.HashSet<>();
+
+    @Override
+    protected void defineProperties() {
+        super.defineProperties();
+        defineObsProperty("centralSensor", 0.0);
+        defineObsProperty("caught", false);
+        defineObsProperty("picked", false);
+    }
+
+    // The Khepera's front-left and front-right sensors see what is ahead; its side sensors
+    // (left, right) only matter for lateral cylinders and obstacles.
+    @Override
+    protected SensorKind leftKind() {
+        return SensorKind.FRONT_LEFT_DISTANCE;
+    }
+
+    @Override
+    protected SensorKind rightKind() {
+        return SensorKind.FRONT_RIGHT_DISTANCE;
+    }
+
+    @Override
+    protected boolean clearAhead() {
+        return getObsProperty("centralSensor").doubleValue() < SAFE;
+    }
+
+    private boolean red(int section) {
+        int r = rgb[3 * section];
+        int g = rgb[3 * section + 1];
+        int b = rgb[3 * section + 2];
+        return r > 40 && r > RED_RATIO * g && r > RED_RATIO * b;
+    }
+
+    @Override
+    protected void onReading(SensorInfo info, SensorKind kind) {
+        switch (kind) {
+            case CAMERA_SECTIONS:
+                int[] v = info.getIntValues();
+                if (v.length == 9) {
+                    rgb = v;
+                }
+                if (lateralCylinder != null && !red(0) && !red(1) && !red(2)) {
+                    lateralCylinder = null;
+                    signal("cylinderBeyond");
+                }
+                break;
+            case CENTRAL_DISTANCE:
+                if (stopDistance) {
+                    break;
+                }
+                double central = info.getVal();
+                getObsProperty("centralSensor").updateValue(central);
+                if (central > VERY_CLOSE && !holding) {
+                    if (red(1)) {
+                        if (!cylinderSignalled) {
+                            cylinderSignalled = true;
+                            lateralCylinder = null;
+                            signal("cylinderDetected");
+                        }
+                    } else if (!getObsProperty("obstacle").booleanValue()) {
+                        getObsProperty("obstacle").updateValue(true);
+                    }
+                } else if (central < SAFE) {
+                    cylinderSignalled = false;
+                }
+                break;
+            case LEFT_DISTANCE:
+            case RIGHT_DISTANCE:
+                lateral(info.getVal(), kind == SensorKind.LEFT_DISTANCE ? "left" : "right");
+                break;
+            case GRIP_FORCE:
+                boolean nowHolding = info.getVal() < HOLD_FORCE;
+                if (nowHolding != getObsProperty("caught").booleanValue()) {
+                    getObsProperty("caught").updateValue(nowHolding);
+                }
+                holding = nowHolding;
+                break;
+            case GRIP_PRESENCE:
+                boolean present = info.getVal() > 0.5;
+                boolean picked = getObsProperty("picked").booleanValue();
+                if (picked && !present) {
+                    getObsProperty("picked").updateValue(false);
+                    signal("fallen");
+                }
+                break;
+            case GRIPPER_POSITIONS:
+                armPosition = info.getDoubleValues()[0];
+                if (armPosition < 0.05 && holding && !getObsProperty("picked").booleanValue()) {
+                    getObsProperty("picked").updateValue(true);
+                } else if (!holding && getObsProperty("picked").booleanValue()) {
+                    getObsProperty("picked").updateValue(false);
+                }
+                break;
+            default:
+                super.onReading(info, kind);
+        }
+    }
+
+    private void lateral(double value, String side) {
+        if (stopDistance || holding) {
+            return;
+        }
+        if (value > WARNING && lateralCylinder == null && red(side.equals("left") ? 0 : 2)) {
+            lateralCylinder = side;
+            signal(side.equals("left") ? "cylinderLeft" : "cylinderRight");
+        } else if (value > VERY_CLOSE && lateralCylinder == null && lateralSignalled.add(side)) {
+            signal("lateralObstacle", side);
+        } else if (value < SAFE) {
+            lateralSignalled.remove(side);
+        }
+    }
+
+    /** Opens and lowers the gripper, then closes it on the cylinder (the controller's manoeuvre). */
+    @OPERATION
+    void catching() {
+        send(Command.catching());
+    }
+
+    @OPERATION
+    void arm_up() {
+        send(Command.armUp());
+    }
+
+    @OPERATION
+    void arm_down() {
+        send(Command.armDown());
+    }
+
+    @OPERATION
+    void open_grip() {
+        send(Command.openGrip());
+    }
+
+    @OPERATION
+    void close_grip(double target) {
+        send(Command.closeGrip(target));
+    }
+
+    /** Lowers the arm, opens the gripper and raises the arm again. */
+    @OPERATION
+    void putDown() {
+        send(Command.of(jacabot.robot.link.CommandCode.PUT_DOWN));
+    }
+}

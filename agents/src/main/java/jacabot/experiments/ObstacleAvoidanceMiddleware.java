@@ -1,0 +1,71 @@
+package jacabot.experiments;
+
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+
+/**
+ * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
+ * {@code delta} and {@code obstacle(true|false)}, computed as the thesis' {@code servingLoop}:
+ * an obstacle when the left-right difference exceeds {@value #DELTA_LIMIT} or a sensor exceeds
+ * {@value #WARNING}; clear again when both are under {@value #SAFE}.
+ */
+public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
+    static final double DELTA_LIMIT = 100;
+    static final double WARNING = 350;
+    static final double SAFE = 200;
+    /** With delta-based detection off, only the warning threshold counts (thesis: deltaBased(false)). */
+    private boolean deltaBased = true;
+
+    @Override
+    protected void defineProperties() {
+        defineObsProperty("leftSensor", 0.0);
+        defineObsProperty("rightSensor", 0.0);
+        defineObsProperty("delta", 0.0);
+        defineObsProperty("obstacle", false);
+    }
+
+    @jacabot.cartago.OPERATION
+    void deltaBased(boolean on) {
+        deltaBased = on;
+    }
+
+    /** The distance sensors that play left and right for this robot. */
+    protected SensorKind leftKind() {
+        return SensorKind.LEFT_DISTANCE;
+    }
+
+    protected SensorKind rightKind() {
+        return SensorKind.RIGHT_DISTANCE;
+    }
+
+    @Override
+    protected void onReading(SensorInfo info, SensorKind kind) {
+        if (stopDistance) {
+            return;
+        }
+        if (kind == leftKind()) {
+            getObsProperty("leftSensor").updateValue(info.getVal());
+        } else if (kind == rightKind()) {
+            // the right reading closes a left/right pair: decide as the thesis does
+            double right = info.getVal();
+            double left = getObsProperty("leftSensor").doubleValue();
+            getObsProperty("rightSensor").updateValue(right);
+            double delta = Math.round(left - right);
+            getObsProperty("delta").updateValue(delta);
+            boolean obstacle = getObsProperty("obstacle").booleanValue();
+            if (deltaBased && Math.abs(delta) > DELTA_LIMIT || right > WARNING || left > WARNING) {
+                obstacle = true;
+            } else if (right < SAFE && left < SAFE && clearAhead()) {
+                obstacle = false;
+            }
+            if (obstacle != getObsProperty("obstacle").booleanValue()) {
+                getObsProperty("obstacle").updateValue(obstacle);
+            }
+        }
+    }
+
+    /** Subclasses with a central sensor also need it safe before the obstacle is gone. */
+    protected boolean clearAhead() {
+        return true;
+    }
+}

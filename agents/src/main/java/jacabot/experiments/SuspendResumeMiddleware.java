@@ -1,0 +1,42 @@
+package jacabot.experiments;
+
+import jacabot.cartago.OPERATION;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+
+/**
+ * Experiment 4's middleware (thesis Chapter 4 §4.1, Appendix B): {@code battery(B)} in joules and
+ * the {@code lowBattery} signal while the energy is under {@value #LOW_BATTERY} (the thesis'
+ * {@code battery < 480 & battery > 0}), and {@code mark}, which records where the running task
+ * was suspended.
+ */
+public class SuspendResumeMiddleware extends NavigationMiddleware {
+    static final double LOW_BATTERY = 480;
+    private double[] marked;
+
+    @Override
+    protected void defineProperties() {
+        super.defineProperties();
+        defineObsProperty("battery", 0.0);
+    }
+
+    @Override
+    protected void onReading(SensorInfo info, SensorKind kind) {
+        if (kind == SensorKind.BATTERY) {
+            double battery = Math.round(info.getVal() * 10) / 10.0;
+            getObsProperty("battery").updateValue(battery);
+            if (battery < LOW_BATTERY && battery > 0) {
+                signal("lowBattery");
+            }
+        } else {
+            super.onReading(info, kind);
+        }
+    }
+
+    /** Records the current location and orientation (the agent keeps its own copy as beliefs). */
+    @OPERATION
+    void mark() {
+        marked = new double[] {getObsProperty("location").doubleValue(), getObsProperty("orientation").doubleValue()};
+        log("marked at " + marked[0] + ", heading " + marked[1]);
+    }
+}

@@ -1,0 +1,117 @@
+package jacabot.experiments.run;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.runtime.LocalMAS;
+import jacabot.agent.runtime.SimulatedClock;
+import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.cartago.AgentId;
+import jacabot.cartago.ArtifactId;
+import jacabot.cartago.ArtifactObserverAdapter;
+import jacabot.cartago.CAgentArch;
+import jacabot.cartago.CartagoEnvironment;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.OpTarget;
+import jacabot.cartago.Workspace;
+import jacabot.cartago.bridge.JacaStepper;
+import jacabot.experiments.MiddlewareArtifact;
+import jacabot.experiments.link.LockstepCoordinator;
+import jacabot.experiments.link.StepData;
+import jacabot.robot.link.Command;
+import jacabot.sim.SimWorld;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * An experiment with the agent in the loop, in lockstep: each control step the world's readings
+ * reach the middleware artifact, the agent reasons until it is idle, its commands go back, and
+ * only then does the world advance. Agents, artifacts and the world all run in simulated time,
+ * so a run is as fast as the machine allows and replays exactly under a seed.
+ */
+public final class LockstepRun {
+    /** At most this many reasoning cycles per control step (a busy agent cannot stall the world). */
+    static final long CYCLES_PER_STEP = 20_000;
+
+    private final SimWorld world;
+    private final String robotName;
+    private final SimulatedClock agentClock = new SimulatedClock();
+    private final jacabot.cartago.SimulatedClock artifactClock = new jacabot.cartago.SimulatedClock();
+    private final Workspace workspace;
+    private final LocalMAS mas;
+    private final JacaStepper stepper;
+    private final AgentId host;
+    private final ArtifactId middlewareId;
+    private final MiddlewareArtifact middleware;
+    private long cycles;
+    private Consumer<StepData> onStep = d -> {
+    };
+
+    /**
+     * @param agentSource the agent's program text; {@code agentFile} names it in messages
+     */
+    public LockstepRun(SimWorld world, String robotName, Experiment experiment, String agentSource, String agentFile,
+            long seed, PrintStream console) throws AslSyntaxException, CartagoException {
+        this.world = world;
+        this.robotName = robotName;
+        workspace = Workspace.builder("main").stepped().clock(artifactClock).console(console)
+                .logger(jacabot.cartago.CartagoLogger.console(console)).build();
+        mas = new LocalMAS(agentClock, console, seed);
+        mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
+        stepper = new JacaStepper(mas, workspace);
+        host = workspace.join("runner", new ArtifactObserverAdapter());
+        // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
+        middlewareId = workspace.createArtifact("middleware", experiment.middleware().getName(), 0, "lockstep");
+        middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
+        var parser = new AslParser();
+        AgentProgram program = parser.parse(agentSource, agentFile);
+        mas.createAgent("robot", program, parser, CAgentArch::new);
+    }
+
+    /** Called after each control step's exchange (progress lines, recorders). */
+    public void onStep(Consumer<StepData> listener) {
+        this.onStep = listener;
+    }
+
+    public SimWorld world() {
+        return world;
+    }
+
+    public LocalMAS mas() {
+        return mas;
+    }
+
+    public long cycles() {
+        return cycles;
+    }
+
+    /** Runs {@code seconds} of simulated time. */
+    public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
+        var coordinator = new LockstepCoordinator(world, robotName, this::step);
+        return coordinator.runFor(seconds);
+    }
+
+    private List<Command> step(StepData data) {
+        agentClock.set(data.simTimeMs());
+        long lag = data.simTimeMs() - artifactClock.nowMillis();
+        if (lag > 0) {
+            artifactClock.advance(lag);
+        }
+        if (!mas.isStopped()) {
+            workspace.execOp(host, OpTarget.id(middlewareId), "deliverStep", new Object[] {data}, outcome -> {
+            });
+            cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
+        }
+        onStep.accept(data);
+        return new ArrayList<>(middleware.takeCommands());
+    }
+
+    /** Sets a belief of the agent's program before it starts, e.g. {@code middlewarePort(0)}. */
+    static String withBelief(String source, String functor, double value) {
+        return source.replaceAll(functor + "\\([^)]*\\)\\.", Literal.of(functor, new NumberTerm(value)) + ".");
+    }
+}
