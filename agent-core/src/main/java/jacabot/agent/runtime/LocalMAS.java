@@ -246,7 +246,8 @@ public final class LocalMAS {
                 try {
                     if (!w.woken && a.canSleep()) {
                         long due = a.nextTimerDue();
-                        long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, due - clock.millis());
+                        // capped: a simulated clock may run faster than the wall clock
+                        long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, Math.min(50, due - clock.millis()));
                         w.condition.await(wait, TimeUnit.MILLISECONDS);
                     }
                     w.woken = false;

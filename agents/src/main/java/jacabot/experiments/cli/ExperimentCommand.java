@@ -39,6 +39,9 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--lockstep", description = "advance the world only when the agent is idle (always on when headless)")
     private boolean lockstep;
 
+    @Option(names = "--speed", paramLabel = "X", description = "with the viewer: real time x this factor (default ${DEFAULT-VALUE})")
+    private double speed = 1;
+
     @Option(names = "--seed", paramLabel = "N", description = "seed of the world and the agent (default: the world file's)")
     private Long seed;
 
@@ -91,8 +94,18 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
         System.out.println("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
-        System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         SimWorld simWorld = SimWorld.of(spec);
+        boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
+        if (viewer) {
+            if (!(speed > 0)) {
+                System.err.println("error: --speed must be positive, got " + speed);
+                return 2;
+            }
+            System.out.println("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
+                    + " with the viewer (close the window to stop).");
+            return runWithViewer(simWorld, source, sourceName, runSeed, seconds);
+        }
+        System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         try {
             run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed, System.out);
@@ -129,6 +142,39 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.steps() * spec.controlStep() / 1000.0, wall, result.steps() * spec.controlStep() / 1000.0 / wall,
                 result.steps(), run.cycles());
         System.out.println("Trajectory: " + png + ", event log: " + outDir.resolve("event-log.txt"));
+        return 0;
+    }
+
+    /** Real time with the Swing viewer, the agent running free as in the thesis. */
+    private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds)
+            throws InterruptedException {
+        try (var run = new jacabot.experiments.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, System.out)) {
+            run.start();
+            var closed = new java.util.concurrent.CountDownLatch(1);
+            javax.swing.SwingUtilities.invokeLater(() -> {
+                javax.swing.JFrame frame = jacabot.sim.viewer.WorldViewer.open(run.runner());
+                frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
+                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+                    @Override
+                    public void windowClosed(java.awt.event.WindowEvent e) {
+                        closed.countDown();
+                    }
+                });
+            });
+            while (!closed.await(200, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+                if (simWorld.time() >= seconds) {
+                    break;
+                }
+            }
+            run.runner().stop();
+        } catch (AslSyntaxException e) {
+            System.err.println(e.getMessage());
+            return 2;
+        } catch (CartagoException e) {
+            System.err.println("error: cannot make the middleware: " + e.getMessage());
+            return 1;
+        }
+        System.out.printf("Stopped at t=%.1f s of simulated time.%n", simWorld.time());
         return 0;
     }
 

@@ -1,0 +1,76 @@
+package jacabot.experiments.run;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.runtime.Clock;
+import jacabot.agent.runtime.LocalMAS;
+import jacabot.cartago.CAgentArch;
+import jacabot.cartago.CartagoEnvironment;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.CartagoLogger;
+import jacabot.cartago.Workspace;
+import jacabot.experiments.MiddlewareArtifact;
+import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
+import jacabot.sim.SimRunner;
+import jacabot.sim.SimWorld;
+import java.io.PrintStream;
+import java.util.List;
+
+/**
+ * An experiment in real time (× a speed factor), as the thesis ran it: the simulator paces the
+ * world, the controller talks to the middleware over a loopback socket, and the agent runs free on
+ * its own thread, reading simulated time from the world. Used with the viewer.
+ */
+public final class RealTimeRun implements AutoCloseable {
+    private final SimWorld world;
+    private final Workspace workspace;
+    private final LocalMAS mas;
+    private final RobotController controller;
+    private Thread agents;
+
+    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+            double speed, PrintStream console) throws AslSyntaxException, CartagoException {
+        this.world = world;
+        workspace = Workspace.builder("main").console(console).logger(CartagoLogger.console(console)).build();
+        Clock simTime = world::timeMs;
+        mas = new LocalMAS(simTime, console, seed);
+        mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
+        // the middleware listens on a free loopback port; the agent's !init finds it
+        var id = workspace.createArtifact("middleware", experiment.middleware().getName(), 0);
+        int port = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
+        var parser = new AslParser();
+        mas.createAgent("robot", parser.parse(agentSource, agentFile), parser, CAgentArch::new);
+        controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", port)
+                .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line)));
+    }
+
+    public SimRunner runner() {
+        return controller.runner();
+    }
+
+    public SimWorld world() {
+        return world;
+    }
+
+    /** Starts the agents and the controller; the caller runs the simulation ({@link #runner()}). */
+    public void start() {
+        agents = new Thread(() -> {
+            try {
+                mas.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "agents");
+        agents.setDaemon(true);
+        agents.start();
+        controller.start();
+    }
+
+    @Override
+    public void close() {
+        controller.close();
+        mas.stop();
+        workspace.close();
+    }
+}
