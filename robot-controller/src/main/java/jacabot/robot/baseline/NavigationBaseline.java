@@ -99,15 +99,15 @@ public class NavigationBaseline extends ObjectPickingBaseline {
         print("Cylinder delivered!");
     }
 
-    /** Lowers the arm, opens the fingers, raises the arm (C {@code putDown}). */
+    /** Lowers the arm, opens the fingers, raises the arm (C {@code putDown}); 2.5 s nothing interrupts. */
     private void putDown() {
         robot.setSpeeds(0, 0);
         io.gripper.armDown();
-        waitFor(io.gripper::isArmDown, 1.5);
+        waitFor(io.gripper::isArmDown, 1.5, false);
         io.gripper.openGrip();
-        waitFor(() -> io.gripper.getGripPosition() == 0, 1);
+        waitFor(() -> io.gripper.getGripPosition() == 0, 1, false);
         io.gripper.armUp();
-        waitFor(io.gripper::isArmUp, 1.5);
+        waitFor(io.gripper::isArmUp, 1.5, false);
     }
 
     /** {@return whether the robot, empty, is near the storage point and facing it} */

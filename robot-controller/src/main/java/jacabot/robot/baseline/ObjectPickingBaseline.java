@@ -3,6 +3,7 @@ package jacabot.robot.baseline;
 import jacabot.sim.SimWorld;
 import jacabot.sim.device.Section;
 import java.util.Locale;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 /**
@@ -191,10 +192,15 @@ public class ObjectPickingBaseline extends BaselineController {
     }
 
     /** Steps until the test holds or {@code seconds} pass; {@return whether it held} (false when urgent). */
-    protected final boolean waitFor(java.util.function.BooleanSupplier test, double seconds) {
+    protected final boolean waitFor(BooleanSupplier test, double seconds) {
+        return waitFor(test, seconds, true);
+    }
+
+    /** As {@link #waitFor(BooleanSupplier, double)}, deaf to urgent tasks unless {@code interruptible}. */
+    protected final boolean waitFor(BooleanSupplier test, double seconds, boolean interruptible) {
         long end = now() + Math.round(seconds * 1000);
         while (!test.getAsBoolean()) {
-            if (now() >= end || urgent()) {
+            if (now() >= end || interruptible && urgent()) {
                 return false;
             }
             step();
