@@ -8,7 +8,6 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
-import jacabot.sim.viewer.PngRenderer;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
 import java.io.InputStream;
@@ -54,6 +53,9 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--agent", paramLabel = "FILE", description = "the agent (default: the packaged agents/src/main/asl/NAME.asl)")
     private Path agent;
 
+    @Option(names = "--baseline", description = "run the procedural baseline controller (the thesis' C program) instead of the agent")
+    private boolean baseline;
+
     @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED)")
     private Path out;
 
@@ -95,6 +97,14 @@ final class ExperimentCommand implements Callable<Integer> {
         Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
         System.out.println("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
         SimWorld simWorld = SimWorld.of(spec);
+        if (baseline) {
+            System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration
+                    + " of simulated time, procedural baseline, headless.");
+            long t0 = System.nanoTime();
+            var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment.baseline(), runSeed, seconds);
+            report(run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            return 0;
+        }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
         if (viewer) {
             if (!(speed > 0)) {
@@ -117,15 +127,17 @@ final class ExperimentCommand implements Callable<Integer> {
             return 1;
         }
         Robot robot = simWorld.robots().get(0);
+        var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
         long[] nextReport = {10_000};
         run.onStep(data -> {
             if (data.simTimeMs() >= nextReport[0]) {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
-                System.out.printf("  t=%6.1f s  %5.0fx real time  battery %s%n", data.simTimeMs() / 1000.0,
-                        data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6),
-                        robot.getBattery() == null ? "-" : String.format("%.0f J", robot.getBattery().energy()));
+                var now = recorder.summary("agent");
+                System.out.printf("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s%n",
+                        data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
+                        now.deliveries(), robot.getBattery() == null ? "-" : String.format("%.0f J", robot.getBattery().energy()));
             }
         });
         var result = run.runFor(seconds);
@@ -134,15 +146,24 @@ final class ExperimentCommand implements Callable<Integer> {
             result.linkLog().forEach(l -> System.out.println("  " + l));
         }
         double wall = (System.nanoTime() - start) / 1e9;
-        Files.createDirectories(outDir);
-        Path png = outDir.resolve("trajectory.png");
-        PngRenderer.write(simWorld, png, 800, 800);
-        Files.write(outDir.resolve("event-log.txt"), new ArrayList<>(result.controllerLog()));
-        System.out.printf("Done: %.0f s simulated in %.1f s (%.0fx real time), %d steps, %d reasoning cycles.%n",
-                result.steps() * spec.controlStep() / 1000.0, wall, result.steps() * spec.controlStep() / 1000.0 / wall,
-                result.steps(), run.cycles());
-        System.out.println("Trajectory: " + png + ", event log: " + outDir.resolve("event-log.txt"));
+        report(recorder.summary("agent"), recorder, outDir, wall, run.cycles());
+        Files.write(outDir.resolve("link-log.txt"), new ArrayList<>(result.controllerLog()));
         return 0;
+    }
+
+    /** Writes the summary (JSON and text), the event log and the trajectory, and prints them. */
+    private static void report(jacabot.robot.run.RunSummary summary, jacabot.robot.run.RunRecorder recorder, Path outDir,
+            double wallSeconds, long cycles) throws IOException {
+        Files.createDirectories(outDir);
+        summary.writeJson(outDir.resolve("summary.json"));
+        Files.writeString(outDir.resolve("summary.txt"), summary.toText());
+        Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
+        recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
+        System.out.println();
+        System.out.print(summary.toText());
+        System.out.printf("%.0f s simulated in %.1f s (%.0fx real time)%s.%n", summary.duration(), wallSeconds,
+                summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : "");
+        System.out.println("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */

@@ -52,6 +52,11 @@ public enum Experiment {
         return "/asl/" + id() + ".asl";
     }
 
+    /** {@return the same experiment for the procedural baselines of robot-controller} */
+    public jacabot.robot.baseline.Experiment baseline() {
+        return jacabot.robot.baseline.Experiment.byId(id());
+    }
+
     /** {@return the experiment for a name or number, e.g. "navigation" or "3"} */
     public static Optional<Experiment> parse(String text) {
         for (Experiment e : values()) {
