@@ -1,0 +1,87 @@
+package jacabot.experiments.cli;
+
+import jacabot.experiments.run.AgentMetrics;
+import jacabot.experiments.run.Experiment;
+import jacabot.experiments.run.LockstepRun;
+import jacabot.robot.baseline.BaselineRunner;
+import jacabot.robot.baseline.CodeMetrics;
+import jacabot.robot.run.RunRecorder;
+import jacabot.robot.run.RunSummary;
+import jacabot.sim.SimWorld;
+import java.io.ByteArrayOutputStream;
+import java.io.InputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code jacabot compare}: the thesis' Chapter 5 comparison, reproduced. Each experiment runs with
+ * the agent and with the procedural baseline on the same world and seeds; the table shows what each
+ * achieved and how much code (and how many tests or plans) each needed.
+ */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = "Runs each experiment with the agent and with the procedural baseline on the same worlds and "
+                + "seeds, and prints the Chapter 5 comparison as a Markdown table.")
+final class CompareCommand implements Callable<Integer> {
+    @Option(names = "--seeds", split = ",", paramLabel = "N,...", description = "seeds (default ${DEFAULT-VALUE})")
+    private List<Long> seeds = List.of(1L, 2L);
+
+    @Option(names = "--duration", paramLabel = "T", description = "simulated time per run (default ${DEFAULT-VALUE})")
+    private String duration = "5m";
+
+    @Option(names = "--root", paramLabel = "DIR", description = "the repository (worlds/, sources) (default: .)")
+    private Path root = Path.of(".");
+
+    @Override
+    public Integer call() throws Exception {
+        double seconds = ExperimentCommand.parseDuration(duration);
+        var out = System.out;
+        out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) | storage entries without a cylinder |");
+        out.println("|---|---|---|---|---|---|---|---|---|");
+        for (Experiment e : Experiment.values()) {
+            Path world = root.resolve(e.worldFile());
+            for (long seed : seeds) {
+                out.println(row(e, "agent", seed, runAgent(e, world, seed, seconds)));
+                out.println(row(e, "baseline", seed, BaselineRunner.run(world, e.baseline(), seed, seconds)));
+            }
+        }
+        out.println();
+        out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
+        out.println("|---|---|---|---|---|---|---|---|---|---|");
+        for (Experiment e : Experiment.values()) {
+            CodeMetrics c = CodeMetrics.of(e.baseline(), CodeMetrics.sourceDir(root));
+            AgentMetrics a = AgentMetrics.of(e, agentSource(e));
+            out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d: %s |%n", e, c.codeLines(), c.ifs(),
+                    c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
+                    a.coordinationBeliefs().size(), String.join(", ", a.coordinationBeliefs()));
+        }
+        return 0;
+    }
+
+    private static String agentSource(Experiment e) throws java.io.IOException {
+        try (InputStream in = CompareCommand.class.getResourceAsStream(e.agentResource())) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static RunSummary runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
+        SimWorld simWorld = BaselineRunner.load(world, seed);
+        var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        var run = new LockstepRun(simWorld, null, e, agentSource(e), e.id() + ".asl", seed, quiet);
+        RunRecorder recorder = RunRecorder.attach(simWorld, e.baseline().robot());
+        run.runFor(seconds);
+        return recorder.summary("agent");
+    }
+
+    private static String row(Experiment e, String controller, long seed, RunSummary s) {
+        return String.format(Locale.ROOT, "| %s | %s | %d | %d | %d | %.0f%% | %.1f | %s | %d |", e, controller, seed, s.picks(),
+                s.deliveries(), 100 * s.coverage(), s.contactTime(),
+                s.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", s.batteryMin()), s.storageEntriesEmpty());
+    }
+}
