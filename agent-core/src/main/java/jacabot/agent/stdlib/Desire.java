@@ -3,8 +3,6 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Event;
 import jacabot.agent.semantics.IaException;
-import jacabot.agent.semantics.IntendedMeans;
-import jacabot.agent.semantics.Intention;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
@@ -27,15 +25,7 @@ final class Desire extends DefaultInternalAction {
                 out.add(c);
             }
         }
-        for (Intention i : ag.circumstance().allIntentions()) {
-            for (IntendedMeans im : i) {
-                Trigger t = im.trigger();
-                Unifier c = un.copy();
-                if (t.isAchieveGoal() && t.isAddition() && c.unifies(g, t.literal())) {
-                    out.add(c);
-                }
-            }
-        }
+        Intend.addIntended(ag, g, un, out);
         return out.iterator();
     }
 }

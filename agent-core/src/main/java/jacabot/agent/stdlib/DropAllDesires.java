@@ -4,7 +4,6 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Circumstance;
 import jacabot.agent.semantics.Event;
 import jacabot.agent.semantics.IaException;
-import jacabot.agent.semantics.Intention;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
 
@@ -16,13 +15,8 @@ final class DropAllDesires extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        DropAllIntentions.dropAllButCurrent(ag);
         Circumstance c = ag.circumstance();
-        Intention current = c.selectedIntention();
-        for (Intention i : c.allIntentions()) {
-            if (i != current) {
-                ag.dropIntention(i);
-            }
-        }
         for (Event e : c.eventList()) {
             c.removeEvent(e);
         }

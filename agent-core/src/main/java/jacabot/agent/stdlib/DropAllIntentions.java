@@ -15,6 +15,11 @@ final class DropAllIntentions extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        dropAllButCurrent(ag);
+        return true;
+    }
+
+    static void dropAllButCurrent(Agent ag) {
         Circumstance c = ag.circumstance();
         Intention current = c.selectedIntention();
         for (Intention i : c.allIntentions()) {
@@ -22,6 +27,5 @@ final class DropAllIntentions extends DefaultInternalAction {
                 ag.dropIntention(i);
             }
         }
-        return true;
     }
 }

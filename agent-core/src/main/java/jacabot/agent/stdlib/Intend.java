@@ -17,8 +17,13 @@ final class Intend extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        Literal g = literal(args[0]);
         var out = new java.util.ArrayList<Unifier>();
+        addIntended(ag, literal(args[0]), un, out);
+        return out.iterator();
+    }
+
+    /** Adds a solution for every intended means pursuing goal g. */
+    static void addIntended(Agent ag, Literal g, Unifier un, java.util.List<Unifier> out) {
         for (Intention i : ag.circumstance().allIntentions()) {
             for (IntendedMeans im : i) {
                 Trigger t = im.trigger();
@@ -28,6 +33,5 @@ final class Intend extends DefaultInternalAction {
                 }
             }
         }
-        return out.iterator();
     }
 }

@@ -13,6 +13,10 @@ final class Print extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        return printConcatenated(ag, args);
+    }
+
+    static boolean printConcatenated(Agent ag, Term[] args) {
         var sb = new StringBuilder();
         for (Term t : args) {
             sb.append(text(t));

@@ -5,7 +5,7 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
 
-/** {@code .println(a, ...)}: as {@code .print}. */
+/** {@code .println(a, ...)}: as {@code .print} (Jason's console ends every line anyway). */
 final class Println extends DefaultInternalAction {
     Println() {
         super(".println", 0, 2147483647);
@@ -13,11 +13,6 @@ final class Println extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var sb = new StringBuilder();
-        for (Term t : args) {
-            sb.append(text(t));
-        }
-        ag.print(sb.toString());
-        return true;
+        return Print.printConcatenated(ag, args);
     }
 }
