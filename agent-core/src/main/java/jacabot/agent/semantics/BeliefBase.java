@@ -18,19 +18,27 @@ public final class BeliefBase {
     public static final class Entry {
         private Literal literal;
         private final Rule rule;
+        private final boolean ground;
 
         Entry(Literal literal) {
             this.literal = literal;
             this.rule = null;
+            this.ground = literal.isGround();
         }
 
         Entry(Rule rule) {
             this.literal = rule.head();
             this.rule = rule;
+            this.ground = false;
         }
 
         public Literal literal() {
             return literal;
+        }
+
+        /** {@return whether the fact has no variables (annotations included)} */
+        public boolean isGround() {
+            return ground;
         }
 
         /** {@return the rule, or null for a fact} */
@@ -45,13 +53,33 @@ public final class BeliefBase {
         }
     }
 
-    private final LinkedHashMap<Key, ArrayList<Entry>> groups = new LinkedHashMap<>();
+    /** The entries of one predicate, with a snapshot reused by queries until the group changes. */
+    private static final class Group extends ArrayList<Entry> {
+        private static final long serialVersionUID = 1L;
+        private transient List<Entry> snapshot;
+
+        List<Entry> snapshot() {
+            if (snapshot == null) {
+                snapshot = List.copyOf(this);
+            }
+            return snapshot;
+        }
+
+        void changed() {
+            snapshot = null;
+        }
+    }
+
+    private final LinkedHashMap<Key, Group> groups = new LinkedHashMap<>();
     private int size;
 
-    /** {@return the beliefs and rules that may match a literal, in order (a snapshot)} */
+    /**
+     * {@return the beliefs and rules that may match a literal, in order} It is a snapshot: queries
+     * iterate it while plans change the belief base.
+     */
     public List<Entry> candidates(Literal l) {
         var g = groups.get(Key.of(l));
-        return g == null ? List.of() : new ArrayList<>(g);
+        return g == null ? List.of() : g.snapshot();
     }
 
     /** {@return every stored entry, group by group} */
@@ -66,7 +94,9 @@ public final class BeliefBase {
     }
 
     public void addRule(Rule rule) {
-        groups.computeIfAbsent(Key.of(rule.head()), k -> new ArrayList<>()).add(new Entry(rule));
+        Group g = groups.computeIfAbsent(Key.of(rule.head()), k -> new Group());
+        g.add(new Entry(rule));
+        g.changed();
         size++;
     }
 
@@ -75,7 +105,7 @@ public final class BeliefBase {
      * nothing changed (the belief was there with all these annotations)}
      */
     public Literal add(Literal l, boolean atEnd) {
-        var group = groups.computeIfAbsent(Key.of(l), k -> new ArrayList<>());
+        var group = groups.computeIfAbsent(Key.of(l), k -> new Group());
         for (Entry e : group) {
             if (e.rule == null && e.literal.args().equals(l.args())) {
                 if (e.literal.annots().containsAll(l.annots())) {
@@ -85,6 +115,7 @@ public final class BeliefBase {
                 return l;
             }
         }
+        group.changed();
         if (atEnd) {
             group.add(new Entry(l));
         } else {
@@ -106,6 +137,7 @@ public final class BeliefBase {
         for (int i = 0; i < group.size(); i++) {
             Entry e = group.get(i);
             if (e.rule == null && e.literal.equals(stored)) {
+                group.changed();
                 var left = new ArrayList<Term>(stored.annots());
                 left.removeAll(removal.annots());
                 boolean hasSource = left.stream().anyMatch(a -> a instanceof Literal al && al.functor().equals("source"));
@@ -132,6 +164,7 @@ public final class BeliefBase {
         }
         for (int i = 0; i < group.size(); i++) {
             if (group.get(i).literal.equals(stored)) {
+                group.changed();
                 group.remove(i);
                 size--;
                 if (group.isEmpty()) {

@@ -94,15 +94,16 @@ public final class Solver {
             }
             return solve(r.body(), ru);
         }
-        Unifier bu = u.copy();
         Literal belief = e.literal();
-        if (!belief.isGround()) {
+        if (!e.isGround()) {
             // a fact with variables, like in(X, [X|_]): its variables are its own
             var map = new HashMap<Var, Var>();
             belief.collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
             belief = (Literal) Renamer.rename(belief, map);
         }
-        if (!bu.unifies(q.withoutAnnots(), belief.withoutAnnots())) {
+        // most candidates fail: unify first, copy only on success
+        Unifier bu = u.unifiedCopy(q.withoutAnnots(), belief.withoutAnnots());
+        if (bu == null) {
             return Collections.emptyIterator();
         }
         if (q.annots().isEmpty()) {

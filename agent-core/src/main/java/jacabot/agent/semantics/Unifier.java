@@ -229,6 +229,20 @@ public final class Unifier {
         return false;
     }
 
+    /**
+     * {@return a copy of this unifier extended by unifying a and b, or null when they do not
+     * unify}; this unifier is left as it was
+     */
+    public Unifier unifiedCopy(Term a, Term b) {
+        var trail = new ArrayList<Var>(4);
+        boolean ok = unify(a, b, trail);
+        Unifier result = ok ? copy() : null;
+        for (Var v : trail) {
+            bindings.remove(v);
+        }
+        return result;
+    }
+
     /** Unifies without annotation checks (annotations ignored on both sides). */
     public boolean unifiesIgnoringAnnots(Literal a, Literal b) {
         return unifies(a.withoutAnnots(), b.withoutAnnots());

@@ -1,0 +1,1 @@
++last[source(sender)] <- .stopMAS.
