@@ -1,4 +1,5 @@
 // 200 000 tail-recursive subgoals.
-!count(0).
-+!count(200000) <- .stopMAS.
+!bench.
++!bench <- .print(start); !count(0).
++!count(200000) <- .print(end); .stopMAS.
 +!count(N) <- !count(N + 1).

@@ -1,1 +1,1 @@
-+last[source(sender)] <- .stopMAS.
++last[source(sender)] <- .print(end); .stopMAS.

@@ -21,10 +21,26 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--step", description = "deterministic stepping on one thread instead of a thread per agent")
     private boolean stepping;
 
+    @Option(names = "--stats", description = "print the number of reasoning cycles on stderr at the end")
+    private boolean stats;
+
     @Override
     public Integer call() throws InterruptedException {
         try {
-            new MasLauncher(System.out, seed, stepping).run(file);
+            var launcher = new MasLauncher(System.out, seed, stepping);
+            var mas = launcher.load(file);
+            if (stepping) {
+                mas.runStepping();
+            } else {
+                mas.runThreads();
+            }
+            if (stats) {
+                long cycles = 0;
+                for (String name : mas.agentNames()) {
+                    cycles += mas.agent(name).cycles();
+                }
+                System.err.println("cycles " + cycles);
+            }
             return 0;
         } catch (MasLauncher.UserError e) {
             System.err.println(e.getMessage());

@@ -1,0 +1,44 @@
+package jacabot.experiments.cli;
+
+import jacabot.experiments.bench.InterpreterBenchmark;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code jacabot bench ...}: benchmarks that print figures. */
+@Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
+        subcommands = {BenchCommand.Interpreter.class})
+final class BenchCommand implements Runnable {
+    @Override
+    public void run() {
+        System.out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
+    }
+
+    /** Our interpreter against Jason 3.2.0, side by side. */
+    @Command(name = "interpreter", mixinStandardHelpOptions = true,
+            description = {"Runs the same AgentSpeak programs on our interpreter and on Jason 3.2.0, alternating, "
+                    + "after a warm-up run each, and prints a Markdown table.",
+                    "Jason is not a dependency of jacabot: `gradle benchInterpreter` fetches it and writes its class path "
+                    + "to build/jason-classpath.txt."})
+    static final class Interpreter implements Callable<Integer> {
+        @Option(names = "--runs", description = "measured runs per program and interpreter (default ${DEFAULT-VALUE})")
+        private int runs = 3;
+
+        @Option(names = "--jason-classpath", paramLabel = "FILE",
+                description = "a file holding Jason's class path (default ${DEFAULT-VALUE})")
+        private Path jasonClasspath = Path.of("build/jason-classpath.txt");
+
+        @Override
+        public Integer call() throws Exception {
+            if (!Files.isRegularFile(jasonClasspath)) {
+                System.err.println(jasonClasspath + ": not found; run `gradle jasonClasspath` (or `gradle benchInterpreter`) first");
+                return 2;
+            }
+            String jason = Files.readString(jasonClasspath).trim();
+            new InterpreterBenchmark(System.getProperty("java.class.path"), jason, Math.max(1, runs), System.out).run();
+            return 0;
+        }
+    }
+}
