@@ -57,6 +57,8 @@ public final class BeliefBase {
     private static final class Group extends ArrayList<Entry> {
         private static final long serialVersionUID = 1L;
         private transient List<Entry> snapshot;
+        /** The facts by their arguments: adding a known fact must not scan a large group. */
+        private final transient java.util.HashMap<List<Term>, Entry> facts = new java.util.HashMap<>();
 
         List<Entry> snapshot() {
             if (snapshot == null) {
@@ -106,20 +108,21 @@ public final class BeliefBase {
      */
     public Literal add(Literal l, boolean atEnd) {
         var group = groups.computeIfAbsent(Key.of(l), k -> new Group());
-        for (Entry e : group) {
-            if (e.rule == null && e.literal.args().equals(l.args())) {
-                if (e.literal.annots().containsAll(l.annots())) {
-                    return null;
-                }
-                e.literal = e.literal.addAnnots(l.annots());
-                return l;
+        Entry known = group.facts.get(l.args());
+        if (known != null) {
+            if (known.literal.annots().containsAll(l.annots())) {
+                return null;
             }
+            known.literal = known.literal.addAnnots(l.annots());
+            return l;
         }
         group.changed();
+        Entry e = new Entry(l);
+        group.facts.put(l.args(), e);
         if (atEnd) {
-            group.add(new Entry(l));
+            group.add(e);
         } else {
-            group.add(0, new Entry(l));
+            group.add(0, e);
         }
         size++;
         return l;
@@ -134,26 +137,20 @@ public final class BeliefBase {
         if (group == null) {
             return null;
         }
-        for (int i = 0; i < group.size(); i++) {
-            Entry e = group.get(i);
-            if (e.rule == null && e.literal.equals(stored)) {
-                group.changed();
-                var left = new ArrayList<Term>(stored.annots());
-                left.removeAll(removal.annots());
-                boolean hasSource = left.stream().anyMatch(a -> a instanceof Literal al && al.functor().equals("source"));
-                if (!hasSource) {
-                    group.remove(i);
-                    size--;
-                    if (group.isEmpty()) {
-                        groups.remove(Key.of(stored));
-                    }
-                    return stored;
-                }
-                e.literal = stored.withAnnots(left);
-                return removal;
-            }
+        Entry e = group.facts.get(stored.args());
+        if (e == null || !e.literal.equals(stored)) {
+            return null;
         }
-        return null;
+        group.changed();
+        var left = new ArrayList<Term>(stored.annots());
+        left.removeAll(removal.annots());
+        boolean hasSource = left.stream().anyMatch(a -> a instanceof Literal al && al.functor().equals("source"));
+        if (!hasSource) {
+            removeFromGroup(group, e, stored);
+            return stored;
+        }
+        e.literal = stored.withAnnots(left);
+        return removal;
     }
 
     /** Removes a stored entry (belief or rule) entirely. */
@@ -163,17 +160,25 @@ public final class BeliefBase {
             return false;
         }
         for (int i = 0; i < group.size(); i++) {
-            if (group.get(i).literal.equals(stored)) {
-                group.changed();
-                group.remove(i);
-                size--;
-                if (group.isEmpty()) {
-                    groups.remove(Key.of(stored));
-                }
+            Entry e = group.get(i);
+            if (e.literal.equals(stored)) {
+                removeFromGroup(group, e, stored);
                 return true;
             }
         }
         return false;
+    }
+
+    private void removeFromGroup(Group group, Entry e, Literal stored) {
+        group.changed();
+        group.remove(e);
+        if (e.rule == null) {
+            group.facts.remove(e.literal.args());
+        }
+        size--;
+        if (group.isEmpty()) {
+            groups.remove(Key.of(stored));
+        }
     }
 
     public List<Literal> beliefs() {
