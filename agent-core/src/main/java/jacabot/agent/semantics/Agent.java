@@ -49,6 +49,21 @@ public final class Agent {
     private int messageSerial;
     private long cycles;
     private volatile boolean stopped;
+    private PlanListener planListener;
+
+    /** Observes the deliberation (tracing, latency measurements); runs on the agent's thread. */
+    public interface PlanListener {
+        /** A plan was chosen for an event and its intended means is about to run. */
+        void planSelected(Event event, Plan plan);
+    }
+
+    public void setPlanListener(PlanListener listener) {
+        this.planListener = listener;
+    }
+
+    PlanListener planListener() {
+        return planListener;
+    }
 
     private record Timer(long due, long seq, Runnable task) implements Comparable<Timer> {
         @Override

@@ -141,6 +141,9 @@ final class ReasoningCycle {
 
     /** AddIM: a new intention for an external event, or a new top of the event's intention. */
     private void applyAddIM(Event se, Plan p, Unifier u) {
+        if (ag.planListener() != null) {
+            ag.planListener().planSelected(se, p);
+        }
         IntendedMeans im = new IntendedMeans(p, se.trigger(), u);
         if (se.isExternal()) {
             Intention i = new Intention(ag.nextIntentionId());

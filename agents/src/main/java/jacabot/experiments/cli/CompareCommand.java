@@ -42,15 +42,22 @@ final class CompareCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         double seconds = ExperimentCommand.parseDuration(duration);
         var out = System.out;
-        out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) | storage entries without a cylinder |");
-        out.println("|---|---|---|---|---|---|---|---|---|");
+        out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) "
+                + "| storage entries without a cylinder | reactive time median / p99 (ms) | response time median / p99 (ms) |");
+        out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         for (Experiment e : Experiment.values()) {
             Path world = root.resolve(e.worldFile());
             for (long seed : seeds) {
-                out.println(row(e, "agent", seed, runAgent(e, world, seed, seconds)));
-                out.println(row(e, "baseline", seed, BaselineRunner.run(world, e.baseline(), seed, seconds)));
+                AgentRun a = runAgent(e, world, seed, seconds);
+                out.println(row(e, "agent", seed, a.summary) + " " + ms(a.reactive) + " | " + ms(a.response) + " |");
+                out.println(row(e, "baseline", seed, BaselineRunner.run(world, e.baseline(), seed, seconds))
+                        + " same step | same step |");
             }
         }
+        out.println();
+        out.println("Reactive time: from a control step's readings reaching the middleware to the first plan they "
+                + "trigger. Response time: from the command leaving the middleware to the controller applying it. "
+                + "Both wall clock, in lockstep on this machine. The baseline polls, decides and commands within one step.");
         out.println();
         out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
         out.println("|---|---|---|---|---|---|---|---|---|---|");
@@ -70,13 +77,21 @@ final class CompareCommand implements Callable<Integer> {
         }
     }
 
-    private static RunSummary runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
+    private record AgentRun(RunSummary summary, jacabot.experiments.link.LatencyStats reactive,
+            jacabot.experiments.link.LatencyStats response) {
+    }
+
+    private static AgentRun runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, e, agentSource(e), e.id() + ".asl", seed, quiet);
         RunRecorder recorder = RunRecorder.attach(simWorld, e.baseline().robot());
-        run.runFor(seconds);
-        return recorder.summary("agent");
+        var result = run.runFor(seconds);
+        return new AgentRun(recorder.summary("agent"), run.reactiveTimes(), result.response());
+    }
+
+    private static String ms(jacabot.experiments.link.LatencyStats s) {
+        return s.count() == 0 ? "-" : String.format(Locale.ROOT, "%.3f / %.3f", s.medianMicros() / 1000.0, s.p99Micros() / 1000.0);
     }
 
     private static String row(Experiment e, String controller, long seed, RunSummary s) {

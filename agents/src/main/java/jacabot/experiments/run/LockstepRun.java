@@ -48,6 +48,10 @@ public final class LockstepRun {
     private final ArtifactId middlewareId;
     private final MiddlewareArtifact middleware;
     private long cycles;
+    /** Reactive time: from a step's readings reaching the middleware to the first plan they trigger. */
+    private final jacabot.experiments.link.LatencyRecorder reactive = new jacabot.experiments.link.LatencyRecorder(1_000_000);
+    private long deliveredNanos;
+    private boolean reactedThisStep = true;
     private Consumer<StepData> onStep = d -> {
     };
 
@@ -69,7 +73,22 @@ public final class LockstepRun {
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
         AgentProgram program = parser.parse(agentSource, agentFile);
-        mas.createAgent("robot", program, parser, CAgentArch::new);
+        var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
+        agent.setPlanListener((event, plan) -> {
+            if (!reactedThisStep && event.isExternal() && isPercept(event)) {
+                reactedThisStep = true;
+                reactive.record((System.nanoTime() - deliveredNanos) / 1000);
+            }
+        });
+    }
+
+    private static boolean isPercept(jacabot.agent.semantics.Event e) {
+        return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
+    }
+
+    /** {@return the reactive times measured so far (wall clock, microseconds)} */
+    public jacabot.experiments.link.LatencyStats reactiveTimes() {
+        return reactive.stats();
     }
 
     /** Called after each control step's exchange (progress lines, recorders). */
@@ -102,6 +121,8 @@ public final class LockstepRun {
             artifactClock.advance(lag);
         }
         if (!mas.isStopped()) {
+            deliveredNanos = System.nanoTime();
+            reactedThisStep = false;
             workspace.execOp(host, OpTarget.id(middlewareId), "deliverStep", new Object[] {data}, outcome -> {
             });
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
