@@ -136,6 +136,9 @@ public abstract class MiddlewareArtifact extends Artifact {
             getObsProperty("connected").updateValue(false);
         } else if (e instanceof LinkEvent.Reading r) {
             simTimeMs = r.simTimeMs();
+            if (getClock() instanceof jacabot.cartago.FollowingClock following) {
+                following.follow(simTimeMs); // .wait and await_time count simulated time
+            }
             Optional<SensorKind> kind = SensorKind.of(r.info().getId());
             if (kind.isPresent() && acquiring) {
                 current = r;

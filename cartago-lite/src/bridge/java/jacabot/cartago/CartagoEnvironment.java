@@ -35,7 +35,21 @@ public class CartagoEnvironment implements Environment {
     @Override
     public void init(LocalMAS mas, List<String> args) {
         if (workspace == null) {
-            var b = Workspace.builder("main").console(mas.consoleStream()).logger(CartagoLogger.console(mas.consoleStream()));
+            // agents and artifacts share one clock, which follows a simulation when an artifact says so
+            var clock = new FollowingClock();
+            mas.useClock(new jacabot.agent.runtime.Clock() {
+                @Override
+                public long millis() {
+                    return clock.nowMillis();
+                }
+
+                @Override
+                public java.time.LocalTime timeOfDay() {
+                    return clock.isFollowing() ? jacabot.agent.runtime.Clock.super.timeOfDay() : java.time.LocalTime.now();
+                }
+            });
+            var b = Workspace.builder("main").clock(clock).console(mas.consoleStream())
+                    .logger(CartagoLogger.console(mas.consoleStream()));
             if (args.contains("stepped")) {
                 b.stepped();
             }

@@ -141,6 +141,11 @@ public abstract class Artifact {
         step.awaitGuard(guards.get(0), converted);
     }
 
+    /** {@return the workspace's clock (the wall clock, or simulated time)} */
+    protected final ArtifactClock getClock() {
+        return core.workspace().clock();
+    }
+
     /** Commits, releases the artifact and resumes after {@code millis} of the workspace's clock. */
     protected final void await_time(long millis) {
         core.current().awaitTime(millis);

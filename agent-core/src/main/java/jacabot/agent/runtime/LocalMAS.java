@@ -30,7 +30,7 @@ import java.util.function.Function;
 public final class LocalMAS {
     private final Map<String, Agent> agents = new LinkedHashMap<>();
     private final Map<String, Waker> wakers = new ConcurrentHashMap<>();
-    private final Clock clock;
+    private volatile Clock clock;
     private final PrintStream out;
     private final long seed;
     private Environment environment = new DefaultEnvironment();
@@ -68,6 +68,14 @@ public final class LocalMAS {
 
     public Clock clock() {
         return clock;
+    }
+
+    /**
+     * Replaces the agents' clock, e.g. by one that follows a simulation's time; to be called before
+     * the agents run (environments do it in {@link Environment#init}).
+     */
+    public void useClock(Clock newClock) {
+        this.clock = newClock;
     }
 
     /**
