@@ -24,26 +24,37 @@ import org.junit.jupiter.api.TestFactory;
 class ConformanceTest {
     private static final java.util.regex.Pattern CONSOLE_LINE = java.util.regex.Pattern.compile("^\\[[A-Za-z0-9_]+\\] .*");
 
-    static Path corpus() throws URISyntaxException {
-        return Path.of(ConformanceTest.class.getResource("/conformance").toURI());
+    static Path corpus(String name) throws URISyntaxException {
+        return Path.of(ConformanceTest.class.getResource("/" + name).toURI());
     }
 
     @TestFactory
     Stream<DynamicTest> corpusWithAgentThreads() throws Exception {
-        return tests(false);
+        return tests("conformance", 45, false);
     }
 
     @TestFactory
     Stream<DynamicTest> corpusInSteppingMode() throws Exception {
-        return tests(true);
+        return tests("conformance", 45, true);
     }
 
-    private Stream<DynamicTest> tests(boolean stepping) throws Exception {
+    /** More programs, whose expected lines were printed by Jason 3.2.0 itself (see its README). */
+    @TestFactory
+    Stream<DynamicTest> jasonOracleWithAgentThreads() throws Exception {
+        return tests("jason-oracle", 24, false);
+    }
+
+    @TestFactory
+    Stream<DynamicTest> jasonOracleInSteppingMode() throws Exception {
+        return tests("jason-oracle", 24, true);
+    }
+
+    private Stream<DynamicTest> tests(String corpus, int size, boolean stepping) throws Exception {
         List<Path> programs;
-        try (Stream<Path> files = Files.list(corpus())) {
+        try (Stream<Path> files = Files.list(corpus(corpus))) {
             programs = files.filter(p -> p.getFileName().toString().matches("\\d\\d_.*\\.asl")).sorted().collect(Collectors.toList());
         }
-        assertTrue(programs.size() >= 45, "the corpus is complete");
+        assertTrue(programs.size() >= size, "the corpus " + corpus + " is complete");
         return programs.stream().map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> check(p, stepping)));
     }
 

@@ -86,14 +86,18 @@ public final class Agent {
         for (Plan p : program.plans()) {
             planLibrary.add(p, false);
         }
-        for (Object b : program.beliefs()) {
+        // As Jason: initial beliefs are added last to first at the beginning of the belief base,
+        // so the base keeps file order and their +b events come in reverse order.
+        List<Object> beliefs = program.beliefs();
+        for (int k = beliefs.size() - 1; k >= 0; k--) {
+            Object b = beliefs.get(k);
             if (b instanceof Rule r) {
                 Literal head = r.head().hasSource() ? r.head() : r.head().addAnnot(Literal.SOURCE_SELF);
-                beliefBase.addRule(new Rule(head, r.body()));
+                beliefBase.addRule(new Rule(head, r.body()), false);
             } else {
                 Literal l = (Literal) b;
                 Literal bel = l.hasSource() ? l : l.addAnnot(Literal.SOURCE_SELF);
-                Literal added = beliefBase.add(bel, true);
+                Literal added = beliefBase.add(bel, false);
                 if (added != null) {
                     circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
                 }

@@ -95,9 +95,13 @@ public final class BeliefBase {
         return size;
     }
 
-    public void addRule(Rule rule) {
+    public void addRule(Rule rule, boolean atEnd) {
         Group g = groups.computeIfAbsent(Key.of(rule.head()), k -> new Group());
-        g.add(new Entry(rule));
+        if (atEnd) {
+            g.add(new Entry(rule));
+        } else {
+            g.add(0, new Entry(rule));
+        }
         g.changed();
         size++;
     }
@@ -113,8 +117,11 @@ public final class BeliefBase {
             if (known.literal.annots().containsAll(l.annots())) {
                 return null;
             }
+            // the event announces only the new annotations, as Jason does
+            var fresh = new ArrayList<Term>(l.annots());
+            fresh.removeAll(known.literal.annots());
             known.literal = known.literal.addAnnots(l.annots());
-            return l;
+            return l.withAnnots(fresh);
         }
         group.changed();
         Entry e = new Entry(l);

@@ -177,11 +177,13 @@ public final class Circumstance {
 
     // ---- pending intentions (PI) ------------------------------------------------------------------
 
+    /** Suspends an intention; an atomic one stays the atomic intention, so nothing else runs meanwhile. */
     public void addPendingIntention(String key, Term reason, Intention i) {
-        pending.put(key, new Pending(i, reason));
-        if (i == atomicIntention) {
+        if (i.isAtomic()) {
+            atomicIntention = i;
             atomicIntentionSuspended = true;
         }
+        pending.put(key, new Pending(i, reason));
     }
 
     public Intention removePendingIntention(String key) {
@@ -189,7 +191,7 @@ public final class Circumstance {
         if (p == null) {
             return null;
         }
-        if (p.intention() == atomicIntention) {
+        if (p.intention().isAtomic()) {
             atomicIntentionSuspended = false;
         }
         return p.intention();

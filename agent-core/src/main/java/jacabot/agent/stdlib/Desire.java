@@ -16,7 +16,7 @@ final class Desire extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        Literal g = literal(args[0]);
+        Term g = args[0];
         var out = new java.util.ArrayList<Unifier>();
         for (Event e : ag.circumstance().eventList()) {
             Trigger t = e.trigger();

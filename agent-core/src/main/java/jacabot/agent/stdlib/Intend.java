@@ -18,12 +18,12 @@ final class Intend extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         var out = new java.util.ArrayList<Unifier>();
-        addIntended(ag, literal(args[0]), un, out);
+        addIntended(ag, args[0], un, out);
         return out.iterator();
     }
 
     /** Adds a solution for every intended means pursuing goal g. */
-    static void addIntended(Agent ag, Literal g, Unifier un, java.util.List<Unifier> out) {
+    static void addIntended(Agent ag, Term g, Unifier un, java.util.List<Unifier> out) {
         for (Intention i : ag.circumstance().allIntentions()) {
             for (IntendedMeans im : i) {
                 Trigger t = im.trigger();

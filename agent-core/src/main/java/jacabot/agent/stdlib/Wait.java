@@ -158,7 +158,7 @@ final class Wait extends DefaultInternalAction {
             ag.circumstance().removeListener(this);
             ag.runAtBeginOfNextCycle(() -> {
                 if (ag.circumstance().removePendingIntention(key) != si || dropped
-                        || ag.circumstance().hasRunningIntention(si)) {
+                        || !si.isAtomic() && ag.circumstance().hasRunningIntention(si)) {
                     return;
                 }
                 if (byTimeout && (te != null || formula != null) && elapsedTerm == null) {
