@@ -7,6 +7,9 @@
 //  - "--b" and "+-b" stand for "-+b";
 //  - the balance window compares the orientation O: "O > D-0.6 & O < D+0.6";
 //  - "?orientation(0)" binds the orientation, and the robot turns to the opposite heading.
+// Tuning (issue 7): the obstacle plan ends the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 
 /* Initial beliefs and rules (Appendix B) */
 
@@ -61,7 +64,7 @@ middlewarePort(4444).
 +obstacle(true) : delivering & delta(D)
     <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; !computeGap; !balance; forward.
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +lateralObstacle("left") <- println("high left"); !avoid(-1).
 +lateralObstacle("right") <- println("high right"); !avoid(1).

@@ -9,6 +9,9 @@
 // Our own agent to the thesis' strategy. Fixed from the listings: "+reachCylinder(b)" that
 // added a second reachCylinder belief is "-+reachCylinder(b)"; the obstacle plan ignores
 // obstacles while reaching a cylinder ("not reachCylinder(true)", as the text says).
+// Tuning (issue 7): the obstacle plan ends the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 
 maxSpeed(100).
 reachCylinder(false).
@@ -50,7 +53,7 @@ middlewarePort(4444).
 /* Obstacle avoidance, but not while picking or reaching a cylinder (Chapter 4 §2.2) */
 
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +!avoid(0) <- backward; turnAround; .wait("+obstacle(false)"); -avoiding.
 +!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); .wait("+obstacle(false)"); -avoiding.

@@ -10,6 +10,9 @@
 //  - "?orientation(0)" / "orientation(0)" bind the orientation: "orientation(O)";
 //  - "!restoreOrientation(0)" restores the orientation marked when the battery went low;
 //  - after putting a cylinder down the robot turns to the opposite heading, modulo 360.
+// Tuning (issue 7): the obstacle plan ends the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 
 /* Initial beliefs and rules (Appendix B) */
 
@@ -66,7 +69,7 @@ middlewarePort(4444).
 +obstacle(true) : (delivering | charging) & delta(D)
     <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; !computeGap; !balance; forward.
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +lateralObstacle("left") <- println("high left"); !avoid(-1).
 +lateralObstacle("right") <- println("high right"); !avoid(1).

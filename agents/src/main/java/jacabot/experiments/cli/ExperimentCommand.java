@@ -112,7 +112,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 double wall = (System.nanoTime() - start) / 1e9;
                 System.out.printf("  t=%6.1f s  %5.0fx real time  battery %s%n", data.simTimeMs() / 1000.0,
                         data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6),
-                        robot.getBattery() == null ? "-" : String.format("%.0f J", robot.getBattery().energy()));
+                        !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy()));
             }
         });
         var result = run.runFor(seconds);
