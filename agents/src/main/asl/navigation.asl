@@ -14,12 +14,17 @@
 // the camera image: the robot approaches it slowly (the listing's setSpeeds(M/5, M/5)) until
 // cylinderDetected, 8 s at most. The listing's "turnAround; .wait(20000)" before that would turn
 // the robot's back on the cylinder it has just centred; left out.
+// After avoiding an obstacle while delivering, the robot goes forward 1 s before re-aligning
+// ("forward; .wait(1000)"): re-aligning at once turned it back into the obstacle it had just
+// left, and it could dither for minutes in front of a box between it and the storage point.
+// raiseRay also remembers the raised threshold as ray(T) (initially the threshold).
 
 /* Initial beliefs and rules (Appendix B) */
 
 maxSpeed(100).
 storagePoint(0.41, -0.41).
 threshold(0.04).
+ray(0.04).
 reachCylinder(false).
 middlewarePort(4444).
 
@@ -69,7 +74,7 @@ middlewarePort(4444).
 /* Avoiding obstacles (Chapter 4 §1.1); while delivering, re-align afterwards */
 
 +obstacle(true) : delivering & delta(D)
-    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; !computeGap; !balance; forward.
+    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; .wait(1000); !computeGap; !balance; forward.
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
     <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
@@ -86,7 +91,7 @@ middlewarePort(4444).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2).
++!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 
