@@ -18,6 +18,9 @@
 // ("forward; .wait(1000)"): re-aligning at once turned it back into the obstacle it had just
 // left, and it could dither for minutes in front of a box between it and the storage point.
 // raiseRay also remembers the raised threshold as ray(T) (initially the threshold).
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 /* Initial beliefs and rules (Appendix B) */
 
@@ -159,5 +162,5 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.

@@ -16,6 +16,9 @@
 // the camera image: the robot approaches it slowly (the listing's setSpeeds(M/5, M/5)) until
 // cylinderDetected, 8 s at most. The listing's "turnAround; .wait(20000)" before that would turn
 // the robot's back on the cylinder it has just centred; left out.
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 maxSpeed(100).
 reachCylinder(false).
@@ -93,5 +96,5 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.2) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.

@@ -27,6 +27,9 @@
 // waits for the middleware's "charged" signal (900 J), two minutes at most. Charger and marked
 // point are reached with a 3 cm threshold (the charger's radius is 6 cm); the storage point's
 // threshold (ray) is restored afterwards.
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 /* Initial beliefs and rules (Appendix B) */
 
@@ -179,7 +182,7 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
 
 /* Low battery: suspend, recharge, come back, resume (Chapter 4 §4.1) */
