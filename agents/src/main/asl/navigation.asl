@@ -7,12 +7,27 @@
 //  - "--b" and "+-b" stand for "-+b";
 //  - the balance window compares the orientation O: "O > D-0.6 & O < D+0.6";
 //  - "?orientation(0)" binds the orientation, and the robot turns to the opposite heading.
+// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
+// cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of
+// the camera image: the robot approaches it slowly (the listing's setSpeeds(M/5, M/5)) until
+// cylinderDetected, 8 s at most. The listing's "turnAround; .wait(20000)" before that would turn
+// the robot's back on the cylinder it has just centred; left out.
+// After avoiding an obstacle while delivering, the robot goes forward 1 s before re-aligning
+// ("forward; .wait(1000)"): re-aligning at once turned it back into the obstacle it had just
+// left, and it could dither for minutes in front of a box between it and the storage point.
+// raiseRay also remembers the raised threshold as ray(T) (initially the threshold).
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 /* Initial beliefs and rules (Appendix B) */
 
 maxSpeed(100).
 storagePoint(0.41, -0.41).
 threshold(0.04).
+ray(0.04).
 reachCylinder(false).
 middlewarePort(4444).
 
@@ -43,25 +58,28 @@ middlewarePort(4444).
 /* Reaching a lateral or a central cylinder (Chapter 4 §2.1) */
 
 +cylinderLeft : reachCylinder(false) & not insideArea
-    <- -+reachCylinder(true); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
 +cylinderRight : reachCylinder(false) & not insideArea
-    <- -+reachCylinder(true); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
-    <- .print("cylinder beyond"); turnAround; .wait(20000); setSpeeds(M / 5, M / 5); !reach.
+    <- .print("cylinder beyond"); setSpeeds(M / 5, M / 5); !approach.
+
++!approach <- .wait("+cylinderDetected", 8000).
+-!approach <- .print("Reach lateral cylinder failed."); stop; -+reachCylinder(false).
 
 +!reach : reachCylinder(true) <- .wait("+cylinderBeyond", 5000).
 +!reach : reachCylinder(false) <- .wait("+cylinderDetected", 3000).
 -!reach <- .print("Reach lateral cylinder failed."); -+reachCylinder(false).
 
 +cylinderDetected : not picking & not delivering
-    <- +picking; -+reachCylinder(false); stop; .print("Cylinder detected"); catching; !block.
+    <- +picking; -+reachCylinder(false); .succeed_goal(move(_)); stop; .print("Cylinder detected"); catching; !block.
 
 /* Avoiding obstacles (Chapter 4 §1.1); while delivering, re-align afterwards */
 
 +obstacle(true) : delivering & delta(D)
-    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; !computeGap; !balance; forward.
+    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; .wait(1000); !computeGap; !balance; forward.
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +lateralObstacle("left") <- println("high left"); !avoid(-1).
 +lateralObstacle("right") <- println("high right"); !avoid(1).
@@ -76,7 +94,7 @@ middlewarePort(4444).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2).
++!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 
@@ -144,5 +162,5 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.

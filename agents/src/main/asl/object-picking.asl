@@ -9,6 +9,16 @@
 // Our own agent to the thesis' strategy. Fixed from the listings: "+reachCylinder(b)" that
 // added a second reachCylinder belief is "-+reachCylinder(b)"; the obstacle plan ignores
 // obstacles while reaching a cylinder ("not reachCylinder(true)", as the text says).
+// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
+// cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of
+// the camera image: the robot approaches it slowly (the listing's setSpeeds(M/5, M/5)) until
+// cylinderDetected, 8 s at most. The listing's "turnAround; .wait(20000)" before that would turn
+// the robot's back on the cylinder it has just centred; left out.
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 maxSpeed(100).
 reachCylinder(false).
@@ -34,23 +44,26 @@ middlewarePort(4444).
 /* Reaching a lateral or a central cylinder (Chapter 4 §2.2) */
 
 +cylinderLeft : reachCylinder(false) & not picking
-    <- -+reachCylinder(true); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
 +cylinderRight : reachCylinder(false) & not picking
-    <- -+reachCylinder(true); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
-    <- .print("cylinder beyond"); turnAround; .wait(20000); setSpeeds(M / 5, M / 5); !reach.
+    <- .print("cylinder beyond"); setSpeeds(M / 5, M / 5); !approach.
+
++!approach <- .wait("+cylinderDetected", 8000).
+-!approach <- .print("Reach lateral cylinder failed."); stop; -+reachCylinder(false).
 
 +!reach : reachCylinder(true) <- .wait("+cylinderBeyond", 5000).
 +!reach : reachCylinder(false) <- .wait("+cylinderDetected", 3000).
 -!reach <- .print("Reach lateral cylinder failed."); -+reachCylinder(false).
 
 +cylinderDetected : not picking & not picked(true)
-    <- +picking; -+reachCylinder(false); stop; .print("Cylinder detected"); catching; !block.
+    <- +picking; -+reachCylinder(false); .succeed_goal(move(_)); stop; .print("Cylinder detected"); catching; !block.
 
 /* Obstacle avoidance, but not while picking or reaching a cylinder (Chapter 4 §2.2) */
 
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +!avoid(0) <- backward; turnAround; .wait("+obstacle(false)"); -avoiding.
 +!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); .wait("+obstacle(false)"); -avoiding.
@@ -83,5 +96,5 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.2) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.

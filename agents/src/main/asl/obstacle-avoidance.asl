@@ -5,7 +5,11 @@
 // side (or backs off and turns around when it is central) until obstacle(false). The coordination
 // belief "avoiding" suspends random motion (Chapter 4 §1.2).
 // Our own agent to the thesis' strategy; from the listing we fixed "!move" without its argument
-// in the plan that waits for the end of avoidance.
+// in the plan that waits for the end of avoidance; and the obstacle plan ends the random motion
+// that runs (.succeed_goal(move(_))): the "avoiding" belief only suspends the next move, so a
+// move plan already in its .wait would later send "forward; .wait(1000)" in the middle of the
+// avoiding turn, and the robot drove into the wall with obstacle(true) still on, never
+// signalled again (thesis §1.2 shows the same plans; the race is theirs too).
 
 maxSpeed(100).
 middlewarePort(4444).
@@ -30,7 +34,7 @@ middlewarePort(4444).
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
 +obstacle(true) : delta(V) & not avoiding
-    <- +avoiding; println("obstacle: ", V); stop; .wait(50); !avoid(V).
+    <- +avoiding; .succeed_goal(move(_)); println("obstacle: ", V); stop; .wait(50); !avoid(V).
 
 +!avoid(0) <- .print("Central obstacle"); backward; turnAround; .wait("+obstacle(false)"); -avoiding.
 +!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); .wait("+obstacle(false)"); -avoiding.

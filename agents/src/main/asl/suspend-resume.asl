@@ -10,6 +10,26 @@
 //  - "?orientation(0)" / "orientation(0)" bind the orientation: "orientation(O)";
 //  - "!restoreOrientation(0)" restores the orientation marked when the battery went low;
 //  - after putting a cylinder down the robot turns to the opposite heading, modulo 360.
+// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// "avoiding" only suspends the next move, so a move plan in its .wait would later send
+// "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
+// cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of
+// the camera image: the robot approaches it slowly (the listing's setSpeeds(M/5, M/5)) until
+// cylinderDetected, 8 s at most. The listing's "turnAround; .wait(20000)" before that would turn
+// the robot's back on the cylinder it has just centred; left out.
+// After avoiding an obstacle while delivering, the robot goes forward 1 s before re-aligning
+// ("forward; .wait(1000)"): re-aligning at once turned it back into the obstacle it had just
+// left, and it could dither for minutes in front of a box between it and the storage point.
+// raiseRay also remembers the raised threshold as ray(T) (initially the threshold).
+// Charging (deviation, §4.1): the listing waits 3 s at the charger (".wait(3000)"); with the
+// world's 20 W charger that is 60 J, and the battery was low again within a minute. The robot
+// stops, ignores its distance sensors (a wall next to the charger must not make it leave) and
+// waits for the middleware's "charged" signal (900 J), two minutes at most. Charger and marked
+// point are reached with a 3 cm threshold (the charger's radius is 6 cm); the storage point's
+// threshold (ray) is restored afterwards.
+// "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
+// already updated picked(false) when the agent handles the signal, so the listing's
+// "+fallen : picked(true)" never applied and the fall went unreported.
 
 /* Initial beliefs and rules (Appendix B) */
 
@@ -17,6 +37,7 @@ maxSpeed(100).
 storagePoint(0.41, -0.41).
 charger(-0.38, 0.38).
 threshold(0.04).
+ray(0.04).
 reachCylinder(false).
 middlewarePort(4444).
 
@@ -47,11 +68,14 @@ middlewarePort(4444).
 /* Reaching a lateral or a central cylinder (Chapter 4 §2.1) */
 
 +cylinderLeft : reachCylinder(false) & not insideArea & not charging
-    <- -+reachCylinder(true); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
 +cylinderRight : reachCylinder(false) & not insideArea & not charging
-    <- -+reachCylinder(true); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
+    <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
-    <- .print("cylinder beyond"); turnAround; .wait(20000); setSpeeds(M / 5, M / 5); !reach.
+    <- .print("cylinder beyond"); setSpeeds(M / 5, M / 5); !approach.
+
++!approach <- .wait("+cylinderDetected", 8000).
+-!approach <- .print("Reach lateral cylinder failed."); stop; -+reachCylinder(false).
 
 +!reach : charging <- .wait({-charging}); .print("Resume cylinder reaching"); !reach.
 +!reach : reachCylinder(true) <- .wait("+cylinderBeyond", 5000).
@@ -59,14 +83,14 @@ middlewarePort(4444).
 -!reach <- .print("Reach lateral cylinder failed."); -+reachCylinder(false).
 
 +cylinderDetected : not picking & not delivering & not charging
-    <- +picking; -+reachCylinder(false); stop; .print("Cylinder detected"); catching; !block.
+    <- +picking; -+reachCylinder(false); .succeed_goal(move(_)); stop; .print("Cylinder detected"); catching; !block.
 
 /* Avoiding obstacles (Chapter 4 §1.1); while delivering or charging, re-align afterwards */
 
 +obstacle(true) : (delivering | charging) & delta(D)
-    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; !computeGap; !balance; forward.
+    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; .wait(1000); !computeGap; !balance; forward.
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; stop; .wait(50); !avoid(D).
+    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
 +lateralObstacle("left") <- println("high left"); !avoid(-1).
 +lateralObstacle("right") <- println("high right"); !avoid(1).
@@ -81,7 +105,7 @@ middlewarePort(4444).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2).
++!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 
@@ -158,19 +182,20 @@ middlewarePort(4444).
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
 @fallCylinder[atomic]
-+fallen : picked(true)
++fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
 
 /* Low battery: suspend, recharge, come back, resume (Chapter 4 §4.1) */
 
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- mark; +charging; ?battery(B); .print("Battery low! Level: ", B);
-       stop; -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz);
-       !computeGap; !!balance; .wait({+targetReached}); stop;
-       .wait(3000); .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
+       stop; setThreshold(0.03); -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz);
+       !computeGap; !!balance; .wait({+targetReached}); stop; .drop_intention(balance); stop;
+       stopAcquireDistance; .wait({+charged}, 120000); restartAcquireDistance;
+       .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); !computeGap; !!balance;
        .wait({+targetReached}); stop; .print("Previous pt reached");
-       ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz);
+       ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz); ?ray(R); setThreshold(R);
        !restoreOrientation(O); -charging.
 
 -charging : delivering <- .print("Restart delivering"); !computeGap; !balance.

@@ -11,6 +11,11 @@ import jacabot.robot.link.SensorKind;
  * from north, clockwise: the thesis' {@code convertBearing}); signals {@code targetReached} when the
  * robot is within the threshold of the target point, {@code noAccess} when it comes near the
  * storage area and {@code outOfStorageArea} when it has left it after {@code waitExit}.
+ *
+ * <p>Tuning (issue 7): {@code targetReached} is edge-triggered and re-armed when the robot is
+ * farther than twice the threshold from the target; before, it was re-armed only by
+ * {@code setUpTargetPoint}, so the second cylinder was carried through the storage point without
+ * a signal.
  */
 public class NavigationMiddleware extends ObjectPickingMiddleware {
     /** How close to the storage point the robot may come without a cylinder (metres). */
@@ -90,10 +95,17 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     }
 
     private void checkTarget(double x, double z) {
-        if (target != null && !targetSignalled && Math.abs(x - target[0]) < threshold && Math.abs(z - target[2]) < threshold) {
+        if (target == null) {
+            return;
+        }
+        double dx = Math.abs(x - target[0]);
+        double dz = Math.abs(z - target[2]);
+        if (!targetSignalled && dx < threshold && dz < threshold) {
             targetSignalled = true;
             log("Target reached");
             signal("targetReached");
+        } else if (targetSignalled && (dx > 2 * threshold || dz > 2 * threshold)) {
+            targetSignalled = false; // left it: the next arrival counts again
         }
     }
 

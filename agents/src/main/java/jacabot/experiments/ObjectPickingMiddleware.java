@@ -9,11 +9,19 @@ import jacabot.robot.link.SensorKind;
  * Experiment 2's middleware (thesis Chapter 4 §2.2), for the Khepera: on top of obstacle
  * detection, {@code centralSensor}, {@code caught}, {@code picked}; signals {@code cylinderDetected}
  * (the central sensor very close and red at least twice green and blue on the camera's centre
- * section), {@code cylinderLeft}/{@code cylinderRight} (a lateral sensor close and red on that
- * side), {@code cylinderBeyond} (the lateral cylinder lost from sight), {@code fallen} (the
+ * section), {@code cylinderLeft}/{@code cylinderRight} (red on that side of the camera image, not
+ * in its centre), {@code cylinderBeyond} (the lateral cylinder, turned towards, is now ahead: red
+ * in the centre section), {@code fallen} (the
  * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}.
  */
 public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
+    // Tuning (issue 7). The thesis (§2.1) checks the camera's lateral sections when a lateral
+    // distance sensor sees something. On this Khepera no distance sensor and camera section look
+    // the same way: the camera's 60° field ends at ±30°, the front-left/right sensors look at
+    // ±45° (measured: a cylinder at 45° reads 860 and is out of the picture; at 20° it is red in
+    // the side section and no sensor sees it). So a red side section, within the camera's red
+    // range (about 10 cm), is the lateral cylinder; and cylinderBeyond means the cylinder, turned
+    // towards, is now in the centre section, beyond the front, to be approached.
     static final double VERY_CLOSE = 480;
     static final double RED_RATIO = 2;
     static final double HOLD_FORCE = -10;
@@ -65,9 +73,13 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 if (v.length == 9) {
                     rgb = v;
                 }
-                if (lateralCylinder != null && !red(0) && !red(1) && !red(2)) {
-                    lateralCylinder = null;
+                if (lateralCylinder != null && red(1)) {
+                    lateralCylinder = null; // turned towards it: now it is ahead
                     signal("cylinderBeyond");
+                } else if (lateralCylinder == null && !stopDistance && !holding && !cylinderSignalled
+                        && !red(1) && (red(0) || red(2))) {
+                    lateralCylinder = red(0) ? "left" : "right";
+                    signal(red(0) ? "cylinderLeft" : "cylinderRight");
                 }
                 break;
             case CENTRAL_DISTANCE:
@@ -94,6 +106,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
             case RIGHT_DISTANCE:
                 lateral(info.getVal(), kind == SensorKind.LEFT_DISTANCE ? "left" : "right");
                 break;
+
             case GRIP_FORCE:
                 boolean nowHolding = info.getVal() < HOLD_FORCE;
                 if (nowHolding != getObsProperty("caught").booleanValue()) {
@@ -126,10 +139,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         if (stopDistance || holding) {
             return;
         }
-        if (value > WARNING && lateralCylinder == null && red(side.equals("left") ? 0 : 2)) {
-            lateralCylinder = side;
-            signal(side.equals("left") ? "cylinderLeft" : "cylinderRight");
-        } else if (value > VERY_CLOSE && lateralCylinder == null && lateralSignalled.add(side)) {
+        if (value > VERY_CLOSE && lateralCylinder == null && lateralSignalled.add(side)) {
             signal("lateralObstacle", side);
         } else if (value < SAFE) {
             lateralSignalled.remove(side);

@@ -7,7 +7,11 @@ import jacabot.robot.link.SensorKind;
  * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
  * {@code delta} and {@code obstacle(true|false)}, computed as the thesis' {@code servingLoop}:
  * an obstacle when the left-right difference exceeds {@value #DELTA_LIMIT} or a sensor exceeds
- * {@value #WARNING}; clear again when both are under {@value #SAFE}.
+ * {@value #WARNING}; clear again when both are under {@value #SAFE} and the difference is under half
+ * the limit. That hysteresis is ours: the thesis' loop clears the obstacle as soon as both sensors
+ * are under {@value #SAFE}, so a wall seen at a slant (difference just over the limit, both
+ * sensors under {@value #SAFE}) set and cleared it on alternate readings and the robot stuttered
+ * along walls, one stop and a few degrees of turn every 120 ms.
  */
 public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     static final double DELTA_LIMIT = 100;
@@ -55,7 +59,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             boolean obstacle = getObsProperty("obstacle").booleanValue();
             if (deltaBased && Math.abs(delta) > DELTA_LIMIT || right > WARNING || left > WARNING) {
                 obstacle = true;
-            } else if (right < SAFE && left < SAFE && clearAhead()) {
+            } else if (right < SAFE && left < SAFE && Math.abs(delta) <= DELTA_LIMIT / 2 && clearAhead()) {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {

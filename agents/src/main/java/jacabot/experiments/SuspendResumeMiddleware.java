@@ -7,11 +7,15 @@ import jacabot.robot.link.SensorKind;
 /**
  * Experiment 4's middleware (thesis Chapter 4 §4.1, Appendix B): {@code battery(B)} in joules and
  * the {@code lowBattery} signal while the energy is under {@value #LOW_BATTERY} (the thesis'
- * {@code battery < 480 & battery > 0}), and {@code mark}, which records where the running task
- * was suspended.
+ * {@code battery < 480 & battery > 0}), the {@code charged} signal when, after a low battery, the
+ * energy is back to {@value #CHARGED} J (ours, see suspend-resume.asl), and {@code mark}, which
+ * records where the running task was suspended.
  */
 public class SuspendResumeMiddleware extends NavigationMiddleware {
     static final double LOW_BATTERY = 480;
+    /** The level at which {@code charged} is signalled (ours: the thesis waits 3 s at the charger). */
+    static final double CHARGED = 900;
+    private boolean chargedSignalled = true;
     private double[] marked;
 
     @Override
@@ -27,6 +31,12 @@ public class SuspendResumeMiddleware extends NavigationMiddleware {
             getObsProperty("battery").updateValue(battery);
             if (battery < LOW_BATTERY && battery > 0) {
                 signal("lowBattery");
+            }
+            if (battery >= CHARGED && !chargedSignalled) {
+                chargedSignalled = true;
+                signal("charged");
+            } else if (battery < LOW_BATTERY) {
+                chargedSignalled = false;
             }
         } else {
             super.onReading(info, kind);

@@ -104,7 +104,12 @@ class AppendixBAgentTest {
 
         robot.signal("targetReached");
         runFor(3_100);
+        assertFalse(robot.printed().contains("RECHARGED"), "waits for the charged signal, not 3 s: " + robot.printed());
+        assertTrue(robot.actionNames().contains("stopAcquireDistance"), "ignores walls at the charger");
+        robot.signal("charged");
+        runFor(100);
         assertTrue(robot.printed().contains("RECHARGED"), robot.printed().toString());
+        assertTrue(robot.actionNames().contains("restartAcquireDistance"));
         assertTrue(robot.actionNames().contains("setUpTargetPoint(0.1,0,0.2)"), "heads back to the marked point");
 
         robot.signal("targetReached");

@@ -137,7 +137,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 var now = recorder.summary("agent");
                 System.out.printf("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s%n",
                         data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
-                        now.deliveries(), robot.getBattery() == null ? "-" : String.format("%.0f J", robot.getBattery().energy()));
+                        now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy()));
             }
         });
         var result = run.runFor(seconds);

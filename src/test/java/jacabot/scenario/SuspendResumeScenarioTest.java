@@ -1,0 +1,94 @@
+package jacabot.scenario;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.experiments.run.Experiment;
+import jacabot.sim.Pose;
+import jacabot.sim.world.AreaSpec;
+import jacabot.sim.world.RobotSpec;
+import jacabot.sim.world.WorldSpec;
+import java.util.List;
+import java.util.function.UnaryOperator;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * Experiment 4 (thesis Chapter 4 §4, Appendix B): on a low battery the robot suspends what it
+ * does, recharges at the charger, comes back to the marked point and resumes. Measured (seed 4,
+ * no noise): low at 58 s, charged (900 J) at 152 s, back at the marked point at 262 s, lowest
+ * battery 393 J over 10 minutes.
+ */
+class SuspendResumeScenarioTest {
+    /** How far from the marked point the robot may stop (3 cm threshold per axis, GPS in cm). */
+    static final double BACK_WITHIN = 0.06;
+
+    @Test
+    void rechargesAndComesBackToTheMarkedPoint() throws Exception {
+        checkRecharge(4, false, 300);
+    }
+
+    @Tag("long")
+    @ParameterizedTest(name = "seed {0}, noise {1}")
+    @CsvSource({"2, false, 400", "4, true, 400"})
+    void rechargesWithOtherSeeds(long seed, boolean noise, int seconds) throws Exception {
+        checkRecharge(seed, noise, seconds);
+    }
+
+    private static void checkRecharge(long seed, boolean noise, int seconds) throws Exception {
+        ScenarioRun run = ScenarioRun.run(Experiment.SUSPEND_RESUME, seed, noise, seconds);
+        assertTrue(run.minBattery() > 0, run.summary());
+        long low = run.firstLine("Battery low!", 0);
+        long charged = run.firstLine("RECHARGED", low);
+        long back = run.firstLine("Previous pt reached", charged);
+        assertTrue(low >= 0 && charged > low && back > charged, run.summary());
+        AreaSpec charger = run.world.spec().charger();
+        Pose atCharger = run.at(charged).pose();
+        assertTrue(Math.hypot(atCharger.x() - charger.x(), atCharger.z() - charger.z()) < charger.radius(), "on the charger: " + atCharger);
+        assertTrue(run.at(charged).battery() >= 850, run.summary());
+        Pose marked = run.at(low).pose();
+        Pose returned = run.at(back).pose();
+        double off = Math.hypot(marked.x() - returned.x(), marked.z() - returned.z());
+        assertTrue(off <= BACK_WITHIN, "back " + off + " m from the marked point; " + run.summary());
+    }
+
+    /** The battery runs low right after a pick (a supervisor sets it to 490 J): the delivery is suspended and completed. */
+    @Test
+    void completesTheDeliveryInterruptedByALowBattery() throws Exception {
+        checkInterruptedDelivery(3, false);
+    }
+
+    @Tag("long")
+    @ParameterizedTest(name = "seed {0}, noise {1}")
+    @CsvSource({"1, false", "3, true"})
+    void completesTheInterruptedDeliveryWithOtherSeeds(long seed, boolean noise) throws Exception {
+        checkInterruptedDelivery(seed, noise);
+    }
+
+    private static void checkInterruptedDelivery(long seed, boolean noise) throws Exception {
+        long[] drainedAt = {-1};
+        UnaryOperator<WorldSpec> fullBattery = s -> {
+            RobotSpec r = s.robots().get(0);
+            return new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), s.seed(), s.sensorNoise(), s.walls(),
+                    s.boxes(), s.cylinders(), s.storage(), s.charger(),
+                    List.of(new RobotSpec(r.name(), r.model(), r.x(), r.z(), r.heading(), 1000)), s.events());
+        };
+        ScenarioRun run = ScenarioRun.run(Experiment.SUSPEND_RESUME, seed, noise, 420, fullBattery, (t, r) -> {
+            long picked = r.firstLine("Cylinder picked up", 0);
+            if (drainedAt[0] < 0 && picked >= 0 && t >= picked + 1000) {
+                r.world.supervisor().setBattery("khepera", 490);
+                drainedAt[0] = t;
+            }
+        });
+        assertTrue(drainedAt[0] > 0, run.summary());
+        assertTrue(run.minBattery() > 0, run.summary());
+        long low = run.firstLine("Battery low!", drainedAt[0]);
+        long charged = run.firstLine("RECHARGED", low);
+        long back = run.firstLine("Previous pt reached", charged);
+        assertTrue(low >= 0 && charged > low && back > charged, run.summary());
+        assertTrue(run.at(low).carried() != null && run.at(charged).carried() != null, "carried while charging: " + run.summary());
+        assertTrue(run.releases.stream().anyMatch(r -> r.inStorage() && r.timeMs() > back), "delivered after resuming: " + run.summary());
+        NavigationScenarioTest.assertNeverBackWithoutACylinder(run);
+    }
+}
