@@ -7,9 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.experiments.link.LinkConfig;
 import jacabot.experiments.link.LinkEvent;
 import jacabot.experiments.link.MiddlewareLink;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -20,22 +17,8 @@ class ControllerCommandTest {
     private static final String NAVIGATION =
             Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", "navigation.json").toString();
 
-    /** {@return exit code, stdout, stderr} */
     private static String[] run(String... args) {
-        PrintStream out = System.out;
-        PrintStream err = System.err;
-        var bytesOut = new ByteArrayOutputStream();
-        var bytesErr = new ByteArrayOutputStream();
-        try {
-            System.setOut(new PrintStream(bytesOut, true, StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(bytesErr, true, StandardCharsets.UTF_8));
-            int code = JacabotCommand.execute(args);
-            return new String[] {String.valueOf(code), bytesOut.toString(StandardCharsets.UTF_8),
-                    bytesErr.toString(StandardCharsets.UTF_8)};
-        } finally {
-            System.setOut(out);
-            System.setErr(err);
-        }
+        return CliRun.run(args);
     }
 
     private static void assertUserError(String[] result, String message) {
