@@ -114,6 +114,14 @@ public final class SimWorld {
         return engine.robot(name);
     }
 
+    /**
+     * {@return wall-clock nanoseconds spent so far in the physics engine and in the devices
+     * (sensing, gripper, battery), for benchmarks}
+     */
+    public synchronized long[] stepCost() {
+        return new long[] {engine.physicsNanos(), engine.devicesNanos()};
+    }
+
     /** {@return every robot, in file order} */
     public List<Robot> robots() {
         return engine.robots();

@@ -9,11 +9,12 @@ import picocli.CommandLine.Option;
 
 /** {@code jacabot bench ...}: benchmarks that print figures. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
-        subcommands = {BenchCommand.Interpreter.class})
+        subcommands = {BenchCommand.Interpreter.class, BenchCommand.Simulation.class})
 final class BenchCommand implements Runnable {
     @Override
     public void run() {
         System.out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
+        System.out.println("       jacabot bench sim [--duration 10m] [--seed N]");
     }
 
     /** Our interpreter against Jason 3.2.0, side by side. */
@@ -38,6 +39,28 @@ final class BenchCommand implements Runnable {
             }
             String jason = Files.readString(jasonClasspath).trim();
             new InterpreterBenchmark(System.getProperty("java.class.path"), jason, Math.max(1, runs), System.out).run();
+            return 0;
+        }
+    }
+
+    /** Experiment 4 headless with the agent in the loop: real-time factor and where the time goes. */
+    @Command(name = "sim", mixinStandardHelpOptions = true,
+            description = "Runs experiment 4 headless in lockstep (agent, artifact, socket, controller, physics, sensors) "
+                    + "and prints the real-time factor and the share of time in each part; then the procedural baseline.")
+    static final class Simulation implements Callable<Integer> {
+        @Option(names = "--duration", paramLabel = "T", description = "simulated time (default ${DEFAULT-VALUE})")
+        private String duration = "10m";
+
+        @Option(names = "--seed", description = "seed (default ${DEFAULT-VALUE})")
+        private long seed = 4;
+
+        @Option(names = "--root", paramLabel = "DIR", description = "the repository, for worlds/ (default: .)")
+        private Path root = Path.of(".");
+
+        @Override
+        public Integer call() throws Exception {
+            new jacabot.experiments.bench.SimulationBenchmark(root, ExperimentCommand.parseDuration(duration), seed,
+                    System.out).run();
             return 0;
         }
     }

@@ -86,6 +86,11 @@ public final class LockstepRun {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
+    /** {@return wall-clock ns spent so far: artifact steps, reasoning cycles} */
+    public long[] agentSideCost() {
+        return new long[] {stepper.artifactNanos(), stepper.reasoningNanos()};
+    }
+
     /** {@return the reactive times measured so far (wall clock, microseconds)} */
     public jacabot.experiments.link.LatencyStats reactiveTimes() {
         return reactive.stats();

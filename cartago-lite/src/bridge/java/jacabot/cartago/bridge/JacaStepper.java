@@ -11,6 +11,8 @@ import jacabot.cartago.Workspace;
 public final class JacaStepper {
     private final LocalMAS mas;
     private final Workspace workspace;
+    private long artifactNanos;
+    private long reasoningNanos;
 
     public JacaStepper(LocalMAS mas, Workspace workspace) {
         if (workspace.mode() != Workspace.Mode.STEPPED) {
@@ -27,13 +29,27 @@ public final class JacaStepper {
     public long runUntilQuiescent(long cycleBudget) {
         long cycles = 0;
         while (!mas.isStopped() && cycles < cycleBudget) {
+            long t0 = System.nanoTime();
             int steps = workspace.runPending();
+            long t1 = System.nanoTime();
             long run = mas.runUntilQuiescent(cycleBudget - cycles);
+            artifactNanos += t1 - t0;
+            reasoningNanos += System.nanoTime() - t1;
             cycles += run;
             if (steps == 0 && run == 0) {
                 break;
             }
         }
         return cycles;
+    }
+
+    /** {@return wall-clock nanoseconds spent running artifact steps so far} */
+    public long artifactNanos() {
+        return artifactNanos;
+    }
+
+    /** {@return wall-clock nanoseconds spent in reasoning cycles so far} */
+    public long reasoningNanos() {
+        return reasoningNanos;
     }
 }

@@ -73,16 +73,20 @@ public final class Engine {
 
     /** Advances the world by one basic time step. */
     public void physicsStep() {
+        long t0 = System.nanoTime();
         for (RobotRuntime r : robots.values()) {
             r.applyWheels();
         }
         physics.step();
+        long t1 = System.nanoTime();
         nowMs += spec.basicTimeStep();
         double dt = spec.basicTimeStep() / 1000.0;
         boolean controlEnd = nowMs % spec.controlStep() == 0;
         for (RobotRuntime r : robots.values()) {
             r.afterStep(dt, nowMs, spec.charger(), controlEnd);
         }
+        physicsNanos += t1 - t0;
+        devicesNanos += System.nanoTime() - t1;
         events.update(nowMs, this);
         if (controlEnd) {
             for (WorldListener l : listeners) {
@@ -94,6 +98,18 @@ public final class Engine {
     /** {@return the robot of that name} @throws IllegalArgumentException when there is none */
     public Robot robot(String name) {
         return runtime(name).robot();
+    }
+
+    /** Wall time spent in the physics engine and in the devices (sensors, gripper, battery), ns. */
+    private long physicsNanos;
+    private long devicesNanos;
+
+    public long physicsNanos() {
+        return physicsNanos;
+    }
+
+    public long devicesNanos() {
+        return devicesNanos;
     }
 
     private RobotRuntime runtime(String name) {
