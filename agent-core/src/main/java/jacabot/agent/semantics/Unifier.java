@@ -14,7 +14,6 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -24,7 +23,7 @@ import java.util.Map;
  * independent copy for backtracking.
  */
 public final class Unifier {
-    private final HashMap<Var, Term> bindings;
+    private final Bindings bindings;
     /** Evaluates arithmetic functions; null means only plain arithmetic is evaluated. */
     private Evaluator evaluator;
 
@@ -35,16 +34,16 @@ public final class Unifier {
     }
 
     public Unifier() {
-        this.bindings = new HashMap<>();
+        this.bindings = new Bindings();
     }
 
-    private Unifier(HashMap<Var, Term> bindings, Evaluator evaluator) {
+    private Unifier(Bindings bindings, Evaluator evaluator) {
         this.bindings = bindings;
         this.evaluator = evaluator;
     }
 
     public Unifier copy() {
-        return new Unifier(new HashMap<>(bindings), evaluator);
+        return new Unifier(bindings.copy(), evaluator);
     }
 
     public void setEvaluator(Evaluator evaluator) {
@@ -58,8 +57,7 @@ public final class Unifier {
     /** Replaces this unifier's bindings with another's. */
     public void setFrom(Unifier other) {
         if (other != this) {
-            bindings.clear();
-            bindings.putAll(other.bindings);
+            bindings.setFrom(other.bindings);
         }
     }
 
@@ -68,7 +66,7 @@ public final class Unifier {
     }
 
     public Map<Var, Term> bindings() {
-        return java.util.Collections.unmodifiableMap(bindings);
+        return java.util.Collections.unmodifiableMap(bindings.asMap());
     }
 
     /** {@return the term at the end of the variable's chain of bindings (itself when unbound)} */
@@ -176,13 +174,15 @@ public final class Unifier {
             return false;
         }
         if (t instanceof Literal l) {
-            for (Term a : l.args()) {
-                if (needsApply(a)) {
+            List<Term> args = l.args();
+            for (int i = 0, n = args.size(); i < n; i++) {
+                if (needsApply(args.get(i))) {
                     return true;
                 }
             }
-            for (Term a : l.annots()) {
-                if (needsApply(a)) {
+            List<Term> annots = l.annots();
+            for (int i = 0, n = annots.size(); i < n; i++) {
+                if (needsApply(annots.get(i))) {
                     return true;
                 }
             }
@@ -205,11 +205,11 @@ public final class Unifier {
         if (terms.isEmpty()) {
             return terms;
         }
-        var out = new ArrayList<Term>(terms.size());
-        for (Term t : terms) {
-            out.add(apply(t));
+        Term[] out = new Term[terms.size()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = apply(terms.get(i));
         }
-        return out;
+        return List.of(out);
     }
 
     // ---- unification -------------------------------------------------------------------------
@@ -341,7 +341,7 @@ public final class Unifier {
     @Override
     public String toString() {
         var sb = new StringBuilder("{");
-        bindings.forEach((k, v) -> {
+        bindings.asMap().forEach((k, v) -> {
             if (sb.length() > 1) {
                 sb.append(", ");
             }

@@ -20,13 +20,40 @@ final class Range extends DefaultInternalAction {
         if (step == 0) {
             throw IaException.wrongArguments(name(), "step 0");
         }
-        var out = new java.util.ArrayList<Unifier>();
-        for (double v = start; step > 0 ? v <= end : v >= end; v += step) {
-            Unifier c = un.copy();
-            if (c.unifies(args[0], new NumberTerm(v))) {
-                out.add(c);
+        // lazy: a for over a long range must not build every solution first
+        final double first = start;
+        final double last = end;
+        final double by = step;
+        return new java.util.Iterator<Unifier>() {
+            private double v = first;
+            private Unifier next = advance();
+
+            private Unifier advance() {
+                while (by > 0 ? v <= last : v >= last) {
+                    Unifier c = un.copy();
+                    boolean ok = c.unifies(args[0], new NumberTerm(v));
+                    v += by;
+                    if (ok) {
+                        return c;
+                    }
+                }
+                return null;
             }
-        }
-        return out.iterator();
+
+            @Override
+            public boolean hasNext() {
+                return next != null;
+            }
+
+            @Override
+            public Unifier next() {
+                if (next == null) {
+                    throw new java.util.NoSuchElementException();
+                }
+                Unifier out = next;
+                next = advance();
+                return out;
+            }
+        };
     }
 }

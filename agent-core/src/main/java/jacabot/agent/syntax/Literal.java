@@ -37,6 +37,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     private static List<Term> sortAnnots(List<Term> annots) {
+        if (isSortedSet(annots)) {
+            return List.copyOf(annots);
+        }
         var sorted = new ArrayList<Term>(annots);
         Collections.sort(sorted);
         for (int i = sorted.size() - 1; i > 0; i--) {
@@ -45,6 +48,15 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
             }
         }
         return List.copyOf(sorted);
+    }
+
+    private static boolean isSortedSet(List<Term> annots) {
+        for (int i = 1, n = annots.size(); i < n; i++) {
+            if (annots.get(i - 1).compareTo(annots.get(i)) >= 0) {
+                return false;
+            }
+        }
+        return true;
     }
 
     public int arity() {
@@ -87,7 +99,31 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     public Literal addAnnot(Term annot) {
-        return addAnnots(List.of(annot));
+        // one insertion into the sorted annotations, without re-sorting them
+        int n = annots.size();
+        int lo = 0;
+        int hi = n;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            int c = annots.get(mid).compareTo(annot);
+            if (c == 0) {
+                return this;
+            }
+            if (c < 0) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        Term[] out = new Term[n + 1];
+        for (int i = 0; i < lo; i++) {
+            out[i] = annots.get(i);
+        }
+        out[lo] = annot;
+        for (int i = lo; i < n; i++) {
+            out[i + 1] = annots.get(i);
+        }
+        return new Literal(functor, args, List.of(out), negated);
     }
 
     /** {@return the first annotation with this functor, or null} */
@@ -112,13 +148,13 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public boolean isGround() {
-        for (Term t : args) {
-            if (!t.isGround()) {
+        for (int i = 0, n = args.size(); i < n; i++) {
+            if (!args.get(i).isGround()) {
                 return false;
             }
         }
-        for (Term t : annots) {
-            if (!t.isGround()) {
+        for (int i = 0, n = annots.size(); i < n; i++) {
+            if (!annots.get(i).isGround()) {
                 return false;
             }
         }
