@@ -12,6 +12,7 @@ import java.util.List;
 
 /** ExecInt: runs the current step of the selected intention, one handler per kind of formula. */
 final class BodyExecutor {
+    private static final Var ANY = new Var("_");
     private final Agent ag;
     private final ReasoningCycle rc;
     private final Circumstance c;
@@ -203,7 +204,11 @@ final class BodyExecutor {
     /** {@code -+b}: removes the first belief like b (any arguments), then adds b. */
     private void delAddBel(Intention i, IntendedMeans im, Term term) {
         Literal body = prepareForEvent(term, im, im);
-        Literal pattern = body.withArgs(body.args().stream().map(a -> (Term) ag.freshVar(new Var("_"))).toList());
+        Term[] anyArgs = new Term[body.arity()];
+        for (int k = 0; k < anyArgs.length; k++) {
+            anyArgs[k] = ag.freshVar(ANY);
+        }
+        Literal pattern = body.withArgs(List.of(anyArgs));
         Literal removed = ag.removeBelief(pattern, ag.newUnifier());
         if (removed != null) {
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
