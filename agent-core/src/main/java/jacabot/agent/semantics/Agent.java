@@ -308,6 +308,13 @@ public final class Agent {
      */
     public Literal removeBelief(Literal l, Unifier u) {
         Literal q = (Literal) u.apply(l);
+        if (q.isGround()) {
+            // the usual case, -b(1): find the fact by its arguments
+            Literal stored = beliefBase.fact(q);
+            if (stored != null && stored.annots().containsAll(q.annots())) {
+                return beliefBase.remove(stored, q);
+            }
+        }
         for (BeliefBase.Entry e : beliefBase.candidates(q)) {
             if (e.rule() != null) {
                 continue;

@@ -84,6 +84,16 @@ public final class BeliefBase {
         return g == null ? List.of() : g.snapshot();
     }
 
+    /** {@return the stored fact with exactly these arguments (any annotations), or null} */
+    public Literal fact(Literal l) {
+        var g = groups.get(Key.of(l));
+        if (g == null) {
+            return null;
+        }
+        Entry e = g.facts.get(l.args());
+        return e == null ? null : e.literal;
+    }
+
     /** {@return every stored entry, group by group} */
     public List<Entry> all() {
         var out = new ArrayList<Entry>();

@@ -43,8 +43,10 @@ public final class Circumstance {
         } else {
             events.add(e);
         }
-        for (CircumstanceListener l : List.copyOf(listeners)) {
-            l.eventAdded(e);
+        if (!listeners.isEmpty()) {
+            for (CircumstanceListener l : List.copyOf(listeners)) {
+                l.eventAdded(e);
+            }
         }
     }
 
@@ -91,8 +93,10 @@ public final class Circumstance {
         } else {
             running.offer(i);
         }
-        for (CircumstanceListener l : List.copyOf(listeners)) {
-            l.intentionAdded(i);
+        if (!listeners.isEmpty()) {
+            for (CircumstanceListener l : List.copyOf(listeners)) {
+                l.intentionAdded(i);
+            }
         }
     }
 

@@ -10,6 +10,8 @@ import java.util.List;
 public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
     private int lastLabel;
+    /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
+    private final java.util.HashMap<String, List<Plan>> candidateCache = new java.util.HashMap<>();
 
     /** Adds a plan (at the end, or at the beginning); names it and marks its source. */
     public Plan add(Plan p, boolean atBeginning) {
@@ -23,6 +25,7 @@ public final class PlanLibrary {
             label = label.addAnnot(Literal.SOURCE_SELF);
         }
         Plan named = p.withLabel(label);
+        candidateCache.clear();
         if (atBeginning) {
             plans.add(0, named);
         } else {
@@ -50,11 +53,25 @@ public final class PlanLibrary {
     }
 
     public boolean remove(String label) {
+        candidateCache.clear();
         return plans.removeIf(p -> p.label().functor().equals(label));
     }
 
     /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */
     public List<Plan> candidates(Trigger te) {
+        if (!(te.literal() instanceof Literal l)) {
+            return scan(te);
+        }
+        String key = te.op().ordinal() + "/" + te.type().ordinal() + (l.negated() ? "~" : "") + l.functor() + "/" + l.arity();
+        List<Plan> cached = candidateCache.get(key);
+        if (cached == null) {
+            cached = List.copyOf(scan(te));
+            candidateCache.put(key, cached);
+        }
+        return cached;
+    }
+
+    private List<Plan> scan(Trigger te) {
         var out = new ArrayList<Plan>();
         for (Plan p : plans) {
             if (isCandidate(p.trigger(), te)) {
@@ -65,12 +82,7 @@ public final class PlanLibrary {
     }
 
     public boolean hasCandidate(Trigger te) {
-        for (Plan p : plans) {
-            if (isCandidate(p.trigger(), te)) {
-                return true;
-            }
-        }
-        return false;
+        return !candidates(te).isEmpty();
     }
 
     private static boolean isCandidate(Trigger pt, Trigger te) {
