@@ -72,6 +72,25 @@ public abstract class MiddlewareArtifact extends Artifact {
         return current;
     }
 
+    private volatile LinkEvent.Reading lastTrigger;
+
+    /**
+     * Notes that the reading being interpreted changed what the agent perceives (a property or a
+     * signal): the reactive time is measured from its sampling to the plan it triggers.
+     */
+    protected void markTrigger() {
+        if (current != null) {
+            lastTrigger = current;
+        }
+    }
+
+    /** {@return the reading that last changed what the agent perceives, once; null if none since} */
+    public LinkEvent.Reading takeTrigger() {
+        LinkEvent.Reading r = lastTrigger;
+        lastTrigger = null;
+        return r;
+    }
+
     /** The socket link in socket mode, for timings; null in lockstep. */
     public MiddlewareLink link() {
         return link;

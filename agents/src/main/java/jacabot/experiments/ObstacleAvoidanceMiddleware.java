@@ -64,6 +64,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 getObsProperty("obstacle").updateValue(obstacle);
+                markTrigger();
             }
         }
     }

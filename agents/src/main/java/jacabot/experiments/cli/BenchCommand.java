@@ -9,11 +9,12 @@ import picocli.CommandLine.Option;
 
 /** {@code jacabot bench ...}: benchmarks that print figures. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
-        subcommands = {BenchCommand.Interpreter.class, BenchCommand.Simulation.class})
+        subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class})
 final class BenchCommand implements Runnable {
     @Override
     public void run() {
         System.out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
+        System.out.println("       jacabot bench latency [--duration 60s] [--speed X]");
         System.out.println("       jacabot bench sim [--duration 10m] [--seed N]");
     }
 
@@ -60,6 +61,29 @@ final class BenchCommand implements Runnable {
         @Override
         public Integer call() throws Exception {
             new jacabot.experiments.bench.SimulationBenchmark(root, ExperimentCommand.parseDuration(duration), seed,
+                    System.out).run();
+            return 0;
+        }
+    }
+
+    /** Reactive and response time over the real socket, in real time and in lockstep. */
+    @Command(name = "latency", mixinStandardHelpOptions = true,
+            description = "Measures the thesis' reactive and response times over the real socket, in real time and in "
+                    + "lockstep: a box moved in front of the robot and away every 120 simulated ms, the agent answering "
+                    + "each obstacle change with stop.")
+    static final class Latency implements Callable<Integer> {
+        @Option(names = "--duration", paramLabel = "T", description = "simulated time in real-time mode (default ${DEFAULT-VALUE}); lockstep runs four times longer")
+        private String duration = "120s";
+
+        @Option(names = "--speed", paramLabel = "X", description = "real time x this factor (default ${DEFAULT-VALUE})")
+        private double speed = 8;
+
+        @Option(names = "--root", paramLabel = "DIR", description = "the repository, for worlds/ (default: .)")
+        private Path root = Path.of(".");
+
+        @Override
+        public Integer call() throws Exception {
+            new jacabot.experiments.bench.LatencyBenchmark(root, ExperimentCommand.parseDuration(duration), speed,
                     System.out).run();
             return 0;
         }

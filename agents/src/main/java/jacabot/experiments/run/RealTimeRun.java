@@ -27,6 +27,7 @@ public final class RealTimeRun implements AutoCloseable {
     private final Workspace workspace;
     private final LocalMAS mas;
     private final RobotController controller;
+    private final MiddlewareArtifact middleware;
     private Thread agents;
 
     public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
@@ -39,8 +40,19 @@ public final class RealTimeRun implements AutoCloseable {
         // the middleware listens on a free loopback port; the agent's !init finds it
         var id = workspace.createArtifact("middleware", experiment.middleware().getName(), 0);
         int port = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
+        middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
-        mas.createAgent("robot", parser.parse(agentSource, agentFile), parser, CAgentArch::new);
+        var agent = mas.createAgent("robot", parser.parse(agentSource, agentFile), parser, CAgentArch::new);
+        // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
+        agent.setPlanListener((event, plan) -> {
+            if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l
+                    && l.getAnnot("percept_type") != null) {
+                var reading = middleware.takeTrigger();
+                if (reading != null) {
+                    middleware.link().timings().planTriggered(reading);
+                }
+            }
+        });
         controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", port)
                 .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line)));
     }
@@ -51,6 +63,11 @@ public final class RealTimeRun implements AutoCloseable {
 
     public SimWorld world() {
         return world;
+    }
+
+    /** {@return the link's timings (transport, delivery, reactive, response)} */
+    public jacabot.experiments.link.LinkTimings timings() {
+        return middleware.link().timings();
     }
 
     /** Starts the agents and the controller; the caller runs the simulation ({@link #runner()}). */

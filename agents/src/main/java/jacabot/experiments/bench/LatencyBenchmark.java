@@ -1,0 +1,138 @@
+package jacabot.experiments.bench;
+
+import jacabot.experiments.link.LatencyStats;
+import jacabot.experiments.run.Experiment;
+import jacabot.experiments.run.LockstepRun;
+import jacabot.experiments.run.RealTimeRun;
+import jacabot.robot.baseline.BaselineRunner;
+import jacabot.sim.ObjectState;
+import jacabot.sim.Pose;
+import jacabot.sim.SimWorld;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * The thesis' reactive and response times (Chapter 5 §3), with many samples. A supervisor moves a
+ * box in front of the robot and away again, over and over; the middleware turns the distance
+ * readings into {@code obstacle(true|false)} and the agent answers each change with {@code stop}.
+ * Reactive time: the controller samples the reading → the plan it triggers is selected. Response
+ * time: the agent's {@code stop} leaves the middleware → the controller applies it.
+ */
+public final class LatencyBenchmark {
+    static final String AGENT = String.join("\n",
+            "// The latency probe: react to every change of the obstacle property.",
+            "!start.",
+            "+!start <- lookupArtifact(\"middleware\", Id); focus(Id); accept; !go.",
+            "+!go : connected(true) <- acquireData.",
+            "+!go <- .wait(50); !go.",
+            "+obstacle(true) <- stop.",
+            "+obstacle(false) <- stop.", "");
+    /** Simulated milliseconds between two moves of the box (each move is one sample). */
+    static final long TOGGLE_MS = 120;
+
+    private final Path root;
+    private final double seconds;
+    private final double speed;
+    private final PrintStream out;
+
+    public LatencyBenchmark(Path root, double seconds, double speed, PrintStream out) {
+        this.root = root;
+        this.seconds = seconds;
+        this.speed = speed;
+        this.out = out;
+    }
+
+    public void run() throws Exception {
+        out.println("| mode | samples | reactive median / p90 / p99 / max (ms) | response median / p90 / p99 / max (ms) |");
+        out.println("|---|---|---|---|");
+        realTime();
+        lockstep();
+    }
+
+    private SimWorld world() throws Exception {
+        return BaselineRunner.load(root.resolve(Experiment.OBSTACLE_AVOIDANCE.worldFile()), 1);
+    }
+
+    /** Moves the first box just ahead of the robot, or back to where it was. */
+    private static final class BoxMover {
+        private final SimWorld world;
+        private final String box;
+        private final Pose home;
+        private boolean ahead;
+
+        BoxMover(SimWorld world) {
+            this.world = world;
+            // our own probe box, parked in a corner (the world's boxes may be scripted away)
+            this.box = "latency-probe";
+            this.home = new Pose(-0.4, -0.4, 0);
+            ObjectState any = world.supervisor().objects().stream()
+                    .filter(o -> o.kind().name().equals("BOX")).findFirst().orElseThrow();
+            world.supervisor().addBox(new jacabot.sim.world.BoxSpec(box, home.x(), home.z(), any.sizeX(), any.sizeZ(), 0,
+                    any.height(), true, 1, any.color()));
+        }
+
+        void toggle() {
+            Pose r = world.robots().get(0).pose();
+            if (!ahead) {
+                double h = Math.toRadians(r.heading());
+                world.supervisor().move(box, r.x() + 0.1 * Math.cos(h), r.z() + 0.1 * Math.sin(h));
+            } else {
+                world.supervisor().move(box, home.x(), home.z());
+            }
+            ahead = !ahead;
+        }
+    }
+
+    private void realTime() throws Exception {
+        SimWorld w = world();
+        var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        try (var run = new RealTimeRun(w, Experiment.OBSTACLE_AVOIDANCE, AGENT, "latency.asl", 1, speed, quiet)) {
+            run.start();
+            run.runner().start();
+            var mover = new BoxMover(w);
+            long next = TOGGLE_MS * 10;
+            while (w.time() < seconds) {
+                if (w.timeMs() >= next) {
+                    mover.toggle();
+                    next += TOGGLE_MS;
+                }
+                Thread.sleep(1);
+            }
+            run.runner().stop();
+            print("real time x" + fmt(speed), run.timings().reactive(), run.timings().response());
+        }
+    }
+
+    private void lockstep() throws Exception {
+        SimWorld w = world();
+        var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        var run = new LockstepRun(w, null, Experiment.OBSTACLE_AVOIDANCE, AGENT, "latency.asl", 1, quiet);
+        var mover = new BoxMover(w);
+        run.onStep(data -> {
+            if (data.simTimeMs() >= TOGGLE_MS * 10 && data.simTimeMs() % TOGGLE_MS == 0) {
+                mover.toggle();
+            }
+        });
+        var result = run.runFor(seconds * 4);
+        print("lockstep", run.reactiveTimes(), result.response());
+        out.println();
+        out.println("In lockstep a command sent during control step k is applied when step k ends, before the world "
+                + "advances to k+1 (the controller waits for the step's acknowledgement).");
+    }
+
+    private void print(String mode, LatencyStats reactive, LatencyStats response) {
+        out.printf(Locale.ROOT, "| %s | %d / %d | %s | %s |%n", mode, reactive.count(), response.count(), ms(reactive), ms(response));
+    }
+
+    private static String ms(LatencyStats s) {
+        return s.count() == 0 ? "-" : String.format(Locale.ROOT, "%.3f / %.3f / %.3f / %.3f", s.medianMicros() / 1000.0,
+                s.p90Micros() / 1000.0, s.p99Micros() / 1000.0, s.maxMicros() / 1000.0);
+    }
+
+    private static String fmt(double d) {
+        return d == Math.rint(d) ? String.valueOf((long) d) : String.valueOf(d);
+    }
+}
