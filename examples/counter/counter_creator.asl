@@ -1,7 +1,10 @@
-// Makes the counter "c0" and increments it three times, slowly enough for the user to see each value.
+// Makes the counter "c0" and, once the user observes it, increments it three times.
 !setup.
 
-+!setup <- makeArtifact("c0", "jacabot.cartago.examples.Counter", [], C); !use(C, 3).
++!setup <- makeArtifact("c0", "jacabot.cartago.examples.Counter", [], C); +counter(C).
+
+// The user says when it has focused the counter, so that it sees every value, whatever the load.
++ready[source(counter_user)] : counter(C) <- !use(C, 3).
 
 +!use(_, 0).
-+!use(C, N) <- .wait(100); inc[artifact_id(C)]; !use(C, N - 1).
++!use(C, N) <- .wait(50); inc[artifact_id(C)]; !use(C, N - 1).
