@@ -119,6 +119,11 @@ public final class Agent {
 
     /** {@return whether a cycle now would do nothing (the agent may sleep until woken)} */
     public boolean canSleep() {
+        // the common case first: work is waiting (unless an atomic intention holds the agent)
+        if (!circumstance.isAtomicIntentionSuspended()
+                && (circumstance.hasEvent() || circumstance.hasRunningIntention())) {
+            return false;
+        }
         if (!beginOfCycle.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()
                 || !arch.canSleep()) {
             return false;
@@ -170,6 +175,11 @@ public final class Agent {
 
     /** Fires the timers that are due: their tasks run at the start of this cycle's deliberation. */
     void fireDueTimers() {
+        synchronized (this) {
+            if (timers.isEmpty()) {
+                return;
+            }
+        }
         long now = clock().millis();
         while (true) {
             Timer t;

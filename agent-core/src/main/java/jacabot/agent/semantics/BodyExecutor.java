@@ -231,11 +231,18 @@ final class BodyExecutor {
         if (!(applied instanceof Literal)) {
             throw new IllegalStateException("not a literal: " + applied);
         }
-        var renamed = new java.util.LinkedHashMap<Var, Var>();
-        applied.collectVars(v -> renamed.computeIfAbsent(v, ag::freshVar));
-        Literal body = (Literal) (renamed.isEmpty() ? applied : Renamer.rename(applied, renamed));
-        if (caller != null) {
-            caller.renamedVars = renamed.isEmpty() ? null : renamed;
+        Literal body = (Literal) applied;
+        if (applied.isGround()) {
+            if (caller != null) {
+                caller.renamedVars = null;
+            }
+        } else {
+            var renamed = new java.util.LinkedHashMap<Var, Var>();
+            applied.collectVars(v -> renamed.computeIfAbsent(v, ag::freshVar));
+            body = (Literal) Renamer.rename(applied, renamed);
+            if (caller != null) {
+                caller.renamedVars = renamed;
+            }
         }
         return body.hasSource() ? body : body.addAnnot(Literal.SOURCE_SELF);
     }

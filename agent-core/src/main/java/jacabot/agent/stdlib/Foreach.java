@@ -9,7 +9,6 @@ import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
-import java.util.ArrayList;
 import java.util.Iterator;
 
 /**
@@ -46,9 +45,8 @@ final class Foreach extends DefaultInternalAction {
         }
         if (it.hasNext()) {
             un.setFrom(it.next());
-            var steps = new ArrayList<>(((BodyTerm) args[1]).steps());
-            steps.add(forStep);
-            im.insertAfterCurrent(steps);
+            im.insertAfterCurrent(java.util.List.of(forStep));
+            im.insertAfterCurrent(((BodyTerm) args[1]).steps());
         } else {
             un.setFrom(backup);
         }

@@ -9,7 +9,6 @@ import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
-import java.util.ArrayList;
 import java.util.Iterator;
 
 /**
@@ -39,9 +38,8 @@ final class Loop extends DefaultInternalAction {
         Iterator<Unifier> it = ag.solver().solve(args[0], un);
         if (it.hasNext()) {
             un.setFrom(it.next());
-            var steps = new ArrayList<>(((BodyTerm) args[1]).steps());
-            steps.add(loopStep);
-            im.insertAfterCurrent(steps);
+            im.insertAfterCurrent(java.util.List.of(loopStep));
+            im.insertAfterCurrent(((BodyTerm) args[1]).steps());
         }
         return true;
     }
