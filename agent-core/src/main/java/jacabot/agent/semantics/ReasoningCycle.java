@@ -419,8 +419,19 @@ final class ReasoningCycle {
         return null;
     }
 
+    private Term anonymous(Term t) {
+        if (t.isGround()) {
+            return t;
+        }
+        var map = new java.util.HashMap<Var, Var>();
+        t.collectVars(v -> map.computeIfAbsent(v, x -> ag.freshVar(ANONYMOUS)));
+        return Renamer.rename(t, map);
+    }
+
+    private static final Var ANONYMOUS = new Var("_");
+
     /** Adds error, error_msg, code, code_src and code_line annotations to a failure event. */
-    private static Event withFailureAnnots(Event e, BodyStep step, List<Term> annots) {
+    private Event withFailureAnnots(Event e, BodyStep step, List<Term> annots) {
         if (!(e.trigger().literal() instanceof Literal lit)) {
             return e;
         }
@@ -430,9 +441,8 @@ final class ReasoningCycle {
             all.add(Literal.of("code_line", new jacabot.agent.syntax.NumberTerm(step.source().line())));
         }
         if (lit.getAnnot("code") == null && annots.stream().noneMatch(a -> a instanceof Literal l && l.functor().equals("code"))) {
-            Term code = step == null ? Literal.atom("no_code") : step.kind() == BodyStep.Kind.ACHIEVE
-                    || step.kind() == BodyStep.Kind.ACTION || step.kind() == BodyStep.Kind.INTERNAL_ACTION
-                    || step.kind() == BodyStep.Kind.CONSTRAINT ? step.term() : Literal.atom(step.toString());
+            // the formula without its operator (?, +, !...), free variables made anonymous, as Jason
+            Term code = step == null ? Literal.atom("no_code") : anonymous(step.term());
             all.add(Literal.of("code", code));
         }
         return new Event(e.trigger().withLiteral(lit.addAnnots(all)), e.intention());
