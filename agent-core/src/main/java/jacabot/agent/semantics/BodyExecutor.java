@@ -133,7 +133,8 @@ final class BodyExecutor {
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ia_failed", ""));
         } catch (IaException e) {
             if (!rc.generateGoalDeletion(i, e.failureAnnots())) {
-                ag.warn(step.source() + ": " + e.getMessage());
+                ag.warn("Error in internal action '" + step.term() + "' (" + step.source().jasonPosition() + "): "
+                        + e.getMessage());
             }
         } catch (RuntimeException e) {
             String msg = "error in internal action " + body.functor() + ": " + e;
@@ -149,8 +150,9 @@ final class BodyExecutor {
             im.unif = it.next();
             rc.removeActionReQueue(i);
         } else {
-            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("constraint_failed",
-                    "Constraint " + step + " was not satisfied (" + step.source() + ")"));
+            // Jason's wording: the body from this formula on, the position and the unifier
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("constraint_failed", "Constraint " + im.remainingBody()
+                    + " was not satisfied (" + step.source().jasonPosition() + ") un=" + im.unif));
         }
     }
 

@@ -53,6 +53,18 @@ public final class IntendedMeans {
         return steps == null ? null : steps.head;
     }
 
+    /** {@return the steps still to run, as Jason prints a plan body: {@code a; b; c}} */
+    public String remainingBody() {
+        var sb = new StringBuilder();
+        for (StepList s = steps; s != null; s = s.next) {
+            if (sb.length() > 0) {
+                sb.append("; ");
+            }
+            sb.append(s.head);
+        }
+        return sb.toString();
+    }
+
     /** {@return whether the current step is the last one} */
     public boolean isLastStep() {
         return steps != null && steps.next == null;

@@ -374,11 +374,14 @@ final class ReasoningCycle {
                 c.addEvent(withFailureAnnots(failEvent, new BodyStep(BodyStep.Kind.ACHIEVE, lit, null), annots));
                 return true;
             }
-            ag.warn("No failure event was generated for " + te);
+            // Jason's wording here differs from generateGoalDeletion's ("fail event"), and its dump of
+            // the intention starts with an empty line; the caller then says why the goal failed
+            ag.warn("No fail event was generated for " + te);
             if (se.intention() != null) {
+                ag.warn("");
                 ag.dropIntention(se.intention());
             }
-            return true;
+            return false;
         }
         if (!se.isExternal()) {
             ag.warn("Could not finish intention: " + te);
@@ -437,7 +440,7 @@ final class ReasoningCycle {
         }
         var all = new ArrayList<Term>(annots);
         if (step != null && step.source() != null) {
-            all.add(Literal.of("code_src", new StringTerm(step.source().file())));
+            all.add(Literal.of("code_src", new StringTerm(step.source().jasonFile())));
             all.add(Literal.of("code_line", new jacabot.agent.syntax.NumberTerm(step.source().line())));
         }
         if (lit.getAnnot("code") == null && annots.stream().noneMatch(a -> a instanceof Literal l && l.functor().equals("code"))) {

@@ -340,6 +340,7 @@ public final class Unifier {
 
     @Override
     public String toString() {
+        // as Jason prints its unifier's map: {X=1, Y=a}
         var sb = new StringBuilder("{");
         bindings.asMap().forEach((k, v) -> {
             if (sb.length() > 1) {

@@ -18,6 +18,9 @@ final class Length extends DefaultInternalAction {
         if (args[0] instanceof StringTerm s) {
             return un.unifies(args[1], new NumberTerm(s.value().length()));
         }
-        return un.unifies(args[1], new NumberTerm(list(args[0]).elements().size()));
+        if (args[0] instanceof jacabot.agent.syntax.ListTerm l) {
+            return un.unifies(args[1], new NumberTerm(l.elements().size()));
+        }
+        return false; // as Jason: neither a list nor a string, the action just fails
     }
 }
