@@ -11,7 +11,10 @@ public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
     private int lastLabel;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
-    private final java.util.HashMap<String, List<Plan>> candidateCache = new java.util.HashMap<>();
+    private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
+
+    private record CandidateKey(Trigger.Op op, Trigger.Type type, String functor, int arity, boolean negated) {
+    }
 
     /** Adds a plan (at the end, or at the beginning); names it and marks its source. */
     public Plan add(Plan p, boolean atBeginning) {
@@ -62,7 +65,7 @@ public final class PlanLibrary {
         if (!(te.literal() instanceof Literal l)) {
             return scan(te);
         }
-        String key = te.op().ordinal() + "/" + te.type().ordinal() + (l.negated() ? "~" : "") + l.functor() + "/" + l.arity();
+        var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated());
         List<Plan> cached = candidateCache.get(key);
         if (cached == null) {
             cached = List.copyOf(scan(te));
