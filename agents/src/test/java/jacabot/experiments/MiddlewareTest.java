@@ -1,0 +1,151 @@
+package jacabot.experiments;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.cartago.AgentId;
+import jacabot.cartago.ArtifactId;
+import jacabot.cartago.ArtifactObserverAdapter;
+import jacabot.cartago.OpFeedbackParam;
+import jacabot.cartago.OpOutcome;
+import jacabot.cartago.OpTarget;
+import jacabot.cartago.PropertySnapshot;
+import jacabot.cartago.Workspace;
+import jacabot.experiments.link.StepData;
+import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The middleware artifacts' interpretation of readings (thesis Chapter 4), fed step by step in
+ * lockstep mode as the experiment runner feeds them, and observed as an agent would observe them.
+ */
+class MiddlewareTest {
+    /** A stepped workspace with one middleware and one observer recording what it perceives. */
+    private static final class Bench {
+        final Workspace ws = Workspace.builder("main").stepped().build();
+        final List<String> signals = new ArrayList<>();
+        final Map<String, Object> properties = new java.util.HashMap<>();
+        final AgentId agent;
+        final ArtifactId id;
+        final MiddlewareArtifact middleware;
+        long step;
+
+        Bench(Class<? extends MiddlewareArtifact> type) throws Exception {
+            agent = ws.join("robot", new ArtifactObserverAdapter() {
+                @Override
+                public void focused(ArtifactId a, List<PropertySnapshot> ps) {
+                    ps.forEach(p -> properties.put(p.name(), p.values().size() == 1 ? p.value() : p.values()));
+                }
+
+                @Override
+                public void propertyUpdated(ArtifactId a, PropertySnapshot old, PropertySnapshot now) {
+                    properties.put(now.name(), now.values().size() == 1 ? now.value() : now.values());
+                }
+
+                @Override
+                public void signalled(ArtifactId a, String type, List<Object> args) {
+                    signals.add(args.isEmpty() ? type : type + args);
+                }
+            });
+            id = ws.createArtifact("middleware", type.getName(), 0, "lockstep");
+            middleware = ws.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
+            op("focus", new Object[] {id});
+            op("acquireData", new Object[0]);
+        }
+
+        OpOutcome op(String name, Object[] args) {
+            var outcome = new OpOutcome[1];
+            ws.execOp(agent, name.equals("focus") ? OpTarget.any() : OpTarget.id(id), name, args, o -> outcome[0] = o);
+            ws.runPending();
+            return outcome[0];
+        }
+
+        void deliver(SensorInfo... readings) {
+            step++;
+            op("deliverStep", new Object[] {new StepData(step, step * 40, List.of(readings))});
+        }
+    }
+
+    private static SensorInfo value(SensorKind kind, double v) {
+        return new SensorInfo(kind.id(), v);
+    }
+
+    @Test
+    void obstacleFromTheLeftRightDifferenceOrAWarningValueAndClearWhenSafe() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 150), value(SensorKind.RIGHT_DISTANCE, 20));
+        assertEquals(true, b.properties.get("obstacle"), "a difference over 100");
+        assertEquals(130.0, ((Number) b.properties.get("delta")).doubleValue());
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 50), value(SensorKind.RIGHT_DISTANCE, 40));
+        assertEquals(false, b.properties.get("obstacle"), "both safe and close to each other");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 360), value(SensorKind.RIGHT_DISTANCE, 300));
+        assertEquals(true, b.properties.get("obstacle"), "a value over the warning threshold");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 250), value(SensorKind.RIGHT_DISTANCE, 240));
+        assertEquals(true, b.properties.get("obstacle"), "not yet safe: the obstacle stays");
+        assertEquals(true, b.properties.get("connected"));
+    }
+
+    @Test
+    void aRedCylinderAheadIsSignalledOnceAndAGreyObstacleIsAnObstacle() throws Exception {
+        var b = new Bench(ObjectPickingMiddleware.class);
+        var red = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {90, 90, 90, 200, 40, 30, 90, 90, 90});
+        b.deliver(red, value(SensorKind.CENTRAL_DISTANCE, 500));
+        b.deliver(red, value(SensorKind.CENTRAL_DISTANCE, 510));
+        assertEquals(List.of("cylinderDetected"), b.signals, "signalled once while it stays close");
+        var grey = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {90, 90, 90, 120, 110, 100, 90, 90, 90});
+        b.deliver(grey, value(SensorKind.CENTRAL_DISTANCE, 100));
+        b.deliver(grey, value(SensorKind.CENTRAL_DISTANCE, 500));
+        assertEquals(true, b.properties.get("obstacle"));
+        assertEquals(List.of("cylinderDetected"), b.signals);
+    }
+
+    @Test
+    void gripForceMeansCaughtAndAFallIsSignalledForAPickedCylinder() throws Exception {
+        var b = new Bench(ObjectPickingMiddleware.class);
+        b.deliver(value(SensorKind.GRIP_FORCE, -40), new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {1, 1}),
+                value(SensorKind.GRIP_PRESENCE, 1));
+        assertEquals(true, b.properties.get("caught"));
+        assertEquals(false, b.properties.get("picked"), "the arm is still down");
+        b.deliver(value(SensorKind.GRIP_FORCE, -40), new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {0, 1}),
+                value(SensorKind.GRIP_PRESENCE, 1));
+        assertEquals(true, b.properties.get("picked"));
+        b.deliver(value(SensorKind.GRIP_FORCE, 0), value(SensorKind.GRIP_PRESENCE, 0));
+        assertTrue(b.signals.contains("fallen"), b.signals.toString());
+        assertEquals(false, b.properties.get("picked"));
+    }
+
+    @Test
+    void gpsCompassHeadingsAndTheTargetPoint() throws Exception {
+        var b = new Bench(NavigationMiddleware.class);
+        b.op("setUpTargetPoint", new Object[] {0.41, 0.0, -0.41});
+        // compass north vector {cos b, 0, -sin b} for a bearing of 90 degrees (east)
+        b.deliver(new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0),
+                new SensorInfo(SensorKind.COMPASS.id(), Math.cos(Math.toRadians(90)), 0.0, -Math.sin(Math.toRadians(90))));
+        assertEquals(90.0, ((Number) b.properties.get("orientation")).doubleValue(), 0.05);
+        var desired = new OpFeedbackParam<Double>();
+        var outcome = b.op("computeAngle", new Object[] {0.0, 0.0, 0.41, -0.41, desired});
+        assertTrue(outcome.succeeded());
+        assertEquals(315.0, desired.get(), 0.01, "north-west of the robot: the storage point of Appendix B");
+        b.deliver(new SensorInfo(SensorKind.GPS.id(), 0.40, 0.0, -0.40));
+        assertTrue(b.signals.contains("targetReached"), b.signals.toString());
+        assertTrue(b.signals.contains("noAccess"), "near the storage area: " + b.signals);
+    }
+
+    @Test
+    void lowBatterySignalsAndCommandsQueueInLockstep() throws Exception {
+        var b = new Bench(SuspendResumeMiddleware.class);
+        b.deliver(value(SensorKind.BATTERY, 500));
+        assertTrue(b.signals.isEmpty());
+        b.deliver(value(SensorKind.BATTERY, 479));
+        assertEquals(List.of("lowBattery"), b.signals);
+        b.op("stop", new Object[0]);
+        b.op("setSpeeds", new Object[] {25.0, -10.0});
+        assertEquals(List.of(Command.stop(), Command.setSpeeds(25, -10)), b.middleware.takeCommands());
+        assertEquals(List.of(), b.middleware.takeCommands(), "taken once");
+    }
+}
