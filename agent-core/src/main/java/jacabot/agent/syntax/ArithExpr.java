@@ -1,9 +1,7 @@
 package jacabot.agent.syntax;
 
-import java.util.function.Consumer;
-
 /** An arithmetic expression; evaluated to a {@link NumberTerm} once its variables are bound. */
-public record ArithExpr(Op op, Term left, Term right) implements Term {
+public record ArithExpr(Op op, Term left, Term right) implements OperatorExpr {
 
     /** Arithmetic operators, with Jason's printed forms. */
     public enum Op {
@@ -40,19 +38,6 @@ public record ArithExpr(Op op, Term left, Term right) implements Term {
 
     public boolean isUnary() {
         return right == null;
-    }
-
-    @Override
-    public boolean isGround() {
-        return left.isGround() && (right == null || right.isGround());
-    }
-
-    @Override
-    public void collectVars(Consumer<Var> sink) {
-        left.collectVars(sink);
-        if (right != null) {
-            right.collectVars(sink);
-        }
     }
 
     @Override

@@ -1,9 +1,7 @@
 package jacabot.agent.syntax;
 
-import java.util.function.Consumer;
-
 /** A relational expression: comparison, unification ({@code =}) or {@code =..}. */
-public record RelExpr(Op op, Term left, Term right) implements Term {
+public record RelExpr(Op op, Term left, Term right) implements OperatorExpr {
 
     /** Relational operators, with Jason's printed forms. */
     public enum Op {
@@ -19,17 +17,6 @@ public record RelExpr(Op op, Term left, Term right) implements Term {
         public String toString() {
             return symbol;
         }
-    }
-
-    @Override
-    public boolean isGround() {
-        return left.isGround() && right.isGround();
-    }
-
-    @Override
-    public void collectVars(Consumer<Var> sink) {
-        left.collectVars(sink);
-        right.collectVars(sink);
     }
 
     @Override

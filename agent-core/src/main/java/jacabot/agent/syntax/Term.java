@@ -8,8 +8,8 @@ package jacabot.agent.syntax;
  * literals (by functor, negation, arguments and annotations), then variables.
  */
 public sealed interface Term extends Comparable<Term>
-        permits Literal, NumberTerm, StringTerm, Var, ListTerm, ArithExpr, ArithFunction,
-                RelExpr, LogExpr, TriggerTerm, BodyTerm, PlanTerm, ObjectTerm {
+        permits Literal, NumberTerm, StringTerm, Var, ListTerm, OperatorExpr, ArithFunction,
+                TriggerTerm, BodyTerm, PlanTerm, ObjectTerm {
 
     /** {@return whether the term has no variable} */
     boolean isGround();
