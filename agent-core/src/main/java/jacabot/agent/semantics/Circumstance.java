@@ -212,12 +212,22 @@ public final class Circumstance {
 
     // ---- actions (PA, FA) ----------------------------------------------------------------------------
 
+    /** As a pending intention, an atomic one waiting for its action's feedback holds the agent (Jason's PA rule). */
     void addPendingAction(ActionExec a) {
-        pendingActions.put(a.intention().id(), a);
+        Intention i = a.intention();
+        if (i.isAtomic()) {
+            atomicIntention = i;
+            atomicIntentionSuspended = true;
+        }
+        pendingActions.put(i.id(), a);
     }
 
     ActionExec removePendingAction(int intentionId) {
-        return pendingActions.remove(intentionId);
+        ActionExec a = pendingActions.remove(intentionId);
+        if (a != null && a.intention().isAtomic()) {
+            atomicIntentionSuspended = false;
+        }
+        return a;
     }
 
     List<Intention> pendingActionIntentions() {
@@ -227,7 +237,7 @@ public final class Circumstance {
     }
 
     boolean removePendingActionOf(Intention i) {
-        return pendingActions.remove(i.id()) != null;
+        return removePendingAction(i.id()) != null;
     }
 
     /** Called by the architecture (any thread) when an action has been executed. */

@@ -98,9 +98,29 @@ public final class TestAgent implements AgentArch {
         return p;
     }
 
+    /** When set, actions stay in progress until {@link #finishActions()}, as in a slow environment. */
+    public boolean deferFeedback;
+    private final List<ActionExec> inProgress = new ArrayList<>();
+
     @Override
     public void act(ActionExec action, Agent ag) {
         actions.add(action);
+        if (deferFeedback) {
+            inProgress.add(action);
+            return;
+        }
+        finish(action, ag);
+    }
+
+    /** Ends the actions held by {@link #deferFeedback}, in the order they started. */
+    public TestAgent finishActions() {
+        List<ActionExec> done = List.copyOf(inProgress);
+        inProgress.clear();
+        done.forEach(a -> finish(a, agent));
+        return this;
+    }
+
+    private void finish(ActionExec action, Agent ag) {
         if (environment.apply(action)) {
             var u = new jacabot.agent.semantics.Unifier();
             outputs.accept(action, u);

@@ -100,6 +100,24 @@ class ReasoningCycleTest {
         assertEquals(List.of("a1", "b1", "b2", "b3", "a2", "a3"), a.printed());
     }
 
+    /** Jason keeps an atomic intention that waits for its action's feedback as the one to run next. */
+    @Test
+    void atomicIntentionWaitingForItsActionStillRunsAlone() {
+        var a = new TestAgent("""
+                !a. !b.
+                +!a <- .print(a1); .print(a2).
+                @x[atomic] +!b <- .print(b1); move; .print(b2).
+                +seen <- .print(c1).
+                """);
+        a.deferFeedback = true;
+        a.cycles(50);
+        a.percepts = List.of(jacabot.agent.syntax.Literal.atom("seen"));
+        a.cycles(50);
+        assertEquals(List.of("a1", "b1"), a.printed());
+        a.finishActions().cycles(50);
+        assertEquals(List.of("a1", "b1", "b2", "a2", "c1"), a.printed());
+    }
+
     @Test
     void perceptsBecomeBeliefsWithSourcePerceptAndEvents() {
         var a = new TestAgent("""
