@@ -27,6 +27,8 @@
 // waits for the middleware's "charged" signal (900 J), two minutes at most. Charger and marked
 // point are reached with a 3 cm threshold (the charger's radius is 6 cm); the storage point's
 // threshold (ray) is restored afterwards.
+// "-!approach : charging" (added): an approach that times out after the battery ran low does not
+// send "stop", which would halt the robot on its way to the charger for good.
 // "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
 // already updated picked(false) when the agent handles the signal, so the listing's
 // "+fallen : picked(true)" never applied and the fall went unreported.
@@ -75,6 +77,7 @@ middlewarePort(4444).
     <- .print("cylinder beyond"); setSpeeds(M / 5, M / 5); !approach.
 
 +!approach <- .wait("+cylinderDetected", 8000).
+-!approach : charging <- .print("Reach lateral cylinder failed."); -+reachCylinder(false).
 -!approach <- .print("Reach lateral cylinder failed."); stop; -+reachCylinder(false).
 
 +!reach : charging <- .wait({-charging}); .print("Resume cylinder reaching"); !reach.

@@ -84,6 +84,26 @@ class AppendixBAgentTest {
         assertTrue(robot.actions.size() > moves, "random motion resumes");
     }
 
+    /** A lateral cylinder's approach that times out after the battery ran low must not stop the trip to the charger. */
+    @Test
+    void aFailedApproachDoesNotStopTheTripToTheCharger() {
+        robot.signal("cylinderLeft");
+        robot.cycles(100);
+        robot.signal("cylinderBeyond");
+        robot.cycles(100);
+        assertTrue(robot.actionNames().contains("setSpeeds(20,20)"), "approaches slowly: " + robot.actionNames());
+        robot.percept("location(0.1,0,0.2)").percept("orientation(135)").percept("battery(470)");
+        robot.signal("lowBattery");
+        runFor(200);
+        List<String> acts = robot.actionNames();
+        assertEquals("forward", acts.get(acts.size() - 1), "heads for the charger: " + acts);
+        int heading = acts.size();
+        runFor(9_000);
+        assertTrue(robot.printed().contains("Reach lateral cylinder failed."), robot.printed().toString());
+        List<String> after = robot.actionNames().subList(heading, robot.actions.size());
+        assertFalse(after.contains("stop"), "still on its way: " + after);
+    }
+
     @Test
     void lowBatterySuspendsTheTaskGoesToTheChargerAndComesBack() {
         robot.percept("location(0.1,0,0.2)").percept("orientation(90)").percept("battery(470)");
