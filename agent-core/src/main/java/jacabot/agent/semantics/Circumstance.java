@@ -183,11 +183,22 @@ public final class Circumstance {
 
     /** Suspends an intention; an atomic one stays the atomic intention, so nothing else runs meanwhile. */
     public void addPendingIntention(String key, Term reason, Intention i) {
+        holdIfAtomic(i);
+        pending.put(key, new Pending(i, reason));
+    }
+
+    /** A waiting atomic intention (in PI or PA) stays the atomic intention, suspended: it holds the agent (Jason's rule). */
+    private void holdIfAtomic(Intention i) {
         if (i.isAtomic()) {
             atomicIntention = i;
             atomicIntentionSuspended = true;
         }
-        pending.put(key, new Pending(i, reason));
+    }
+
+    private void releaseIfAtomic(Intention i) {
+        if (i.isAtomic()) {
+            atomicIntentionSuspended = false;
+        }
     }
 
     public Intention removePendingIntention(String key) {
@@ -195,9 +206,7 @@ public final class Circumstance {
         if (p == null) {
             return null;
         }
-        if (p.intention().isAtomic()) {
-            atomicIntentionSuspended = false;
-        }
+        releaseIfAtomic(p.intention());
         return p.intention();
     }
 
@@ -212,20 +221,15 @@ public final class Circumstance {
 
     // ---- actions (PA, FA) ----------------------------------------------------------------------------
 
-    /** As a pending intention, an atomic one waiting for its action's feedback holds the agent (Jason's PA rule). */
     void addPendingAction(ActionExec a) {
-        Intention i = a.intention();
-        if (i.isAtomic()) {
-            atomicIntention = i;
-            atomicIntentionSuspended = true;
-        }
-        pendingActions.put(i.id(), a);
+        holdIfAtomic(a.intention());
+        pendingActions.put(a.intention().id(), a);
     }
 
     ActionExec removePendingAction(int intentionId) {
         ActionExec a = pendingActions.remove(intentionId);
-        if (a != null && a.intention().isAtomic()) {
-            atomicIntentionSuspended = false;
+        if (a != null) {
+            releaseIfAtomic(a.intention());
         }
         return a;
     }
