@@ -65,14 +65,11 @@ class SuspendResumeScenarioTest {
         WorldSpec world = WorldFileReader.read(ScenarioRun.ROOT.resolve(Experiment.SUSPEND_RESUME.worldFile()));
         ScenarioRun run = ScenarioRun.run(Experiment.SUSPEND_RESUME, world.seed(), world.sensorNoise(), 240);
         long picked = run.firstLine("Cylinder picked up", 0);
-        long low = run.firstLine("Battery low!", picked);
-        long charged = run.firstLine("RECHARGED", low);
-        long back = run.firstLine("Previous pt reached", charged);
-        long restart = run.firstLine("Restart delivering", back);
-        assertTrue(picked >= 0 && low > picked && charged > low && back > charged && restart >= back, run.summary());
-        assertTrue(run.at(low).carried() != null && run.at(charged).carried() != null, "carried while charging: " + run.summary());
+        assertTrue(picked >= 0, run.summary());
+        Suspension s = assertDeliverySuspendedAndCompleted(run, picked);
+        long restart = run.firstLine("Restart delivering", s.back());
+        assertTrue(s.low() > picked && restart >= s.back(), run.summary());
         assertTrue(run.releases.stream().anyMatch(r -> r.inStorage() && r.timeMs() > restart), "delivered after resuming: " + run.summary());
-        NavigationScenarioTest.assertNeverBackWithoutACylinder(run);
     }
 
     /** The battery runs low right after a pick (a supervisor sets it to 490 J): the delivery is suspended and completed. */
@@ -105,12 +102,26 @@ class SuspendResumeScenarioTest {
         });
         assertTrue(drainedAt[0] > 0, run.summary());
         assertTrue(run.minBattery() > 0, run.summary());
-        long low = run.firstLine("Battery low!", drainedAt[0]);
+        assertDeliverySuspendedAndCompleted(run, drainedAt[0]);
+    }
+
+    /** When the battery ran low, when the robot was recharged, when it was back at the marked point (ms). */
+    private record Suspension(long low, long charged, long back) {
+    }
+
+    /**
+     * From {@code fromMs}: the battery runs low while the robot carries a cylinder, it recharges with
+     * the cylinder, comes back to the marked point and then delivers, never entering the storage
+     * area empty-handed.
+     */
+    private static Suspension assertDeliverySuspendedAndCompleted(ScenarioRun run, long fromMs) {
+        long low = run.firstLine("Battery low!", fromMs);
         long charged = run.firstLine("RECHARGED", low);
         long back = run.firstLine("Previous pt reached", charged);
         assertTrue(low >= 0 && charged > low && back > charged, run.summary());
         assertTrue(run.at(low).carried() != null && run.at(charged).carried() != null, "carried while charging: " + run.summary());
         assertTrue(run.releases.stream().anyMatch(r -> r.inStorage() && r.timeMs() > back), "delivered after resuming: " + run.summary());
         NavigationScenarioTest.assertNeverBackWithoutACylinder(run);
+        return new Suspension(low, charged, back);
     }
 }
