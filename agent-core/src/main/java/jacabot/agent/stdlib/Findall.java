@@ -13,11 +13,16 @@ final class Findall extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        return un.unifies(args[2], listOf(solutions(ag, un, args[0], args[1])));
+    }
+
+    /** {@return {@code template} instantiated by every solution of {@code query}, in order} */
+    static java.util.List<Term> solutions(Agent ag, Unifier un, Term template, Term query) {
         var out = new java.util.ArrayList<Term>();
-        var it = ag.solver().solve(args[1], un);
+        var it = ag.solver().solve(query, un);
         while (it.hasNext()) {
-            out.add(it.next().apply(args[0]));
+            out.add(it.next().apply(template));
         }
-        return un.unifies(args[2], listOf(out));
+        return out;
     }
 }

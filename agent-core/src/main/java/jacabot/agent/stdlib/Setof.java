@@ -13,11 +13,7 @@ final class Setof extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var out = new java.util.TreeSet<Term>();
-        var it = ag.solver().solve(args[1], un);
-        while (it.hasNext()) {
-            out.add(it.next().apply(args[0]));
-        }
-        return un.unifies(args[2], listOf(new java.util.ArrayList<>(out)));
+        var sorted = new java.util.TreeSet<Term>(Findall.solutions(ag, un, args[0], args[1]));
+        return un.unifies(args[2], listOf(new java.util.ArrayList<>(sorted)));
     }
 }

@@ -45,9 +45,9 @@ public final class Stdlib {
         put(map, new IsVar());
         put(map, new Length());
         put(map, new Loop());
-        put(map, new Max());
+        put(map, Extremum.max());
         put(map, new Member());
-        put(map, new Min());
+        put(map, Extremum.min());
         put(map, new MyName());
         put(map, new Nth());
         put(map, new Print());
