@@ -18,6 +18,7 @@ import java.util.Map;
 import org.dyn4j.collision.narrowphase.Raycast;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.geometry.AABB;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
 import org.dyn4j.geometry.Ray;
@@ -34,6 +35,9 @@ final class Physics {
 
     /** How far behind its origin a ray starts, in metres. */
     static final double BACKOFF = 0.01;
+
+    /** How much the ray filter grows each bounding box, in metres: far above GJK's tolerance. */
+    private static final double AABB_MARGIN = 1e-3;
 
     private final World<Body> world = new World<>();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
@@ -151,6 +155,9 @@ final class Physics {
             }
             double best = Double.POSITIVE_INFINITY;
             for (BodyFixture f : o.body.getFixtures()) {
+                if (!mayCross(f.getShape().createAABB(o.body.getTransform()), ray, maxRange + BACKOFF)) {
+                    continue;
+                }
                 raycast.clear();
                 if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
                         && raycast.getDistance() - BACKOFF < best) {
@@ -163,5 +170,28 @@ final class Physics {
         }
         hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable: ties keep insertion order
         return hits;
+    }
+
+    /**
+     * The slab test of a ray segment against a box grown by {@link #AABB_MARGIN}: a cheap, conservative
+     * filter (a miss here is a miss for the exact cast), so the casts' results do not change while
+     * most of the GJK casts — each sensor ray against every object — are skipped.
+     */
+    private static boolean mayCross(AABB box, Ray ray, double length) {
+        Vector2 o = ray.getStart(), d = ray.getDirectionVector();
+        double[] t = {0, length};
+        return clip(o.x, d.x, box.getMinX() - AABB_MARGIN, box.getMaxX() + AABB_MARGIN, t)
+                && clip(o.y, d.y, box.getMinY() - AABB_MARGIN, box.getMaxY() + AABB_MARGIN, t);
+    }
+
+    /** Narrows the ray's interval {@code t} to one slab; {@return false when it becomes empty} */
+    private static boolean clip(double start, double dir, double lo, double hi, double[] t) {
+        if (Math.abs(dir) < 1e-12) {
+            return start >= lo && start <= hi;
+        }
+        double t1 = (lo - start) / dir, t2 = (hi - start) / dir;
+        t[0] = Math.max(t[0], Math.min(t1, t2));
+        t[1] = Math.min(t[1], Math.max(t1, t2));
+        return t[0] <= t[1];
     }
 }
