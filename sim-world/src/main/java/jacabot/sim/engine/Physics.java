@@ -153,11 +153,11 @@ final class Physics {
             if (o == self || o.carriedBy != null) {
                 continue;
             }
+            if (!mayCross(o.bounds(), ray, maxRange + BACKOFF)) {
+                continue;
+            }
             double best = Double.POSITIVE_INFINITY;
             for (BodyFixture f : o.body.getFixtures()) {
-                if (!mayCross(f.getShape().createAABB(o.body.getTransform()), ray, maxRange + BACKOFF)) {
-                    continue;
-                }
                 raycast.clear();
                 if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
                         && raycast.getDistance() - BACKOFF < best) {

@@ -5,6 +5,8 @@ import jacabot.sim.Pose;
 import jacabot.sim.Rgb;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.geometry.AABB;
+import org.dyn4j.geometry.Transform;
 
 /** One thing of the world and its dyn4j body. Internal. */
 final class SimObject {
@@ -16,6 +18,8 @@ final class SimObject {
     final double sizeX, sizeZ; // full sizes; a cylinder's diameter twice
     final boolean movable;
     String carriedBy; // the robot holding this cylinder, or null
+    private AABB bounds; // cached for the sensors' rays, with the transform it was computed at
+    private double boundsX, boundsY, boundsCos, boundsSin;
 
     SimObject(String id, ObjectKind kind, Body body, Rgb color, double height, double sizeX, double sizeZ, boolean movable) {
         this.id = id;
@@ -27,6 +31,20 @@ final class SimObject {
         this.sizeZ = sizeZ;
         this.movable = movable;
         body.setUserData(this);
+    }
+
+    /** {@return the body's bounding box, recomputed only when the body has moved since the last call} */
+    AABB bounds() {
+        Transform t = body.getTransform();
+        if (bounds == null || t.getTranslationX() != boundsX || t.getTranslationY() != boundsY || t.getCost() != boundsCos
+                || t.getSint() != boundsSin) {
+            bounds = body.createAABB();
+            boundsX = t.getTranslationX();
+            boundsY = t.getTranslationY();
+            boundsCos = t.getCost();
+            boundsSin = t.getSint();
+        }
+        return bounds;
     }
 
     Pose pose() {
