@@ -10,27 +10,38 @@ import java.util.Map;
 /**
  * The variable bindings of a {@link Unifier}: parallel arrays searched linearly, since a plan
  * rarely has more than a handful of variables, with a hash index once there are many. Copying
- * (done for every candidate plan and every solution) is two array copies.
+ * (done for every candidate plan and every solution) is two array copies of the bindings in use;
+ * empty bindings share one empty array, so a fresh or copied empty unifier allocates none.
  */
 final class Bindings {
     private static final int INDEX_FROM = 24;
+    private static final Var[] NO_KEYS = new Var[0];
+    private static final Term[] NO_VALUES = new Term[0];
     private Var[] keys;
     private Term[] values;
     private int size;
     private HashMap<Var, Integer> index;
 
     Bindings() {
-        keys = new Var[8];
-        values = new Term[8];
+        keys = NO_KEYS;
+        values = NO_VALUES;
     }
 
     private Bindings(Bindings other) {
-        keys = Arrays.copyOf(other.keys, Math.max(8, other.size + 4));
-        values = Arrays.copyOf(other.values, keys.length);
+        copyFrom(other);
+    }
+
+    /** Copies the bindings in use, with room for a few more (solutions usually bind some). */
+    private void copyFrom(Bindings other) {
         size = other.size;
-        if (other.index != null) {
-            index = new HashMap<>(other.index);
+        if (size == 0) {
+            keys = NO_KEYS;
+            values = NO_VALUES;
+        } else {
+            keys = Arrays.copyOf(other.keys, size + 4);
+            values = Arrays.copyOf(other.values, size + 4);
         }
+        index = other.index == null ? null : new HashMap<>(other.index);
     }
 
     Bindings copy() {
@@ -63,8 +74,8 @@ final class Bindings {
             return;
         }
         if (size == keys.length) {
-            keys = Arrays.copyOf(keys, size * 2);
-            values = Arrays.copyOf(values, size * 2);
+            keys = Arrays.copyOf(keys, Math.max(4, size * 2));
+            values = Arrays.copyOf(values, keys.length);
         }
         keys[size] = v;
         values[size] = t;
@@ -101,10 +112,26 @@ final class Bindings {
     }
 
     void setFrom(Bindings other) {
-        keys = Arrays.copyOf(other.keys, Math.max(8, other.keys.length));
-        values = Arrays.copyOf(other.values, keys.length);
-        size = other.size;
-        index = other.index == null ? null : new HashMap<>(other.index);
+        copyFrom(other);
+    }
+
+    int size() {
+        return size;
+    }
+
+    /**
+     * Forgets the bindings made since there were {@code mark}: unification only appends (it binds
+     * unbound variables), so undoing it is cutting the arrays back.
+     */
+    void truncate(int mark) {
+        for (int i = size - 1; i >= mark; i--) {
+            if (index != null) {
+                index.remove(keys[i]);
+            }
+            keys[i] = null;
+            values[i] = null;
+        }
+        size = Math.min(size, mark);
     }
 
     boolean isEmpty() {

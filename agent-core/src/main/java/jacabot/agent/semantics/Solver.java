@@ -85,11 +85,11 @@ public final class Solver {
     private Iterator<Unifier> match(Literal q, BeliefBase.Entry e, Unifier u) {
         if (e.rule() != null) {
             Rule r = rename(e.rule());
-            Unifier ru = u.copy();
-            if (!ru.unifies(q.withoutAnnots(), r.head().withoutAnnots())) {
+            Unifier ru = u.unifiedCopyIgnoringAnnots(q, r.head());
+            if (ru == null) {
                 return Collections.emptyIterator();
             }
-            if (!q.annots().isEmpty() && !ru.unifies(q.withAnnots(q.annots()), r.head())) {
+            if (!q.annots().isEmpty() && !ru.unifies(q, r.head())) {
                 return Collections.emptyIterator();
             }
             return solve(r.body(), ru);
@@ -102,7 +102,7 @@ public final class Solver {
             belief = (Literal) Renamer.rename(belief, map);
         }
         // most candidates fail: unify first, copy only on success
-        Unifier bu = u.unifiedCopy(q.withoutAnnots(), belief.withoutAnnots());
+        Unifier bu = u.unifiedCopyIgnoringAnnots(q, belief);
         if (bu == null) {
             return Collections.emptyIterator();
         }

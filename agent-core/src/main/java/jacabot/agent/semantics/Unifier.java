@@ -219,13 +219,11 @@ public final class Unifier {
      * term must be a subset of those of the second. Nothing is bound when it fails.
      */
     public boolean unifies(Term a, Term b) {
-        var trail = new ArrayList<Var>(4);
-        if (unify(a, b, trail)) {
+        int mark = bindings.size();
+        if (unify(a, b)) {
             return true;
         }
-        for (Var v : trail) {
-            bindings.remove(v);
-        }
+        bindings.truncate(mark);
         return false;
     }
 
@@ -234,37 +232,61 @@ public final class Unifier {
      * unify}; this unifier is left as it was
      */
     public Unifier unifiedCopy(Term a, Term b) {
-        var trail = new ArrayList<Var>(4);
-        boolean ok = unify(a, b, trail);
-        Unifier result = ok ? copy() : null;
-        for (Var v : trail) {
-            bindings.remove(v);
+        int mark = bindings.size();
+        Unifier result = unify(a, b) ? copy() : null;
+        bindings.truncate(mark);
+        return result;
+    }
+
+    /**
+     * As {@link #unifiedCopy} on the two literals without their annotations, without building
+     * those literals (the belief base tries every candidate fact this way).
+     */
+    Unifier unifiedCopyIgnoringAnnots(Literal a, Literal b) {
+        if (!a.samePredicate(b)) {
+            return null;
         }
+        int mark = bindings.size();
+        Unifier result = unifyArgs(a, b) ? copy() : null;
+        bindings.truncate(mark);
         return result;
     }
 
     /** Unifies without annotation checks (annotations ignored on both sides). */
     public boolean unifiesIgnoringAnnots(Literal a, Literal b) {
-        return unifies(a.withoutAnnots(), b.withoutAnnots());
+        if (!a.samePredicate(b)) {
+            return false;
+        }
+        int mark = bindings.size();
+        if (unifyArgs(a, b)) {
+            return true;
+        }
+        bindings.truncate(mark);
+        return false;
     }
 
-    private void bindTrail(Var v, Term t, List<Var> trail) {
-        bindings.put(v, t);
-        trail.add(v);
+    private boolean unifyArgs(Literal la, Literal lb) {
+        for (int i = 0, n = la.arity(); i < n; i++) {
+            if (!unify(la.arg(i), lb.arg(i))) {
+                return false;
+            }
+        }
+        return true;
     }
 
-    boolean unify(Term a, Term b, List<Var> trail) {
+    /** Unifies, leaving the bindings made so far in place when it fails (callers cut them back). */
+    private boolean unify(Term a, Term b) {
         a = deref(a);
         b = deref(b);
         if (a instanceof Var va) {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
             }
-            bindTrail(va, b, trail);
+            bindings.put(va, b);
             return true;
         }
         if (b instanceof Var vb) {
-            bindTrail(vb, a, trail);
+            bindings.put(vb, a);
             return true;
         }
         if (a instanceof ArithExpr || a instanceof ArithFunction) {
@@ -277,65 +299,55 @@ public final class Unifier {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
         if (a instanceof Literal la) {
-            if (!(b instanceof Literal lb) || !la.samePredicate(lb)) {
+            if (!(b instanceof Literal lb) || !la.samePredicate(lb) || !unifyArgs(la, lb)) {
                 return false;
             }
-            for (int i = 0; i < la.arity(); i++) {
-                if (!unify(la.arg(i), lb.arg(i), trail)) {
-                    return false;
-                }
-            }
-            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots(), trail);
+            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
         }
         if (a instanceof ListTerm.Cons ca) {
             if (!(b instanceof ListTerm.Cons cb)) {
                 return false;
             }
-            return unify(ca.head(), cb.head(), trail) && unify(ca.tail(), cb.tail(), trail);
+            return unify(ca.head(), cb.head()) && unify(ca.tail(), cb.tail());
         }
         if (a instanceof RelExpr ra) {
             return b instanceof RelExpr rb && ra.op() == rb.op()
-                    && unify(ra.left(), rb.left(), trail) && unify(ra.right(), rb.right(), trail);
+                    && unify(ra.left(), rb.left()) && unify(ra.right(), rb.right());
         }
         if (a instanceof LogExpr ea) {
-            return b instanceof LogExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left(), trail)
-                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right(), trail));
+            return b instanceof LogExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left())
+                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right()));
         }
         if (a instanceof TriggerTerm ta) {
             return b instanceof TriggerTerm tb && ta.trigger().op() == tb.trigger().op()
                     && ta.trigger().type() == tb.trigger().type()
-                    && unify(ta.trigger().literal(), tb.trigger().literal(), trail);
+                    && unify(ta.trigger().literal(), tb.trigger().literal());
         }
         if (a instanceof ArithExpr ea) {
-            return b instanceof ArithExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left(), trail)
-                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right(), trail));
+            return b instanceof ArithExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left())
+                    && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right()));
         }
         return a.equals(b);
     }
 
     /** Each annotation of {@code sub} unifies with some annotation of {@code sup} (greedy, as Jason). */
-    private boolean subsetAnnots(List<Term> sub, List<Term> sup, List<Var> trail) {
-        for (Term x : sub) {
+    private boolean subsetAnnots(List<Term> sub, List<Term> sup) {
+        for (int i = 0, n = sub.size(); i < n; i++) {
+            Term x = sub.get(i);
             boolean found = false;
-            for (Term y : sup) {
-                int mark = trail.size();
-                if (unify(x, y, trail)) {
+            for (int j = 0, m = sup.size(); j < m; j++) {
+                int mark = bindings.size();
+                if (unify(x, sup.get(j))) {
                     found = true;
                     break;
                 }
-                undoTo(trail, mark);
+                bindings.truncate(mark);
             }
             if (!found) {
                 return false;
             }
         }
         return true;
-    }
-
-    void undoTo(List<Var> trail, int mark) {
-        for (int i = trail.size() - 1; i >= mark; i--) {
-            bindings.remove(trail.remove(i));
-        }
     }
 
     @Override
