@@ -3,8 +3,10 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 
@@ -53,27 +55,53 @@ public final class BeliefBase {
         }
     }
 
-    /** The entries of one predicate, with a snapshot reused by queries until the group changes. */
-    private static final class Group extends ArrayList<Entry> {
-        private static final long serialVersionUID = 1L;
-        private transient List<Entry> snapshot;
+    /**
+     * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
+     * snapshot reused by queries until the group changes.
+     */
+    private static final class Group {
+        private final ArrayDeque<Entry> entries = new ArrayDeque<>();
+        private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
-        private final transient java.util.HashMap<List<Term>, Entry> facts = new java.util.HashMap<>();
+        private final HashMap<List<Term>, Entry> facts = new HashMap<>();
 
         List<Entry> snapshot() {
             if (snapshot == null) {
-                snapshot = List.copyOf(this);
+                snapshot = List.copyOf(entries);
             }
             return snapshot;
         }
 
-        void changed() {
+        void add(Entry e, boolean atEnd) {
             snapshot = null;
+            if (atEnd) {
+                entries.addLast(e);
+            } else {
+                entries.addFirst(e);
+            }
+        }
+
+        void remove(Entry e) {
+            snapshot = null;
+            entries.removeFirstOccurrence(e);
+            if (e.rule == null) {
+                facts.remove(e.literal.args());
+            }
         }
     }
 
     private final LinkedHashMap<Key, Group> groups = new LinkedHashMap<>();
+    /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
+    private Group spare;
     private int size;
+
+    private Group groupFor(Literal l) {
+        return groups.computeIfAbsent(Key.of(l), k -> {
+            Group g = spare == null ? new Group() : spare;
+            spare = null;
+            return g;
+        });
+    }
 
     /**
      * {@return the beliefs and rules that may match a literal, in order} It is a snapshot: queries
@@ -97,7 +125,7 @@ public final class BeliefBase {
     /** {@return every stored entry, group by group} */
     public List<Entry> all() {
         var out = new ArrayList<Entry>();
-        groups.values().forEach(out::addAll);
+        groups.values().forEach(g -> out.addAll(g.entries));
         return out;
     }
 
@@ -106,13 +134,7 @@ public final class BeliefBase {
     }
 
     public void addRule(Rule rule, boolean atEnd) {
-        Group g = groups.computeIfAbsent(Key.of(rule.head()), k -> new Group());
-        if (atEnd) {
-            g.add(new Entry(rule));
-        } else {
-            g.add(0, new Entry(rule));
-        }
-        g.changed();
+        groupFor(rule.head()).add(new Entry(rule), atEnd);
         size++;
     }
 
@@ -121,7 +143,7 @@ public final class BeliefBase {
      * nothing changed (the belief was there with all these annotations)}
      */
     public Literal add(Literal l, boolean atEnd) {
-        var group = groups.computeIfAbsent(Key.of(l), k -> new Group());
+        var group = groupFor(l);
         Entry known = group.facts.get(l.args());
         if (known != null) {
             if (known.literal.annots().containsAll(l.annots())) {
@@ -133,14 +155,9 @@ public final class BeliefBase {
             known.literal = known.literal.addAnnots(l.annots());
             return l.withAnnots(fresh);
         }
-        group.changed();
         Entry e = new Entry(l);
         group.facts.put(l.args(), e);
-        if (atEnd) {
-            group.add(e);
-        } else {
-            group.add(0, e);
-        }
+        group.add(e, atEnd);
         size++;
         return l;
     }
@@ -158,16 +175,25 @@ public final class BeliefBase {
         if (e == null || !e.literal.equals(stored)) {
             return null;
         }
-        group.changed();
-        var left = new ArrayList<Term>(stored.annots());
-        left.removeAll(removal.annots());
-        boolean hasSource = left.stream().anyMatch(a -> a instanceof Literal al && al.functor().equals("source"));
-        if (!hasSource) {
+        if (!keepsSource(stored.annots(), removal.annots())) {
             removeFromGroup(group, e, stored);
             return stored;
         }
+        group.snapshot = null;
+        var left = new ArrayList<Term>(stored.annots());
+        left.removeAll(removal.annots());
         e.literal = stored.withAnnots(left);
         return removal;
+    }
+
+    /** {@return whether some source annotation of {@code annots} is not among those removed} */
+    private static boolean keepsSource(List<Term> annots, List<Term> removed) {
+        for (int i = 0, n = annots.size(); i < n; i++) {
+            if (annots.get(i) instanceof Literal a && a.functor().equals("source") && !removed.contains(a)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Removes a stored entry (belief or rule) entirely. */
@@ -176,8 +202,7 @@ public final class BeliefBase {
         if (group == null) {
             return false;
         }
-        for (int i = 0; i < group.size(); i++) {
-            Entry e = group.get(i);
+        for (Entry e : group.entries) {
             if (e.literal.equals(stored)) {
                 removeFromGroup(group, e, stored);
                 return true;
@@ -187,21 +212,18 @@ public final class BeliefBase {
     }
 
     private void removeFromGroup(Group group, Entry e, Literal stored) {
-        group.changed();
         group.remove(e);
-        if (e.rule == null) {
-            group.facts.remove(e.literal.args());
-        }
         size--;
-        if (group.isEmpty()) {
+        if (group.entries.isEmpty()) {
             groups.remove(Key.of(stored));
+            spare = group;
         }
     }
 
     public List<Literal> beliefs() {
         var out = new ArrayList<Literal>();
         for (var g : groups.values()) {
-            for (Entry e : g) {
+            for (Entry e : g.entries) {
                 if (e.rule == null) {
                     out.add(e.literal);
                 }
