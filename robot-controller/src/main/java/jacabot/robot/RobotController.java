@@ -155,7 +155,8 @@ public final class RobotController implements AutoCloseable {
             event("apply " + rc.command());
             long appliedMicros = config.clock().nowMicros();
             Uplink.Applied a = new Uplink.Applied(rc.seq(), rc.command().code().code(), step, now, rc.receivedMicros(), appliedMicros);
-            link.send(out -> out.writeApplied(a));
+            boolean flush = !config.lockstep(); // in lockstep it goes with the next step's data, one write less
+            link.send(out -> out.writeApplied(a, flush));
         }
         Pose p = robot.pose();
         event("pose " + p.x() + " " + p.z() + " " + p.heading());

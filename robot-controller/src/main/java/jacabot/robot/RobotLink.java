@@ -23,7 +23,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * The controller's end of the TCP link, with the thesis' two threads (§2.4): the <b>receiver</b>
  * connects (retrying with back-off, reconnecting after a drop), shakes hands and reads commands
  * into the {@link CommandInbox}; the <b>sender</b> writes the frames the simulation thread queues,
- * so neither a slow agent nor a slow socket ever blocks the other direction or the simulation.
+ * so neither a slow agent nor a slow socket ever blocks the other direction or the simulation. In
+ * lockstep the simulation waits for the agent at every step anyway, so it writes its frames itself.
  */
 final class RobotLink {
     /** A frame waiting for the sender thread. */
@@ -84,6 +85,10 @@ final class RobotLink {
             droppedFrames.incrementAndGet();
             return;
         }
+        if (config.lockstep()) {
+            write(frame); // the world waits for the agent anyway: the sender thread would only add a hand-off
+            return;
+        }
         while (!outbox.offer(frame)) {
             if (outbox.poll() != null) {
                 droppedFrames.incrementAndGet();
@@ -123,22 +128,25 @@ final class RobotLink {
     private void sendLoop() {
         try {
             while (!isClosed()) {
-                Frame f = outbox.take();
-                SensorDataWriter w = writer;
-                if (w == null) {
-                    droppedFrames.incrementAndGet();
-                    continue;
-                }
-                try {
-                    f.writeTo(w);
-                } catch (IOException e) {
-                    // The receiver notices the broken socket too and reconnects; drop this frame.
-                    droppedFrames.incrementAndGet();
-                    closeSocket();
-                }
+                write(outbox.take());
             }
         } catch (InterruptedException e) {
             // closing
+        }
+    }
+
+    private void write(Frame f) {
+        SensorDataWriter w = writer;
+        if (w == null) {
+            droppedFrames.incrementAndGet();
+            return;
+        }
+        try {
+            f.writeTo(w);
+        } catch (IOException e) {
+            // The receiver notices the broken socket too and reconnects; drop this frame.
+            droppedFrames.incrementAndGet();
+            closeSocket();
         }
     }
 

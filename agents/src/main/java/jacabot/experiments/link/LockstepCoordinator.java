@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
@@ -51,12 +52,22 @@ public final class LockstepCoordinator {
     private final SimWorld world;
     private final String robotName;
     private final AgentSide agent;
+    private boolean stepLogs = true;
 
     /** @param robotName the robot to control, null for the world's first */
     public LockstepCoordinator(SimWorld world, String robotName, AgentSide agent) {
         this.world = world;
         this.robotName = robotName;
         this.agent = agent;
+    }
+
+    /**
+     * Whether to keep a line per step on both sides (readings, commands, poses): what replays are
+     * compared on. On by default; formatting them is a tenth of a benchmark run's time.
+     */
+    public LockstepCoordinator stepLogs(boolean keep) {
+        this.stepLogs = keep;
+        return this;
     }
 
     /**
@@ -67,12 +78,16 @@ public final class LockstepCoordinator {
      */
     public Result runFor(double seconds) throws IOException, InterruptedException {
         List<String> controllerLog = Collections.synchronizedList(new ArrayList<>());
-        List<String> agentLog = new ArrayList<>();
+        List<String> agentLog = Collections.synchronizedList(new ArrayList<>());
         List<String> linkLog = Collections.synchronizedList(new ArrayList<>());
         Consumer<String> log = linkLog::add;
-        ControllerConfig cc = ControllerConfig.defaults().withRobot(robotName).withLockstep(true).withLog(log)
-                .withEventLog(controllerLog::add);
+        ControllerConfig cc = ControllerConfig.defaults().withRobot(robotName).withLockstep(true).withLog(log);
+        if (stepLogs) {
+            cc = cc.withEventLog(controllerLog::add);
+        }
         try (InProcessLink link = InProcessLink.start(world, cc, LinkConfig.defaults().withLog(log))) {
+            Server server = new Server(link.middleware(), stepLogs ? agentLog : null);
+            link.middleware().handOver(server);
             Throwable[] simFailure = new Throwable[1];
             Thread simulation = new Thread(() -> {
                 try {
@@ -80,14 +95,13 @@ public final class LockstepCoordinator {
                 } catch (RuntimeException | Error e) {
                     simFailure[0] = e;
                 } finally {
-                    link.controller().close(); // says goodbye: the agent loop ends
+                    link.controller().close(); // says goodbye: the agent side's loop ends
                 }
             }, "lockstep-simulation");
             simulation.setDaemon(true);
             simulation.start();
-            long steps;
             try {
-                steps = serve(link.middleware(), agentLog);
+                server.awaitEnd();
             } finally {
                 link.controller().close();
                 simulation.join(TimeUnit.SECONDS.toMillis(SILENCE_LIMIT_SECONDS));
@@ -95,38 +109,69 @@ public final class LockstepCoordinator {
             if (simFailure[0] != null) {
                 throw new IllegalStateException("the simulation failed: " + simFailure[0], simFailure[0]);
             }
-            return new Result(steps, List.copyOf(controllerLog), List.copyOf(agentLog), link.middleware().timings().response(),
-                    List.copyOf(linkLog));
+            return new Result(server.steps, List.copyOf(controllerLog), List.copyOf(agentLog),
+                    link.middleware().timings().response(), List.copyOf(linkLog));
         }
     }
 
-    /** The agent side's loop: collect a step's readings, call the agent at its marker, answer. */
-    private long serve(MiddlewareLink link, List<String> agentLog) throws InterruptedException {
-        List<SensorInfo> readings = new ArrayList<>();
-        long steps = 0;
-        boolean connectedOnce = false;
-        while (true) {
-            LinkEvent e = link.poll(SILENCE_LIMIT_SECONDS, TimeUnit.SECONDS);
-            if (e == null) {
-                throw new IllegalStateException("no data from the controller for " + SILENCE_LIMIT_SECONDS + " s");
+    /**
+     * The agent side, run on the link's reading thread: collect a step's readings, call the agent
+     * at its marker, answer with the commands and the acknowledgement in one write.
+     */
+    private final class Server implements Consumer<LinkEvent> {
+        private final MiddlewareLink link;
+        private final List<String> agentLog;
+        private final List<SensorInfo> readings = new ArrayList<>();
+        private final CountDownLatch end = new CountDownLatch(1);
+        private volatile long lastEventNanos = System.nanoTime();
+        private volatile RuntimeException failure;
+        private volatile long steps;
+        private boolean connectedOnce;
+
+        Server(MiddlewareLink link, List<String> agentLog) {
+            this.link = link;
+            this.agentLog = agentLog;
+        }
+
+        @Override
+        public void accept(LinkEvent e) {
+            lastEventNanos = System.nanoTime();
+            if (end.getCount() == 0) {
+                return;
             }
-            if (e instanceof LinkEvent.Connected) {
-                connectedOnce = true;
-                readings.clear();
-            } else if (e instanceof LinkEvent.Reading) {
-                readings.add(((LinkEvent.Reading) e).info());
-            } else if (e instanceof LinkEvent.StepMarker) {
-                LinkEvent.StepMarker m = (LinkEvent.StepMarker) e;
-                List<Command> commands = callAgent(new StepData(m.step(), m.simTimeMs(), readings));
-                agentLog.add(describe(m, readings, commands));
-                readings.clear();
-                for (Command c : commands) {
-                    link.send(c);
+            try {
+                if (e instanceof LinkEvent.Connected) {
+                    connectedOnce = true;
+                    readings.clear();
+                } else if (e instanceof LinkEvent.Reading) {
+                    readings.add(((LinkEvent.Reading) e).info());
+                } else if (e instanceof LinkEvent.StepMarker) {
+                    LinkEvent.StepMarker m = (LinkEvent.StepMarker) e;
+                    List<Command> commands = callAgent(new StepData(m.step(), m.simTimeMs(), readings));
+                    if (agentLog != null) {
+                        agentLog.add(describe(m, readings, commands));
+                    }
+                    readings.clear();
+                    link.answerStep(commands, m.step());
+                    steps++;
+                } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
+                    end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
-                link.acknowledge(m.step());
-                steps++;
-            } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
-                return steps; // the controller said goodbye (or dropped: nothing more will come)
+            } catch (RuntimeException failed) {
+                failure = failed;
+                end.countDown();
+            }
+        }
+
+        /** Waits for the controller's goodbye; rethrows the agent side's failure. */
+        void awaitEnd() throws InterruptedException {
+            while (!end.await(1, TimeUnit.SECONDS)) {
+                if (System.nanoTime() - lastEventNanos > TimeUnit.SECONDS.toNanos(SILENCE_LIMIT_SECONDS)) {
+                    throw new IllegalStateException("no data from the controller for " + SILENCE_LIMIT_SECONDS + " s");
+                }
+            }
+            if (failure != null) {
+                throw failure;
             }
         }
     }

@@ -61,6 +61,9 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
     };
     private volatile RobotConnection current;
+    /** Set by {@link #handOver}: events go to it on the reading thread, not to the queue. */
+    private Consumer<LinkEvent> handler;
+    private final Object dispatch = new Object();
     private volatile long simTimeMs = -1;
     private volatile long lastSentNanos = System.nanoTime();
     private volatile String lastCloseReason;
@@ -159,6 +162,35 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         return delivered(events.poll(timeout, unit));
     }
 
+    /**
+     * From now on, every event goes to {@code handler} on the connection's reading thread, in order,
+     * instead of the queue that {@link #receive()} reads; the events already queued go first. A
+     * lockstep driver answers each step there, which saves a thread hand-off per step. The handler
+     * must not throw.
+     */
+    public void handOver(Consumer<LinkEvent> handler) {
+        synchronized (dispatch) {
+            for (LinkEvent e = events.poll(); e != null; e = events.poll()) {
+                handler.accept(delivered(e));
+            }
+            this.handler = handler;
+        }
+    }
+
+    private void dispatch(LinkEvent e) {
+        synchronized (dispatch) {
+            if (handler != null) {
+                handler.accept(delivered(e));
+                return;
+            }
+            if (e instanceof LinkEvent.Reading || e instanceof LinkEvent.StepMarker || e instanceof LinkEvent.FailSafe) {
+                enqueue(e);
+            } else {
+                events.add(e); // connection changes are never dropped
+            }
+        }
+    }
+
     private LinkEvent delivered(LinkEvent e) {
         if (e instanceof LinkEvent.Reading) {
             timings.delivered((LinkEvent.Reading) e);
@@ -209,6 +241,39 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     /** Lockstep: the step's commands are all sent, the simulation may advance. */
     public boolean acknowledge(long step) {
         return send(Command.stepAck(step));
+    }
+
+    /**
+     * Lockstep: sends a step's commands and its {@code STEP_ACK} in one write, so the controller
+     * wakes once per step; {@return false when no controller is connected or the socket failed}
+     */
+    public boolean answerStep(List<Command> commands, long step) {
+        RobotConnection c = current;
+        if (c == null) {
+            return false;
+        }
+        long now = config.clock().nowMicros();
+        List<Command> frames = new ArrayList<>(commands.size() + 1);
+        int[] seqs = new int[commands.size() + 1];
+        for (int i = 0; i < commands.size(); i++) {
+            seqs[i] = seq.incrementAndGet();
+            frames.add(commands.get(i));
+            if (commands.get(i).code().isRobotCommand()) {
+                synchronized (actionTimes) {
+                    actionTimes.put(seqs[i], now);
+                }
+            }
+        }
+        seqs[commands.size()] = seq.incrementAndGet();
+        frames.add(Command.stepAck(step));
+        try {
+            c.send(seqs, now, frames);
+            lastSentNanos = System.nanoTime();
+            return true;
+        } catch (IOException e) {
+            c.close("cannot send the answer to step " + step + ": " + e.getMessage());
+            return false;
+        }
     }
 
     @Override
@@ -273,7 +338,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         Protocol.Hello h = c.hello();
         config.log().accept("controller connected: robot '" + h.robotName() + "' of world '" + h.worldName() + "', "
                 + (h.lockstep() ? "lockstep" : "real time") + ", control step " + h.controlStepMs() + " ms");
-        events.add(new LinkEvent.Connected(h.robotName(), h.worldName(), h.controlStepMs(), h.lockstep()));
+        dispatch(new LinkEvent.Connected(h.robotName(), h.worldName(), h.controlStepMs(), h.lockstep()));
         for (ConnectionListener l : listeners) {
             l.connectionChanged(true);
         }
@@ -297,11 +362,11 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             for (var info : b.readings()) {
                 LinkEvent.Reading r = new LinkEvent.Reading(info, b.step(), b.simTimeMs(), b.sampledMicros(), received);
                 timings.received(r);
-                enqueue(r);
+                dispatch(r);
             }
         } else if (frame instanceof Uplink.StepMarker) {
             Uplink.StepMarker m = (Uplink.StepMarker) frame;
-            enqueue(new LinkEvent.StepMarker(m.step(), m.simTimeMs(), m.awaitsAck()));
+            dispatch(new LinkEvent.StepMarker(m.step(), m.simTimeMs(), m.awaitsAck()));
         } else if (frame instanceof Uplink.Applied) {
             Uplink.Applied a = (Uplink.Applied) frame;
             Long action;
@@ -314,7 +379,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         } else if (frame instanceof Uplink.FailSafe) {
             Uplink.FailSafe f = (Uplink.FailSafe) frame;
             config.log().accept("the controller's fail-safe stopped the wheels: " + f.reason());
-            enqueue(new LinkEvent.FailSafe(f.simTimeMs(), f.reason()));
+            dispatch(new LinkEvent.FailSafe(f.simTimeMs(), f.reason()));
         }
     }
 
@@ -348,7 +413,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         lastCloseReason = reason;
         config.log().accept("connection closed: " + reason);
         if (wasCurrent) {
-            events.add(new LinkEvent.Disconnected(reason));
+            dispatch(new LinkEvent.Disconnected(reason));
             for (ConnectionListener l : listeners) {
                 l.connectionChanged(false);
             }

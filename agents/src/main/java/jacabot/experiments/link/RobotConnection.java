@@ -13,6 +13,7 @@ import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.util.List;
 
 /**
  * One accepted controller: its handshake, the thread that reads its sensor data stream, and the
@@ -64,6 +65,15 @@ final class RobotConnection {
             throw new IOException("not connected");
         }
         w.write(seq, sentMicros, c);
+    }
+
+    /** Writes several commands with one flush. */
+    void send(int[] seqs, long sentMicros, List<Command> frames) throws IOException {
+        CommandWriter w = commands;
+        if (w == null) {
+            throw new IOException("not connected");
+        }
+        w.writeAll(seqs, sentMicros, frames);
     }
 
     /** Closes the socket; the reader thread then reports {@code reason} (the first reason wins). */

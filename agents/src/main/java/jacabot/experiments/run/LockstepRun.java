@@ -52,6 +52,7 @@ public final class LockstepRun {
     private final jacabot.experiments.link.LatencyRecorder reactive = new jacabot.experiments.link.LatencyRecorder(1_000_000);
     private long deliveredNanos;
     private boolean reactedThisStep = true;
+    private boolean stepLogs = true;
     private Consumer<StepData> onStep = d -> {
     };
 
@@ -113,9 +114,15 @@ public final class LockstepRun {
         return cycles;
     }
 
+    /** Whether the result keeps a line per step on both sides (on by default; see {@link LockstepCoordinator#stepLogs}). */
+    public LockstepRun stepLogs(boolean keep) {
+        this.stepLogs = keep;
+        return this;
+    }
+
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
-        var coordinator = new LockstepCoordinator(world, robotName, this::step);
+        var coordinator = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs);
         return coordinator.runFor(seconds);
     }
 

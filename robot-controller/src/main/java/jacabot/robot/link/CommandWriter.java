@@ -3,6 +3,7 @@ package jacabot.robot.link;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.util.List;
 
 /**
  * Writes command frames: {@code int code, int seq, long sentMicros, int argc, double × argc}. The
@@ -19,6 +20,19 @@ public final class CommandWriter {
 
     /** Writes and flushes one command. Thread-safe: frames are never interleaved. */
     public synchronized void write(int seq, long sentMicros, Command command) throws IOException {
+        writeFrame(seq, sentMicros, command);
+        out.flush();
+    }
+
+    /** Writes {@code commands.get(i)} with sequence number {@code seqs[i]}, then flushes once. */
+    public synchronized void writeAll(int[] seqs, long sentMicros, List<Command> commands) throws IOException {
+        for (int i = 0; i < commands.size(); i++) {
+            writeFrame(seqs[i], sentMicros, commands.get(i));
+        }
+        out.flush();
+    }
+
+    private void writeFrame(int seq, long sentMicros, Command command) throws IOException {
         double[] args = command.args();
         out.writeInt(command.code().code());
         out.writeInt(seq);
@@ -27,6 +41,5 @@ public final class CommandWriter {
         for (double a : args) {
             out.writeDouble(a);
         }
-        out.flush();
     }
 }

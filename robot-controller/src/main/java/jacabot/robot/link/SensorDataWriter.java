@@ -50,6 +50,11 @@ public final class SensorDataWriter {
     }
 
     public synchronized void writeApplied(Uplink.Applied a) throws IOException {
+        writeApplied(a, true);
+    }
+
+    /** Writes an applied report; unflushed, it leaves with the next frame that flushes (lockstep's next step). */
+    public synchronized void writeApplied(Uplink.Applied a, boolean flush) throws IOException {
         out.writeByte(Uplink.APPLIED);
         out.writeInt(a.seq());
         out.writeInt(a.code());
@@ -57,7 +62,9 @@ public final class SensorDataWriter {
         out.writeLong(a.simTimeMs());
         out.writeLong(a.receivedMicros());
         out.writeLong(a.appliedMicros());
-        out.flush();
+        if (flush) {
+            out.flush();
+        }
     }
 
     public synchronized void writeFailSafe(Uplink.FailSafe f) throws IOException {
