@@ -4,6 +4,7 @@ import jacabot.robot.link.CommandCode;
 import jacabot.robot.link.ReceivedCommand;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
 /**
@@ -26,10 +27,21 @@ final class CommandInbox {
     private boolean connected, dropped, closed;
     private long lastHeardNanos;
     private long connections;
+    private Consumer<ReceivedCommand> onReceipt;
 
     CommandInbox(Object lock, LongSupplier nanoTime) {
         this.lock = lock;
         this.nanoTime = nanoTime;
+    }
+
+    /**
+     * Real time: commands go to {@code action} on the receiver thread as they arrive, with the
+     * world's lock held (so between two physics steps), instead of waiting for the next control step.
+     */
+    void applyOnReceipt(Consumer<ReceivedCommand> action) {
+        synchronized (lock) {
+            onReceipt = action;
+        }
     }
 
     /** Receiver thread: a valid command arrived (a heartbeat only refreshes the silence timer). */
@@ -41,7 +53,11 @@ final class CommandInbox {
                 ackedStep = Math.max(ackedStep, (long) rc.command().arg(0));
                 lock.notifyAll();
             } else if (code != CommandCode.HEARTBEAT) {
-                commands.add(rc);
+                if (onReceipt != null && connected) {
+                    onReceipt.accept(rc);
+                } else {
+                    commands.add(rc);
+                }
             }
         }
     }

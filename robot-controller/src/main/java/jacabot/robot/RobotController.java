@@ -19,7 +19,7 @@ import java.util.concurrent.TimeUnit;
  * {@code while (robot.step(TIME_STEP) != -1)} loop; a {@link SimRunner} calls it before each step.
  *
  * <p>Two modes. <b>Real time</b>: the runner paces the world to the wall clock × a factor, the
- * agent runs free, commands take effect at the first step after they arrive, and a fail-safe stops
+ * agent runs free, commands take effect when they arrive (between two physics steps), and a fail-safe stops
  * the wheels when the link drops or nothing (command or heartbeat) has come for
  * {@code failSafeMs}. <b>Lockstep</b>: after sending a step's data and its step marker the
  * controller waits for the middleware's {@code STEP_ACK(step)}, applies the commands that came
@@ -67,6 +67,12 @@ public final class RobotController implements AutoCloseable {
         } else {
             runner.setMode(SimRunner.Mode.REAL_TIME);
             runner.setSpeedFactor(config.speedFactor());
+            // A real robot's motors take a command when it comes, not at the controller's next
+            // cycle: sub-millisecond response instead of up to one control step.
+            inbox.applyOnReceipt(rc -> {
+                executor.submit(rc);
+                applyDue(world.timeMs());
+            });
         }
     }
 
@@ -150,6 +156,14 @@ public final class RobotController implements AutoCloseable {
         for (ReceivedCommand rc : received) {
             executor.submit(rc);
         }
+        applyDue(now);
+        Pose p = robot.pose();
+        event("pose " + p.x() + " " + p.z() + " " + p.heading());
+        step++;
+    }
+
+    /** Applies what is due at {@code now} and reports each applied command to the middleware. World lock held. */
+    private void applyDue(long now) {
         for (ReceivedCommand rc : executor.tick(now)) {
             failSafeTripped = false;
             event("apply " + rc.command());
@@ -158,9 +172,6 @@ public final class RobotController implements AutoCloseable {
             boolean flush = !config.lockstep(); // in lockstep it goes with the next step's data, one write less
             link.send(out -> out.writeApplied(a, flush));
         }
-        Pose p = robot.pose();
-        event("pose " + p.x() + " " + p.z() + " " + p.heading());
-        step++;
     }
 
     private List<ReceivedCommand> exchangeRealTime(Uplink.Batch batch, Uplink.StepMarker marker) {

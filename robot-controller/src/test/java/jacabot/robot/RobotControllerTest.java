@@ -67,6 +67,23 @@ class RobotControllerTest {
     }
 
     @Test
+    void inRealTimeACommandReachesTheWheelsWhenItArrivesNotAtTheNextControlStep() throws Exception {
+        try (var peer = middleware.accept(Protocol.VERSION)) {
+            peer.await(f -> f instanceof Uplink.Batch);
+            controller.runner().stop(); // no control step from now on
+            long steps = controller.steps();
+            peer.send(Command.setSpeeds(30, 40));
+            var applied = (Uplink.Applied) peer.await(f -> f instanceof Uplink.Applied);
+            assertEquals(CommandCode.SET_SPEEDS.code(), applied.code());
+            assertEquals(steps, controller.steps(), "applied while the world stood still");
+            synchronized (controller.world()) {
+                assertEquals(30, controller.robot().getWheels().getLeftSpeed());
+                assertEquals(40, controller.robot().getWheels().getRightSpeed());
+            }
+        }
+    }
+
+    @Test
     void failSafeStopsTheWheelsWhenTheAgentSideGoesSilent() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
             peer.send(Command.forward());
