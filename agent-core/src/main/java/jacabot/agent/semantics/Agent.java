@@ -320,9 +320,9 @@ public final class Agent {
         Literal q = (Literal) u.apply(l);
         if (q.isGround()) {
             // the usual case, -b(1): find the fact by its arguments
-            Literal stored = beliefBase.fact(q);
-            if (stored != null && stored.annots().containsAll(q.annots())) {
-                return beliefBase.remove(stored, q);
+            Literal removed = beliefBase.removeFact(q);
+            if (removed != null) {
+                return removed;
             }
         }
         for (BeliefBase.Entry e : beliefBase.candidates(q)) {

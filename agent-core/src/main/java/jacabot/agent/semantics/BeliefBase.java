@@ -49,9 +49,30 @@ public final class BeliefBase {
         }
     }
 
-    private record Key(String functor, int arity, boolean negated) {
+    /** A predicate: functor, arity and negation (equality written out: it is looked up for every belief change). */
+    private static final class Key {
+        private final String functor;
+        private final int arity;
+        private final boolean negated;
+
+        private Key(String functor, int arity, boolean negated) {
+            this.functor = functor;
+            this.arity = arity;
+            this.negated = negated;
+        }
+
         static Key of(Literal l) {
             return new Key(l.functor(), l.arity(), l.negated());
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Key k && k.arity == arity && k.negated == negated && k.functor.equals(functor);
+        }
+
+        @Override
+        public int hashCode() {
+            return functor.hashCode() * 31 + arity * 2 + (negated ? 1 : 0);
         }
     }
 
@@ -175,6 +196,28 @@ public final class BeliefBase {
         if (e == null || !e.literal.equals(stored)) {
             return null;
         }
+        return removeAnnots(group, e, removal);
+    }
+
+    /**
+     * As {@link #remove} for the stored fact with the arguments of a ground literal, when it has
+     * all the literal's annotations (one lookup for the usual {@code -b(1)}). {@return the removed
+     * part, or null when there is no such fact}
+     */
+    public Literal removeFact(Literal removal) {
+        var group = groups.get(Key.of(removal));
+        if (group == null) {
+            return null;
+        }
+        Entry e = group.facts.get(removal.args());
+        if (e == null || !e.literal.annots().containsAll(removal.annots())) {
+            return null;
+        }
+        return removeAnnots(group, e, removal);
+    }
+
+    private Literal removeAnnots(Group group, Entry e, Literal removal) {
+        Literal stored = e.literal;
         if (!keepsSource(stored.annots(), removal.annots())) {
             removeFromGroup(group, e, stored);
             return stored;

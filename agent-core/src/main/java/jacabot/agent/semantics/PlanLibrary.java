@@ -13,7 +13,32 @@ public final class PlanLibrary {
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
 
-    private record CandidateKey(Trigger.Op op, Trigger.Type type, String functor, int arity, boolean negated) {
+    /** A trigger's kind and predicate (equality written out: it is looked up for every event). */
+    private static final class CandidateKey {
+        private final Trigger.Op op;
+        private final Trigger.Type type;
+        private final String functor;
+        private final int arity;
+        private final boolean negated;
+
+        CandidateKey(Trigger.Op op, Trigger.Type type, String functor, int arity, boolean negated) {
+            this.op = op;
+            this.type = type;
+            this.functor = functor;
+            this.arity = arity;
+            this.negated = negated;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof CandidateKey k && k.op == op && k.type == type && k.arity == arity
+                    && k.negated == negated && k.functor.equals(functor);
+        }
+
+        @Override
+        public int hashCode() {
+            return ((functor.hashCode() * 31 + arity) * 8 + op.ordinal() * 2 + (negated ? 1 : 0)) * 4 + type.ordinal();
+        }
     }
 
     /** Adds a plan (at the end, or at the beginning); names it and marks its source. */

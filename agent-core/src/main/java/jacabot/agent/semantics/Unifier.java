@@ -202,8 +202,16 @@ public final class Unifier {
     }
 
     private List<Term> applyAll(List<Term> terms) {
-        if (terms.isEmpty()) {
-            return terms;
+        // one and two terms (most literals) without the array List.of(array) would copy
+        switch (terms.size()) {
+            case 0:
+                return terms;
+            case 1:
+                return List.of(apply(terms.get(0)));
+            case 2:
+                return List.of(apply(terms.get(0)), apply(terms.get(1)));
+            default:
+                break;
         }
         Term[] out = new Term[terms.size()];
         for (int i = 0; i < out.length; i++) {

@@ -128,8 +128,8 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     /** {@return the first annotation with this functor, or null} */
     public Literal getAnnot(String annotFunctor) {
-        for (Term t : annots) {
-            if (t instanceof Literal l && l.functor.equals(annotFunctor)) {
+        for (int i = 0, n = annots.size(); i < n; i++) {
+            if (annots.get(i) instanceof Literal l && l.functor.equals(annotFunctor)) {
                 return l;
             }
         }

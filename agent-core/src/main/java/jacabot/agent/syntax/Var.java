@@ -14,6 +14,17 @@ public record Var(String name, long serial) implements Term {
         return serial != 0 || name.startsWith("_");
     }
 
+    // written out, with the values the record's would have: unifiers compare variables all the time
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Var v && v.serial == serial && v.name.equals(name);
+    }
+
+    @Override
+    public int hashCode() {
+        return name.hashCode() * 31 + Long.hashCode(serial);
+    }
+
     @Override
     public boolean isGround() {
         return false;
