@@ -38,13 +38,25 @@ public final class LocalMAS {
     private final Condition stepCondition = stepLock.newCondition();
     private volatile boolean stopped;
     private volatile boolean wokenInStepping;
+    /** Whether the stepping thread waits (or is about to): only then does a wake take its lock. */
+    private volatile boolean steppingAsleep;
     private final CountDownLatch finished = new CountDownLatch(1);
 
-    /** Wakes one sleeping agent thread. */
+    /**
+     * Wakes one sleeping agent thread. The sleeper raises {@code asleep} before it checks for
+     * work and a waker raises {@code woken} before it checks {@code asleep}, so one of them sees
+     * the other: a busy agent is woken without a lock, and a sleeping one is never missed.
+     */
     private static final class Waker {
+        final Agent agent;
         final ReentrantLock lock = new ReentrantLock();
         final Condition condition = lock.newCondition();
         volatile boolean woken;
+        volatile boolean asleep;
+
+        Waker(Agent agent) {
+            this.agent = agent;
+        }
     }
 
     public LocalMAS(Clock clock, PrintStream out, long seed) {
@@ -92,7 +104,7 @@ public final class LocalMAS {
         Map<String, InternalAction> ias = Stdlib.defaults();
         Agent ag = new Agent(name, arch, ias, seed + agents.size(), parser);
         agents.put(name, ag);
-        wakers.put(name, new Waker());
+        wakers.put(name, new Waker(ag));
         ag.load(program);
         return ag;
     }
@@ -110,11 +122,12 @@ public final class LocalMAS {
     }
 
     boolean deliver(Message m) {
-        Agent receiver = agent(m.receiver());
-        if (receiver == null) {
+        // the concurrent map, not the synchronized agent(name): every agent's messages come here
+        Waker w = wakers.get(m.receiver());
+        if (w == null) {
             return false;
         }
-        receiver.deliver(m);
+        w.agent.deliver(m);
         return true;
     }
 
@@ -152,24 +165,28 @@ public final class LocalMAS {
     void wake(String name) {
         Waker w = wakers.get(name);
         if (w != null) {
-            w.lock.lock();
-            try {
-                w.woken = true;
-                w.condition.signalAll();
-            } finally {
-                w.lock.unlock();
+            w.woken = true;
+            if (w.asleep) {
+                w.lock.lock();
+                try {
+                    w.condition.signalAll();
+                } finally {
+                    w.lock.unlock();
+                }
             }
         }
         wakeStepping();
     }
 
     private void wakeStepping() {
-        stepLock.lock();
-        try {
-            wokenInStepping = true;
-            stepCondition.signalAll();
-        } finally {
-            stepLock.unlock();
+        wokenInStepping = true;
+        if (steppingAsleep) {
+            stepLock.lock();
+            try {
+                stepCondition.signalAll();
+            } finally {
+                stepLock.unlock();
+            }
         }
     }
 
@@ -212,6 +229,7 @@ public final class LocalMAS {
             }
             stepLock.lock();
             try {
+                steppingAsleep = true;
                 if (!wokenInStepping) {
                     long wait = due == Long.MAX_VALUE ? 1000 : Math.max(0, due - clock.millis());
                     if (wait > 0) {
@@ -220,6 +238,7 @@ public final class LocalMAS {
                 }
                 wokenInStepping = false;
             } finally {
+                steppingAsleep = false;
                 stepLock.unlock();
             }
         }
@@ -252,6 +271,7 @@ public final class LocalMAS {
                 }
                 w.lock.lock();
                 try {
+                    w.asleep = true;
                     if (!w.woken && a.canSleep()) {
                         long due = a.nextTimerDue();
                         // capped: a simulated clock may run faster than the wall clock
@@ -260,6 +280,7 @@ public final class LocalMAS {
                     }
                     w.woken = false;
                 } finally {
+                    w.asleep = false;
                     w.lock.unlock();
                 }
             }

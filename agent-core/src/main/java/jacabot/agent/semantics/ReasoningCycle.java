@@ -95,8 +95,12 @@ final class ReasoningCycle {
      */
     private boolean applyFindOp(Event se) {
         boolean relevant = false;
+        Unifier u = null;
         for (Plan p : ag.planLibrary().candidates(se.trigger())) {
-            Unifier u = ag.newUnifier();
+            // a failed unification leaves the unifier empty: it serves the next plan
+            if (u == null || !u.isEmpty()) {
+                u = ag.newUnifier();
+            }
             if (!isRelevant(p.trigger(), se.trigger(), u)) {
                 continue;
             }
