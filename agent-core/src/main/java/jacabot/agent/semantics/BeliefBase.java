@@ -193,7 +193,7 @@ public final class BeliefBase {
             return null;
         }
         Entry e = group.facts.get(stored.args());
-        if (e == null || !e.literal.equals(stored)) {
+        if (e == null || (e.literal != stored && !e.literal.equals(stored))) {
             return null;
         }
         return removeAnnots(group, e, removal);

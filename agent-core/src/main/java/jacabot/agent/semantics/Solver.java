@@ -44,10 +44,11 @@ public final class Solver {
             return Collections.emptyIterator();
         }
         if (f instanceof Literal l) {
-            if (l.equals(Literal.TRUE)) {
+            // l.equals(TRUE) and l.equals(FALSE), without comparing every query's arguments
+            if (l.isAtom() && l.functor().equals("true")) {
                 return single(u.copy());
             }
-            if (l.equals(Literal.FALSE)) {
+            if (l.isAtom() && l.functor().equals("false")) {
                 return Collections.emptyIterator();
             }
             if (l.isInternalAction()) {

@@ -61,7 +61,11 @@ abstract class DefaultInternalAction implements InternalAction {
 
     /** Strings print without quotes, other terms in AgentSpeak syntax. */
     static String text(Term t) {
-        return t instanceof StringTerm s ? s.value() : t.toString();
+        if (t instanceof StringTerm s) {
+            return s.value();
+        }
+        // an atom prints as its functor: no text to build (.send's receiver and performative)
+        return t instanceof Literal l && l.isAtom() ? l.functor() : t.toString();
     }
 
     static Iterator<Unifier> none() {
