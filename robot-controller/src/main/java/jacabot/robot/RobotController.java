@@ -1,5 +1,6 @@
 package jacabot.robot;
 
+import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorInfo;
@@ -42,6 +43,7 @@ public final class RobotController implements AutoCloseable {
     private final CommandExecutor executor;
     private final CommandInbox inbox;
     private final RobotLink link;
+    private final LinkCosts costs = new LinkCosts();
     private final SimRunner runner;
     private volatile long step;
     private boolean failSafeTripped;
@@ -60,7 +62,7 @@ public final class RobotController implements AutoCloseable {
         this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
         this.inbox = new CommandInbox(world, config.nanoTime());
         this.link = new RobotLink(config, new Protocol.Hello(Protocol.VERSION, robot.name(), world.name(),
-                world.controlStep(), config.lockstep()), inbox);
+                world.controlStep(), config.lockstep()), inbox, costs);
         this.runner = new SimRunner(world, this::controlStep);
         if (config.lockstep()) {
             runner.setMode(SimRunner.Mode.FAST); // the agent's acknowledgements pace the world
@@ -129,6 +131,11 @@ public final class RobotController implements AutoCloseable {
         return step;
     }
 
+    /** {@return the time spent sampling, encoding and writing steps so far} */
+    public LinkCosts linkCosts() {
+        return costs;
+    }
+
     /** {@return frames discarded because the link was down or the middleware read too slowly} */
     public long droppedFrames() {
         return link.droppedFrames();
@@ -144,7 +151,9 @@ public final class RobotController implements AutoCloseable {
             return;
         }
         long now = world.timeMs();
+        long t0 = System.nanoTime();
         List<SensorInfo> readings = sampler.sample();
+        costs.addSampling(System.nanoTime() - t0);
         long sampledMicros = config.clock().nowMicros();
         logReadings(now, readings);
         Uplink.Batch batch = new Uplink.Batch(step, now, sampledMicros, readings);

@@ -1,6 +1,7 @@
 package jacabot.robot;
 
 import jacabot.robot.link.CommandReader;
+import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
@@ -38,6 +39,7 @@ final class RobotLink {
     private final ControllerConfig config;
     private final Protocol.Hello hello;
     private final CommandInbox inbox;
+    private final LinkCosts costs;
     private final BlockingQueue<Frame> outbox;
     private final CountDownLatch closed = new CountDownLatch(1);
     private final AtomicLong droppedFrames = new AtomicLong();
@@ -46,10 +48,11 @@ final class RobotLink {
     private volatile String lastProblem;
     private Thread receiver, sender;
 
-    RobotLink(ControllerConfig config, Protocol.Hello hello, CommandInbox inbox) {
+    RobotLink(ControllerConfig config, Protocol.Hello hello, CommandInbox inbox, LinkCosts costs) {
         this.config = config;
         this.hello = hello;
         this.inbox = inbox;
+        this.costs = costs;
         this.outbox = new ArrayBlockingQueue<>(config.outboxCapacity());
     }
 
@@ -169,7 +172,9 @@ final class RobotLink {
                 }
                 s.setSoTimeout(0);
                 outbox.clear();
-                writer = new SensorDataWriter(s.getOutputStream(), config.resetEvery());
+                SensorDataWriter w = new SensorDataWriter(s.getOutputStream(), config.resetEvery());
+                w.measure(costs);
+                writer = w;
                 up = true;
                 everConnected = true;
                 backoff = config.minBackoffMs();

@@ -1,6 +1,7 @@
 package jacabot.experiments.bench;
 
 import jacabot.experiments.run.Experiment;
+import jacabot.experiments.link.LockstepCoordinator;
 import jacabot.experiments.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.sim.SimWorld;
@@ -36,23 +37,31 @@ public final class SimulationBenchmark {
         try (InputStream in = SimulationBenchmark.class.getResourceAsStream(e.agentResource())) {
             source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
-        // warm-up run, not measured
-        runAgent(world, source, Math.min(60, seconds));
+        // Warm-up: a whole run first, so that the measured one runs compiled code rather than
+        // sharing the two cores with the JIT compiler (whose C2 threads otherwise take a core for seconds).
+        runAgent(world, source, seconds);
         long t0 = System.nanoTime();
-        LockstepRun run = runAgent(world, source, seconds);
+        Measured m = runAgent(world, source, seconds);
         long wall = System.nanoTime() - t0;
-        long[] sim = run.world().stepCost();
-        long[] agent = run.agentSideCost();
-        long rest = wall - sim[0] - sim[1] - agent[0] - agent[1];
-        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, %.0f s simulated in %.2f s: %.0fx real time, %d reasoning cycles%n",
-                seconds, wall / 1e9, seconds / (wall / 1e9), run.cycles());
-        out.println("| part | wall time (s) | share |");
-        out.println("|---|---|---|");
-        row("physics (dyn4j)", sim[0], wall);
-        row("devices (sensors, camera, gripper, battery)", sim[1], wall);
-        row("artifact (middleware steps)", agent[0], wall);
-        row("reasoning (agent cycles)", agent[1], wall);
-        row("link: sampling, serialization, socket, thread hand-offs", rest, wall);
+        long[] sim = m.run().world().stepCost();
+        long[] agent = m.run().agentSideCost();
+        var c = m.result().controllerCosts();
+        var mw = m.result().middlewareCosts();
+        long serialization = c.encodingNanos() + mw.decodingNanos();
+        long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
+        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, %.0f s simulated in %.2f s: %.0fx real time, %d reasoning cycles, %d control steps%n",
+                seconds, wall / 1e9, seconds / (wall / 1e9), m.run().cycles(), m.result().steps());
+        out.println("| part | wall time (s) | share | per control step (us) |");
+        out.println("|---|---|---|---|");
+        long steps = Math.max(1, m.result().steps());
+        row("physics (dyn4j)", sim[0], wall, steps);
+        row("devices (sensors, camera, gripper, battery)", sim[1], wall, steps);
+        row("sampling the devices into SensorInfo", c.samplingNanos(), wall, steps);
+        row("serialization (ObjectOutputStream, ObjectInputStream)", serialization, wall, steps);
+        row("socket writes", c.writingNanos(), wall, steps);
+        row("artifact (middleware steps, operation threads)", agent[0], wall, steps);
+        row("reasoning (agent cycles)", agent[1], wall, steps);
+        row("waiting: socket and thread wake-ups", rest, wall, steps);
         long b0 = System.nanoTime();
         var baseline = BaselineRunner.execute(world, e.baseline(), seed, seconds);
         long bwall = System.nanoTime() - b0;
@@ -62,15 +71,18 @@ public final class SimulationBenchmark {
                 100.0 * bsim[0] / bwall, 100.0 * bsim[1] / bwall, 100.0 * (bwall - bsim[0] - bsim[1]) / bwall);
     }
 
-    private void row(String part, long nanos, long wall) {
-        out.printf(Locale.ROOT, "| %s | %.2f | %.0f%% |%n", part, nanos / 1e9, 100.0 * nanos / wall);
+    private record Measured(LockstepRun run, LockstepCoordinator.Result result) {
     }
 
-    private LockstepRun runAgent(Path world, String source, double duration) throws Exception {
+    private void row(String part, long nanos, long wall, long steps) {
+        out.printf(Locale.ROOT, "| %s | %.2f | %.0f%% | %.1f |%n", part, nanos / 1e9, 100.0 * nanos / wall, nanos / 1e3 / steps);
+    }
+
+    private Measured runAgent(Path world, String source, double duration) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, "suspend-resume.asl", seed, quiet);
-        run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
-        return run;
+        var result = run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
+        return new Measured(run, result);
     }
 }

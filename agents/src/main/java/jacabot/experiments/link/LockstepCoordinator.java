@@ -3,6 +3,7 @@ package jacabot.experiments.link;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Readings;
 import jacabot.robot.link.Command;
+import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
@@ -39,7 +40,7 @@ public final class LockstepCoordinator {
 
     /** What a run leaves: its steps, the controller's and the agent side's event logs, the timings. */
     public record Result(long steps, List<String> controllerLog, List<String> agentLog, LatencyStats response,
-                         List<String> linkLog) {
+                         List<String> linkLog, LinkCosts controllerCosts, LinkCosts middlewareCosts) {
         /** {@return both logs as one text, controller first (what two runs must agree on)} */
         public String eventLog() {
             return String.join("\n", controllerLog) + "\n--\n" + String.join("\n", agentLog) + "\n";
@@ -110,7 +111,8 @@ public final class LockstepCoordinator {
                 throw new IllegalStateException("the simulation failed: " + simFailure[0], simFailure[0]);
             }
             return new Result(server.steps, List.copyOf(controllerLog), List.copyOf(agentLog),
-                    link.middleware().timings().response(), List.copyOf(linkLog));
+                    link.middleware().timings().response(), List.copyOf(linkLog), link.controller().linkCosts(),
+                    link.middleware().costs());
         }
     }
 

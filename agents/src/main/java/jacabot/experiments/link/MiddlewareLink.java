@@ -1,6 +1,7 @@
 package jacabot.experiments.link;
 
 import jacabot.robot.link.Command;
+import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.Uplink;
 import java.io.IOException;
@@ -52,6 +53,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     private final List<ConnectionListener> listeners = new CopyOnWriteArrayList<>();
     private final AtomicInteger seq = new AtomicInteger();
     private final LinkTimings timings;
+    private final LinkCosts costs = new LinkCosts();
     private final Map<Integer, Long> actionTimes = new LinkedHashMap<>(16, 0.75f, false) {
         private static final long serialVersionUID = 1L;
 
@@ -146,6 +148,11 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
 
     public LinkTimings timings() {
         return timings;
+    }
+
+    /** {@return the time spent decoding the controller's frames so far} */
+    public LinkCosts costs() {
+        return costs;
     }
 
     public void addConnectionListener(ConnectionListener l) {
@@ -299,7 +306,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         while (!closed) {
             try {
                 Socket s = server.accept();
-                new RobotConnection(s, this, config.limits()).start();
+                new RobotConnection(s, this, config.limits(), costs).start();
             } catch (IOException e) {
                 if (!closed) {
                     config.log().accept("accept failed: " + e.getMessage());

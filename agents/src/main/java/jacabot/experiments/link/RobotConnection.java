@@ -2,6 +2,7 @@ package jacabot.experiments.link;
 
 import jacabot.robot.link.Command;
 import jacabot.robot.link.CommandWriter;
+import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.SensorDataReader;
@@ -39,14 +40,16 @@ final class RobotConnection {
     private final Socket socket;
     private final Owner owner;
     private final SensorInfoFilter.Limits limits;
+    private final LinkCosts costs;
     private volatile Protocol.Hello hello;
     private volatile CommandWriter commands;
     private volatile String closeReason;
 
-    RobotConnection(Socket socket, Owner owner, SensorInfoFilter.Limits limits) {
+    RobotConnection(Socket socket, Owner owner, SensorInfoFilter.Limits limits, LinkCosts costs) {
         this.socket = socket;
         this.owner = owner;
         this.limits = limits;
+        this.costs = costs;
     }
 
     void start() {
@@ -109,6 +112,7 @@ final class RobotConnection {
             owner.attached(this);
             attached = true;
             var reader = new SensorDataReader(socket.getInputStream(), limits);
+            reader.measure(costs);
             while (true) {
                 Uplink frame = reader.read();
                 if (frame == null) {

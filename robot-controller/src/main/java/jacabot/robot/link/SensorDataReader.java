@@ -21,6 +21,7 @@ import java.util.List;
 public final class SensorDataReader {
     private final ObjectInputStream in;
     private final SensorInfoFilter filter;
+    private LinkCosts costs;
 
     /**
      * Reads the stream header (so it blocks until the controller has written it).
@@ -39,6 +40,11 @@ public final class SensorDataReader {
         this.in.setObjectInputFilter(filter);
     }
 
+    /** From now on, adds the time spent decoding frames (from their first byte on) to {@code costs}. */
+    public void measure(LinkCosts costs) {
+        this.costs = costs;
+    }
+
     /**
      * Reads the next frame, blocking.
      *
@@ -54,6 +60,16 @@ public final class SensorDataReader {
         if (tag < 0) {
             return null;
         }
+        if (costs == null) {
+            return readFrame(tag);
+        }
+        long t0 = System.nanoTime();
+        Uplink frame = readFrame(tag);
+        costs.addDecoding(System.nanoTime() - t0);
+        return frame;
+    }
+
+    private Uplink readFrame(int tag) throws IOException {
         try {
             switch (tag) {
                 case Uplink.BATCH: return readBatch();

@@ -16,6 +16,7 @@ public final class SensorDataWriter {
     private final ObjectOutputStream out;
     private final int resetEvery;
     private int batchesSinceReset;
+    private LinkCosts costs;
 
     /** Writes the stream header at once. */
     public SensorDataWriter(OutputStream out, int resetEvery) throws IOException {
@@ -27,8 +28,14 @@ public final class SensorDataWriter {
         this.resetEvery = resetEvery;
     }
 
+    /** From now on, adds the time spent encoding and writing steps to {@code costs}. */
+    public synchronized void measure(LinkCosts costs) {
+        this.costs = costs;
+    }
+
     /** Writes a step's batch and its step marker, and flushes. */
     public synchronized void writeStep(Uplink.Batch batch, Uplink.StepMarker marker) throws IOException {
+        long t0 = costs == null ? 0 : System.nanoTime();
         if (++batchesSinceReset >= resetEvery) {
             out.reset();
             batchesSinceReset = 0;
@@ -46,7 +53,14 @@ public final class SensorDataWriter {
         out.writeLong(marker.step());
         out.writeLong(marker.simTimeMs());
         out.writeBoolean(marker.awaitsAck());
+        if (costs == null) {
+            out.flush();
+            return;
+        }
+        long t1 = System.nanoTime();
         out.flush();
+        costs.addEncoding(t1 - t0);
+        costs.addWriting(System.nanoTime() - t1);
     }
 
     public synchronized void writeApplied(Uplink.Applied a) throws IOException {

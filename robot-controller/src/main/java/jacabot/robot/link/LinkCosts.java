@@ -1,0 +1,48 @@
+package jacabot.robot.link;
+
+import java.util.concurrent.atomic.LongAdder;
+
+/**
+ * Where the link's own time goes, in wall-clock nanoseconds, for the benchmarks: sampling the
+ * devices into {@link SensorInfo}s, encoding a step's frame, writing it to the socket (on the
+ * controller's side), decoding frames (on the middleware's). What a step costs beyond these and
+ * the two ends' work is waiting: the socket's and the threads' wake-ups. Thread-safe.
+ */
+public final class LinkCosts {
+    private final LongAdder sampling = new LongAdder();
+    private final LongAdder encoding = new LongAdder();
+    private final LongAdder writing = new LongAdder();
+    private final LongAdder decoding = new LongAdder();
+
+    public void addSampling(long nanos) {
+        sampling.add(nanos);
+    }
+
+    public void addEncoding(long nanos) {
+        encoding.add(nanos);
+    }
+
+    public void addWriting(long nanos) {
+        writing.add(nanos);
+    }
+
+    public void addDecoding(long nanos) {
+        decoding.add(nanos);
+    }
+
+    public long samplingNanos() {
+        return sampling.sum();
+    }
+
+    public long encodingNanos() {
+        return encoding.sum();
+    }
+
+    public long writingNanos() {
+        return writing.sum();
+    }
+
+    public long decodingNanos() {
+        return decoding.sum();
+    }
+}
