@@ -329,10 +329,9 @@ public final class Agent {
             if (e.rule() != null) {
                 continue;
             }
-            Unifier c = u.copy();
-            if (c.unifies(q, e.literal())) {
-                u.setFrom(c);
-                return beliefBase.remove(e.literal(), (Literal) c.apply(q));
+            // a failed unification binds nothing, so u itself can try each candidate
+            if (u.unifies(q, e.literal())) {
+                return beliefBase.remove(e.literal(), (Literal) u.apply(q));
             }
         }
         return null;

@@ -49,16 +49,26 @@ public final class BeliefBase {
         }
     }
 
-    /** A predicate: functor, arity and negation (equality written out: it is looked up for every belief change). */
+    /**
+     * A predicate: functor, arity and negation (equality written out: it is looked up for every
+     * belief change). Lookups use one mutable probe instead of a new key each time.
+     */
     private static final class Key {
-        private final String functor;
-        private final int arity;
-        private final boolean negated;
+        private String functor;
+        private int arity;
+        private boolean negated;
 
         private Key(String functor, int arity, boolean negated) {
             this.functor = functor;
             this.arity = arity;
             this.negated = negated;
+        }
+
+        Key set(Literal l) {
+            functor = l.functor();
+            arity = l.arity();
+            negated = l.negated();
+            return this;
         }
 
         static Key of(Literal l) {
@@ -116,12 +126,21 @@ public final class BeliefBase {
     private Group spare;
     private int size;
 
+    /** The lookup key; the belief base is used by its agent's thread only. */
+    private final Key probe = new Key(null, 0, false);
+
+    private Group group(Literal l) {
+        return groups.get(probe.set(l));
+    }
+
     private Group groupFor(Literal l) {
-        return groups.computeIfAbsent(Key.of(l), k -> {
-            Group g = spare == null ? new Group() : spare;
+        Group g = group(l);
+        if (g == null) {
+            g = spare == null ? new Group() : spare;
             spare = null;
-            return g;
-        });
+            groups.put(Key.of(l), g);
+        }
+        return g;
     }
 
     /**
@@ -129,13 +148,13 @@ public final class BeliefBase {
      * iterate it while plans change the belief base.
      */
     public List<Entry> candidates(Literal l) {
-        var g = groups.get(Key.of(l));
+        var g = group(l);
         return g == null ? List.of() : g.snapshot();
     }
 
     /** {@return the stored fact with exactly these arguments (any annotations), or null} */
     public Literal fact(Literal l) {
-        var g = groups.get(Key.of(l));
+        var g = group(l);
         if (g == null) {
             return null;
         }
@@ -188,7 +207,7 @@ public final class BeliefBase {
      * disappears when no {@code source} annotation is left. {@return the removed part, or null}
      */
     public Literal remove(Literal stored, Literal removal) {
-        var group = groups.get(Key.of(stored));
+        var group = group(stored);
         if (group == null) {
             return null;
         }
@@ -205,7 +224,7 @@ public final class BeliefBase {
      * part, or null when there is no such fact}
      */
     public Literal removeFact(Literal removal) {
-        var group = groups.get(Key.of(removal));
+        var group = group(removal);
         if (group == null) {
             return null;
         }
@@ -241,7 +260,7 @@ public final class BeliefBase {
 
     /** Removes a stored entry (belief or rule) entirely. */
     public boolean removeEntry(Literal stored) {
-        var group = groups.get(Key.of(stored));
+        var group = group(stored);
         if (group == null) {
             return false;
         }
@@ -258,7 +277,7 @@ public final class BeliefBase {
         group.remove(e);
         size--;
         if (group.entries.isEmpty()) {
-            groups.remove(Key.of(stored));
+            groups.remove(probe.set(stored));
             spare = group;
         }
     }

@@ -111,8 +111,19 @@ final class Bindings {
         size = last;
     }
 
+    /** Replaces these bindings with a copy of another's, in the arrays already here when they fit. */
     void setFrom(Bindings other) {
-        copyFrom(other);
+        int n = other.size;
+        if (n == 0 || n > keys.length) {
+            copyFrom(other);
+            return;
+        }
+        System.arraycopy(other.keys, 0, keys, 0, n);
+        System.arraycopy(other.values, 0, values, 0, n);
+        Arrays.fill(keys, n, size > n ? size : n, null);
+        Arrays.fill(values, n, size > n ? size : n, null);
+        size = n;
+        index = other.index == null ? null : new HashMap<>(other.index);
     }
 
     int size() {

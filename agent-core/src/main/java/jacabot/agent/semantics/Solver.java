@@ -248,7 +248,31 @@ public final class Solver {
     // ---- lazy iterator helpers -----------------------------------------------------------------
 
     static Iterator<Unifier> single(Unifier u) {
-        return Collections.singletonList(u).iterator();
+        return new Single(u);
+    }
+
+    /** One solution (a single object, where a singleton list and its iterator are two). */
+    private static final class Single implements Iterator<Unifier> {
+        private Unifier next;
+
+        Single(Unifier u) {
+            this.next = u;
+        }
+
+        @Override
+        public boolean hasNext() {
+            return next != null;
+        }
+
+        @Override
+        public Unifier next() {
+            if (next == null) {
+                throw new NoSuchElementException();
+            }
+            Unifier u = next;
+            next = null;
+            return u;
+        }
     }
 
     /** For each outer element, the solutions it leads to, lazily. */

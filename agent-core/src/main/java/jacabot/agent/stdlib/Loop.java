@@ -29,17 +29,21 @@ final class Loop extends DefaultInternalAction {
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         IntendedMeans im = ag.circumstance().selectedIntention().peek();
         BodyStep loopStep = im.currentStep();
+        Unifier start = un;
         if (args.length == 2) {
             Literal withBackup = Literal.of(".loop", args[0], args[1], new ObjectTerm(un.copy()));
             loopStep = loopStep.withTerm(withBackup);
         } else {
-            un.setFrom((Unifier) ((ObjectTerm) args[2]).value());
+            // the condition is solved against the saved unifier itself (solving never changes it)
+            start = (Unifier) ((ObjectTerm) args[2]).value();
         }
-        Iterator<Unifier> it = ag.solver().solve(args[0], un);
+        Iterator<Unifier> it = ag.solver().solve(args[0], start);
         if (it.hasNext()) {
             un.setFrom(it.next());
             im.insertAfterCurrent(java.util.List.of(loopStep));
             im.insertAfterCurrent(((BodyTerm) args[1]).steps());
+        } else {
+            un.setFrom(start);
         }
         return true;
     }
