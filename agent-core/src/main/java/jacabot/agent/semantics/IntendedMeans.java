@@ -85,6 +85,16 @@ public final class IntendedMeans {
         }
     }
 
+    /** Places steps and then one more right after the current step (a loop's body and the loop again). */
+    public void insertAfterCurrent(List<BodyStep> more, BodyStep then) {
+        if (steps == null) {
+            insertAfterCurrent(List.of(then));
+            insertAfterCurrent(more);
+        } else {
+            steps = new StepList(steps.head, StepList.of(more, new StepList(then, steps.next)));
+        }
+    }
+
     /** Replaces the current step (e.g. a loop step with its saved state). */
     public void replaceCurrentStep(BodyStep step) {
         steps = new StepList(step, steps == null ? null : steps.next);

@@ -168,8 +168,14 @@ public final class Unifier {
         return t;
     }
 
-    /** {@return whether applying a unifier could change the term (variables or arithmetic)} */
-    static boolean needsApply(Term t) {
+    /**
+     * {@return whether applying this unifier changes the term: it has a bound variable or
+     * arithmetic} A term whose variables are all free comes back as it is, not copied.
+     */
+    private boolean needsApply(Term t) {
+        if (t instanceof Var v) {
+            return bindings.get(v) != null;
+        }
         if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
             return false;
         }
@@ -196,7 +202,7 @@ public final class Unifier {
                 }
                 x = c.tail();
             }
-            return !(x instanceof ListTerm.Empty);
+            return x instanceof Var v ? bindings.get(v) != null : !(x instanceof ListTerm.Empty);
         }
         return !(t instanceof jacabot.agent.syntax.ObjectTerm);
     }

@@ -45,8 +45,7 @@ final class Foreach extends DefaultInternalAction {
         }
         if (it.hasNext()) {
             un.setFrom(it.next());
-            im.insertAfterCurrent(java.util.List.of(forStep));
-            im.insertAfterCurrent(((BodyTerm) args[1]).steps());
+            im.insertAfterCurrent(((BodyTerm) args[1]).steps(), forStep);
         } else {
             un.setFrom(backup);
         }

@@ -40,8 +40,7 @@ final class Loop extends DefaultInternalAction {
         Iterator<Unifier> it = ag.solver().solve(args[0], start);
         if (it.hasNext()) {
             un.setFrom(it.next());
-            im.insertAfterCurrent(java.util.List.of(loopStep));
-            im.insertAfterCurrent(((BodyTerm) args[1]).steps());
+            im.insertAfterCurrent(((BodyTerm) args[1]).steps(), loopStep);
         } else {
             un.setFrom(start);
         }
