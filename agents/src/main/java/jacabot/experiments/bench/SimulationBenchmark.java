@@ -49,8 +49,9 @@ public final class SimulationBenchmark {
         var mw = m.result().middlewareCosts();
         long serialization = c.encodingNanos() + mw.decodingNanos();
         long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
-        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, %.0f s simulated in %.2f s: %.0fx real time, %d reasoning cycles, %d control steps%n",
-                seconds, wall / 1e9, seconds / (wall / 1e9), m.run().cycles(), m.result().steps());
+        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, %.0f s simulated in %.2f s: %.0fx real time; "
+                + "%d control steps, %d reasoning cycles, %d artifact steps%n", seconds, wall / 1e9, seconds / (wall / 1e9),
+                m.result().steps(), m.run().cycles(), m.run().artifactSteps());
         out.println("| part | wall time (s) | share | per control step (us) |");
         out.println("|---|---|---|---|");
         long steps = Math.max(1, m.result().steps());

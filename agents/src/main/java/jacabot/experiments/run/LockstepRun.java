@@ -87,6 +87,11 @@ public final class LockstepRun {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
+    /** {@return the artifact steps run so far (each runs on an operation thread: two thread hand-offs)} */
+    public long artifactSteps() {
+        return stepper.artifactSteps();
+    }
+
     /** {@return wall-clock ns spent so far: artifact steps, reasoning cycles} */
     public long[] agentSideCost() {
         return new long[] {stepper.artifactNanos(), stepper.reasoningNanos()};

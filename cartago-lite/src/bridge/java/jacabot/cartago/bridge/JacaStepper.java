@@ -13,6 +13,7 @@ public final class JacaStepper {
     private final Workspace workspace;
     private long artifactNanos;
     private long reasoningNanos;
+    private long artifactSteps;
 
     public JacaStepper(LocalMAS mas, Workspace workspace) {
         if (workspace.mode() != Workspace.Mode.STEPPED) {
@@ -36,6 +37,7 @@ public final class JacaStepper {
             artifactNanos += t1 - t0;
             reasoningNanos += System.nanoTime() - t1;
             cycles += run;
+            artifactSteps += steps;
             if (steps == 0 && run == 0) {
                 break;
             }
@@ -46,6 +48,11 @@ public final class JacaStepper {
     /** {@return wall-clock nanoseconds spent running artifact steps so far} */
     public long artifactNanos() {
         return artifactNanos;
+    }
+
+    /** {@return how many artifact steps (operations and their resumptions after an await) have run so far} */
+    public long artifactSteps() {
+        return artifactSteps;
     }
 
     /** {@return wall-clock nanoseconds spent in reasoning cycles so far} */
