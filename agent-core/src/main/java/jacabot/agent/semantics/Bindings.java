@@ -8,39 +8,32 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * The variable bindings of a {@link Unifier}: parallel arrays searched linearly, since a plan
- * rarely has more than a handful of variables, with a hash index once there are many. Copying
- * (done for every candidate plan and every solution) is two array copies of the bindings in use;
- * empty bindings share one empty array, so a fresh or copied empty unifier allocates none.
+ * The variable bindings of a {@link Unifier}: one array of variable and value pairs searched
+ * linearly, since a plan rarely has more than a handful of variables, with a hash index once
+ * there are many. Copying (done for every candidate plan and every solution) is one array copy of
+ * the pairs in use; empty bindings share one empty array, so a fresh or copied empty unifier
+ * allocates none.
  */
 final class Bindings {
     private static final int INDEX_FROM = 24;
-    private static final Var[] NO_KEYS = new Var[0];
-    private static final Term[] NO_VALUES = new Term[0];
-    private Var[] keys;
-    private Term[] values;
+    private static final Object[] NONE = new Object[0];
+    /** Variable {@code i} at {@code 2i}, its value at {@code 2i + 1}. */
+    private Object[] pairs;
     private int size;
     private HashMap<Var, Integer> index;
 
     Bindings() {
-        keys = NO_KEYS;
-        values = NO_VALUES;
+        pairs = NONE;
     }
 
     private Bindings(Bindings other) {
         copyFrom(other);
     }
 
-    /** Copies the bindings in use, with room for a few more (solutions usually bind some). */
+    /** Copies the pairs in use, with room for two more (solutions usually bind few). */
     private void copyFrom(Bindings other) {
         size = other.size;
-        if (size == 0) {
-            keys = NO_KEYS;
-            values = NO_VALUES;
-        } else {
-            keys = Arrays.copyOf(other.keys, size + 4);
-            values = Arrays.copyOf(other.values, size + 4);
-        }
+        pairs = size == 0 ? NONE : Arrays.copyOf(other.pairs, 2 * (size + 2));
         index = other.index == null ? null : new HashMap<>(other.index);
     }
 
@@ -53,8 +46,9 @@ final class Bindings {
             Integer i = index.get(v);
             return i == null ? -1 : i;
         }
+        Object[] p = pairs;
         for (int i = size - 1; i >= 0; i--) {
-            Var k = keys[i];
+            Object k = p[2 * i];
             if (k == v || k.equals(v)) {
                 return i;
             }
@@ -64,27 +58,26 @@ final class Bindings {
 
     Term get(Var v) {
         int i = indexOf(v);
-        return i < 0 ? null : values[i];
+        return i < 0 ? null : (Term) pairs[2 * i + 1];
     }
 
     void put(Var v, Term t) {
         int i = indexOf(v);
         if (i >= 0) {
-            values[i] = t;
+            pairs[2 * i + 1] = t;
             return;
         }
-        if (size == keys.length) {
-            keys = Arrays.copyOf(keys, Math.max(4, size * 2));
-            values = Arrays.copyOf(values, keys.length);
+        if (2 * size == pairs.length) {
+            pairs = Arrays.copyOf(pairs, Math.max(8, 4 * size));
         }
-        keys[size] = v;
-        values[size] = t;
+        pairs[2 * size] = v;
+        pairs[2 * size + 1] = t;
         if (index != null) {
             index.put(v, size);
         } else if (size + 1 >= INDEX_FROM) {
             index = new HashMap<>();
             for (int k = 0; k <= size; k++) {
-                index.put(keys[k], k);
+                index.put((Var) pairs[2 * k], k);
             }
         }
         size++;
@@ -100,28 +93,28 @@ final class Bindings {
             index.remove(v);
         }
         if (i != last) {
-            keys[i] = keys[last];
-            values[i] = values[last];
+            pairs[2 * i] = pairs[2 * last];
+            pairs[2 * i + 1] = pairs[2 * last + 1];
             if (index != null) {
-                index.put(keys[i], i);
+                index.put((Var) pairs[2 * i], i);
             }
         }
-        keys[last] = null;
-        values[last] = null;
+        pairs[2 * last] = null;
+        pairs[2 * last + 1] = null;
         size = last;
     }
 
-    /** Replaces these bindings with a copy of another's, in the arrays already here when they fit. */
+    /** Replaces these bindings with a copy of another's, in the array already here when it fits. */
     void setFrom(Bindings other) {
         int n = other.size;
-        if (n == 0 || n > keys.length) {
+        if (n == 0 || 2 * n > pairs.length) {
             copyFrom(other);
             return;
         }
-        System.arraycopy(other.keys, 0, keys, 0, n);
-        System.arraycopy(other.values, 0, values, 0, n);
-        Arrays.fill(keys, n, size > n ? size : n, null);
-        Arrays.fill(values, n, size > n ? size : n, null);
+        System.arraycopy(other.pairs, 0, pairs, 0, 2 * n);
+        if (size > n) {
+            Arrays.fill(pairs, 2 * n, 2 * size, null);
+        }
         size = n;
         index = other.index == null ? null : new HashMap<>(other.index);
     }
@@ -132,15 +125,15 @@ final class Bindings {
 
     /**
      * Forgets the bindings made since there were {@code mark}: unification only appends (it binds
-     * unbound variables), so undoing it is cutting the arrays back.
+     * unbound variables), so undoing it is cutting the array back.
      */
     void truncate(int mark) {
         for (int i = size - 1; i >= mark; i--) {
             if (index != null) {
-                index.remove(keys[i]);
+                index.remove((Var) pairs[2 * i]);
             }
-            keys[i] = null;
-            values[i] = null;
+            pairs[2 * i] = null;
+            pairs[2 * i + 1] = null;
         }
         size = Math.min(size, mark);
     }
@@ -152,7 +145,7 @@ final class Bindings {
     Map<Var, Term> asMap() {
         var m = new LinkedHashMap<Var, Term>();
         for (int i = 0; i < size; i++) {
-            m.put(keys[i], values[i]);
+            m.put((Var) pairs[2 * i], (Term) pairs[2 * i + 1]);
         }
         return m;
     }

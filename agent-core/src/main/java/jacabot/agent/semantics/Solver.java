@@ -61,7 +61,7 @@ public final class Solver {
                 case NOT:
                     return solve(e.left(), u).hasNext() ? Collections.emptyIterator() : single(u.copy());
                 case AND:
-                    return new FlatMap(solve(e.left(), u), s -> solve(e.right(), s));
+                    return new Conjunction(solve(e.left(), u), e.right());
                 default:
                     return new Concat(solve(e.left(), u), () -> solve(e.right(), u));
             }
@@ -80,7 +80,7 @@ public final class Solver {
         if (candidates.isEmpty()) {
             return Collections.emptyIterator();
         }
-        return new FlatMap(candidates.iterator(), e -> match(q, e, u));
+        return new Candidates(candidates, q, u);
     }
 
     private Iterator<Unifier> match(Literal q, BeliefBase.Entry e, Unifier u) {
@@ -275,25 +275,58 @@ public final class Solver {
         }
     }
 
-    /** For each outer element, the solutions it leads to, lazily. */
-    private static final class FlatMap implements Iterator<Unifier> {
-        private final Iterator<?> outer;
-        private final java.util.function.Function<Object, Iterator<Unifier>> inner;
+    /** Lazily, the solutions of one conjunct after another (one object per {@code &}). */
+    private final class Conjunction implements Iterator<Unifier> {
+        private final Iterator<Unifier> left;
+        private final Term right;
         private Iterator<Unifier> current = Collections.emptyIterator();
 
-        @SuppressWarnings("unchecked")
-        <T> FlatMap(Iterator<T> outer, java.util.function.Function<T, Iterator<Unifier>> inner) {
-            this.outer = outer;
-            this.inner = (java.util.function.Function<Object, Iterator<Unifier>>) inner;
+        Conjunction(Iterator<Unifier> left, Term right) {
+            this.left = left;
+            this.right = right;
         }
 
         @Override
         public boolean hasNext() {
             while (!current.hasNext()) {
-                if (!outer.hasNext()) {
+                if (!left.hasNext()) {
                     return false;
                 }
-                current = inner.apply(outer.next());
+                current = solve(right, left.next());
+            }
+            return true;
+        }
+
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new NoSuchElementException();
+            }
+            return current.next();
+        }
+    }
+
+    /** Lazily, the solutions of a query against each candidate belief or rule in turn. */
+    private final class Candidates implements Iterator<Unifier> {
+        private final List<BeliefBase.Entry> entries;
+        private final Literal query;
+        private final Unifier u;
+        private int next;
+        private Iterator<Unifier> current = Collections.emptyIterator();
+
+        Candidates(List<BeliefBase.Entry> entries, Literal query, Unifier u) {
+            this.entries = entries;
+            this.query = query;
+            this.u = u;
+        }
+
+        @Override
+        public boolean hasNext() {
+            while (!current.hasNext()) {
+                if (next == entries.size()) {
+                    return false;
+                }
+                current = match(query, entries.get(next++), u);
             }
             return true;
         }
