@@ -91,6 +91,8 @@ public final class BeliefBase {
      * snapshot reused by queries until the group changes.
      */
     private static final class Group {
+        /** Its key in the map (kept with a spare group: the same predicate often comes back). */
+        private Key key;
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
@@ -138,7 +140,10 @@ public final class BeliefBase {
         if (g == null) {
             g = spare == null ? new Group() : spare;
             spare = null;
-            groups.put(Key.of(l), g);
+            if (g.key == null || !g.key.equals(probe)) {
+                g.key = Key.of(l);
+            }
+            groups.put(g.key, g);
         }
         return g;
     }
@@ -186,7 +191,7 @@ public final class BeliefBase {
         var group = groupFor(l);
         Entry known = group.facts.get(l.args());
         if (known != null) {
-            if (known.literal.annots().containsAll(l.annots())) {
+            if (containsAll(known.literal.annots(), l.annots())) {
                 return null;
             }
             // the event announces only the new annotations, as Jason does
@@ -229,7 +234,7 @@ public final class BeliefBase {
             return null;
         }
         Entry e = group.facts.get(removal.args());
-        if (e == null || !e.literal.annots().containsAll(removal.annots())) {
+        if (e == null || !containsAll(e.literal.annots(), removal.annots())) {
             return null;
         }
         return removeAnnots(group, e, removal);
@@ -246,6 +251,16 @@ public final class BeliefBase {
         left.removeAll(removal.annots());
         e.literal = stored.withAnnots(left);
         return removal;
+    }
+
+    /** {@code all.containsAll(some)} by index, without iterators (annotation lists are short). */
+    private static boolean containsAll(List<Term> all, List<Term> some) {
+        for (int i = 0, n = some.size(); i < n; i++) {
+            if (!all.contains(some.get(i))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** {@return whether some source annotation of {@code annots} is not among those removed} */

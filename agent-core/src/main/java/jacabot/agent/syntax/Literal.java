@@ -59,6 +59,19 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         return true;
     }
 
+    // written out, with the values the record's would have: beliefs and annotations are compared
+    // and hashed all the time, and the generated methods are slow until compiled
+    @Override
+    public boolean equals(Object o) {
+        return o == this || o instanceof Literal l && negated == l.negated && functor.equals(l.functor)
+                && args.equals(l.args) && annots.equals(l.annots);
+    }
+
+    @Override
+    public int hashCode() {
+        return ((functor.hashCode() * 31 + args.hashCode()) * 31 + annots.hashCode()) * 31 + Boolean.hashCode(negated);
+    }
+
     public int arity() {
         return args.size();
     }
