@@ -40,6 +40,8 @@ public final class Agent {
     private final ArithEvaluator arith = new ArithEvaluator(this);
     private final ConcurrentLinkedQueue<Runnable> beginOfCycle = new ConcurrentLinkedQueue<>();
     private final PriorityQueue<Timer> timers = new PriorityQueue<>();
+    /** Whether {@code timers} may hold a timer: every cycle checks it without taking the lock. */
+    private volatile boolean hasTimers;
     private final Set<Literal> perceptBeliefs = new HashSet<>();
     private final AslParser parser;
     private Random random;
@@ -171,12 +173,17 @@ public final class Agent {
     /** Runs {@code task} at the start of a cycle once the clock reaches {@code due} (ms). */
     public synchronized void schedule(long due, Runnable task) {
         timers.add(new Timer(due, timerSerial++, task));
+        hasTimers = true;
     }
 
     /** Fires the timers that are due: their tasks run at the start of this cycle's deliberation. */
     void fireDueTimers() {
+        if (!hasTimers) {
+            return;
+        }
         synchronized (this) {
             if (timers.isEmpty()) {
+                hasTimers = false;
                 return;
             }
         }
