@@ -32,6 +32,8 @@ public final class LatencyBenchmark {
             "+obstacle(false) <- stop.", "");
     /** Simulated milliseconds between two moves of the box (each move is one sample). */
     static final long TOGGLE_MS = 120;
+    /** Real time: the samples of the first simulated seconds are dropped, while the JIT compiler still takes a core. */
+    static final double WARM_UP_SECONDS = 40;
 
     private final Path root;
     private final double seconds;
@@ -105,7 +107,12 @@ public final class LatencyBenchmark {
             run.runner().start();
             var mover = new BoxMover(w);
             long next = TOGGLE_MS * 10;
-            while (w.time() < seconds) {
+            boolean warm = false;
+            while (w.time() < WARM_UP_SECONDS + seconds) {
+                if (!warm && w.time() >= WARM_UP_SECONDS) {
+                    run.timings().clear();
+                    warm = true;
+                }
                 if (w.timeMs() >= next) {
                     mover.toggle();
                     next += TOGGLE_MS;

@@ -19,6 +19,12 @@ public final class LatencyRecorder {
         size = Math.min(size + 1, ring.length);
     }
 
+    /** Forgets every sample so far (the end of a warm-up). */
+    public synchronized void clear() {
+        next = 0;
+        size = 0;
+    }
+
     public synchronized LatencyStats stats() {
         long[] s = new long[size];
         for (int i = 0; i < size; i++) {

@@ -32,6 +32,14 @@ public final class LinkTimings {
         reactive.record(clock.nowMicros() - reading.sampledMicros());
     }
 
+    /** Forgets every sample so far: a benchmark's warm-up is over. */
+    public void clear() {
+        transport.clear();
+        delivery.clear();
+        reactive.clear();
+        response.clear();
+    }
+
     public LatencyStats transport() {
         return transport.stats();
     }
