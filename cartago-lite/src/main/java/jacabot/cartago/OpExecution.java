@@ -224,6 +224,9 @@ final class OpExecution implements Runnable {
         if (!suspendable) {
             throw new IllegalStateException("await is not allowed in init or dispose of " + core.id().name());
         }
+        if (slot.inline) {
+            throw new IllegalStateException("await is not allowed in " + describe() + ", which runs inline");
+        }
         core.commit();
         exit();
     }

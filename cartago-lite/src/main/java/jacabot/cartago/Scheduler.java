@@ -18,6 +18,8 @@ interface Scheduler {
         volatile boolean turn;
         /** Whether the execution is running a blocking command outside any turn. */
         volatile boolean outside;
+        /** Whether the execution runs on its caller's thread and may therefore not wait. */
+        volatile boolean inline;
     }
 
     /** Starts {@code op} on a carrier (now or later); it calls {@link #finished} at its end. */
@@ -49,6 +51,13 @@ interface Scheduler {
 
     /** Delivers later, never on the calling thread (for failures found before an operation starts). */
     void deliverLater(Runnable event);
+
+    /**
+     * Stepped mode: runs {@code op} to its end on the calling thread if it would be the next step
+     * anyway (nothing else is ready or waiting to be delivered); {@return false, doing nothing,
+     * otherwise, and in threaded mode}
+     */
+    boolean runInline(OpExecution op);
 
     /** Runs the pending steps (stepped mode); {@return how many ran} */
     int runPending();

@@ -69,6 +69,9 @@ final class SteppedScheduler implements Scheduler {
             }
             lock.unlock();
         }
+        if (op.slot.inline) {
+            throw new IllegalStateException("operation " + op.describe() + " runs inline and cannot wait for its guard");
+        }
         awaitTurn(op, clock.nowMillis(), ready, true);
         op.core().lock().lock();
     }
@@ -97,6 +100,10 @@ final class SteppedScheduler implements Scheduler {
 
     @Override
     public void finished(OpExecution op) {
+        if (op.slot.inline) {
+            op.slot.turn = false; // the caller's own turn: nobody waits for it back
+            return;
+        }
         synchronized (this) {
             live--;
         }
@@ -113,6 +120,29 @@ final class SteppedScheduler implements Scheduler {
     @Override
     public void deliverLater(Runnable event) {
         deliver(event);
+    }
+
+    @Override
+    public boolean runInline(OpExecution op) {
+        List<Waiter> candidates;
+        synchronized (this) {
+            if (runner != null) {
+                throw new IllegalStateException("an operation of workspace " + workspace + " cannot run inline during runPending()");
+            }
+            if (!outbox.isEmpty()) {
+                return false;
+            }
+            candidates = new ArrayList<>(waiting);
+        }
+        for (Waiter w : candidates) {
+            if (w.launch() || isReady(w)) {
+                return false; // it would run first
+            }
+        }
+        op.slot.inline = true;
+        op.slot.turn = true;
+        op.run();
+        return true;
     }
 
     @Override

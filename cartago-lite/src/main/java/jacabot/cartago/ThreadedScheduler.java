@@ -97,6 +97,11 @@ final class ThreadedScheduler implements Scheduler {
     }
 
     @Override
+    public boolean runInline(OpExecution op) {
+        return false;
+    }
+
+    @Override
     public int runPending() {
         throw new IllegalStateException("runPending() is for stepped workspaces; workspace " + workspace + " is threaded");
     }

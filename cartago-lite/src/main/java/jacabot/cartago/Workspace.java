@@ -173,6 +173,33 @@ public final class Workspace implements AutoCloseable {
         }
     }
 
+    /**
+     * Stepped mode, for a host feeding an artifact between two {@link #runPending()} calls (a
+     * lockstep runner delivering a control step's readings): as {@link #execOp}, but when the
+     * operation would be the next step anyway, it runs to its end now, on the calling thread,
+     * sparing two thread hand-offs. Such an operation may not wait (an {@code await}, a false guard
+     * make it fail). Its events and outcome are delivered at the next {@code runPending}, as usual.
+     */
+    public void execOpInline(AgentId agent, OpTarget target, String operation, Object[] args, OpCallback callback) {
+        Objects.requireNonNull(callback, "callback");
+        Object[] values = args == null ? new Object[0] : args.clone();
+        if (closed) {
+            callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
+            return;
+        }
+        OpExecution op;
+        try {
+            op = OpResolver.prepare(this, Objects.requireNonNull(agent, "agent"), Objects.requireNonNull(target, "target"),
+                    Objects.requireNonNull(operation, "operation"), values, callback);
+        } catch (OpFailedException e) {
+            scheduler.deliverLater(() -> callback.completed(e.failure()));
+            return;
+        }
+        if (!scheduler.runInline(op)) {
+            scheduler.launch(op);
+        }
+    }
+
     /** Starts an internal operation of {@code core} for {@code agent}; see {@link Artifact#execInternalOp}. */
     void startInternal(ArtifactCore core, AgentId agent, String operation, Object[] args) {
         scheduler.launch(OpResolver.prepareFromArtifact(core, agent, operation, args, OpMethod.Kind.INTERNAL, null));
