@@ -5,13 +5,17 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Map;
 
 /** ProcMsg: how a received message changes beliefs, goals or a waiting ask. */
 final class MessageHandler {
     private final Agent ag;
     private final ReasoningCycle rc;
+    /** {@code source(S)} by sender: a stream of messages from one agent shares one annotation. */
+    private final Map<String, Literal> sources = new HashMap<>();
 
     MessageHandler(Agent ag, ReasoningCycle rc) {
         this.ag = ag;
@@ -27,8 +31,8 @@ final class MessageHandler {
                 return;
             }
         }
-        String sender = m.sender().equals(ag.name()) ? "self" : m.sender();
-        Literal source = Literal.of("source", Literal.atom(sender));
+        Literal source = sources.computeIfAbsent(m.sender(),
+                s -> Literal.of("source", Literal.atom(s.equals(ag.name()) ? "self" : s)));
         Term content = m.content();
         switch (m.performative()) {
             case "tell":

@@ -8,7 +8,6 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
-import java.util.List;
 
 /**
  * {@code .send(Receiver, Performative, Content[, Answer[, Timeout]])}: sends a message. An ask
@@ -23,15 +22,14 @@ final class Send extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         String performative = text(args[1]);
-        List<Term> receivers = args[0] instanceof ListTerm l ? l.elements() : List.of(args[0]);
         boolean syncAsk = args.length >= 4 && performative.startsWith("ask");
         String id = ag.nextMessageId();
-        for (Term r : receivers) {
-            String receiver = text(r);
-            Message m = new Message(id, ag.name(), receiver, performative, args[2], null);
-            if (!ag.arch().sendMessage(m)) {
-                throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
+        if (args[0] instanceof ListTerm l) {
+            for (Term r : l.elements()) {
+                send(ag, id, text(r), performative, args[2]);
             }
+        } else {
+            send(ag, id, text(args[0]), performative, args[2]);
         }
         if (syncAsk) {
             Intention si = ag.circumstance().selectedIntention();
@@ -50,5 +48,12 @@ final class Send extends DefaultInternalAction {
             }
         }
         return true;
+    }
+
+    private static void send(Agent ag, String id, String receiver, String performative, Term content)
+            throws IaException {
+        if (!ag.arch().sendMessage(new Message(id, ag.name(), receiver, performative, content, null))) {
+            throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
+        }
     }
 }
