@@ -34,6 +34,8 @@ public final class LatencyBenchmark {
     static final long TOGGLE_MS = 120;
     /** Real time: the samples of the first simulated seconds are dropped, while the JIT compiler still takes a core. */
     static final double WARM_UP_SECONDS = 40;
+    /** Samples of each hand-off of the machine's floor (one per millisecond). */
+    static final int FLOOR_SAMPLES = 3000;
 
     private final Path root;
     private final double seconds;
@@ -59,6 +61,12 @@ public final class LatencyBenchmark {
         stage("sampled -> read off the socket by the middleware (transport)", stages.transport());
         stage("sampled -> taken by the artifact's serving loop (delivery)", stages.delivery());
         stage("sampled -> the plan it triggers is selected (reactive)", stages.reactive());
+        out.println();
+        out.println("The floor on this machine: one hand-off after 1 ms idle, as between two control steps:");
+        out.println("| hand-off | samples | median / p90 / p99 / max (ms) |");
+        out.println("|---|---|---|");
+        stage("a parked thread woken by another (LockSupport.unpark)", WakeUpFloor.threadWakeUps(FLOOR_SAMPLES));
+        stage("a byte over loopback TCP to a blocked reader", WakeUpFloor.socketWakeUps(FLOOR_SAMPLES));
     }
 
     private void stage(String name, LatencyStats s) {
