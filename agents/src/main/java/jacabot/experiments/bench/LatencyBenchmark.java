@@ -146,8 +146,9 @@ public final class LatencyBenchmark {
         var result = run.runFor(seconds * 4);
         print("lockstep", run.reactiveTimes(), result.response());
         out.println();
-        out.println("In lockstep a command sent during control step k is applied when step k ends, before the world "
-                + "advances to k+1 (the controller waits for the step's acknowledgement).");
+        out.printf(Locale.ROOT, "Lockstep: %d commands answered a control step k; the latest was applied at step k+%d "
+                + "(the controller applies a step's answer before the world leaves it).%n",
+                result.timings().lockstepApplied(), result.timings().maxStepsLate());
     }
 
     private void print(String mode, LatencyStats reactive, LatencyStats response) {

@@ -22,6 +22,8 @@ public final class LinkTimings {
     private final LatencyRecorder delivery = new LatencyRecorder(CAPACITY);
     private final LatencyRecorder reactive = new LatencyRecorder(CAPACITY);
     private final LatencyRecorder response = new LatencyRecorder(CAPACITY);
+    private final java.util.concurrent.atomic.LongAdder answered = new java.util.concurrent.atomic.LongAdder();
+    private final java.util.concurrent.atomic.AtomicLong maxStepsLate = new java.util.concurrent.atomic.AtomicLong();
 
     LinkTimings(LinkClock clock) {
         this.clock = clock;
@@ -38,6 +40,8 @@ public final class LinkTimings {
         delivery.clear();
         reactive.clear();
         response.clear();
+        answered.reset();
+        maxStepsLate.set(0);
     }
 
     public LatencyStats transport() {
@@ -66,6 +70,22 @@ public final class LinkTimings {
 
     void applied(long actionMicros, long appliedMicros) {
         response.record(appliedMicros - actionMicros);
+    }
+
+    /** Lockstep: a command that answered step k was applied at step k + {@code steps}. */
+    void appliedSteps(long steps) {
+        answered.increment();
+        maxStepsLate.accumulateAndGet(steps, Math::max);
+    }
+
+    /** {@return how many lockstep answers the controller reported applied} */
+    public long lockstepApplied() {
+        return answered.sum();
+    }
+
+    /** {@return the most control steps between a lockstep answer's step and the step it was applied at} */
+    public long maxStepsLate() {
+        return maxStepsLate.get();
     }
 
     @Override

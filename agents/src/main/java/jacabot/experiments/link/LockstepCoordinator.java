@@ -40,7 +40,7 @@ public final class LockstepCoordinator {
 
     /** What a run leaves: its steps, the controller's and the agent side's event logs, the timings. */
     public record Result(long steps, List<String> controllerLog, List<String> agentLog, LatencyStats response,
-                         List<String> linkLog, LinkCosts controllerCosts, LinkCosts middlewareCosts) {
+                         List<String> linkLog, LinkCosts controllerCosts, LinkCosts middlewareCosts, LinkTimings timings) {
         /** {@return both logs as one text, controller first (what two runs must agree on)} */
         public String eventLog() {
             return String.join("\n", controllerLog) + "\n--\n" + String.join("\n", agentLog) + "\n";
@@ -112,7 +112,7 @@ public final class LockstepCoordinator {
             }
             return new Result(server.steps, List.copyOf(controllerLog), List.copyOf(agentLog),
                     link.middleware().timings().response(), List.copyOf(linkLog), link.controller().linkCosts(),
-                    link.middleware().costs());
+                    link.middleware().costs(), link.middleware().timings());
         }
     }
 

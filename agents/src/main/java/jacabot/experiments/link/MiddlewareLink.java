@@ -47,6 +47,10 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
 
     private static final int PENDING_RESPONSES = 10_000;
 
+    /** A robot command on its way: when the agent's action sent it, and the lockstep step it answered (or −1). */
+    private record Sent(long actionMicros, long step) {
+    }
+
     private final LinkConfig config;
     private final ServerSocket server;
     private final BlockingDeque<LinkEvent> events = new LinkedBlockingDeque<>();
@@ -54,11 +58,11 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     private final AtomicInteger seq = new AtomicInteger();
     private final LinkTimings timings;
     private final LinkCosts costs = new LinkCosts();
-    private final Map<Integer, Long> actionTimes = new LinkedHashMap<>(16, 0.75f, false) {
+    private final Map<Integer, Sent> actionTimes = new LinkedHashMap<>(16, 0.75f, false) {
         private static final long serialVersionUID = 1L;
 
         @Override
-        protected boolean removeEldestEntry(Map.Entry<Integer, Long> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<Integer, Sent> eldest) {
             return size() > PENDING_RESPONSES; // commands whose APPLIED report never came
         }
     };
@@ -224,7 +228,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         boolean robotCommand = command.code().isRobotCommand();
         if (robotCommand) {
             synchronized (actionTimes) {
-                actionTimes.put(n, actionMicros);
+                actionTimes.put(n, new Sent(actionMicros, -1));
             }
         }
         try {
@@ -267,7 +271,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             frames.add(commands.get(i));
             if (commands.get(i).code().isRobotCommand()) {
                 synchronized (actionTimes) {
-                    actionTimes.put(seqs[i], now);
+                    actionTimes.put(seqs[i], new Sent(now, step));
                 }
             }
         }
@@ -376,12 +380,15 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             dispatch(new LinkEvent.StepMarker(m.step(), m.simTimeMs(), m.awaitsAck()));
         } else if (frame instanceof Uplink.Applied) {
             Uplink.Applied a = (Uplink.Applied) frame;
-            Long action;
+            Sent sent;
             synchronized (actionTimes) {
-                action = actionTimes.remove(a.seq());
+                sent = actionTimes.remove(a.seq());
             }
-            if (action != null) {
-                timings.applied(action, a.appliedMicros());
+            if (sent != null) {
+                timings.applied(sent.actionMicros(), a.appliedMicros());
+                if (sent.step() >= 0) {
+                    timings.appliedSteps(a.step() - sent.step());
+                }
             }
         } else if (frame instanceof Uplink.FailSafe) {
             Uplink.FailSafe f = (Uplink.FailSafe) frame;
