@@ -275,30 +275,27 @@ public final class Solver {
         }
     }
 
-    /** Lazily, the solutions of one conjunct after another (one object per {@code &}). */
-    private final class Conjunction implements Iterator<Unifier> {
-        private final Iterator<Unifier> left;
-        private final Term right;
+    /** Lazily, the solutions of one source after another (the shape of {@code &} and of candidates). */
+    private abstract static class Chain implements Iterator<Unifier> {
         private Iterator<Unifier> current = Collections.emptyIterator();
 
-        Conjunction(Iterator<Unifier> left, Term right) {
-            this.left = left;
-            this.right = right;
-        }
+        /** {@return the solutions of the next source, or null when there is none left} */
+        abstract Iterator<Unifier> nextSource();
 
         @Override
-        public boolean hasNext() {
+        public final boolean hasNext() {
             while (!current.hasNext()) {
-                if (!left.hasNext()) {
+                Iterator<Unifier> source = nextSource();
+                if (source == null) {
                     return false;
                 }
-                current = solve(right, left.next());
+                current = source;
             }
             return true;
         }
 
         @Override
-        public Unifier next() {
+        public final Unifier next() {
             if (!hasNext()) {
                 throw new NoSuchElementException();
             }
@@ -306,13 +303,28 @@ public final class Solver {
         }
     }
 
-    /** Lazily, the solutions of a query against each candidate belief or rule in turn. */
-    private final class Candidates implements Iterator<Unifier> {
+    /** The solutions of one conjunct after another (one object per {@code &}). */
+    private final class Conjunction extends Chain {
+        private final Iterator<Unifier> left;
+        private final Term right;
+
+        Conjunction(Iterator<Unifier> left, Term right) {
+            this.left = left;
+            this.right = right;
+        }
+
+        @Override
+        Iterator<Unifier> nextSource() {
+            return left.hasNext() ? solve(right, left.next()) : null;
+        }
+    }
+
+    /** The solutions of a query against each candidate belief or rule in turn. */
+    private final class Candidates extends Chain {
         private final List<BeliefBase.Entry> entries;
         private final Literal query;
         private final Unifier u;
         private int next;
-        private Iterator<Unifier> current = Collections.emptyIterator();
 
         Candidates(List<BeliefBase.Entry> entries, Literal query, Unifier u) {
             this.entries = entries;
@@ -321,22 +333,8 @@ public final class Solver {
         }
 
         @Override
-        public boolean hasNext() {
-            while (!current.hasNext()) {
-                if (next == entries.size()) {
-                    return false;
-                }
-                current = match(query, entries.get(next++), u);
-            }
-            return true;
-        }
-
-        @Override
-        public Unifier next() {
-            if (!hasNext()) {
-                throw new NoSuchElementException();
-            }
-            return current.next();
+        Iterator<Unifier> nextSource() {
+            return next == entries.size() ? null : match(query, entries.get(next++), u);
         }
     }
 
