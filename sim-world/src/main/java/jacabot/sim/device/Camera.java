@@ -23,6 +23,8 @@ public final class Camera extends Sensor {
     private final RayCaster caster;
     private final Rgb floor, background;
     private int[] image;
+    /** Each row's ray slope (rise per metre), the same for every column and frame. */
+    private final double[] rowSlopes;
 
     /**
      * @param fov         horizontal field of view in degrees
@@ -44,6 +46,11 @@ public final class Camera extends Sensor {
         this.caster = caster;
         this.floor = floor;
         this.background = background;
+        double vfov = fov * height / width;
+        this.rowSlopes = new double[height];
+        for (int r = 0; r < height; r++) {
+            rowSlopes[r] = Math.tan(Math.toRadians(vfov / 2 - (r + 0.5) * vfov / height));
+        }
     }
 
     public int getWidth() {
@@ -112,13 +119,11 @@ public final class Camera extends Sensor {
         int[] img = new int[width * height];
         Arrays.fill(img, background.packed());
         Pose p = mount.get();
-        double vfov = fov * height / width;
         for (int c = 0; c < width; c++) {
             double bearing = p.heading() - fov / 2 + (c + 0.5) * fov / width;
             List<RayHit> hits = caster.castAll(p.position(), bearing, range);
             for (int r = 0; r < height; r++) {
-                double slope = Math.tan(Math.toRadians(vfov / 2 - (r + 0.5) * vfov / height));
-                img[r * width + c] = pixel(hits, slope).packed();
+                img[r * width + c] = pixel(hits, rowSlopes[r]).packed();
             }
         }
         return img;
