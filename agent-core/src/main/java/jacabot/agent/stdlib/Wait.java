@@ -15,6 +15,9 @@ import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.TriggerTerm;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * {@code .wait(ms)}, {@code .wait({+e})}, {@code .wait("+e")}, {@code .wait(Formula)}, each with an
@@ -23,6 +26,14 @@ import jacabot.agent.syntax.TriggerTerm;
  * read from the agent's clock, so they are simulated when a simulator drives the clock.
  */
 final class Wait extends DefaultInternalAction {
+    /**
+     * Event strings parse once: an agent waits for the same event again and again
+     * ({@code .wait("+cylinderDetected", 8000)}), and parsing dwarfs the rest of the action.
+     * Triggers are immutable, so every agent can share them.
+     */
+    private static final Map<String, Optional<Trigger>> PARSED = new ConcurrentHashMap<>();
+    private static final int PARSED_MAX = 1024;
+
     Wait() {
         super(".wait", 1, 3);
     }
@@ -70,14 +81,21 @@ final class Wait extends DefaultInternalAction {
             return tt.trigger();
         }
         if (t instanceof StringTerm s) {
-            try {
-                Term parsed = ag.parser().parseTerm("{" + s.value() + "}");
-                return parsed instanceof TriggerTerm tt ? tt.trigger() : null;
-            } catch (AslSyntaxException e) {
-                return null;
+            if (PARSED.size() >= PARSED_MAX) {
+                PARSED.clear(); // a program that builds its event strings: keep the memory bounded
             }
+            return PARSED.computeIfAbsent(s.value(), text -> parse(ag, text)).orElse(null);
         }
         return null;
+    }
+
+    private static Optional<Trigger> parse(Agent ag, String text) {
+        try {
+            Term parsed = ag.parser().parseTerm("{" + text + "}");
+            return parsed instanceof TriggerTerm tt ? Optional.of(tt.trigger()) : Optional.empty();
+        } catch (AslSyntaxException e) {
+            return Optional.empty();
+        }
     }
 
     /** A suspended intention waiting for an event, a formula or a time. */
