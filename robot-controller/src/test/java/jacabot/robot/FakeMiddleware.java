@@ -34,6 +34,22 @@ final class FakeMiddleware implements AutoCloseable {
         return server.getLocalPort();
     }
 
+    /** Starts a controller of the navigation world's robot, pointed at this middleware, stepping on its own thread. */
+    RobotController startController(ControllerConfig config) throws Exception {
+        var controller = new RobotController(RobotControllerTest.world("navigation"),
+                config.withAddress("127.0.0.1", port()));
+        controller.start();
+        controller.runner().start();
+        return controller;
+    }
+
+    /** Stops a controller from {@link #startController}, then this middleware. */
+    void stop(RobotController controller) throws Exception {
+        controller.close();
+        controller.runner().stop();
+        close();
+    }
+
     /** Accepts a controller and answers its handshake with {@code version}. */
     Peer accept(int version) throws IOException {
         Socket s = server.accept();

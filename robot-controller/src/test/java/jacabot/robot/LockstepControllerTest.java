@@ -26,18 +26,13 @@ class LockstepControllerTest {
     @BeforeEach
     void start() throws Exception {
         middleware = new FakeMiddleware();
-        var config = ControllerConfig.defaults().withAddress("127.0.0.1", middleware.port()).withLockstep(true)
-                .withBackoff(20, 100).withLog(log::add);
-        controller = new RobotController(RobotControllerTest.world("navigation"), config);
-        controller.start();
-        controller.runner().start();
+        controller = middleware.startController(ControllerConfig.defaults().withLockstep(true).withBackoff(20, 100)
+                .withLog(log::add));
     }
 
     @AfterEach
     void stop() throws Exception {
-        controller.close();
-        controller.runner().stop();
-        middleware.close();
+        middleware.stop(controller);
     }
 
     private static Uplink.StepMarker marker(FakeMiddleware.Peer peer, long step) throws InterruptedException {

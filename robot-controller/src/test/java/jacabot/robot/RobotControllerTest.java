@@ -36,18 +36,13 @@ class RobotControllerTest {
     @BeforeEach
     void start() throws Exception {
         middleware = new FakeMiddleware();
-        var config = ControllerConfig.defaults().withAddress("127.0.0.1", middleware.port()).withSpeedFactor(20)
-                .withFailSafeMs(500).withBackoff(20, 100).withClocks(() -> 0, nanos::get).withLog(log::add);
-        controller = new RobotController(world("navigation"), config);
-        controller.start();
-        controller.runner().start();
+        controller = middleware.startController(ControllerConfig.defaults().withSpeedFactor(20).withFailSafeMs(500)
+                .withBackoff(20, 100).withClocks(() -> 0, nanos::get).withLog(log::add));
     }
 
     @AfterEach
     void stop() throws Exception {
-        controller.close();
-        controller.runner().stop();
-        middleware.close();
+        middleware.stop(controller);
     }
 
     @Test
