@@ -159,8 +159,10 @@ public final class LockstepCoordinator {
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
-            } catch (RuntimeException failed) {
-                failure = failed;
+            } catch (RuntimeException | Error failed) {
+                // reported to the caller of runFor; the reading thread must not die with it
+                failure = failed instanceof RuntimeException r ? r
+                        : new IllegalStateException("the agent side failed: " + failed, failed);
                 end.countDown();
             }
         }

@@ -47,6 +47,20 @@ class LockstepCoordinatorTest {
     }
 
     @Test
+    void anAgentSideThatFailsEndsTheRunWithItsFailure() throws Exception {
+        SimWorld world = MiddlewareLinkTest.world("navigation");
+        var run = new LockstepCoordinator(world, "khepera", data -> {
+            if (data.step() == 3) {
+                throw new AssertionError("the agent side broke");
+            }
+            return List.of();
+        });
+        // an Error on the link's reading thread, not only an exception, reaches the caller
+        var e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class, () -> run.runFor(10));
+        assertTrue(e.getMessage().contains("the agent side broke"), e.getMessage());
+    }
+
+    @Test
     void aCommandSentDuringStepKIsInEffectAtStepKPlusOne() throws Exception {
         var agent = new StopAtObstacle();
         var result = run(agent);
