@@ -58,6 +58,36 @@ class MiddlewareLinkTest {
     }
 
     @Test
+    void afterAHandOverEveryEventGoesToTheHandlerInOrderTheQueuedOnesFirst() throws Exception {
+        var cc = ControllerConfig.defaults().withSpeedFactor(20).withLog(log::add);
+        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+            MiddlewareLink m = link.middleware();
+            assertTrue(m.awaitConnected(10, TimeUnit.SECONDS));
+            link.controller().runner().start();
+            List<LinkEvent> handled = new CopyOnWriteArrayList<>();
+            while (m.simTimeMs() < 400) {
+                Thread.sleep(10); // ten steps queue up before the hand-over
+            }
+            m.handOver(handled::add);
+            long markers;
+            do {
+                Thread.sleep(10);
+                markers = handled.stream().filter(e -> e instanceof LinkEvent.StepMarker).count();
+            } while (markers < 20);
+            link.controller().runner().stop();
+            assertInstanceOf(LinkEvent.Connected.class, handled.get(0), "the queued events came first");
+            long lastStep = -1;
+            for (LinkEvent e : handled) {
+                if (e instanceof LinkEvent.StepMarker) {
+                    assertEquals(lastStep + 1, ((LinkEvent.StepMarker) e).step(), "markers in order, none lost");
+                    lastStep = ((LinkEvent.StepMarker) e).step();
+                }
+            }
+            assertEquals(null, m.poll(50, TimeUnit.MILLISECONDS), "nothing left in the queue");
+        }
+    }
+
+    @Test
     void aControllerConnectsSendsReadingsWithSimulatedTimeAndObeysCommands() throws Exception {
         var cc = ControllerConfig.defaults().withSpeedFactor(20).withLog(log::add);
         try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
