@@ -58,7 +58,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     private final AtomicInteger seq = new AtomicInteger();
     private final LinkTimings timings;
     private final LinkCosts costs = new LinkCosts();
-    private final Map<Integer, Sent> actionTimes = new LinkedHashMap<>(16, 0.75f, false) {
+    private final Map<Integer, Sent> inFlight = new LinkedHashMap<>(16, 0.75f, false) {
         private static final long serialVersionUID = 1L;
 
         @Override
@@ -227,8 +227,8 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         int n = seq.incrementAndGet();
         boolean robotCommand = command.code().isRobotCommand();
         if (robotCommand) {
-            synchronized (actionTimes) {
-                actionTimes.put(n, new Sent(actionMicros, -1));
+            synchronized (inFlight) {
+                inFlight.put(n, new Sent(actionMicros, -1));
             }
         }
         try {
@@ -270,8 +270,8 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             seqs[i] = seq.incrementAndGet();
             frames.add(commands.get(i));
             if (commands.get(i).code().isRobotCommand()) {
-                synchronized (actionTimes) {
-                    actionTimes.put(seqs[i], new Sent(now, step));
+                synchronized (inFlight) {
+                    inFlight.put(seqs[i], new Sent(now, step));
                 }
             }
         }
@@ -381,8 +381,8 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         } else if (frame instanceof Uplink.Applied) {
             Uplink.Applied a = (Uplink.Applied) frame;
             Sent sent;
-            synchronized (actionTimes) {
-                sent = actionTimes.remove(a.seq());
+            synchronized (inFlight) {
+                sent = inFlight.remove(a.seq());
             }
             if (sent != null) {
                 timings.applied(sent.actionMicros(), a.appliedMicros());
