@@ -155,22 +155,7 @@ public final class Workspace implements AutoCloseable {
      * {@code bad_argument}).
      */
     public void execOp(AgentId agent, OpTarget target, String operation, Object[] args, OpCallback callback) {
-        Objects.requireNonNull(agent, "agent");
-        Objects.requireNonNull(target, "target");
-        Objects.requireNonNull(operation, "operation");
-        Objects.requireNonNull(callback, "callback");
-        Object[] values = args == null ? new Object[0] : args.clone();
-        if (closed) {
-            callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
-            return;
-        }
-        try {
-            scheduler.launch(OpResolver.prepare(this, agent, target, operation, values, callback));
-        } catch (OpFailedException e) {
-            scheduler.deliverLater(() -> callback.completed(e.failure()));
-        } catch (RejectedExecutionException e) {
-            callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
-        }
+        start(agent, target, operation, args, callback, false);
     }
 
     /**
@@ -181,22 +166,29 @@ public final class Workspace implements AutoCloseable {
      * make it fail). Its events and outcome are delivered at the next {@code runPending}, as usual.
      */
     public void execOpInline(AgentId agent, OpTarget target, String operation, Object[] args, OpCallback callback) {
+        start(agent, target, operation, args, callback, true);
+    }
+
+    private void start(AgentId agent, OpTarget target, String operation, Object[] args, OpCallback callback,
+            boolean inline) {
+        Objects.requireNonNull(agent, "agent");
+        Objects.requireNonNull(target, "target");
+        Objects.requireNonNull(operation, "operation");
         Objects.requireNonNull(callback, "callback");
         Object[] values = args == null ? new Object[0] : args.clone();
         if (closed) {
             callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
             return;
         }
-        OpExecution op;
         try {
-            op = OpResolver.prepare(this, Objects.requireNonNull(agent, "agent"), Objects.requireNonNull(target, "target"),
-                    Objects.requireNonNull(operation, "operation"), values, callback);
+            OpExecution op = OpResolver.prepare(this, agent, target, operation, values, callback);
+            if (!inline || !scheduler.runInline(op)) {
+                scheduler.launch(op);
+            }
         } catch (OpFailedException e) {
             scheduler.deliverLater(() -> callback.completed(e.failure()));
-            return;
-        }
-        if (!scheduler.runInline(op)) {
-            scheduler.launch(op);
+        } catch (RejectedExecutionException e) {
+            callback.completed(OpOutcome.Failure.of("workspace " + name + " is closed", "workspace_closed"));
         }
     }
 

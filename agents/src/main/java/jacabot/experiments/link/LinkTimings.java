@@ -1,6 +1,8 @@
 package jacabot.experiments.link;
 
 import jacabot.robot.link.LinkClock;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
 
 /**
  * The timestamps of the thesis' performance analysis (Chapter 5 §3), taken on both sides of the
@@ -22,8 +24,8 @@ public final class LinkTimings {
     private final LatencyRecorder delivery = new LatencyRecorder(CAPACITY);
     private final LatencyRecorder reactive = new LatencyRecorder(CAPACITY);
     private final LatencyRecorder response = new LatencyRecorder(CAPACITY);
-    private final java.util.concurrent.atomic.LongAdder answered = new java.util.concurrent.atomic.LongAdder();
-    private final java.util.concurrent.atomic.AtomicLong maxStepsLate = new java.util.concurrent.atomic.AtomicLong();
+    private final LongAdder answered = new LongAdder();
+    private final AtomicLong maxStepsLate = new AtomicLong();
 
     LinkTimings(LinkClock clock) {
         this.clock = clock;

@@ -224,13 +224,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         if (c == null) {
             return false;
         }
-        int n = seq.incrementAndGet();
-        boolean robotCommand = command.code().isRobotCommand();
-        if (robotCommand) {
-            synchronized (inFlight) {
-                inFlight.put(n, new Sent(actionMicros, -1));
-            }
-        }
+        int n = number(command, actionMicros, -1);
         try {
             c.send(n, config.clock().nowMicros(), command);
             lastSentNanos = System.nanoTime();
@@ -239,6 +233,20 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             c.close("cannot send " + command + ": " + e.getMessage());
             return false;
         }
+    }
+
+    /**
+     * {@return the next sequence number, given to {@code command}}; a robot command is remembered
+     * until its {@code APPLIED} report, with when the agent sent it and the lockstep step it answers (−1: none).
+     */
+    private int number(Command command, long actionMicros, long step) {
+        int n = seq.incrementAndGet();
+        if (command.code().isRobotCommand()) {
+            synchronized (inFlight) {
+                inFlight.put(n, new Sent(actionMicros, step));
+            }
+        }
+        return n;
     }
 
     /** Closes the current connection (the controller stops its wheels and reconnects). */
@@ -264,19 +272,12 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             return false;
         }
         long now = config.clock().nowMicros();
-        List<Command> frames = new ArrayList<>(commands.size() + 1);
-        int[] seqs = new int[commands.size() + 1];
-        for (int i = 0; i < commands.size(); i++) {
-            seqs[i] = seq.incrementAndGet();
-            frames.add(commands.get(i));
-            if (commands.get(i).code().isRobotCommand()) {
-                synchronized (inFlight) {
-                    inFlight.put(seqs[i], new Sent(now, step));
-                }
-            }
-        }
-        seqs[commands.size()] = seq.incrementAndGet();
+        List<Command> frames = new ArrayList<>(commands);
         frames.add(Command.stepAck(step));
+        int[] seqs = new int[frames.size()];
+        for (int i = 0; i < frames.size(); i++) {
+            seqs[i] = number(frames.get(i), now, step);
+        }
         try {
             c.send(seqs, now, frames);
             lastSentNanos = System.nanoTime();
