@@ -3,9 +3,9 @@ package jacabot.scenario;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.experiments.run.Experiment;
-import jacabot.sim.ObjectState;
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
+import jacabot.sim.engine.ObjectState;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.world.BoxSpec;
 import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.Tag;

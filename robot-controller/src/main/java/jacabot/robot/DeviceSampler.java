@@ -2,7 +2,7 @@ package jacabot.robot;
 
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.Camera;
 import jacabot.sim.device.DistanceSensor;
 import jacabot.sim.device.Section;

@@ -5,7 +5,7 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.Uplink;
-import jacabot.sim.Pose;
+import jacabot.sim.geom.Pose;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;

@@ -1,4 +1,6 @@
 package jacabot.sim;
+import jacabot.sim.engine.WorldListener;
+import jacabot.sim.engine.WorldSnapshot;
 
 import jacabot.sim.device.Camera;
 import jacabot.sim.device.DistanceSensor;

@@ -1,4 +1,6 @@
 package jacabot.sim;
+import jacabot.sim.engine.ObjectState;
+import jacabot.sim.geom.Pose;
 
 import jacabot.sim.engine.Engine;
 import jacabot.sim.world.BoxSpec;

@@ -1,4 +1,7 @@
 package jacabot.sim;
+import jacabot.sim.engine.WorldListener;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Pose;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

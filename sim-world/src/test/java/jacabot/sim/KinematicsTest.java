@@ -1,4 +1,5 @@
 package jacabot.sim;
+import jacabot.sim.geom.Pose;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

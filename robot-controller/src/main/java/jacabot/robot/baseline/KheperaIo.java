@@ -1,7 +1,7 @@
 package jacabot.robot.baseline;
 
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.Camera;
 import jacabot.sim.device.DistanceSensor;
 import jacabot.sim.device.Gps;

@@ -1,7 +1,7 @@
 package jacabot.robot.baseline;
 
 import jacabot.sim.SimWorld;
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Vec2;
 import jacabot.sim.world.AreaSpec;
 import java.util.Locale;
 import java.util.function.Consumer;

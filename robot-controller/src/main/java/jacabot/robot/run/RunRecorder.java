@@ -1,11 +1,11 @@
 package jacabot.robot.run;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.ObjectState;
-import jacabot.sim.Pose;
+import jacabot.sim.engine.ObjectKind;
+import jacabot.sim.engine.ObjectState;
+import jacabot.sim.geom.Pose;
 import jacabot.sim.SimWorld;
-import jacabot.sim.Vec2;
-import jacabot.sim.WorldListener;
+import jacabot.sim.geom.Vec2;
+import jacabot.sim.engine.WorldListener;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.viewer.PngRenderer;
 import jacabot.sim.world.AreaSpec;

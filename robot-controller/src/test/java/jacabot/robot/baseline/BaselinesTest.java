@@ -8,7 +8,7 @@ import jacabot.robot.baseline.BaselineRunner.BaselineRun;
 import jacabot.robot.run.RunRecorder;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
-import jacabot.sim.WorldListener;
+import jacabot.sim.engine.WorldListener;
 import jacabot.sim.io.WorldFileException;
 import java.nio.file.Path;
 import java.util.List;
@@ -69,7 +69,7 @@ class BaselinesTest {
         RunSummary s = rec.summary(BaselineRunner.CONTROLLER);
         assertEquals(1, s.lost(), s.eventLog());
         assertTrue(s.eventLog().contains("controller: Cylinder has fallen. Anybody retrieve it."), s.eventLog());
-        List<jacabot.sim.Pose> path = rec.trajectory();
+        List<jacabot.sim.geom.Pose> path = rec.trajectory();
         assertEquals(path.get(path.size() - 1), path.get(path.size() - 10), "it stopped");
     }
 

@@ -1,7 +1,7 @@
 package jacabot.sim.device;
 
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.LongSupplier;

@@ -1,6 +1,6 @@
 package jacabot.sim.device;
 
-import jacabot.sim.Pose;
+import jacabot.sim.geom.Pose;
 import java.util.Random;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;

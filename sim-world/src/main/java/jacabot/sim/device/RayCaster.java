@@ -1,6 +1,6 @@
 package jacabot.sim.device;
 
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Vec2;
 import java.util.List;
 
 /** Casts rays on the floor plane for one robot's sensors, ignoring the robot and what it carries. */

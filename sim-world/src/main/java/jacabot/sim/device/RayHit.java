@@ -1,6 +1,6 @@
 package jacabot.sim.device;
 
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 
 /**
  * What a ray met: the distance along the floor in metres, the surface colour, the object's height

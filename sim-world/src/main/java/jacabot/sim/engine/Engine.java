@@ -1,10 +1,7 @@
 package jacabot.sim.engine;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.ObjectState;
-import jacabot.sim.Pose;
-import jacabot.sim.Vec2;
-import jacabot.sim.WorldListener;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Vec2;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.robot.RobotModel;
 import jacabot.sim.world.BoxSpec;

@@ -1,8 +1,7 @@
 package jacabot.sim.engine;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.Rgb;
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Vec2;
 import jacabot.sim.device.RayCaster;
 import jacabot.sim.device.RayHit;
 import jacabot.sim.world.ArenaSpec;

@@ -1,9 +1,8 @@
 package jacabot.sim.engine;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Vec2;
 import jacabot.sim.device.Battery;
 import jacabot.sim.device.DifferentialWheels;
 import jacabot.sim.device.GraspHost;

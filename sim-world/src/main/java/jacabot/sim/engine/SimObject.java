@@ -1,8 +1,7 @@
 package jacabot.sim.engine;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.geometry.AABB;

@@ -1,7 +1,7 @@
 package jacabot.sim.io;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;

@@ -4,7 +4,7 @@ import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.robot.RobotModel;
 import jacabot.sim.world.ArenaSpec;
 import jacabot.sim.world.AreaSpec;

@@ -1,7 +1,7 @@
 package jacabot.sim.robot;
 
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.GraspHost;
 import jacabot.sim.device.RayCaster;
 import java.util.List;

@@ -1,6 +1,6 @@
 package jacabot.sim.robot;
 
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.LookupTable;
 import java.util.List;
 import java.util.Optional;

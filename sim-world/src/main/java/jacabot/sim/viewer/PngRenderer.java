@@ -1,7 +1,7 @@
 package jacabot.sim.viewer;
 
 import jacabot.sim.SimWorld;
-import jacabot.sim.WorldSnapshot;
+import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.demo.Wander;
 import jacabot.sim.io.WorldFileException;
 import java.awt.Graphics2D;

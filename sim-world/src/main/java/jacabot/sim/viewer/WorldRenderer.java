@@ -1,11 +1,11 @@
 package jacabot.sim.viewer;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.ObjectState;
-import jacabot.sim.Pose;
-import jacabot.sim.Rgb;
-import jacabot.sim.Vec2;
-import jacabot.sim.WorldSnapshot;
+import jacabot.sim.engine.ObjectKind;
+import jacabot.sim.engine.ObjectState;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Vec2;
+import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.world.AreaSpec;
 import java.awt.BasicStroke;
 import java.awt.Color;

@@ -1,11 +1,11 @@
 package jacabot.sim.viewer;
 
-import jacabot.sim.ObjectKind;
-import jacabot.sim.ObjectState;
+import jacabot.sim.engine.ObjectKind;
+import jacabot.sim.engine.ObjectState;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
-import jacabot.sim.Vec2;
-import jacabot.sim.WorldSnapshot;
+import jacabot.sim.geom.Vec2;
+import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.demo.Wander;
 import jacabot.sim.io.WorldFileException;
 import java.awt.BorderLayout;

@@ -1,6 +1,6 @@
 package jacabot.sim.world;
 
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Vec2;
 
 /**
  * A circular floor zone: the storage (gathering) point, or the charger when {@code power > 0}

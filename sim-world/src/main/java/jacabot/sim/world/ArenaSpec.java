@@ -1,6 +1,6 @@
 package jacabot.sim.world;
 
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 
 /**
  * The bounded floor, centred on the origin: x in [-width/2, width/2] (north-south), z in

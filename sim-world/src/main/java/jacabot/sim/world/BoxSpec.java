@@ -1,6 +1,6 @@
 package jacabot.sim.world;
 
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 
 /**
  * A rectangular block (a wall or a cubic obstacle): centre (x, z) in metres, size along its own

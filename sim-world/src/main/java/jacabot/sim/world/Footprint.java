@@ -1,6 +1,6 @@
 package jacabot.sim.world;
 
-import jacabot.sim.Vec2;
+import jacabot.sim.geom.Vec2;
 
 /**
  * The outline of an object on the floor, for start-up checks (inside the arena, no overlap):

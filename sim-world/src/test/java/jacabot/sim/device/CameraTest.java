@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.sim.Rgb;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.SimWorld;
 import jacabot.sim.TestWorlds;
 import org.junit.jupiter.api.Test;

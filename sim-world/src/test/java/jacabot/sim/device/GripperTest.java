@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.sim.Pose;
+import jacabot.sim.geom.Pose;
 import jacabot.sim.SimWorld;
 import jacabot.sim.TestWorlds;
 import jacabot.sim.robot.Robot;

@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.sim.SimWorld;
 import jacabot.sim.TestWorlds;
-import jacabot.sim.Vec2;
-import jacabot.sim.WorldSnapshot;
+import jacabot.sim.geom.Vec2;
+import jacabot.sim.engine.WorldSnapshot;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;

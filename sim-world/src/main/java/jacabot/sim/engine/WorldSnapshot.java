@@ -1,4 +1,6 @@
-package jacabot.sim;
+package jacabot.sim.engine;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Pose;
 
 import jacabot.sim.world.ArenaSpec;
 import jacabot.sim.world.AreaSpec;

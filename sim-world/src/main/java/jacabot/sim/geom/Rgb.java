@@ -1,4 +1,4 @@
-package jacabot.sim;
+package jacabot.sim.geom;
 
 import java.util.Locale;
 

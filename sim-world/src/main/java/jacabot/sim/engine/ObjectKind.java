@@ -1,4 +1,4 @@
-package jacabot.sim;
+package jacabot.sim.engine;
 
 /** The kinds of things in a world. */
 public enum ObjectKind {

@@ -1,4 +1,6 @@
-package jacabot.sim;
+package jacabot.sim.engine;
+import jacabot.sim.geom.Rgb;
+import jacabot.sim.geom.Pose;
 
 /**
  * A snapshot of one object: id, kind, pose, full sizes along its own x and z axes (a cylinder's

@@ -1,4 +1,4 @@
-package jacabot.sim;
+package jacabot.sim.geom;
 
 /**
  * A position on the floor plane (metres) and a heading as a compass bearing in degrees:

@@ -1,4 +1,4 @@
-package jacabot.sim;
+package jacabot.sim.engine;
 
 /** Observes a world. Every method has an empty default, so implement only what you need. */
 public interface WorldListener {

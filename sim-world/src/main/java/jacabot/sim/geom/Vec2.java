@@ -1,4 +1,4 @@
-package jacabot.sim;
+package jacabot.sim.geom;
 
 /**
  * A point or vector on the floor plane, in metres. Webots' ground plane is x-z (y is up), so the
