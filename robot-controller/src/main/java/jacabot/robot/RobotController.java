@@ -1,4 +1,5 @@
 package jacabot.robot;
+import jacabot.robot.link.Readings;
 
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.Protocol;

@@ -1,7 +1,7 @@
 package jacabot.experiments.link;
 
 import jacabot.robot.ControllerConfig;
-import jacabot.robot.Readings;
+import jacabot.robot.link.Readings;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.SensorInfo;

@@ -1,7 +1,5 @@
-package jacabot.robot;
+package jacabot.robot.link;
 
-import jacabot.robot.link.SensorInfo;
-import jacabot.robot.link.SensorKind;
 import java.util.Arrays;
 
 /** Formats readings for event logs: {@code KIND=value}, exact doubles, one token per reading. */
