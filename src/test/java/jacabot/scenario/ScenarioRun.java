@@ -1,8 +1,8 @@
 package jacabot.scenario;
 
-import jacabot.experiments.link.LockstepCoordinator;
-import jacabot.experiments.run.Experiment;
-import jacabot.experiments.run.LockstepRun;
+import jacabot.app.run.LockstepCoordinator;
+import jacabot.app.run.Experiment;
+import jacabot.app.run.LockstepRun;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;

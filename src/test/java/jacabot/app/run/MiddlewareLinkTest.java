@@ -1,4 +1,7 @@
-package jacabot.experiments.link;
+package jacabot.app.run;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.LinkConfig;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

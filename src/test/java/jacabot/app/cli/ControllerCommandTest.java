@@ -1,4 +1,4 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

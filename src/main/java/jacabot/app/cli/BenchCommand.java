@@ -1,6 +1,6 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
-import jacabot.experiments.bench.InterpreterBenchmark;
+import jacabot.app.bench.InterpreterBenchmark;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
@@ -60,7 +60,7 @@ final class BenchCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            new jacabot.experiments.bench.SimulationBenchmark(root, ExperimentCommand.parseDuration(duration), seed,
+            new jacabot.app.bench.SimulationBenchmark(root, ExperimentCommand.parseDuration(duration), seed,
                     System.out).run();
             return 0;
         }
@@ -83,7 +83,7 @@ final class BenchCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            new jacabot.experiments.bench.LatencyBenchmark(root, ExperimentCommand.parseDuration(duration), speed,
+            new jacabot.app.bench.LatencyBenchmark(root, ExperimentCommand.parseDuration(duration), speed,
                     System.out).run();
             return 0;
         }

@@ -1,4 +1,4 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;

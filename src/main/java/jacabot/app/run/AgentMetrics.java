@@ -1,4 +1,4 @@
-package jacabot.experiments.run;
+package jacabot.app.run;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;

@@ -1,10 +1,10 @@
-package jacabot.experiments;
+package jacabot.app.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.experiments.run.AgentMetrics;
-import jacabot.experiments.run.Experiment;
+import jacabot.app.run.AgentMetrics;
+import jacabot.app.run.Experiment;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 

@@ -1,9 +1,9 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.cartago.CartagoException;
-import jacabot.experiments.run.Experiment;
-import jacabot.experiments.run.LockstepRun;
+import jacabot.app.run.Experiment;
+import jacabot.app.run.LockstepRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
@@ -169,7 +169,7 @@ final class ExperimentCommand implements Callable<Integer> {
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
     private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds)
             throws InterruptedException {
-        try (var run = new jacabot.experiments.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, System.out)) {
+        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, System.out)) {
             run.start();
             var closed = new java.util.concurrent.CountDownLatch(1);
             javax.swing.SwingUtilities.invokeLater(() -> {

@@ -1,9 +1,9 @@
-package jacabot.experiments.bench;
+package jacabot.app.bench;
 
 import jacabot.experiments.link.LatencyStats;
-import jacabot.experiments.run.Experiment;
-import jacabot.experiments.run.LockstepRun;
-import jacabot.experiments.run.RealTimeRun;
+import jacabot.app.run.Experiment;
+import jacabot.app.run.LockstepRun;
+import jacabot.app.run.RealTimeRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;

@@ -1,4 +1,6 @@
-package jacabot.experiments.link;
+package jacabot.app.run;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.experiments.link.LinkConfig;
 
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;

@@ -1,8 +1,8 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
-import jacabot.experiments.run.AgentMetrics;
-import jacabot.experiments.run.Experiment;
-import jacabot.experiments.run.LockstepRun;
+import jacabot.app.run.AgentMetrics;
+import jacabot.app.run.Experiment;
+import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.robot.baseline.CodeMetrics;
 import jacabot.robot.run.RunRecorder;

@@ -1,4 +1,5 @@
-package jacabot.experiments.link;
+package jacabot.app.run;
+import jacabot.experiments.link.StepData;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,4 +1,6 @@
-package jacabot.experiments.run;
+package jacabot.app.run;
+import jacabot.experiments.link.LatencyStats;
+import jacabot.experiments.link.LatencyRecorder;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
@@ -17,7 +19,6 @@ import jacabot.cartago.OpTarget;
 import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
-import jacabot.experiments.link.LockstepCoordinator;
 import jacabot.experiments.link.StepData;
 import jacabot.robot.link.Command;
 import jacabot.sim.SimWorld;

@@ -1,4 +1,4 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
 import jacabot.agent.runtime.MasLauncher;
 import java.nio.file.Path;

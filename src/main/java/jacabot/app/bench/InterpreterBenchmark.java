@@ -1,4 +1,4 @@
-package jacabot.experiments.bench;
+package jacabot.app.bench;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -84,7 +84,7 @@ public final class InterpreterBenchmark {
     }
 
     private Run ours(String project) throws IOException, InterruptedException {
-        return measure(List.of("-cp", ourClasspath, "jacabot.experiments.cli.JacabotCommand", "run", "--stats", project));
+        return measure(List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats", project));
     }
 
     private Run jason(String project) throws IOException, InterruptedException {

@@ -1,4 +1,4 @@
-package jacabot.experiments.cli;
+package jacabot.app.cli;
 
 import java.io.IOException;
 import java.io.InputStream;

@@ -1,4 +1,10 @@
-package jacabot.experiments.link;
+package jacabot.app.run;
+import jacabot.experiments.link.LatencyStats;
+import jacabot.experiments.link.LinkTimings;
+import jacabot.experiments.link.StepData;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.LinkConfig;
 
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.link.Readings;

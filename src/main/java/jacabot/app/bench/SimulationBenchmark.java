@@ -1,8 +1,8 @@
-package jacabot.experiments.bench;
+package jacabot.app.bench;
 
-import jacabot.experiments.run.Experiment;
-import jacabot.experiments.link.LockstepCoordinator;
-import jacabot.experiments.run.LockstepRun;
+import jacabot.app.run.Experiment;
+import jacabot.app.run.LockstepCoordinator;
+import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.sim.SimWorld;
 import java.io.ByteArrayOutputStream;

@@ -1,4 +1,4 @@
-package jacabot.experiments.run;
+package jacabot.app.run;
 
 import jacabot.experiments.MiddlewareArtifact;
 import jacabot.experiments.NavigationMiddleware;

@@ -1,4 +1,5 @@
-package jacabot.experiments.run;
+package jacabot.app.run;
+import jacabot.experiments.link.LinkTimings;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;

@@ -1,4 +1,4 @@
-package jacabot.experiments.bench;
+package jacabot.app.bench;
 
 import jacabot.experiments.link.LatencyRecorder;
 import jacabot.experiments.link.LatencyStats;
