@@ -53,8 +53,8 @@ public enum Experiment {
     }
 
     /** {@return the same experiment for the procedural baselines of robot-controller} */
-    public jacabot.robot.baseline.Experiment baseline() {
-        return jacabot.robot.baseline.Experiment.byId(id());
+    public jacabot.robot.Experiment baseline() {
+        return jacabot.robot.Experiment.byId(id());
     }
 
     /** {@return the experiment for a name or number, e.g. "navigation" or "3"} */

@@ -1,4 +1,5 @@
 package jacabot.robot.baseline;
+import jacabot.robot.Experiment;
 
 import jacabot.robot.run.RunRecorder;
 import jacabot.robot.run.RunSummary;

@@ -1,4 +1,5 @@
 package jacabot.robot.baseline;
+import jacabot.robot.Experiment;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

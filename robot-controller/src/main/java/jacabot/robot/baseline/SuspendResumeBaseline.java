@@ -1,4 +1,5 @@
 package jacabot.robot.baseline;
+import jacabot.robot.Experiment;
 
 import jacabot.sim.SimWorld;
 import jacabot.sim.geom.Vec2;

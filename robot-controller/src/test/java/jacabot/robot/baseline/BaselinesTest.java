@@ -1,4 +1,5 @@
 package jacabot.robot.baseline;
+import jacabot.robot.Experiment;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,4 +1,4 @@
-package jacabot.robot.baseline;
+package jacabot.robot;
 
 import java.nio.file.Path;
 
