@@ -2,7 +2,7 @@ package jacabot.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.sim.world.AreaSpec;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;

@@ -1,7 +1,7 @@
 package jacabot.scenario;
 
 import jacabot.app.run.LockstepCoordinator;
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;

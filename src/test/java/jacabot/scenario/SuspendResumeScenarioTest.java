@@ -2,7 +2,7 @@ package jacabot.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.sim.geom.Pose;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.world.AreaSpec;

@@ -1,7 +1,7 @@
 package jacabot.app.bench;
 
 import jacabot.experiments.link.LatencyStats;
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
 import jacabot.app.run.RealTimeRun;
 import jacabot.robot.baseline.BaselineRunner;

@@ -1,6 +1,6 @@
 package jacabot.app.bench;
 
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
@@ -64,7 +64,7 @@ public final class SimulationBenchmark {
         row("reasoning (agent cycles)", agent[1], wall, steps);
         row("waiting: socket and thread wake-ups", rest, wall, steps);
         long b0 = System.nanoTime();
-        var baseline = BaselineRunner.execute(world, e.baseline(), seed, seconds);
+        var baseline = BaselineRunner.execute(world, e, seed, seconds);
         long bwall = System.nanoTime() - b0;
         long[] bsim = baseline.world().stepCost();
         out.printf(Locale.ROOT, "%nThe procedural baseline on the same world: %.2f s, %.0fx real time "

@@ -1,7 +1,7 @@
 package jacabot.app.cli;
 
 import jacabot.app.run.AgentMetrics;
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.robot.baseline.CodeMetrics;
@@ -50,7 +50,7 @@ final class CompareCommand implements Callable<Integer> {
             for (long seed : seeds) {
                 AgentRun a = runAgent(e, world, seed, seconds);
                 out.println(row(e, "agent", seed, a.summary) + " " + ms(a.reactive) + " | " + ms(a.response) + " |");
-                out.println(row(e, "baseline", seed, BaselineRunner.run(world, e.baseline(), seed, seconds))
+                out.println(row(e, "baseline", seed, BaselineRunner.run(world, e, seed, seconds))
                         + " same step | same step |");
             }
         }
@@ -62,7 +62,7 @@ final class CompareCommand implements Callable<Integer> {
         out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
         out.println("|---|---|---|---|---|---|---|---|---|---|");
         for (Experiment e : Experiment.values()) {
-            CodeMetrics c = CodeMetrics.of(e.baseline(), CodeMetrics.sourceDir(root));
+            CodeMetrics c = CodeMetrics.of(e, CodeMetrics.sourceDir(root));
             AgentMetrics a = AgentMetrics.of(e, agentSource(e));
             out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d: %s |%n", e, c.codeLines(), c.ifs(),
                     c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
@@ -85,7 +85,7 @@ final class CompareCommand implements Callable<Integer> {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, e, agentSource(e), e.id() + ".asl", seed, quiet);
-        RunRecorder recorder = RunRecorder.attach(simWorld, e.baseline().robot());
+        RunRecorder recorder = RunRecorder.attach(simWorld, e.robot());
         var result = run.runFor(seconds);
         return new AgentRun(recorder.summary("agent"), run.reactiveTimes(), result.response());
     }

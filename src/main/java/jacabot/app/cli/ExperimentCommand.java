@@ -2,7 +2,7 @@ package jacabot.app.cli;
 
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.cartago.CartagoException;
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
@@ -101,7 +101,7 @@ final class ExperimentCommand implements Callable<Integer> {
             System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
-            var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment.baseline(), runSeed, seconds);
+            var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
             report(run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
             return 0;
         }

@@ -1,4 +1,5 @@
 package jacabot.app.run;
+import jacabot.robot.Experiment;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;

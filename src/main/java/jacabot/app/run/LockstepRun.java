@@ -1,4 +1,5 @@
 package jacabot.app.run;
+import jacabot.robot.Experiment;
 import jacabot.experiments.link.LatencyStats;
 import jacabot.experiments.link.LatencyRecorder;
 
@@ -72,7 +73,7 @@ public final class LockstepRun {
         stepper = new JacaStepper(mas, workspace);
         host = workspace.join("runner", new ArtifactObserverAdapter());
         // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
-        middlewareId = workspace.createArtifact("middleware", experiment.middleware().getName(), 0, "lockstep");
+        middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
         AgentProgram program = parser.parse(agentSource, agentFile);

@@ -1,4 +1,5 @@
 package jacabot.app.run;
+import jacabot.robot.Experiment;
 import jacabot.experiments.link.LinkTimings;
 
 import jacabot.agent.parser.AslParser;
@@ -39,7 +40,7 @@ public final class RealTimeRun implements AutoCloseable {
         mas = new LocalMAS(simTime, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
         // the middleware listens on a free loopback port; the agent's !init finds it
-        var id = workspace.createArtifact("middleware", experiment.middleware().getName(), 0);
+        var id = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0);
         int port = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();

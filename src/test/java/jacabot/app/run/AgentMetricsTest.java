@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.run.AgentMetrics;
-import jacabot.app.run.Experiment;
+import jacabot.robot.Experiment;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 
