@@ -29,7 +29,7 @@ import java.util.function.Consumer;
  *
  * <pre>{@code
  * var run = new LockstepCoordinator(SimWorld.load(path), "khepera", data -> {
- *     clock.set(data.simTimeMs());            // the agents' SimulatedClock follows the world
+ *     clock.advance(data.simTimeMs() - clock.nowMillis()); // the one SimulatedClock follows the world
  *     artifact.deliver(data.readings());
  *     mas.runUntilQuiescent(1000);
  *     return artifact.takeCommands();

@@ -6,7 +6,7 @@ import jacabot.experiments.link.LatencyRecorder;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
-import jacabot.agent.runtime.SimulatedClock;
+import jacabot.cartago.SimulatedClock;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
@@ -41,8 +41,8 @@ public final class LockstepRun {
 
     private final SimWorld world;
     private final String robotName;
-    private final SimulatedClock agentClock = new SimulatedClock();
-    private final jacabot.cartago.SimulatedClock artifactClock = new jacabot.cartago.SimulatedClock();
+    /** The one simulated clock: the artifacts' await_time and the agents' .wait both read it. */
+    private final SimulatedClock clock = new SimulatedClock();
     private final Workspace workspace;
     private final LocalMAS mas;
     private final JacaStepper stepper;
@@ -66,9 +66,9 @@ public final class LockstepRun {
             long seed, PrintStream console) throws AslSyntaxException, CartagoException {
         this.world = world;
         this.robotName = robotName;
-        workspace = Workspace.builder("main").stepped().clock(artifactClock).console(console)
+        workspace = Workspace.builder("main").stepped().clock(clock).console(console)
                 .logger(jacabot.cartago.CartagoLogger.console(console)).build();
-        mas = new LocalMAS(agentClock, console, seed);
+        mas = new LocalMAS(clock::nowMillis, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
         stepper = new JacaStepper(mas, workspace);
         host = workspace.join("runner", new ArtifactObserverAdapter());
@@ -135,10 +135,9 @@ public final class LockstepRun {
     }
 
     private List<Command> step(StepData data) {
-        agentClock.set(data.simTimeMs());
-        long lag = data.simTimeMs() - artifactClock.nowMillis();
+        long lag = data.simTimeMs() - clock.nowMillis();
         if (lag > 0) {
-            artifactClock.advance(lag);
+            clock.advance(lag);
         }
         if (!mas.isStopped()) {
             deliveredNanos = System.nanoTime();

@@ -4,7 +4,6 @@ package jacabot.agent.testing;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.runtime.Clock;
-import jacabot.agent.runtime.SimulatedClock;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
@@ -24,7 +23,8 @@ import java.util.function.Function;
 public final class TestAgent implements AgentArch {
     public final List<String> console = new ArrayList<>();
     public final List<ActionExec> actions = new ArrayList<>();
-    public final SimulatedClock clock = new SimulatedClock();
+    /** Simulated time in ms; only {@link #advance} moves it. */
+    private final java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong();
     /** Decides each action's outcome; default: success. */
     public Function<ActionExec, Boolean> environment = a -> true;
     public List<Literal> percepts;
@@ -148,7 +148,7 @@ public final class TestAgent implements AgentArch {
 
     @Override
     public Clock clock() {
-        return clock;
+        return now::get;
     }
 
     public boolean isStopped() {
@@ -165,7 +165,7 @@ public final class TestAgent implements AgentArch {
 
     /** Advances simulated time, then runs the cycles that become possible. */
     public TestAgent advance(long ms, int maxCycles) {
-        clock.advance(ms);
+        now.addAndGet(Math.max(0, ms));
         return cycles(maxCycles);
     }
 

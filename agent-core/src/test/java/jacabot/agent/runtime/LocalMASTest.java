@@ -17,8 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 /** Messaging between agents, .mas2j projects, and the determinism of stepping mode. */
 class LocalMASTest {
     private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-    private final SimulatedClock clock = new SimulatedClock();
-    private final LocalMAS mas = new LocalMAS(clock, new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+    private final java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong();
+    private final LocalMAS mas = new LocalMAS(now::get, new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
     private final AslParser parser = new AslParser();
 
     private void agent(String name, String source) throws Exception {
@@ -76,13 +76,13 @@ class LocalMASTest {
 
     private static List<String> runStepped(String program) throws Exception {
         var bytes = new ByteArrayOutputStream();
-        var clock = new SimulatedClock();
-        var mas = new LocalMAS(clock, new PrintStream(bytes, true, StandardCharsets.UTF_8), 99);
+        var now = new java.util.concurrent.atomic.AtomicLong();
+        var mas = new LocalMAS(now::get, new PrintStream(bytes, true, StandardCharsets.UTF_8), 99);
         var parser = new AslParser();
         mas.createAgent("x", parser.parse(program, "x.asl"), parser, null);
         for (int step = 0; step < 100; step++) {
             mas.runUntilQuiescent(1000);
-            clock.advance(5);
+            now.addAndGet(5);
         }
         return bytes.toString(StandardCharsets.UTF_8).lines().collect(Collectors.toList());
     }
