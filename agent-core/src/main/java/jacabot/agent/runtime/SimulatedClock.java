@@ -1,5 +1,7 @@
 package jacabot.agent.runtime;
 
+import jacabot.agent.semantics.Clock;
+
 /** A clock that only moves when told to (by a simulator or a test). Thread-safe. */
 public final class SimulatedClock implements Clock {
     private volatile long now;

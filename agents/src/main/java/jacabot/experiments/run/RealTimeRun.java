@@ -2,7 +2,7 @@ package jacabot.experiments.run;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
-import jacabot.agent.runtime.Clock;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.cartago.CAgentArch;
 import jacabot.cartago.CartagoEnvironment;
