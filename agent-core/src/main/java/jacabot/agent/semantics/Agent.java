@@ -416,7 +416,7 @@ public final class Agent {
                 removed = true;
             }
         }
-        if (circumstance.selectedIntention == i) {
+        if (circumstance.selectedIntention() == i) {
             cycle.dropSelected();
             removed = true;
         }
