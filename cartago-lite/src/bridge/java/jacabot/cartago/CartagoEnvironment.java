@@ -37,7 +37,7 @@ public class CartagoEnvironment implements Environment {
         if (workspace == null) {
             // agents and artifacts share one clock, which follows a simulation when an artifact says so
             var clock = new FollowingClock();
-            mas.useClock(new jacabot.agent.runtime.Clock() {
+            mas.useClock(new jacabot.agent.semantics.Clock() {
                 @Override
                 public long millis() {
                     return clock.nowMillis();
@@ -45,7 +45,7 @@ public class CartagoEnvironment implements Environment {
 
                 @Override
                 public java.time.LocalTime timeOfDay() {
-                    return clock.isFollowing() ? jacabot.agent.runtime.Clock.super.timeOfDay() : java.time.LocalTime.now();
+                    return clock.isFollowing() ? jacabot.agent.semantics.Clock.super.timeOfDay() : java.time.LocalTime.now();
                 }
             });
             var b = Workspace.builder("main").clock(clock).console(mas.consoleStream())

@@ -4,7 +4,7 @@ import jacabot.experiments.link.LinkTimings;
 
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
-import jacabot.agent.runtime.Clock;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.cartago.CAgentArch;
 import jacabot.cartago.CartagoEnvironment;

@@ -1,5 +1,6 @@
 package jacabot.agent.runtime;
 
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.AgentArch;

@@ -1,7 +1,6 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.parser.AslParser;
-import jacabot.agent.runtime.Clock;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
@@ -417,7 +416,7 @@ public final class Agent {
                 removed = true;
             }
         }
-        if (circumstance.selectedIntention == i) {
+        if (circumstance.selectedIntention() == i) {
             cycle.dropSelected();
             removed = true;
         }

@@ -1,6 +1,5 @@
 package jacabot.agent.semantics;
 
-import jacabot.agent.runtime.Clock;
 import jacabot.agent.syntax.Literal;
 import java.util.List;
 

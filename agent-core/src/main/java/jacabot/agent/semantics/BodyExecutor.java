@@ -36,7 +36,7 @@ final class BodyExecutor {
         Term term = step.term();
         BodyStep.Kind kind = step.kind();
         if (term instanceof Var) {
-            term = im.unif.apply(term);
+            term = im.unifier().apply(term);
             if (term instanceof Var) {
                 rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_without_value",
                         step.source() + ": Variable '" + step.term() + "' must be ground."));
@@ -95,13 +95,13 @@ final class BodyExecutor {
     }
 
     private void action(Intention i, IntendedMeans im, Term term) {
-        Term applied = im.unif.apply(term);
+        Term applied = im.unifier().apply(term);
         if (!(applied instanceof Literal l)) {
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_not_literal",
                     "'" + applied + "' is not an action"));
             return;
         }
-        c.action = new ActionExec(l, i);
+        c.setAction(new ActionExec(l, i));
     }
 
     private void internalAction(Intention i, IntendedMeans im, BodyStep step, Literal body) {
@@ -115,13 +115,13 @@ final class BodyExecutor {
         }
         boolean ok;
         try {
-            Term[] args = ag.prepareArguments(ia, body, im.unif);
-            Object result = ia.execute(ag, im.unif, args);
+            Term[] args = ag.prepareArguments(ia, body, im.unifier());
+            Object result = ia.execute(ag, im.unifier(), args);
             ok = false;
             if (result instanceof Boolean b) {
                 ok = b;
             } else if (result instanceof Iterator<?> it && it.hasNext()) {
-                im.unif = (Unifier) it.next();
+                im.setUnifier((Unifier) it.next());
                 ok = true;
             }
             if (ok) {
@@ -145,24 +145,24 @@ final class BodyExecutor {
     }
 
     private void constraint(Intention i, IntendedMeans im, BodyStep step, Term term) {
-        Iterator<Unifier> it = ag.solver().solve(term, im.unif);
+        Iterator<Unifier> it = ag.solver().solve(term, im.unifier());
         if (it.hasNext()) {
-            im.unif = it.next();
+            im.setUnifier(it.next());
             rc.removeActionReQueue(i);
         } else {
             // Jason's wording: the body from this formula on, the position and the unifier
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("constraint_failed", "Constraint " + im.remainingBody()
-                    + " was not satisfied (" + step.source().jasonPosition() + ") un=" + im.unif));
+                    + " was not satisfied (" + step.source().jasonPosition() + ") un=" + im.unifier()));
         }
     }
 
     private void test(Intention i, IntendedMeans im, Term term) {
-        if (ag.solver().believes(term, im.unif)) {
+        if (ag.solver().believes(term, im.unifier())) {
             rc.removeActionReQueue(i);
             return;
         }
         if (term instanceof Literal || term instanceof Var) {
-            Term applied = im.unif.apply(term);
+            Term applied = im.unifier().apply(term);
             if (applied instanceof Literal) {
                 Literal body = prepareForEvent(term, im, im);
                 Trigger te = new Trigger(Trigger.Op.ADD, Trigger.Type.TEST, body);
@@ -229,21 +229,20 @@ final class BodyExecutor {
      * given.
      */
     Literal prepareForEvent(Term term, IntendedMeans im, IntendedMeans caller) {
-        Term applied = im.unif.apply(term);
+        Term applied = im.unifier().apply(term);
         if (!(applied instanceof Literal)) {
             throw new IllegalStateException("not a literal: " + applied);
         }
         Literal body = (Literal) applied;
         if (applied.isGround()) {
             if (caller != null) {
-                caller.renamedVars = null;
+                caller.clearRenamedVars();
             }
         } else {
             var renamed = new java.util.LinkedHashMap<Var, Var>();
-            applied.collectVars(v -> renamed.computeIfAbsent(v, ag::freshVar));
-            body = (Literal) Renamer.rename(applied, renamed);
+            body = (Literal) Renamer.renameApart(applied, ag::freshVar, renamed);
             if (caller != null) {
-                caller.renamedVars = renamed;
+                caller.setRenamedVars(renamed);
             }
         }
         return body.hasSource() ? body : body.addAnnot(Literal.SOURCE_SELF);

@@ -31,9 +31,10 @@ public final class Circumstance {
     private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
     private final List<CircumstanceListener> listeners = new ArrayList<>();
 
-    Event selectedEvent;
-    Intention selectedIntention;
-    ActionExec action;
+    private Event selectedEvent;
+    private Intention selectedIntention;
+    /** The action the selected intention produced this cycle (Jason's C.A), or null. */
+    private ActionExec action;
 
     // ---- events (E) -----------------------------------------------------------------------------
 
@@ -79,6 +80,22 @@ public final class Circumstance {
             return true;
         }
         return events.remove(e);
+    }
+
+    void setSelectedEvent(Event e) {
+        selectedEvent = e;
+    }
+
+    void setSelectedIntention(Intention i) {
+        selectedIntention = i;
+    }
+
+    ActionExec action() {
+        return action;
+    }
+
+    void setAction(ActionExec a) {
+        action = a;
     }
 
     public Event selectedEvent() {

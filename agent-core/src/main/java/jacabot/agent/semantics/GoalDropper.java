@@ -36,7 +36,7 @@ public final class GoalDropper {
                 }
             } else if (e.trigger().isAchieveGoal() && e.trigger().isAddition()
                     && ag.newUnifier().unifies(goal, i == null ? e.trigger().literal() : i.peek() == null
-                            ? e.trigger().literal() : i.peek().unif.apply(e.trigger().literal()))) {
+                            ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
                 if (i != null && !i.isFinished()) {
                     if (mode == Mode.SUCCEED) {

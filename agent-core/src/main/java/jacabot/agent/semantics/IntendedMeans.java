@@ -15,10 +15,10 @@ import java.util.Map;
 public final class IntendedMeans {
     private final Plan plan;
     private final Trigger trigger;
-    Unifier unif;
+    private Unifier unif;
     private StepList steps;
     /** Variables of the current step renamed apart when it posted an event (caller side). */
-    Map<Var, Var> renamedVars;
+    private Map<Var, Var> renamedVars;
 
     IntendedMeans(Plan plan, Trigger trigger, Unifier unif) {
         this.plan = plan;
@@ -98,6 +98,19 @@ public final class IntendedMeans {
     /** Replaces the current step (e.g. a loop step with its saved state). */
     public void replaceCurrentStep(BodyStep step) {
         steps = new StepList(step, steps == null ? null : steps.next);
+    }
+
+    /** {@return the caller-side renaming of the current step's variables, or null} */
+    Map<Var, Var> renamedVars() {
+        return renamedVars;
+    }
+
+    void setRenamedVars(Map<Var, Var> m) {
+        renamedVars = m;
+    }
+
+    void clearRenamedVars() {
+        renamedVars = null;
     }
 
     Map<Var, Var> renamedVarsOrNew() {

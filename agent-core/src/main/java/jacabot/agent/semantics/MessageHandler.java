@@ -121,7 +121,7 @@ final class MessageHandler {
             }
             answer = ListTerm.of(items);
         }
-        if (im.unif.unifies(send.arg(3), answer)) {
+        if (im.unifier().unifies(send.arg(3), answer)) {
             rc.removeActionReQueue(i);
         } else {
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ask_failed",

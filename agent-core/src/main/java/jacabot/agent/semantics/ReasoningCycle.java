@@ -68,7 +68,7 @@ final class ReasoningCycle {
 
     private void deliberate() {
         ag.runBeginOfCycleTasks();
-        c.selectedEvent = null;
+        c.setSelectedEvent(null);
         while (true) {
             // SelEv
             if (c.hasAtomicIntention()) {
@@ -81,7 +81,7 @@ final class ReasoningCycle {
             if (se == null) {
                 return;
             }
-            c.selectedEvent = se;
+            c.setSelectedEvent(se);
             if (applyFindOp(se)) {
                 return;
             }
@@ -136,7 +136,7 @@ final class ReasoningCycle {
         }
         if (!se.isExternal()) {
             Intention i = se.intention();
-            joinRenamedVars(i.peek(), i.peek().unif);
+            joinRenamedVars(i.peek(), i.peek().unifier());
             removeActionReQueue(i);
             return true;
         }
@@ -163,16 +163,16 @@ final class ReasoningCycle {
                 && samePredicate(top.trigger(), im.trigger())) {
             i.pop();
             IntendedMeans base = i.peek();
-            if (base != null && base.renamedVars != null) {
-                for (Map.Entry<Var, Var> e : base.renamedVars.entrySet()) {
-                    Term value = top.unif.deref(e.getValue());
+            if (base != null && base.renamedVars() != null) {
+                for (Map.Entry<Var, Var> e : base.renamedVars().entrySet()) {
+                    Term value = top.unifier().deref(e.getValue());
                     if (value instanceof Var w) {
-                        Var again = top.renamedVars == null ? null : top.renamedVars.get(w);
+                        Var again = top.renamedVars() == null ? null : top.renamedVars().get(w);
                         if (again != null) {
                             e.setValue(again);
                         }
                     } else {
-                        im.unif.bind(e.getValue(), top.unif.apply(value));
+                        im.unifier().bind(e.getValue(), top.unifier().apply(value));
                     }
                 }
             }
@@ -189,31 +189,29 @@ final class ReasoningCycle {
     // ---- act ----------------------------------------------------------------------------------
 
     private void act() {
-        if (applyProcAct()) {
-            return;
-        }
+        applyProcAct();
         Intention si = applySelInt();
         if (si == null) {
             return;
         }
-        c.selectedIntention = si;
+        c.setSelectedIntention(si);
         selectedDropped = false;
         selectedHeld = false;
         exec.execute(si);
-        c.selectedIntention = null;
+        c.setSelectedIntention(null);
         if (!selectedDropped) {
             applyClrInt(si);
         }
-        ActionExec a = c.action;
-        c.action = null;
+        ActionExec a = c.action();
+        c.setAction(null);
         if (a != null && !selectedDropped) {
             c.addPendingAction(a);
             ag.arch().act(a, ag);
         }
     }
 
-    /** ProcAct: handle the feedback of one executed action. */
-    private boolean applyProcAct() {
+    /** ProcAct: handle the feedback of one executed action; the cycle goes on to SelInt (as Jason). */
+    private void applyProcAct() {
         ActionExec a;
         while ((a = c.pollFeedbackAction()) != null) {
             Intention i = a.intention();
@@ -222,7 +220,7 @@ final class ReasoningCycle {
             }
             if (a.result()) {
                 if (a.outputs() != null) {
-                    Unifier u = i.peek().unif;
+                    Unifier u = i.peek().unifier();
                     for (Map.Entry<Var, Term> e : a.outputs().bindings().entrySet()) {
                         u.unifies(e.getKey(), e.getValue());
                     }
@@ -236,7 +234,6 @@ final class ReasoningCycle {
             }
             break;
         }
-        return false;
     }
 
     /** SelInt: the atomic intention if any, else the first running one (round robin). */
@@ -290,20 +287,20 @@ final class ReasoningCycle {
                 // a failure plan finished: drop the intended means up to the goal that failed
                 im = i.peek();
                 if (im.isFinished() || !(im.currentStep().kind() == BodyStep.Kind.ACHIEVE
-                        && im.unif.copy().unifies(im.currentStep().term(), topLiteral))) {
+                        && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))) {
                     im = i.pop();
                 }
                 while (!i.isFinished()
-                        && !(im.trigger().isGoal() && im.unif.copy().unifies(im.trigger().literal(), topLiteral))
+                        && !(im.trigger().isGoal() && im.unifier().copy().unifies(im.trigger().literal(), topLiteral))
                         && !(!im.isFinished() && im.currentStep().kind() == BodyStep.Kind.ACHIEVE
-                                && im.unif.copy().unifies(im.currentStep().term(), topLiteral))) {
+                                && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))) {
                     im = i.pop();
                 }
             }
             if (!i.isFinished()) {
                 im = i.peek();
                 if (!im.isFinished()) {
-                    joinRenamedVars(im, topIM.unif);
+                    joinRenamedVars(im, topIM.unifier());
                     im.removeCurrentStep();
                 }
             }
@@ -312,28 +309,23 @@ final class ReasoningCycle {
 
     /** Binds the caller's variables renamed for an event to the values the callee gave them. */
     void joinRenamedVars(IntendedMeans im, Unifier values) {
-        if (im.renamedVars == null) {
+        if (im.renamedVars() == null) {
             return;
         }
-        for (Map.Entry<Var, Var> e : im.renamedVars.entrySet()) {
+        for (Map.Entry<Var, Var> e : im.renamedVars().entrySet()) {
             Var vt = e.getValue();
-            im.unif.unifies(e.getKey(), vt);
+            im.unifier().unifies(e.getKey(), vt);
             Term value = values.deref(vt);
             if (!(value instanceof Var)) {
                 Term applied = values.apply(value);
-                im.unif.bind(vt, renameApart(applied));
+                im.unifier().bind(vt, renameApart(applied));
             }
         }
     }
 
     /** Gives the free variables of a value fresh names (they came from another plan). */
     Term renameApart(Term t) {
-        if (t.isGround()) {
-            return t;
-        }
-        var map = new java.util.HashMap<Var, Var>();
-        t.collectVars(v -> map.computeIfAbsent(v, ag::freshVar));
-        return Renamer.rename(t, map);
+        return Renamer.renameApart(t, ag);
     }
 
     // ---- failure ------------------------------------------------------------------------------
@@ -354,7 +346,7 @@ final class ReasoningCycle {
             failEvent = new Event(im.trigger(), i);
         }
         BodyStep step = im.currentStep();
-        failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unif.apply(step.term())), annots);
+        failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
         if (failEvent.trigger().isGoal()) {
             if (relevant) {
                 c.addEvent(failEvent);
@@ -408,7 +400,7 @@ final class ReasoningCycle {
             boolean found = false;
             while (ii.hasNext() && !found) {
                 im = ii.next();
-                while (ii.hasNext() && im.unif.copy().unifies(im.trigger().literal(), tevent.literal())) {
+                while (ii.hasNext() && im.unifier().copy().unifies(im.trigger().literal(), tevent.literal())) {
                     im = ii.next();
                     found = true;
                 }
@@ -427,12 +419,7 @@ final class ReasoningCycle {
     }
 
     private Term anonymous(Term t) {
-        if (t.isGround()) {
-            return t;
-        }
-        var map = new java.util.HashMap<Var, Var>();
-        t.collectVars(v -> map.computeIfAbsent(v, x -> ag.freshVar(ANONYMOUS)));
-        return Renamer.rename(t, map);
+        return Renamer.renameApart(t, x -> ag.freshVar(ANONYMOUS), new java.util.HashMap<>());
     }
 
     private static final Var ANONYMOUS = new Var("_");

@@ -98,9 +98,7 @@ public final class Solver {
         Literal belief = e.literal();
         if (!e.isGround()) {
             // a fact with variables, like in(X, [X|_]): its variables are its own
-            var map = new HashMap<Var, Var>();
-            belief.collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
-            belief = (Literal) Renamer.rename(belief, map);
+            belief = (Literal) Renamer.renameApart(belief, agent);
         }
         // most candidates fail: unify first, copy only on success
         Unifier bu = u.unifiedCopyIgnoringAnnots(q, belief);
@@ -141,12 +139,12 @@ public final class Solver {
     /** Renames a rule's variables apart from every other variable. */
     private Rule rename(Rule r) {
         var map = new HashMap<Var, Var>();
-        r.head().collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
-        r.body().collectVars(v -> map.computeIfAbsent(v, agent::freshVar));
+        Term head = Renamer.renameApart(r.head(), agent::freshVar, map);
+        Term body = Renamer.renameApart(r.body(), agent::freshVar, map);
         if (map.isEmpty()) {
             return r;
         }
-        return new Rule((Literal) Renamer.rename(r.head(), map), Renamer.rename(r.body(), map));
+        return new Rule((Literal) head, body);
     }
 
     // ---- internal actions in formulas -----------------------------------------------------------

@@ -42,7 +42,6 @@ public final class Stdlib {
         put(map, new IsNumber());
         put(map, new IsString());
         put(map, new IsStructure());
-        put(map, new IsVar());
         put(map, new Length());
         put(map, new Loop());
         put(map, Extremum.max());

@@ -44,4 +44,9 @@ public record ArithExpr(Op op, Term left, Term right) implements OperatorExpr {
     public String toString() {
         return isUnary() ? "(" + op + left + ")" : "(" + left + op + right + ")";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitArith(this);
+    }
 }

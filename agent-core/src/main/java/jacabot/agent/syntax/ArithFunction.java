@@ -25,4 +25,9 @@ public record ArithFunction(String name, List<Term> args) implements Term {
         TermOrder.join(sb, args);
         return sb.append(')').toString();
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitFunction(this);
+    }
 }

@@ -33,4 +33,9 @@ public record BodyTerm(List<BodyStep> steps) implements Term {
     public String toString() {
         return "{ " + bodyText() + " }";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitBody(this);
+    }
 }

@@ -15,6 +15,11 @@ public sealed interface ListTerm extends Term permits ListTerm.Empty, ListTerm.C
         }
 
         @Override
+        public <R> R accept(TermVisitor<R> v) {
+            return v.visitEmptyList(this);
+        }
+
+        @Override
         public boolean isGround() {
             return true;
         }
@@ -31,6 +36,11 @@ public sealed interface ListTerm extends Term permits ListTerm.Empty, ListTerm.C
 
     /** A cons cell. */
     record Cons(Term head, Term tail) implements ListTerm {
+        @Override
+        public <R> R accept(TermVisitor<R> v) {
+            return v.visitCons(this);
+        }
+
         @Override
         public boolean isGround() {
             Term t = this;

@@ -203,4 +203,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         }
         return sb.toString();
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitLiteral(this);
+    }
 }

@@ -18,4 +18,9 @@ public record LogExpr(Op op, Term left, Term right) implements OperatorExpr {
             default: return "(" + left + " | " + right + ")";
         }
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitLog(this);
+    }
 }

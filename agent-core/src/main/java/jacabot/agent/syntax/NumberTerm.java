@@ -37,4 +37,9 @@ public record NumberTerm(double value) implements Term {
         long r = Math.round(value);
         return value == (double) r ? Long.toString(r) : Double.toString(value);
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitNumber(this);
+    }
 }

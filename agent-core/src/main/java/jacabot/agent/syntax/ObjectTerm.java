@@ -15,4 +15,9 @@ public record ObjectTerm(Object value) implements Term {
     public String toString() {
         return String.valueOf(value);
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitObject(this);
+    }
 }

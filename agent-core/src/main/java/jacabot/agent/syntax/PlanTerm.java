@@ -19,4 +19,9 @@ public record PlanTerm(Plan plan) implements Term {
         String s = plan.toString();
         return "{ " + s.substring(0, s.length() - 1) + " }";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitPlan(this);
+    }
 }

@@ -23,4 +23,9 @@ public record RelExpr(Op op, Term left, Term right) implements OperatorExpr {
     public String toString() {
         return "(" + left + op + right + ")";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitRel(this);
+    }
 }

@@ -15,4 +15,9 @@ public record StringTerm(String value) implements Term {
     public String toString() {
         return "\"" + value + "\"";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitString(this);
+    }
 }

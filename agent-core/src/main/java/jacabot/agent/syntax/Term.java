@@ -14,6 +14,9 @@ public sealed interface Term extends Comparable<Term>
     /** {@return whether the term has no variable} */
     boolean isGround();
 
+    /** {@return what the visitor makes of this kind of term} */
+    <R> R accept(TermVisitor<R> v);
+
     /** Visits every variable of the term, in textual order. */
     void collectVars(java.util.function.Consumer<Var> sink);
 

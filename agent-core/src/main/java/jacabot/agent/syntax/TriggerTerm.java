@@ -18,4 +18,9 @@ public record TriggerTerm(Trigger trigger) implements Term {
     public String toString() {
         return "{ " + trigger + " }";
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitTrigger(this);
+    }
 }

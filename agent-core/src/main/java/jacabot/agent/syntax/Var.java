@@ -43,4 +43,9 @@ public record Var(String name, long serial) implements Term {
         String base = name.startsWith("_") ? name.substring(1) : name;
         return "_" + Math.abs(serial) + base;
     }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitVar(this);
+    }
 }

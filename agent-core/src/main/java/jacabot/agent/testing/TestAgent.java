@@ -3,7 +3,7 @@ package jacabot.agent.testing;
 
 
 import jacabot.agent.parser.AslParser;
-import jacabot.agent.runtime.Clock;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;

@@ -1,7 +1,7 @@
 package jacabot.cartago.bridge;
 
 import jacabot.agent.parser.AslParser;
-import jacabot.agent.runtime.Clock;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.cartago.CAgentArch;
 import jacabot.cartago.CartagoEnvironment;

@@ -1,4 +1,4 @@
-package jacabot.agent.runtime;
+package jacabot.agent.semantics;
 
 /** Time as the agents see it ({@code .wait}, {@code .time}): the wall clock or simulated time. */
 public interface Clock {
