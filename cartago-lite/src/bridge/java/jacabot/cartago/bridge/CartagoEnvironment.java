@@ -59,6 +59,11 @@ public class CartagoEnvironment implements Environment {
             });
             var b = Workspace.builder("main").clock(clock).console(mas.consoleStream())
                     .logger(CartagoLogger.console(mas.consoleStream()));
+            // the project's own artifact classes (ProjectClasses) come through the launcher's context loader
+            ClassLoader loader = Thread.currentThread().getContextClassLoader();
+            if (loader != null) {
+                b.classLoader(loader);
+            }
             if (args.contains("stepped")) {
                 b.stepped();
             }
