@@ -1,7 +1,14 @@
 package jacabot.app.cli;
 
 import jacabot.agent.runtime.MasLauncher;
+import jacabot.cartago.bridge.ProjectClasses;
+import jacabot.cartago.bridge.ProjectClasspath;
+import jacabot.cartago.bridge.SourceCompiler;
+import java.io.File;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -21,12 +28,22 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--step", description = "deterministic stepping on one thread instead of a thread per agent")
     private boolean stepping;
 
+    @Option(names = "--classpath", paramLabel = "PATH",
+            description = "more class path entries for the project's artifacts (jars, folders, folder/* for its jars; "
+                    + "separated by the platform's path separator, or the option repeated)")
+    private List<String> classpath = new ArrayList<>();
+
     @Option(names = "--stats", description = "print the number of reasoning cycles on stderr at the end")
     private boolean stats;
 
     @Override
     public Integer call() throws InterruptedException {
         try {
+            // the project's artifacts: classpath: entries, --classpath, Java sources beside the .mas2j
+            var entries = new ArrayList<Path>();
+            classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty()).map(Path::of).forEach(entries::add));
+            var classes = ProjectClasses.prepare(file.toString().endsWith(".mas2j") ? file : null, entries);
+            Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(System.out, seed, stepping);
             var mas = launcher.load(file);
             if (stepping) {
@@ -42,6 +59,12 @@ final class RunCommand implements Callable<Integer> {
                 System.err.println("cycles " + cycles);
             }
             return 0;
+        } catch (ProjectClasspath.Problem e) {
+            System.err.println(e.getMessage());
+            return 2;
+        } catch (SourceCompiler.CompileError e) {
+            e.lines().forEach(System.err::println);
+            return 2;
         } catch (MasLauncher.UserError e) {
             System.err.println(e.getMessage());
             return 2;

@@ -103,11 +103,22 @@ public final class LocalMAS {
         LocalArch local = new LocalArch(this, name);
         AgentArch arch = archFactory == null ? local : archFactory.apply(local);
         Map<String, InternalAction> ias = Stdlib.defaults();
-        Agent ag = new Agent(name, arch, ias, seed + agents.size(), parser);
+        Agent ag = new Agent(name, arch, ias, agentSeed(seed, agents.size()), parser);
         agents.put(name, ag);
         wakers.put(name, new Waker(ag));
         ag.load(program);
         return ag;
+    }
+
+    /**
+     * Each agent's own random stream, reproducible under one seed. java.util.Random's first draws
+     * for seeds n, n+1, ... are nearly alike, so the index is mixed in (SplitMix64's finaliser).
+     */
+    static long agentSeed(long seed, int index) {
+        long z = seed + (index + 1) * 0x9E3779B97F4A7C15L;
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
     }
 
     public synchronized Agent agent(String name) {

@@ -1,4 +1,4 @@
-package jacabot.cartago;
+package jacabot.cartago.bridge;
 
 import jacabot.agent.runtime.Environment;
 import jacabot.agent.runtime.LocalMAS;
@@ -7,7 +7,16 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
-import jacabot.cartago.bridge.TermConverter;
+import jacabot.cartago.AgentId;
+import jacabot.cartago.ArtifactId;
+import jacabot.cartago.ArtifactObserver;
+import jacabot.cartago.ArtifactObserverAdapter;
+import jacabot.cartago.CartagoLogger;
+import jacabot.cartago.FollowingClock;
+import jacabot.cartago.OpFeedbackParam;
+import jacabot.cartago.OpOutcome;
+import jacabot.cartago.OpTarget;
+import jacabot.cartago.Workspace;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -16,8 +25,8 @@ import java.util.Map;
 /**
  * JaCa's {@code c4jason.CartagoEnvironment}: agents work in a workspace {@code main}, and every
  * action that is not an internal action is an operation of one of its artifacts. In a
- * {@code .mas2j}: {@code environment: jacabot.cartago.CartagoEnvironment} (optionally with the
- * argument {@code "stepped"}), and each agent with {@code agentArchClass jacabot.cartago.CAgentArch}.
+ * {@code .mas2j}: {@code environment: jacabot.cartago.bridge.CartagoEnvironment} (optionally with the
+ * argument {@code "stepped"}), and each agent with {@code agentArchClass jacabot.cartago.bridge.CAgentArch}.
  */
 public class CartagoEnvironment implements Environment {
     private Workspace workspace;
@@ -50,6 +59,11 @@ public class CartagoEnvironment implements Environment {
             });
             var b = Workspace.builder("main").clock(clock).console(mas.consoleStream())
                     .logger(CartagoLogger.console(mas.consoleStream()));
+            // the project's own artifact classes (ProjectClasses) come through the launcher's context loader
+            ClassLoader loader = Thread.currentThread().getContextClassLoader();
+            if (loader != null) {
+                b.classLoader(loader);
+            }
             if (args.contains("stepped")) {
                 b.stepped();
             }

@@ -1,4 +1,4 @@
-package jacabot.cartago;
+package jacabot.cartago.bridge;
 
 import jacabot.agent.runtime.Environment;
 import jacabot.agent.runtime.LocalArch;
@@ -7,7 +7,9 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
-import jacabot.cartago.bridge.TermConverter;
+import jacabot.cartago.ArtifactId;
+import jacabot.cartago.ArtifactObserver;
+import jacabot.cartago.PropertySnapshot;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -31,8 +33,8 @@ public class CAgentArch extends LocalArch {
         super(local.mas(), local.name());
         Environment env = local.mas().environment();
         if (!(env instanceof CartagoEnvironment cartago)) {
-            throw new IllegalStateException("agentArchClass jacabot.cartago.CAgentArch needs "
-                    + "environment: jacabot.cartago.CartagoEnvironment");
+            throw new IllegalStateException("agentArchClass jacabot.cartago.bridge.CAgentArch needs "
+                    + "environment: jacabot.cartago.bridge.CartagoEnvironment");
         }
         cartago.join(local.name(), new Observer());
     }

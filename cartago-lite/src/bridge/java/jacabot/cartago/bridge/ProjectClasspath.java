@@ -1,0 +1,145 @@
+package jacabot.cartago.bridge;
+
+import jacabot.agent.parser.Mas2jLexer;
+import jacabot.agent.parser.Mas2jParser;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+import org.antlr.v4.runtime.BaseErrorListener;
+import org.antlr.v4.runtime.CharStreams;
+import org.antlr.v4.runtime.CommonTokenStream;
+
+/**
+ * Where a project's own classes come from, as Jason's launcher finds them: the {@code classpath:}
+ * entries of the {@code .mas2j} (relative to its folder), the entries given on the command line,
+ * and the Java sources beside the project — the {@code .java} files in the {@code .mas2j}'s own
+ * folder, everything under {@code src/java} and {@code src/env} (JaCaMo's folder for artifacts),
+ * and every {@code classpath:} folder that holds {@code .java} files. An entry ending in {@code *}
+ * means every jar of that folder, as with {@code java -cp}.
+ */
+public record ProjectClasspath(List<Path> entries, List<Path> sources) {
+    public ProjectClasspath {
+        entries = List.copyOf(entries);
+        sources = List.copyOf(sources);
+    }
+
+    /** A problem with an entry or a source: one line for the user. */
+    public static final class Problem extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        public Problem(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * {@return the class path of the project in {@code mas2j} (null for a lone agent file) plus
+     * {@code extra}, the command line's entries}
+     */
+    public static ProjectClasspath of(Path mas2j, List<Path> extra) throws Problem {
+        var entries = new LinkedHashSet<Path>();
+        var sources = new LinkedHashSet<Path>();
+        if (mas2j != null && Files.isRegularFile(mas2j)) {   // a missing file: the launcher says so
+            Path dir = mas2j.toAbsolutePath().getParent();
+            for (String e : classpathEntries(mas2j)) {
+                addEntry(dir.resolve(e), e, mas2j + ": classpath entry", entries, sources);
+            }
+            try (Stream<Path> files = Files.list(dir)) {
+                files.filter(ProjectClasspath::isJavaFile).sorted().forEach(sources::add);
+            } catch (IOException e) {
+                throw new Problem(dir + ": " + e.getMessage());
+            }
+            for (String folder : List.of("src/java", "src/env")) {
+                Path p = dir.resolve(folder);
+                if (Files.isDirectory(p)) {
+                    sources.addAll(javaFilesUnder(p));
+                }
+            }
+        }
+        for (Path p : extra) {
+            addEntry(p.toAbsolutePath(), p.toString(), "--classpath", entries, sources);
+        }
+        return new ProjectClasspath(new ArrayList<>(entries), new ArrayList<>(sources));
+    }
+
+    private static void addEntry(Path p, String given, String where, Set<Path> entries, Set<Path> sources)
+            throws Problem {
+        p = p.normalize();
+        if (p.getFileName() != null && p.getFileName().toString().equals("*")) {
+            Path dir = p.getParent();
+            if (!Files.isDirectory(dir)) {
+                throw new Problem(where + " '" + given + "': no such folder " + dir);
+            }
+            try (Stream<Path> jars = Files.list(dir)) {
+                jars.filter(j -> j.toString().endsWith(".jar")).sorted().forEach(entries::add);
+            } catch (IOException e) {
+                throw new Problem(where + " '" + given + "': " + e.getMessage());
+            }
+            return;
+        }
+        if (!Files.exists(p)) {
+            throw new Problem(where + " '" + given + "': no such file or folder " + p);
+        }
+        entries.add(p);
+        if (Files.isDirectory(p)) {
+            sources.addAll(javaFilesUnder(p));
+        }
+    }
+
+    private static boolean isJavaFile(Path p) {
+        return Files.isRegularFile(p) && p.getFileName().toString().endsWith(".java");
+    }
+
+    private static List<Path> javaFilesUnder(Path dir) throws Problem {
+        try (Stream<Path> files = Files.walk(dir)) {
+            return files.filter(ProjectClasspath::isJavaFile).sorted().toList();
+        } catch (IOException e) {
+            throw new Problem(dir + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * The strings of the {@code classpath:} settings. A file that does not parse gives none: the
+     * launcher reports its syntax errors.
+     */
+    static List<String> classpathEntries(Path mas2j) throws Problem {
+        String text;
+        try {
+            text = Files.readString(mas2j, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new Problem(mas2j + ": " + e.getMessage());
+        }
+        var lexer = new Mas2jLexer(CharStreams.fromString(text));
+        lexer.removeErrorListeners();
+        var parser = new Mas2jParser(new CommonTokenStream(lexer));
+        parser.removeErrorListeners();
+        var failed = new boolean[1];
+        parser.addErrorListener(new BaseErrorListener() {
+            @Override
+            public void syntaxError(org.antlr.v4.runtime.Recognizer<?, ?> r, Object o, int line, int col, String msg,
+                    org.antlr.v4.runtime.RecognitionException e) {
+                failed[0] = true;
+            }
+        });
+        var tree = parser.project();
+        var out = new ArrayList<String>();
+        if (failed[0]) {
+            return out;
+        }
+        for (Mas2jParser.SettingContext s : tree.setting()) {
+            if (s instanceof Mas2jParser.ClasspathContext c) {
+                c.STRING().forEach(t -> {
+                    String q = t.getText();
+                    out.add(q.substring(1, q.length() - 1));
+                });
+            }
+        }
+        return out;
+    }
+}
