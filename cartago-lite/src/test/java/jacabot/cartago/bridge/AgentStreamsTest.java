@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
-import jacabot.agent.runtime.Clock;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
 import java.io.PrintStream;
 import java.io.OutputStream;
