@@ -85,7 +85,7 @@ public final class Agent {
     /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */
     public void load(AgentProgram program) {
         for (Plan p : program.plans()) {
-            planLibrary.add(p, false);
+            planLibrary.add(withUrl(p), false);
         }
         // As Jason: initial beliefs are added last to first at the beginning of the belief base,
         // so the base keeps file order and their +b events come in reverse order.
@@ -108,6 +108,18 @@ public final class Agent {
             Literal goal = g.hasSource() ? g : g.addAnnot(Literal.SOURCE_SELF);
             circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal), null));
         }
+    }
+
+    /** Jason marks a plan read from a file with {@code url("file:...")} in its label. */
+    private static Plan withUrl(Plan p) {
+        if (p.source() == null || p.source().file().isEmpty()) {
+            return p;
+        }
+        Literal label = p.label() == null ? Literal.atom("undefined") : p.label();
+        if (label.getAnnot("url") != null) {
+            return p;
+        }
+        return p.withLabel(label.addAnnot(Literal.of("url", new jacabot.agent.syntax.StringTerm(p.source().jasonFile()))));
     }
 
     // ---- the reasoning cycle ------------------------------------------------------------------

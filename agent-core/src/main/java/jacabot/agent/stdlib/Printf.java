@@ -6,7 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
 
-/** {@code .printf(Format, a, ...)}: Java's {@code String.format}; integral numbers format as %d too. */
+/** {@code .printf(Format, a, ...)}: Java's {@code String.format}; numbers are doubles, as in Jason. */
 final class Printf extends DefaultInternalAction {
     Printf() {
         super(".printf", 1, 2147483647);
@@ -18,7 +18,7 @@ final class Printf extends DefaultInternalAction {
         for (int i = 1; i < args.length; i++) {
             Term t = args[i];
             if (t instanceof NumberTerm n) {
-                values[i - 1] = n.value() == Math.rint(n.value()) ? (Object) (long) n.value() : (Object) n.value();
+                values[i - 1] = n.value(); // a Double, as Jason passes it: %s prints 3.0, %d fails
             } else {
                 values[i - 1] = text(t);
             }
@@ -27,16 +27,7 @@ final class Printf extends DefaultInternalAction {
         try {
             ag.print(String.format(format, values));
         } catch (java.util.IllegalFormatException e) {
-            for (int i = 0; i < values.length; i++) {
-                if (values[i] instanceof Long l) {
-                    values[i] = l.doubleValue();
-                }
-            }
-            try {
-                ag.print(String.format(format, values));
-            } catch (java.util.IllegalFormatException e2) {
-                throw IaException.wrongArguments(name(), e2.getMessage());
-            }
+            throw IaException.wrongArguments(name(), e.getMessage());
         }
         return true;
     }

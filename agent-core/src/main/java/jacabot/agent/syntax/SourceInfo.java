@@ -4,9 +4,13 @@ package jacabot.agent.syntax;
 public record SourceInfo(String file, int line, int column) {
     public static final SourceInfo NONE = new SourceInfo("", 0, 0);
 
-    /** {@return the source as Jason names it in failure annotations: {@code file:path}} */
+    /**
+     * {@return the source as Jason names it in failure annotations and plan labels: {@code file:a.asl}}
+     * The file name only, as a project names its agents' files: never a path of this machine.
+     */
     public String jasonFile() {
-        return "file:" + file;
+        int slash = Math.max(file.lastIndexOf('/'), file.lastIndexOf('\\'));
+        return "file:" + file.substring(slash + 1);
     }
 
     /** {@return the position as Jason prints it in messages: {@code file:path:line}} */

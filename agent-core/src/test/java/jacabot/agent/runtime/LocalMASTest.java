@@ -49,6 +49,20 @@ class LocalMASTest {
                 "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
     }
 
+    /** What Jason 3.2.0 prints for these three agents (in some order): every other agent gets both messages. */
+    @Test
+    void broadcastReachesEveryOtherAgent() throws Exception {
+        agent("alice", "!go.\n+!go <- .broadcast(tell, hello(1)); .broadcast(achieve, greet).\n"
+                + "+hello(X)[source(A)] <- .print(hello, X, A).\n");
+        String listener = "+hello(X)[source(A)] <- .print(hello, X, A).\n+!greet[source(A)] <- .print(greet, A).\n";
+        agent("bob", listener);
+        agent("carol", listener);
+        mas.runUntilQuiescent(10_000);
+        var got = new java.util.ArrayList<>(lines());
+        java.util.Collections.sort(got);
+        assertEquals(List.of("[bob] greetalice", "[bob] hello1alice", "[carol] greetalice", "[carol] hello1alice"), got);
+    }
+
     @Test
     void messagesFromOneSenderArriveInOrder() throws Exception {
         agent("a", "!go.\n+!go <- for (.range(I, 1, 20)) { .send(b, tell, n(I)) }.\n");
