@@ -94,6 +94,31 @@ final class OpExecution implements Runnable {
         }
     }
 
+    /** Starts an external session (a thread that is not an operation): holds the artifact. */
+    static OpExecution beginSession(ArtifactCore core) {
+        OpExecution session = new OpExecution(core, null, new Object[0], null, null);
+        core.lock().lock();
+        session.holding = true;
+        session.previous = core.begin(session);
+        return session;
+    }
+
+    /** Ends an external session: commits (or rolls back), wakes guards, releases the artifact. */
+    void endSession(boolean success) {
+        try {
+            if (success) {
+                core.commit();
+            } else {
+                core.rollback();
+                core.changed().signalAll();
+            }
+        } finally {
+            core.end(previous);
+            holding = false;
+            core.lock().unlock();
+        }
+    }
+
     private void invoke(Method method, Object[] values) {
         try {
             method.invoke(core.artifact(), values);
