@@ -19,4 +19,17 @@ public class AgentBodyArtifact extends Artifact {
         Workspace ws = core().workspace();
         ws.focusBook().stopFocus(getCurrentOpAgentId(), ws.resolve(id));
     }
+
+    /**
+     * Focuses the artifact called {@code name} as soon as it exists (checked every 20 ms of the
+     * workspace's clock, without holding anything meanwhile).
+     */
+    @OPERATION
+    void focusWhenAvailable(String name) {
+        Workspace ws = core().workspace();
+        while (ws.lookup(name).isEmpty()) {
+            await_time(20);
+        }
+        ws.focusBook().focus(getCurrentOpAgentId(), ws.resolve(name));
+    }
 }

@@ -12,7 +12,8 @@ import java.util.Locale;
  * CArtAgO does: any number fits a numeric parameter when its value does (an {@code int} accepts
  * {@code 5.0}, not {@code 5.5}); an {@code Object} parameter gets numbers normalised to Integer,
  * Long or Double (never Byte); strings fit enums by name; lists and arrays fit each other;
- * {@link OpFeedbackParam} arguments only fit {@code OpFeedbackParam} parameters. Varargs methods
+ * {@link OpFeedbackParam} arguments (unbound variables) only fit {@code OpFeedbackParam} and
+ * {@code Object} parameters. Varargs methods
  * receive their trailing arguments packed into an array.
  */
 final class ArgConverter {
@@ -64,8 +65,8 @@ final class ArgConverter {
     static Object convert(int index, Object value, Class<?> type) throws Mismatch {
         Class<?> boxed = box(type);
         if (value instanceof OpFeedbackParam) {
-            if (boxed == OpFeedbackParam.class) {
-                return value;
+            if (boxed == OpFeedbackParam.class || boxed == Object.class) {
+                return value;   // an Object parameter takes an unbound variable too (TupleSpace's in/rd)
             }
             throw mismatch(index, "is an unbound output, but the parameter is an input of type " + name(type));
         }

@@ -45,7 +45,7 @@ public abstract class Artifact {
 
     // ---- observable properties ----
 
-    /** Defines the observable property {@code name(values...)}; it must not exist yet. */
+    /** Defines the observable property {@code name(values...)}; several may share a name, as in CArtAgO. */
     protected final ObsProperty defineObsProperty(String name, Object... values) {
         return core.properties().define(name, values);
     }
@@ -169,6 +169,132 @@ public abstract class Artifact {
     protected final void execLinkedOp(ArtifactId target, String name, Object... args) {
         OpExecution step = core.current();
         step.awaitLinked(core.workspace().resolve(target), name, args);
+    }
+
+    /**
+     * Runs {@code name(args...)} on every artifact linked to the out port {@code outPort}, one
+     * after the other, as {@link #execLinkedOp(ArtifactId, String, Object...)} does.
+     *
+     * @throws OperationException for an undeclared port, a port without links, or a failed operation
+     */
+    protected final void execLinkedOp(String outPort, String name, Object... args) {
+        OpExecution step = core.current();
+        List<ArtifactId> targets = core.linked(outPort);
+        if (targets == null) {
+            throw new OperationException(OpOutcome.Failure.of("no out port " + outPort + " in " + core.id().name(),
+                    "unknown_port", outPort));
+        }
+        if (targets.isEmpty()) {
+            throw new OperationException(OpOutcome.Failure.of("no artifact linked to out port " + outPort + " of "
+                    + core.id().name(), "not_linked", outPort));
+        }
+        for (ArtifactId target : targets) {
+            try {
+                step.awaitLinked(core.workspace().resolve(target), name, args);
+            } catch (OperationException e) {
+                throw e;
+            } catch (OpFailedException e) {
+                throw new OperationException(e.failure());
+            }
+        }
+    }
+
+    /** {@return whether an artifact is linked to the out port {@code outPort}} */
+    protected final boolean isLinked(String outPort) {
+        core.current();
+        List<ArtifactId> targets = core.linked(outPort);
+        return targets != null && !targets.isEmpty();
+    }
+
+    // ---- other artifacts, from inside this one ----
+
+    /**
+     * Makes an artifact for the agent of the running operation, passing {@code config}'s
+     * parameters to its {@code init} (which runs now, on this thread). {@return its id}
+     *
+     * @throws OperationException with the reason of {@code makeArtifact} (unknown_class, ...)
+     */
+    protected final ArtifactId makeArtifact(String name, String className, ArtifactConfig config) {
+        OpExecution step = core.current();
+        try {
+            return core.workspace().create(name, className, (config == null ? ArtifactConfig.DEFAULT_CONFIG : config).getParams(),
+                    step.agent());
+        } catch (OperationException e) {
+            throw e;
+        } catch (OpFailedException e) {
+            throw new OperationException(e.failure());
+        }
+    }
+
+    /** {@return the id of the artifact called {@code name}} @throws OperationException if there is none */
+    protected final ArtifactId lookupArtifact(String name) {
+        core.current();
+        return core.workspace().lookup(name).orElseThrow(() -> new OperationException(
+                OpOutcome.Failure.of("artifact " + name + " not found", "unknown_artifact", name)));
+    }
+
+    /** Disposes another artifact. @throws OperationException as {@code disposeArtifact} fails */
+    protected final void dispose(ArtifactId id) {
+        core.current();
+        try {
+            core.workspace().disposeFor(id);
+        } catch (OperationException e) {
+            throw e;
+        } catch (OpFailedException e) {
+            throw new OperationException(e.failure());
+        }
+    }
+
+    /** {@return the body artifact of the agent whose operation is running (null for none)} */
+    protected final ArtifactId getCurrentOpAgentBody() {
+        AgentId agent = core.current().agent();
+        return agent == null ? null : core.workspace().lookup("body_" + agent.name()).orElse(null);
+    }
+
+    /**
+     * Waits {@code millis} of wall time holding the artifact, as CArtAgO's {@code delay} does (no
+     * other operation of this artifact runs meanwhile; {@link #await_time} releases it).
+     */
+    protected final void delay(long millis) {
+        core.current();
+        try {
+            Thread.sleep(Math.max(0, millis));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new OpFailedException("interrupted: the workspace is closing", "interrupted");
+        }
+    }
+
+    // ---- observable properties by template (several may share a name) ----
+
+    /** {@return the first property {@code name} whose values match {@code template} (null matches anything), or null} */
+    protected final ObsProperty getObsPropertyByTemplate(String name, Object... template) {
+        return core.properties().getByTemplate(name, template);
+    }
+
+    protected final boolean hasObsPropertyByTemplate(String name, Object... template) {
+        return getObsPropertyByTemplate(name, template) != null;
+    }
+
+    /** Removes the first property {@code name} matching {@code template}, which must exist. */
+    protected final void removeObsPropertyByTemplate(String name, Object... template) {
+        core.properties().removeByTemplate(name, template);
+    }
+
+    // ---- external sessions: a thread that is not an operation (a GUI, a timer) uses the artifact ----
+
+    /**
+     * Takes the artifact for the calling thread, waiting for the running step to end. Between
+     * this and {@link #endExternalSession} the primitives work as inside an operation.
+     */
+    protected final void beginExternalSession() {
+        OpExecution.beginSession(core);
+    }
+
+    /** Commits ({@code success}) or rolls back the session's changes and releases the artifact. */
+    protected final void endExternalSession(boolean success) {
+        OpExecution session = core.current();
+        session.endSession(success);
     }
 
     /**

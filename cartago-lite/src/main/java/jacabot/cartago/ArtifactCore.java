@@ -23,6 +23,8 @@ final class ArtifactCore {
     private final PropertyStore properties = new PropertyStore(this);
     private final Map<AgentId, ArtifactObserver> observers = new LinkedHashMap<>();
     private OpExecution current;
+    /** Declared out ports and the artifacts linked to each, in link order. */
+    private final Map<String, List<ArtifactId>> ports = new java.util.concurrent.ConcurrentHashMap<>();
     private volatile boolean disposed;
 
     ArtifactCore(Artifact artifact, ArtifactId id, ArtifactType type, Workspace workspace) {
@@ -30,6 +32,30 @@ final class ArtifactCore {
         this.id = id;
         this.type = type;
         this.workspace = workspace;
+        ARTIFACT_INFO info = artifact.getClass().getAnnotation(ARTIFACT_INFO.class);
+        if (info != null) {
+            for (OUTPORT port : info.outports()) {
+                ports.put(port.name(), new java.util.concurrent.CopyOnWriteArrayList<>());
+            }
+        }
+    }
+
+    /** Links the out port {@code port} to {@code target}. */
+    void link(String port, ArtifactId target) {
+        List<ArtifactId> linked = ports.get(port);
+        if (linked == null) {
+            throw new OpFailedException("artifact " + id.name() + " has no out port " + port
+                    + " (declare it with @ARTIFACT_INFO(outports = @OUTPORT(name = \"" + port + "\")))", "unknown_port", port);
+        }
+        if (!linked.contains(target)) {
+            linked.add(target);
+        }
+    }
+
+    /** {@return the artifacts linked to {@code port}, or null if there is no such port} */
+    List<ArtifactId> linked(String port) {
+        List<ArtifactId> linked = ports.get(port);
+        return linked == null ? null : List.copyOf(linked);
     }
 
     Artifact artifact() {

@@ -137,6 +137,22 @@ public final class ObsProperty {
     }
 
     /** {@return whether the values equal {@code other}'s, numerically for numbers} */
+    /** {@return whether the values fit {@code template}: same number, null matching anything} */
+    boolean matches(Object[] template) {
+        if (template == null || template.length == 0) {
+            return true;   // CArtAgO: a template without values matches by name
+        }
+        if (template.length != values.length) {
+            return false;
+        }
+        for (int i = 0; i < template.length; i++) {
+            if (template[i] != null && !Values.same(template[i], values[i])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     boolean sameValues(Object[] other) {
         return Values.sameAll(values, other);
     }

@@ -2,7 +2,10 @@ package jacabot.cartago;
 
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.BooleanSupplier;
@@ -87,6 +90,31 @@ final class OpExecution implements Runnable {
         } catch (RuntimeException e) {
             core.rollback();
             throw e;
+        } finally {
+            core.end(previous);
+            holding = false;
+            core.lock().unlock();
+        }
+    }
+
+    /** Starts an external session (a thread that is not an operation): holds the artifact. */
+    static OpExecution beginSession(ArtifactCore core) {
+        OpExecution session = new OpExecution(core, null, new Object[0], null, null);
+        core.lock().lock();
+        session.holding = true;
+        session.previous = core.begin(session);
+        return session;
+    }
+
+    /** Ends an external session: commits (or rolls back), wakes guards, releases the artifact. */
+    void endSession(boolean success) {
+        try {
+            if (success) {
+                core.commit();
+            } else {
+                core.rollback();
+                core.changed().signalAll();
+            }
         } finally {
             core.end(previous);
             holding = false;
@@ -232,10 +260,16 @@ final class OpExecution implements Runnable {
     }
 
     private Map<Integer, Object> outputs() {
+        // the caller's argument positions: a packed varargs array is spread out again
+        List<Object> given = new ArrayList<>(Arrays.asList(args));
+        if (op != null && op.method().isVarArgs() && !given.isEmpty() && given.get(given.size() - 1) instanceof Object[] packed) {
+            given.remove(given.size() - 1);
+            given.addAll(Arrays.asList(packed));
+        }
         Map<Integer, Object> outputs = new LinkedHashMap<>();
-        for (int i = 0; i < args.length; i++) {
-            if (args[i] instanceof OpFeedbackParam && ((OpFeedbackParam<?>) args[i]).isSet()) {
-                outputs.put(i, ((OpFeedbackParam<?>) args[i]).get());
+        for (int i = 0; i < given.size(); i++) {
+            if (given.get(i) instanceof OpFeedbackParam<?> out && out.isSet()) {
+                outputs.put(i, out.get());
             }
         }
         return outputs;

@@ -6,7 +6,7 @@ package jacabot.cartago;
  * stack trace. Artifact code should not catch it (nor catch {@code RuntimeException} around
  * {@code failed}).
  */
-final class OpFailedException extends RuntimeException {
+class OpFailedException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
     private final transient OpOutcome.Failure failure;

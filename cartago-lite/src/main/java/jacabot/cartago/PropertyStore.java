@@ -1,9 +1,7 @@
 package jacabot.cartago;
 
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * The observable properties of one artifact, in two versions: the working one that operations
@@ -21,8 +19,9 @@ final class PropertyStore {
     }
 
     private final ArtifactCore owner;
-    private final Map<String, ObsProperty> working = new LinkedHashMap<>();
-    private Map<String, Committed> committed = new LinkedHashMap<>();
+    /** In definition order; several properties may share a name (CArtAgO allows it). */
+    private final List<ObsProperty> working = new ArrayList<>();
+    private List<Committed> committed = new ArrayList<>();
 
     PropertyStore(ArtifactCore owner) {
         this.owner = owner;
@@ -30,53 +29,95 @@ final class PropertyStore {
 
     ObsProperty define(String name, Object[] values) {
         owner.checkInStep();
-        if (working.containsKey(name)) {
-            throw new IllegalArgumentException("observable property " + name + " is already defined in " + owner.id().name());
-        }
         ObsProperty property = new ObsProperty(this, name, values);
-        working.put(name, property);
+        working.add(property);
         return property;
     }
 
+    /** {@return the first property called {@code name}, or null} */
     ObsProperty get(String name) {
         owner.checkInStep();
-        return working.get(name);
+        for (ObsProperty p : working) {
+            if (p.getName().equals(name)) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * {@return the first property called {@code name} whose values match {@code template}
+     * (same number; a null template value matches anything, numbers compare by value), or null}
+     */
+    ObsProperty getByTemplate(String name, Object[] template) {
+        owner.checkInStep();
+        for (ObsProperty p : working) {
+            if (p.getName().equals(name) && p.matches(template)) {
+                return p;
+            }
+        }
+        return null;
     }
 
     boolean has(String name) {
-        owner.checkInStep();
-        return working.containsKey(name);
+        return get(name) != null;
     }
 
     void remove(String name) {
-        owner.checkInStep();
-        if (working.remove(name) == null) {
+        remove(get(name), name);
+    }
+
+    void removeByTemplate(String name, Object[] template) {
+        remove(getByTemplate(name, template), name);
+    }
+
+    private void remove(ObsProperty p, String name) {
+        if (p == null) {
             throw new IllegalArgumentException("no observable property " + name + " in " + owner.id().name());
         }
+        working.remove(p);
     }
 
     void checkWritable(ObsProperty property) {
         owner.checkInStep();
-        if (working.get(property.getName()) != property) {
+        if (!containsSame(working, property)) {
             throw new IllegalStateException("observable property " + property.getName() + " was removed from " + owner.id().name());
         }
+    }
+
+    private static boolean containsSame(List<ObsProperty> list, ObsProperty p) {
+        for (ObsProperty q : list) {
+            if (q == p) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private Committed committedOf(ObsProperty p) {
+        for (Committed c : committed) {
+            if (c.property() == p) {
+                return c;
+            }
+        }
+        return null;
     }
 
     /** Makes the working version the committed one; {@return what observers must be told} */
     List<Change> commit() {
         List<Change> changes = new ArrayList<>();
-        Map<String, Committed> next = new LinkedHashMap<>();
-        for (ObsProperty p : working.values()) {
-            Committed before = committed.get(p.getName());
+        List<Committed> next = new ArrayList<>();
+        for (ObsProperty p : working) {
+            Committed before = committedOf(p);
             if (before == null) {
                 changes.add(new Change(null, p.snapshot()));
             } else if (!p.sameValues(before.values())) {
                 changes.add(new Change(PropertySnapshot.of(p.getName(), before.values()), p.snapshot()));
             }
-            next.put(p.getName(), new Committed(p, p.values()));
+            next.add(new Committed(p, p.values()));
         }
-        for (Committed before : committed.values()) {
-            if (!working.containsKey(before.property().getName())) {
+        for (Committed before : committed) {
+            if (!containsSame(working, before.property())) {
                 changes.add(new Change(PropertySnapshot.of(before.property().getName(), before.values()), null));
             }
         }
@@ -87,16 +128,16 @@ final class PropertyStore {
     /** Forgets every change since the last commit, including definitions and removals. */
     void rollback() {
         working.clear();
-        for (Committed c : committed.values()) {
+        for (Committed c : committed) {
             c.property().restore(c.values());
-            working.put(c.property().getName(), c.property());
+            working.add(c.property());
         }
     }
 
     /** {@return the committed properties, as observers know them} */
     List<PropertySnapshot> committedSnapshot() {
         List<PropertySnapshot> result = new ArrayList<>();
-        for (Committed c : committed.values()) {
+        for (Committed c : committed) {
             result.add(PropertySnapshot.of(c.property().getName(), c.values()));
         }
         return result;

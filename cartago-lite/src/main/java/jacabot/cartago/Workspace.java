@@ -62,6 +62,7 @@ public final class Workspace implements AutoCloseable {
                 : new ThreadedScheduler(name, b.maxThreads, clock, logger);
         create("workspace", WorkspaceArtifact.class, new Object[0], null);
         create("console", ConsoleArtifact.class, new Object[0], null);
+        create("blackboard", TupleSpace.class, new Object[0], null);
     }
 
     /** {@return a builder for a workspace called {@code name}} */

@@ -3,7 +3,8 @@ package jacabot.cartago;
 /**
  * The {@code workspace} artifact of every workspace: making, finding and disposing artifacts.
  * Operations: {@code makeArtifact(Name, ClassName[, Params[, ?Id]])},
- * {@code lookupArtifact(Name, ?Id)}, {@code disposeArtifact(Id)} (Id: an ArtifactId or a name).
+ * {@code lookupArtifact(Name, ?Id)}, {@code disposeArtifact(Id)}, {@code linkArtifacts(Id, Port, Id)}
+ * (Id: an ArtifactId or a name).
  */
 public class WorkspaceArtifact extends Artifact {
     /** Makes an artifact without init parameters. */
@@ -35,6 +36,13 @@ public class WorkspaceArtifact extends Artifact {
     @OPERATION
     void disposeArtifact(Object id) {
         core().workspace().disposeFor(id);
+    }
+
+    /** Links the out port {@code port} of {@code linking} to {@code linked} (ids or names). */
+    @OPERATION
+    void linkArtifacts(Object linking, String port, Object linked) {
+        Workspace ws = core().workspace();
+        ws.resolve(linking).link(port, ws.resolve(linked).id());
     }
 
     private ArtifactId make(String name, String className, Object[] params) {

@@ -90,7 +90,7 @@ class BadInputTest {
         assertReason("unknown_agent", failure(ws, new AgentId("ghost"), OpTarget.any(), "inc"));
 
         // Nothing else broke: no half-made artifact, c0 works, the failed names are free.
-        assertEquals(List.of("workspace", "console", "body_alice", "c0"),
+        assertEquals(List.of("workspace", "console", "blackboard", "body_alice", "c0"),
                 ws.artifacts().stream().map(ArtifactId::name).collect(Collectors.toList()));
         ok(ws, agent, "inc");
         ok(ws, agent, "makeArtifact", "x", Picky.class.getName(), new Object[] {3});

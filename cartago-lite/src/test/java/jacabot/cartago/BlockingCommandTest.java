@@ -74,7 +74,7 @@ class BlockingCommandTest {
             // The loop blocked in accept() resumes with the socket closed and fails as disposed.
             assertEquals("warning reader: internal operation reader.readLoop() failed: artifact reader was disposed",
                     log.next());
-            assertEquals(List.of("workspace", "console", "body_robot"),
+            assertEquals(List.of("workspace", "console", "blackboard", "body_robot"),
                     ws.artifacts().stream().map(ArtifactId::name).collect(Collectors.toList()));
         }
     }

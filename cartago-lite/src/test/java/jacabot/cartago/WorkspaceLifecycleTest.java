@@ -68,7 +68,7 @@ class WorkspaceLifecycleTest {
             assertEquals("room", c0.workspace());
             assertEquals(Counter.class.getName(), c0.getArtifactType());
             assertEquals("cobj_" + c0.id(), c0.toString());
-            assertEquals(List.of("workspace", "console", "body_alice", "c0"),
+            assertEquals(List.of("workspace", "console", "blackboard", "body_alice", "c0"),
                     ws.artifacts().stream().map(ArtifactId::getName).collect(java.util.stream.Collectors.toList()));
             assertEquals(List.of(agent), ws.agents());
             assertEquals(agent, ws.lookup("body_alice").orElseThrow().creator());

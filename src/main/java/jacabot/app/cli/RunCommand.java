@@ -43,6 +43,7 @@ final class RunCommand implements Callable<Integer> {
             var entries = new ArrayList<Path>();
             classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty()).map(Path::of).forEach(entries::add));
             var classes = ProjectClasses.prepare(file.toString().endsWith(".mas2j") ? file : null, entries);
+            classes.classpath().warnings().forEach(System.err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(System.out, seed, stepping);
             var mas = launcher.load(file);

@@ -26,8 +26,8 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  */
 public class CAgentArch extends LocalArch {
     private final ConcurrentLinkedQueue<java.util.function.Consumer<Agent>> pending = new ConcurrentLinkedQueue<>();
-    /** The belief each focused property became, by artifact and property name. */
-    private final Map<ArtifactId, Map<String, Literal>> beliefs = new HashMap<>();
+    /** The beliefs the focused properties became, by artifact. */
+    private final Map<ArtifactId, List<Literal>> beliefs = new HashMap<>();
 
     public CAgentArch(LocalArch local) {
         super(local.mas(), local.name());
@@ -74,14 +74,15 @@ public class CAgentArch extends LocalArch {
 
     private void add(Agent ag, ArtifactId id, PropertySnapshot p) {
         Literal l = belief(id, p);
-        beliefs.computeIfAbsent(id, k -> new HashMap<>()).put(p.name(), l);
+        beliefs.computeIfAbsent(id, k -> new ArrayList<>()).add(l);
         ag.addPercept(l);
     }
 
-    private void remove(Agent ag, ArtifactId id, String name) {
-        Map<String, Literal> of = beliefs.get(id);
-        Literal l = of == null ? null : of.remove(name);
-        if (l != null) {
+    /** Removes the belief of one property (several may share a name: the values tell them apart). */
+    private void remove(Agent ag, ArtifactId id, PropertySnapshot p) {
+        List<Literal> of = beliefs.get(id);
+        Literal l = belief(id, p);
+        if (of != null && of.remove(l)) {
             ag.removePercept(l);
         }
     }
@@ -101,14 +102,14 @@ public class CAgentArch extends LocalArch {
         @Override
         public void propertyUpdated(ArtifactId artifact, PropertySnapshot oldValue, PropertySnapshot newValue) {
             queue(ag -> {
-                remove(ag, artifact, oldValue.name());
+                remove(ag, artifact, oldValue);
                 add(ag, artifact, newValue);
             });
         }
 
         @Override
         public void propertyRemoved(ArtifactId artifact, PropertySnapshot property) {
-            queue(ag -> remove(ag, artifact, property.name()));
+            queue(ag -> remove(ag, artifact, property));
         }
 
         @Override
@@ -119,7 +120,7 @@ public class CAgentArch extends LocalArch {
 
         @Override
         public void focusEnded(ArtifactId artifact, List<PropertySnapshot> properties, boolean disposed) {
-            queue(ag -> properties.forEach(p -> remove(ag, artifact, p.name())));
+            queue(ag -> properties.forEach(p -> remove(ag, artifact, p)));
         }
     }
 }

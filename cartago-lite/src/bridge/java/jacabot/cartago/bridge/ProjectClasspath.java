@@ -21,12 +21,15 @@ import org.antlr.v4.runtime.CommonTokenStream;
  * and the Java sources beside the project — the {@code .java} files in the {@code .mas2j}'s own
  * folder, everything under {@code src/java} and {@code src/env} (JaCaMo's folder for artifacts),
  * and every {@code classpath:} folder that holds {@code .java} files. An entry ending in {@code *}
- * means every jar of that folder, as with {@code java -cp}.
+ * means every jar of that folder, as with {@code java -cp}. A {@code .mas2j} entry that does not
+ * exist is ignored with a warning, as Jason and {@code java -cp} ignore it (CArtAgO's examples name
+ * {@code ../../../lib/cartago.jar}); a command-line entry that does not exist is an error.
  */
-public record ProjectClasspath(List<Path> entries, List<Path> sources) {
+public record ProjectClasspath(List<Path> entries, List<Path> sources, List<String> warnings) {
     public ProjectClasspath {
         entries = List.copyOf(entries);
         sources = List.copyOf(sources);
+        warnings = List.copyOf(warnings);
     }
 
     /** A problem with an entry or a source: one line for the user. */
@@ -45,10 +48,17 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources) {
     public static ProjectClasspath of(Path mas2j, List<Path> extra) throws Problem {
         var entries = new LinkedHashSet<Path>();
         var sources = new LinkedHashSet<Path>();
+        var warnings = new ArrayList<String>();
         if (mas2j != null && Files.isRegularFile(mas2j)) {   // a missing file: the launcher says so
             Path dir = mas2j.toAbsolutePath().getParent();
             for (String e : classpathEntries(mas2j)) {
-                addEntry(dir.resolve(e), e, mas2j + ": classpath entry", entries, sources);
+                Path p = dir.resolve(e).normalize();
+                boolean wildcard = p.getFileName() != null && p.getFileName().toString().equals("*");
+                if (!Files.exists(wildcard ? p.getParent() : p)) {
+                    warnings.add(mas2j + ": classpath entry '" + e + "' not found, ignored");
+                    continue;
+                }
+                addEntry(p, e, mas2j + ": classpath entry", entries, sources);
             }
             try (Stream<Path> files = Files.list(dir)) {
                 files.filter(ProjectClasspath::isJavaFile).sorted().forEach(sources::add);
@@ -65,7 +75,7 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources) {
         for (Path p : extra) {
             addEntry(p.toAbsolutePath(), p.toString(), "--classpath", entries, sources);
         }
-        return new ProjectClasspath(new ArrayList<>(entries), new ArrayList<>(sources));
+        return new ProjectClasspath(new ArrayList<>(entries), new ArrayList<>(sources), warnings);
     }
 
     private static void addEntry(Path p, String given, String where, Set<Path> entries, Set<Path> sources)

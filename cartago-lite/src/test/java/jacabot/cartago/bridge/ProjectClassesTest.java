@@ -64,10 +64,15 @@ class ProjectClassesTest {
     }
 
     @Test
-    void aMissingEntryIsNamed(@TempDir Path dir) throws Exception {
-        ProjectRun.write(dir, Map.of("t.mas2j", MAS.formatted("classpath: \"lib/none.jar\";"), "a.asl", AGENT));
-        var e = assertThrows(ProjectClasspath.Problem.class, () -> ProjectClasses.prepare(dir.resolve("t.mas2j"), List.of()));
-        assertTrue(e.getMessage().contains("classpath entry 'lib/none.jar'"), e.getMessage());
+    void aMissingMas2jEntryIsAWarningAMissingCommandLineEntryAnError(@TempDir Path dir) throws Exception {
+        ProjectRun.write(dir, Map.of("t.mas2j", MAS.formatted("classpath: \"../../lib/cartago.jar\";"), "a.asl", AGENT));
+        var cp = ProjectClasses.prepare(dir.resolve("t.mas2j"), List.of()).classpath();
+        assertEquals(List.of(), cp.entries());
+        assertEquals(1, cp.warnings().size());
+        assertTrue(cp.warnings().get(0).endsWith("classpath entry '../../lib/cartago.jar' not found, ignored"), cp.warnings().get(0));
+        var e = assertThrows(ProjectClasspath.Problem.class,
+                () -> ProjectClasses.prepare(dir.resolve("t.mas2j"), List.of(dir.resolve("none.jar"))));
+        assertTrue(e.getMessage().startsWith("--classpath '"), e.getMessage());
     }
 
     @Test

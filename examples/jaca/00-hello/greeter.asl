@@ -1,0 +1,2 @@
+!greet.
++!greet <- println("Hello, world!"); .stopMAS.
