@@ -146,9 +146,12 @@ public final class SweepRun {
         if (s == null) {
             f = new SuccessCriteria.Figures(0, 0, 0, 0, 0, 0, false, 0, 0);
         } else {
-            int completed = (int) episodes.stream().filter(BatteryEpisodes.Episode::completed).count();
+            // only suspend/resume has a charger to go to and counts its episodes
+            boolean counted = job.experiment() == Experiment.SUSPEND_RESUME;
+            int completed = counted ? (int) episodes.stream().filter(BatteryEpisodes.Episode::completed).count() : 0;
             f = new SuccessCriteria.Figures(s.duration(), s.contactTime(), s.coverage(), s.picks(), s.deliveries(),
-                    s.storageEntriesEmpty(), s.batteryEmptied(), SuccessCriteria.episodesDue(episodes, s.duration()), completed);
+                    s.storageEntriesEmpty(), s.batteryEmptied(), counted ? SuccessCriteria.episodesDue(episodes, s.duration()) : 0,
+                    completed);
         }
         SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f);
         List<String> reasons = new ArrayList<>();
