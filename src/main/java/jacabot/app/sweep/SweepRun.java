@@ -158,7 +158,7 @@ public final class SweepRun {
         if (!status.equals(RunOutcome.OK)) {
             reasons.add(status + ": " + message);
         }
-        if (s != null) {
+        if (status.equals(RunOutcome.OK)) { // a cut-short run's figures are partial: its status is the reason
             reasons.addAll(v.reasons());
         }
         boolean success = status.equals(RunOutcome.OK) && v.success();
