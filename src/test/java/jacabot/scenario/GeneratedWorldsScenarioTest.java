@@ -20,7 +20,8 @@ import org.junit.jupiter.params.provider.EnumSource;
  * shared {@link SuccessCriteria}. CI: two worlds per experiment, one seed, a simulated minute, both
  * controllers: every run must go the whole minute (no crash, hang or early end) and be judged.
  * Long suite ({@code -Djacabot.tests=long}): five worlds x two seeds x ten simulated minutes; the
- * agent must succeed at least as often as the procedural baseline.
+ * agent must succeed in at least half the runs and at least as often as the procedural baseline
+ * (it did not before the agents were made robust: see the lead's before/after figures).
  */
 class GeneratedWorldsScenarioTest {
     static final int JOBS = Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors()));
@@ -49,12 +50,12 @@ class GeneratedWorldsScenarioTest {
     @Tag("long")
     @ParameterizedTest(name = "{0}")
     @EnumSource(Experiment.class)
-    void theAgentSucceedsAtLeastAsOftenAsTheBaseline(Experiment e) throws Exception {
+    void theAgentSucceedsInHalfTheRunsAndAsOftenAsTheBaseline(Experiment e) throws Exception {
         Sweep.Outcomes out = sweep(e, 5, List.of(1L, 2L), 600);
         String report = SweepReport.markdown(out.runs(), null);
         long agent = out.runs().stream().filter(o -> o.controller().equals(SweepJob.AGENT) && o.success()).count();
         long baseline = out.runs().stream().filter(o -> o.controller().equals(SweepJob.BASELINE) && o.success()).count();
         assertTrue(out.runs().stream().allMatch(o -> o.status().equals(RunOutcome.OK)), report);
-        assertTrue(agent >= baseline && agent > 0, "agent " + agent + ", baseline " + baseline + " successes of 10\n" + report);
+        assertTrue(agent >= baseline && agent >= 5, "agent " + agent + ", baseline " + baseline + " successes of 10\n" + report);
     }
 }
