@@ -58,6 +58,8 @@ public final class LockstepRun {
     private boolean stepLogs = true;
     private Consumer<StepData> onStep = d -> {
     };
+    private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
+    };
 
     /**
      * @param agentSource the agent's program text; {@code agentFile} names it in messages
@@ -110,6 +112,11 @@ public final class LockstepRun {
         this.onStep = listener;
     }
 
+    /** Called after each control step with its readings and the commands going to the robot (inspector, step log). */
+    public void onCommands(java.util.function.BiConsumer<StepData, List<Command>> listener) {
+        this.onCommands = listener;
+    }
+
     public SimWorld world() {
         return world;
     }
@@ -150,7 +157,9 @@ public final class LockstepRun {
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
         }
         onStep.accept(data);
-        return new ArrayList<>(middleware.takeCommands());
+        List<Command> commands = new ArrayList<>(middleware.takeCommands());
+        onCommands.accept(data, commands);
+        return commands;
     }
 
     /** Sets a belief of the agent's program before it starts, e.g. {@code middlewarePort(0)}. */
