@@ -154,6 +154,7 @@ final class ExperimentCommand implements Callable<Integer> {
         double wall = (System.nanoTime() - start) / 1e9;
         report(recorder.summary("agent"), recorder, outDir, wall, run.cycles());
         Files.write(outDir.resolve("link-log.txt"), new ArrayList<>(result.controllerLog()));
+        jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
         jacabot.app.plot.RunPlots.writeAll(outDir, System.out);
         if (inspector != null) {
             inspector.showPlots(outDir);

@@ -107,6 +107,11 @@ public final class LockstepRun {
         return reactive.stats();
     }
 
+    /** {@return the reactive times kept, in microseconds (for a histogram)} */
+    public long[] reactiveSamples() {
+        return reactive.samples();
+    }
+
     /** Called after each control step's exchange (progress lines, recorders). */
     public void onStep(Consumer<StepData> listener) {
         this.onStep = listener;
