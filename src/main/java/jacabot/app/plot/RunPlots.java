@@ -256,7 +256,7 @@ public final class RunPlots {
         CategoryChart c = new CategoryChartBuilder().width(900).height(420)
                 .title("Reactive and response times (wall clock, " + reactive.size() + " / " + response.size() + " samples)")
                 .xAxisTitle("from (us)").yAxisTitle("samples").build();
-        c.getStyler().setOverlapped(true);
+        c.getStyler().setOverlapped(false);
         c.addSeries("reactive", labels, bins(reactive, edges));
         c.addSeries("response", labels, bins(response, edges));
         return c;
