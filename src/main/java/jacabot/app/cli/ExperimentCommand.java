@@ -71,7 +71,7 @@ final class ExperimentCommand implements Callable<Integer> {
             System.err.println("error: " + e.getMessage());
             return 2;
         }
-        Path worldFile = world != null ? world : Path.of(experiment.worldFile());
+        Path worldFile = world != null ? world : jacabot.app.Installation.resolve(experiment.worldFile());
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
