@@ -41,7 +41,7 @@ class InstalledLauncherTest {
 
     @Test
     void experimentRunsFromAnEmptyFolder(@TempDir Path empty) throws Exception {
-        String out = run(empty, "experiment", "navigation", "--headless", "--duration", "4s", "--seed", "7");
+        String out = run(empty, "experiment", "navigation", "--headless", "--duration", "3s", "--seed", "7");
         Path runDir = empty.resolve("runs/navigation-7");
         for (String f : List.of("summary.json", "event-log.txt", "trajectory.png", "steps.jsonl.gz", "battery.png", "speed.png")) {
             assertTrue(Files.isRegularFile(runDir.resolve(f)), f + " missing in " + runDir + ":\n" + out);
@@ -54,7 +54,7 @@ class InstalledLauncherTest {
         Path home = launcher().getParent().getParent();
         Files.copy(home.resolve("worlds/navigation.json"), dir.resolve("my-world.json"));
         Files.copy(home.resolve("agents/navigation.asl"), dir.resolve("my-agent.asl"));
-        String out = run(dir, "experiment", "navigation", "--headless", "--duration", "2s", "--world", "my-world.json",
+        String out = run(dir, "experiment", "navigation", "--headless", "--duration", "1s", "--world", "my-world.json",
                 "--agent", "my-agent.asl", "--out", "out");
         assertTrue(Files.isRegularFile(dir.resolve("out/summary.json")), out);
         assertTrue(out.contains("World my-world.json"), out);

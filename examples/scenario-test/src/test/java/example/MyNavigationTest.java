@@ -1,6 +1,7 @@
 package example;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.scenario.Scenario;
@@ -27,7 +28,7 @@ class MyNavigationTest {
                 .duration(Duration.ofSeconds(40))
                 .run();
         assertTrue(r.summary().picks() >= 1, "no pick in 40 s:\n" + r.eventLog());
-        assertTrue(r.consoleLines("Artifact created").size() == 1, String.join("\n", r.console()));
+        assertFalse(r.consoleLines("Cylinder picked up").isEmpty(), String.join("\n", r.console()));
 
         ScenarioResult again = Scenario.of("navigation").agent(HERE.resolve("my-navigation.asl"))
                 .world(HERE.resolve("../../worlds/navigation.json")).seed(3).duration(Duration.ofSeconds(40)).run();
