@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
                 + "'Programming Robots with an Agent-Oriented BDI-based Control Architecture'.",
         subcommands = {RunCommand.class, ExperimentCommand.class, CompareCommand.class, BenchCommand.class, ControllerCommand.class,
                 ReplayCommand.class,
+                PlotCommand.class,
                 CommandLine.HelpCommand.class})
 public final class JacabotCommand implements Runnable {
     @CommandLine.Spec
