@@ -218,13 +218,22 @@ public final class StepLog {
         private final Header header;
 
         public Reader(Path file) throws IOException {
-            in = new BufferedReader(new InputStreamReader(new GZIPInputStream(Files.newInputStream(file), 1 << 16),
-                    StandardCharsets.UTF_8));
+            try {
+                in = new BufferedReader(new InputStreamReader(new GZIPInputStream(Files.newInputStream(file), 1 << 16),
+                        StandardCharsets.UTF_8));
+            } catch (java.util.zip.ZipException e) {
+                throw new IOException(file + ": not a jacabot step log (" + e.getMessage() + ")");
+            }
             String first = in.readLine();
             if (first == null) {
                 throw new IOException(file + ": empty step log");
             }
-            header = JSON.readValue(first, Header.class);
+            try {
+                header = JSON.readValue(first, Header.class);
+            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+                in.close();
+                throw new IOException(file + ":1: not a jacabot step log: " + e.getOriginalMessage());
+            }
             if (!FORMAT.equals(header.format())) {
                 throw new IOException(file + ":1: not a jacabot step log (format '" + header.format() + "')");
             }
