@@ -18,14 +18,14 @@ class ReplayCommandTest {
     void replaysARecordedRunHeadless(@TempDir Path dir) throws Exception {
         Path run = dir.resolve("run");
         var result = Scenario.of("navigation").world(ROOT.resolve("worlds/navigation.json")).seed(2)
-                .duration(Duration.ofSeconds(8)).out(run).run();
+                .duration(Duration.ofSeconds(5)).out(run).run();
         assertTrue(Files.isRegularFile(run.resolve("steps.jsonl.gz")), result.eventLog());
         assertTrue(Files.isRegularFile(run.resolve("battery.png")));
 
-        String[] r = CliRun.run("replay", run.toString(), "--headless", "--at", "5s", "--frames", "2");
+        String[] r = CliRun.run("replay", run.toString(), "--headless", "--at", "3s", "--frames", "2");
         assertEquals("0", r[0], r[2]);
         assertTrue(r[1].contains("experiment navigation") && r[1].contains("seed 2"), r[1]);
-        assertTrue(r[1].contains("Mind at t=5.00 s"), r[1]);
+        assertTrue(r[1].contains("Mind at t=3.00 s"), r[1]);
         assertTrue(r[1].contains("intention 1"), r[1]);
         assertTrue(Files.isRegularFile(run.resolve("frames/frame-0002.png")), r[1]);
 
