@@ -7,7 +7,8 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     @Test
     void packagesDependOneWayAndNeverUpwards() {
-        // the application composes every module; inside it, the run drivers, then the benches, then the CLI
-        PackageLayers.of("jacabot.app", "run", "bench", "cli").check();
+        // the application composes every module; inside it: the installation and the mind inspector,
+        // the run drivers, the recorder and replay, the plots, the scenario API, the benches, the CLI
+        PackageLayers.of("jacabot.app", "", "inspector", "run", "replay", "plot", "scenario", "bench", "cli").check();
     }
 }

@@ -59,6 +59,9 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED)")
     private Path out;
 
+    @picocli.CommandLine.Mixin
+    private InspectorOptions inspectorOptions = new InspectorOptions();
+
     @Override
     public Integer call() throws Exception {
         double seconds;
@@ -68,7 +71,7 @@ final class ExperimentCommand implements Callable<Integer> {
             System.err.println("error: " + e.getMessage());
             return 2;
         }
-        Path worldFile = world != null ? world : Path.of(experiment.worldFile());
+        Path worldFile = world != null ? world : jacabot.app.Installation.resolve(experiment.worldFile());
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
@@ -132,6 +135,8 @@ final class ExperimentCommand implements Callable<Integer> {
             return 1;
         }
         Robot robot = simWorld.robots().get(0);
+        var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed, System.out);
+        var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
         long[] nextReport = {10_000};
@@ -146,6 +151,7 @@ final class ExperimentCommand implements Callable<Integer> {
             }
         });
         var result = run.runFor(seconds);
+        tap.close();
         if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
             System.out.println("The link ended early:");
             result.linkLog().forEach(l -> System.out.println("  " + l));
@@ -153,6 +159,13 @@ final class ExperimentCommand implements Callable<Integer> {
         double wall = (System.nanoTime() - start) / 1e9;
         report(recorder.summary("agent"), recorder, outDir, wall, run.cycles());
         Files.write(outDir.resolve("link-log.txt"), new ArrayList<>(result.controllerLog()));
+        jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
+        jacabot.app.plot.RunPlots.writeAll(outDir, System.out);
+        if (inspector != null) {
+            inspector.showPlots(outDir);
+            inspectorOptions.linger(inspector, System.out);
+            inspector.close();
+        }
         return 0;
     }
 
@@ -173,8 +186,19 @@ final class ExperimentCommand implements Callable<Integer> {
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
     private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds)
-            throws InterruptedException {
+            throws Exception {
         try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, System.out)) {
+            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed, System.out);
+            AutoCloseable sampling = () -> {
+            };
+            if (inspector != null) {
+                var watches = new ArrayList<jacabot.app.inspector.AgentWatch>();
+                for (String name : run.mas().agentNames()) {
+                    watches.add(jacabot.app.inspector.AgentWatch.attach(inspector, run.mas().agent(name),
+                            name.equals("robot") ? jacabot.app.replay.RunTap.robotView(simWorld) : null));
+                }
+                sampling = jacabot.app.inspector.AgentWatch.sampleEvery(watches, 200);
+            }
             run.start();
             var closed = new java.util.concurrent.CountDownLatch(1);
             javax.swing.SwingUtilities.invokeLater(() -> {
@@ -193,6 +217,10 @@ final class ExperimentCommand implements Callable<Integer> {
                 }
             }
             run.runner().stop();
+            sampling.close();
+            if (inspector != null) {
+                inspector.close();
+            }
         } catch (AslSyntaxException e) {
             System.err.println(e.getMessage());
             return 2;

@@ -36,8 +36,11 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "print the number of reasoning cycles on stderr at the end")
     private boolean stats;
 
+    @picocli.CommandLine.Mixin
+    private InspectorOptions inspectorOptions = new InspectorOptions();
+
     @Override
-    public Integer call() throws InterruptedException {
+    public Integer call() throws Exception {
         try {
             // the project's artifacts: classpath: entries, --classpath, Java sources beside the .mas2j
             var entries = new ArrayList<Path>();
@@ -47,6 +50,17 @@ final class RunCommand implements Callable<Integer> {
             Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(System.out, seed, stepping);
             var mas = launcher.load(file);
+            // off by default: console programs end in moments; --inspector shows their minds
+            var inspector = inspectorOptions.start(false, "jacabot run " + file, System.out);
+            AutoCloseable sampling = () -> {
+            };
+            if (inspector != null) {
+                var watches = new java.util.ArrayList<jacabot.app.inspector.AgentWatch>();
+                for (String name : mas.agentNames()) {
+                    watches.add(jacabot.app.inspector.AgentWatch.attach(inspector, mas.agent(name), null));
+                }
+                sampling = jacabot.app.inspector.AgentWatch.sampleEvery(watches, 200);
+            }
             if (stepping) {
                 mas.runStepping();
             } else {
@@ -58,6 +72,11 @@ final class RunCommand implements Callable<Integer> {
                     cycles += mas.agent(name).cycles();
                 }
                 System.err.println("cycles " + cycles);
+            }
+            sampling.close();
+            if (inspector != null) {
+                inspectorOptions.linger(inspector, System.out);
+                inspector.close();
             }
             return 0;
         } catch (ProjectClasspath.Problem e) {

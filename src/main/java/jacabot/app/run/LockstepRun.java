@@ -58,6 +58,8 @@ public final class LockstepRun {
     private boolean stepLogs = true;
     private Consumer<StepData> onStep = d -> {
     };
+    private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
+    };
 
     /**
      * @param agentSource the agent's program text; {@code agentFile} names it in messages
@@ -105,9 +107,19 @@ public final class LockstepRun {
         return reactive.stats();
     }
 
+    /** {@return the reactive times kept, in microseconds (for a histogram)} */
+    public long[] reactiveSamples() {
+        return reactive.samples();
+    }
+
     /** Called after each control step's exchange (progress lines, recorders). */
     public void onStep(Consumer<StepData> listener) {
         this.onStep = listener;
+    }
+
+    /** Called after each control step with its readings and the commands going to the robot (inspector, step log). */
+    public void onCommands(java.util.function.BiConsumer<StepData, List<Command>> listener) {
+        this.onCommands = listener;
     }
 
     public SimWorld world() {
@@ -150,7 +162,9 @@ public final class LockstepRun {
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
         }
         onStep.accept(data);
-        return new ArrayList<>(middleware.takeCommands());
+        List<Command> commands = new ArrayList<>(middleware.takeCommands());
+        onCommands.accept(data, commands);
+        return commands;
     }
 
     /** Sets a belief of the agent's program before it starts, e.g. {@code middlewarePort(0)}. */

@@ -63,6 +63,11 @@ public final class RealTimeRun implements AutoCloseable {
         return controller.runner();
     }
 
+    /** {@return the agents (e.g. for the inspector: attach before {@link #start()})} */
+    public LocalMAS mas() {
+        return mas;
+    }
+
     public SimWorld world() {
         return world;
     }

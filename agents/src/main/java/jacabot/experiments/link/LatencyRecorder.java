@@ -26,10 +26,15 @@ public final class LatencyRecorder {
     }
 
     public synchronized LatencyStats stats() {
+        return LatencyStats.of(samples());
+    }
+
+    /** {@return the samples kept, oldest first (e.g. for a histogram)} */
+    public synchronized long[] samples() {
         long[] s = new long[size];
         for (int i = 0; i < size; i++) {
             s[i] = ring[(next - size + i + ring.length) % ring.length];
         }
-        return LatencyStats.of(s);
+        return s;
     }
 }

@@ -58,6 +58,11 @@ public final class LinkTimings {
         return reactive.stats();
     }
 
+    /** {@return the response times kept, in microseconds (for a histogram)} */
+    public long[] responseSamples() {
+        return response.samples();
+    }
+
     public LatencyStats response() {
         return response.stats();
     }

@@ -1,0 +1,148 @@
+package jacabot.app.cli;
+
+import jacabot.app.inspector.Inspector;
+import jacabot.app.inspector.MindState;
+import jacabot.app.replay.Replay;
+import jacabot.app.replay.ReplayViewer;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code jacabot replay runs/X}: plays a recorded run back, with the agent's mind at each instant. */
+@Command(name = "replay", mixinStandardHelpOptions = true,
+        description = {"Plays a recorded run (runs/NAME-SEED, written by every headless experiment) back: "
+                + "the viewer with play/pause/step/speed and a time slider, and the mind inspector at the same instant.",
+                "Headless (no display, or --headless): prints a summary, the mind at --at T, and --frames N as PNG."})
+final class ReplayCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (or its steps.jsonl.gz)")
+    private Path dir;
+
+    @Option(names = "--headless", description = "no window: print a summary (the default without a display)")
+    private boolean headless;
+
+    @Option(names = "--at", paramLabel = "T", description = "headless: print the agent's mind at this simulated time (90s, 2m)")
+    private String at;
+
+    @Option(names = "--frames", paramLabel = "N", description = "headless: render N frames evenly over the run into DIR/frames/")
+    private int frames;
+
+    @Mixin
+    private InspectorOptions inspectorOptions = new InspectorOptions();
+
+    @Override
+    public Integer call() throws Exception {
+        Replay replay;
+        try {
+            replay = Replay.open(dir);
+        } catch (IOException e) {
+            System.err.println("error: " + e.getMessage());
+            return 2;
+        }
+        if (replay.frames().isEmpty()) {
+            System.err.println("error: " + dir + ": the step log has no step");
+            return 2;
+        }
+        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
+        if (!window) {
+            return headlessReplay(replay);
+        }
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, System.out);
+        var history = inspector == null ? null : inspector.add("robot");
+        if (inspector != null) {
+            inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
+        }
+        var closed = new CountDownLatch(1);
+        javax.swing.SwingUtilities.invokeLater(() -> {
+            var frame = ReplayViewer.open(replay, i -> {
+                if (history != null) {
+                    history.record(replay.frames().get(i).mind(), replay.robotView(i), java.util.List.of());
+                }
+            });
+            frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
+            frame.addWindowListener(new java.awt.event.WindowAdapter() {
+                @Override
+                public void windowClosed(java.awt.event.WindowEvent e) {
+                    closed.countDown();
+                }
+            });
+        });
+        closed.await();
+        if (inspector != null) {
+            inspector.close();
+        }
+        return 0;
+    }
+
+    private int headlessReplay(Replay replay) throws IOException {
+        var h = replay.header();
+        var all = replay.frames();
+        var last = all.get(all.size() - 1);
+        var plans = new TreeMap<String, Integer>();
+        double distance = 0;
+        for (int i = 0; i < all.size(); i++) {
+            var f = all.get(i);
+            if (i > 0) {
+                var p = all.get(i - 1).body();
+                distance += Math.hypot(f.body().x() - p.x(), f.body().z() - p.z());
+            }
+            for (MindState.Selection s : f.mind().selections()) {
+                plans.merge(s.plan(), 1, Integer::sum);
+            }
+        }
+        System.out.printf("Replay of %s: experiment %s, world %s, seed %d, robot %s, agent %s%n", dir, h.experiment(),
+                h.world(), h.seed(), h.robot(), h.agentFile());
+        System.out.printf("%d control steps of %d ms, %.1f s simulated, %.2f m travelled, %d reasoning cycles%n", all.size(),
+                h.controlStep(), last.timeMs() / 1000.0, distance, last.mind().cycle());
+        System.out.printf("end: x %.3f z %.3f heading %.1f, battery %s, holding %s%n", last.body().x(), last.body().z(),
+                last.body().heading(), last.body().battery() == null ? "-" : String.format("%.0f J", last.body().battery()),
+                last.body().held() == null ? "nothing" : last.body().held());
+        int selections = plans.values().stream().mapToInt(Integer::intValue).sum();
+        System.out.printf("mind: %d beliefs at the end, %d plan selections, %d distinct plans%n", last.mind().beliefs().size(),
+                selections, plans.size());
+        plans.entrySet().stream().sorted(Map.Entry.<String, Integer>comparingByValue().reversed()).limit(5)
+                .forEach(e -> System.out.printf("  %6d x %s%n", e.getValue(), e.getKey()));
+        if (at != null) {
+            double seconds;
+            try {
+                seconds = ExperimentCommand.parseDuration(at);
+            } catch (IllegalArgumentException e) {
+                System.err.println("error: --at: " + e.getMessage());
+                return 2;
+            }
+            printMind(replay, replay.indexAt(Math.round(seconds * 1000)));
+        }
+        if (frames > 0) {
+            Path out = (Files.isDirectory(dir) ? dir : dir.getParent()).resolve("frames");
+            Files.createDirectories(out);
+            for (int k = 0; k < frames; k++) {
+                int i = frames == 1 ? all.size() - 1 : (int) ((long) k * (all.size() - 1) / (frames - 1));
+                javax.imageio.ImageIO.write(ReplayViewer.render(replay, i, 640, 640), "png",
+                        out.resolve(String.format("frame-%04d.png", k + 1)).toFile());
+            }
+            System.out.println("Frames: " + frames + " PNG in " + out);
+        }
+        return 0;
+    }
+
+    private static void printMind(Replay replay, int i) {
+        var f = replay.frames().get(i);
+        var m = f.mind();
+        System.out.printf("%nMind at t=%.2f s (cycle %d):%n  beliefs:%n", f.timeMs() / 1000.0, m.cycle());
+        m.beliefs().forEach(b -> System.out.println("    " + b.text()));
+        System.out.println("  intentions:");
+        for (MindState.IntentionView iv : m.intentions()) {
+            System.out.println("    intention " + iv.id() + " (" + iv.state() + ")");
+            iv.stack().forEach(im -> System.out.println("      " + im.plan() + "   <- " + im.current()
+                    + (im.rest().isEmpty() ? "" : "; " + im.rest())));
+        }
+        System.out.println("  events: " + (m.events().isEmpty() ? "none" : String.join(", ", m.events())));
+    }
+}

@@ -1,0 +1,283 @@
+package jacabot.app.plot;
+
+import jacabot.app.inspector.MindState;
+import jacabot.app.replay.StepLog;
+import java.awt.Color;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.CategoryChart;
+import org.knowm.xchart.CategoryChartBuilder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * The run's plots, as PNG next to {@code trajectory.png} (XChart): battery over time with the
+ * agent's low-battery reactions, the recharges and the resumes; speed and wheel commands; the
+ * trajectory with its events; histograms of the reactive and response times. Read from the
+ * run's folder ({@value StepLog#FILE}, {@code event-log.txt}, {@value #LATENCY}), so
+ * {@code jacabot plot runs/X} redraws them.
+ *
+ * <p>Which agent events count as low battery, resume or mark is read from the names in its
+ * plans' triggers (battery, charg, resum/restor, mark), as the thesis' agents name them.
+ */
+public final class RunPlots {
+    /** Reactive and response times of the run, one {@code kind,microseconds} per line. */
+    public static final String LATENCY = "latency.csv";
+    public static final List<String> FILES = List.of("battery.png", "speed.png", "events.png", "latency.png");
+
+    private static final Pattern EVENT = Pattern.compile("t=([0-9.]+) (.*)");
+
+    private RunPlots() {
+    }
+
+    /** A moment of the run worth a mark. */
+    record Mark(double t, String kind, String text) {
+    }
+
+    /** Writes the latency samples of a run (microseconds) for {@link #writeAll}. */
+    public static void writeLatency(Path outDir, long[] reactive, long[] response) throws IOException {
+        var sb = new StringBuilder("kind,micros\n");
+        for (long v : reactive) {
+            sb.append("reactive,").append(v).append('\n');
+        }
+        for (long v : response) {
+            sb.append("response,").append(v).append('\n');
+        }
+        Files.writeString(outDir.resolve(LATENCY), sb);
+    }
+
+    /** Draws every plot the folder has data for; prints one line naming them. */
+    public static void writeAll(Path outDir, PrintStream out) throws IOException {
+        var written = new ArrayList<String>();
+        Path steps = outDir.resolve(StepLog.FILE);
+        if (Files.isRegularFile(steps)) {
+            var series = Series.read(steps);
+            var marks = marks(outDir, series);
+            battery(series, marks).ifPresent(c -> save(c, outDir, "battery", written));
+            save(speed(series), outDir, "speed", written);
+            save(events(series, marks), outDir, "events", written);
+        }
+        Path latency = outDir.resolve(LATENCY);
+        if (Files.isRegularFile(latency)) {
+            save(latency(latency), outDir, "latency", written);
+        }
+        if (!written.isEmpty()) {
+            out.println("Plots: " + String.join(", ", written) + " in " + outDir);
+        }
+    }
+
+    private static void save(org.knowm.xchart.internal.chartpart.Chart<?, ?> chart, Path dir, String name, List<String> written) {
+        try {
+            BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
+            written.add(name + ".png");
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    /** The step log as columns. */
+    static final class Series {
+        final List<Double> t = new ArrayList<>();
+        final List<Double> x = new ArrayList<>();
+        final List<Double> z = new ArrayList<>();
+        final List<Double> battery = new ArrayList<>();
+        final List<Double> left = new ArrayList<>();
+        final List<Double> right = new ArrayList<>();
+        final List<Double> speed = new ArrayList<>();
+        final List<MindState.Selection> selections = new ArrayList<>();
+        double width = 1;
+        double depth = 1;
+
+        static Series read(Path file) throws IOException {
+            var s = new Series();
+            try (var in = new StepLog.Reader(file)) {
+                s.width = in.header().start().arena().width();
+                s.depth = in.header().start().arena().depth();
+                StepLog.Step step;
+                double px = Double.NaN, pz = Double.NaN, pt = 0;
+                while ((step = in.next()) != null) {
+                    double t = step.timeMs() / 1000.0;
+                    var b = step.body();
+                    s.t.add(t);
+                    s.x.add(b.x());
+                    s.z.add(b.z());
+                    s.battery.add(b.battery() == null ? Double.NaN : b.battery());
+                    s.left.add(b.left());
+                    s.right.add(b.right());
+                    s.speed.add(Double.isNaN(px) || t <= pt ? 0 : Math.hypot(b.x() - px, b.z() - pz) / (t - pt) * 1000);
+                    px = b.x();
+                    pz = b.z();
+                    pt = t;
+                    if (step.mind() != null && step.mind().selections() != null) {
+                        s.selections.addAll(step.mind().selections());
+                    }
+                }
+            }
+            return s;
+        }
+
+        int indexAt(double time) {
+            int lo = 0, hi = t.size() - 1;
+            while (lo < hi) {
+                int mid = (lo + hi) / 2;
+                if (t.get(mid) < time) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            return Math.max(0, lo);
+        }
+    }
+
+    /** The run's events (world and recorder) and the agent's reactions worth a mark. */
+    static List<Mark> marks(Path outDir, Series s) throws IOException {
+        var out = new ArrayList<Mark>();
+        Path log = outDir.resolve("event-log.txt");
+        if (Files.isRegularFile(log)) {
+            for (String line : Files.readAllLines(log)) {
+                Matcher m = EVENT.matcher(line);
+                if (!m.matches()) {
+                    continue;
+                }
+                double t = Double.parseDouble(m.group(1));
+                String what = m.group(2);
+                String kind = what.startsWith("picked") ? "pick"
+                        : what.contains("deliver") ? "delivery"
+                        : what.startsWith("contact") ? "obstacle"
+                        : what.startsWith("reached charger") ? "recharge"
+                        : what.startsWith("left charger") ? "charged" : null;
+                if (kind != null) {
+                    out.add(new Mark(t, kind, what));
+                }
+            }
+        }
+        for (MindState.Selection sel : s.selections) {
+            String e = sel.event().toLowerCase(Locale.ROOT);
+            String head = e.replaceAll("[\\[(].*", "");
+            String kind = head.contains("battery") ? "low battery"
+                    : head.startsWith("-charg") || head.contains("resum") || head.contains("restor") ? "resume"
+                    : head.contains("mark") ? "mark" : null;
+            if (kind != null) {
+                out.add(new Mark(sel.timeMs() / 1000.0, kind, sel.event()));
+            }
+        }
+        return out;
+    }
+
+    static java.util.Optional<XYChart> battery(Series s, List<Mark> marks) {
+        if (s.battery.stream().allMatch(v -> v.isNaN())) {
+            return java.util.Optional.empty();
+        }
+        XYChart c = new XYChartBuilder().width(900).height(420).title("Battery").xAxisTitle("simulated time (s)")
+                .yAxisTitle("energy (J)").build();
+        c.addSeries("battery", s.t, s.battery).setMarker(SeriesMarkers.NONE).setLineColor(new Color(40, 110, 60));
+        for (String kind : List.of("low battery", "recharge", "charged", "resume", "mark")) {
+            var xs = new ArrayList<Double>();
+            var ys = new ArrayList<Double>();
+            for (Mark m : marks) {
+                if (m.kind().equals(kind)) {
+                    xs.add(m.t());
+                    ys.add(s.battery.get(s.indexAt(m.t())));
+                }
+            }
+            if (!xs.isEmpty()) {
+                c.addSeries(kind, xs, ys).setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+            }
+        }
+        c.getStyler().setMarkerSize(10);
+        return java.util.Optional.of(c);
+    }
+
+    static XYChart speed(Series s) {
+        XYChart c = new XYChartBuilder().width(900).height(420).title("Speed and wheel commands")
+                .xAxisTitle("simulated time (s)").yAxisTitle("wheel speed (units) / robot speed (mm/s)").build();
+        c.addSeries("left wheel", s.t, s.left).setMarker(SeriesMarkers.NONE);
+        c.addSeries("right wheel", s.t, s.right).setMarker(SeriesMarkers.NONE);
+        c.addSeries("robot speed (mm/s)", s.t, s.speed).setMarker(SeriesMarkers.NONE);
+        return c;
+    }
+
+    static XYChart events(Series s, List<Mark> marks) {
+        XYChart c = new XYChartBuilder().width(700).height(700).title("Trajectory and events").xAxisTitle("x (m)")
+                .yAxisTitle("z (m)").build();
+        c.getStyler().setXAxisMin(-s.width / 2).setXAxisMax(s.width / 2).setYAxisMin(-s.depth / 2).setYAxisMax(s.depth / 2);
+        c.addSeries("trajectory", s.x, s.z).setMarker(SeriesMarkers.NONE).setLineColor(new Color(120, 120, 200));
+        Map<String, List<double[]>> byKind = new LinkedHashMap<>();
+        for (Mark m : marks) {
+            int i = s.indexAt(m.t());
+            if (i < s.x.size()) {
+                byKind.computeIfAbsent(m.kind(), k -> new ArrayList<>()).add(new double[] {s.x.get(i), s.z.get(i)});
+            }
+        }
+        byKind.forEach((kind, points) -> {
+            var xs = new ArrayList<Double>();
+            var zs = new ArrayList<Double>();
+            points.forEach(p -> {
+                xs.add(p[0]);
+                zs.add(p[1]);
+            });
+            c.addSeries(kind, xs, zs).setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        });
+        c.getStyler().setMarkerSize(10);
+        return c;
+    }
+
+    static CategoryChart latency(Path csv) throws IOException {
+        var reactive = new ArrayList<Long>();
+        var response = new ArrayList<Long>();
+        for (String line : Files.readAllLines(csv)) {
+            String[] f = line.split(",");
+            if (f.length == 2 && f[1].matches("\\d+")) {
+                (f[0].equals("reactive") ? reactive : response).add(Long.parseLong(f[1]));
+            }
+        }
+        // log-spaced bins in microseconds: 1 us .. 100 ms
+        double[] edges = new double[16];
+        for (int i = 0; i < edges.length; i++) {
+            edges[i] = Math.pow(10, i / 3.0);
+        }
+        var labels = new ArrayList<String>();
+        for (int i = 0; i < edges.length - 1; i++) {
+            labels.add(label(edges[i]));
+        }
+        CategoryChart c = new CategoryChartBuilder().width(900).height(420)
+                .title("Reactive and response times (wall clock, " + reactive.size() + " / " + response.size() + " samples)")
+                .xAxisTitle("from (us)").yAxisTitle("samples").build();
+        c.getStyler().setOverlapped(false);
+        c.addSeries("reactive", labels, bins(reactive, edges));
+        c.addSeries("response", labels, bins(response, edges));
+        return c;
+    }
+
+    private static String label(double us) {
+        return us < 1000 ? String.format(Locale.ROOT, "%.0f", us) : String.format(Locale.ROOT, "%.0fk", us / 1000);
+    }
+
+    private static List<Integer> bins(List<Long> values, double[] edges) {
+        var out = new ArrayList<Integer>();
+        for (int i = 0; i < edges.length - 1; i++) {
+            out.add(0);
+        }
+        for (long v : values) {
+            int i = 0;
+            while (i < edges.length - 2 && v >= edges[i + 1]) {
+                i++;
+            }
+            out.set(i, out.get(i) + 1);
+        }
+        return out;
+    }
+}

@@ -1,0 +1,29 @@
+package jacabot.app.scenario;
+
+import jacabot.robot.run.RunSummary;
+import java.util.List;
+
+/**
+ * What a {@link Scenario} run leaves: the run's summary (picks, deliveries, battery, contacts,
+ * coverage, ...), its event log, and the agents' console lines.
+ */
+public record ScenarioResult(RunSummary summary, List<String> console) {
+    public ScenarioResult {
+        console = List.copyOf(console);
+    }
+
+    /** {@return the event log, one {@code t=SECONDS what} line per event (as event-log.txt)} */
+    public String eventLog() {
+        return summary.eventLog();
+    }
+
+    /** {@return the events as lines} */
+    public List<String> events() {
+        return summary.events();
+    }
+
+    /** {@return the console lines containing {@code text}} */
+    public List<String> consoleLines(String text) {
+        return console.stream().filter(l -> l.contains(text)).toList();
+    }
+}

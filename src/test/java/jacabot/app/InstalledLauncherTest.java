@@ -1,0 +1,62 @@
+package jacabot.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The installed launcher ({@code gradle installDist}, which the tests depend on) from an empty
+ * folder outside the repository: experiment names resolve inside the installation, outputs go
+ * to the current folder, and --world paths are relative to it.
+ */
+class InstalledLauncherTest {
+    private static Path launcher() {
+        String dir = System.getProperty("jacabot.installDir");
+        Path bin = dir == null ? null : Path.of(dir, "bin", "jacabot");
+        Assumptions.assumeTrue(bin != null && Files.isExecutable(bin),
+                "no installed launcher (run `gradle installDist`): the launcher test did not run");
+        return bin;
+    }
+
+    private static String run(Path cwd, String... args) throws IOException, InterruptedException {
+        var cmd = new ArrayList<String>(List.of(launcher().toString()));
+        cmd.addAll(List.of(args));
+        Process p = new ProcessBuilder(cmd).directory(cwd.toFile()).redirectErrorStream(true).start();
+        p.getOutputStream().close();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the launcher did not end:\n" + out);
+        assertEquals(0, p.exitValue(), out);
+        return out;
+    }
+
+    @Test
+    void experimentRunsFromAnEmptyFolder(@TempDir Path empty) throws Exception {
+        String out = run(empty, "experiment", "navigation", "--headless", "--duration", "3s", "--seed", "7");
+        Path runDir = empty.resolve("runs/navigation-7");
+        for (String f : List.of("summary.json", "event-log.txt", "trajectory.png", "steps.jsonl.gz", "battery.png", "speed.png")) {
+            assertTrue(Files.isRegularFile(runDir.resolve(f)), f + " missing in " + runDir + ":\n" + out);
+        }
+        assertTrue(out.contains("worlds/navigation.json"), out);
+    }
+
+    @Test
+    void worldAndAgentPathsAreRelativeToTheCurrentFolder(@TempDir Path dir) throws Exception {
+        Path home = launcher().getParent().getParent();
+        Files.copy(home.resolve("worlds/navigation.json"), dir.resolve("my-world.json"));
+        Files.copy(home.resolve("agents/navigation.asl"), dir.resolve("my-agent.asl"));
+        String out = run(dir, "experiment", "navigation", "--headless", "--duration", "1s", "--world", "my-world.json",
+                "--agent", "my-agent.asl", "--out", "out");
+        assertTrue(Files.isRegularFile(dir.resolve("out/summary.json")), out);
+        assertTrue(out.contains("World my-world.json"), out);
+    }
+}

@@ -1,0 +1,99 @@
+package jacabot.app.inspector;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The inspector's HTTP side without a browser: pages, JSON, history, the event stream, plots. */
+class InspectorServerTest {
+    private static MindState mind(long time, String belief, List<MindState.Selection> selections) {
+        var b = new MindState.Belief(belief, List.of("percept"), List.of("percept_type(obs_prop)"));
+        var im = new MindState.Means("+!go[source(self)]", "@p1 +!go : at(X)", "{X=1}", "move(X)", "!go");
+        return new MindState("robot", time, time, time / 10, List.of(b), List.of("+tick"),
+                List.of(new MindState.IntentionView(1, "running", List.of(im))), selections);
+    }
+
+    @Test
+    void servesStatesHistoryStreamAndPlots(@TempDir Path plots) throws Exception {
+        var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
+        try (Inspector inspector = Inspector.startOnFreePort()) {
+            assertEquals("127.0.0.1", inspector.uri().getHost());
+            MindHistory h = inspector.add("robot");
+            var sel = new MindState.Selection(0, 1, 1, "+!go[source(self)]", "@p1 +!go : at(X)", "{X=1}");
+            h.record(mind(0, "at(1)", List.of(sel)), new RobotView(0, 0.1, 0.2, 90, null, 1, 2, List.of("stop")), List.of("+!go <- move."));
+            h.record(mind(1000, "at(2)", List.of()), null, List.of("+!go <- move."));
+
+            String page = get(client, inspector.uri().toString());
+            assertTrue(page.contains("<title>") && page.contains("/api/stream"), page);
+            assertEquals("[\"robot\"]", get(client, inspector.uri() + "api/agents"));
+            String latest = get(client, inspector.uri() + "api/state?agent=robot");
+            assertTrue(latest.contains("at(2)") && latest.contains("\"unifier\":\"{X=1}\""), latest);
+            String first = get(client, inspector.uri() + "api/state?agent=robot&frame=0");
+            assertTrue(first.contains("at(1)") && first.contains("\"commands\":[\"stop\"]"), first);
+            String history = get(client, inspector.uri() + "api/history?agent=robot");
+            assertTrue(history.contains("\"plan\":\"@p1 +!go : at(X)\""), history);
+            assertTrue(get(client, inspector.uri() + "api/plans").contains("+!go <- move."));
+            assertEquals(404, status(client, inspector.uri() + "api/state?agent=nobody"));
+            assertEquals(400, status(client, inspector.uri() + "api/state?agent=robot&frame=x"));
+
+            // plots: only PNG files of the run's folder, nothing else
+            Files.write(plots.resolve("battery.png"), new byte[] {(byte) 0x89, 'P', 'N', 'G'});
+            Files.writeString(plots.resolve("secret.txt"), "no");
+            inspector.showPlots(plots);
+            assertEquals(200, status(client, inspector.uri() + "plots/battery.png"));
+            assertEquals(404, status(client, inspector.uri() + "plots/secret.txt"));
+            assertEquals(404, status(client, inspector.uri() + "plots/..%2Fsecret.txt"));
+
+            // the stream sends the latest frame first
+            var conn = (java.net.HttpURLConnection) URI.create(inspector.uri() + "api/stream").toURL().openConnection();
+            conn.setReadTimeout(10_000);
+            try (var in = new BufferedReader(new InputStreamReader(conn.getInputStream(), StandardCharsets.UTF_8))) {
+                assertEquals("event: frame", in.readLine());
+                String data = in.readLine();
+                assertTrue(data.startsWith("data: ") && data.contains("at(2)"), data);
+            } finally {
+                conn.disconnect();
+            }
+        }
+    }
+
+    @Test
+    void historyIsBoundedAndKeepsChangesOnly() {
+        var h = new MindHistory("robot", 3);
+        for (int i = 0; i < 10; i++) {
+            h.record(mind(i * 1000, "at(" + i + ")", List.of()), null, List.of());
+        }
+        assertEquals(3, h.timeline().size());
+        assertEquals(9, h.latest().index());
+        // the same mind 10 ms later is not a new frame; 250 ms later it is (the robot moves meanwhile)
+        h.record(mind(9010, "at(9)", List.of()), null, List.of());
+        assertEquals(9, h.latest().index());
+        h.record(mind(9000 + MindHistory.KEEP_EVERY_MS, "at(9)", List.of()), null, List.of());
+        assertEquals(10, h.latest().index());
+    }
+
+    private static String get(HttpClient c, String url) throws Exception {
+        var r = c.send(HttpRequest.newBuilder(URI.create(url)).timeout(Duration.ofSeconds(10)).build(),
+                HttpResponse.BodyHandlers.ofString());
+        assertEquals(200, r.statusCode(), url);
+        return r.body();
+    }
+
+    private static int status(HttpClient c, String url) throws Exception {
+        return c.send(HttpRequest.newBuilder(URI.create(url)).timeout(Duration.ofSeconds(10)).build(),
+                HttpResponse.BodyHandlers.discarding()).statusCode();
+    }
+}
