@@ -41,6 +41,9 @@ public abstract class MiddlewareArtifact extends Artifact {
     private LinkEvent.Reading current;
     private long simTimeMs;
 
+    /** What {@code failsafe(tripped)} says: the controller stopped the wheels on its own. */
+    public enum FailSafe { TRIPPED }
+
     void init(int port) throws IOException {
         link = MiddlewareLink.open(LinkConfig.defaults().withPort(port));
         defineObsProperty("connected", false);
@@ -143,7 +146,12 @@ public abstract class MiddlewareArtifact extends Artifact {
                 }
             });
             if (next[0] != null) {
-                handle(next[0]);
+                try {
+                    handle(next[0]);
+                } catch (RuntimeException e) {
+                    // one bad reading must not end the serving loop: the agent would be blind for good
+                    log("reading dropped, interpreting it failed: " + e);
+                }
             }
         }
     }
@@ -153,6 +161,14 @@ public abstract class MiddlewareArtifact extends Artifact {
             getObsProperty("connected").updateValue(true);
         } else if (e instanceof LinkEvent.Disconnected) {
             getObsProperty("connected").updateValue(false);
+        } else if (e instanceof LinkEvent.FailSafe) {
+            signal("failsafe", FailSafe.TRIPPED); // the agent may plan for it: +failsafe(tripped)
+        } else if (e instanceof LinkEvent.StepMarker m) {
+            if (m.awaitsAck()) {
+                // a lockstep controller in another process: the world waits for this, and the link sends
+                // it only while the agent reasons
+                link.acknowledgeWhenAlive(m.step());
+            }
         } else if (e instanceof LinkEvent.Reading r) {
             simTimeMs = r.simTimeMs();
             if (getClock() instanceof jacabot.cartago.FollowingClock following) {

@@ -312,6 +312,30 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         return send(Command.stepAck(step));
     }
 
+    private volatile long pendingAck = -1;
+
+    /**
+     * Lockstep with the agent in another thread: acknowledges {@code step} now if the agent reasons
+     * ({@link #setLiveness}), else as soon as it does again (the heartbeat thread retries), so a stuck
+     * agent holds the world still instead of letting it run without a mind.
+     */
+    public void acknowledgeWhenAlive(long step) {
+        if (alive()) {
+            pendingAck = -1;
+            acknowledge(step);
+        } else {
+            pendingAck = step;
+        }
+    }
+
+    private boolean alive() {
+        try {
+            return liveness.getAsBoolean();
+        } catch (RuntimeException e) {
+            return false;
+        }
+    }
+
     /**
      * Lockstep: sends a step's commands and its {@code STEP_ACK} in one write, so the controller
      * wakes once per step; {@return false when no controller is connected or the socket failed}
@@ -409,14 +433,14 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             while (!closed) {
                 Thread.sleep(Math.max(1, config.heartbeatMs() / 2));
                 RobotConnection c = current;
+                long ack = pendingAck;
+                if (c != null && ack >= 0 && alive()) {
+                    pendingAck = -1;
+                    acknowledge(ack);
+                }
                 // Lockstep controllers do not watch for silence: the world waits for us anyway.
                 if (c != null && !c.hello().lockstep() && System.nanoTime() - lastSentNanos >= periodNanos) {
-                    boolean alive;
-                    try {
-                        alive = liveness.getAsBoolean();
-                    } catch (RuntimeException e) {
-                        alive = false;
-                    }
+                    boolean alive = alive();
                     if (alive) {
                         if (withheld) {
                             withheld = false;

@@ -98,6 +98,14 @@ public final class LinkSecret {
     }
 
     /**
+     * Makes {@code secret} the default of this process instead of the file's: a launcher that runs
+     * both ends in one process (an experiment with the viewer) uses a fresh one per run.
+     */
+    public static void useInThisProcess(LinkSecret secret) {
+        userDefault = secret;
+    }
+
+    /**
      * Reads the secret in {@code file}, or makes the file (mode 0600, its directory 0700) with a fresh
      * secret when it does not exist.
      *
