@@ -279,10 +279,11 @@ class LinkGuardsTest {
             Thread.sleep(300); // heartbeats keep it going while the agent reasons
             assertEquals(0, link.controller().failSafeTrips());
             reasoning.set(false); // a cycle that never ends, a dead agent thread
+            waitFor(() -> link.controller().failSafeTrips() > 0);
             var f = (LinkEvent.FailSafe) await(m, e -> e instanceof LinkEvent.FailSafe);
             assertTrue(f.reason().startsWith("no command or heartbeat"), f.reason());
             await(m, MiddlewareLinkTest.wheels(0, 0));
-            assertTrue(log.stream().anyMatch(l -> l.startsWith("the agent does not reason")), log.toString());
+            waitFor(() -> log.stream().anyMatch(l -> l.startsWith("the agent does not reason")));
             link.controller().runner().stop();
         }
     }
