@@ -1,17 +1,36 @@
 package jacabot.app.cli;
 
+import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.runtime.MasLauncher;
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.app.run.AgentWatch;
+import jacabot.app.run.RealTimeRun;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.robot.link.LinkSecret;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot run FILE}: runs a Jason project (.mas2j) or a single agent (.asl). */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Runs a Jason project (.mas2j) or one agent (.asl, named after the file) until .stopMAS.",
-                "Console lines are printed as Jason prints them: [agent] text."})
+                "Console lines are printed as Jason prints them: [agent] text.",
+                "With a robot's middleware (agents/src/main/asl/*.mas2j) it listens for `jacabot controller`."})
 final class RunCommand implements Callable<Integer> {
+    /** The belief the robot agents read their middleware's port from (their .asl holds the default). */
+    static final String PORT_BELIEF = "middlewarePort";
+
     @Parameters(index = "0", paramLabel = "FILE", description = "a .mas2j project or an .asl agent")
     private Path file;
 
@@ -24,27 +43,98 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "print the number of reasoning cycles on stderr at the end")
     private boolean stats;
 
+    @Option(names = "--port", paramLabel = "PORT",
+            description = "the middleware's port: replaces the agents' " + PORT_BELIEF + "(P) belief (their default 4444)")
+    private Integer port;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "the link secret shared with `jacabot controller` (default ~/.jacabot/link-secret, made 0600 if absent)")
+    private Path secretFile;
+
+    @Spec
+    private CommandSpec spec;
+
     @Override
     public Integer call() throws InterruptedException {
+        PrintWriter err = spec.commandLine().getErr();
+        if (port != null && (port < 1 || port > 65535)) {
+            throw new UserError("--port must be in 1..65535, got " + port);
+        }
+        if (secretFile != null) {
+            System.setProperty(LinkSecret.FILE_PROPERTY, secretFile.toString());
+            LinkSecret.resetUserDefault();
+        }
+        LocalMAS mas;
         try {
-            var launcher = new MasLauncher(System.out, seed, stepping);
-            var mas = launcher.load(file);
-            if (stepping) {
-                mas.runStepping();
-            } else {
-                mas.runThreads();
-            }
-            if (stats) {
-                long cycles = 0;
-                for (String name : mas.agentNames()) {
-                    cycles += mas.agent(name).cycles();
-                }
-                System.err.println("cycles " + cycles);
-            }
-            return 0;
+            var launcher = new MasLauncher(ConsoleStreams.of(spec.commandLine().getOut()), seed, stepping);
+            mas = launcher.load(file);
         } catch (MasLauncher.UserError e) {
-            System.err.println(e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
+        }
+        int listen = port != null ? port : declaredPort(mas);
+        if (port != null) {
+            for (String name : mas.agentNames()) {
+                setPort(mas.agent(name), port);
+            }
+        }
+        if (listen > 0) {
+            checkFree(listen);
+            try {
+                LinkSecret.userDefault(); // a secret file that cannot be read is told now, in one line
+            } catch (java.io.UncheckedIOException e) {
+                throw new UserError(e.getMessage() + " (or pass --secret-file FILE)");
+            }
+        }
+        // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
+        MiddlewareLink.setDefaultLiveness(new AgentWatch(mas, RealTimeRun.STALL_MS));
+        if (stepping) {
+            mas.runStepping();
+        } else {
+            mas.runThreads();
+        }
+        if (stats) {
+            long cycles = 0;
+            for (String name : mas.agentNames()) {
+                cycles += mas.agent(name).cycles();
+            }
+            err.println("cycles " + cycles);
+        }
+        return 0;
+    }
+
+    /** {@return the port in an agent's {@value #PORT_BELIEF} belief, or 0 when none declares one} */
+    private static int declaredPort(LocalMAS mas) {
+        for (String name : mas.agentNames()) {
+            for (Literal b : mas.agent(name).beliefBase().beliefs()) {
+                if (isPortBelief(b) && b.arg(0) instanceof NumberTerm n) {
+                    return (int) n.value();
+                }
+            }
+        }
+        return 0;
+    }
+
+    private static boolean isPortBelief(Literal b) {
+        return b.arity() == 1 && b.toString().startsWith(PORT_BELIEF + "(");
+    }
+
+    /** The launcher's port wins over the program's default: the old belief goes, the new one comes. */
+    static void setPort(Agent agent, int port) {
+        for (Literal b : agent.beliefBase().beliefs()) {
+            if (isPortBelief(b)) {
+                agent.beliefBase().removeEntry(b);
+            }
+        }
+        agent.addBelief(Literal.of(PORT_BELIEF, new NumberTerm(port)).addAnnot(Literal.SOURCE_SELF), false);
+    }
+
+    /** A port in use is a one-line error with what to do, not a run that ends quietly. */
+    private static void checkFree(int port) {
+        try (ServerSocket probe = new ServerSocket()) {
+            probe.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
+        } catch (IOException e) {
+            throw new IllegalStateException("port " + port + " is in use (another jacabot run?); "
+                    + "stop it or choose another with --port (and the same --port for `jacabot controller`)");
         }
     }
 }
