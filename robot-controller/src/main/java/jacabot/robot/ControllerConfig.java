@@ -48,9 +48,9 @@ public record ControllerConfig(String host, int port, String robotName, boolean 
         }
     }
 
-    /** {@return 127.0.0.1:4444, first robot, real time × 1, fail-safe 200 ms, back-off 100 ms..2 s, log to stderr} */
+    /** {@return 127.0.0.1:4444, first robot, real time × 1, fail-safe 500 ms, back-off 100 ms..2 s, log to stderr} */
     public static ControllerConfig defaults() {
-        return new ControllerConfig(Protocol.DEFAULT_HOST, Protocol.DEFAULT_PORT, null, false, 1.0, 200, 100, 2000, 100,
+        return new ControllerConfig(Protocol.DEFAULT_HOST, Protocol.DEFAULT_PORT, null, false, 1.0, 500, 100, 2000, 100,
                 64, false, LinkClock.system(), System::nanoTime, line -> System.err.println("[controller] " + line), null, null);
     }
 

@@ -50,7 +50,7 @@ final class ControllerCommand implements Callable<Integer> {
 
     @Option(names = "--fail-safe-ms", paramLabel = "MS",
             description = "stop the wheels after this long without a command or heartbeat (default ${DEFAULT-VALUE})")
-    private long failSafeMs = 200;
+    private long failSafeMs = 500;
 
     @Option(names = "--secret-file", paramLabel = "FILE",
             description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
