@@ -40,6 +40,8 @@ public abstract class MiddlewareArtifact extends Artifact {
     /** The reading being interpreted, for the reactive-time measurement. */
     private LinkEvent.Reading current;
     private long simTimeMs;
+    /** A lockstep step marker handled, its acknowledgement not yet requested (−1: none). */
+    private long ackDue = -1;
 
     /** What {@code failsafe(tripped)} says: the controller stopped the wheels on its own. */
     public enum FailSafe { TRIPPED }
@@ -138,7 +140,14 @@ public abstract class MiddlewareArtifact extends Artifact {
     void servingLoop() {
         while (!stopAcquire) {
             LinkEvent[] next = new LinkEvent[1];
+            long ack = ackDue;
+            ackDue = -1;
             await((IBlockingCmd) () -> {
+                if (ack >= 0) {
+                    // here the step's property changes are out: the link acknowledges once the agent
+                    // has taken them in and is idle again
+                    link.acknowledgeWhenAlive(ack);
+                }
                 try {
                     next[0] = link.receive();
                 } catch (InterruptedException e) {
@@ -165,9 +174,8 @@ public abstract class MiddlewareArtifact extends Artifact {
             signal("failsafe", FailSafe.TRIPPED); // the agent may plan for it: +failsafe(tripped)
         } else if (e instanceof LinkEvent.StepMarker m) {
             if (m.awaitsAck()) {
-                // a lockstep controller in another process: the world waits for this, and the link sends
-                // it only while the agent reasons
-                link.acknowledgeWhenAlive(m.step());
+                // a lockstep controller in another process: the world waits for this (see servingLoop)
+                ackDue = m.step();
             }
         } else if (e instanceof LinkEvent.Reading r) {
             simTimeMs = r.simTimeMs();

@@ -32,6 +32,7 @@ public final class JacabotCommand implements Runnable {
             if (List.of(args).contains("--debug")) {
                 e.printStackTrace();
             }
+            jacabot.experiments.link.MiddlewareLink.closeAll(); // the robots stop now, not when the JVM is gone
             new Thread(() -> System.exit(1), "exit-after-thread-death").start();
         });
         System.exit(execute(args));

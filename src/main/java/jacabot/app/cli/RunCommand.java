@@ -86,7 +86,9 @@ final class RunCommand implements Callable<Integer> {
             }
         }
         // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
-        MiddlewareLink.setDefaultLiveness(new AgentWatch(mas, RealTimeRun.STALL_MS));
+        var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
+        MiddlewareLink.setDefaultLiveness(watch);
+        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
         if (stepping) {
             mas.runStepping();
         } else {

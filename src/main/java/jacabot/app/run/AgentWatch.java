@@ -25,6 +25,20 @@ public final class AgentWatch implements BooleanSupplier {
         this.stallNanos = TimeUnit.MILLISECONDS.toNanos(stallMs);
     }
 
+    /** {@return whether every agent is idle now (nothing to do until an event comes)} */
+    public boolean idle() {
+        for (String name : mas.agentNames()) {
+            try {
+                if (!mas.agent(name).canSleep()) {
+                    return false;
+                }
+            } catch (RuntimeException e) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     @Override
     public synchronized boolean getAsBoolean() {
         if (mas.isStopped()) {

@@ -128,6 +128,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
         config.secret(); // fails here, with the file's problem, rather than at the first connection
         MiddlewareLink link = new MiddlewareLink(config, server);
+        OPEN.add(link);
         link.acceptor.start();
         link.watchdog.start();
         if (config.heartbeatMs() > 0) {
@@ -207,6 +208,23 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     /** The liveness probe of links opened from now on in this process (the launcher sets the agents'). */
     public static void setDefaultLiveness(java.util.function.BooleanSupplier probe) {
         defaultLiveness = probe;
+    }
+
+    private volatile java.util.function.BooleanSupplier quiescence = defaultQuiescence;
+    private static volatile java.util.function.BooleanSupplier defaultQuiescence = () -> true;
+
+    /**
+     * Lockstep with the agent in its own thread: a step is acknowledged once {@code probe} says the
+     * agent is idle (it has taken the step's percepts in and acted on them), as the in-process
+     * lockstep runner does; by default at once.
+     */
+    public void setQuiescence(java.util.function.BooleanSupplier probe) {
+        this.quiescence = probe;
+    }
+
+    /** The quiescence probe of links opened from now on in this process. */
+    public static void setDefaultQuiescence(java.util.function.BooleanSupplier probe) {
+        defaultQuiescence = probe;
     }
 
     public void addConnectionListener(ConnectionListener l) {
@@ -320,11 +338,19 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
      * agent holds the world still instead of letting it run without a mind.
      */
     public void acknowledgeWhenAlive(long step) {
-        if (alive()) {
+        if (alive() && quiet()) {
             pendingAck = -1;
             acknowledge(step);
         } else {
             pendingAck = step;
+        }
+    }
+
+    private boolean quiet() {
+        try {
+            return quiescence.getAsBoolean();
+        } catch (RuntimeException e) {
+            return false;
         }
     }
 
@@ -362,8 +388,21 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
     }
 
+    private static final java.util.Set<MiddlewareLink> OPEN = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    /**
+     * Closes every link of this process at once (the launcher, when an agent's thread died): the
+     * controllers see the drop and stop their robots without waiting for the process to end.
+     */
+    public static void closeAll() {
+        for (MiddlewareLink l : OPEN) {
+            l.close();
+        }
+    }
+
     @Override
     public void close() {
+        OPEN.remove(this);
         closed = true;
         try {
             server.close();
@@ -431,10 +470,11 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         long periodNanos = TimeUnit.MILLISECONDS.toNanos(config.heartbeatMs());
         try {
             while (!closed) {
-                Thread.sleep(Math.max(1, config.heartbeatMs() / 2));
+                // a pending lockstep acknowledgement is retried every millisecond
+                Thread.sleep(pendingAck >= 0 ? 1 : Math.max(1, config.heartbeatMs() / 2));
                 RobotConnection c = current;
                 long ack = pendingAck;
-                if (c != null && ack >= 0 && alive()) {
+                if (c != null && ack >= 0 && alive() && quiet()) {
                     pendingAck = -1;
                     acknowledge(ack);
                 }
