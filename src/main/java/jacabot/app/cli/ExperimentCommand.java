@@ -161,8 +161,10 @@ final class ExperimentCommand implements Callable<Integer> {
         });
         // the link log goes to disk as it is made: a long run keeps no copy of it in memory
         var done = new java.util.concurrent.CountDownLatch(1);
+        var terminated = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
-            run.stop(); // SIGTERM: end at this step, write what we have
+            terminated.set(true);
+            run.stop(); // SIGTERM: end at this step, write what we have (summaries first, the PNG last)
             try {
                 done.await(900, java.util.concurrent.TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
@@ -186,7 +188,10 @@ final class ExperimentCommand implements Callable<Integer> {
                 throw new IllegalStateException(port != 0 ? "cannot listen on port " + port + " (" + e.getMessage()
                         + "); choose another with --port" : e.getMessage(), e);
             }
-            if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
+            linkLog.flush();
+            if (terminated.get()) {
+                stdout.printf("Stopped by a signal at t=%.2f s; writing what there is.%n", simWorld.timeMs() / 1000.0);
+            } else if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
                 stdout.println("The link ended early:");
                 result.linkLog().forEach(l -> stdout.println("  " + l));
             }

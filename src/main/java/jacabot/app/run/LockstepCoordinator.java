@@ -130,7 +130,12 @@ public final class LockstepCoordinator {
             Throwable[] simFailure = new Throwable[1];
             Thread simulation = new Thread(() -> {
                 try {
-                    link.controller().runner().runFor(seconds);
+                    // a control step at a time, so that stop() (SIGTERM) ends the run at the next step
+                    long end = world.timeMs() + Math.round(seconds * 1000);
+                    long chunk = world.controlStep();
+                    while (world.timeMs() < end && !stopRequested) {
+                        link.controller().runner().runFor(Math.min(chunk, end - world.timeMs()) / 1000.0);
+                    }
                 } catch (RuntimeException | Error e) {
                     simFailure[0] = e;
                 } finally {
