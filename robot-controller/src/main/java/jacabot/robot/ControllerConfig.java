@@ -30,11 +30,13 @@ import java.util.function.LongSupplier;
  *                         lockstep runs of the same world and agent
  * @param secret           the key shared with the middleware ({@link LinkSecret}); null: the user's
  *                         secret file, read when the link starts
+ * @param tls              null: plain TCP; else TLS with this context's trust store (the JDK's
+ *                         {@code SSLSocket}; the middleware's certificate must name the host)
  */
 public record ControllerConfig(String host, int port, String robotName, boolean lockstep, double speedFactor,
                                long failSafeMs, long minBackoffMs, long maxBackoffMs, int resetEvery, int outboxCapacity,
                                boolean sendCameraImage, LinkClock clock, LongSupplier nanoTime, Consumer<String> log,
-                               Consumer<String> eventLog, LinkSecret secret) {
+                               Consumer<String> eventLog, LinkSecret secret, javax.net.ssl.SSLContext tls) {
     public ControllerConfig {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be in 0..65535, got " + port);
@@ -51,63 +53,69 @@ public record ControllerConfig(String host, int port, String robotName, boolean 
     /** {@return 127.0.0.1:4444, first robot, real time × 1, fail-safe 500 ms, back-off 100 ms..2 s, log to stderr} */
     public static ControllerConfig defaults() {
         return new ControllerConfig(Protocol.DEFAULT_HOST, Protocol.DEFAULT_PORT, null, false, 1.0, 500, 100, 2000, 100,
-                64, false, LinkClock.system(), System::nanoTime, line -> System.err.println("[controller] " + line), null, null);
+                64, false, LinkClock.system(), System::nanoTime, line -> System.err.println("[controller] " + line), null, null, null);
     }
 
     public ControllerConfig withAddress(String newHost, int newPort) {
         return new ControllerConfig(newHost, newPort, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs,
-                maxBackoffMs, resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                maxBackoffMs, resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withRobot(String name) {
         return new ControllerConfig(host, port, name, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withLockstep(boolean on) {
         return new ControllerConfig(host, port, robotName, on, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withSpeedFactor(double factor) {
         return new ControllerConfig(host, port, robotName, lockstep, factor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withFailSafeMs(long ms) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, ms, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withBackoff(long minMs, long maxMs) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minMs, maxMs, resetEvery,
-                outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withResetEvery(int batches) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                batches, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret);
+                batches, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withCameraImage(boolean on) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, on, clock, nanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, on, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withClocks(LinkClock newClock, LongSupplier newNanoTime) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, newClock, newNanoTime, log, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, newClock, newNanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withLog(Consumer<String> newLog) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, newLog, eventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, newLog, eventLog, secret, tls);
     }
 
     /** {@return this config with the key shared with the middleware} */
     public ControllerConfig withSecret(LinkSecret newSecret) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, newSecret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, newSecret, tls);
+    }
+
+    /** Connects with TLS, trusting what {@code context} trusts. */
+    public ControllerConfig withTls(javax.net.ssl.SSLContext context) {
+        return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, context);
     }
 
     /** {@return the configured secret, else the user's secret file's} */
@@ -118,6 +126,6 @@ public record ControllerConfig(String host, int port, String robotName, boolean 
 
     public ControllerConfig withEventLog(Consumer<String> newEventLog) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, newEventLog, secret);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, newEventLog, secret, tls);
     }
 }

@@ -160,11 +160,24 @@ final class RobotLink {
         long backoff = config.minBackoffMs();
         boolean everConnected = false;
         while (!isClosed()) {
-            Socket s = new Socket();
+            Socket s;
+            try {
+                s = config.tls() == null ? new Socket() : config.tls().getSocketFactory().createSocket();
+            } catch (IOException e) {
+                problem("cannot make a socket: " + e.getMessage(), false);
+                return;
+            }
             boolean up = false;
             try {
                 s.connect(new InetSocketAddress(config.host(), config.port()), HANDSHAKE_TIMEOUT_MS);
                 socket = s;
+                if (s instanceof javax.net.ssl.SSLSocket tlsSocket) {
+                    var params = tlsSocket.getSSLParameters();
+                    params.setEndpointIdentificationAlgorithm("HTTPS"); // the certificate must name the host
+                    tlsSocket.setSSLParameters(params);
+                    tlsSocket.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
+                    tlsSocket.startHandshake();
+                }
                 s.setTcpNoDelay(true);
                 s.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
                 var out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));

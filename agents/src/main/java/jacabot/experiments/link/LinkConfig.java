@@ -22,10 +22,12 @@ import java.util.function.Consumer;
  * @param log           where connections, refusals and closing reasons are reported
  * @param secret        the key shared with the controller; null: the user's secret file
  * @param guards        deadlines and counts that bound what one connection may cost
+ * @param tls           null: plain TCP (loopback); else TLS with this context's key (the JDK's
+ *                      {@code SSLServerSocket}), for a controller on another machine
  */
 public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, int queueCapacity,
                          SensorInfoFilter.Limits limits, LinkClock clock, Consumer<String> log, LinkSecret secret,
-                         Guards guards) {
+                         Guards guards, javax.net.ssl.SSLContext tls) {
     /**
      * @param handshakeMs        a connection must finish its handshake within this (wall) time
      * @param frameMs            a frame, once begun, must be complete within this time
@@ -57,7 +59,7 @@ public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, in
     public static LinkConfig defaults() {
         return new LinkConfig(InetAddress.getLoopbackAddress(), Protocol.DEFAULT_PORT, 50, 4096,
                 SensorInfoFilter.Limits.DEFAULT, LinkClock.system(), line -> System.err.println("[middleware] " + line),
-                null, Guards.DEFAULT);
+                null, Guards.DEFAULT, null);
     }
 
     /** {@return the configured secret, else the user's secret file's} */
@@ -67,34 +69,39 @@ public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, in
     }
 
     public LinkConfig withPort(int newPort) {
-        return new LinkConfig(bindAddress, newPort, heartbeatMs, queueCapacity, limits, clock, log, secret, guards);
+        return new LinkConfig(bindAddress, newPort, heartbeatMs, queueCapacity, limits, clock, log, secret, guards, tls);
     }
 
     public LinkConfig withBindAddress(InetAddress address) {
-        return new LinkConfig(address, port, heartbeatMs, queueCapacity, limits, clock, log, secret, guards);
+        return new LinkConfig(address, port, heartbeatMs, queueCapacity, limits, clock, log, secret, guards, tls);
     }
 
     public LinkConfig withHeartbeatMs(long ms) {
-        return new LinkConfig(bindAddress, port, ms, queueCapacity, limits, clock, log, secret, guards);
+        return new LinkConfig(bindAddress, port, ms, queueCapacity, limits, clock, log, secret, guards, tls);
     }
 
     public LinkConfig withLimits(SensorInfoFilter.Limits newLimits) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, newLimits, clock, log, secret, guards);
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, newLimits, clock, log, secret, guards, tls);
     }
 
     public LinkConfig withClock(LinkClock newClock) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, newClock, log, secret, guards);
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, newClock, log, secret, guards, tls);
     }
 
     public LinkConfig withLog(Consumer<String> newLog) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, newLog, secret, guards);
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, newLog, secret, guards, tls);
     }
 
     public LinkConfig withSecret(LinkSecret newSecret) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, newSecret, guards);
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, newSecret, guards, tls);
+    }
+
+    /** Listens with TLS (the context holds the middleware's key and certificate). */
+    public LinkConfig withTls(javax.net.ssl.SSLContext context) {
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, secret, guards, context);
     }
 
     public LinkConfig withGuards(Guards newGuards) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, secret, newGuards);
+        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, secret, newGuards, tls);
     }
 }

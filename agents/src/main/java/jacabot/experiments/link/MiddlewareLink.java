@@ -117,7 +117,12 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
      * @throws IOException when the address cannot be bound (e.g. the port is taken)
      */
     public static MiddlewareLink open(LinkConfig config) throws IOException {
-        ServerSocket server = new ServerSocket();
+        ServerSocket server = config.tls() == null ? new ServerSocket()
+                : config.tls().getServerSocketFactory().createServerSocket();
+        if (config.tls() == null && !config.bindAddress().isLoopbackAddress()) {
+            config.log().accept("warning: listening on " + config.bindAddress().getHostAddress()
+                    + " without TLS: the link is authenticated but anyone on the path can read it");
+        }
         try {
             server.setReuseAddress(true);
             server.bind(new InetSocketAddress(config.bindAddress(), config.port()));
