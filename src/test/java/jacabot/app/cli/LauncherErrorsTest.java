@@ -56,6 +56,7 @@ class LauncherErrorsTest {
     @Test
     void badNumbersAreUserErrors() {
         assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");
+        assertOneLine(CliRun.run("compare", "--duration", "abc"), "2", "--duration: bad duration");
         assertOneLine(experiment("--speed", "-1"), "2", "--speed must be a positive number");
         assertOneLine(experiment("--port", "70000"), "2", "--port must be in 0..65535");
         assertOneLine(experiment("--duration", "soon"), "2", "bad duration");
