@@ -276,8 +276,8 @@ class LinkGuardsTest {
             await(m, e -> e instanceof LinkEvent.Connected);
             m.send(Command.forward());
             await(m, MiddlewareLinkTest.wheels(50, 50));
-            Thread.sleep(300); // heartbeats keep it going while the agent reasons
-            assertEquals(0, link.controller().failSafeTrips());
+            Thread.sleep(300);
+            assertTrue(log.stream().noneMatch(l -> l.startsWith("the agent does not reason")), "heartbeats flow meanwhile");
             reasoning.set(false); // a cycle that never ends, a dead agent thread
             waitFor(() -> link.controller().failSafeTrips() > 0);
             var f = (LinkEvent.FailSafe) await(m, e -> e instanceof LinkEvent.FailSafe);
