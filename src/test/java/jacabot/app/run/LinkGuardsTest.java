@@ -164,7 +164,6 @@ class LinkGuardsTest {
                 OutputStream out = s.getOutputStream();
                 byte[] hello = new Protocol.Hello(Protocol.VERSION, "slow", "w", 40, false).bytes();
                 s.setSoTimeout(5000);
-                long t0 = System.nanoTime();
                 assertThrows(IOException.class, () -> {
                     for (byte b : hello) { // a byte every 100 ms: each read is quick, the whole is not
                         out.write(b);
@@ -179,7 +178,6 @@ class LinkGuardsTest {
                 });
                 waitFor(() -> m.lastCloseReason() != null);
                 assertTrue(m.lastCloseReason().startsWith("no complete handshake within 300 ms"), m.lastCloseReason());
-                assertTrue(System.nanoTime() - t0 < TimeUnit.SECONDS.toNanos(5));
             }
             try (Socket s = handshake(m, Protocol.VERSION)) {
                 await(m, e -> e instanceof LinkEvent.Connected);
