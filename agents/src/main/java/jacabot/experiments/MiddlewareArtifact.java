@@ -40,6 +40,11 @@ public abstract class MiddlewareArtifact extends Artifact {
     /** The reading being interpreted, for the reactive-time measurement. */
     private LinkEvent.Reading current;
     private long simTimeMs;
+    /** A lockstep step marker handled, its acknowledgement not yet requested (−1: none). */
+    private long ackDue = -1;
+
+    /** What {@code failsafe(tripped)} says: the controller stopped the wheels on its own. */
+    public enum FailSafe { TRIPPED }
 
     void init(int port) throws IOException {
         link = MiddlewareLink.open(LinkConfig.defaults().withPort(port));
@@ -135,7 +140,14 @@ public abstract class MiddlewareArtifact extends Artifact {
     void servingLoop() {
         while (!stopAcquire) {
             LinkEvent[] next = new LinkEvent[1];
+            long ack = ackDue;
+            ackDue = -1;
             await((IBlockingCmd) () -> {
+                if (ack >= 0) {
+                    // here the step's property changes are out: the link acknowledges once the agent
+                    // has taken them in and is idle again
+                    link.acknowledgeWhenAlive(ack);
+                }
                 try {
                     next[0] = link.receive();
                 } catch (InterruptedException e) {
@@ -143,7 +155,12 @@ public abstract class MiddlewareArtifact extends Artifact {
                 }
             });
             if (next[0] != null) {
-                handle(next[0]);
+                try {
+                    handle(next[0]);
+                } catch (RuntimeException e) {
+                    // one bad reading must not end the serving loop: the agent would be blind for good
+                    log("reading dropped, interpreting it failed: " + e);
+                }
             }
         }
     }
@@ -153,6 +170,13 @@ public abstract class MiddlewareArtifact extends Artifact {
             getObsProperty("connected").updateValue(true);
         } else if (e instanceof LinkEvent.Disconnected) {
             getObsProperty("connected").updateValue(false);
+        } else if (e instanceof LinkEvent.FailSafe) {
+            signal("failsafe", FailSafe.TRIPPED); // the agent may plan for it: +failsafe(tripped)
+        } else if (e instanceof LinkEvent.StepMarker m) {
+            if (m.awaitsAck()) {
+                // a lockstep controller in another process: the world waits for this (see servingLoop)
+                ackDue = m.step();
+            }
         } else if (e instanceof LinkEvent.Reading r) {
             simTimeMs = r.simTimeMs();
             if (getClock() instanceof jacabot.cartago.FollowingClock following) {

@@ -1,6 +1,7 @@
 package jacabot.robot;
 
 import jacabot.robot.link.LinkClock;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
@@ -27,11 +28,15 @@ import java.util.function.LongSupplier;
  * @param log              where the controller reports connections, drops and refused frames
  * @param eventLog         one line per reading, applied command and pose, or null; identical for two
  *                         lockstep runs of the same world and agent
+ * @param secret           the key shared with the middleware ({@link LinkSecret}); null: the user's
+ *                         secret file, read when the link starts
+ * @param tls              null: plain TCP; else TLS with this context's trust store (the JDK's
+ *                         {@code SSLSocket}; the middleware's certificate must name the host)
  */
 public record ControllerConfig(String host, int port, String robotName, boolean lockstep, double speedFactor,
                                long failSafeMs, long minBackoffMs, long maxBackoffMs, int resetEvery, int outboxCapacity,
                                boolean sendCameraImage, LinkClock clock, LongSupplier nanoTime, Consumer<String> log,
-                               Consumer<String> eventLog) {
+                               Consumer<String> eventLog, LinkSecret secret, javax.net.ssl.SSLContext tls) {
     public ControllerConfig {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be in 0..65535, got " + port);
@@ -45,64 +50,82 @@ public record ControllerConfig(String host, int port, String robotName, boolean 
         }
     }
 
-    /** {@return 127.0.0.1:4444, first robot, real time × 1, fail-safe 1 s, back-off 100 ms..2 s, log to stderr} */
+    /** {@return 127.0.0.1:4444, first robot, real time × 1, fail-safe 500 ms, back-off 100 ms..2 s, log to stderr} */
     public static ControllerConfig defaults() {
-        return new ControllerConfig(Protocol.DEFAULT_HOST, Protocol.DEFAULT_PORT, null, false, 1.0, 1000, 100, 2000, 100,
-                64, false, LinkClock.system(), System::nanoTime, line -> System.err.println("[controller] " + line), null);
+        return new ControllerConfig(Protocol.DEFAULT_HOST, Protocol.DEFAULT_PORT, null, false, 1.0, 500, 100, 2000, 100,
+                64, false, LinkClock.system(), System::nanoTime, line -> System.err.println("[controller] " + line), null, null, null);
     }
 
     public ControllerConfig withAddress(String newHost, int newPort) {
         return new ControllerConfig(newHost, newPort, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs,
-                maxBackoffMs, resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                maxBackoffMs, resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withRobot(String name) {
         return new ControllerConfig(host, port, name, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withLockstep(boolean on) {
         return new ControllerConfig(host, port, robotName, on, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withSpeedFactor(double factor) {
         return new ControllerConfig(host, port, robotName, lockstep, factor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withFailSafeMs(long ms) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, ms, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withBackoff(long minMs, long maxMs) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minMs, maxMs, resetEvery,
-                outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withResetEvery(int batches) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                batches, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog);
+                batches, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withCameraImage(boolean on) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, on, clock, nanoTime, log, eventLog);
+                resetEvery, outboxCapacity, on, clock, nanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withClocks(LinkClock newClock, LongSupplier newNanoTime) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, newClock, newNanoTime, log, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, newClock, newNanoTime, log, eventLog, secret, tls);
     }
 
     public ControllerConfig withLog(Consumer<String> newLog) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, newLog, eventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, newLog, eventLog, secret, tls);
+    }
+
+    /** {@return this config with the key shared with the middleware} */
+    public ControllerConfig withSecret(LinkSecret newSecret) {
+        return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, newSecret, tls);
+    }
+
+    /** Connects with TLS, trusting what {@code context} trusts. */
+    public ControllerConfig withTls(javax.net.ssl.SSLContext context) {
+        return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, context);
+    }
+
+    /** {@return the configured secret, else the user's secret file's} */
+    @Override
+    public LinkSecret secret() {
+        return secret != null ? secret : LinkSecret.userDefault();
     }
 
     public ControllerConfig withEventLog(Consumer<String> newEventLog) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
-                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, newEventLog);
+                resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, newEventLog, secret, tls);
     }
 }

@@ -32,11 +32,18 @@ final class DeviceSampler {
         this.camera = robot.model().camera() == null ? null : robot.getCamera(robot.model().camera().name());
     }
 
-    /** Enables every device the robot has, at one sampling period (Webots: first reading one period later). */
-    void enableAll(int periodMs) {
+    /**
+     * Enables every device the robot has, at one sampling period (Webots: first reading one period
+     * later). {@return the ids of the kinds enabled: what the greeting declares}
+     */
+    java.util.List<Integer> enableAll(int periodMs) {
+        var ids = new java.util.ArrayList<Integer>();
         for (SensorKind k : SensorKind.values()) {
-            enable(k, periodMs);
+            if (enable(k, periodMs)) {
+                ids.add(k.id());
+            }
         }
+        return ids;
     }
 
     /** {@return whether the robot has a device for this kind (and it was enabled)} */

@@ -62,8 +62,7 @@ public final class RobotController implements AutoCloseable {
         this.sampler = new DeviceSampler(robot, config.sendCameraImage());
         this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
         this.inbox = new CommandInbox(world, config.nanoTime());
-        this.link = new RobotLink(config, new Protocol.Hello(Protocol.VERSION, robot.name(), world.name(),
-                world.controlStep(), config.lockstep()), inbox, costs);
+        this.link = new RobotLink(config, inbox, costs);
         this.runner = new SimRunner(world, this::controlStep);
         if (config.lockstep()) {
             runner.setMode(SimRunner.Mode.FAST); // the agent's acknowledgements pace the world
@@ -85,10 +84,12 @@ public final class RobotController implements AutoCloseable {
             return;
         }
         started = true;
+        java.util.List<Integer> sensors;
         synchronized (world) {
-            sampler.enableAll(world.controlStep());
+            sensors = sampler.enableAll(world.controlStep());
         }
-        link.start();
+        link.start(new Protocol.Hello(Protocol.VERSION, robot.name(), world.name(), world.controlStep(),
+                config.lockstep(), sensors));
     }
 
     /** {@return the runner that steps the world and calls {@link #controlStep} before each step} */

@@ -1,6 +1,8 @@
 package jacabot.robot;
 
+import jacabot.robot.link.AuthenticationException;
 import jacabot.robot.link.CommandReader;
+import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
@@ -37,7 +39,7 @@ final class RobotLink {
     private static final int HANDSHAKE_TIMEOUT_MS = 5000;
 
     private final ControllerConfig config;
-    private final Protocol.Hello hello;
+    private volatile Protocol.Hello hello;
     private final CommandInbox inbox;
     private final LinkCosts costs;
     private final BlockingQueue<Frame> outbox;
@@ -48,15 +50,16 @@ final class RobotLink {
     private volatile String lastProblem;
     private Thread receiver, sender;
 
-    RobotLink(ControllerConfig config, Protocol.Hello hello, CommandInbox inbox, LinkCosts costs) {
+    RobotLink(ControllerConfig config, CommandInbox inbox, LinkCosts costs) {
         this.config = config;
-        this.hello = hello;
         this.inbox = inbox;
         this.costs = costs;
         this.outbox = new ArrayBlockingQueue<>(config.outboxCapacity());
     }
 
-    void start() {
+    /** Starts connecting; {@code hello} declares the robot and its enabled sensors. */
+    void start(Protocol.Hello greeting) {
+        this.hello = greeting;
         receiver = new Thread(this::receiveLoop, "controller-receiver");
         sender = new Thread(this::sendLoop, "controller-sender");
         receiver.setDaemon(true);
@@ -157,19 +160,29 @@ final class RobotLink {
         long backoff = config.minBackoffMs();
         boolean everConnected = false;
         while (!isClosed()) {
-            Socket s = new Socket();
+            Socket s;
+            try {
+                s = config.tls() == null ? new Socket() : config.tls().getSocketFactory().createSocket();
+            } catch (IOException e) {
+                problem("cannot make a socket: " + e.getMessage(), false);
+                return;
+            }
             boolean up = false;
             try {
                 s.connect(new InetSocketAddress(config.host(), config.port()), HANDSHAKE_TIMEOUT_MS);
                 socket = s;
+                if (s instanceof javax.net.ssl.SSLSocket tlsSocket) {
+                    var params = tlsSocket.getSSLParameters();
+                    params.setEndpointIdentificationAlgorithm("HTTPS"); // the certificate must name the host
+                    tlsSocket.setSSLParameters(params);
+                    tlsSocket.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
+                    tlsSocket.startHandshake();
+                }
                 s.setTcpNoDelay(true);
                 s.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
                 var out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
-                hello.write(out);
-                Protocol.Welcome welcome = Protocol.Welcome.read(new DataInputStream(s.getInputStream()));
-                if (!welcome.accepted()) {
-                    throw new ProtocolException("the middleware refused the connection: " + welcome.message());
-                }
+                // the middleware proves it holds the secret before it may drive (and so do we)
+                Handshake.asController(new DataInputStream(s.getInputStream()), out, hello, config.secret());
                 s.setSoTimeout(0);
                 outbox.clear();
                 SensorDataWriter w = new SensorDataWriter(s.getOutputStream(), config.resetEvery());
@@ -181,7 +194,7 @@ final class RobotLink {
                 config.log().accept("connected to the middleware at " + config.host() + ":" + config.port());
                 inbox.connectionChanged(true);
                 readCommands(new CommandReader(s.getInputStream(), config.clock()));
-            } catch (ProtocolException e) {
+            } catch (ProtocolException | AuthenticationException e) {
                 problem(e.getMessage(), up);
             } catch (SocketTimeoutException e) {
                 problem("the middleware did not answer the handshake", up);

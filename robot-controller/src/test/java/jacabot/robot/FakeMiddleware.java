@@ -2,6 +2,8 @@ package jacabot.robot;
 
 import jacabot.robot.link.Command;
 import jacabot.robot.link.CommandWriter;
+import jacabot.robot.link.Handshake;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorDataReader;
 import jacabot.robot.link.SensorInfo;
@@ -24,6 +26,8 @@ import java.util.function.Predicate;
 /** A bare middleware for the controller's tests, written against the shared protocol classes only. */
 final class FakeMiddleware implements AutoCloseable {
     private final ServerSocket server;
+    /** The key the controllers started by {@link #startController} share with this middleware. */
+    final LinkSecret secret = LinkSecret.random();
 
     FakeMiddleware() throws IOException {
         server = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
@@ -37,7 +41,7 @@ final class FakeMiddleware implements AutoCloseable {
     /** Starts a controller of the navigation world's robot, pointed at this middleware, stepping on its own thread. */
     RobotController startController(ControllerConfig config) throws Exception {
         var controller = new RobotController(RobotControllerTest.world("navigation"),
-                config.withAddress("127.0.0.1", port()));
+                config.withAddress("127.0.0.1", port()).withSecret(secret));
         controller.start();
         controller.runner().start();
         return controller;
@@ -50,11 +54,30 @@ final class FakeMiddleware implements AutoCloseable {
         close();
     }
 
-    /** Accepts a controller and answers its handshake with {@code version}. */
+    /**
+     * Accepts a controller and answers its handshake with {@code version}: for this version, the
+     * whole authenticated handshake with {@link #secret}; for another, a refusal.
+     */
     Peer accept(int version) throws IOException {
+        return accept(version, secret);
+    }
+
+    /** Accepts a controller, proving {@code key} (the controller's own secret or not). */
+    Peer accept(int version, LinkSecret key) throws IOException {
         Socket s = server.accept();
-        var hello = Protocol.Hello.read(new DataInputStream(s.getInputStream()));
+        var in = new DataInputStream(s.getInputStream());
         var out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
+        if (version == Protocol.VERSION) {
+            Protocol.Hello hello;
+            try {
+                hello = Handshake.asMiddleware(in, out, key);
+            } catch (IOException e) {
+                s.close();
+                throw e;
+            }
+            return new Peer(s, hello, out);
+        }
+        var hello = Protocol.Hello.read(in);
         String mismatch = Protocol.versionMismatch(hello.version(), version);
         new Protocol.Welcome(version, mismatch == null, mismatch == null ? "welcome" : mismatch).write(out);
         return new Peer(s, hello, out);

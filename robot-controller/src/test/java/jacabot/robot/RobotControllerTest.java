@@ -1,6 +1,7 @@
 package jacabot.robot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.link.Command;
@@ -102,6 +103,10 @@ class RobotControllerTest {
         peer.close();
         try (var again = middleware.accept(Protocol.VERSION)) {
             again.awaitWheels(0, 0);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (!controller.isConnected() && System.nanoTime() < end) {
+                Thread.sleep(5); // the first batch may leave a moment before the inbox hears of the connection
+            }
             assertTrue(controller.isConnected());
             assertEquals(2, controller.connections());
             assertTrue(log.stream().anyMatch(l -> l.startsWith("fail-safe: the link to the middleware dropped; wheels stopped")), log.toString());
@@ -139,6 +144,25 @@ class RobotControllerTest {
             }
             assertEquals("the middleware refused the connection: protocol version mismatch: the controller speaks version "
                     + Protocol.VERSION + ", the middleware version " + (Protocol.VERSION + 1), controller.lastProblem());
+        }
+    }
+
+    @Test
+    void aMiddlewareThatCannotProveTheSecretIsRefused() throws Exception {
+        // a stranger listening on the port: its proof is made with another key
+        // the controller hangs up before sending its own proof
+        org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                () -> middleware.accept(Protocol.VERSION, jacabot.robot.link.LinkSecret.random()));
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (controller.lastProblem() == null && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+        assertTrue(controller.lastProblem().startsWith("the middleware cannot prove the link secret"),
+                controller.lastProblem());
+        assertFalse(controller.isConnected());
+        try (var peer = middleware.accept(Protocol.VERSION)) { // the real one is taken
+            peer.awaitWheels(0, 0);
+            assertEquals(1, controller.connections());
         }
     }
 }

@@ -11,11 +11,25 @@ import picocli.CommandLine.Option;
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
         subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class, BenchWorldCommand.class})
 final class BenchCommand implements Runnable {
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public void run() {
-        System.out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
-        System.out.println("       jacabot bench latency [--duration 60s] [--speed X]");
-        System.out.println("       jacabot bench sim [--duration 10m] [--seed N]");
+        var out = spec.commandLine().getOut();
+        out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
+        out.println("       jacabot bench latency [--duration 60s] [--speed X]");
+        out.println("       jacabot bench sim [--duration 10m] [--seed N]");
+        out.flush();
+    }
+
+    /** {@return the seconds of a --duration} @throws UserError when it is not one */
+    static double duration(String text) {
+        try {
+            return ExperimentCommand.parseDuration(text);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--duration: " + e.getMessage());
+        }
     }
 
     /** Our interpreter against Jason 3.2.0, side by side. */
@@ -25,6 +39,9 @@ final class BenchCommand implements Runnable {
                     "Jason is not a dependency of jacabot: `gradle benchInterpreter` fetches it and writes its class path "
                     + "to build/jason-classpath.txt."})
     static final class Interpreter implements Callable<Integer> {
+        @picocli.CommandLine.Spec
+        private picocli.CommandLine.Model.CommandSpec spec;
+
         @Option(names = "--runs", description = "measured runs per program and interpreter (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
@@ -35,11 +52,11 @@ final class BenchCommand implements Runnable {
         @Override
         public Integer call() throws Exception {
             if (!Files.isRegularFile(jasonClasspath)) {
-                System.err.println(jasonClasspath + ": not found; run `gradle jasonClasspath` (or `gradle benchInterpreter`) first");
-                return 2;
+                throw new UserError(jasonClasspath + ": not found; run `gradle jasonClasspath` (or `gradle benchInterpreter`) first");
             }
             String jason = Files.readString(jasonClasspath).trim();
-            new InterpreterBenchmark(System.getProperty("java.class.path"), jason, Math.max(1, runs), System.out).run();
+            new InterpreterBenchmark(System.getProperty("java.class.path"), jason, Math.max(1, runs),
+                    ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
     }
@@ -49,6 +66,9 @@ final class BenchCommand implements Runnable {
             description = "Runs experiment 4 headless in lockstep (agent, artifact, socket, controller, physics, sensors) "
                     + "and prints the real-time factor and the share of time in each part; then the procedural baseline.")
     static final class Simulation implements Callable<Integer> {
+        @picocli.CommandLine.Spec
+        private picocli.CommandLine.Model.CommandSpec spec;
+
         @Option(names = "--duration", paramLabel = "T", description = "simulated time (default ${DEFAULT-VALUE})")
         private String duration = "10m";
 
@@ -60,8 +80,8 @@ final class BenchCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            new jacabot.app.bench.SimulationBenchmark(root, ExperimentCommand.parseDuration(duration), seed,
-                    System.out).run();
+            new jacabot.app.bench.SimulationBenchmark(root, duration(duration), seed,
+                    ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
     }
@@ -72,6 +92,9 @@ final class BenchCommand implements Runnable {
                     + "lockstep: a box moved in front of the robot and away every 120 simulated ms, the agent answering "
                     + "each obstacle change with stop.")
     static final class Latency implements Callable<Integer> {
+        @picocli.CommandLine.Spec
+        private picocli.CommandLine.Model.CommandSpec spec;
+
         @Option(names = "--duration", paramLabel = "T", description = "simulated time in real-time mode (default ${DEFAULT-VALUE}); lockstep runs four times longer")
         private String duration = "120s";
 
@@ -83,8 +106,11 @@ final class BenchCommand implements Runnable {
 
         @Override
         public Integer call() throws Exception {
-            new jacabot.app.bench.LatencyBenchmark(root, ExperimentCommand.parseDuration(duration), speed,
-                    System.out).run();
+            if (!(speed > 0) || Double.isInfinite(speed)) {
+                throw new UserError("--speed must be a positive number, got " + speed);
+            }
+            new jacabot.app.bench.LatencyBenchmark(root, duration(duration), speed,
+                    ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
     }

@@ -38,10 +38,13 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--root", paramLabel = "DIR", description = "the repository (worlds/, sources) (default: .)")
     private Path root = Path.of(".");
 
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
-        double seconds = ExperimentCommand.parseDuration(duration);
-        var out = System.out;
+        double seconds = BenchCommand.duration(duration);
+        var out = ConsoleStreams.of(spec.commandLine().getOut());
         out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) "
                 + "| storage entries without a cylinder | reactive time median / p99 (ms) | response time median / p99 (ms) |");
         out.println("|---|---|---|---|---|---|---|---|---|---|---|");

@@ -50,44 +50,60 @@ final class ControllerCommand implements Callable<Integer> {
 
     @Option(names = "--fail-safe-ms", paramLabel = "MS",
             description = "stop the wheels after this long without a command or heartbeat (default ${DEFAULT-VALUE})")
-    private long failSafeMs = 1000;
+    private long failSafeMs = 500;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
+    private Path secretFile;
+
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--seconds", paramLabel = "S", description = "stop after this much simulated time (default: run until stopped)")
     private Double seconds;
 
     @Override
     public Integer call() throws InterruptedException {
+        java.io.PrintWriter stdout = spec.commandLine().getOut();
         ControllerConfig config;
         try {
             config = ControllerConfig.defaults().withAddress(host, port).withRobot(robot).withLockstep(lockstep)
                     .withSpeedFactor(speed).withFailSafeMs(failSafeMs);
         } catch (IllegalArgumentException e) {
-            System.err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
         }
-        if (seconds != null && !(seconds > 0)) {
-            System.err.println("error: --seconds must be a positive number, got " + seconds);
-            return 2;
+        java.io.PrintWriter err = spec.commandLine().getErr();
+        config = config.withLog(line -> {
+            err.println("[controller] " + line);
+            err.flush();
+        });
+        try {
+            config = config.withSecret(secretFile != null ? jacabot.robot.link.LinkSecret.loadOrCreate(secretFile)
+                    : jacabot.robot.link.LinkSecret.userDefault());
+        } catch (java.io.IOException | java.io.UncheckedIOException e) {
+            throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
+        }
+        if (seconds != null && !(seconds > 0 && seconds < 1e9)) {
+            throw new UserError("--seconds must be a positive number, got " + seconds);
         }
         if (viewer && GraphicsEnvironment.isHeadless()) {
-            System.err.println("error: --viewer needs a display, and this Java runs headless");
-            return 2;
+            throw new UserError("--viewer needs a display, and this Java runs headless");
         }
         SimWorld simWorld;
         try {
             simWorld = SimWorld.load(world);
         } catch (WorldFileException e) {
-            System.err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
+        } catch (RuntimeException e) {
+            throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
         RobotController controller;
         try {
             controller = new RobotController(simWorld, config);
         } catch (IllegalArgumentException e) {
-            System.err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError(world + ": " + e.getMessage());
         }
-        System.out.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
+        stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
                 lockstep ? "lockstep" : "real time x" + speed, host, port));
         Thread hook = new Thread(controller::close, "controller-shutdown");
@@ -104,8 +120,9 @@ final class ControllerCommand implements Callable<Integer> {
                 // the hook is running
             }
         }
-        System.out.println(String.format(Locale.ROOT, "controller: stopped at t=%.2f s after %d steps",
+        stdout.println(String.format(Locale.ROOT, "controller: stopped at t=%.2f s after %d steps",
                 simWorld.time(), controller.steps()));
+        stdout.flush();
         return 0;
     }
 

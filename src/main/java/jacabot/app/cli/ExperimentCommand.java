@@ -3,6 +3,7 @@ package jacabot.app.cli;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.cartago.CartagoException;
 import jacabot.robot.Experiment;
+import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
@@ -14,7 +15,6 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
@@ -59,29 +59,47 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED)")
     private Path out;
 
+    @Option(names = "--port", paramLabel = "PORT",
+            description = "where the middleware listens on loopback (default: a free port)")
+    private int port = 0;
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec commandSpec;
+
     @Override
     public Integer call() throws Exception {
+        java.io.PrintWriter stdout = commandSpec.commandLine().getOut();
+        java.io.PrintStream console = ConsoleStreams.of(stdout);
         double seconds;
         try {
             seconds = parseDuration(duration);
         } catch (IllegalArgumentException e) {
-            System.err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError("--duration: " + e.getMessage());
+        }
+        if (!(speed > 0) || Double.isInfinite(speed)) {
+            throw new UserError("--speed must be a positive number, got " + speed);
+        }
+        if (port < 0 || port > 65535) {
+            throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
         Path worldFile = world != null ? world : jacabot.app.Installation.resolve(experiment.worldFile());
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
         } catch (WorldFileException e) {
-            System.err.println(e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
+        }
+        if (spec.basicTimeStep() <= 0 || spec.controlStep() <= 0 || spec.controlStep() % spec.basicTimeStep() != 0) {
+            // sim-world's reader takes the number as an int: 2^40 arrives here as 0
+            throw new UserError(worldFile + ": $.controlStep must be a positive multiple of $.basicTimeStep ("
+                    + spec.basicTimeStep() + " ms) below 2^31 ms, got " + spec.controlStep());
         }
         var missing = jacabot.app.world.Landmarks.missing(experiment, spec, worldFile.toString());
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
-            System.err.println(missing.get());
+            commandSpec.commandLine().getErr().println(missing.get());
             return 2;
         }
         long runSeed = seed != null ? seed : spec.seed();
@@ -90,11 +108,7 @@ final class ExperimentCommand implements Callable<Integer> {
         String source;
         String sourceName;
         if (agent != null) {
-            if (!Files.isRegularFile(agent)) {
-                System.err.println(agent + ": no such file");
-                return 2;
-            }
-            source = Files.readString(agent, StandardCharsets.UTF_8);
+            source = readAgent(agent);
             sourceName = agent.toString();
         } else {
             try (InputStream in = ExperimentCommand.class.getResourceAsStream(experiment.agentResource())) {
@@ -103,39 +117,43 @@ final class ExperimentCommand implements Callable<Integer> {
             sourceName = "agents/src/main/asl/" + experiment.id() + ".asl";
         }
         Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
-        System.out.println("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
-        SimWorld simWorld = SimWorld.of(spec);
+        prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
+        SimWorld simWorld;
+        try {
+            simWorld = SimWorld.of(spec);
+        } catch (RuntimeException e) {
+            throw new UserError(worldFile + ": this world cannot run: " + JacabotCommand.describe(e));
+        }
+        if (simWorld.robots().isEmpty()) {
+            throw new UserError(worldFile + ": the world has no robot; add one under \"robots\"");
+        }
+        stdout.println("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
         if (baseline) {
-            System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration
+            stdout.println("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
             var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
-            report(run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            report(stdout, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
             return 0;
         }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
         if (viewer) {
-            if (!(speed > 0)) {
-                System.err.println("error: --speed must be positive, got " + speed);
-                return 2;
-            }
-            System.out.println("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
+            stdout.println("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, source, sourceName, runSeed, seconds);
+            return runWithViewer(simWorld, source, sourceName, runSeed, seconds, console);
         }
-        System.out.println("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
+        stdout.println("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
+        stdout.flush();
         LockstepRun run;
         try {
-            run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed, System.out);
+            run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed, console);
         } catch (AslSyntaxException e) {
-            System.err.println(e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
         } catch (CartagoException e) {
-            System.err.println("error: cannot make the middleware: " + e.getMessage());
-            return 1;
+            throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
         Robot robot = simWorld.robots().get(0);
-        var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed, System.out);
+        var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed, console);
         var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
@@ -145,59 +163,130 @@ final class ExperimentCommand implements Callable<Integer> {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
                 var now = recorder.summary("agent");
-                System.out.printf("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s%n",
+                stdout.printf("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s%n",
                         data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
                         now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy()));
+                stdout.flush();
             }
         });
-        var result = run.runFor(seconds);
-        tap.close();
-        if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
-            System.out.println("The link ended early:");
-            result.linkLog().forEach(l -> System.out.println("  " + l));
-        }
-        double wall = (System.nanoTime() - start) / 1e9;
-        report(recorder.summary("agent"), recorder, outDir, wall, run.cycles());
-        Files.write(outDir.resolve("link-log.txt"), new ArrayList<>(result.controllerLog()));
-        jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
-        jacabot.app.plot.RunPlots.writeAll(outDir, System.out);
-        if (inspector != null) {
-            inspector.showPlots(outDir);
-            inspectorOptions.linger(inspector, System.out);
-            inspector.close();
+        // the link log goes to disk as it is made: a long run keeps no copy of it in memory
+        var done = new java.util.concurrent.CountDownLatch(1);
+        var terminated = new java.util.concurrent.atomic.AtomicBoolean();
+        Thread hook = new Thread(() -> {
+            terminated.set(true);
+            run.stop(); // SIGTERM: end at this step, write what we have (summaries first, the PNG last)
+            try {
+                done.await(900, java.util.concurrent.TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "experiment-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try (var linkLog = java.nio.file.Files.newBufferedWriter(outDir.resolve("link-log.txt"), StandardCharsets.UTF_8)) {
+            run.port(port).controllerLogTo(line -> {
+                try {
+                    linkLog.write(line);
+                    linkLog.write('\n');
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            });
+            LockstepCoordinator.Result result;
+            try {
+                result = run.runFor(seconds);
+            } catch (IOException e) {
+                throw new IllegalStateException(port != 0 ? "cannot listen on port " + port + " (" + e.getMessage()
+                        + "); choose another with --port" : e.getMessage(), e);
+            }
+            linkLog.flush();
+            tap.close();
+            if (terminated.get()) {
+                stdout.printf("Stopped by a signal at t=%.2f s; writing what there is.%n", simWorld.timeMs() / 1000.0);
+            } else if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
+                stdout.println("The link ended early:");
+                result.linkLog().forEach(l -> stdout.println("  " + l));
+            }
+            double wall = (System.nanoTime() - start) / 1e9;
+            report(stdout, recorder.summary("agent"), recorder, outDir, wall, run.cycles());
+            jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
+            jacabot.app.plot.RunPlots.writeAll(outDir, console);
+            if (inspector != null) {
+                inspector.showPlots(outDir);
+                inspectorOptions.linger(inspector, console);
+                inspector.close();
+            }
+        } finally {
+            done.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running: it waits for done
+            }
         }
         return 0;
     }
 
+    /** {@return the agent's text} @throws UserError when it cannot be read */
+    private static String readAgent(Path file) {
+        if (!Files.isRegularFile(file)) {
+            throw new UserError("--agent " + file + ": no such file");
+        }
+        try {
+            return Files.readString(file, StandardCharsets.UTF_8);
+        } catch (java.nio.file.AccessDeniedException e) {
+            throw new UserError("--agent " + file + ": permission denied; make it readable (chmod u+r)");
+        } catch (java.nio.charset.MalformedInputException e) {
+            throw new UserError("--agent " + file + ": not UTF-8 text");
+        } catch (IOException e) {
+            throw new UserError("--agent " + file + ": cannot read it (" + e.getMessage() + ")");
+        }
+    }
+
+    /** Makes the output directory now, so a bad --out is told before the run, not after it. */
+    private static void prepareOut(Path dir) {
+        try {
+            Files.createDirectories(dir);
+        } catch (IOException e) {
+            String why = e instanceof java.nio.file.FileAlreadyExistsException ? "a file of that name exists"
+                    : e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+                    : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
+            throw new UserError("--out " + dir + ": cannot make the directory (" + why + "); choose another with --out DIR");
+        }
+        if (!Files.isWritable(dir)) {
+            throw new UserError("--out " + dir + ": not writable; choose another with --out DIR");
+        }
+    }
+
     /** Writes the summary (JSON and text), the event log and the trajectory, and prints them. */
-    private static void report(jacabot.robot.run.RunSummary summary, jacabot.robot.run.RunRecorder recorder, Path outDir,
-            double wallSeconds, long cycles) throws IOException {
+    private static void report(java.io.PrintWriter stdout, jacabot.robot.run.RunSummary summary,
+            jacabot.robot.run.RunRecorder recorder, Path outDir, double wallSeconds, long cycles) throws IOException {
         Files.createDirectories(outDir);
         summary.writeJson(outDir.resolve("summary.json"));
         Files.writeString(outDir.resolve("summary.txt"), summary.toText());
         Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
         recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
-        System.out.println();
-        System.out.print(summary.toText());
-        System.out.printf("%.0f s simulated in %.1f s (%.0fx real time)%s.%n", summary.duration(), wallSeconds,
+        stdout.println();
+        stdout.print(summary.toText());
+        stdout.printf("%.0f s simulated in %.1f s (%.0fx real time)%s.%n", summary.duration(), wallSeconds,
                 summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : "");
-        System.out.println("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
+        stdout.println("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
+        stdout.flush();
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds)
-            throws Exception {
-        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, System.out)) {
-            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed, System.out);
+    private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds,
+            java.io.PrintStream console) throws Exception {
+        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, console, port)) {
+            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed, console);
             AutoCloseable sampling = () -> {
             };
             if (inspector != null) {
-                var watches = new ArrayList<jacabot.app.inspector.AgentWatch>();
+                var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
                 for (String name : run.mas().agentNames()) {
-                    watches.add(jacabot.app.inspector.AgentWatch.attach(inspector, run.mas().agent(name),
+                    watches.add(jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
                             name.equals("robot") ? jacabot.app.replay.RunTap.robotView(simWorld) : null));
                 }
-                sampling = jacabot.app.inspector.AgentWatch.sampleEvery(watches, 200);
+                sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
             }
             run.start();
             var closed = new java.util.concurrent.CountDownLatch(1);
@@ -222,13 +311,12 @@ final class ExperimentCommand implements Callable<Integer> {
                 inspector.close();
             }
         } catch (AslSyntaxException e) {
-            System.err.println(e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
         } catch (CartagoException e) {
-            System.err.println("error: cannot make the middleware: " + e.getMessage());
-            return 1;
+            throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
+                    + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
         }
-        System.out.printf("Stopped at t=%.1f s of simulated time.%n", simWorld.time());
+        console.printf("Stopped at t=%.1f s of simulated time.%n", simWorld.time());
         return 0;
     }
 

@@ -3,6 +3,7 @@ package jacabot.app.cli;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
+import java.util.List;
 import java.util.Properties;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -20,18 +21,77 @@ public final class JacabotCommand implements Runnable {
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;
 
+    @CommandLine.Option(names = "--debug", scope = CommandLine.ScopeType.INHERIT,
+            description = "print the stack trace of an unexpected failure")
+    private boolean debug;
+
     public static void main(String[] args) {
+        // An agent's thread that dies (e.g. StackOverflowError in a runaway rule) must not leave a
+        // process that looks alive: say so and end with 1 (the shutdown hooks write what they have).
+        Thread.setDefaultUncaughtExceptionHandler((thread, e) -> {
+            System.err.println("error: thread '" + thread.getName() + "' died: " + describe(e)
+                    + "; stopping (exit 1)");
+            if (List.of(args).contains("--debug")) {
+                e.printStackTrace();
+            }
+            jacabot.experiments.link.MiddlewareLink.closeAll(); // the robots stop now, not when the JVM is gone
+            new Thread(() -> System.exit(1), "exit-after-thread-death").start();
+        });
         System.exit(execute(args));
     }
 
     /** Runs the launcher and returns its exit code (0 ok, 1 runtime failure, 2 user error). */
     public static int execute(String... args) {
-        return new CommandLine(new JacabotCommand()).execute(args);
+        return commandLine().execute(args);
+    }
+
+    /**
+     * {@return the launcher's command line}: a user error prints one line and exits with 2, a run
+     * failure one line and 1, a stack trace only with {@code --debug}. Tests set its out and err
+     * ({@code setOut}/{@code setErr}) instead of the global streams.
+     */
+    public static CommandLine commandLine() {
+        CommandLine cl = new CommandLine(new JacabotCommand());
+        cl.setParameterExceptionHandler((ex, args) -> {
+            CommandLine c = ex.getCommandLine();
+            c.getErr().println("error: " + ex.getMessage() + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");
+            c.getErr().flush();
+            return 2;
+        });
+        cl.setExecutionExceptionHandler((ex, c, parseResult) -> {
+            boolean debug = parseResult.expandedArgs().contains("--debug");
+            if (ex instanceof UserError) {
+                c.getErr().println("error: " + ex.getMessage());
+                c.getErr().flush();
+                return 2;
+            }
+            c.getErr().println("error: " + describe(ex) + (debug ? "" : " (--debug shows the stack trace)"));
+            if (debug) {
+                ex.printStackTrace(c.getErr());
+            }
+            c.getErr().flush();
+            return 1;
+        });
+        return cl;
+    }
+
+    /** {@return the exception's message, or its type when it has none} */
+    static String describe(Throwable e) {
+        String m = e.getMessage();
+        String type = e.getClass().getSimpleName();
+        if (e instanceof StackOverflowError) {
+            return "StackOverflowError (a rule or plan that recurses without end?)";
+        }
+        if (e instanceof OutOfMemoryError) {
+            return "OutOfMemoryError: " + m;
+        }
+        return m == null || m.isBlank() ? type : (e instanceof RuntimeException && !(e instanceof UserError)
+                && !(e instanceof IllegalArgumentException) && !(e instanceof IllegalStateException) ? type + ": " + m : m);
     }
 
     @Override
     public void run() {
-        spec.commandLine().usage(System.out);
+        spec.commandLine().usage(spec.commandLine().getOut());
     }
 
     /** Reads the build's version from the resource Gradle fills in. */

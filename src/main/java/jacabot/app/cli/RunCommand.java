@@ -1,24 +1,43 @@
 package jacabot.app.cli;
 
+import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.runtime.MasLauncher;
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.app.run.AgentWatch;
+import jacabot.app.run.RealTimeRun;
 import jacabot.cartago.bridge.ProjectClasses;
 import jacabot.cartago.bridge.ProjectClasspath;
 import jacabot.cartago.bridge.SourceCompiler;
+import jacabot.experiments.link.MiddlewareLink;
+import jacabot.robot.link.LinkSecret;
 import java.io.File;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot run FILE}: runs a Jason project (.mas2j) or a single agent (.asl). */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Runs a Jason project (.mas2j) or one agent (.asl, named after the file) until .stopMAS.",
-                "Console lines are printed as Jason prints them: [agent] text."})
+                "Console lines are printed as Jason prints them: [agent] text.",
+                "With a robot's middleware (agents/src/main/asl/*.mas2j) it listens for `jacabot controller`."})
 final class RunCommand implements Callable<Integer> {
+    /** The belief the robot agents read their middleware's port from (their .asl holds the default). */
+    static final String PORT_BELIEF = "middlewarePort";
+
     @Parameters(index = "0", paramLabel = "FILE", description = "a .mas2j project or an .asl agent")
     private Path file;
 
@@ -36,58 +55,133 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "print the number of reasoning cycles on stderr at the end")
     private boolean stats;
 
+    @Option(names = "--port", paramLabel = "PORT",
+            description = "the middleware's port: replaces the agents' " + PORT_BELIEF + "(P) belief (their default 4444)")
+    private Integer port;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "the link secret shared with `jacabot controller` (default ~/.jacabot/link-secret, made 0600 if absent)")
+    private Path secretFile;
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
+    @Spec
+    private CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
+        PrintWriter err = spec.commandLine().getErr();
+        var out = ConsoleStreams.of(spec.commandLine().getOut());
+        if (port != null && (port < 1 || port > 65535)) {
+            throw new UserError("--port must be in 1..65535, got " + port);
+        }
+        if (secretFile != null) {
+            System.setProperty(LinkSecret.FILE_PROPERTY, secretFile.toString());
+            LinkSecret.resetUserDefault();
+        }
+        LocalMAS mas;
         try {
             // the project's artifacts: classpath: entries, --classpath, Java sources beside the .mas2j
             var entries = new ArrayList<Path>();
-            classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty()).map(Path::of).forEach(entries::add));
+            classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty())
+                    .map(Path::of).forEach(entries::add));
             var classes = ProjectClasses.prepare(file.toString().endsWith(".mas2j") ? file : null, entries);
-            classes.classpath().warnings().forEach(System.err::println);
+            classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
-            var launcher = new MasLauncher(System.out, seed, stepping);
-            var mas = launcher.load(file);
-            // off by default: console programs end in moments; --inspector shows their minds
-            var inspector = inspectorOptions.start(false, "jacabot run " + file, System.out);
-            AutoCloseable sampling = () -> {
-            };
-            if (inspector != null) {
-                var watches = new java.util.ArrayList<jacabot.app.inspector.AgentWatch>();
-                for (String name : mas.agentNames()) {
-                    watches.add(jacabot.app.inspector.AgentWatch.attach(inspector, mas.agent(name), null));
-                }
-                sampling = jacabot.app.inspector.AgentWatch.sampleEvery(watches, 200);
-            }
-            if (stepping) {
-                mas.runStepping();
-            } else {
-                mas.runThreads();
-            }
-            if (stats) {
-                long cycles = 0;
-                for (String name : mas.agentNames()) {
-                    cycles += mas.agent(name).cycles();
-                }
-                System.err.println("cycles " + cycles);
-            }
-            sampling.close();
-            if (inspector != null) {
-                inspectorOptions.linger(inspector, System.out);
-                inspector.close();
-            }
-            return 0;
+            var launcher = new MasLauncher(out, seed, stepping);
+            mas = launcher.load(file);
         } catch (ProjectClasspath.Problem e) {
-            System.err.println(e.getMessage());
+            err.println(e.getMessage());
             return 2;
         } catch (SourceCompiler.CompileError e) {
-            e.lines().forEach(System.err::println);
+            e.lines().forEach(err::println); // file:line: message, one per error
             return 2;
         } catch (MasLauncher.UserError e) {
-            System.err.println(e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
+        }
+        int listen = port != null ? port : declaredPort(mas);
+        if (port != null) {
+            for (String name : mas.agentNames()) {
+                setPort(mas.agent(name), port);
+            }
+        }
+        if (listen > 0) {
+            checkFree(listen);
+            try {
+                LinkSecret.userDefault(); // a secret file that cannot be read is told now, in one line
+            } catch (java.io.UncheckedIOException e) {
+                throw new UserError(e.getMessage() + " (or pass --secret-file FILE)");
+            }
+        }
+        // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
+        var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
+        MiddlewareLink.setDefaultLiveness(watch);
+        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
+        // off by default: console programs end in moments; --inspector shows their minds
+        var inspector = inspectorOptions.start(false, "jacabot run " + file, out);
+        AutoCloseable sampling = () -> {
+        };
+        if (inspector != null) {
+            var watches = new ArrayList<jacabot.app.inspector.MindWatch>();
+            for (String name : mas.agentNames()) {
+                watches.add(jacabot.app.inspector.MindWatch.attach(inspector, mas.agent(name), null));
+            }
+            sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
+        }
+        if (stepping) {
+            mas.runStepping();
+        } else {
+            mas.runThreads();
+        }
+        sampling.close();
+        if (inspector != null) {
+            inspectorOptions.linger(inspector, out);
+            inspector.close();
+        }
+        if (stats) {
+            long cycles = 0;
+            for (String name : mas.agentNames()) {
+                cycles += mas.agent(name).cycles();
+            }
+            err.println("cycles " + cycles);
+        }
+        return 0;
+    }
+
+    /** {@return the port in an agent's {@value #PORT_BELIEF} belief, or 0 when none declares one} */
+    private static int declaredPort(LocalMAS mas) {
+        for (String name : mas.agentNames()) {
+            for (Literal b : mas.agent(name).beliefBase().beliefs()) {
+                if (isPortBelief(b) && b.arg(0) instanceof NumberTerm n) {
+                    return (int) n.value();
+                }
+            }
+        }
+        return 0;
+    }
+
+    private static boolean isPortBelief(Literal b) {
+        return b.arity() == 1 && b.toString().startsWith(PORT_BELIEF + "(");
+    }
+
+    /** The launcher's port wins over the program's default: the old belief goes, the new one comes. */
+    static void setPort(Agent agent, int port) {
+        for (Literal b : agent.beliefBase().beliefs()) {
+            if (isPortBelief(b)) {
+                agent.beliefBase().removeEntry(b);
+            }
+        }
+        agent.addBelief(Literal.of(PORT_BELIEF, new NumberTerm(port)).addAnnot(Literal.SOURCE_SELF), false);
+    }
+
+    /** A port in use is a one-line error with what to do, not a run that ends quietly. */
+    private static void checkFree(int port) {
+        try (ServerSocket probe = new ServerSocket()) {
+            probe.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
+        } catch (IOException e) {
+            throw new IllegalStateException("port " + port + " is in use (another jacabot run?); "
+                    + "stop it or choose another with --port (and the same --port for `jacabot controller`)");
         }
     }
 }

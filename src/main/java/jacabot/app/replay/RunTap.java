@@ -1,6 +1,6 @@
 package jacabot.app.replay;
 
-import jacabot.app.inspector.AgentWatch;
+import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
@@ -24,7 +24,7 @@ import java.util.List;
 public final class RunTap implements Closeable {
     private final SimWorld world;
     private final Robot robot;
-    private final AgentWatch watch;
+    private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
 
@@ -33,7 +33,7 @@ public final class RunTap implements Closeable {
         this.robot = world.robots().get(0);
         this.log = log;
         var agent = run.mas().agent("robot");
-        this.watch = agent == null ? null : AgentWatch.attach(inspector, agent, this::robotView);
+        this.watch = agent == null ? null : MindWatch.attach(inspector, agent, this::robotView);
         run.onCommands(this::afterStep);
     }
 

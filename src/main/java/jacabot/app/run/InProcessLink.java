@@ -3,6 +3,7 @@ import jacabot.experiments.link.MiddlewareLink;
 import jacabot.experiments.link.LinkConfig;
 
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.RobotController;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
@@ -23,15 +24,23 @@ public final class InProcessLink implements AutoCloseable {
 
     /**
      * Opens the middleware on 127.0.0.1 and a free port, points the controller at it and starts it.
-     * The configs' addresses are overridden.
+     * The configs' addresses are overridden, and both ends get a fresh secret of this run's.
      */
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig)
             throws IOException {
+        return start(world, controllerConfig, linkConfig, 0);
+    }
+
+    /** As {@link #start(SimWorld, ControllerConfig, LinkConfig)}, listening on {@code port} (0: a free one). */
+    public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port)
+            throws IOException {
+        LinkSecret secret = LinkSecret.random();
         MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(java.net.InetAddress.getLoopbackAddress())
-                .withPort(0));
+                .withPort(port).withSecret(secret));
         try {
             RobotController controller = new RobotController(world,
-                    controllerConfig.withAddress(java.net.InetAddress.getLoopbackAddress().getHostAddress(), link.port()));
+                    controllerConfig.withAddress(java.net.InetAddress.getLoopbackAddress().getHostAddress(), link.port())
+                            .withSecret(secret));
             controller.start();
             return new InProcessLink(link, controller);
         } catch (RuntimeException e) {

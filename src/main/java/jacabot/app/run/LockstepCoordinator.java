@@ -60,6 +60,10 @@ public final class LockstepCoordinator {
     private final String robotName;
     private final AgentSide agent;
     private boolean stepLogs = true;
+    private Consumer<String> controllerLogSink;
+    private int port;
+    private volatile InProcessLink running;
+    private volatile boolean stopRequested;
 
     /** @param robotName the robot to control, null for the world's first */
     public LockstepCoordinator(SimWorld world, String robotName, AgentSide agent) {
@@ -78,6 +82,30 @@ public final class LockstepCoordinator {
     }
 
     /**
+     * Streams the controller's event log to {@code sink} (e.g. a file) instead of keeping it, and
+     * keeps no agent-side log: a long run's memory stays flat. {@link Result#controllerLog()} is then empty.
+     */
+    public LockstepCoordinator controllerLogTo(Consumer<String> sink) {
+        this.controllerLogSink = sink;
+        return this;
+    }
+
+    /** Listens on {@code port} instead of a free one. */
+    public LockstepCoordinator port(int listenPort) {
+        this.port = listenPort;
+        return this;
+    }
+
+    /** Ends the run at the current step (e.g. on SIGTERM): {@link #runFor} returns what it has. */
+    public void stop() {
+        stopRequested = true;
+        InProcessLink l = running;
+        if (l != null) {
+            l.controller().close();
+        }
+    }
+
+    /**
      * Runs {@code seconds} of simulated time.
      *
      * @throws IOException when the link cannot be opened
@@ -90,15 +118,24 @@ public final class LockstepCoordinator {
         Consumer<String> log = linkLog::add;
         ControllerConfig cc = ControllerConfig.defaults().withRobot(robotName).withLockstep(true).withLog(log);
         if (stepLogs) {
-            cc = cc.withEventLog(controllerLog::add);
+            cc = cc.withEventLog(controllerLogSink != null ? controllerLogSink : controllerLog::add);
         }
-        try (InProcessLink link = InProcessLink.start(world, cc, LinkConfig.defaults().withLog(log))) {
-            Server server = new Server(link.middleware(), stepLogs ? agentLog : null);
+        try (InProcessLink link = InProcessLink.start(world, cc, LinkConfig.defaults().withLog(log), port)) {
+            running = link;
+            if (stopRequested) {
+                link.controller().close();
+            }
+            Server server = new Server(link.middleware(), stepLogs && controllerLogSink == null ? agentLog : null);
             link.middleware().handOver(server);
             Throwable[] simFailure = new Throwable[1];
             Thread simulation = new Thread(() -> {
                 try {
-                    link.controller().runner().runFor(seconds);
+                    // a control step at a time, so that stop() (SIGTERM) ends the run at the next step
+                    long end = world.timeMs() + Math.round(seconds * 1000);
+                    long chunk = world.controlStep();
+                    while (world.timeMs() < end && !stopRequested) {
+                        link.controller().runner().runFor(Math.min(chunk, end - world.timeMs()) / 1000.0);
+                    }
                 } catch (RuntimeException | Error e) {
                     simFailure[0] = e;
                 } finally {

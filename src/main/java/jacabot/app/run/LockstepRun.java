@@ -56,6 +56,9 @@ public final class LockstepRun {
     private long inlineNanos;
     private boolean reactedThisStep = true;
     private boolean stepLogs = true;
+    private Consumer<String> controllerLogSink;
+    private int port;
+    private volatile LockstepCoordinator coordinator;
     private Consumer<StepData> onStep = d -> {
     };
     private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
@@ -140,10 +143,34 @@ public final class LockstepRun {
         return this;
     }
 
+    /** Streams the controller's event log to {@code sink} instead of keeping it ({@link LockstepCoordinator#controllerLogTo}). */
+    public LockstepRun controllerLogTo(Consumer<String> sink) {
+        this.controllerLogSink = sink;
+        return this;
+    }
+
+    /** The link listens on {@code listenPort} (0: a free one). */
+    public LockstepRun port(int listenPort) {
+        this.port = listenPort;
+        return this;
+    }
+
+    /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
+    public void stop() {
+        LockstepCoordinator c = coordinator;
+        if (c != null) {
+            c.stop();
+        }
+    }
+
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
-        var coordinator = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs);
-        return coordinator.runFor(seconds);
+        var c = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs).port(port);
+        if (controllerLogSink != null) {
+            c.controllerLogTo(controllerLogSink);
+        }
+        coordinator = c;
+        return c.runFor(seconds);
     }
 
     private List<Command> step(StepData data) {

@@ -32,16 +32,27 @@ public final class RealTimeRun implements AutoCloseable {
     private final MiddlewareArtifact middleware;
     private Thread agents;
 
+    /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
+    public static final long STALL_MS = 100;
+
     public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
             double speed, PrintStream console) throws AslSyntaxException, CartagoException {
+        this(world, experiment, agentSource, agentFile, seed, speed, console, 0);
+    }
+
+    /** @param port where the middleware listens (0: a free loopback port) */
+    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+            double speed, PrintStream console, int port) throws AslSyntaxException, CartagoException {
         this.world = world;
+        // both ends are in this process: a fresh secret of this run's, no file needed
+        jacabot.robot.link.LinkSecret.useInThisProcess(jacabot.robot.link.LinkSecret.random());
         workspace = Workspace.builder("main").console(console).logger(CartagoLogger.console(console)).build();
         Clock simTime = world::timeMs;
         mas = new LocalMAS(simTime, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
         // the middleware listens on a free loopback port; the agent's !init finds it
-        var id = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0);
-        int port = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
+        var id = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), port);
+        int boundPort = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
         var agent = mas.createAgent("robot", parser.parse(agentSource, agentFile), parser, CAgentArch::new);
@@ -55,7 +66,9 @@ public final class RealTimeRun implements AutoCloseable {
                 }
             }
         });
-        controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", port)
+        // heartbeats only while the agent reasons: a stuck or dead agent lets the fail-safe stop the robot
+        middleware.link().setLiveness(new AgentWatch(mas, STALL_MS));
+        controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", boundPort)
                 .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line)));
     }
 

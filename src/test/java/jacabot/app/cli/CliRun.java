@@ -1,29 +1,21 @@
 package jacabot.app.cli;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 
-/** Runs the launcher in-process with its output captured, for the CLI tests. */
+/** Runs the launcher in-process through picocli's own writers, for the CLI tests (no global streams touched). */
 final class CliRun {
     private CliRun() {
     }
 
     /** {@return exit code, stdout, stderr} */
     static String[] run(String... args) {
-        PrintStream out = System.out;
-        PrintStream err = System.err;
-        var bytesOut = new ByteArrayOutputStream();
-        var bytesErr = new ByteArrayOutputStream();
-        try {
-            System.setOut(new PrintStream(bytesOut, true, StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(bytesErr, true, StandardCharsets.UTF_8));
-            int code = JacabotCommand.execute(args);
-            return new String[] {String.valueOf(code), bytesOut.toString(StandardCharsets.UTF_8),
-                    bytesErr.toString(StandardCharsets.UTF_8)};
-        } finally {
-            System.setOut(out);
-            System.setErr(err);
-        }
+        var out = new StringWriter();
+        var err = new StringWriter();
+        var cl = JacabotCommand.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        int code = cl.execute(args);
+        return new String[] {String.valueOf(code), out.toString(), err.toString()};
     }
 }

@@ -45,10 +45,13 @@ class ControllerCommandTest {
     }
 
     @Test
-    void theControllerConnectsToARunningMiddleware() throws Exception {
-        try (var link = MiddlewareLink.open(LinkConfig.defaults().withPort(0).withLog(line -> { }))) {
+    void theControllerConnectsToARunningMiddleware(@TempDir Path dir) throws Exception {
+        Path secretFile = dir.resolve("secret");
+        var secret = jacabot.robot.link.LinkSecret.loadOrCreate(secretFile); // made 0600, as the launchers do
+        assertFalse(Files.getPosixFilePermissions(secretFile).contains(java.nio.file.attribute.PosixFilePermission.OTHERS_READ));
+        try (var link = MiddlewareLink.open(LinkConfig.defaults().withPort(0).withLog(line -> { }).withSecret(secret))) {
             var result = run("controller", "--world", NAVIGATION, "--port", String.valueOf(link.port()), "--speed", "10",
-                    "--seconds", "5");
+                    "--seconds", "5", "--secret-file", secretFile.toString());
             assertEquals("0", result[0], result[2]);
             assertTrue(result[1].startsWith("controller: robot 'khepera' (khepera) of world 'navigation', real time x10.0; "
                     + "middleware at 127.0.0.1:" + link.port()), result[1]);

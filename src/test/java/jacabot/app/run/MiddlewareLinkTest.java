@@ -11,6 +11,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.link.Command;
+import jacabot.robot.link.Handshake;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
@@ -34,13 +36,15 @@ import org.junit.jupiter.api.Test;
 /** The middleware's end of the link, against the real controller and against hostile clients. */
 class MiddlewareLinkTest {
     private final List<String> log = new CopyOnWriteArrayList<>();
+    /** The key of the links these tests open themselves (InProcessLink makes its own). */
+    static final LinkSecret SECRET = LinkSecret.random();
 
     static SimWorld world(String name) throws Exception {
         return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", name + ".json"));
     }
 
     private LinkConfig linkConfig() {
-        return LinkConfig.defaults().withPort(0).withLog(log::add);
+        return LinkConfig.defaults().withPort(0).withLog(log::add).withSecret(SECRET);
     }
 
     /** Safety net only: the first event matching within 10 s. */
@@ -68,15 +72,9 @@ class MiddlewareLinkTest {
             assertTrue(m.awaitConnected(10, TimeUnit.SECONDS));
             link.controller().runner().start();
             List<LinkEvent> handled = new CopyOnWriteArrayList<>();
-            while (m.simTimeMs() < 400) {
-                Thread.sleep(10); // ten steps queue up before the hand-over
-            }
+            waitFor(() -> m.simTimeMs() >= 400); // ten steps queue up before the hand-over
             m.handOver(handled::add);
-            long markers;
-            do {
-                Thread.sleep(10);
-                markers = handled.stream().filter(e -> e instanceof LinkEvent.StepMarker).count();
-            } while (markers < 20);
+            waitFor(() -> handled.stream().filter(e -> e instanceof LinkEvent.StepMarker).count() >= 20);
             link.controller().runner().stop();
             assertInstanceOf(LinkEvent.Connected.class, handled.get(0), "the queued events came first");
             long lastStep = -1;
@@ -144,10 +142,19 @@ class MiddlewareLinkTest {
         }
     }
 
-    /** A client that shakes hands properly and then writes whatever the test wants. */
-    private static Socket handshake(MiddlewareLink m, int version) throws Exception {
+    /**
+     * A client that shakes hands properly (with the secret, for this version) and then writes
+     * whatever the test wants.
+     */
+    static Socket handshake(MiddlewareLink m, int version) throws Exception {
         Socket s = new Socket(InetAddress.getLoopbackAddress(), m.port());
-        new Protocol.Hello(version, "rogue", "none", 40, false).write(new DataOutputStream(s.getOutputStream()));
+        var hello = new Protocol.Hello(version, "rogue", "none", 40, false);
+        var out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
+        if (version == Protocol.VERSION) {
+            Handshake.asController(new DataInputStream(s.getInputStream()), out, hello, SECRET);
+        } else {
+            hello.write(out);
+        }
         return s;
     }
 
@@ -220,7 +227,7 @@ class MiddlewareLinkTest {
                 expectClosedWith(m, "truncated frame");
             }
             // still serving: a real controller gets through
-            var cc = ControllerConfig.defaults().withAddress("127.0.0.1", m.port()).withLog(log::add);
+            var cc = ControllerConfig.defaults().withAddress("127.0.0.1", m.port()).withLog(log::add).withSecret(SECRET);
             try (var controller = new jacabot.robot.RobotController(world("obstacle-avoidance"), cc)) {
                 controller.start();
                 var c = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
@@ -230,7 +237,7 @@ class MiddlewareLinkTest {
         }
     }
 
-    private static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
+    static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (!condition.getAsBoolean() && System.nanoTime() < end) {
             Thread.sleep(10);
@@ -238,19 +245,23 @@ class MiddlewareLinkTest {
         assertTrue(condition.getAsBoolean(), "condition not met within 10 s");
     }
 
+    /**
+     * Real time never runs ahead of the wall clock x the factor (a load on the machine can only slow it
+     * down, so this bound does not flake; how close it keeps to the factor is a benchmark's figure).
+     */
     @Test
-    void realTimeModeKeepsTheSimulatedToWallRatioNearTheFactor() throws Exception {
+    void realTimeModeNeverRunsAheadOfTheFactor() throws Exception {
         var cc = ControllerConfig.defaults().withSpeedFactor(4).withLog(log::add);
         try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
             var runner = link.controller().runner();
             long wall0 = System.nanoTime(), sim0 = link.controller().world().timeMs();
             runner.start();
-            Thread.sleep(2000);
+            waitFor(() -> link.controller().world().timeMs() - sim0 >= 2000);
             runner.stop();
             double wallS = (System.nanoTime() - wall0) / 1e9;
             double simS = (link.controller().world().timeMs() - sim0) / 1000.0;
-            double ratio = simS / wallS;
-            assertTrue(ratio > 4 * 0.7 && ratio < 4 * 1.3, "simulated/wall ratio " + ratio + " for factor 4");
+            int step = link.controller().world().controlStep();
+            assertTrue(simS <= 4 * wallS + step / 1000.0, simS + " s simulated in " + wallS + " s at factor 4");
         }
     }
 
@@ -259,7 +270,10 @@ class MiddlewareLinkTest {
         try (var m = MiddlewareLink.open(linkConfig())) {
             assertFalse(m.send(Command.stop()));
             assertFalse(m.awaitConnected(10, TimeUnit.MILLISECONDS));
-            assertInstanceOf(Integer.class, m.port());
+            assertTrue(m.port() > 0, "a free port was chosen: " + m.port());
+            try (Socket s = new Socket(InetAddress.getLoopbackAddress(), m.port())) {
+                assertTrue(s.isConnected(), "it listens there");
+            }
         }
     }
 }

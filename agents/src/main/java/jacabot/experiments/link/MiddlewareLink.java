@@ -22,10 +22,17 @@ import java.util.function.Consumer;
 /**
  * The middleware's end of the link (thesis §2.3: the artifact "creates a new ServerSocket on a
  * well-known port, waits for a connection request from the robot platform"), as a plain class that
- * the {@code MiddlewareArtifact} wraps. It listens on loopback by default, accepts the controller
- * (a new connection replaces the old one, so a controller that reconnects after a drop is taken
- * back at once), checks the protocol version, reads the sensor data stream on its own thread and
- * queues {@link LinkEvent}s, and writes commands.
+ * the {@code MiddlewareArtifact} wraps. It listens on loopback by default, accepts the controller,
+ * checks the protocol version and that the controller holds the link secret
+ * ({@link jacabot.robot.link.Handshake}; only then may a new connection replace the old one, so a
+ * controller that reconnects after a drop is taken back at once and nobody else is), reads the
+ * sensor data stream on its own thread and queues {@link LinkEvent}s, and writes commands.
+ *
+ * <p>Guards: failed handshakes are logged and rate-limited; a handshake or a frame that takes too
+ * long closes its connection (a watchdog thread); a controller whose simulated clock went back
+ * (it restarted) is rebased so that the time the agent sees never goes back; heartbeats only go
+ * out while the agent reasons ({@link #setLiveness}), so the controller's fail-safe stops the robot
+ * when the agent is stuck or dead, not only when this process is.
  *
  * <p>For CArtAgO: one {@link #receive()} is one {@code await(IBlockingCmd)}: its {@code exec()}
  * blocks until the next reading, step marker or connection change arrives.
@@ -76,6 +83,21 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     private volatile boolean closed;
     private final Thread acceptor;
     private final Thread heartbeat;
+    private final Thread watchdog;
+    /** Connections not yet closed: the watchdog checks their handshake and frame deadlines. */
+    private final java.util.Set<RobotConnection> live = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private volatile java.util.function.BooleanSupplier liveness = defaultLiveness;
+    private static volatile java.util.function.BooleanSupplier defaultLiveness = () -> true;
+    private volatile boolean withheld;
+    /** Failed handshakes: this second's count, the second it counts, those refused unheard, all. */
+    private long failedThisSecond, failureSecond, rateLimited;
+    private final java.util.concurrent.atomic.AtomicLong failedHandshakes = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.concurrent.atomic.AtomicLong badFrames = new java.util.concurrent.atomic.AtomicLong();
+    private volatile long loggedFailures;
+    /** Simulated time seen last, and what is added to a restarted controller's clock. */
+    private volatile long lastSimTimeMs = -1;
+    private long timeOffsetMs;
+    private boolean rebaseChecked;
 
     private MiddlewareLink(LinkConfig config, ServerSocket server) {
         this.config = config;
@@ -83,8 +105,10 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         this.timings = new LinkTimings(config.clock());
         this.acceptor = new Thread(this::acceptLoop, "middleware-acceptor");
         this.heartbeat = new Thread(this::heartbeatLoop, "middleware-heartbeat");
+        this.watchdog = new Thread(this::watchdogLoop, "middleware-watchdog");
         acceptor.setDaemon(true);
         heartbeat.setDaemon(true);
+        watchdog.setDaemon(true);
     }
 
     /**
@@ -93,7 +117,12 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
      * @throws IOException when the address cannot be bound (e.g. the port is taken)
      */
     public static MiddlewareLink open(LinkConfig config) throws IOException {
-        ServerSocket server = new ServerSocket();
+        ServerSocket server = config.tls() == null ? new ServerSocket()
+                : config.tls().getServerSocketFactory().createServerSocket();
+        if (config.tls() == null && !config.bindAddress().isLoopbackAddress()) {
+            config.log().accept("warning: listening on " + config.bindAddress().getHostAddress()
+                    + " without TLS: the link is authenticated but anyone on the path can read it");
+        }
         try {
             server.setReuseAddress(true);
             server.bind(new InetSocketAddress(config.bindAddress(), config.port()));
@@ -102,8 +131,11 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             throw new IOException("cannot listen on " + config.bindAddress().getHostAddress() + ":" + config.port()
                     + ": " + e.getMessage(), e);
         }
+        config.secret(); // fails here, with the file's problem, rather than at the first connection
         MiddlewareLink link = new MiddlewareLink(config, server);
+        OPEN.add(link);
         link.acceptor.start();
+        link.watchdog.start();
         if (config.heartbeatMs() > 0) {
             link.heartbeat.start();
         }
@@ -157,6 +189,47 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     /** {@return the time spent decoding the controller's frames so far} */
     public LinkCosts costs() {
         return costs;
+    }
+
+    /** {@return handshakes that failed (wrong secret, garbage, timeout), refused ones included} */
+    public long failedHandshakes() {
+        return failedHandshakes.get();
+    }
+
+    /** {@return frames dropped as malformed or because handling them failed} */
+    public long badFrames() {
+        return badFrames.get();
+    }
+
+    /**
+     * Heartbeats go out only while {@code probe} says the agent reasons (its reasoning cycle moves, or
+     * it is idle waiting for events): a stuck or dead agent then lets the controller's fail-safe stop
+     * the robot, as a dead process would.
+     */
+    public void setLiveness(java.util.function.BooleanSupplier probe) {
+        this.liveness = probe;
+    }
+
+    /** The liveness probe of links opened from now on in this process (the launcher sets the agents'). */
+    public static void setDefaultLiveness(java.util.function.BooleanSupplier probe) {
+        defaultLiveness = probe;
+    }
+
+    private volatile java.util.function.BooleanSupplier quiescence = defaultQuiescence;
+    private static volatile java.util.function.BooleanSupplier defaultQuiescence = () -> true;
+
+    /**
+     * Lockstep with the agent in its own thread: a step is acknowledged once {@code probe} says the
+     * agent is idle (it has taken the step's percepts in and acted on them), as the in-process
+     * lockstep runner does; by default at once.
+     */
+    public void setQuiescence(java.util.function.BooleanSupplier probe) {
+        this.quiescence = probe;
+    }
+
+    /** The quiescence probe of links opened from now on in this process. */
+    public static void setDefaultQuiescence(java.util.function.BooleanSupplier probe) {
+        defaultQuiescence = probe;
     }
 
     public void addConnectionListener(ConnectionListener l) {
@@ -262,6 +335,38 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         return send(Command.stepAck(step));
     }
 
+    private volatile long pendingAck = -1;
+
+    /**
+     * Lockstep with the agent in another thread: acknowledges {@code step} now if the agent reasons
+     * ({@link #setLiveness}), else as soon as it does again (the heartbeat thread retries), so a stuck
+     * agent holds the world still instead of letting it run without a mind.
+     */
+    public void acknowledgeWhenAlive(long step) {
+        if (alive() && quiet()) {
+            pendingAck = -1;
+            acknowledge(step);
+        } else {
+            pendingAck = step;
+        }
+    }
+
+    private boolean quiet() {
+        try {
+            return quiescence.getAsBoolean();
+        } catch (RuntimeException e) {
+            return false;
+        }
+    }
+
+    private boolean alive() {
+        try {
+            return liveness.getAsBoolean();
+        } catch (RuntimeException e) {
+            return false;
+        }
+    }
+
     /**
      * Lockstep: sends a step's commands and its {@code STEP_ACK} in one write, so the controller
      * wakes once per step; {@return false when no controller is connected or the socket failed}
@@ -288,8 +393,21 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
     }
 
+    private static final java.util.Set<MiddlewareLink> OPEN = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    /**
+     * Closes every link of this process at once (the launcher, when an agent's thread died): the
+     * controllers see the drop and stop their robots without waiting for the process to end.
+     */
+    public static void closeAll() {
+        for (MiddlewareLink l : OPEN) {
+            l.close();
+        }
+    }
+
     @Override
     public void close() {
+        OPEN.remove(this);
         closed = true;
         try {
             server.close();
@@ -300,8 +418,12 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         if (c != null) {
             c.close("the middleware closed the link");
         }
+        for (RobotConnection other : live) {
+            other.close("the middleware closed the link");
+        }
         acceptor.interrupt();
         heartbeat.interrupt();
+        watchdog.interrupt();
         synchronized (this) {
             notifyAll();
         }
@@ -311,7 +433,14 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         while (!closed) {
             try {
                 Socket s = server.accept();
-                new RobotConnection(s, this, config.limits(), costs).start();
+                String busy = refuseAtOnce();
+                if (busy != null) {
+                    s.close(); // not even a thread for it
+                    continue;
+                }
+                RobotConnection c = new RobotConnection(s, this, config, costs);
+                live.add(c);
+                c.start();
             } catch (IOException e) {
                 if (!closed) {
                     config.log().accept("accept failed: " + e.getMessage());
@@ -320,15 +449,54 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
     }
 
+    /** {@return why a new connection is closed unheard (rate limit, too many handshakes), or null} */
+    private String refuseAtOnce() {
+        long second = System.nanoTime() / 1_000_000_000L;
+        synchronized (failedHandshakes) {
+            if (second == failureSecond && failedThisSecond >= config.guards().failedPerSecond()) {
+                rateLimited++;
+                failedHandshakes.incrementAndGet();
+                return "rate-limited";
+            }
+        }
+        long pending = live.stream().filter(c -> !c.handshakeDone()).count();
+        if (pending >= config.guards().pendingHandshakes()) {
+            failedHandshakes.incrementAndGet();
+            return "too many handshakes at once";
+        }
+        return null;
+    }
+
+    /**
+     * Heartbeats, sent only while the agent reasons: it is the agent's progress, not this thread's,
+     * that keeps the controller's fail-safe quiet.
+     */
     private void heartbeatLoop() {
         long periodNanos = TimeUnit.MILLISECONDS.toNanos(config.heartbeatMs());
         try {
             while (!closed) {
-                Thread.sleep(Math.max(1, config.heartbeatMs() / 2));
+                // a pending lockstep acknowledgement is retried every millisecond
+                Thread.sleep(pendingAck >= 0 ? 1 : Math.max(1, config.heartbeatMs() / 2));
                 RobotConnection c = current;
+                long ack = pendingAck;
+                if (c != null && ack >= 0 && alive() && quiet()) {
+                    pendingAck = -1;
+                    acknowledge(ack);
+                }
                 // Lockstep controllers do not watch for silence: the world waits for us anyway.
                 if (c != null && !c.hello().lockstep() && System.nanoTime() - lastSentNanos >= periodNanos) {
-                    send(Command.heartbeat());
+                    boolean alive = alive();
+                    if (alive) {
+                        if (withheld) {
+                            withheld = false;
+                            config.log().accept("the agent reasons again: heartbeats resume");
+                        }
+                        send(Command.heartbeat());
+                    } else if (!withheld) {
+                        withheld = true;
+                        config.log().accept("the agent does not reason: heartbeats withheld, "
+                                + "the controller's fail-safe will stop the robot");
+                    }
                 }
             }
         } catch (InterruptedException e) {
@@ -336,8 +504,54 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         }
     }
 
+    /** Closes connections that take too long to shake hands or to finish a frame; reports failed handshakes. */
+    private void watchdogLoop() {
+        long handshakeNanos = TimeUnit.MILLISECONDS.toNanos(config.guards().handshakeMs());
+        long frameNanos = TimeUnit.MILLISECONDS.toNanos(config.guards().frameMs());
+        try {
+            while (!closed) {
+                Thread.sleep(50);
+                long now = System.nanoTime();
+                for (RobotConnection c : live) {
+                    if (c.isClosed()) {
+                        continue;
+                    }
+                    if (!c.handshakeDone() && now - c.startedNanos() > handshakeNanos) {
+                        c.close("no complete handshake within " + config.guards().handshakeMs() + " ms");
+                    }
+                    long frameStart = c.frameStartNanos();
+                    if (frameStart != 0 && now - frameStart > frameNanos) {
+                        c.close("a frame took longer than " + config.guards().frameMs() + " ms to arrive");
+                    }
+                }
+                reportFailures();
+            }
+        } catch (InterruptedException e) {
+            // closing
+        }
+    }
+
+    /** Logs failed handshakes beyond the first five (logged one by one): at most one line a second. */
+    private void reportFailures() {
+        long n = failedHandshakes.get();
+        long second = System.nanoTime() / 1_000_000_000L;
+        if (n > loggedFailures && second != lastSummarySecond) {
+            long limited;
+            synchronized (failedHandshakes) {
+                limited = rateLimited;
+            }
+            config.log().accept((n - loggedFailures) + " more failed connection attempts (" + limited
+                    + " refused unheard by the rate limit so far)");
+            loggedFailures = n;
+            lastSummarySecond = second;
+        }
+    }
+
+    private long lastSummarySecond = -1;
+
     @Override
     public void attached(RobotConnection c) {
+        // only a controller that proved the secret gets here: it may take the robot over
         RobotConnection old;
         synchronized (this) {
             old = current;
@@ -345,7 +559,10 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             notifyAll();
         }
         if (old != null) {
-            old.close("replaced by a new connection from the controller");
+            old.close("replaced by a new authenticated connection from the controller");
+        }
+        synchronized (dispatch) {
+            rebaseChecked = false;
         }
         Protocol.Hello h = c.hello();
         config.log().accept("controller connected: robot '" + h.robotName() + "' of world '" + h.worldName() + "', "
@@ -357,9 +574,49 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
     }
 
     @Override
-    public void refused(RobotConnection c, String reason) {
+    public void refused(RobotConnection c, String reason, boolean authentication) {
+        live.remove(c);
         lastCloseReason = reason;
-        config.log().accept("refused a connection: " + reason);
+        long n = failedHandshakes.incrementAndGet();
+        long second = System.nanoTime() / 1_000_000_000L;
+        synchronized (failedHandshakes) {
+            if (second != failureSecond) {
+                failureSecond = second;
+                failedThisSecond = 0;
+            }
+            failedThisSecond++;
+        }
+        if (n <= 5) {
+            loggedFailures = n;
+            config.log().accept("refused a connection: " + reason);
+        }
+    }
+
+    @Override
+    public void badFrame(RobotConnection c, String reason) {
+        long n = badFrames.incrementAndGet();
+        if (n <= 20 || n % 1000 == 0) {
+            config.log().accept("bad frame dropped (" + n + " so far): " + reason);
+        }
+    }
+
+    /**
+     * {@return the simulated time the agent sees for a controller's {@code raw} time}: a controller
+     * that restarted counts from 0 again, so its clock is moved on to continue from the last time
+     * seen (one control step later) and .wait and timeouts in the agent keep working.
+     */
+    private long rebase(RobotConnection c, long raw) {
+        if (!rebaseChecked) {
+            rebaseChecked = true;
+            if (lastSimTimeMs >= 0 && raw + timeOffsetMs < lastSimTimeMs) {
+                timeOffsetMs = lastSimTimeMs + c.hello().controlStepMs() - raw;
+                config.log().accept("the controller's simulated clock went back to " + raw + " ms (a restart): "
+                        + "times are moved on by " + timeOffsetMs + " ms");
+            }
+        }
+        long t = raw + timeOffsetMs;
+        lastSimTimeMs = Math.max(lastSimTimeMs, t);
+        return t;
     }
 
     @Override
@@ -370,15 +627,23 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         if (frame instanceof Uplink.Batch) {
             Uplink.Batch b = (Uplink.Batch) frame;
             long received = config.clock().nowMicros();
-            simTimeMs = b.simTimeMs();
+            long t;
+            synchronized (dispatch) {
+                t = rebase(c, b.simTimeMs());
+            }
+            simTimeMs = t;
             for (var info : b.readings()) {
-                LinkEvent.Reading r = new LinkEvent.Reading(info, b.step(), b.simTimeMs(), b.sampledMicros(), received);
+                LinkEvent.Reading r = new LinkEvent.Reading(info, b.step(), t, b.sampledMicros(), received);
                 timings.received(r);
                 dispatch(r);
             }
         } else if (frame instanceof Uplink.StepMarker) {
             Uplink.StepMarker m = (Uplink.StepMarker) frame;
-            dispatch(new LinkEvent.StepMarker(m.step(), m.simTimeMs(), m.awaitsAck()));
+            long t;
+            synchronized (dispatch) {
+                t = rebase(c, m.simTimeMs());
+            }
+            dispatch(new LinkEvent.StepMarker(m.step(), t, m.awaitsAck()));
         } else if (frame instanceof Uplink.Applied) {
             Uplink.Applied a = (Uplink.Applied) frame;
             Sent sent;
@@ -417,6 +682,7 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
 
     @Override
     public void detached(RobotConnection c, String reason) {
+        live.remove(c);
         boolean wasCurrent;
         synchronized (this) {
             wasCurrent = current == c;

@@ -1,11 +1,16 @@
 package jacabot.experiments.link;
 
+import jacabot.robot.link.AuthenticationException;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.CommandWriter;
+import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
+import jacabot.robot.link.ReadingCheck;
 import jacabot.robot.link.SensorDataReader;
+import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorInfoFilter;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
@@ -13,16 +18,15 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
-import java.net.SocketTimeoutException;
 import java.util.List;
 
 /**
- * One accepted controller: its handshake, the thread that reads its sensor data stream, and the
- * command stream to it. Every way the connection can end is reported once, with its reason.
+ * One accepted controller: its handshake (which proves it holds the link secret), the thread that
+ * reads its sensor data stream, and the command stream to it. Nothing read is trusted: a batch with a
+ * malformed reading is dropped and reported ({@link ReadingCheck}); after {@code maxBadFrames} of them
+ * the connection is closed. Every way the connection can end is reported once, with its reason.
  */
 final class RobotConnection {
-    private static final int HANDSHAKE_TIMEOUT_MS = 5000;
-
     /** What the connection tells the link. */
     interface Owner {
         /** The handshake succeeded: this connection is the robot now. */
@@ -30,8 +34,11 @@ final class RobotConnection {
 
         void frame(RobotConnection c, Uplink frame);
 
+        /** A frame was dropped (malformed, or the link failed on it). */
+        void badFrame(RobotConnection c, String reason);
+
         /** The handshake failed: the connection never became the robot's. */
-        void refused(RobotConnection c, String reason);
+        void refused(RobotConnection c, String reason, boolean authentication);
 
         /** The connection ended (reason for the log and {@code Disconnected}). */
         void detached(RobotConnection c, String reason);
@@ -41,15 +48,23 @@ final class RobotConnection {
     private final Owner owner;
     private final SensorInfoFilter.Limits limits;
     private final LinkCosts costs;
+    private final LinkSecret secret;
+    private final int maxBadFrames;
+    private final long startedNanos = System.nanoTime();
     private volatile Protocol.Hello hello;
     private volatile CommandWriter commands;
+    private volatile SensorDataReader reader;
     private volatile String closeReason;
+    private volatile boolean handshakeDone;
+    private int badFrames;
 
-    RobotConnection(Socket socket, Owner owner, SensorInfoFilter.Limits limits, LinkCosts costs) {
+    RobotConnection(Socket socket, Owner owner, LinkConfig config, LinkCosts costs) {
         this.socket = socket;
         this.owner = owner;
-        this.limits = limits;
+        this.limits = config.limits();
         this.costs = costs;
+        this.secret = config.secret();
+        this.maxBadFrames = config.guards().maxBadFrames();
     }
 
     void start() {
@@ -60,6 +75,24 @@ final class RobotConnection {
 
     Protocol.Hello hello() {
         return hello;
+    }
+
+    boolean handshakeDone() {
+        return handshakeDone;
+    }
+
+    long startedNanos() {
+        return startedNanos;
+    }
+
+    /** {@return when the frame being read began, 0 between frames or before the stream} */
+    long frameStartNanos() {
+        SensorDataReader r = reader;
+        return r == null ? 0 : r.frameStartNanos();
+    }
+
+    boolean isClosed() {
+        return socket.isClosed();
     }
 
     void send(int seq, long sentMicros, Command c) throws IOException {
@@ -96,41 +129,56 @@ final class RobotConnection {
     private void run() {
         String reason;
         boolean attached = false;
+        boolean authentication = false;
         try {
             socket.setTcpNoDelay(true);
-            socket.setSoTimeout(HANDSHAKE_TIMEOUT_MS);
-            Protocol.Hello h = Protocol.Hello.read(new DataInputStream(socket.getInputStream()));
             var out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
-            String mismatch = Protocol.versionMismatch(h.version(), Protocol.VERSION);
-            new Protocol.Welcome(Protocol.VERSION, mismatch == null, mismatch == null ? "welcome" : mismatch).write(out);
-            if (mismatch != null) {
-                throw new ProtocolException(mismatch);
-            }
+            // the owner's watchdog closes a connection whose handshake takes too long
+            Protocol.Hello h = Handshake.asMiddleware(new DataInputStream(socket.getInputStream()), out, secret);
             hello = h;
             commands = new CommandWriter(out);
-            socket.setSoTimeout(0);
+            handshakeDone = true;
             owner.attached(this);
             attached = true;
-            var reader = new SensorDataReader(socket.getInputStream(), limits);
-            reader.measure(costs);
+            var check = new ReadingCheck(h.sensors());
+            var r = new SensorDataReader(socket.getInputStream(), limits);
+            r.measure(costs);
+            reader = r;
             while (true) {
-                Uplink frame = reader.read();
+                Uplink frame = r.read();
                 if (frame == null) {
                     reason = "the controller closed the connection";
                     break;
                 }
-                owner.frame(this, frame);
+                String bad = frame instanceof Uplink.Batch ? problem((Uplink.Batch) frame, check) : null;
+                if (bad == null) {
+                    try {
+                        owner.frame(this, frame);
+                    } catch (RuntimeException e) {
+                        bad = "handling it failed: " + e; // the reading thread goes on with the next frame
+                    }
+                }
+                if (bad != null) {
+                    owner.badFrame(this, bad);
+                    if (++badFrames > maxBadFrames) {
+                        reason = "more than " + maxBadFrames + " bad frames; the last: " + bad;
+                        break;
+                    }
+                }
                 if (frame instanceof Uplink.Bye) {
                     reason = "the controller said goodbye: " + ((Uplink.Bye) frame).reason();
                     break;
                 }
             }
+        } catch (AuthenticationException e) {
+            reason = e.getMessage();
+            authentication = true;
         } catch (ProtocolException e) {
             reason = e.getMessage();
-        } catch (SocketTimeoutException e) {
-            reason = "no handshake from " + socket.getRemoteSocketAddress() + " within " + HANDSHAKE_TIMEOUT_MS + " ms";
         } catch (IOException e) {
             reason = "link dropped: " + e.getMessage();
+        } catch (RuntimeException e) {
+            reason = "link failed: " + e;
         }
         synchronized (this) {
             if (closeReason != null) {
@@ -143,7 +191,20 @@ final class RobotConnection {
         if (attached) {
             owner.detached(this, reason);
         } else {
-            owner.refused(this, reason + " (from " + socket.getRemoteSocketAddress() + ")");
+            owner.refused(this, reason + " (from " + socket.getRemoteSocketAddress() + ")", authentication);
         }
+    }
+
+    private static String problem(Uplink.Batch b, ReadingCheck check) {
+        if (b.step() < 0 || b.simTimeMs() < 0) {
+            return "batch " + b.step() + " at t=" + b.simTimeMs() + " ms: negative step or time";
+        }
+        for (SensorInfo info : b.readings()) {
+            String p = check.problem(info);
+            if (p != null) {
+                return "batch of step " + b.step() + " dropped: " + p;
+            }
+        }
+        return null;
     }
 }

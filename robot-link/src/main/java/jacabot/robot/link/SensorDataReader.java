@@ -19,8 +19,12 @@ import java.util.List;
  * {@link ProtocolException} with a readable reason; the caller closes the connection.
  */
 public final class SensorDataReader {
-    private final ObjectInputStream in;
+    private final BufferedInputStream buffered;
+    private ObjectInputStream in;
     private final SensorInfoFilter filter;
+    private final SensorInfoFilter.Limits limits;
+    private long objectsInStream;
+    private volatile long frameStartNanos;
     private LinkCosts costs;
 
     /**
@@ -30,14 +34,30 @@ public final class SensorDataReader {
      */
     public SensorDataReader(InputStream in, SensorInfoFilter.Limits limits) throws IOException {
         this.filter = new SensorInfoFilter(limits);
+        this.limits = limits;
+        this.buffered = new BufferedInputStream(in);
+        openStream();
+    }
+
+    private void openStream() throws IOException {
         try {
-            this.in = new ObjectInputStream(new BufferedInputStream(in));
+            this.in = new ObjectInputStream(buffered);
         } catch (EOFException e) {
             throw new ProtocolException("the controller closed the connection before its sensor data stream began");
         } catch (ObjectStreamException e) {
             throw new ProtocolException("garbage instead of a sensor data stream: " + e.getMessage());
         }
         this.in.setObjectInputFilter(filter);
+        objectsInStream = 0;
+    }
+
+    /**
+     * {@return {@code System.nanoTime()} when the frame being read began (its tag arrived), 0 between
+     * frames}: a watchdog closes a connection that takes too long to finish a frame (a client sending
+     * a byte every few seconds would otherwise hold the reading thread for ever)
+     */
+    public long frameStartNanos() {
+        return frameStartNanos;
     }
 
     /** From now on, adds the time spent decoding frames (from their first byte on) to {@code costs}. */
@@ -51,22 +71,35 @@ public final class SensorDataReader {
      * @return the frame, or null when the controller closed the connection between two frames
      */
     public Uplink read() throws IOException {
-        int tag;
-        try {
-            tag = in.read();
-        } catch (ObjectStreamException e) {
-            throw garbage(e);
+        while (true) {
+            frameStartNanos = 0;
+            int tag;
+            try {
+                tag = in.read();
+            } catch (ObjectStreamException e) {
+                throw garbage(e);
+            }
+            if (tag < 0) {
+                return null;
+            }
+            frameStartNanos = Math.max(1, System.nanoTime());
+            if (tag == Uplink.RESTART) {
+                openStream(); // a new header follows: the old stream's handles go
+                continue;
+            }
+            filter.beginFrame();
+            try {
+                if (costs == null) {
+                    return readFrame(tag);
+                }
+                long t0 = System.nanoTime();
+                Uplink frame = readFrame(tag);
+                costs.addDecoding(System.nanoTime() - t0);
+                return frame;
+            } finally {
+                frameStartNanos = 0;
+            }
         }
-        if (tag < 0) {
-            return null;
-        }
-        if (costs == null) {
-            return readFrame(tag);
-        }
-        long t0 = System.nanoTime();
-        Uplink frame = readFrame(tag);
-        costs.addDecoding(System.nanoTime() - t0);
-        return frame;
     }
 
     private Uplink readFrame(int tag) throws IOException {
@@ -102,6 +135,10 @@ public final class SensorDataReader {
     }
 
     private SensorInfo readSensorInfo() throws IOException {
+        if (++objectsInStream > limits.maxObjectsPerStream()) {
+            throw new ProtocolException("garbage on the sensor data stream: more than " + limits.maxObjectsPerStream()
+                    + " readings without a stream restart");
+        }
         filter.beginObject();
         Object o;
         try {

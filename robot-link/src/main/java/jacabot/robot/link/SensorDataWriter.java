@@ -9,11 +9,14 @@ import java.util.List;
 /**
  * The controller's end of the sensor data stream: an {@code ObjectOutputStream}, as in the thesis,
  * carrying the {@link Uplink} frames (primitive headers, then one {@link SensorInfo} object per
- * reading). The stream is {@code reset()} every {@code resetEvery} batches: an
- * {@code ObjectOutputStream} otherwise keeps a reference to every object it ever wrote.
+ * reading). Every {@code resetEvery} batches the object stream restarts ({@link Uplink#RESTART}, then
+ * a new stream header): an {@code ObjectOutputStream} otherwise keeps a reference to every object it
+ * ever wrote, and so does the reader's {@code ObjectInputStream}, which is why the reader replaces
+ * its stream at each restart and refuses a stream that goes on too long without one.
  */
 public final class SensorDataWriter {
-    private final ObjectOutputStream out;
+    private final BufferedOutputStream buffered;
+    private ObjectOutputStream out;
     private final int resetEvery;
     private int batchesSinceReset;
     private LinkCosts costs;
@@ -23,7 +26,8 @@ public final class SensorDataWriter {
         if (resetEvery < 1) {
             throw new IllegalArgumentException("resetEvery must be >= 1, got " + resetEvery);
         }
-        this.out = new ObjectOutputStream(new BufferedOutputStream(out));
+        this.buffered = new BufferedOutputStream(out);
+        this.out = new ObjectOutputStream(buffered);
         this.out.flush();
         this.resetEvery = resetEvery;
     }
@@ -37,7 +41,9 @@ public final class SensorDataWriter {
     public synchronized void writeStep(Uplink.Batch batch, Uplink.StepMarker marker) throws IOException {
         long t0 = costs == null ? 0 : System.nanoTime();
         if (++batchesSinceReset >= resetEvery) {
-            out.reset();
+            out.writeByte(Uplink.RESTART);
+            out.flush();
+            out = new ObjectOutputStream(buffered); // a new header: both ends forget every object so far
             batchesSinceReset = 0;
         }
         out.writeByte(Uplink.BATCH);

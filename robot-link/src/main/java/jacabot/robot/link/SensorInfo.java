@@ -83,6 +83,16 @@ public final class SensorInfo implements Serializable {
         return doubleValues.clone();
     }
 
+    /** {@return the length of the int array, without copying it} */
+    public int intCount() {
+        return intValues.length;
+    }
+
+    /** {@return the length of the double array, without copying it} */
+    public int doubleCount() {
+        return doubleValues.length;
+    }
+
     /** A stream may carry any field values: refuse the ones the constructors never make. */
     private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
         in.defaultReadObject();

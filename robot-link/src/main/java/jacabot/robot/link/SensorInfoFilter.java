@@ -13,13 +13,27 @@ import java.io.ObjectInputFilter;
  * the life of the connection), so {@link #beginObject()} marks where each top-level object starts.
  */
 public final class SensorInfoFilter implements ObjectInputFilter {
-    /** Limits; {@link #DEFAULT} fits a 640×480 camera image. */
-    public record Limits(int maxArrayLength, int maxDepth, long maxReferences, long maxBytesPerObject) {
-        public static final Limits DEFAULT = new Limits(640 * 480 + 2, 3, 100_000, 8L * (640 * 480 + 2) + 4096);
+    /**
+     * Limits; {@link #DEFAULT} fits a 640×480 camera image.
+     *
+     * @param maxBytesPerFrame   bytes one batch may take in all (the per-object limit times the batch
+     *                           length would allow gigabytes)
+     * @param maxObjectsPerStream readings one object stream may carry before it restarts
+     *                           ({@link Uplink#RESTART}): the reader's handle table keeps them all
+     */
+    public record Limits(int maxArrayLength, int maxDepth, long maxReferences, long maxBytesPerObject,
+                         long maxBytesPerFrame, long maxObjectsPerStream) {
+        public static final Limits DEFAULT = new Limits(640 * 480 + 2, 3, 100_000, 8L * (640 * 480 + 2) + 4096,
+                4L * (640 * 480 + 2) + 64 * 1024, 16_384);
+
+        public Limits(int maxArrayLength, int maxDepth, long maxReferences, long maxBytesPerObject) {
+            this(maxArrayLength, maxDepth, maxReferences, maxBytesPerObject, maxBytesPerObject + 64 * 1024, 16_384);
+        }
     }
 
     private final Limits limits;
     private long objectStart = -1;
+    private long frameStart = -1;
     private long referencesStart;
     private String lastRejection;
 
@@ -32,6 +46,11 @@ public final class SensorInfoFilter implements ObjectInputFilter {
         objectStart = -1;
     }
 
+    /** Called before each frame: the frame's byte limit counts from here. */
+    public void beginFrame() {
+        frameStart = -1;
+    }
+
     /** {@return why the last object was rejected, or null} */
     public String lastRejection() {
         return lastRejection;
@@ -42,6 +61,9 @@ public final class SensorInfoFilter implements ObjectInputFilter {
         if (objectStart < 0) {
             objectStart = info.streamBytes();
             referencesStart = info.references();
+        }
+        if (frameStart < 0) {
+            frameStart = objectStart;
         }
         Class<?> type = info.serialClass();
         if (type != null) {
@@ -69,6 +91,9 @@ public final class SensorInfoFilter implements ObjectInputFilter {
         }
         if (info.streamBytes() - objectStart > limits.maxBytesPerObject()) {
             return reject("object larger than " + limits.maxBytesPerObject() + " bytes");
+        }
+        if (info.streamBytes() - frameStart > limits.maxBytesPerFrame()) {
+            return reject("batch larger than " + limits.maxBytesPerFrame() + " bytes");
         }
         return Status.ALLOWED;
     }

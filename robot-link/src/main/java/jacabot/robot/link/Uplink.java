@@ -6,6 +6,8 @@ import java.util.List;
 public sealed interface Uplink {
     /** Frame tags on the wire. */
     byte BATCH = 1, STEP_MARKER = 2, APPLIED = 3, FAIL_SAFE = 4, BYE = 5;
+    /** Not a frame: the object stream starts again with a new header (bounds both ends' handle tables). */
+    byte RESTART = 6;
 
     /**
      * One control step's readings (one {@link SensorInfo} per enabled device that has a reading),

@@ -15,7 +15,7 @@ import java.util.function.Supplier;
  * agents on their own threads are sampled with {@link #sampleEvery}, which has the capture run at
  * the start of one of the agent's cycles.
  */
-public final class AgentWatch {
+public final class MindWatch {
     private final Agent agent;
     private final MindProbe probe;
     private final MindHistory history;
@@ -23,7 +23,7 @@ public final class AgentWatch {
     private Consumer<MindState> also = m -> {
     };
 
-    private AgentWatch(Agent agent, MindHistory history, Supplier<RobotView> robot) {
+    private MindWatch(Agent agent, MindHistory history, Supplier<RobotView> robot) {
         this.agent = agent;
         this.probe = MindProbe.attach(agent);
         this.history = history;
@@ -36,12 +36,12 @@ public final class AgentWatch {
      * @param inspector where its frames go, or null (e.g. only a step log)
      * @param robot its body now, or null for an agent without one
      */
-    public static AgentWatch attach(Inspector inspector, Agent agent, Supplier<RobotView> robot) {
-        return new AgentWatch(agent, inspector == null ? null : inspector.add(agent.name()), robot);
+    public static MindWatch attach(Inspector inspector, Agent agent, Supplier<RobotView> robot) {
+        return new MindWatch(agent, inspector == null ? null : inspector.add(agent.name()), robot);
     }
 
     /** Also hands every captured state to {@code sink} (e.g. the step log), on the agent's thread. */
-    public AgentWatch alsoTo(Consumer<MindState> sink) {
+    public MindWatch alsoTo(Consumer<MindState> sink) {
         this.also = sink;
         return this;
     }
@@ -60,7 +60,7 @@ public final class AgentWatch {
      * Samples agents running on their own threads: every {@code periodMs} each agent captures its
      * mind at the start of its next cycle. {@return a handle that stops the sampling}
      */
-    public static AutoCloseable sampleEvery(List<AgentWatch> watches, long periodMs) {
+    public static AutoCloseable sampleEvery(List<MindWatch> watches, long periodMs) {
         ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "inspector-sampler");
             t.setDaemon(true);

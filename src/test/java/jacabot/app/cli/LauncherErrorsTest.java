@@ -1,0 +1,101 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Issue 16's launcher failures: each gives one line saying what was wrong and what to do, exit 2
+ * for a user error and 1 for a run failure, no stack trace (docs/reliability.md).
+ */
+class LauncherErrorsTest {
+    private static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
+
+    private static void assertOneLine(String[] result, String code, String message) {
+        assertEquals(code, result[0], result[1] + result[2]);
+        assertTrue(result[2].startsWith("error: ") && result[2].contains(message), result[2]);
+        assertEquals(1, result[2].strip().lines().count(), "one line: " + result[2]);
+        assertFalse(result[2].contains("\tat "), "no stack trace: " + result[2]);
+    }
+
+    private static String[] experiment(String... more) {
+        String[] args = new String[3 + more.length];
+        args[0] = "experiment";
+        args[1] = "obstacle-avoidance";
+        args[2] = "--headless";
+        System.arraycopy(more, 0, args, 3, more.length);
+        return CliRun.run(args);
+    }
+
+    private static Path world(Path dir, String from, String to) throws Exception {
+        String text = Files.readString(ROOT.resolve("worlds/obstacle-avoidance.json"));
+        assertTrue(text.contains(from), from);
+        Path w = dir.resolve("w.json");
+        Files.writeString(w, text.replace(from, to));
+        return w;
+    }
+
+    @Test
+    void anOutputDirectoryThatCannotBeMadeIsToldBeforeTheRun() {
+        assertOneLine(experiment("--out", "/dev/null/x", "--duration", "1s"), "2", "--out /dev/null/x: cannot make the directory");
+    }
+
+    @Test
+    void anAgentThatIsNotAReadableFileIsAUserError(@TempDir Path dir) {
+        assertOneLine(experiment("--agent", dir.toString(), "--out", dir.resolve("o").toString()), "2", "no such file");
+        assertOneLine(experiment("--agent", dir.resolve("none.asl").toString()), "2", "no such file");
+    }
+
+    @Test
+    void badNumbersAreUserErrors() {
+        assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");
+        assertOneLine(CliRun.run("compare", "--duration", "abc"), "2", "--duration: bad duration");
+        assertOneLine(experiment("--speed", "-1"), "2", "--speed must be a positive number");
+        assertOneLine(experiment("--port", "70000"), "2", "--port must be in 0..65535");
+        assertOneLine(experiment("--duration", "soon"), "2", "bad duration");
+        assertOneLine(CliRun.run("experiment", "navigation", "--seed", "x"), "2", "--seed");
+    }
+
+    @Test
+    void aWorldThatCannotRunIsAUserError(@TempDir Path dir) throws Exception {
+        Path huge = world(dir, "\"controlStep\": 40", "\"controlStep\": 1099511627776");
+        var r = experiment("--world", huge.toString(), "--out", dir.resolve("o").toString(), "--duration", "1s");
+        assertEquals("2", r[0], r[2]);
+        assertFalse(r[2].contains("\tat "), r[2]);
+        assertEquals(1, r[2].strip().lines().count(), r[2]);
+        Path empty = dir.resolve("empty.json");
+        Files.writeString(empty, Files.readString(ROOT.resolve("worlds/obstacle-avoidance.json"))
+                .replaceAll("(?s)\"robots\": \\[.*?\\n  \\]", "\"robots\": []"));
+        var e = experiment("--world", empty.toString(), "--out", dir.resolve("o2").toString(), "--duration", "1s");
+        assertEquals("2", e[0], e[1] + e[2]);
+        assertTrue(e[2].contains("robot"), e[2]);
+        assertFalse(e[2].contains("\tat "), e[2]);
+    }
+
+    @Test
+    void aPortInUseIsARunFailureWithWhatToDo(@TempDir Path dir) throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            String port = String.valueOf(taken.getLocalPort());
+            assertOneLine(experiment("--port", port, "--duration", "1s", "--out", dir.toString()), "1",
+                    "cannot listen on port " + port);
+            Path mas = ROOT.resolve("agents/src/main/asl/obstacle-avoidance.mas2j");
+            assertOneLine(CliRun.run("run", mas.toString(), "--port", port), "1", "port " + port + " is in use");
+        }
+    }
+
+    @Test
+    void anExperimentWritesItsOutputsAndLinkLog(@TempDir Path dir) throws Exception {
+        var r = experiment("--duration", "2s", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[1].contains("Written: "), r[1]);
+        long steps = Files.readAllLines(dir.resolve("link-log.txt")).stream().filter(l -> l.matches("step \\d+ t=.*")).count();
+        assertEquals(50, steps, "one reading line per control step of 40 ms, streamed to the file");
+    }
+}

@@ -1,0 +1,36 @@
+package jacabot.app.run;
+
+import jacabot.agent.runtime.LocalArch;
+import jacabot.agent.semantics.Agent;
+import jacabot.cartago.bridge.CAgentArch;
+
+/**
+ * An agent architecture whose thread dies a while after the robot connected, as a runaway rule's
+ * StackOverflowError kills it (issue 16, fault 3): for {@link ProcessFaultsTest}.
+ */
+public final class DyingArch extends CAgentArch {
+    private int forwards;
+    private boolean dying;
+
+    public DyingArch(LocalArch local) {
+        super(local);
+    }
+
+    /** The robot's {@code forward} goes out, and at the N-th the agent's next cycle dies: the robot is moving then. */
+    @Override
+    public void act(jacabot.agent.semantics.ActionExec action, Agent agent) {
+        super.act(action, agent);
+        if (action.action().toString().startsWith("forward")
+                && ++forwards >= Integer.getInteger("jacabot.test.dieAfter", 2)) {
+            dying = true;
+        }
+    }
+
+    @Override
+    public void sense(Agent agent) {
+        super.sense(agent);
+        if (dying) {
+            throw new StackOverflowError("simulated: a rule that recurses without end");
+        }
+    }
+}
