@@ -11,20 +11,28 @@ import picocli.CommandLine.Parameters;
 @Command(name = "plot", mixinStandardHelpOptions = true,
         description = "Draws a recorded run's plots (battery, speed, events, latency) as PNG in its folder.")
 final class PlotCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    /** picocli's writers, so the command can run in-process (tests) without the global streams */
+    private java.io.PrintStream out;
+    private java.io.PrintStream err;
+
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED)")
     private Path dir;
 
     @Override
     public Integer call() throws Exception {
+        out = ConsoleStreams.of(commandSpec.commandLine().getOut());
+        err = ConsoleStreams.of(commandSpec.commandLine().getErr());
         if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
-            System.err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
+            err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
                     + " (written by every headless `jacabot experiment` run)");
             return 2;
         }
         try {
-            RunPlots.writeAll(dir, System.out);
+            RunPlots.writeAll(dir, out);
         } catch (java.io.IOException e) {
-            System.err.println("error: " + e.getMessage());
+            err.println("error: " + e.getMessage());
             return 1;
         }
         return 0;

@@ -22,6 +22,12 @@ import picocli.CommandLine.Parameters;
                 + "the viewer with play/pause/step/speed and a time slider, and the mind inspector at the same instant.",
                 "Headless (no display, or --headless): prints a summary, the mind at --at T, and --frames N as PNG."})
 final class ReplayCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    /** picocli's writers, so the command can run in-process (tests) without the global streams */
+    private java.io.PrintStream out;
+    private java.io.PrintStream err;
+
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (or its steps.jsonl.gz)")
     private Path dir;
 
@@ -39,22 +45,24 @@ final class ReplayCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        out = ConsoleStreams.of(commandSpec.commandLine().getOut());
+        err = ConsoleStreams.of(commandSpec.commandLine().getErr());
         Replay replay;
         try {
             replay = Replay.open(dir);
         } catch (IOException e) {
-            System.err.println("error: " + e.getMessage());
+            err.println("error: " + e.getMessage());
             return 2;
         }
         if (replay.frames().isEmpty()) {
-            System.err.println("error: " + dir + ": the step log has no step");
+            err.println("error: " + dir + ": the step log has no step");
             return 2;
         }
         boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
         if (!window) {
             return headlessReplay(replay);
         }
-        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, System.out);
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
         var history = inspector == null ? null : inspector.add("robot");
         if (inspector != null) {
             inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
@@ -97,52 +105,52 @@ final class ReplayCommand implements Callable<Integer> {
                 plans.merge(s.plan(), 1, Integer::sum);
             }
         }
-        System.out.printf("Replay of %s: experiment %s, world %s, seed %d, robot %s, agent %s%n", dir, h.experiment(),
+        out.printf("Replay of %s: experiment %s, world %s, seed %d, robot %s, agent %s%n", dir, h.experiment(),
                 h.world(), h.seed(), h.robot(), h.agentFile());
-        System.out.printf("%d control steps of %d ms, %.1f s simulated, %.2f m travelled, %d reasoning cycles%n", all.size(),
+        out.printf("%d control steps of %d ms, %.1f s simulated, %.2f m travelled, %d reasoning cycles%n", all.size(),
                 h.controlStep(), last.timeMs() / 1000.0, distance, last.mind().cycle());
-        System.out.printf("end: x %.3f z %.3f heading %.1f, battery %s, holding %s%n", last.body().x(), last.body().z(),
+        out.printf("end: x %.3f z %.3f heading %.1f, battery %s, holding %s%n", last.body().x(), last.body().z(),
                 last.body().heading(), last.body().battery() == null ? "-" : String.format("%.0f J", last.body().battery()),
                 last.body().held() == null ? "nothing" : last.body().held());
         int selections = plans.values().stream().mapToInt(Integer::intValue).sum();
-        System.out.printf("mind: %d beliefs at the end, %d plan selections, %d distinct plans%n", last.mind().beliefs().size(),
+        out.printf("mind: %d beliefs at the end, %d plan selections, %d distinct plans%n", last.mind().beliefs().size(),
                 selections, plans.size());
         plans.entrySet().stream().sorted(Map.Entry.<String, Integer>comparingByValue().reversed()).limit(5)
-                .forEach(e -> System.out.printf("  %6d x %s%n", e.getValue(), e.getKey()));
+                .forEach(e -> out.printf("  %6d x %s%n", e.getValue(), e.getKey()));
         if (at != null) {
             double seconds;
             try {
                 seconds = ExperimentCommand.parseDuration(at);
             } catch (IllegalArgumentException e) {
-                System.err.println("error: --at: " + e.getMessage());
+                err.println("error: --at: " + e.getMessage());
                 return 2;
             }
             printMind(replay, replay.indexAt(Math.round(seconds * 1000)));
         }
         if (frames > 0) {
-            Path out = (Files.isDirectory(dir) ? dir : dir.getParent()).resolve("frames");
-            Files.createDirectories(out);
+            Path frameDir = (Files.isDirectory(dir) ? dir : dir.getParent()).resolve("frames");
+            Files.createDirectories(frameDir);
             for (int k = 0; k < frames; k++) {
                 int i = frames == 1 ? all.size() - 1 : (int) ((long) k * (all.size() - 1) / (frames - 1));
                 javax.imageio.ImageIO.write(ReplayViewer.render(replay, i, 640, 640), "png",
-                        out.resolve(String.format("frame-%04d.png", k + 1)).toFile());
+                        frameDir.resolve(String.format("frame-%04d.png", k + 1)).toFile());
             }
-            System.out.println("Frames: " + frames + " PNG in " + out);
+            out.println("Frames: " + frames + " PNG in " + frameDir);
         }
         return 0;
     }
 
-    private static void printMind(Replay replay, int i) {
+    private void printMind(Replay replay, int i) {
         var f = replay.frames().get(i);
         var m = f.mind();
-        System.out.printf("%nMind at t=%.2f s (cycle %d):%n  beliefs:%n", f.timeMs() / 1000.0, m.cycle());
-        m.beliefs().forEach(b -> System.out.println("    " + b.text()));
-        System.out.println("  intentions:");
+        out.printf("%nMind at t=%.2f s (cycle %d):%n  beliefs:%n", f.timeMs() / 1000.0, m.cycle());
+        m.beliefs().forEach(b -> out.println("    " + b.text()));
+        out.println("  intentions:");
         for (MindState.IntentionView iv : m.intentions()) {
-            System.out.println("    intention " + iv.id() + " (" + iv.state() + ")");
-            iv.stack().forEach(im -> System.out.println("      " + im.plan() + "   <- " + im.current()
+            out.println("    intention " + iv.id() + " (" + iv.state() + ")");
+            iv.stack().forEach(im -> out.println("      " + im.plan() + "   <- " + im.current()
                     + (im.rest().isEmpty() ? "" : "; " + im.rest())));
         }
-        System.out.println("  events: " + (m.events().isEmpty() ? "none" : String.join(", ", m.events())));
+        out.println("  events: " + (m.events().isEmpty() ? "none" : String.join(", ", m.events())));
     }
 }
