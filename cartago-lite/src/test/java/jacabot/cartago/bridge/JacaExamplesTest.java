@@ -24,7 +24,7 @@ class JacaExamplesTest {
         try (var files = Files.list(dir)) {
             mas2j = files.filter(p -> p.toString().endsWith(".mas2j")).findFirst().orElseThrow();
         }
-        ProjectRun run = ProjectRun.run(mas2j, 0, 30_000);
+        ProjectRun run = ProjectRun.run(mas2j, 0, 90_000);
         assertTrue(run.stopped, folder + " did not end with .stopMAS:\n" + run.output);
         return run;
     }
@@ -136,5 +136,20 @@ class JacaExamplesTest {
         assertEquals(1, run.lines().stream().filter(l -> l.endsWith("] I won")).count(), run.output);
         assertEquals(made - 1, run.lines().stream().filter(l -> l.endsWith("] I lost")).count(), run.output);
         assertEquals("[announcer] all bidders done", announcer.get(announcer.size() - 1));
+    }
+
+    @Test
+    void aThreadOutsideTheAgentsUpdatesAnArtifactThroughAnExternalSession() throws Exception {
+        List<String> lines = run("ext-thread").lines();
+        assertEquals(1, lines.size(), lines.toString());
+        // 13 is reached only through the meter's own thread; then bump adds 100
+        assertTrue(lines.get(0).matches("\\[reader\\] bumped to 11[3-9]|\\[reader\\] bumped to 1[2-9]\\d"), lines.get(0));
+    }
+
+    @Test
+    void commandsOutputAsOutputParameterAndAsSignals() throws Exception {
+        assertEquals(List.of("[shell_user] first line: hello from sh", "[shell_user] line 1: 1", "[shell_user] line 2: 2",
+                "[shell_user] line 3: 3", "[shell_user] done", "[shell_user] a failing command: exit code 3"),
+                run("07b-shell").lines());
     }
 }
