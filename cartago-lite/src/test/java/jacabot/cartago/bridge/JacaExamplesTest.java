@@ -107,7 +107,7 @@ class JacaExamplesTest {
     void aClockTicksUntilStopped() throws Exception {
         List<String> lines = run("06-clock").lines();
         assertEquals(12, lines.size(), lines.toString());
-        assertEquals("[clock_user] clock started", lines.get(0));
+        assertEquals("[clock_user] clock starting", lines.get(0));
         for (int i = 1; i <= 10; i++) {
             assertEquals("[clock_user] tick " + i, lines.get(i));
         }
@@ -151,5 +151,11 @@ class JacaExamplesTest {
         assertEquals(List.of("[shell_user] first line: hello from sh", "[shell_user] line 1: 1", "[shell_user] line 2: 2",
                 "[shell_user] line 3: 3", "[shell_user] done", "[shell_user] a failing command: exit code 3"),
                 run("07b-shell").lines());
+    }
+
+    @Test
+    void socketsWrappedInArtifacts() throws Exception {
+        assertEquals(List.of("[receiver] received hello1", "[receiver] received hello2", "[receiver] received hello3"),
+                run("07-messages").lines());
     }
 }
