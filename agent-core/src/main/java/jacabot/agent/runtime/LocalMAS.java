@@ -112,8 +112,12 @@ public final class LocalMAS {
     /**
      * Each agent's own random stream, reproducible under one seed. java.util.Random's first draws
      * for seeds n, n+1, ... are nearly alike, so the index is mixed in (SplitMix64's finaliser).
+     * The first agent keeps the run's seed, so one-agent runs (the experiments) repeat as before.
      */
     static long agentSeed(long seed, int index) {
+        if (index == 0) {
+            return seed;
+        }
         long z = seed + (index + 1) * 0x9E3779B97F4A7C15L;
         z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
         z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
