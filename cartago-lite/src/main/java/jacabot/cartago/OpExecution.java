@@ -284,7 +284,8 @@ final class OpExecution implements Runnable {
                     core.workspace().logger().warning(core.id().name(), "completion callback of " + describe() + " failed", e);
                 }
             });
-        } else if (!outcome.succeeded()) {
+        } else if (!outcome.succeeded() && !core.workspace().isClosed()) {
+            // an internal loop ended by the workspace closing is the normal end of a run, not news
             core.workspace().logger().warning(core.id().name(),
                     "internal operation " + describe() + " failed: " + ((OpOutcome.Failure) outcome).message(), null);
         }

@@ -247,6 +247,11 @@ public final class Workspace implements AutoCloseable {
         }
     }
 
+    /** {@return whether {@link #close} has begun} */
+    public boolean isClosed() {
+        return closed;
+    }
+
     /** {@return the id of the live artifact called {@code artifactName}} */
     public Optional<ArtifactId> lookup(String artifactName) {
         ArtifactCore core = byName.get(artifactName);

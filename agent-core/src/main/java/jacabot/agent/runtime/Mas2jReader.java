@@ -69,6 +69,9 @@ public final class Mas2jReader {
     private static MasProject.AgentSpec agent(Mas2jParser.AgentDeclContext d) {
         String name = d.ID().getText();
         String file = d.fileName() == null ? name + ".asl" : unquote(d.fileName().getText());
+        if (!Path.of(file).getFileName().toString().contains(".")) {
+            file += ".asl";   // Jason: `waiter waiter2 ...` runs waiter2.asl
+        }
         var options = new LinkedHashMap<String, String>();
         if (d.optionList() != null) {
             for (Mas2jParser.OptionContext o : d.optionList().option()) {

@@ -18,9 +18,10 @@ import org.antlr.v4.runtime.CommonTokenStream;
 /**
  * Where a project's own classes come from, as Jason's launcher finds them: the {@code classpath:}
  * entries of the {@code .mas2j} (relative to its folder), the entries given on the command line,
- * and the Java sources beside the project — the {@code .java} files in the {@code .mas2j}'s own
- * folder, everything under {@code src/java} and {@code src/env} (JaCaMo's folder for artifacts),
- * and every {@code classpath:} folder that holds {@code .java} files. An entry ending in {@code *}
+ * and the Java sources of the project: every {@code .java} file in the {@code .mas2j}'s folder and
+ * its subfolders (as a Jason project's folder is its source root: {@code c4jexamples/Counter.java},
+ * {@code src/java}, JaCaMo's {@code src/env}), skipping hidden and build-output folders, and in
+ * every {@code classpath:} folder. An entry ending in {@code *}
  * means every jar of that folder, as with {@code java -cp}. A {@code .mas2j} entry that does not
  * exist is ignored with a warning, as Jason and {@code java -cp} ignore it (CArtAgO's examples name
  * {@code ../../../lib/cartago.jar}); a command-line entry that does not exist is an error.
@@ -60,17 +61,7 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
                 }
                 addEntry(p, e, mas2j + ": classpath entry", entries, sources);
             }
-            try (Stream<Path> files = Files.list(dir)) {
-                files.filter(ProjectClasspath::isJavaFile).sorted().forEach(sources::add);
-            } catch (IOException e) {
-                throw new Problem(dir + ": " + e.getMessage());
-            }
-            for (String folder : List.of("src/java", "src/env")) {
-                Path p = dir.resolve(folder);
-                if (Files.isDirectory(p)) {
-                    sources.addAll(javaFilesUnder(p));
-                }
-            }
+            sources.addAll(javaFilesUnder(dir));
         }
         for (Path p : extra) {
             addEntry(p.toAbsolutePath(), p.toString(), "--classpath", entries, sources);
@@ -106,9 +97,22 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
         return Files.isRegularFile(p) && p.getFileName().toString().endsWith(".java");
     }
 
+    /** Folders that hold build output or tools' data, never a project's sources. */
+    private static final Set<String> SKIPPED = Set.of("build", "bin", "out", "target", "node_modules");
+
+    private static boolean skipped(Path root, Path p) {
+        for (Path part : root.relativize(p)) {
+            String name = part.toString();
+            if (name.startsWith(".") || SKIPPED.contains(name)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private static List<Path> javaFilesUnder(Path dir) throws Problem {
         try (Stream<Path> files = Files.walk(dir)) {
-            return files.filter(ProjectClasspath::isJavaFile).sorted().toList();
+            return files.filter(p -> isJavaFile(p) && !skipped(dir, p.getParent())).sorted().toList();
         } catch (IOException e) {
             throw new Problem(dir + ": " + e.getMessage());
         }

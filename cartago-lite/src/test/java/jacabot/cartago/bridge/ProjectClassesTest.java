@@ -42,7 +42,7 @@ class ProjectClassesTest {
         ProjectRun.write(dir, Map.of("elsewhere/my/tools/Tally.java", TALLY));
         SourceCompiler.compile(List.of(dir.resolve("elsewhere/my/tools/Tally.java")), List.of(), dir.resolve("classes"));
         ProjectRun.write(dir, Map.of("t.mas2j", MAS.formatted("classpath: \"classes\";"), "a.asl", AGENT));
-        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 20_000);
+        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 90_000);
         assertEquals("[a] tally 9\n", run.output);
     }
 
@@ -50,7 +50,7 @@ class ProjectClassesTest {
     void sourcesUnderSrcJavaAreCompiledBeforeTheRun(@TempDir Path dir) throws Exception {
         ProjectRun.write(dir, Map.of("src/java/my/tools/Tally.java", TALLY,
                 "t.mas2j", MAS.formatted(""), "a.asl", AGENT));
-        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 20_000);
+        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 90_000);
         assertEquals("[a] tally 9\n", run.output);
     }
 
@@ -92,7 +92,7 @@ class ProjectClassesTest {
                 +!go <- makeArtifact("t", "my.tools.Missing", [], T).
                 -!go[env_failure_reason(R)] <- println("failed: ", R); .stopMAS.
                 """));
-        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 20_000);
+        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 90_000);
         assertEquals("[a] failed: unknown_class(\"my.tools.Missing\")\n", run.output);
     }
 }

@@ -30,7 +30,7 @@ class ReadmeProjectTest {
         assertTrue(shown.find(), "the README shows the run");
 
         ProjectRun.write(dir, files);
-        ProjectRun run = ProjectRun.run(dir.resolve("counter.mas2j"), 0, 20_000);
+        ProjectRun run = ProjectRun.run(dir.resolve("counter.mas2j"), 0, 90_000);
         assertTrue(run.stopped, "the agent stops the run: " + run.output);
         assertEquals(shown.group(1), run.output);
     }

@@ -1,0 +1,161 @@
+package jacabot.cartago.bridge;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The projects of examples/jaca — our own agents and artifacts for the scenarios of CArtAgO 3.1's
+ * JaCa examples — run as {@code jacabot run} runs them (sources compiled, free-running agents),
+ * and print what CArtAgO's description of each scenario says.
+ */
+class JacaExamplesTest {
+    private static ProjectRun run(String folder) throws Exception {
+        Path dir = Path.of(System.getProperty("jacabot.rootDir", ".."), "examples", "jaca", folder);
+        Path mas2j;
+        try (var files = Files.list(dir)) {
+            mas2j = files.filter(p -> p.toString().endsWith(".mas2j")).findFirst().orElseThrow();
+        }
+        ProjectRun run = ProjectRun.run(mas2j, 0, 90_000);
+        assertTrue(run.stopped, folder + " did not end with .stopMAS:\n" + run.output);
+        return run;
+    }
+
+    private static List<String> of(ProjectRun run, String agentPrefix) {
+        return run.lines().stream().filter(l -> l.startsWith("[" + agentPrefix)).toList();
+    }
+
+    @Test
+    void hello() throws Exception {
+        assertEquals("[greeter] Hello, world!\n", run("00-hello").output);
+    }
+
+    @Test
+    void anObserverSeesEveryChangeAndSignal() throws Exception {
+        List<String> lines = run("01-observe").lines();
+        // the values in order; the signals' plans may interleave with the value plans
+        assertEquals(List.of("[watcher] observed count 0", "[watcher] observed count 1", "[watcher] observed count 2"),
+                lines.stream().filter(l -> l.contains("observed")).toList());
+        assertEquals(2, lines.stream().filter(l -> l.equals("[watcher] perceived a tick")).count(), lines.toString());
+        assertEquals(5, lines.size(), lines.toString());
+    }
+
+    @Test
+    void aFailedOperationGivesItsReasonToTheFailurePlan() throws Exception {
+        assertEquals(List.of("[user] the cap is reached", "[user] last value is 40"), run("02-failure").lines());
+        assertEquals(List.of("[r0] attempt refused", "[tester] failure: refused on purpose reason_one 42"),
+                run("02a-failure-reason").lines());
+    }
+
+    @Test
+    void outputParameters() throws Exception {
+        assertEquals(List.of("[calc_user] 4 + 5 = 9", "[calc_user] 0.5 + 1.5 = 2, 0.5 - 1.5 = -1"),
+                run("03-output-params").lines());
+    }
+
+    @Test
+    void producersAndConsumersPassEveryItemOnce() throws Exception {
+        List<String> lines = run("04-producers-consumers").lines();
+        Set<String> items = new HashSet<>();
+        Pattern consumed = Pattern.compile("\\[(consumer[123])\\] \\1 consumed (item\\(producer[12],\\d+\\))");
+        for (String l : lines) {
+            Matcher m = consumed.matcher(l);
+            assertTrue(m.matches(), l);
+            assertTrue(items.add(m.group(2)), "consumed twice: " + l);
+        }
+        assertEquals(20, items.size(), lines.toString());
+    }
+
+    @Test
+    void aComplexOperationWaitsForOthersBetweenItsSteps() throws Exception {
+        ProjectRun run = run("05-complex-op");
+        assertEquals(List.of("[starter] first step done, contributions so far: 0",
+                "[starter] second step done, contributions: 12", "[starter] run completed"), of(run, "starter"));
+        assertEquals(4, of(run, "helper").size(), run.output);
+    }
+
+    private static void everyPhilosopherEatsThreeTimes(ProjectRun run) {
+        for (int i = 1; i <= 5; i++) {
+            String me = "philosopher" + i;
+            List<String> meals = of(run, me + "]");
+            String forks = "[" + me + "] " + me + " eats with forks " + (i - 1) + " and " + (i % 5);
+            assertEquals(List.of(forks, forks, forks), meals, run.output);
+            assertTrue(run.lines().contains("[host] " + me + " is full"), run.output);
+        }
+        assertEquals("[host] all philosophers ate", run.lines().get(run.lines().size() - 1));
+    }
+
+    @Test
+    void philosophersThroughTheBlackboard() throws Exception {
+        everyPhilosopherEatsThreeTimes(run("05a-philosophers-blackboard"));
+    }
+
+    @Test
+    void philosophersWithForkArtifacts() throws Exception {
+        everyPhilosopherEatsThreeTimes(run("05b-philosophers-artifacts"));
+    }
+
+    @Test
+    void aClockTicksUntilStopped() throws Exception {
+        List<String> lines = run("06-clock").lines();
+        assertEquals(12, lines.size(), lines.toString());
+        assertEquals("[clock_user] clock starting", lines.get(0));
+        for (int i = 1; i <= 10; i++) {
+            assertEquals("[clock_user] tick " + i, lines.get(i));
+        }
+        assertEquals("[clock_user] clock stopped", lines.get(11));
+    }
+
+    @Test
+    void linkedArtifacts() throws Exception {
+        assertEquals(List.of("[link_tester] linked", "[dispatcher] read back 10", "[link_tester] total through the port: 10",
+                "[link_tester] total of its own accumulator: 101",
+                "[link_tester] an agent cannot call a link operation: unknown_operation(\"add\",1)"),
+                run("08-linking").lines());
+    }
+
+    @Test
+    void contractNet() throws Exception {
+        ProjectRun run = run("12-contract-net");
+        List<String> announcer = of(run, "announcer");
+        assertEquals("[announcer] announced t0 on auction_1", announcer.get(0), run.output);
+        long made = run.lines().stream().filter(l -> l.matches("\\[bidder\\d\\] offer \\d made")).count();
+        long late = run.lines().stream().filter(l -> l.matches("\\[bidder\\d\\] too late for an offer")).count();
+        assertEquals(5, made + late, run.output);
+        assertEquals("[announcer] got " + made + " offers", announcer.get(1));
+        assertTrue(made > 0, "seed 0 gives at least one timely bidder: " + run.output);
+        assertTrue(announcer.get(2).matches("\\[announcer\\] awarded to offer_of_bidder\\d"), run.output);
+        assertEquals(1, run.lines().stream().filter(l -> l.endsWith("] I won")).count(), run.output);
+        assertEquals(made - 1, run.lines().stream().filter(l -> l.endsWith("] I lost")).count(), run.output);
+        assertEquals("[announcer] all bidders done", announcer.get(announcer.size() - 1));
+    }
+
+    @Test
+    void aThreadOutsideTheAgentsUpdatesAnArtifactThroughAnExternalSession() throws Exception {
+        List<String> lines = run("ext-thread").lines();
+        assertEquals(1, lines.size(), lines.toString());
+        // 13 is reached only through the meter's own thread; then bump adds 100
+        assertTrue(lines.get(0).matches("\\[reader\\] bumped to 11[3-9]|\\[reader\\] bumped to 1[2-9]\\d"), lines.get(0));
+    }
+
+    @Test
+    void commandsOutputAsOutputParameterAndAsSignals() throws Exception {
+        assertEquals(List.of("[shell_user] first line: hello from sh", "[shell_user] line 1: 1", "[shell_user] line 2: 2",
+                "[shell_user] line 3: 3", "[shell_user] done", "[shell_user] a failing command: exit code 3"),
+                run("07b-shell").lines());
+    }
+
+    @Test
+    void socketsWrappedInArtifacts() throws Exception {
+        assertEquals(List.of("[receiver] received hello1", "[receiver] received hello2", "[receiver] received hello3"),
+                run("07-messages").lines());
+    }
+}
