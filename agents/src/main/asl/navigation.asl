@@ -48,9 +48,11 @@ escapeBack(1200).
 stuckWindows(14000, 0.03, 40000, 0.12).
 steerEvery(2500).
 detours(0).
-searchAfter(90000).
+searchAfter(45000).
 sweepSpacing(0.2).
-sweepSpeed(60).
+sweepSpeed(80).
+// (issue 13) travel to a target at this wheel speed, not the thesis' forward (50): big arenas
+travelSpeed(80).
 storageClearance(0.22).
 
 /* Initial goals */
@@ -117,7 +119,7 @@ storageClearance(0.22).
 +!detour(D) : detours(N)
     <- +avoiding; stop; !avoid(D); -+detours(N + 1);
        .random(R); F = 1000 + R * 1000 * math.min(N, 4); forward; .wait(F);
-       !computeGap; !balance; forward.
+       !computeGap; !balance.
 
 /* At the storage point while delivering (Chapter 4 §3.1) */
 
@@ -150,15 +152,18 @@ storageClearance(0.22).
     <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
 
 +!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
-    <- stop; -~around; +firstTime; forward.
+    <- stop; -~around; +firstTime; !cruise.
 // (issue 13) near 0/360 the window above never holds (e.g. D = 0.3, O = 359.9)
 +!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
-    <- stop; -~around; +firstTime; forward.
+    <- stop; -~around; +firstTime; !cruise.
 +!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
     <- setSpeeds(25, -10); .wait(20); !balance.
 +!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
     <- setSpeeds(-10, 25); .wait(20); !balance.
 +!balance <- .wait(20); !balance.
+
+// (issue 13) the balance plans end by going on at travelSpeed (the thesis: forward)
++!cruise : travelSpeed(V) <- setSpeeds(V, V).
 
 /* Random navigation, suspended while a more relevant task runs (Chapter 4 §1.1, §5) */
 
@@ -194,7 +199,7 @@ storageClearance(0.22).
 -!pick <- .print("pick failed"); !go_ahead.
 
 +!go_ahead : picked(true)
-    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; forward; !!steer.
+    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
 +!go_ahead <- println("Cylinder picking failed"); stop.
 
 /* Basic obstacle avoidance (Chapter 4 §1.2) */
@@ -206,9 +211,13 @@ storageClearance(0.22).
 
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
+// (issue 13) replacement: the thesis stops for good ("stopAcquire; stop"); the robot now drops
+// everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again)
 @fallCylinder[atomic]
 +fallen
-    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
+    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
+       -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
+       open_grip; arm_up; !!searchClock; !!moving.
 
 /* Recovery (issue 13): bounded waits, escapes, steering, sweeping */
 
@@ -230,7 +239,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 +stuck : picking | insideArea.
 +stuck : delivering & not avoiding
     <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
-       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance; forward.
+       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.
 +stuck : not avoiding
     <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding; !nextWaypoint.
 +stuck.
@@ -240,7 +249,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     <- .wait(T);
        if (not avoiding & not .intend(balance) & not insideArea & delivering & location(X, _, Z) & targetPoint(Tx, Tz)) {
            computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
-           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance; forward }
+           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
        };
        !steer.
 +!steer.

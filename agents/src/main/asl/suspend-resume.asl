@@ -63,9 +63,11 @@ escapeBack(1200).
 stuckWindows(14000, 0.03, 40000, 0.12).
 steerEvery(2500).
 detours(0).
-searchAfter(90000).
+searchAfter(45000).
 sweepSpacing(0.2).
-sweepSpeed(60).
+sweepSpeed(80).
+// (issue 13) travel to a target at this wheel speed, not the thesis' forward (50): big arenas
+travelSpeed(80).
 storageClearance(0.22).
 lowBatteryLevel(480).
 chargedLevel(900).
@@ -138,7 +140,7 @@ tripTimeout(150000).
 +!detour(D) : detours(N)
     <- +avoiding; stop; !avoid(D); -+detours(N + 1);
        .random(R); F = 1000 + R * 1000 * math.min(N, 4); forward; .wait(F);
-       !computeGap; !balance; forward.
+       !computeGap; !balance.
 
 /* At the storage point while delivering (Chapter 4 §3.1) */
 
@@ -173,15 +175,18 @@ tripTimeout(150000).
     <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
 
 +!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
-    <- stop; -~around; +firstTime; forward.
+    <- stop; -~around; +firstTime; !cruise.
 // (issue 13) near 0/360 the window above never holds (e.g. D = 0.3, O = 359.9)
 +!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
-    <- stop; -~around; +firstTime; forward.
+    <- stop; -~around; +firstTime; !cruise.
 +!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
     <- setSpeeds(25, -10); .wait(20); !balance.
 +!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
     <- setSpeeds(-10, 25); .wait(20); !balance.
 +!balance <- .wait(20); !balance.
+
+// (issue 13) the balance plans end by going on at travelSpeed (the thesis: forward)
++!cruise : travelSpeed(V) <- setSpeeds(V, V).
 
 /* Random navigation, suspended while a more relevant task runs (Chapter 4 §1.1, §5) */
 
@@ -226,7 +231,7 @@ tripTimeout(150000).
 +!go_ahead : charging
     <- .print("Delivering suspend, wait recharging."); .wait({-charging}); .print("Delivering resumed"); !go_ahead.
 +!go_ahead : picked(true)
-    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; forward; !!steer.
+    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
 +!go_ahead <- println("Cylinder picking failed"); stop.
 
 /* Basic obstacle avoidance (Chapter 4 §1.2) */
@@ -238,9 +243,15 @@ tripTimeout(150000).
 
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
+// (issue 13) replacement: the thesis stops for good ("stopAcquire; stop"); the robot now drops
+// everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again)
 @fallCylinder[atomic]
 +fallen
-    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
+    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
+       -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
+       -charging; -atCharger; restartAcquireDistance; ?ray(R); setThreshold(R);
+       ?storagePoint(Sx, Sz); -+targetPoint(Sx, Sz); setUpTargetPoint(Sx, 0, Sz);
+       open_grip; arm_up; !!searchClock; !!moving.
 
 /* Recovery (issue 13): bounded waits, escapes, steering, sweeping */
 
@@ -262,7 +273,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 +stuck : picking | insideArea | atCharger.
 +stuck : (delivering | charging) & not avoiding
     <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
-       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance; forward.
+       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.
 +stuck : not avoiding
     <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding; !nextWaypoint.
 +stuck.
@@ -272,7 +283,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     <- .wait(T);
        if (not avoiding & not .intend(balance) & not insideArea & not atCharger & (delivering | charging) & location(X, _, Z) & targetPoint(Tx, Tz)) {
            computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
-           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance; forward }
+           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
        };
        !steer.
 +!steer.
@@ -326,16 +337,16 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
        ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz); ?ray(R); setThreshold(R);
        !restoreOrientation(O); -charging.
 
--charging : delivering <- .print("Restart delivering"); !computeGap; !balance; forward; !!steer.
+-charging : delivering <- .print("Restart delivering"); !computeGap; !balance; !!steer.
 
 // (issue 13) bounded trips: the charger is tried again (the battery must be charged), the marked
 // point is given up (the task resumes from where the robot is)
 +!reachCharger : tripTimeout(T) <- .wait({+targetReached}, T).
--!reachCharger <- println("Charger not reached yet: trying again"); !escape; !computeGap; !balance; forward; !reachCharger.
+-!reachCharger <- println("Charger not reached yet: trying again"); !escape; !computeGap; !balance; !reachCharger.
 +!waitCharged <- .wait({+charged}, 120000).
 -!waitCharged : battery(B) & lowBatteryLevel(L) & B < L
     <- println("Not charging: back to the charger"); restartAcquireDistance; -atCharger;
-       !computeGap; !balance; forward; !reachCharger; +atCharger; stop; stopAcquireDistance; !waitCharged.
+       !computeGap; !balance; !reachCharger; +atCharger; stop; stopAcquireDistance; !waitCharged.
 -!waitCharged : battery(B) <- println("Charging ended at ", B, " J").
 +!reachMarked : tripTimeout(T) <- .wait({+targetReached}, T).
 -!reachMarked <- println("Marked point not reached in time: resuming from here").

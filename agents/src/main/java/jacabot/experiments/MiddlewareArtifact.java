@@ -190,21 +190,8 @@ public abstract class MiddlewareArtifact extends Artifact {
         return out;
     }
 
-    private boolean wheelsCommanded;
-
-    /** {@return whether the last wheel command asked the wheels to turn (not a stop)} */
-    protected boolean wheelsCommanded() {
-        return wheelsCommanded;
-    }
-
     /** Sends a command to the robot. */
     protected void send(Command c) {
-        switch (c.code()) {
-            case STOP: wheelsCommanded = false; break;
-            case SET_SPEEDS: wheelsCommanded = c.arg(0) != 0 || c.arg(1) != 0; break;
-            case FORWARD: case BACKWARD: case TURN_LEFT: case TURN_RIGHT: case TURN_AROUND: wheelsCommanded = true; break;
-            default: break;
-        }
         if (lockstep) {
             synchronized (this) {
                 outbox.add(c);

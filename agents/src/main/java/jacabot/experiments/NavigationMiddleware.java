@@ -18,15 +18,6 @@ import jacabot.robot.link.SensorKind;
  * a signal.
  */
 public class NavigationMiddleware extends ObjectPickingMiddleware {
-    // Progress (issue 13, a derived percept): "stuck" is signalled when the GPS position stayed
-    // within a radius for a time (pressed against something, dithering in front of a box, or
-    // circling round an obstacle); the agent sets both windows (progressWindows) and decides
-    // (it ignores the signal while it stays on purpose: picking, at the charger).
-    private long[] windowMs = {6000, 30000};
-    private double[] windowRadius = {0.04, 0.12};
-    private final double[][] anchor = new double[2][];
-    /** How close to the storage point the robot may come without a cylinder (metres). */
-    static final double ACCESS_RADIUS = 0.15;
     private double[] target;
     private double[] storage;
     private double threshold = 0.04;
@@ -72,29 +63,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     @OPERATION
     void waitExit() {
         waitingExit = true;
-    }
-
-    /** Sets the progress windows: stuck if within {@code r1} metres for {@code t1} ms, or within {@code r2} for {@code t2}. */
-    @OPERATION
-    void progressWindows(double t1, double r1, double t2, double r2) {
-        windowMs = new long[] {(long) t1, (long) t2};
-        windowRadius = new double[] {r1, r2};
-    }
-
-    private void checkProgress(double x, double z) {
-        long now = simTimeMs();
-        for (int k = 0; k < 2; k++) {
-            double[] a = anchor[k];
-            // a stop does not restart the window: stopping and turning back to the same place is no progress
-            if (a == null || Math.hypot(x - a[0], z - a[1]) > windowRadius[k]) {
-                anchor[k] = new double[] {x, z, now};
-            } else if (now - a[2] > windowMs[k]) {
-                anchor[0] = new double[] {x, z, now};
-                anchor[1] = new double[] {x, z, now};
-                signal("stuck");
-                return;
-            }
-        }
     }
 
     @Override
