@@ -9,7 +9,7 @@ import picocli.CommandLine.Option;
 
 /** {@code jacabot bench ...}: benchmarks that print figures. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
-        subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class})
+        subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class, BenchWorldCommand.class})
 final class BenchCommand implements Runnable {
     @Override
     public void run() {

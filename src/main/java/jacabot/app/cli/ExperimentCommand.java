@@ -76,6 +76,11 @@ final class ExperimentCommand implements Callable<Integer> {
             System.err.println(e.getMessage());
             return 2;
         }
+        var missing = jacabot.app.world.Landmarks.missing(experiment, spec, worldFile.toString());
+        if (missing.isPresent()) { // before anything starts, agent and baseline alike
+            System.err.println(missing.get());
+            return 2;
+        }
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),
                 spec.walls(), spec.boxes(), spec.cylinders(), spec.storage(), spec.charger(), spec.robots(), spec.events());

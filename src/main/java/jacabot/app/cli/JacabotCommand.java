@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         versionProvider = JacabotCommand.Version.class,
         description = "JaCa-style BDI robots in a simulated world: companion code to the thesis "
                 + "'Programming Robots with an Agent-Oriented BDI-based Control Architecture'.",
-        subcommands = {RunCommand.class, ExperimentCommand.class, CompareCommand.class, BenchCommand.class, ControllerCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, ExperimentCommand.class, CompareCommand.class, BenchCommand.class, ControllerCommand.class, WorldCommand.class, SweepCommand.class, CommandLine.HelpCommand.class})
 public final class JacabotCommand implements Runnable {
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;

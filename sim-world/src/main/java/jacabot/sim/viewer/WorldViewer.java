@@ -6,28 +6,24 @@ import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.geom.Vec2;
 import jacabot.sim.engine.WorldSnapshot;
-import jacabot.sim.demo.Wander;
-import jacabot.sim.io.WorldFileException;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
-import java.nio.file.Path;
 import java.util.Locale;
 import javax.swing.JButton;
 import javax.swing.JFrame;
 import javax.swing.JPanel;
-import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 
 /**
  * The Swing viewer: the world top-down, repainted 25 times a second from snapshots, with pause,
  * single step, slower/faster (real time × factor) and "fast" (as fast as possible); boxes,
  * cylinders and robots can be dragged with the mouse, as in Webots. It drives nothing itself: pass
- * a {@link SimRunner} with the controller, or run the program
- * {@code WorldViewer WORLD.json [--wander]} to watch a world (with the demo pattern).
+ * a {@link SimRunner} with the controller ({@code jacabot world view WORLD.json [--wander]} watches a
+ * world with the demo pattern).
  */
 public final class WorldViewer extends JPanel {
     private static final long serialVersionUID = 1L;
@@ -134,21 +130,5 @@ public final class WorldViewer extends JPanel {
         frame.setVisible(true);
         runner.start();
         return frame;
-    }
-
-    public static void main(String[] args) {
-        if (args.length < 1) {
-            System.err.println("usage: WorldViewer WORLD.json [--wander]");
-            System.exit(2);
-        }
-        try {
-            SimWorld world = SimWorld.load(Path.of(args[0]));
-            boolean wander = args.length > 1 && args[1].equals("--wander");
-            SimRunner runner = new SimRunner(world, wander ? new Wander() : null);
-            SwingUtilities.invokeLater(() -> open(runner));
-        } catch (WorldFileException e) {
-            System.err.println("error: " + e.getMessage());
-            System.exit(2);
-        }
     }
 }

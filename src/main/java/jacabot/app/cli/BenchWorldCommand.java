@@ -1,0 +1,40 @@
+package jacabot.app.cli;
+
+import jacabot.app.bench.WorldBenchmark;
+import jacabot.sim.io.WorldFileException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code jacabot bench world}: the simulator alone on the four experiment worlds (was sim-world's SimBenchmark). */
+@Command(name = "world", mixinStandardHelpOptions = true,
+        description = "The simulator alone: cost of a control step and real-time factor on each experiment world, "
+                + "the demo pattern driving (no agent, no link).")
+final class BenchWorldCommand implements Callable<Integer> {
+    @CommandLine.Spec
+    private CommandLine.Model.CommandSpec spec;
+
+    @Option(names = "--duration", paramLabel = "T", description = "simulated time per world (default ${DEFAULT-VALUE})")
+    private String duration = "300s";
+
+    @Option(names = "--worlds", paramLabel = "DIR", description = "where the four world files are (default ${DEFAULT-VALUE})")
+    private Path worlds = Path.of("worlds");
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            new WorldBenchmark(worlds, ExperimentCommand.parseDuration(duration), spec.commandLine().getOut()).run();
+            return 0;
+        } catch (IllegalArgumentException e) {
+            err.println("error: " + e.getMessage());
+        } catch (WorldFileException e) {
+            err.println(e.getMessage());
+        }
+        err.flush();
+        return 2;
+    }
+}

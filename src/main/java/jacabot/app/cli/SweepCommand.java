@@ -1,0 +1,254 @@
+package jacabot.app.cli;
+
+import jacabot.app.sweep.RunOutcome;
+import jacabot.app.sweep.Sweep;
+import jacabot.app.sweep.SweepJob;
+import jacabot.app.sweep.SweepPlan;
+import jacabot.app.sweep.SweepReport;
+import jacabot.app.sweep.SweepRun;
+import jacabot.robot.Experiment;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Properties;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code jacabot sweep EXPERIMENT|all}: agent and baseline, headless in lockstep, over every world x
+ * seed, many runs in this one JVM; writes runs.csv and report.md. {@code jacabot sweep merge DIR...}
+ * joins shards.
+ */
+@Command(name = "sweep", mixinStandardHelpOptions = true, subcommands = SweepCommand.Merge.class,
+        description = {"Runs the agent and the procedural baseline headless in lockstep over every world x seed, on a pool "
+                + "of threads in one JVM, and judges each run by the success criteria (docs/comparison.md).",
+                "Writes OUT/runs.csv (a row per run), OUT/report.md (a table per experiment), OUT/logs/ (event log of each "
+                + "run; the agent's last console lines for failed runs) and, with --generate, OUT/worlds/.",
+                "Exit 0 when every run was made (failed runs included), 2 on bad usage."})
+final class SweepCommand implements Callable<Integer> {
+    @CommandLine.Spec
+    private CommandLine.Model.CommandSpec spec;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "EXPERIMENT",
+            description = "obstacle-avoidance | object-picking | navigation | suspend-resume | all")
+    private String experiment;
+
+    @Option(names = "--worlds", paramLabel = "DIR", description = "world files to sweep (a file belongs to the experiment its name starts with)")
+    private Path worlds;
+
+    @Option(names = "--generate", paramLabel = "K", description = "K generated worlds per experiment, generator seeds 1..K (default 10 without --worlds)")
+    private Integer generate;
+
+    @Option(names = "--max-side", paramLabel = "M", description = "with --generate: largest arena side in metres (default ${DEFAULT-VALUE})")
+    private double maxSide = 3.0;
+
+    @Option(names = "--seeds", paramLabel = "SEEDS", description = "run seeds: 1..N, N or a list (default ${DEFAULT-VALUE})")
+    private String seeds = "1..2";
+
+    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
+    private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
+
+    @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default: one per core, here ${DEFAULT-VALUE})")
+    private int jobs = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--duration", paramLabel = "T", description = "simulated time per run (default ${DEFAULT-VALUE})")
+    private String duration = "10m";
+
+    @Option(names = "--timeout", paramLabel = "T", description = "wall-clock bound per run; past it the run is a hang (default ${DEFAULT-VALUE})")
+    private String timeout = "30m";
+
+    @Option(names = "--shard", paramLabel = "I/N", description = "run only the I-th of N slices of the runs (I in 1..N)")
+    private String shard;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "where the files go (default runs/sweep, or runs/sweep-I-of-N with --shard)")
+    private Path out;
+
+    @Option(names = "--no-progress", description = "no progress bar on stderr")
+    private boolean noProgress;
+
+    @Override
+    public Integer call() throws IOException, InterruptedException {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter o = spec.commandLine().getOut();
+        List<Experiment> experiments;
+        double seconds, wallLimit;
+        List<Long> runSeeds;
+        int shardIndex = 1, shards = 1;
+        try {
+            if (experiment == null) {
+                throw new IllegalArgumentException("which experiment? (obstacle-avoidance, object-picking, navigation, suspend-resume or all)");
+            }
+            if (experiment.equals("all")) {
+                experiments = List.of(Experiment.values());
+            } else {
+                experiments = List.of(Experiment.parse(experiment).orElseThrow(() -> new IllegalArgumentException(
+                        "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume or all)")));
+            }
+            seconds = ExperimentCommand.parseDuration(duration);
+            wallLimit = ExperimentCommand.parseDuration(timeout);
+            if (!(seconds > 0) || !(wallLimit > 0)) {
+                throw new IllegalArgumentException("--duration and --timeout must be positive");
+            }
+            runSeeds = SweepPlan.seeds(seeds);
+            if (jobs < 1) {
+                throw new IllegalArgumentException("--jobs must be at least 1, got " + jobs);
+            }
+            for (String c : controllers) {
+                if (!c.equals(SweepJob.AGENT) && !c.equals(SweepJob.BASELINE)) {
+                    throw new IllegalArgumentException("unknown controller '" + c + "' (expected agent, baseline)");
+                }
+            }
+            if (shard != null) {
+                var m = java.util.regex.Pattern.compile("(\\d+)/(\\d+)").matcher(shard.trim());
+                if (!m.matches() || Integer.parseInt(m.group(2)) < 1 || Integer.parseInt(m.group(1)) < 1
+                        || Integer.parseInt(m.group(1)) > Integer.parseInt(m.group(2))) {
+                    throw new IllegalArgumentException("bad --shard '" + shard + "' (expected I/N with 1 <= I <= N, e.g. 2/8)");
+                }
+                shardIndex = Integer.parseInt(m.group(1));
+                shards = Integer.parseInt(m.group(2));
+            }
+            if (worlds != null && generate != null) {
+                throw new IllegalArgumentException("--worlds and --generate exclude each other");
+            }
+            if (worlds != null && !Files.isDirectory(worlds)) {
+                throw new IllegalArgumentException(worlds + ": no such directory");
+            }
+            if (generate != null && generate < 1) {
+                throw new IllegalArgumentException("--generate must be at least 1, got " + generate);
+            }
+            if (!(maxSide >= 1)) {
+                throw new IllegalArgumentException("--max-side must be at least 1 (metres), got " + maxSide);
+            }
+        } catch (IllegalArgumentException e) {
+            err.println("error: " + e.getMessage());
+            err.flush();
+            return 2;
+        }
+        Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
+        Files.createDirectories(dir.resolve("logs"));
+        List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
+                : SweepPlan.generated(experiments, generate == null ? 10 : generate, maxSide, dir.resolve("worlds"));
+        if (list.isEmpty()) {
+            err.println("error: " + worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
+            err.flush();
+            return 2;
+        }
+        List<SweepJob> jobList = SweepPlan.jobs(list, runSeeds, controllers, shardIndex, shards);
+        o.printf(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s%n",
+                jobList.size(), list.size(), runSeeds.size(), controllers.size(),
+                shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir);
+        o.flush();
+        Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : System.err)
+                .onResult(r -> writeLogs(dir.resolve("logs"), r));
+        Sweep.Outcomes result = sweep.run(jobList);
+        List<RunOutcome> runs = new ArrayList<>(result.runs());
+        runs.sort(Sweep.ORDER);
+        String throughput = String.format(Locale.ROOT, "%.2f simulated minutes per wall-clock second (%d runs, %d at once, %.0f s).",
+                result.simulatedMinutesPerSecond(), runs.size(), jobs, result.wallSeconds());
+        Files.writeString(dir.resolve("runs.csv"), SweepReport.csv(runs), StandardCharsets.UTF_8);
+        Files.writeString(dir.resolve("report.md"), SweepReport.markdown(runs, throughput), StandardCharsets.UTF_8);
+        Properties meta = new Properties();
+        meta.setProperty("wall_s", String.format(Locale.ROOT, "%.3f", result.wallSeconds()));
+        meta.setProperty("jobs", Integer.toString(jobs));
+        meta.setProperty("shard", shardIndex + "/" + shards);
+        try (var w = Files.newBufferedWriter(dir.resolve("sweep.properties"), StandardCharsets.UTF_8)) {
+            meta.store(w, "jacabot sweep");
+        }
+        o.print(SweepReport.markdown(runs, throughput));
+        o.println();
+        o.println("Written: " + dir.resolve("runs.csv") + ", report.md, logs/");
+        o.flush();
+        return 0;
+    }
+
+    private static void writeLogs(Path logs, SweepRun.Result r) {
+        RunOutcome o = r.outcome();
+        String base = o.experiment().id() + "_" + o.world() + "_" + o.controller() + "_seed" + o.seed();
+        try {
+            Files.writeString(logs.resolve(base + ".events.txt"), r.eventLog(), StandardCharsets.UTF_8);
+            if (!o.success()) {
+                Files.writeString(logs.resolve(base + ".failure.txt"), o.reason() + "\n\nlast console lines:\n"
+                        + String.join("\n", r.consoleTail()) + "\n", StandardCharsets.UTF_8);
+            }
+        } catch (IOException e) {
+            System.err.println("warning: cannot write the logs of " + base + ": " + e.getMessage());
+        }
+    }
+
+    /** {@code jacabot sweep merge DIR...}: joins the CSVs of shards into one CSV and one report. */
+    @Command(name = "merge", mixinStandardHelpOptions = true,
+            description = "Joins the runs.csv of several sweep directories (e.g. shards) into OUT/runs.csv and OUT/report.md.")
+    static final class Merge implements Callable<Integer> {
+        @CommandLine.Spec
+        private CommandLine.Model.CommandSpec spec;
+
+        @Parameters(arity = "1..*", paramLabel = "DIR", description = "sweep directories, each holding runs.csv")
+        private List<Path> dirs;
+
+        @Option(names = "--out", paramLabel = "DIR", description = "where the joined files go (default ${DEFAULT-VALUE})")
+        private Path out = Path.of("runs", "sweep-merged");
+
+        @Override
+        public Integer call() throws IOException {
+            PrintWriter err = spec.commandLine().getErr();
+            List<List<RunOutcome>> parts = new ArrayList<>();
+            double rate = 0;
+            boolean allRates = true;
+            for (Path d : dirs) {
+                Path csv = d.resolve("runs.csv");
+                if (!Files.isRegularFile(csv)) {
+                    err.println("error: " + csv + ": no such file");
+                    err.flush();
+                    return 2;
+                }
+                List<RunOutcome> runs;
+                try {
+                    runs = SweepReport.readCsv(csv);
+                } catch (IllegalArgumentException e) {
+                    err.println("error: " + e.getMessage());
+                    err.flush();
+                    return 2;
+                }
+                parts.add(runs);
+                Path metaFile = d.resolve("sweep.properties");
+                double wall = Double.NaN;
+                if (Files.isRegularFile(metaFile)) {
+                    Properties meta = new Properties();
+                    try (var r = Files.newBufferedReader(metaFile, StandardCharsets.UTF_8)) {
+                        meta.load(r);
+                    }
+                    try {
+                        wall = Double.parseDouble(meta.getProperty("wall_s", "NaN"));
+                    } catch (NumberFormatException e) {
+                        wall = Double.NaN;
+                    }
+                }
+                if (wall > 0) {
+                    rate += runs.stream().mapToDouble(RunOutcome::simulated).sum() / 60 / wall;
+                } else {
+                    allRates = false;
+                }
+            }
+            List<RunOutcome> all = SweepReport.merge(parts);
+            String throughput = allRates ? String.format(Locale.ROOT,
+                    "%.2f simulated minutes per wall-clock second (the sum of the %d parts' rates).", rate, dirs.size()) : null;
+            Files.createDirectories(out);
+            Files.writeString(out.resolve("runs.csv"), SweepReport.csv(all), StandardCharsets.UTF_8);
+            Files.writeString(out.resolve("report.md"), SweepReport.markdown(all, throughput), StandardCharsets.UTF_8);
+            PrintWriter o = spec.commandLine().getOut();
+            o.print(SweepReport.markdown(all, throughput));
+            o.println();
+            o.println("Written: " + out.resolve("runs.csv") + ", report.md");
+            o.flush();
+            return 0;
+        }
+    }
+}

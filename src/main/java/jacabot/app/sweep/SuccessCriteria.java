@@ -1,0 +1,105 @@
+package jacabot.app.sweep;
+
+import jacabot.robot.Experiment;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Whether a run did its experiment's task (issue 13; docs/comparison.md, "Success criteria"), the
+ * one definition the sweep and the scenario tests share. Per run of 10 simulated minutes:
+ * <ul>
+ * <li>obstacle avoidance: contact under {@link #MAX_CONTACT_S} s in all and coverage at least
+ *     {@link #MIN_COVERAGE} (10 cm cells);</li>
+ * <li>object picking: at least one cylinder picked;</li>
+ * <li>navigation: at least {@link #MIN_DELIVERIES} deliveries, never into the storage area without a cylinder;</li>
+ * <li>suspend/resume: the battery never empty, at least one delivery, and every low-battery episode
+ *     ({@link BatteryEpisodes}) recharged and returned from, except one begun in the last
+ *     {@link #EPISODE_GRACE_S} s of the run (it has not had the time).</li>
+ * </ul>
+ * A run that crashed, hung or ended early fails whatever its figures.
+ */
+public final class SuccessCriteria {
+    public static final double MAX_CONTACT_S = 2.0;
+    public static final double MIN_COVERAGE = 0.5;
+    public static final int MIN_DELIVERIES = 2;
+    public static final double EPISODE_GRACE_S = 180;
+
+    private SuccessCriteria() {
+    }
+
+    /** What the criteria read from a run. */
+    public record Figures(double duration, double contactTime, double coverage, int picks, int deliveries,
+                          int storageEntriesEmpty, boolean batteryEmptied, int lowBatteryEpisodes, int episodesCompleted) {
+    }
+
+    /** The verdict: success, or the reasons it failed (semicolon-separated in reports). */
+    public record Verdict(boolean success, List<String> reasons) {
+        public Verdict {
+            reasons = List.copyOf(reasons);
+        }
+
+        /** {@return the reasons as one line, "" on success} */
+        public String reason() {
+            return String.join("; ", reasons);
+        }
+    }
+
+    /** {@return how many low-battery episodes must be complete: all but one begun in the last grace period} */
+    public static int episodesDue(List<BatteryEpisodes.Episode> episodes, double duration) {
+        int due = 0;
+        for (BatteryEpisodes.Episode e : episodes) {
+            if (e.completed() || e.lowAt() < duration - EPISODE_GRACE_S) {
+                due++;
+            }
+        }
+        return due;
+    }
+
+    /** {@return the verdict on a run's figures} */
+    public static Verdict judge(Experiment experiment, Figures f) {
+        List<String> why = new ArrayList<>();
+        switch (experiment) {
+            case OBSTACLE_AVOIDANCE -> {
+                if (!(f.contactTime() < MAX_CONTACT_S)) {
+                    why.add(fmt("contact %.1f s (>= %.0f s)", f.contactTime(), MAX_CONTACT_S));
+                }
+                if (!(f.coverage() >= MIN_COVERAGE)) {
+                    why.add(fmt("coverage %.0f%% (< %.0f%%)", 100 * f.coverage(), 100 * MIN_COVERAGE));
+                }
+            }
+            case OBJECT_PICKING -> {
+                if (f.picks() < 1) {
+                    why.add("no cylinder picked");
+                }
+            }
+            case NAVIGATION -> {
+                if (f.deliveries() < MIN_DELIVERIES) {
+                    why.add(f.deliveries() + " deliver" + (f.deliveries() == 1 ? "y" : "ies") + " (< " + MIN_DELIVERIES + ")");
+                }
+                if (f.storageEntriesEmpty() > 0) {
+                    why.add(f.storageEntriesEmpty() + " storage entr" + (f.storageEntriesEmpty() == 1 ? "y" : "ies")
+                            + " without a cylinder");
+                }
+            }
+            case SUSPEND_RESUME -> {
+                if (f.batteryEmptied()) {
+                    why.add("battery empty");
+                }
+                if (f.deliveries() < 1) {
+                    why.add("no delivery");
+                }
+                if (f.episodesCompleted() < f.lowBatteryEpisodes()) {
+                    why.add((f.lowBatteryEpisodes() - f.episodesCompleted()) + " of " + f.lowBatteryEpisodes()
+                            + " low-battery episodes without recharge and return");
+                }
+            }
+            default -> throw new IllegalArgumentException("no criteria for " + experiment);
+        }
+        return new Verdict(why.isEmpty(), why);
+    }
+
+    private static String fmt(String format, Object... args) {
+        return String.format(Locale.ROOT, format, args);
+    }
+}

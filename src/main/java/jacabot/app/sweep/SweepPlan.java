@@ -1,0 +1,123 @@
+package jacabot.app.sweep;
+
+import jacabot.app.world.WorldGenerator;
+import jacabot.robot.Experiment;
+import jacabot.sim.io.WorldFileException;
+import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.world.WorldSpec;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+/**
+ * The runs of a sweep, in a fixed order (experiment, world, seed, controller), so that shard I of N
+ * (every N-th job from the I-th) is the same list on every machine.
+ */
+public final class SweepPlan {
+    /** A world for an experiment: its name, file (null if only in memory) and checked spec, or the loader's message. */
+    public record World(Experiment experiment, String name, Path file, WorldSpec spec, String problem) {
+    }
+
+    private SweepPlan() {
+    }
+
+    /**
+     * {@return K generated worlds per experiment (generator seeds 1..K)}
+     *
+     * @param writeTo a directory to write them to (for replays), or null
+     */
+    public static List<World> generated(List<Experiment> experiments, int k, double maxSide, Path writeTo) throws IOException {
+        List<World> out = new ArrayList<>();
+        for (Experiment e : experiments) {
+            for (long seed = 1; seed <= k; seed++) {
+                var g = new WorldGenerator(e, seed).maxSide(maxSide).generate();
+                Path file = null;
+                if (writeTo != null) {
+                    Files.createDirectories(writeTo);
+                    file = writeTo.resolve(g.spec().name() + ".json");
+                    Files.writeString(file, g.json(), StandardCharsets.UTF_8);
+                }
+                out.add(new World(e, g.spec().name(), file, g.spec(), null));
+            }
+        }
+        return out;
+    }
+
+    /**
+     * {@return the world files of a directory (and its subdirectories) for each experiment: those whose
+     * name starts with the experiment's id; when only one experiment is swept, also those that start
+     * with no experiment's id}. A file the loader rejects stays in the list with its message.
+     */
+    public static List<World> directory(List<Experiment> experiments, Path dir) throws IOException {
+        List<Path> files;
+        try (Stream<Path> s = Files.walk(dir)) {
+            files = s.filter(p -> Files.isRegularFile(p) && p.getFileName().toString().endsWith(".json")).sorted().toList();
+        }
+        List<World> out = new ArrayList<>();
+        for (Experiment e : experiments) {
+            for (Path f : files) {
+                String name = f.getFileName().toString();
+                boolean mine = name.startsWith(e.id());
+                boolean nobody = Stream.of(Experiment.values()).noneMatch(x -> name.startsWith(x.id()));
+                if (mine || nobody && experiments.size() == 1) {
+                    String label = name.substring(0, name.length() - 5);
+                    try {
+                        out.add(new World(e, label, f, WorldFileReader.read(f), null));
+                    } catch (WorldFileException ex) {
+                        out.add(new World(e, label, f, null, ex.getMessage()));
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    /** {@return the jobs: every world x seed x controller, then the shard's slice (shard in 1..shards)} */
+    public static List<SweepJob> jobs(List<World> worlds, List<Long> seeds, List<String> controllers, int shard, int shards) {
+        List<SweepJob> all = new ArrayList<>();
+        for (World w : worlds) {
+            for (long seed : seeds) {
+                for (String c : controllers) {
+                    all.add(new SweepJob(w.experiment(), c, w.name(), w.file(), w.spec(), w.problem(), seed));
+                }
+            }
+        }
+        List<SweepJob> mine = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) {
+            if (i % shards == shard - 1) {
+                mine.add(all.get(i));
+            }
+        }
+        return mine;
+    }
+
+    /** {@return seeds from "1..5", "3", or "1,4,9"} @throws IllegalArgumentException on anything else */
+    public static List<Long> seeds(String text) {
+        List<Long> out = new ArrayList<>();
+        try {
+            for (String part : text.split(",")) {
+                String p = part.trim();
+                int dots = p.indexOf("..");
+                if (dots >= 0) {
+                    long from = Long.parseLong(p.substring(0, dots).trim());
+                    long to = Long.parseLong(p.substring(dots + 2).trim());
+                    if (to < from || to - from > 100_000) {
+                        throw new IllegalArgumentException("bad seed range '" + p + "'");
+                    }
+                    for (long s = from; s <= to; s++) {
+                        out.add(s);
+                    }
+                } else {
+                    out.add(Long.parseLong(p));
+                }
+            }
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("bad seeds '" + text + "' (examples: 1..5, 3, 1,4,9)");
+        }
+        return out;
+    }
+}

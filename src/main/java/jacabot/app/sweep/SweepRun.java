@@ -1,0 +1,214 @@
+package jacabot.app.sweep;
+
+import jacabot.app.run.LockstepRun;
+import jacabot.app.world.Landmarks;
+import jacabot.robot.Experiment;
+import jacabot.robot.baseline.BaselineController;
+import jacabot.robot.baseline.BaselineRunner;
+import jacabot.robot.run.RunRecorder;
+import jacabot.robot.run.RunSummary;
+import jacabot.sim.SimWorld;
+import jacabot.sim.engine.WorldListener;
+import jacabot.sim.world.WorldSpec;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * Makes one {@link SweepJob}: loads nothing (the job holds the checked world), builds a fresh world
+ * under the job's seed, runs the agent in lockstep ({@link LockstepRun}) or the baseline
+ * ({@link BaselineRunner#create}) for the duration, and judges it with {@link SuccessCriteria}.
+ * Everything a run uses is its own (world, agent platform, loopback port, recorder), so runs can go
+ * on any number of threads at once. A run that passes its wall-clock bound is stopped at its next
+ * control step and reported as a hang; an exception is a crash; a run short of its duration an early end.
+ */
+public final class SweepRun {
+    /** What a run leaves: the outcome, the recorder's event log, the last console lines. */
+    public record Result(RunOutcome outcome, String eventLog, List<String> consoleTail) {
+    }
+
+    private static final Map<Experiment, String> SOURCES = new ConcurrentHashMap<>();
+    private static final int CONSOLE_TAIL = 200;
+
+    private SweepRun() {
+    }
+
+    /** {@return the packaged agent of an experiment} */
+    public static String agentSource(Experiment e) {
+        return SOURCES.computeIfAbsent(e, x -> {
+            try (InputStream in = SweepRun.class.getResourceAsStream(x.agentResource())) {
+                if (in == null) {
+                    throw new IllegalStateException("no agent " + x.agentResource() + " on the class path");
+                }
+                return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            } catch (IOException ex) {
+                throw new UncheckedIOException(ex);
+            }
+        });
+    }
+
+    /** Stops a run from the stepping thread once its wall-clock bound has passed. */
+    private static final class Stopped extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        Stopped(String message) {
+            super(message, null, false, false);
+        }
+    }
+
+    /**
+     * Runs a job.
+     *
+     * @param seconds     simulated seconds
+     * @param wallLimitS  wall-clock bound in seconds
+     */
+    public static Result run(SweepJob job, double seconds, double wallLimitS) {
+        long start = System.nanoTime();
+        long deadline = start + (long) (wallLimitS * 1e9);
+        Experiment e = job.experiment();
+        if (job.spec() == null) {
+            return new Result(outcome(job, RunOutcome.CRASH, job.problem(), null, null, 0, 0), "", List.of());
+        }
+        var missing = Landmarks.missing(e, job.spec(), job.file() == null ? job.world() : job.file().toString());
+        if (missing.isPresent()) {
+            return new Result(outcome(job, RunOutcome.CRASH, missing.get(), null, null, 0, 0), "", List.of());
+        }
+        WorldSpec s = job.spec();
+        SimWorld world = SimWorld.of(new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), job.seed(),
+                s.sensorNoise(), s.walls(), s.boxes(), s.cylinders(), s.storage(), s.charger(), s.robots(), s.events()));
+        RunRecorder recorder = RunRecorder.attach(world, e.robot());
+        BatteryEpisodes battery = BatteryEpisodes.attach(world, e.robot());
+        world.addListener(new WorldListener() {
+            @Override
+            public void controlStepEnded(long timeMs) {
+                if (System.nanoTime() > deadline) {
+                    throw new Stopped(String.format(java.util.Locale.ROOT, "no end after %.0f s of wall-clock time (at t=%.1f s)",
+                            wallLimitS, timeMs / 1000.0));
+                }
+            }
+        });
+        ConsoleTail console = new ConsoleTail();
+        String status = RunOutcome.OK;
+        String message = "";
+        try {
+            if (job.controller().equals(SweepJob.AGENT)) {
+                var run = new LockstepRun(world, null, e, agentSource(e), e.id() + ".asl", job.seed(),
+                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false);
+                run.runFor(seconds);
+            } else {
+                BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
+                    recorder.note(line);
+                    console.line(line);
+                });
+                c.runFor(seconds);
+            }
+        } catch (Throwable t) {
+            Throwable stop = t;
+            while (stop != null && !(stop instanceof Stopped)) {
+                stop = stop.getCause();
+            }
+            if (stop != null) {
+                status = RunOutcome.HANG;
+                message = stop.getMessage();
+            } else {
+                status = RunOutcome.CRASH;
+                message = describe(t);
+            }
+            if (t instanceof InterruptedException) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        double wall = (System.nanoTime() - start) / 1e9;
+        RunSummary summary;
+        synchronized (world) {
+            summary = recorder.summary(job.controller());
+        }
+        if (status.equals(RunOutcome.OK) && summary.duration() < seconds - world.controlStep() / 1000.0) {
+            status = RunOutcome.EARLY_END;
+            message = String.format(java.util.Locale.ROOT, "ended at t=%.1f s of %.0f s", summary.duration(), seconds);
+        }
+        return new Result(outcome(job, status, message, summary, battery.episodes(), seconds, wall),
+                summary.eventLog(), console.lines());
+    }
+
+    private static RunOutcome outcome(SweepJob job, String status, String message, RunSummary s,
+            List<BatteryEpisodes.Episode> episodes, double seconds, double wall) {
+        SuccessCriteria.Figures f;
+        if (s == null) {
+            f = new SuccessCriteria.Figures(0, 0, 0, 0, 0, 0, false, 0, 0);
+        } else {
+            // only suspend/resume has a charger to go to and counts its episodes
+            boolean counted = job.experiment() == Experiment.SUSPEND_RESUME;
+            int completed = counted ? (int) episodes.stream().filter(BatteryEpisodes.Episode::completed).count() : 0;
+            f = new SuccessCriteria.Figures(s.duration(), s.contactTime(), s.coverage(), s.picks(), s.deliveries(),
+                    s.storageEntriesEmpty(), s.batteryEmptied(), counted ? SuccessCriteria.episodesDue(episodes, s.duration()) : 0,
+                    completed);
+        }
+        SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f);
+        List<String> reasons = new ArrayList<>();
+        if (!status.equals(RunOutcome.OK)) {
+            reasons.add(status + ": " + message);
+        }
+        if (status.equals(RunOutcome.OK)) { // a cut-short run's figures are partial: its status is the reason
+            reasons.addAll(v.reasons());
+        }
+        boolean success = status.equals(RunOutcome.OK) && v.success();
+        return new RunOutcome(job.experiment(), job.world(), job.controller(), job.seed(), status, success,
+                String.join("; ", reasons), s == null ? 0 : s.duration(), wall, f,
+                s == null || s.batteryMin() == null ? Double.NaN : s.batteryMin(), s == null ? 0 : s.lost());
+    }
+
+    /** One line: the exception and where it arose in our code. */
+    static String describe(Throwable t) {
+        Throwable root = t;
+        while (root.getCause() != null && root.getCause() != root) {
+            root = root.getCause();
+        }
+        String where = "";
+        for (StackTraceElement el : root.getStackTrace()) {
+            if (el.getClassName().startsWith("jacabot.")) {
+                where = " at " + el.getClassName().substring(el.getClassName().lastIndexOf('.') + 1) + "." + el.getMethodName()
+                        + ":" + el.getLineNumber();
+                break;
+            }
+        }
+        String text = root.getClass().getSimpleName() + (root.getMessage() == null ? "" : ": " + root.getMessage()) + where;
+        return text.replace('\n', ' ').replace('\r', ' ');
+    }
+
+    /** The agent's console, keeping the last lines only (for failure reports). */
+    private static final class ConsoleTail extends OutputStream {
+        private final Deque<String> lines = new ArrayDeque<>();
+        private final java.io.ByteArrayOutputStream buf = new java.io.ByteArrayOutputStream();
+
+        @Override
+        public synchronized void write(int b) {
+            if (b == '\n') {
+                line(buf.toString(StandardCharsets.UTF_8));
+                buf.reset();
+            } else {
+                buf.write(b);
+            }
+        }
+
+        synchronized void line(String text) {
+            lines.addLast(text);
+            if (lines.size() > CONSOLE_TAIL) {
+                lines.removeFirst();
+            }
+        }
+
+        synchronized List<String> lines() {
+            return List.copyOf(lines);
+        }
+    }
+}

@@ -1,0 +1,101 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.sim.io.WorldFileReader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code jacabot world ...}, {@code jacabot sweep ...} and the landmark check of {@code jacabot experiment}. */
+class WorldAndSweepCommandTest {
+    static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
+
+    @Test
+    void generateWritesAWorldTheLoaderAccepts(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("w.json");
+        var r = CliRun.run("world", "generate", "navigation", "--seed", "4", "--out", file.toString());
+        assertEquals("0", r[0], r[2]);
+        assertEquals("navigation-gen-4", WorldFileReader.read(file).name());
+        var again = CliRun.run("world", "generate", "3", "--seed", "4");
+        assertEquals(Files.readString(file), again[1]);
+        assertEquals("2", CliRun.run("world", "generate", "flying", "--seed", "1")[0]);
+        assertEquals("2", CliRun.run("world", "generate", "navigation")[0]); // no seed
+    }
+
+    @Test
+    void renderDrawsAPng(@TempDir Path dir) {
+        Path png = dir.resolve("w.png");
+        var r = CliRun.run("world", "render", ROOT.resolve("worlds/navigation.json").toString(), "--out", png.toString(),
+                "--seconds", "2", "--size", "200");
+        assertEquals("0", r[0], r[2]);
+        assertTrue(Files.isRegularFile(png));
+        var bad = CliRun.run("world", "render", dir.resolve("none.json").toString(), "--out", png.toString());
+        assertEquals("2", bad[0]);
+        assertEquals(1, bad[2].strip().lines().count(), bad[2]);
+    }
+
+    @Test
+    void anUnknownFieldIsNamedWithItsJsonPath(@TempDir Path dir) throws Exception {
+        String text = Files.readString(ROOT.resolve("worlds/navigation.json")).replace("\"radius\": 0.06", "\"radius\": 0.06, \"colour\": 1");
+        Path file = dir.resolve("bad.json");
+        Files.writeString(file, text);
+        var r = CliRun.run("experiment", "navigation", "--world", file.toString(), "--headless", "--duration", "1s");
+        assertEquals("2", r[0]);
+        assertTrue(r[2].contains("$.storage") && r[2].contains("colour"), r[2]);
+        assertFalse(r[2].contains("\tat "), r[2]);
+    }
+
+    @Test
+    void aMissingLandmarkStopsAgentAndBaselineBeforeTheRun(@TempDir Path dir) throws Exception {
+        String text = Files.readString(ROOT.resolve("worlds/suspend-resume.json"))
+                .replaceAll("\"charger\": \\{[^}]*\\},\\s*", "");
+        Path file = dir.resolve("nocharger.json");
+        Files.writeString(file, text);
+        for (String[] args : new String[][] {
+                {"experiment", "suspend-resume", "--world", file.toString(), "--headless", "--duration", "5s", "--out", dir.toString()},
+                {"experiment", "suspend-resume", "--world", file.toString(), "--baseline", "--duration", "5s", "--out", dir.toString()}}) {
+            var r = CliRun.run(args);
+            assertEquals("2", r[0], r[1] + r[2]);
+            assertEquals(file + ": $.charger: the suspend-resume experiment needs a charger; the world has none", r[2].strip());
+            assertFalse(r[1].contains("t=  "), "no run started: " + r[1]);
+        }
+        Path nav = dir.resolve("nostorage.json");
+        Files.writeString(nav, Files.readString(ROOT.resolve("worlds/navigation.json")).replaceAll("\"storage\": \\{[^}]*\\},\\s*", ""));
+        var r = CliRun.run("experiment", "navigation", "--world", nav.toString(), "--baseline", "--duration", "5s");
+        assertEquals("2", r[0]);
+        assertTrue(r[2].contains("$.storage: the navigation experiment needs a storage point"), r[2]);
+    }
+
+    @Test
+    void sweepShardsMergeIntoOneReport(@TempDir Path dir) throws Exception {
+        Path worlds = dir.resolve("worlds");
+        Files.createDirectories(worlds);
+        Files.copy(ROOT.resolve("worlds/object-picking.json"), worlds.resolve("object-picking.json"));
+        for (int i = 1; i <= 2; i++) {
+            var r = CliRun.run("sweep", "object-picking", "--worlds", worlds.toString(), "--seeds", "1..2", "--duration", "3s",
+                    "--jobs", "2", "--shard", i + "/2", "--out", dir.resolve("s" + i).toString(), "--no-progress");
+            assertEquals("0", r[0], r[2]);
+            assertEquals(3, Files.readAllLines(dir.resolve("s" + i).resolve("runs.csv")).size(), "header + 2 of the 4 runs");
+        }
+        var m = CliRun.run("sweep", "merge", dir.resolve("s1").toString(), dir.resolve("s2").toString(), "--out",
+                dir.resolve("all").toString());
+        assertEquals("0", m[0], m[2]);
+        var rows = Files.readAllLines(dir.resolve("all").resolve("runs.csv"));
+        assertEquals(5, rows.size(), String.join("\n", rows));
+        String report = Files.readString(dir.resolve("all").resolve("report.md"));
+        assertTrue(report.contains("| agent | 2 |") && report.contains("| baseline | 2 |"), report);
+        assertTrue(report.contains("no cylinder picked"), "3 s is too short to pick: " + report);
+    }
+
+    @Test
+    void sweepUsageErrorsExitWith2(@TempDir Path dir) {
+        assertEquals("2", CliRun.run("sweep", "flying")[0]);
+        assertEquals("2", CliRun.run("sweep", "all", "--shard", "3/2", "--out", dir.toString())[0]);
+        assertEquals("2", CliRun.run("sweep", "all", "--seeds", "x", "--out", dir.toString())[0]);
+        assertEquals("2", CliRun.run("sweep", "merge", dir.resolve("none").toString())[0]);
+    }
+}

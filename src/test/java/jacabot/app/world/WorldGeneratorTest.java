@@ -1,0 +1,86 @@
+package jacabot.app.world;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.robot.Experiment;
+import jacabot.sim.world.AreaSpec;
+import jacabot.sim.world.BoxSpec;
+import jacabot.sim.world.CylinderSpec;
+import jacabot.sim.world.RobotSpec;
+import jacabot.sim.world.WorldSpec;
+import org.junit.jupiter.api.Test;
+
+class WorldGeneratorTest {
+    @Test
+    void sameSeedSameTextOtherSeedOtherWorld() {
+        for (Experiment e : Experiment.values()) {
+            String a = new WorldGenerator(e, 7).generate().json();
+            assertEquals(a, new WorldGenerator(e, 7).generate().json(), e.id());
+            assertNotEquals(a, new WorldGenerator(e, 8).generate().json(), e.id());
+        }
+    }
+
+    /** The loader already rejects overlaps and objects outside the arena; here what it does not check. */
+    @Test
+    void worldsFitTheirExperiment() {
+        for (Experiment e : Experiment.values()) {
+            for (long seed = 1; seed <= 40; seed++) {
+                WorldSpec w = new WorldGenerator(e, seed).generate().spec();
+                String where = e.id() + " seed " + seed;
+                assertTrue(w.arena().width() >= 1 && w.arena().width() <= 3, where);
+                assertTrue(w.arena().depth() >= 1 && w.arena().depth() <= 3, where);
+                assertEquals(1, w.robots().size(), where);
+                RobotSpec r = w.robots().get(0);
+                assertEquals(e.robot(), r.name(), where);
+                assertEquals(seed, w.seed(), where);
+                switch (e) {
+                    case OBSTACLE_AVOIDANCE -> assertTrue(w.cylinders().isEmpty(), where);
+                    case OBJECT_PICKING -> assertTrue(w.cylinders().size() >= 1, where);
+                    default -> assertTrue(w.cylinders().size() >= 2, where);
+                }
+                boolean storage = e == Experiment.NAVIGATION || e == Experiment.SUSPEND_RESUME;
+                assertEquals(storage, w.storage() != null, where);
+                assertEquals(e == Experiment.SUSPEND_RESUME, w.charger() != null, where);
+                for (AreaSpec a : new AreaSpec[] {w.storage(), w.charger()}) {
+                    if (a == null) {
+                        continue;
+                    }
+                    // in a corner or along a wall
+                    double toWall = Math.min(w.arena().halfWidth() - Math.abs(a.x()), w.arena().halfDepth() - Math.abs(a.z()));
+                    assertTrue(toWall < a.radius() + 0.05, where + ": area " + a);
+                    assertTrue(Math.hypot(r.x() - a.x(), r.z() - a.z()) > a.radius() + 0.03, where + ": robot starts off the area");
+                    for (BoxSpec b : w.boxes()) {
+                        assertTrue(Math.hypot(b.x() - a.x(), b.z() - a.z()) > a.radius() + 0.06, where + ": box near area");
+                    }
+                    for (CylinderSpec c : w.cylinders()) {
+                        assertTrue(Math.hypot(c.x() - a.x(), c.z() - a.z()) > a.radius(), where + ": cylinder in an area");
+                    }
+                }
+                if (w.storage() != null && w.charger() != null) {
+                    assertTrue(Math.hypot(w.storage().x() - w.charger().x(), w.storage().z() - w.charger().z()) >= 0.5, where);
+                }
+            }
+        }
+    }
+
+    @Test
+    void densityVariesAndFaultsAppear() {
+        int fewest = Integer.MAX_VALUE, most = 0, faults = 0, nearFaults = 0;
+        for (long seed = 1; seed <= 30; seed++) {
+            WorldSpec w = new WorldGenerator(Experiment.SUSPEND_RESUME, seed).generate().spec();
+            double perSquareMetre = w.boxes().size() / (w.arena().width() * w.arena().depth());
+            fewest = Math.min(fewest, (int) perSquareMetre);
+            most = Math.max(most, (int) perSquareMetre);
+            faults += w.events().size();
+            nearFaults += (int) w.events().stream().filter(ev -> ev.trigger() instanceof jacabot.sim.world.EventSpec.Near).count();
+        }
+        assertTrue(most >= 2 * Math.max(1, fewest), "sparse to dense: " + fewest + ".." + most + " boxes per m²");
+        assertTrue(faults > 10 && nearFaults > 0, faults + " faults, " + nearFaults + " during a grip");
+        assertNull(new WorldGenerator(Experiment.OBSTACLE_AVOIDANCE, 1).generate().spec().storage());
+        assertNotNull(new WorldGenerator(Experiment.NAVIGATION, 1).maxSide(1).generate().spec().storage());
+    }
+}
