@@ -40,6 +40,7 @@ maxSpeed(100).
 // storagePoint(X, Z), arena(Width, Depth): from the world (issue 13)
 threshold(0.04).
 ray(0.04).
+maxRay(0.04).
 reachCylinder(false).
 middlewarePort(4444).
 // (issue 13) recovery and search: timings in ms, distances in metres
@@ -131,7 +132,10 @@ storageClearance(0.22).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
+// (issue 13) replacement: the thesis widens the threshold by 3 cm after a delivery; here at most
+// to maxRay: the test is per axis, and with a wider one the robot stopped outside the storage
+// area, put the cylinder down there and turned into the area empty
++!raiseRay : threshold(T) & maxRay(Mx) <- T2 = math.min(T + 0.03, Mx); setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 

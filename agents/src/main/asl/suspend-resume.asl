@@ -55,6 +55,7 @@ maxSpeed(100).
 // storagePoint(X, Z), charger(X, Z), arena(Width, Depth): from the world (issue 13)
 threshold(0.04).
 ray(0.04).
+maxRay(0.04).
 reachCylinder(false).
 middlewarePort(4444).
 // (issue 13) recovery and search: timings in ms, distances in metres
@@ -152,9 +153,12 @@ tripTimeout(150000).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
+// (issue 13) replacement: the thesis widens the threshold by 3 cm after a delivery; here at most
+// to maxRay: the test is per axis, and with a wider one the robot stopped outside the storage
+// area, put the cylinder down there and turned into the area empty
 // (issue 13) on the way to the charger the threshold is the charger's: only remember the ray
-+!raiseRay : charging & ray(T) <- T2 = T + 0.03; -+ray(T2).
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
++!raiseRay : charging & threshold(T) & maxRay(Mx) <- T2 = math.min(T + 0.03, Mx); -+ray(T2).
++!raiseRay : threshold(T) & maxRay(Mx) <- T2 = math.min(T + 0.03, Mx); setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 
