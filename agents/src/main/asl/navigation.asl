@@ -21,15 +21,40 @@
 // "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
 // already updated picked(false) when the agent handles the signal, so the listing's
 // "+fallen : picked(true)" never applied and the fall went unreported.
+// Recovery and world knowledge (issue 13; every change below is marked "issue 13"):
+//  - storagePoint(X,Z) and arena(W,D) come from the world file (the launcher adds them as
+//    initial beliefs; the .mas2j passes them with beliefs="..."): no coordinate is written here;
+//  - every wait for obstacle(false) is bounded (!clear) and ends with an escape; "stuck" (the
+//    middleware's progress percept: wheels turning, position unchanged or circling) also escapes;
+//  - while delivering, the robot re-aligns every few seconds (!steer) and, after an obstacle,
+//    goes round it for longer each time (detour);
+//  - no cylinder is picked near the storage area, and the storage area is never entered empty
+//    (noAccess applies from the start, not only after a delivery);
+//  - after searchAfter ms without a cylinder the random walk gives way to a sweep of the arena;
+//  - the console tells the story (picks, deliveries, failures), not every avoidance step.
+// The thesis' plans as published: as-published/navigation.asl.
 
 /* Initial beliefs and rules (Appendix B) */
 
 maxSpeed(100).
-storagePoint(0.41, -0.41).
+// storagePoint(X, Z), arena(Width, Depth): from the world (issue 13)
 threshold(0.04).
 ray(0.04).
+maxRay(0.04).
 reachCylinder(false).
 middlewarePort(4444).
+// (issue 13) recovery and search: timings in ms, distances in metres
+avoidTimeout(3000).
+escapeBack(1200).
+stuckWindows(14000, 0.03, 40000, 0.12).
+steerEvery(2500).
+detours(0).
+searchAfter(45000).
+sweepSpacing(0.2).
+sweepSpeed(80).
+// (issue 13) travel to a target at this wheel speed, not the thesis' forward (50): big arenas
+travelSpeed(80).
+storageClearance(0.22).
 
 /* Initial goals */
 
@@ -48,6 +73,8 @@ middlewarePort(4444).
 
 +!waitConnection : connected(true)
     <- deltaBased(false);
+       ?stuckWindows(T1, R1, T2, R2); progressWindows(T1, R1, T2, R2);
+       .system_time(Now); +lastFound(Now); !!searchClock;
        ?storagePoint(X, Z); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z);
        -+reachCylinder(false);
        ?threshold(T); setThreshold(T);
@@ -57,9 +84,9 @@ middlewarePort(4444).
 
 /* Reaching a lateral or a central cylinder (Chapter 4 §2.1) */
 
-+cylinderLeft : reachCylinder(false) & not insideArea
++cylinderLeft : reachCylinder(false) & not insideArea & not nearStorage & not delivering
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
-+cylinderRight : reachCylinder(false) & not insideArea
++cylinderRight : reachCylinder(false) & not insideArea & not nearStorage & not delivering
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
     <- .print("cylinder beyond"); setSpeeds(M / 5, M / 5); !approach.
@@ -71,18 +98,29 @@ middlewarePort(4444).
 +!reach : reachCylinder(false) <- .wait("+cylinderDetected", 3000).
 -!reach <- .print("Reach lateral cylinder failed."); -+reachCylinder(false).
 
-+cylinderDetected : not picking & not delivering
++cylinderDetected : not picking & not delivering & not nearStorage
     <- +picking; -+reachCylinder(false); .succeed_goal(move(_)); stop; .print("Cylinder detected"); catching; !block.
 
 /* Avoiding obstacles (Chapter 4 §1.1); while delivering, re-align afterwards */
 
-+obstacle(true) : delivering & delta(D)
-    <- .drop_intention(balance); +avoiding; stop; !avoid(D); forward; .wait(1000); !computeGap; !balance; forward.
+// (issue 13) replacement: the detour is one goal (a newer obstacle replaces it) and goes round
+// the obstacle longer each time (forward 1 s, then up to detourMax more)
++obstacle(true) : delivering & delta(D) & not insideArea
+    <- .drop_intention(balance); .drop_intention(detour(_)); !detour(D).
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
+    <- +avoiding; .succeed_goal(move(_)); stop; .system_time(T); -+lastAvoid(T); .wait(50); !avoid(D).
 
-+lateralObstacle("left") <- println("high left"); !avoid(-1).
-+lateralObstacle("right") <- println("high right"); !avoid(1).
+// (issue 13) replacement: a lateral obstacle is avoided as a front one, as one avoidance at a
+// time (the listing's concurrent !avoid waited for an obstacle(false) that never came)
++lateralObstacle(S) : delivering & not insideArea & not avoiding
+    <- .drop_intention(balance); .drop_intention(detour(_)); if (S == "left") { !detour(-1) } else { !detour(1) }.
++lateralObstacle(S) : not avoiding & not picking & not reachCylinder(true) & not delivering
+    <- +avoiding; .succeed_goal(move(_)); stop; if (S == "left") { !avoid(-1) } else { !avoid(1) }.
+
++!detour(D) : detours(N)
+    <- +avoiding; stop; !avoid(D); -+detours(N + 1);
+       .random(R); F = 1000 + R * 1000 * math.min(N, 4); forward; .wait(F);
+       !computeGap; !balance.
 
 /* At the storage point while delivering (Chapter 4 §3.1) */
 
@@ -94,16 +132,21 @@ middlewarePort(4444).
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
-+!raiseRay : threshold(T) <- T2 = T + 0.03; setThreshold(T2); -+ray(T2).
+// (issue 13) replacement: the thesis widens the threshold by 3 cm after a delivery; here at most
+// to maxRay: the test is per axis, and with a wider one the robot stopped outside the storage
+// area, put the cylinder down there and turned into the area empty
++!raiseRay : threshold(T) & maxRay(Mx) <- T2 = math.min(T + 0.03, Mx); setThreshold(T2); -+ray(T2).
 
 /* Never re-enter the storage area without a cylinder (Chapter 4 §3.1) */
 
 +outOfStorageArea <- println("Out of target area"); restartAcquireDistance; !raiseRay; -insideArea; +~around.
 
+// (issue 13) replacement: "~around" (set after the first delivery) is not required: the robot
+// must not enter the storage area empty before its first delivery either
 @noAccess1[atomic]
-+noAccess : not delivering & ~around
++noAccess : not delivering & not picking
     <- +gettingOut; .print("Too close to storage area!! Go away!");
-       stop; .wait(40); turnAround; .wait(2000); forward; .wait(1500).
+       stop; .wait(40); turnAround; .wait(2000); forward; .wait(1500); if (searching) { !nextWaypoint }.
 +noAccess : delivering & firstTime
     <- -firstTime; +insideArea; println("Almost reached"); stopAcquireDistance.
 
@@ -113,25 +156,35 @@ middlewarePort(4444).
     <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
 
 +!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
-    <- stop; -~around; +firstTime; forward.
+    <- stop; -~around; +firstTime; !cruise.
+// (issue 13) near 0/360 the window above never holds (e.g. D = 0.3, O = 359.9)
++!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
+    <- stop; -~around; +firstTime; !cruise.
 +!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
     <- setSpeeds(25, -10); .wait(20); !balance.
 +!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
     <- setSpeeds(-10, 25); .wait(20); !balance.
 +!balance <- .wait(20); !balance.
 
+// (issue 13) the balance plans end by going on at travelSpeed (the thesis: forward)
++!cruise : travelSpeed(V) <- setSpeeds(V, V).
+
 /* Random navigation, suspended while a more relevant task runs (Chapter 4 §1.1, §5) */
 
 +!moving <- while (true) { .random(R); !move(R) }.
 
 +!move(N) : delivering
-    <- .print("Wait delivering"); .wait("-~delivered"); .print("Delivered!"); !move(N).
+    <- .wait("-~delivered"); .print("Delivered!"); !move(N).
 +!move(N) : avoiding
-    <- .print("Wait avoiding"); .wait("-avoiding"); !move(N).
+    <- .wait("-avoiding"); !move(N).
 +!move(N) : reachCylinder(true)
-    <- .print("wait lateral cyl"); .wait("+reachCylinder(false)"); !move(N).
+    <- .wait("+reachCylinder(false)"); !move(N).
 +!move(N) : picking
-    <- .print("wait picking"); .wait("-picking"); .wait(50); !move(N).
+    <- .wait("-picking"); .wait(50); !move(N).
+// (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
++!move(N) : obstacle(true) & delta(D) <- +avoiding; stop; !avoid(D).
+// (issue 13) no cylinder for a while: sweep the arena instead of walking at random
++!move(N) : searching <- !sweepStep.
 +!move(N) : N <= 0.5
     <- forward; .random(R); W = R * 10000; .wait(W).
 +!move(N) : N <= 0.75 & N > 0.5
@@ -150,17 +203,90 @@ middlewarePort(4444).
 -!pick <- .print("pick failed"); !go_ahead.
 
 +!go_ahead : picked(true)
-    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !computeGap; !balance; forward.
+    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
 +!go_ahead <- println("Cylinder picking failed"); stop.
 
 /* Basic obstacle avoidance (Chapter 4 §1.2) */
 
-+!avoid(0) <- backward; turnAround; .wait("+obstacle(false)"); -avoiding.
-+!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); .wait("+obstacle(false)"); -avoiding.
-+!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); .wait("+obstacle(false)"); -avoiding.
+// (issue 13) replacement: the thesis' ".wait("+obstacle(false)")" became !clear, a bounded wait
++!avoid(0) <- backward; turnAround; !clear; -avoiding.
++!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding.
++!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding.
 
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
+// (issue 13) replacement: the thesis stops for good ("stopAcquire; stop"); the robot now drops
+// everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again)
 @fallCylinder[atomic]
 +fallen
-    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
+    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
+       -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
+       open_grip; arm_up; !!searchClock; !!moving.
+
+/* Recovery (issue 13): bounded waits, escapes, steering, sweeping */
+
+// near the storage area no cylinder is picked (it may be one just delivered)
+nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
+    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < C * C.
+
+// the obstacle may already be gone (then no +obstacle(false) would come)
++!clear : obstacle(false).
++!clear : avoidTimeout(T) <- .wait("+obstacle(false)", T).
+-!clear <- println("Obstacle does not clear: escaping"); !escape.
+
+// back off, turn a random angle, go on
++!escape : maxSpeed(M) & escapeBack(B)
+    <- setSpeeds(-M / 2, -M / 2); .wait(B); .random(R); W = 700 + R * 1500;
+       if (R < 0.5) { setSpeeds(M / 2, -M / 2) } else { setSpeeds(-M / 2, M / 2) }; .wait(W); forward.
+
+// no progress though the wheels turn (the middleware's "stuck"): escape, then carry on
++stuck : picking | insideArea.
++stuck : delivering & not avoiding
+    <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
+       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.
++stuck : not avoiding
+    <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding; !nextWaypoint.
++stuck.
+
+// while delivering: re-align when the heading is off by more than 10 degrees
++!steer : delivering & not insideArea & steerEvery(T)
+    <- .wait(T);
+       if (not avoiding & not .intend(balance) & not insideArea & delivering & location(X, _, Z) & targetPoint(Tx, Tz)) {
+           computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
+           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
+       };
+       !steer.
++!steer.
+-!steer <- .wait(500); !steer.
+
+// a cylinder picked: the random walk has done its job
++!found <- .system_time(T); -+lastFound(T); -searching.
+
++!searchClock : searchAfter(S) & lastFound(T0)
+    <- .wait(5000); .system_time(T);
+       if (T - T0 > S & not searching & not delivering) { println("No cylinder for a while: sweeping the arena"); +searching; !planSweep };
+       !searchClock.
+
+// the sweep: lanes across the arena, sweepSpacing apart, at sweepSpacing/2 from the walls
++!planSweep : arena(W, D) & sweepSpacing(S)
+    <- Hx = W / 2 - S / 2; Hz = D / 2 - S / 2; N = math.floor(2 * Hz / S);
+       .findall(lane(I, Z), .range(I, 0, N) & Z = -Hz + I * S, Lanes);
+       .findall([X1, Z1], .member(lane(I1, Z1), Lanes) & ((I1 mod 2 == 0 & (X1 = -Hx | X1 = Hx)) | (I1 mod 2 == 1 & (X1 = Hx | X1 = -Hx))), All);
+       // not into the storage area
+       ?storagePoint(Sx, Sz); ?storageClearance(C);
+       .findall([X2, Z2], .member([X2, Z2], All) & (X2 - Sx) * (X2 - Sx) + (Z2 - Sz) * (Z2 - Sz) > (C + 0.1) * (C + 0.1), Ws);
+       -+sweep(Ws); !nextWaypoint.
+
++!nextWaypoint : sweep([[X, Z] | Rest])
+    <- .concat(Rest, [[X, Z]], L); -+sweep(L); .system_time(T); -+waypoint(X, Z, T).
++!nextWaypoint.
+
+// one step towards the waypoint: align, go 2 s; a waypoint not reached in time is skipped
++!sweepStep : waypoint(X, Z, T0) & location(Lx, _, Lz) & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < 0.01
+    <- !nextWaypoint.
++!sweepStep : waypoint(X, Z, T0) & .system_time(T) & T - T0 > 60000
+    <- !nextWaypoint.
++!sweepStep : waypoint(X, Z, _) & location(Lx, _, Lz) & sweepSpeed(V)
+    <- .system_time(T); if (lastAvoid(A) & T - A < 3000) { forward; .wait(1500) };
+       ?location(Lx2, _, Lz2); computeAngle(Lx2, Lz2, X, Z, D); -+desired(D); !balance; setSpeeds(V, V); .wait(2000).
++!sweepStep <- !nextWaypoint; .wait(100).

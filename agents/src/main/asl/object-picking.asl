@@ -19,10 +19,23 @@
 // "+fallen" has no context: the middleware signals fallen only for a picked cylinder, and has
 // already updated picked(false) when the agent handles the signal, so the listing's
 // "+fallen : picked(true)" never applied and the fall went unreported.
+// Recovery (issue 13; every change below is marked "issue 13"):
+//  - every wait for obstacle(false) is bounded (!clear) and ends with an escape (back off, turn
+//    a random angle); "stuck" (the middleware's progress percept, from the GPS: position
+//    unchanged or circling) also escapes; a lateral obstacle is avoided as one avoidance;
+//  - after searchAfter ms without a cylinder the short random moves give way to long straight
+//    legs in random directions (this agent has no map: the sweep is navigation's);
+//  - the console tells the story (picks, failures), not every avoidance step.
+// The thesis' plans as published: as-published/object-picking.asl.
 
 maxSpeed(100).
 reachCylinder(false).
 middlewarePort(4444).
+// (issue 13) recovery and search: timings in ms
+avoidTimeout(3000).
+escapeBack(1200).
+stuckWindows(14000, 0.03, 40000, 0.12).
+searchAfter(60000).
 
 !start.
 
@@ -38,7 +51,9 @@ middlewarePort(4444).
 -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
-    <- println("Connection successful, waiting for sensor data"); acquireData; !moving.
+    <- println("Connection successful, waiting for sensor data");
+       ?stuckWindows(T1, R1, T2, R2); progressWindows(T1, R1, T2, R2); .system_time(Now); +lastFound(Now);
+       acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 
 /* Reaching a lateral or a central cylinder (Chapter 4 §2.2) */
@@ -63,11 +78,16 @@ middlewarePort(4444).
 /* Obstacle avoidance, but not while picking or reaching a cylinder (Chapter 4 §2.2) */
 
 +obstacle(true) : delta(D) & not avoiding & not picking & not reachCylinder(true)
-    <- .print("Obstacle: ", D); +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
+    <- +avoiding; .succeed_goal(move(_)); stop; .wait(50); !avoid(D).
 
-+!avoid(0) <- backward; turnAround; .wait("+obstacle(false)"); -avoiding.
-+!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); .wait("+obstacle(false)"); -avoiding.
-+!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); .wait("+obstacle(false)"); -avoiding.
+// (issue 13) a lateral obstacle (very close on a side) is avoided as a front one
++lateralObstacle(S) : not avoiding & not picking & not reachCylinder(true) & not picked(true)
+    <- +avoiding; .succeed_goal(move(_)); stop; if (S == "left") { !avoid(-1) } else { !avoid(1) }.
+
+// (issue 13) replacement: the thesis' ".wait("+obstacle(false)")" became !clear, a bounded wait
++!avoid(0) <- backward; turnAround; !clear; -avoiding.
++!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding.
++!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding.
 
 /* Random motion, suspended while a more relevant task runs */
 
@@ -76,6 +96,11 @@ middlewarePort(4444).
 +!move(N) : avoiding <- .wait("-avoiding"); !move(N).
 +!move(N) : reachCylinder(true) <- .wait("+reachCylinder(false)"); !move(N).
 +!move(N) : picking <- .wait("-picking"); .wait(50); !move(N).
+// (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
++!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !avoid(D).
+// (issue 13) no cylinder for a while: long straight legs in random directions
++!move(N) : searchAfter(S) & lastFound(T0) & .system_time(T) & T - T0 > S & not picked(true) & maxSpeed(M)
+    <- .random(R); setSpeeds(M / 2, -M / 2); .wait(R * 3000); forward; .wait(15000).
 +!move(N) : N <= 0.5 <- forward; .random(R); W = R * 10000; .wait(W).
 +!move(N) : N <= 0.75 & N > 0.5 <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
 +!move(N) : N < 1 & N > 0.75 <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
@@ -90,11 +115,30 @@ middlewarePort(4444).
 +!pick <- .print("Cylinder not found"); open_grip; arm_up; turnAround; .wait(2000); forward; -picking.
 -!pick <- .print("Arm cannot rise"); open_grip; arm_up; turnAround; .wait(2000); forward; -picking.
 
-+!carry : picked(true) <- println("Cylinder picked up"); -picking; forward.
++!carry : picked(true) <- println("Cylinder picked up"); -picking; .system_time(T); -+lastFound(T); forward.
 +!carry <- println("Cylinder picking failed"); stop; -picking.
 
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.2) */
 
+// (issue 13) replacement: the thesis stops for good ("stopAcquire; stop"); the robot now drops
+// everything, lets the cylinder go and looks for a cylinder again
 @fallCylinder[atomic]
 +fallen
-    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stopAcquire; stop.
+    <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
+       -picking; -avoiding; -+reachCylinder(false); open_grip; arm_up; !!moving.
+
+/* Recovery (issue 13): bounded waits, escapes */
+
+// the obstacle may already be gone (then no +obstacle(false) would come)
++!clear : obstacle(false).
++!clear : avoidTimeout(T) <- .wait("+obstacle(false)", T).
+-!clear <- println("Obstacle does not clear: escaping"); !escape.
+
+// back off, turn a random angle, go on
++!escape : maxSpeed(M) & escapeBack(B)
+    <- setSpeeds(-M / 2, -M / 2); .wait(B); .random(R); W = 700 + R * 1500;
+       if (R < 0.5) { setSpeeds(M / 2, -M / 2) } else { setSpeeds(-M / 2, M / 2) }; .wait(W); forward.
+
+// no progress though the wheels turn (the middleware's "stuck"): escape
++stuck : picking | picked(true) | avoiding.
++stuck <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding.

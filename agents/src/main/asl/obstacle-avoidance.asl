@@ -10,9 +10,20 @@
 // move plan already in its .wait would later send "forward; .wait(1000)" in the middle of the
 // avoiding turn, and the robot drove into the wall with obstacle(true) still on, never
 // signalled again (thesis §1.2 shows the same plans; the race is theirs too).
+// Recovery (issue 13, marked "issue 13" below): every wait for obstacle(false) is bounded
+// (avoidTimeout) and ends, when it runs out, with an escape (back off, turn a random angle);
+// obstacles that come too often (trapCount within trapWindow: cycling in a corner or between
+// boxes) also lead to the escape. The console tells the story (escapes), not every avoidance.
+// The thesis' plans as published: as-published/obstacle-avoidance.asl.
 
 maxSpeed(100).
 middlewarePort(4444).
+// (issue 13) timings of the recovery, in ms
+avoidTimeout(3000).
+trapWindow(8000).
+trapCount(5).
+escapeBack(700).
+obstacleTimes([]).
 
 !start.
 
@@ -34,17 +45,40 @@ middlewarePort(4444).
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
 +obstacle(true) : delta(V) & not avoiding
-    <- +avoiding; .succeed_goal(move(_)); println("obstacle: ", V); stop; .wait(50); !avoid(V).
+    <- +avoiding; .succeed_goal(move(_)); stop; !noteObstacle; .wait(50); !avoid(V).
 
-+!avoid(0) <- .print("Central obstacle"); backward; turnAround; .wait("+obstacle(false)"); -avoiding.
-+!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); .wait("+obstacle(false)"); -avoiding.
-+!avoid(_) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); .wait("+obstacle(false)"); -avoiding.
+// (issue 13) replacement: the thesis' ".wait("+obstacle(false)")" became !clear, a bounded wait,
+// and an obstacle that comes too often leads to an escape instead
++!avoid(_) : trapped <- !escape; -avoiding.
++!avoid(0) <- backward; turnAround; !clear; -avoiding.
++!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); !clear; -avoiding.
++!avoid(_) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); !clear; -avoiding.
+
+/* Recovery (issue 13): bounded waits, escapes */
+
+// the obstacle may already be gone (no +obstacle(false) would come)
++!clear : obstacle(false).
++!clear : avoidTimeout(T) <- .wait("+obstacle(false)", T).
+-!clear <- println("Obstacle does not clear: escaping"); !escape.
+
+// trapped: trapCount obstacles within trapWindow ms (a corner, a gap between boxes)
+trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
+
++!noteObstacle : obstacleTimes(L) & trapWindow(W)
+    <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]).
+
++!escape : maxSpeed(M)
+    <- println("Trapped: backing off and turning away"); -+obstacleTimes([]);
+       ?escapeBack(B); setSpeeds(-M / 2, -M / 2); .wait(B);
+       .random(R); W = 600 + R * 1200; setSpeeds(M / 2, -M / 2); .wait(W); stop.
 
 /* Random motion, suspended while avoiding (Chapter 4 §1.2, §5) */
 
 +!moving <- while (true) { .random(R); !move(R) }.
 
-+!move(N) : avoiding <- .wait("-avoiding"); .print("avoided"); !move(N).
++!move(N) : avoiding <- .wait("-avoiding"); !move(N).
+// (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
++!move(N) : obstacle(true) & delta(V) <- +avoiding; stop; !noteObstacle; !avoid(V).
 +!move(N) : N <= 0.5 <- forward; .random(R); W = R * 10000; .wait(W).
 +!move(N) : N <= 0.75 & N > 0.5 <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
 +!move(N) : N < 1 & N > 0.75 <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).

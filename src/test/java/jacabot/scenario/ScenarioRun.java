@@ -76,13 +76,30 @@ final class ScenarioRun {
      */
     static ScenarioRun run(Experiment experiment, long seed, boolean noise, double seconds, UnaryOperator<WorldSpec> edit,
             BiConsumer<Long, ScenarioRun> eachStep) throws Exception {
+        return run(experiment, experiment.agentResource(), seed, noise, seconds, edit, eachStep);
+    }
+
+    /** Runs the agent as the thesis published it ({@code agents/src/main/asl/as-published/}, issue 13). */
+    static ScenarioRun runPublished(Experiment experiment, long seed, boolean noise, double seconds) throws Exception {
+        return runPublished(experiment, seed, noise, seconds, UnaryOperator.identity(), (t, r) -> {
+        });
+    }
+
+    static ScenarioRun runPublished(Experiment experiment, long seed, boolean noise, double seconds, UnaryOperator<WorldSpec> edit,
+            BiConsumer<Long, ScenarioRun> eachStep) throws Exception {
+        String published = experiment.agentResource().replaceFirst("/([^/]+)$", "/as-published/$1");
+        return run(experiment, published, seed, noise, seconds, edit, eachStep);
+    }
+
+    private static ScenarioRun run(Experiment experiment, String agentResource, long seed, boolean noise, double seconds,
+            UnaryOperator<WorldSpec> edit, BiConsumer<Long, ScenarioRun> eachStep) throws Exception {
         WorldSpec s = WorldFileReader.read(ROOT.resolve(experiment.worldFile()));
         s = new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), seed, noise, s.walls(), s.boxes(),
                 s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
         s = edit.apply(s);
         ScenarioRun run = new ScenarioRun(experiment, seed, SimWorld.of(s));
         String source;
-        try (InputStream in = ScenarioRun.class.getResourceAsStream(experiment.agentResource())) {
+        try (InputStream in = ScenarioRun.class.getResourceAsStream(agentResource)) {
             source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
         var lockstep = new LockstepRun(run.world, null, experiment, source, experiment.id() + ".asl", seed,
@@ -116,6 +133,25 @@ final class ScenarioRun {
     // ---- what the tests read ---------------------------------------------------------------------
 
     /** {@return the console lines containing {@code text}} */
+    /** {@return the first sample time from {@code fromMs} at which the heading changed by over 3° since then, or -1} */
+    long firstTurn(long fromMs) {
+        Double h0 = null;
+        for (Sample s : samples) {
+            if (s.timeMs() < fromMs) {
+                continue;
+            }
+            if (h0 == null) {
+                h0 = s.pose().heading();
+            } else {
+                double d = Math.abs(s.pose().heading() - h0) % 360;
+                if (Math.min(d, 360 - d) > 3) {
+                    return s.timeMs();
+                }
+            }
+        }
+        return -1;
+    }
+
     List<Line> linesWith(String text) {
         List<Line> out = new ArrayList<>();
         for (Line l : lines) {

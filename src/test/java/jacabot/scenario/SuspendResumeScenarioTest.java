@@ -58,12 +58,15 @@ class SuspendResumeScenarioTest {
      * What {@code gradle run} shows, under the world file's own seed: the battery runs low during a
      * delivery (Appendix B's "Almost reached" path), the robot recharges, comes back to the marked
      * point, restores its state and completes the delivery. Measured (seed 13): picked at 42 s, low
-     * at 68 s, recharged at 151 s, delivered at 201 s.
+     * at 68 s, recharged at 151 s, delivered at 201 s. Issue 13: this timing is the agent as
+     * published (as-published/suspend-resume.asl); the default agent travels faster and delivers
+     * before the battery runs low on this seed (completesTheDeliveryInterruptedByALowBattery checks
+     * the suspended delivery for it).
      */
     @Test
     void theDefaultRunSuspendsADeliveryAndCompletesIt() throws Exception {
         WorldSpec world = WorldFileReader.read(ScenarioRun.ROOT.resolve(Experiment.SUSPEND_RESUME.worldFile()));
-        ScenarioRun run = ScenarioRun.run(Experiment.SUSPEND_RESUME, world.seed(), world.sensorNoise(), 240);
+        ScenarioRun run = ScenarioRun.runPublished(Experiment.SUSPEND_RESUME, world.seed(), world.sensorNoise(), 240);
         long picked = run.firstLine("Cylinder picked up", 0);
         assertTrue(picked >= 0, run.summary());
         Suspension s = assertDeliverySuspendedAndCompleted(run, picked);

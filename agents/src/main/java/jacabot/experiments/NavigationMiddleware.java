@@ -18,8 +18,6 @@ import jacabot.robot.link.SensorKind;
  * a signal.
  */
 public class NavigationMiddleware extends ObjectPickingMiddleware {
-    /** How close to the storage point the robot may come without a cylinder (metres). */
-    static final double ACCESS_RADIUS = 0.15;
     private double[] target;
     private double[] storage;
     private double threshold = 0.04;
@@ -72,6 +70,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         switch (kind) {
             case GPS:
                 double[] c = info.getCoord();
+                checkProgress(c[0], c[2]);
                 double x = trunc(c[0]);
                 double y = trunc(c[1]);
                 double z = trunc(c[2]);

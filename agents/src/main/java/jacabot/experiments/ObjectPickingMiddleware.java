@@ -12,7 +12,8 @@ import jacabot.robot.link.SensorKind;
  * section), {@code cylinderLeft}/{@code cylinderRight} (red on that side of the camera image, not
  * in its centre), {@code cylinderBeyond} (the lateral cylinder, turned towards, is now ahead: red
  * in the centre section), {@code fallen} (the
- * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}.
+ * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}; and (issue 13) the
+ * derived percept {@code stuck}, from the GPS: no progress though the robot is meant to move.
  */
 public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     // Tuning (issue 7). The thesis (§2.1) checks the camera's lateral sections when a lateral
@@ -32,6 +33,38 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private double armPosition = 0;
     /** Sides whose very-close lateral obstacle was signalled; re-armed when that side is safe. */
     private final java.util.Set<String> lateralSignalled = new java.util.HashSet<>();
+
+    // Progress (issue 13, a derived percept): "stuck" is signalled when the GPS position stayed
+    // within a radius for a time (pressed against something, dithering in front of a box, or
+    // circling round an obstacle); the agent sets both windows (progressWindows) and decides
+    // (it ignores the signal while it stays on purpose: picking, at the charger).
+    private long[] windowMs = {6000, 30000};
+    private double[] windowRadius = {0.04, 0.12};
+    private final double[][] anchor = new double[2][];
+    /** How close to the storage point the robot may come without a cylinder (metres). */
+    static final double ACCESS_RADIUS = 0.15;
+    /** Sets the progress windows: stuck if within {@code r1} metres for {@code t1} ms, or within {@code r2} for {@code t2}. */
+    @OPERATION
+    void progressWindows(double t1, double r1, double t2, double r2) {
+        windowMs = new long[] {(long) t1, (long) t2};
+        windowRadius = new double[] {r1, r2};
+    }
+
+    protected void checkProgress(double x, double z) {
+        long now = simTimeMs();
+        for (int k = 0; k < 2; k++) {
+            double[] a = anchor[k];
+            // a stop does not restart the window: stopping and turning back to the same place is no progress
+            if (a == null || Math.hypot(x - a[0], z - a[1]) > windowRadius[k]) {
+                anchor[k] = new double[] {x, z, now};
+            } else if (now - a[2] > windowMs[k]) {
+                anchor[0] = new double[] {x, z, now};
+                anchor[1] = new double[] {x, z, now};
+                signal("stuck");
+                return;
+            }
+        }
+    }
 
     @Override
     protected void defineProperties() {
@@ -107,6 +140,9 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 lateral(info.getVal(), kind == SensorKind.LEFT_DISTANCE ? "left" : "right");
                 break;
 
+            case GPS:
+                checkProgress(info.getCoord()[0], info.getCoord()[2]);
+                break;
             case GRIP_FORCE:
                 boolean nowHolding = info.getVal() < HOLD_FORCE;
                 if (nowHolding != getObsProperty("caught").booleanValue()) {

@@ -15,6 +15,9 @@ public class SuspendResumeMiddleware extends NavigationMiddleware {
     static final double LOW_BATTERY = 480;
     /** The level at which {@code charged} is signalled (ours: the thesis waits 3 s at the charger). */
     static final double CHARGED = 900;
+    // (issue 13) the agent may set both levels from its beliefs (batteryLevels)
+    private double low = LOW_BATTERY;
+    private double charged = CHARGED;
     private boolean chargedSignalled = true;
     private double[] marked;
 
@@ -29,18 +32,25 @@ public class SuspendResumeMiddleware extends NavigationMiddleware {
         if (kind == SensorKind.BATTERY) {
             double battery = Math.round(info.getVal() * 10) / 10.0;
             getObsProperty("battery").updateValue(battery);
-            if (battery < LOW_BATTERY && battery > 0) {
+            if (battery < low && battery > 0) {
                 signal("lowBattery");
             }
-            if (battery >= CHARGED && !chargedSignalled) {
+            if (battery >= charged && !chargedSignalled) {
                 chargedSignalled = true;
                 signal("charged");
-            } else if (battery < LOW_BATTERY) {
+            } else if (battery < low) {
                 chargedSignalled = false;
             }
         } else {
             super.onReading(info, kind);
         }
+    }
+
+    /** Sets the levels of {@code lowBattery} and {@code charged} (joules). */
+    @OPERATION
+    void batteryLevels(double lowLevel, double chargedLevel) {
+        low = lowLevel;
+        charged = chargedLevel;
     }
 
     /** Records the current location and orientation (the agent keeps its own copy as beliefs). */

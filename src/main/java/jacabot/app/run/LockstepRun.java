@@ -81,7 +81,8 @@ public final class LockstepRun {
         middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
-        AgentProgram program = parser.parse(agentSource, agentFile);
+        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        AgentProgram program = WorldBeliefs.inject(parser.parse(agentSource, agentFile), world.spec());
         var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
         agent.setPlanListener((event, plan) -> {
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {

@@ -55,7 +55,9 @@ public final class RealTimeRun implements AutoCloseable {
         int boundPort = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         var parser = new AslParser();
-        var agent = mas.createAgent("robot", parser.parse(agentSource, agentFile), parser, CAgentArch::new);
+        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        var program = WorldBeliefs.inject(parser.parse(agentSource, agentFile), world.spec());
+        var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         agent.setPlanListener((event, plan) -> {
             if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l

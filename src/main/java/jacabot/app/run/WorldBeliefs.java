@@ -1,0 +1,51 @@
+package jacabot.app.run;
+
+import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.sim.world.WorldSpec;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * What the robot is told about its world when it starts (issue 13): the landmarks of the world
+ * file become initial beliefs, so no coordinate is written in an agent. {@code arena(Width, Depth)}
+ * (centred on the origin), {@code storagePoint(X, Z)} and {@code charger(X, Z)} when the world has
+ * them, in the GPS coordinates of {@code location(X, Y, Z)}. A belief of the same name and arity
+ * in the program (e.g. the thesis' literal {@code storagePoint(0.41, -0.41)}) is replaced, as the
+ * two-process set-up does with the {@code .mas2j} option {@code beliefs="..."}.
+ */
+public final class WorldBeliefs {
+    private WorldBeliefs() {
+    }
+
+    /** {@return the landmark beliefs of a world} */
+    public static List<Literal> of(WorldSpec spec) {
+        var out = new ArrayList<Literal>();
+        out.add(Literal.of("arena", NumberTerm.of(spec.arena().width()), NumberTerm.of(spec.arena().depth())));
+        if (spec.storage() != null) {
+            out.add(Literal.of("storagePoint", NumberTerm.of(spec.storage().x()), NumberTerm.of(spec.storage().z())));
+        }
+        if (spec.charger() != null) {
+            out.add(Literal.of("charger", NumberTerm.of(spec.charger().x()), NumberTerm.of(spec.charger().z())));
+        }
+        return out;
+    }
+
+    /** {@return the program with the world's beliefs first, replacing the program's own of the same name and arity} */
+    public static AgentProgram inject(AgentProgram program, WorldSpec spec) {
+        List<Literal> world = of(spec);
+        var beliefs = new ArrayList<Object>(world);
+        for (Object b : program.beliefs()) {
+            if (!(b instanceof Literal l && world.stream().anyMatch(w -> w.functor().equals(l.functor()) && w.arity() == l.arity()))) {
+                beliefs.add(b);
+            }
+        }
+        return new AgentProgram(program.file(), beliefs, program.goals(), program.plans());
+    }
+
+    /** {@return the beliefs as the {@code .mas2j} option {@code beliefs="..."} writes them} */
+    public static String asOption(WorldSpec spec) {
+        return String.join(", ", of(spec).stream().map(Literal::toString).toList());
+    }
+}
