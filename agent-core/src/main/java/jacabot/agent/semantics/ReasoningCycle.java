@@ -82,7 +82,15 @@ final class ReasoningCycle {
                 return;
             }
             c.setSelectedEvent(se);
-            if (applyFindOp(se)) {
+            try {
+                if (applyFindOp(se)) {
+                    return;
+                }
+            } catch (StackOverflowError e) {
+                ag.warn("The context of a plan for " + se.trigger() + " recursed too deep: the event is dropped");
+                if (se.intention() != null) {
+                    ag.dropIntention(se.intention());
+                }
                 return;
             }
             // an irrelevant external event is discarded and another one selected
@@ -197,7 +205,12 @@ final class ReasoningCycle {
         c.setSelectedIntention(si);
         selectedDropped = false;
         selectedHeld = false;
-        exec.execute(si);
+        try {
+            exec.execute(si);
+        } catch (StackOverflowError e) {
+            // a too deep recursion (rules, terms) fails the intention, not the agent's thread
+            generateGoalDeletion(si, errorAnnots("stack_overflow", "the recursion went too deep"));
+        }
         c.setSelectedIntention(null);
         if (!selectedDropped) {
             applyClrInt(si);

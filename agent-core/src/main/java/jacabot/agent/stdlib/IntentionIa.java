@@ -44,7 +44,7 @@ final class IntentionIa extends DefaultInternalAction {
             if (!u.unifies(args[1], Literal.atom(state(c, i)))) {
                 continue;
             }
-            if (args.length >= 3 && !u.unifies(args[2], stack(i))) {
+            if (args.length >= 3 && !u.unifies(args[2], jacabot.agent.semantics.Renamer.renameApart(stack(i), ag))) {
                 continue;
             }
             out.add(u);
