@@ -321,6 +321,12 @@ public final class Unifier {
         if (b instanceof ArithExpr || b instanceof ArithFunction) {
             b = apply(b);
         }
+        if (a instanceof AnnotatedVar ava) {
+            return unifyAnnotatedVar(ava, b, true);
+        }
+        if (b instanceof AnnotatedVar avb) {
+            return unifyAnnotatedVar(avb, a, false);
+        }
         if (a instanceof NumberTerm na) {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
@@ -344,12 +350,6 @@ public final class Unifier {
             return b instanceof LogExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left())
                     && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right()));
         }
-        if (a instanceof AnnotatedVar ava) {
-            return unifyAnnotatedVar(ava, b, true);
-        }
-        if (b instanceof AnnotatedVar avb) {
-            return unifyAnnotatedVar(avb, a, false);
-        }
         if (a instanceof PlanTerm pa) {
             return b instanceof PlanTerm pb && unifyPlans(pa, pb);
         }
@@ -370,7 +370,7 @@ public final class Unifier {
 
     /**
      * {@code V[a1..an]} and a literal: the literal has (at least) those annotations and V is the
-     * literal. {@code left} tells on which side the annotated variable was (annotations of the
+     * literal without its annotations. {@code left} tells on which side the annotated variable was (annotations of the
      * left term must be found in the right one).
      */
     private boolean unifyAnnotatedVar(AnnotatedVar av, Term other, boolean left) {
@@ -391,7 +391,8 @@ public final class Unifier {
         if (!left && !subsetAnnots(l.annots(), av.annots())) {
             return false;
         }
-        bindings.put(v, l);
+        // as Jason, the variable stands for the literal; the annotations were matched apart
+        bindings.put(v, l.withoutAnnots());
         return true;
     }
 
@@ -410,6 +411,13 @@ public final class Unifier {
     private boolean unifyBodies(List<BodyStep> a, List<BodyStep> b) {
         for (int i = 0; ; i++) {
             if (i == a.size() || i == b.size()) {
+                // { T; R } and { a }: R is the empty rest
+                if (i == a.size() - 1 && isVarStep(a.get(i))) {
+                    return unify(a.get(i).term(), BodyTerm.EMPTY);
+                }
+                if (i == b.size() - 1 && isVarStep(b.get(i))) {
+                    return unify(BodyTerm.EMPTY, b.get(i).term());
+                }
                 return a.size() == b.size();
             }
             BodyStep sa = a.get(i);
@@ -420,18 +428,26 @@ public final class Unifier {
             if (i == b.size() - 1 && isVarStep(sb) && a.size() > b.size()) {
                 return unify(new BodyTerm(a.subList(i, a.size())), sb.term());
             }
-            if (isVarStep(sa) && sb.kind() != BodyStep.Kind.ACTION) {
+            if (isVarStep(sa) && !isAction(sb)) {
                 if (!unify(sa.term(), new BodyTerm(List.of(sb)))) {
                     return false;
                 }
-            } else if (isVarStep(sb) && sa.kind() != BodyStep.Kind.ACTION) {
+            } else if (isVarStep(sb) && !isAction(sa)) {
                 if (!unify(new BodyTerm(List.of(sa)), sb.term())) {
+                    return false;
+                }
+            } else if (isVarStep(sa) || isVarStep(sb)) {
+                if (!unify(sa.term(), sb.term())) {
                     return false;
                 }
             } else if (sa.kind() != sb.kind() || !unify(sa.term(), sb.term())) {
                 return false;
             }
         }
+    }
+
+    private static boolean isAction(BodyStep s) {
+        return s.kind() == BodyStep.Kind.ACTION || s.kind() == BodyStep.Kind.INTERNAL_ACTION;
     }
 
     private boolean isVarStep(BodyStep s) {
