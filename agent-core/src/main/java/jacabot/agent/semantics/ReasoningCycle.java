@@ -296,6 +296,9 @@ final class ReasoningCycle {
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
+            if (topTrigger.isAchieveGoal() && topTrigger.isAddition()) {
+                generateGoalStateEvent(topIM, "achieved");
+            }
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
                 // a failure plan finished: drop the intended means up to the goal that failed
                 im = i.peek();
@@ -317,6 +320,21 @@ final class ReasoningCycle {
                     im.removeCurrentStep();
                 }
             }
+        }
+    }
+
+    /**
+     * Jason's goal-state meta-event {@code ^!g[state(S)]}: posted only when some plan listens to
+     * it, as an external event (its plans run in a new intention).
+     */
+    private void generateGoalStateEvent(IntendedMeans im, String state) {
+        if (!(im.unifier().apply(im.trigger().literal()) instanceof Literal goal)) {
+            return;
+        }
+        Trigger meta = new Trigger(Trigger.Op.GOAL_STATE, im.trigger().type(),
+                goal.addAnnot(Literal.of("state", Literal.atom(state))));
+        if (ag.planLibrary().hasCandidate(meta)) {
+            c.addEvent(new Event(meta, null));
         }
     }
 
