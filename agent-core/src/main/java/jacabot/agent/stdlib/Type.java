@@ -14,7 +14,8 @@ import jacabot.agent.syntax.Var;
 
 /**
  * {@code .type(X, T)}: T is {@code number}, {@code string}, {@code list}, {@code atom},
- * {@code literal} (structures, plans, bodies) or {@code free}, as Jason 3.2.0 answers.
+ * {@code literal} (structures, plans, bodies) or {@code free}, as Jason 3.2.0 answers first;
+ * then {@code literal} for an atom and {@code ground} for a ground term.
  */
 final class Type extends DefaultInternalAction {
     Type() {
@@ -23,7 +24,23 @@ final class Type extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return un.unifies(args[1], Literal.atom(typeOf(args[0])));
+        // the first answer is the most specific; an atom is also a literal, a ground term is ground
+        var answers = new java.util.ArrayList<String>();
+        answers.add(typeOf(args[0]));
+        if (answers.get(0).equals("atom")) {
+            answers.add("literal");
+        }
+        if (args[0].isGround()) {
+            answers.add("ground");
+        }
+        var out = new java.util.ArrayList<Unifier>();
+        for (String a : answers) {
+            Unifier c = un.copy();
+            if (c.unifies(args[1], Literal.atom(a))) {
+                out.add(c);
+            }
+        }
+        return out.iterator();
     }
 
     static String typeOf(Term t) {
