@@ -422,10 +422,10 @@ public final class Unifier {
             }
             BodyStep sa = a.get(i);
             BodyStep sb = b.get(i);
-            if (i == a.size() - 1 && isVarStep(sa) && b.size() > a.size()) {
+            if (i == a.size() - 1 && isVarStep(sa) && b.size() >= a.size() && a.size() > 1) {
                 return unify(sa.term(), new BodyTerm(b.subList(i, b.size())));
             }
-            if (i == b.size() - 1 && isVarStep(sb) && a.size() > b.size()) {
+            if (i == b.size() - 1 && isVarStep(sb) && a.size() >= b.size() && b.size() > 1) {
                 return unify(new BodyTerm(a.subList(i, a.size())), sb.term());
             }
             if (isVarStep(sa) && !isAction(sb)) {
