@@ -10,7 +10,9 @@ setting      : 'infrastructure' ':' ID ( '(' ~')'* ')' )?           # infrastruc
              | 'classpath' ':' STRING ( ';' STRING )* ';'?          # classpath
              | 'directives' ':' ~';'* ';'                           # directives
              ;
-agentDecl    : ID fileName? optionList? archClass* ( '#' NUMBER )? ( 'at' STRING )? ';' ;
+agentDecl    : agentName fileName? optionList? archClass* ( '#' NUMBER | 'at' STRING )* ';' ;
+// as Jason, 'at' cannot name an agent (it introduces the host)
+agentName    : ID ;
 fileName     : ( ID | STRING ) ( '.' ID )* ;
 optionList   : '[' ( option ( ',' option )* )? ']' ;
 option       : ID '=' ( ID | NUMBER | STRING ) ;

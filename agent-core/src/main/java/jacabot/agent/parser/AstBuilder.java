@@ -1,6 +1,7 @@
 package jacabot.agent.parser;
 
 import jacabot.agent.parser.AgentSpeakParser.*;
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.ArithExpr;
 import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.ArithFunctions;
@@ -322,11 +323,13 @@ final class AstBuilder {
             return Literal.FALSE;
         }
         if (ctx instanceof VarLiteralContext v) {
-            return new Var(v.VAR().getText());
+            Var var = new Var(v.VAR().getText());
+            return v.list() == null ? var : new AnnotatedVar(var, list(v.list()).elements());
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
             String name = u.UNNAMEDVAR().getText();
-            return name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+            Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+            return u.list() == null ? var : new AnnotatedVar(var, list(u.list()).elements());
         }
         StructureContext s = (StructureContext) ctx;
         String functor = s.name.getText();
@@ -392,10 +395,19 @@ final class AstBuilder {
             if (ctx.planLabel() == null && !hasContext && !hasBody) {
                 return new TriggerTerm(trigger);
             }
-            Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
+            Term label = null;
+            if (ctx.planLabel() != null) {
+                // in a plan term the label may be a variable: {@L +!g <- B}
+                Term t = ctx.planLabel().literal() == null ? null : literal(ctx.planLabel().literal());
+                label = t instanceof Var ? t : planLabel(ctx.planLabel());
+            }
             Term context = hasContext ? logExpr(ctx.logExpr()) : null;
-            BodyTerm body = hasBody ? planBody(ctx.planBody()) : BodyTerm.EMPTY;
-            return new PlanTerm(new Plan(label, trigger, context, body, where(ctx)));
+            Term body = hasBody ? planBody(ctx.planBody()) : BodyTerm.EMPTY;
+            if (body instanceof BodyTerm b && b.steps().size() == 1 && b.steps().get(0).kind() == BodyStep.Kind.ACTION
+                    && b.steps().get(0).term() instanceof Var v) {
+                body = v; // <- B: the whole body is a variable
+            }
+            return new PlanTerm(label, trigger, context, body, where(ctx));
         }
         if (ctx.planBody() == null) {
             return BodyTerm.EMPTY;

@@ -59,6 +59,14 @@ public final class Mas2jReader {
                 for (Mas2jParser.AgentDeclContext d : a.agentDecl()) {
                     agents.add(agent(d));
                 }
+            } else if (s instanceof Mas2jParser.InfrastructureContext inf) {
+                String name = inf.ID().getText();
+                if (!name.equalsIgnoreCase("Local")) {
+                    // running another infrastructure as Local would silently change the system
+                    throw new AslSyntaxException(List.of(new SyntaxError(new SourceInfo(file.toString(),
+                            inf.getStart().getLine(), inf.getStart().getCharPositionInLine() + 1),
+                            "infrastructure '" + name + "' is not supported: jacabot runs the Local infrastructure only")));
+                }
             } else if (s instanceof Mas2jParser.AslSourcePathContext p) {
                 p.STRING().forEach(t -> sourcePath.add(dir.resolve(unquote(t.getText()))));
             }
@@ -67,10 +75,10 @@ public final class Mas2jReader {
     }
 
     private static MasProject.AgentSpec agent(Mas2jParser.AgentDeclContext d) {
-        String name = d.ID().getText();
+        String name = d.agentName().getText();
         String file = d.fileName() == null ? name + ".asl" : unquote(d.fileName().getText());
-        if (!Path.of(file).getFileName().toString().contains(".")) {
-            file += ".asl";   // Jason: `waiter waiter2 ...` runs waiter2.asl
+        if (!file.endsWith(".asl")) {
+            file = file + ".asl"; // Jason adds the extension: agents: bob bob_v2;
         }
         var options = new LinkedHashMap<String, String>();
         if (d.optionList() != null) {
@@ -87,7 +95,7 @@ public final class Mas2jReader {
                 agentClass = c.className().getText();
             }
         }
-        int n = d.NUMBER() == null ? 1 : Integer.parseInt(d.NUMBER().getText());
+        int n = d.NUMBER().isEmpty() ? 1 : Integer.parseInt(d.NUMBER(0).getText());
         return new MasProject.AgentSpec(name, file, options, arch, agentClass, n);
     }
 

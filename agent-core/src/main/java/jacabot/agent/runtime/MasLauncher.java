@@ -5,6 +5,7 @@ import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Term;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -68,7 +69,7 @@ public final class MasLauncher {
                 var parser = new AslParser(sourcePath);
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath);
-                    AgentProgram program = parser.parseFile(asl);
+                    AgentProgram program = withOptions(parser.parseFile(asl), spec, parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
@@ -89,6 +90,49 @@ public final class MasLauncher {
         } catch (IOException e) {
             throw new UserError(file + ": " + e.getMessage());
         }
+    }
+
+    /**
+     * The {@code beliefs="b(1), c"} and {@code goals="g"} options of a {@code .mas2j} agent add
+     * initial beliefs and goals, before the file's (as Jason 3.2.0 orders them).
+     */
+    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser)
+            throws AslSyntaxException {
+        String beliefs = spec.options().get("beliefs");
+        String goals = spec.options().get("goals");
+        if (beliefs == null && goals == null) {
+            return p;
+        }
+        var bs = new ArrayList<Object>();
+        var gs = new ArrayList<jacabot.agent.syntax.Literal>();
+        if (beliefs != null && !beliefs.isBlank()) {
+            for (Term t : termsOf(parser, beliefs)) {
+                bs.add(t);
+            }
+        }
+        bs.addAll(p.beliefs());
+        if (goals != null && !goals.isBlank()) {
+            for (Term t : termsOf(parser, goals)) {
+                gs.add((jacabot.agent.syntax.Literal) t);
+            }
+        }
+        gs.addAll(p.goals());
+        return new AgentProgram(p.file(), bs, gs, p.plans());
+    }
+
+    private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {
+        Term list = parser.parseTerm("[" + text + "]");
+        var out = new ArrayList<Term>();
+        if (list instanceof jacabot.agent.syntax.ListTerm l) {
+            for (Term t : l.elements()) {
+                if (!(t instanceof jacabot.agent.syntax.Literal)) {
+                    throw new AslSyntaxException(List.of(new jacabot.agent.parser.SyntaxError(
+                            jacabot.agent.syntax.SourceInfo.NONE, "'" + t + "' is not a literal in the option '" + text + "'")));
+                }
+                out.add(t);
+            }
+        }
+        return out;
     }
 
     /** Loads and runs until {@code .stopMAS}. */

@@ -65,6 +65,15 @@ public final class IntendedMeans {
         return sb.toString();
     }
 
+    /** {@return the steps still to run} */
+    public List<BodyStep> remainingSteps() {
+        var out = new java.util.ArrayList<BodyStep>();
+        for (StepList s = steps; s != null; s = s.next) {
+            out.add(s.head);
+        }
+        return out;
+    }
+
     /** {@return whether the current step is the last one} */
     public boolean isLastStep() {
         return steps != null && steps.next == null;

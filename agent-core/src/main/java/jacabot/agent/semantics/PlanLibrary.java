@@ -120,7 +120,8 @@ public final class PlanLibrary {
         if (!(pt.literal() instanceof Literal pl)) {
             return true; // a variable trigger, e.g. +!G
         }
-        return te.literal() instanceof Literal el && pl.samePredicate(el);
+        // a variable in the asked trigger ({+!_} for .relevant_plans) matches every plan
+        return !(te.literal() instanceof Literal el) || pl.samePredicate(el);
     }
 
     public List<Plan> plans() {

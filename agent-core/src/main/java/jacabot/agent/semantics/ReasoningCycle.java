@@ -82,7 +82,15 @@ final class ReasoningCycle {
                 return;
             }
             c.setSelectedEvent(se);
-            if (applyFindOp(se)) {
+            try {
+                if (applyFindOp(se)) {
+                    return;
+                }
+            } catch (StackOverflowError e) {
+                ag.warn("The context of a plan for " + se.trigger() + " recursed too deep: the event is dropped");
+                if (se.intention() != null) {
+                    ag.dropIntention(se.intention());
+                }
                 return;
             }
             // an irrelevant external event is discarded and another one selected
@@ -197,7 +205,12 @@ final class ReasoningCycle {
         c.setSelectedIntention(si);
         selectedDropped = false;
         selectedHeld = false;
-        exec.execute(si);
+        try {
+            exec.execute(si);
+        } catch (StackOverflowError e) {
+            // a too deep recursion (rules, terms) fails the intention, not the agent's thread
+            generateGoalDeletion(si, errorAnnots("stack_overflow", "the recursion went too deep"));
+        }
         c.setSelectedIntention(null);
         if (!selectedDropped) {
             applyClrInt(si);
@@ -283,6 +296,9 @@ final class ReasoningCycle {
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
+            if (topTrigger.isAchieveGoal() && topTrigger.isAddition()) {
+                generateGoalStateEvent(topIM, "achieved");
+            }
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
                 // a failure plan finished: drop the intended means up to the goal that failed
                 im = i.peek();
@@ -304,6 +320,21 @@ final class ReasoningCycle {
                     im.removeCurrentStep();
                 }
             }
+        }
+    }
+
+    /**
+     * Jason's goal-state meta-event {@code ^!g[state(S)]}: posted only when some plan listens to
+     * it, as an external event (its plans run in a new intention).
+     */
+    private void generateGoalStateEvent(IntendedMeans im, String state) {
+        if (!(im.unifier().apply(im.trigger().literal()) instanceof Literal goal)) {
+            return;
+        }
+        Trigger meta = new Trigger(Trigger.Op.GOAL_STATE, im.trigger().type(),
+                goal.addAnnot(Literal.of("state", Literal.atom(state))));
+        if (ag.planLibrary().hasCandidate(meta)) {
+            c.addEvent(new Event(meta, null));
         }
     }
 

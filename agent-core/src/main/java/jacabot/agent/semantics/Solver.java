@@ -1,6 +1,8 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.LogExpr;
 import jacabot.agent.syntax.NumberTerm;
@@ -42,6 +44,21 @@ public final class Solver {
         Term f = u.deref(formula);
         if (f instanceof Var) {
             return Collections.emptyIterator();
+        }
+        if (f instanceof jacabot.agent.syntax.AnnotatedVar av) {
+            Term value = u.apply(av);
+            if (!(value instanceof Literal)) {
+                // _[source(a)]: every belief with these annotations
+                var out = new ArrayList<Unifier>();
+                for (BeliefBase.Entry e : agent.beliefBase().all()) {
+                    Unifier c = u.copy();
+                    if (e.rule() == null && c.unifies(av, e.literal())) {
+                        out.add(c);
+                    }
+                }
+                return out.iterator();
+            }
+            f = value;
         }
         if (f instanceof Literal l) {
             // l.equals(TRUE) and l.equals(FALSE), without comparing every query's arguments
@@ -209,6 +226,19 @@ public final class Solver {
             Term decomposed = ListTerm.of(Literal.atom("default"), Literal.atom(l.functor()),
                     ListTerm.of(l.args()), ListTerm.of(l.annots()));
             return c.unifies(decomposed, y) ? single(c) : Collections.emptyIterator();
+        }
+        if (x instanceof PlanTerm p) {
+            // Jason's plan is the structure plan(Label, Trigger, Context, Body)
+            Term label = p.label() == null ? new Var("_", Long.MIN_VALUE) : p.label();
+            Term decomposed = ListTerm.of(label, new TriggerTerm(p.trigger()), p.contextOrTrue(), p.body());
+            return c.unifies(decomposed, y) ? single(c) : Collections.emptyIterator();
+        }
+        if (x instanceof Var && y instanceof ListTerm list && list.elements().size() == 4
+                && list.elements().get(1) instanceof TriggerTerm tt) {
+            List<Term> parts = list.elements();
+            Term context = parts.get(2).equals(Literal.TRUE) ? null : parts.get(2);
+            var built = new PlanTerm(parts.get(0), tt.trigger(), context, parts.get(3), null);
+            return c.unifies(x, built) ? single(c) : Collections.emptyIterator();
         }
         if (x instanceof Var && y instanceof ListTerm list) {
             List<Term> parts = list.elements();

@@ -9,6 +9,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.LogExpr;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.RelExpr;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TriggerTerm;
@@ -162,8 +163,19 @@ public final class Unifier {
             }
             return new BodyTerm(steps);
         }
-        if (t instanceof PlanTerm) {
-            return t;
+        if (t instanceof PlanTerm p) {
+            return new PlanTerm(p.label() == null ? null : apply(p.label()),
+                    p.trigger().withLiteral(apply(p.trigger().literal())),
+                    p.context() == null ? null : apply(p.context()), apply(p.body()), p.source());
+        }
+        if (t instanceof AnnotatedVar av) {
+            Term d = deref(av.var());
+            List<Term> annots = applyAll(av.annots());
+            if (d instanceof Var dv) {
+                return new AnnotatedVar(dv, annots);
+            }
+            Term value = apply(d);
+            return value instanceof Literal l ? l.addAnnots(annots) : value;
         }
         return t;
     }
@@ -309,6 +321,12 @@ public final class Unifier {
         if (b instanceof ArithExpr || b instanceof ArithFunction) {
             b = apply(b);
         }
+        if (a instanceof AnnotatedVar ava) {
+            return unifyAnnotatedVar(ava, b, true);
+        }
+        if (b instanceof AnnotatedVar avb) {
+            return unifyAnnotatedVar(avb, a, false);
+        }
         if (a instanceof NumberTerm na) {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
@@ -332,6 +350,12 @@ public final class Unifier {
             return b instanceof LogExpr eb && ea.op() == eb.op() && unify(ea.left(), eb.left())
                     && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right()));
         }
+        if (a instanceof PlanTerm pa) {
+            return b instanceof PlanTerm pb && unifyPlans(pa, pb);
+        }
+        if (a instanceof BodyTerm ba) {
+            return b instanceof BodyTerm bb && unifyBodies(ba.steps(), bb.steps());
+        }
         if (a instanceof TriggerTerm ta) {
             return b instanceof TriggerTerm tb && ta.trigger().op() == tb.trigger().op()
                     && ta.trigger().type() == tb.trigger().type()
@@ -342,6 +366,92 @@ public final class Unifier {
                     && (ea.right() == null ? eb.right() == null : eb.right() != null && unify(ea.right(), eb.right()));
         }
         return a.equals(b);
+    }
+
+    /**
+     * {@code V[a1..an]} and a literal: the literal has (at least) those annotations and V is the
+     * literal without its annotations. {@code left} tells on which side the annotated variable was (annotations of the
+     * left term must be found in the right one).
+     */
+    private boolean unifyAnnotatedVar(AnnotatedVar av, Term other, boolean left) {
+        Term d = deref(av.var());
+        if (!(d instanceof Var v)) {
+            Term value = apply(av);
+            return left ? unify(value, other) : unify(other, value);
+        }
+        if (other instanceof AnnotatedVar o) {
+            return unify(v, o.var());
+        }
+        if (!(other instanceof Literal l)) {
+            return false;
+        }
+        if (left && !subsetAnnots(av.annots(), l.annots())) {
+            return false;
+        }
+        if (!left && !subsetAnnots(l.annots(), av.annots())) {
+            return false;
+        }
+        // as Jason, the variable stands for the literal; the annotations were matched apart
+        bindings.put(v, l.withoutAnnots());
+        return true;
+    }
+
+    private boolean unifyPlans(PlanTerm a, PlanTerm b) {
+        if (a.trigger().op() != b.trigger().op() || a.trigger().type() != b.trigger().type()) {
+            return false;
+        }
+        if (a.label() != null && b.label() != null && !unify(a.label(), b.label())) {
+            return false;
+        }
+        return unify(a.trigger().literal(), b.trigger().literal()) && unify(a.contextOrTrue(), b.contextOrTrue())
+                && unify(a.body(), b.body());
+    }
+
+    /** Step by step; a variable as the last step of one body stands for the rest of the other. */
+    private boolean unifyBodies(List<BodyStep> a, List<BodyStep> b) {
+        for (int i = 0; ; i++) {
+            if (i == a.size() || i == b.size()) {
+                // { T; R } and { a }: R is the empty rest
+                if (i == a.size() - 1 && isVarStep(a.get(i))) {
+                    return unify(a.get(i).term(), BodyTerm.EMPTY);
+                }
+                if (i == b.size() - 1 && isVarStep(b.get(i))) {
+                    return unify(BodyTerm.EMPTY, b.get(i).term());
+                }
+                return a.size() == b.size();
+            }
+            BodyStep sa = a.get(i);
+            BodyStep sb = b.get(i);
+            if (i == a.size() - 1 && isVarStep(sa) && b.size() >= a.size() && a.size() > 1) {
+                return unify(sa.term(), new BodyTerm(b.subList(i, b.size())));
+            }
+            if (i == b.size() - 1 && isVarStep(sb) && a.size() >= b.size() && b.size() > 1) {
+                return unify(new BodyTerm(a.subList(i, a.size())), sb.term());
+            }
+            if (isVarStep(sa) && !isAction(sb)) {
+                if (!unify(sa.term(), new BodyTerm(List.of(sb)))) {
+                    return false;
+                }
+            } else if (isVarStep(sb) && !isAction(sa)) {
+                if (!unify(new BodyTerm(List.of(sa)), sb.term())) {
+                    return false;
+                }
+            } else if (isVarStep(sa) || isVarStep(sb)) {
+                if (!unify(sa.term(), sb.term())) {
+                    return false;
+                }
+            } else if (sa.kind() != sb.kind() || !unify(sa.term(), sb.term())) {
+                return false;
+            }
+        }
+    }
+
+    private static boolean isAction(BodyStep s) {
+        return s.kind() == BodyStep.Kind.ACTION || s.kind() == BodyStep.Kind.INTERNAL_ACTION;
+    }
+
+    private boolean isVarStep(BodyStep s) {
+        return s.kind() == BodyStep.Kind.ACTION && deref(s.term()) instanceof Var;
     }
 
     /** Each annotation of {@code sub} unifies with some annotation of {@code sup} (greedy, as Jason). */

@@ -16,8 +16,9 @@ final class Abolish extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        Literal b = literal(args[0]);
-        for (BeliefBase.Entry e : ag.beliefBase().candidates(b)) {
+        Term b = args[0];
+        var entries = b instanceof jacabot.agent.syntax.AnnotatedVar ? ag.beliefBase().all() : ag.beliefBase().candidates(literal(b));
+        for (BeliefBase.Entry e : entries) {
             if (e.rule() == null && un.copy().unifies(b, e.literal())) {
                 if (ag.beliefBase().removeEntry(e.literal())) {
                     ag.addExternalEvent(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, e.literal()));

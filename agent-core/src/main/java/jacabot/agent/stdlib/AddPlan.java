@@ -24,7 +24,11 @@ final class AddPlan extends DefaultInternalAction {
         for (Term t : items) {
             Plan p;
             if (t instanceof PlanTerm pt) {
-                p = pt.plan();
+                try {
+                    p = pt.toPlan();
+                } catch (IllegalArgumentException e) {
+                    throw IaException.wrongArguments(name(), e.getMessage());
+                }
             } else if (t instanceof StringTerm s) {
                 try {
                     p = ag.parser().parsePlan(s.value());

@@ -23,7 +23,7 @@ final class RelevantPlans extends DefaultInternalAction {
         var labels = new java.util.ArrayList<Term>();
         for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
             if (ag.newUnifier().unifies(p.trigger().literal(), tt.trigger().literal())) {
-                plans.add(new PlanTerm(p));
+                plans.add(jacabot.agent.semantics.Renamer.renameApart(new PlanTerm(p), ag)); // its variables are its own
                 labels.add(p.label());
             }
         }

@@ -13,6 +13,10 @@ public final class Stdlib {
     public static Map<String, InternalAction> defaults() {
         var map = new LinkedHashMap<String, InternalAction>();
         put(map, new Abolish());
+        put(map, new Type());
+        put(map, new At());
+        put(map, new IntentionIa());
+        put(map, new Log());
         put(map, new AddAnnot());
         put(map, new AddPlan());
         put(map, new AllNames());

@@ -8,7 +8,7 @@ import jacabot.agent.syntax.Term;
 /** {@code .stopMAS}: stops the multi-agent system. */
 final class StopMAS extends DefaultInternalAction {
     StopMAS() {
-        super(".stopMAS", 0, 1);
+        super(".stopMAS", 0, 2); // (Deadline, ExitCode) are accepted; the run stops at once
     }
 
     @Override

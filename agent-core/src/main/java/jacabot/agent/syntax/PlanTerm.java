@@ -2,26 +2,82 @@ package jacabot.agent.syntax;
 
 import java.util.function.Consumer;
 
-/** A plan used as a term, e.g. an argument of {@code .add_plan}. */
-public record PlanTerm(Plan plan) implements Term {
+/**
+ * A plan used as a term, {@code { @L +!g : C <- B }}: its label, context and body may be
+ * variables, so that plan terms unify with the plans of a library (Jason's {@code Plan} is a
+ * structure {@code plan(Label, Trigger, Context, Body)}).
+ *
+ * @param label   null, a literal or a variable
+ * @param context null (true), or a formula, or a variable
+ * @param body    a {@link BodyTerm} or a variable
+ */
+public record PlanTerm(Term label, Trigger trigger, Term context, Term body, SourceInfo source) implements Term {
+
+    public PlanTerm(Plan p) {
+        this(p.label(), p.trigger(), p.context(), p.body(), p.source());
+    }
+
+    /** {@return the plan this term describes} @throws IllegalArgumentException when a part is unbound */
+    public Plan toPlan() {
+        Literal l;
+        if (label == null || label instanceof Var) {
+            l = null;
+        } else if (label instanceof Literal lit) {
+            l = lit;
+        } else {
+            throw new IllegalArgumentException("the label of " + this + " is not a literal");
+        }
+        if (!(body instanceof BodyTerm b)) {
+            throw new IllegalArgumentException("the body of " + this + " is unbound");
+        }
+        return new Plan(l, trigger, context, b, source);
+    }
+
+    /** {@return the context, {@code true} when there is none} */
+    public Term contextOrTrue() {
+        return context == null ? Literal.TRUE : context;
+    }
+
     @Override
     public boolean isGround() {
-        return false;
+        return (label == null || label.isGround()) && trigger.literal().isGround()
+                && (context == null || context.isGround()) && body.isGround();
     }
 
     @Override
     public void collectVars(Consumer<Var> sink) {
-        plan.trigger().literal().collectVars(sink);
-    }
-
-    @Override
-    public String toString() {
-        String s = plan.toString();
-        return "{ " + s.substring(0, s.length() - 1) + " }";
+        if (label != null) {
+            label.collectVars(sink);
+        }
+        trigger.literal().collectVars(sink);
+        if (context != null) {
+            context.collectVars(sink);
+        }
+        body.collectVars(sink);
     }
 
     @Override
     public <R> R accept(TermVisitor<R> v) {
         return v.visitPlan(this);
+    }
+
+    @Override
+    public String toString() {
+        var out = new StringBuilder("{ ");
+        if (label != null) {
+            out.append('@').append(label).append(' ');
+        }
+        out.append(trigger);
+        if (context != null) {
+            out.append(" : ").append(context);
+        }
+        if (body instanceof BodyTerm b) {
+            if (!b.steps().isEmpty()) {
+                out.append(" <- ").append(b.bodyText());
+            }
+        } else {
+            out.append(" <- ").append(body);
+        }
+        return out.append(" }").toString();
     }
 }

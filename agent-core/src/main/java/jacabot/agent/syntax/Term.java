@@ -8,7 +8,7 @@ package jacabot.agent.syntax;
  * literals (by functor, negation, arguments and annotations), then variables.
  */
 public sealed interface Term extends Comparable<Term>
-        permits Literal, NumberTerm, StringTerm, Var, ListTerm, OperatorExpr, ArithFunction,
+        permits Literal, NumberTerm, StringTerm, Var, AnnotatedVar, ListTerm, OperatorExpr, ArithFunction,
                 TriggerTerm, BodyTerm, PlanTerm, ObjectTerm {
 
     /** {@return whether the term has no variable} */

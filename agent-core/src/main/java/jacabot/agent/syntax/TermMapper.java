@@ -87,8 +87,19 @@ public abstract class TermMapper implements TermVisitor<Term> {
     }
 
     @Override
+    public Term visitAnnotatedVar(AnnotatedVar t) {
+        Term v = visitVar(t.var());
+        List<Term> annots = mapAll(t.annots());
+        if (v instanceof Var nv) {
+            return new AnnotatedVar(nv, annots);
+        }
+        return v instanceof Literal l ? l.addAnnots(annots) : v;
+    }
+
+    @Override
     public Term visitPlan(PlanTerm p) {
-        return p;
+        return new PlanTerm(p.label() == null ? null : map(p.label()), p.trigger().withLiteral(map(p.trigger().literal())),
+                p.context() == null ? null : map(p.context()), map(p.body()), p.source());
     }
 
     @Override

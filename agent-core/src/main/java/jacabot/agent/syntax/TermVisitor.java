@@ -13,6 +13,8 @@ public interface TermVisitor<R> {
 
     R visitVar(Var t);
 
+    R visitAnnotatedVar(AnnotatedVar t);
+
     R visitEmptyList(ListTerm.Empty t);
 
     R visitCons(ListTerm.Cons t);

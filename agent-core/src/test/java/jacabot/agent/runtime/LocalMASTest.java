@@ -118,4 +118,30 @@ class LocalMASTest {
         launched.runUntilQuiescent(1000);
         assertTrue(lines().containsAll(List.of("[w1] w1", "[w2] w2", "[w3] w3", "[solo] solo")), lines().toString());
     }
+
+    /** Options beliefs= and goals=, a file named without .asl, and the host after #N (Jason 3.2.0 prints the same lines). */
+    @Test
+    void mas2jAgentOptionsAddBeliefsAndGoals(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("ag.asl"), "+!g : b(X) <- .print(X, \" \", c).\n!h.\n+!h : b(Y) <- .print(h, Y).\n");
+        Files.writeString(dir.resolve("p.mas2j"), """
+                MAS m {
+                    infrastructure: Local
+                    agents: ag [beliefs="b(1), c", goals="g"] #2; other ag at "localhost" #1;
+                }
+                """);
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        launched.runUntilQuiescent(1000);
+        var got = new java.util.ArrayList<>(lines());
+        assertEquals(List.of("[ag1] 1 c", "[ag1] h1"), got.stream().filter(l -> l.startsWith("[ag1]")).collect(Collectors.toList()));
+        assertTrue(got.contains("[ag2] 1 c") && got.contains("[ag2] h1"), got.toString());
+        assertTrue(got.stream().noneMatch(l -> l.startsWith("[other] 1")), "other has no option beliefs: " + got);
+    }
+
+    @Test
+    void anInfrastructureOtherThanLocalIsRefused(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n infrastructure: Jade\n agents: a;\n}\n");
+        var e = org.junit.jupiter.api.Assertions.assertThrows(jacabot.agent.parser.AslSyntaxException.class,
+                () -> Mas2jReader.read(dir.resolve("p.mas2j")));
+        assertTrue(e.getMessage().contains("infrastructure 'Jade' is not supported"), e.getMessage());
+    }
 }

@@ -1,0 +1,37 @@
+package jacabot.agent.syntax;
+
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * A variable with annotations, {@code P[error(E)]} or {@code _[source(ag)]}: it stands for a
+ * literal that has (at least) these annotations, as Jason's annotated {@code VarTerm}.
+ */
+public record AnnotatedVar(Var var, List<Term> annots) implements Term {
+    public AnnotatedVar {
+        annots = List.copyOf(annots);
+    }
+
+    @Override
+    public boolean isGround() {
+        return false;
+    }
+
+    @Override
+    public void collectVars(Consumer<Var> sink) {
+        sink.accept(var);
+        annots.forEach(a -> a.collectVars(sink));
+    }
+
+    @Override
+    public <R> R accept(TermVisitor<R> v) {
+        return v.visitAnnotatedVar(this);
+    }
+
+    @Override
+    public String toString() {
+        var sb = new StringBuilder(var.toString()).append('[');
+        TermOrder.join(sb, annots);
+        return sb.append(']').toString();
+    }
+}
