@@ -92,7 +92,9 @@ class CommandFuzzTest {
                             peer.commands.write(2000 + i, 0, Command.of(CommandCode.ENABLE_SENSOR, r.nextInt(200) - 50, -r.nextInt(1000)));
                         }
                         Uplink f;
-                        while ((f = peer.frames.poll(20, TimeUnit.MILLISECONDS)) != null) {
+                        // a controller that keeps streaming would keep this loop going: drain for 200 ms at most
+                        long drainEnd = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(200);
+                        while (System.nanoTime() < drainEnd && (f = peer.frames.poll(20, TimeUnit.MILLISECONDS)) != null) {
                             if (f instanceof Uplink.Batch b) {
                                 for (SensorInfo info : b.readings()) {
                                     if (info.getId() == SensorKind.WHEEL_SPEEDS.id()) {
