@@ -75,8 +75,8 @@ class ArtifactSocketModeTest {
                 waitFor(() -> Boolean.TRUE.equals(properties.get("connected")));
                 var frames = new ObjectOutputStream(new BufferedOutputStream(s.getOutputStream()));
                 // a gripper reading with an empty array: it used to kill the serving loop
-                batch(frames, 0, new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[0]));
-                batch(frames, 1, new SensorInfo(SensorKind.GRIP_PRESENCE.id(), 1.0));
+                RawFrames.batch(frames, 0, new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[0]));
+                RawFrames.batch(frames, 1, new SensorInfo(SensorKind.GRIP_PRESENCE.id(), 1.0));
                 frames.writeByte(Uplink.STEP_MARKER);
                 frames.writeLong(1);
                 frames.writeLong(40);
@@ -99,17 +99,5 @@ class ArtifactSocketModeTest {
         } finally {
             LinkSecret.resetUserDefault();
         }
-    }
-
-    private static void batch(ObjectOutputStream out, long step, SensorInfo... readings) throws Exception {
-        out.writeByte(Uplink.BATCH);
-        out.writeLong(step);
-        out.writeLong(40 * step);
-        out.writeLong(0);
-        out.writeInt(readings.length);
-        for (SensorInfo r : readings) {
-            out.writeObject(r);
-        }
-        out.flush();
     }
 }

@@ -54,17 +54,6 @@ class LinkGuardsTest {
         return new ObjectOutputStream(new BufferedOutputStream(s.getOutputStream()));
     }
 
-    private static void batch(ObjectOutputStream out, long step, SensorInfo... readings) throws IOException {
-        out.writeByte(Uplink.BATCH);
-        out.writeLong(step);
-        out.writeLong(40 * step);
-        out.writeLong(0);
-        out.writeInt(readings.length);
-        for (SensorInfo r : readings) {
-            out.writeObject(r);
-        }
-        out.flush();
-    }
 
     private static boolean reading(LinkEvent e, SensorKind kind) {
         return e instanceof LinkEvent.Reading && ((LinkEvent.Reading) e).info().getId() == kind.id();
@@ -77,15 +66,15 @@ class LinkGuardsTest {
             await(m, e -> e instanceof LinkEvent.Connected);
             var out = frames(s);
             // the audit's reading: filter-legal, an empty gripper array (it killed the serving loop)
-            batch(out, 0, new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[0]));
-            batch(out, 1, new SensorInfo(SensorKind.CENTRAL_DISTANCE.id(), 120.0));
+            RawFrames.batch(out, 0, new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[0]));
+            RawFrames.batch(out, 1, new SensorInfo(SensorKind.CENTRAL_DISTANCE.id(), 120.0));
             var good = (LinkEvent.Reading) await(m, e -> reading(e, SensorKind.CENTRAL_DISTANCE));
             assertEquals(1, good.step(), "the bad batch went, the next one came through");
             assertEquals(1, m.badFrames());
             assertTrue(log.stream().anyMatch(l -> l.contains("GRIPPER_POSITIONS: 0 values, expected 2")), log.toString());
-            batch(out, 2, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), Double.NaN));
-            batch(out, 3, new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {1, 2}));
-            batch(out, 4, new SensorInfo(SensorKind.GPS.id(), 5.0)); // a scalar where a triple belongs
+            RawFrames.batch(out, 2, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), Double.NaN));
+            RawFrames.batch(out, 3, new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {1, 2}));
+            RawFrames.batch(out, 4, new SensorInfo(SensorKind.GPS.id(), 5.0)); // a scalar where a triple belongs
             var gone = (LinkEvent.Disconnected) await(m, e -> e instanceof LinkEvent.Disconnected);
             assertTrue(gone.reason().startsWith("more than 3 bad frames"), gone.reason());
         }
@@ -100,8 +89,8 @@ class LinkGuardsTest {
             Handshake.asController(new DataInputStream(s.getInputStream()), out, hello, MiddlewareLinkTest.SECRET);
             await(m, e -> e instanceof LinkEvent.Connected);
             var frames = frames(s);
-            batch(frames, 0, new SensorInfo(SensorKind.BATTERY.id(), 10.0));
-            batch(frames, 1, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), 10.0));
+            RawFrames.batch(frames, 0, new SensorInfo(SensorKind.BATTERY.id(), 10.0));
+            RawFrames.batch(frames, 1, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), 10.0));
             assertEquals(1, ((LinkEvent.Reading) await(m, e -> e instanceof LinkEvent.Reading)).step());
             assertTrue(log.stream().anyMatch(l -> l.contains("sensor id 30 was not declared")), log.toString());
         }
@@ -199,7 +188,7 @@ class LinkGuardsTest {
                 await(m, e -> e instanceof LinkEvent.Connected);
                 var out = frames(s);
                 for (int i = 0; i < 60; i++) { // 60 objects, never a restart
-                    batch(out, i, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
+                    RawFrames.batch(out, i, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
                 }
                 var gone = (LinkEvent.Disconnected) await(m, e -> e instanceof LinkEvent.Disconnected);
                 assertTrue(gone.reason().contains("more than 50 readings without a stream restart"), gone.reason());
@@ -214,8 +203,8 @@ class LinkGuardsTest {
                     many[i] = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[902 + i]); // distinct objects
                 }
                 try {
-                    batch(out, 0, big);
-                    batch(out, 1, many); // each object is allowed, the batch is not
+                    RawFrames.batch(out, 0, big);
+                    RawFrames.batch(out, 1, many); // each object is allowed, the batch is not
                 } catch (java.net.SocketException e) {
                     // the middleware hung up first
                 }
