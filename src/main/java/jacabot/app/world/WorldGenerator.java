@@ -30,6 +30,11 @@ public final class WorldGenerator {
     public record Generated(String json, WorldSpec spec) {
     }
 
+    /** The obstacles' share of the floor: sparse to dense. */
+    static final double MIN_DENSITY = 0.01, MAX_DENSITY = 0.06;
+    /** The narrowest passage between two obstacles or an obstacle and a wall, metres. */
+    static final double MIN_GAP = 0.12;
+
     private final Experiment experiment;
     private final long seed;
     private double maxSide = 3.0;
@@ -56,11 +61,14 @@ public final class WorldGenerator {
 
     /** {@return the world text, checked by the loader} */
     public Generated generate() {
-        random = new SplittableRandom(seed * 0x9E3779B97F4A7C15L + experiment.ordinal());
+        // one draw mixes the seed: SplittableRandom(seed * gamma) made seed k's second draw seed k+1's first
+        random = new SplittableRandom(new SplittableRandom(seed ^ (experiment.ordinal() + 1L) * 0xD1B54A32D192ED03L).nextLong());
         placed.clear();
         free.clear();
         model = experiment == Experiment.OBSTACLE_AVOIDANCE ? RobotModel.MYBOT : RobotModel.KHEPERA;
-        gap = 2 * model.radius() + 0.03;
+        // passages at least twice the Khepera's width: a gap the robot's own sensors read as a wall on
+        // both sides is a dead end, not a passage
+        gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
         double width = round2(uniform(1.0, maxSide));
         double depth = round2(uniform(1.0, maxSide));
         halfW = width / 2;
@@ -113,8 +121,9 @@ public final class WorldGenerator {
             cylinders.add("{ \"id\": \"" + id + "\", \"x\": " + num(p[0]) + ", \"z\": " + num(p[1]) + ", \"color\": \"red\" }");
         }
 
-        // obstacles: density = the share of the floor they cover, sparse (2 %) to dense (12 %)
-        double density = uniform(0.02, 0.12);
+        // obstacles: density = the share of the floor they cover, sparse (1 %) to dense (6 %, three
+        // times the default worlds' 2 %; 12 % made mazes of 80 boxes that no controller crossed)
+        double density = uniform(MIN_DENSITY, MAX_DENSITY);
         double target = density * width * depth;
         double covered = 0;
         List<String> boxes = new ArrayList<>();

@@ -83,4 +83,19 @@ class WorldGeneratorTest {
         assertNull(new WorldGenerator(Experiment.OBSTACLE_AVOIDANCE, 1).generate().spec().storage());
         assertNotNull(new WorldGenerator(Experiment.NAVIGATION, 1).maxSide(1).generate().spec().storage());
     }
+
+    /** Seeds k and k+1 once shared their draws, shifted by one: world k+1's width was world k's depth. */
+    @Test
+    void consecutiveSeedsAreIndependent() {
+        int shifted = 0;
+        WorldSpec previous = new WorldGenerator(Experiment.NAVIGATION, 1).generate().spec();
+        for (long seed = 2; seed <= 30; seed++) {
+            WorldSpec w = new WorldGenerator(Experiment.NAVIGATION, seed).generate().spec();
+            if (w.arena().width() == previous.arena().depth()) {
+                shifted++;
+            }
+            previous = w;
+        }
+        assertTrue(shifted <= 2, shifted + " of 29 worlds have the previous seed's depth as width");
+    }
 }
