@@ -55,6 +55,13 @@ sweepSpeed(80).
 // (issue 13) travel to a target at this wheel speed, not the thesis' forward (50): big arenas
 travelSpeed(80).
 storageClearance(0.22).
+// (issue 13) far sight: sightings at most every sightingEvery ms; the camera's field of view;
+// the approach's wheel speed; how long one cylinder is chased, and then ignored
+sightingEvery(400).
+cameraFov(60).
+approachSpeed(40).
+homingGiveUp(40000).
+ignoreFor(15000).
 
 /* Initial goals */
 
@@ -76,6 +83,7 @@ storageClearance(0.22).
        ?stuckWindows(T1, R1, T2, R2); progressWindows(T1, R1, T2, R2);
        .system_time(Now); +lastFound(Now); !!searchClock;
        ?storagePoint(X, Z); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z);
+       ?sightingEvery(E); ?cameraFov(F); scanForCylinders(E, F); ?storageClearance(SC); ignoreCylindersNear(X, Z, SC);
        -+reachCylinder(false);
        ?threshold(T); setThreshold(T);
        acquireData;
@@ -146,7 +154,7 @@ storageClearance(0.22).
 @noAccess1[atomic]
 +noAccess : not delivering & not picking
     <- +gettingOut; .print("Too close to storage area!! Go away!");
-       stop; .wait(40); turnAround; .wait(2000); forward; .wait(1500); if (searching) { !nextWaypoint }.
+       stop; .wait(40); !leaveStorage; if (searching) { !nextWaypoint }.
 +noAccess : delivering & firstTime
     <- -firstTime; +insideArea; println("Almost reached"); stopAcquireDistance.
 
@@ -181,6 +189,9 @@ storageClearance(0.22).
     <- .wait("+reachCylinder(false)"); !move(N).
 +!move(N) : picking
     <- .wait("-picking"); .wait(50); !move(N).
+// (issue 13) going to a cylinder seen far off, while it stays in sight
++!move(N) : homing(_) & lastSighted(S) & .system_time(T) & T - S < 1500 <- .wait(300).
++!move(N) : homing(_) <- -homing(_).
 // (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
 +!move(N) : obstacle(true) & delta(D) <- +avoiding; stop; !avoid(D).
 // (issue 13) no cylinder for a while: sweep the arena instead of walking at random
@@ -204,7 +215,8 @@ storageClearance(0.22).
 
 +!go_ahead : picked(true)
     <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
-+!go_ahead <- println("Cylinder picking failed"); stop.
+// (issue 13) the listing stops here for good, "picking" still believed: every move waited for "-picking"
++!go_ahead <- println("Cylinder picking failed"); stop; open_grip; arm_up; -picking; +avoiding; !escape; -avoiding.
 
 /* Basic obstacle avoidance (Chapter 4 §1.2) */
 
@@ -222,6 +234,26 @@ storageClearance(0.22).
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
        -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
        open_grip; arm_up; !!searchClock; !!moving.
+
+/* Far sight (issue 13): the thesis sees a cylinder only when it is near (the camera's three
+   section means); the whole image shows one up to about 1.5 m away (not those in the storage
+   area: ignoreCylindersNear). Turn towards it and go closer, steering; the plans above take it
+   when it is near. */
+
++cylinderSighted(Off, _) : not picking & not delivering & not avoiding & reachCylinder(false) & not ignoring
+                           & not nearStorage & not insideArea
+    <- .system_time(T); -+lastSighted(T); !home(Off).
+
++!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
++!home(_) : homing(T0) & homingGiveUp(G) & .system_time(T) & T - T0 > G & ignoreFor(I)
+    <- println("The cylinder in sight cannot be reached: looking elsewhere");
+       -homing(_); +ignoring; +avoiding; !escape; -avoiding; .wait(I); -ignoring.
++!home(Off) <- !steerTo(Off).
+
+// turn on the spot when it is well to a side, else steer towards it on the way
++!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).
++!steerTo(Off) : Off < -12 & maxSpeed(M) <- setSpeeds(-M / 4, M / 4).
++!steerTo(Off) : approachSpeed(V) <- setSpeeds(V + Off, V - Off).
 
 /* Recovery (issue 13): bounded waits, escapes, steering, sweeping */
 
@@ -244,8 +276,17 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 +stuck : delivering & not avoiding
     <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
        +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.
+// near the storage area without a cylinder: away from it, not backwards into it
++stuck : nearStorage & not delivering & not avoiding
+    <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !leaveStorage; -avoiding; !nextWaypoint.
 +stuck : not avoiding
     <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding; !nextWaypoint.
+
+// (issue 13) replacement of the listing's "turnAround; .wait(2000); forward; .wait(1500)": away
+// from the storage point by the compass (a turn-around next to a box could face the area again)
++!leaveStorage : location(X, _, Z) & storagePoint(Sx, Sz)
+    <- computeAngle(Sx, Sz, X, Z, Away); -+desired(Away); !balance; forward; .wait(2000).
++!leaveStorage <- turnAround; .wait(2000); forward; .wait(1500).
 +stuck.
 
 // while delivering: re-align when the heading is off by more than 10 degrees

@@ -36,6 +36,13 @@ avoidTimeout(3000).
 escapeBack(1200).
 stuckWindows(14000, 0.03, 40000, 0.12).
 searchAfter(60000).
+// (issue 13) far sight: sightings at most every sightingEvery ms; the camera's field of view;
+// the approach's wheel speed; how long one cylinder is chased, and then ignored
+sightingEvery(400).
+cameraFov(60).
+approachSpeed(40).
+homingGiveUp(40000).
+ignoreFor(15000).
 
 !start.
 
@@ -53,6 +60,7 @@ searchAfter(60000).
 +!waitConnection : connected(true)
     <- println("Connection successful, waiting for sensor data");
        ?stuckWindows(T1, R1, T2, R2); progressWindows(T1, R1, T2, R2); .system_time(Now); +lastFound(Now);
+       ?sightingEvery(E); ?cameraFov(F); scanForCylinders(E, F);
        acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 
@@ -96,6 +104,9 @@ searchAfter(60000).
 +!move(N) : avoiding <- .wait("-avoiding"); !move(N).
 +!move(N) : reachCylinder(true) <- .wait("+reachCylinder(false)"); !move(N).
 +!move(N) : picking <- .wait("-picking"); .wait(50); !move(N).
+// (issue 13) going to a cylinder seen far off, while it stays in sight
++!move(N) : homing(_) & lastSighted(S) & .system_time(T) & T - S < 1500 <- .wait(300).
++!move(N) : homing(_) <- -homing(_).
 // (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
 +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !avoid(D).
 // (issue 13) no cylinder for a while: long straight legs in random directions
@@ -126,6 +137,24 @@ searchAfter(60000).
 +fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
        -picking; -avoiding; -+reachCylinder(false); open_grip; arm_up; !!moving.
+
+/* Far sight (issue 13): the thesis sees a cylinder only when it is near (the camera's three
+   section means); the whole image shows one up to about 1.5 m away. Turn towards it and go
+   closer, steering; the plans above take it when it is near. */
+
++cylinderSighted(Off, _) : not picking & not picked(true) & not avoiding & reachCylinder(false) & not ignoring
+    <- .system_time(T); -+lastSighted(T); !home(Off).
+
++!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
++!home(_) : homing(T0) & homingGiveUp(G) & .system_time(T) & T - T0 > G & ignoreFor(I)
+    <- println("The cylinder in sight cannot be reached: looking elsewhere");
+       -homing(_); +ignoring; +avoiding; !escape; -avoiding; .wait(I); -ignoring.
++!home(Off) <- !steerTo(Off).
+
+// turn on the spot when it is well to a side, else steer towards it on the way
++!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).
++!steerTo(Off) : Off < -12 & maxSpeed(M) <- setSpeeds(-M / 4, M / 4).
++!steerTo(Off) : approachSpeed(V) <- setSpeeds(V + Off, V - Off).
 
 /* Recovery (issue 13): bounded waits, escapes */
 

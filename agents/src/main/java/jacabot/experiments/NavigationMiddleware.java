@@ -80,9 +80,8 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
                 break;
             case COMPASS:
                 double[] n = info.getCoord();
-                double bearing = Math.toDegrees(Math.atan2(n[0], n[2])) - 90;
-                bearing = bearing < 0 ? bearing + 360 : bearing;
-                getObsProperty("orientation").updateValue(Math.round(bearing * 10) / 10.0);
+                noteCompass(n);
+                getObsProperty("orientation").updateValue(Math.round(orientation(n) * 10) / 10.0);
                 break;
             default:
                 super.onReading(info, kind);

@@ -41,6 +41,18 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private long[] windowMs = {6000, 30000};
     private double[] windowRadius = {0.04, 0.12};
     private final double[][] anchor = new double[2][];
+    // Far sight (issue 13): with scanForCylinders the whole camera image comes too, and a red run
+    // in it is signalled as cylinderSighted(Offset, Distance) every sightingEvery ms at most,
+    // unless it points into an area the agent excluded (a delivered cylinder in the storage area).
+    private boolean scanning;
+    private long sightingEvery = 400;
+    private long lastSightingMs = Long.MIN_VALUE / 2;
+    private double fov = 60;
+    private final java.util.List<double[]> excluded = new java.util.ArrayList<>();
+    /** The last GPS position (x, z) and compass heading (the thesis' orientation, degrees), when known. */
+    private double[] position;
+    private double heading = Double.NaN;
+
     /** How close to the storage point the robot may come without a cylinder (metres). */
     static final double ACCESS_RADIUS = 0.15;
     /** Sets the progress windows: stuck if within {@code r1} metres for {@code t1} ms, or within {@code r2} for {@code t2}. */
@@ -50,7 +62,65 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         windowRadius = new double[] {r1, r2};
     }
 
+    /**
+     * Sends the whole camera image too and signals far cylinders (issue 13), at most one signal per
+     * {@code everyMs}; {@code fovDegrees} is the camera's field of view.
+     */
+    @OPERATION
+    void scanForCylinders(double everyMs, double fovDegrees) {
+        scanning = true;
+        sightingEvery = Math.max(40, (long) everyMs);
+        fov = fovDegrees;
+        send(Command.enableSensor(SensorKind.CAMERA_IMAGE, 40));
+    }
+
+    /** Cylinders seen inside this circle are not signalled (e.g. those already delivered). */
+    @OPERATION
+    void ignoreCylindersNear(double x, double z, double radius) {
+        excluded.add(new double[] {x, z, radius});
+    }
+
+    /** The compass heading as the thesis' orientation: degrees, from north-vector {@code n}. */
+    static double orientation(double[] n) {
+        double bearing = Math.toDegrees(Math.atan2(n[0], n[2])) - 90;
+        return bearing < 0 ? bearing + 360 : bearing;
+    }
+
+    protected void noteCompass(double[] n) {
+        heading = orientation(n);
+    }
+
+    private void sight(int[] image) {
+        if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
+                || simTimeMs() - lastSightingMs < sightingEvery) {
+            return;
+        }
+        CylinderSighting.find(image, fov).filter(s -> !excluded(s)).ifPresent(s -> {
+            lastSightingMs = simTimeMs();
+            signal("cylinderSighted", Math.round(s.offset() * 10) / 10.0, Math.round(s.distance() * 100) / 100.0);
+        });
+    }
+
+    /** Whether the sighting's ray meets an excluded area about as far as the cylinder seems to be. */
+    private boolean excluded(CylinderSighting s) {
+        if (position == null || Double.isNaN(heading)) {
+            return false;
+        }
+        double a = Math.toRadians(heading + s.offset());
+        double ux = Math.cos(a), uz = Math.sin(a);
+        for (double[] e : excluded) {
+            double dx = e[0] - position[0], dz = e[1] - position[1];
+            double along = dx * ux + dz * uz;
+            double across = Math.abs(dx * uz - dz * ux);
+            if (Math.hypot(dx, dz) < e[2] || (across < e[2] && along > 0.5 * s.distance() - 0.1 && along < 2 * s.distance() + 0.1)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     protected void checkProgress(double x, double z) {
+        position = new double[] {x, z};
         long now = simTimeMs();
         for (int k = 0; k < 2; k++) {
             double[] a = anchor[k];
@@ -142,6 +212,12 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
 
             case GPS:
                 checkProgress(info.getCoord()[0], info.getCoord()[2]);
+                break;
+            case COMPASS:
+                noteCompass(info.getCoord());
+                break;
+            case CAMERA_IMAGE:
+                sight(info.getIntValues());
                 break;
             case GRIP_FORCE:
                 boolean nowHolding = info.getVal() < HOLD_FORCE;

@@ -105,6 +105,37 @@ class MiddlewareTest {
     }
 
     @Test
+    void farCylindersAreSignalledOnlyWhenScanningAtMostOncePerPeriodAndNotInAnIgnoredArea() throws Exception {
+        var b = new Bench(NavigationMiddleware.class);
+        var image = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), CylinderSightingTest.image(0xC81E1E, 31, 33));
+        // at the origin, orientation 0 (facing +x: north vector {1, 0, 0}); the cylinder straight ahead
+        var gps = new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0);
+        var compass = new SensorInfo(SensorKind.COMPASS.id(), 1.0, 0.0, 0.0);
+        b.deliver(gps, compass, image);
+        assertTrue(b.signals.isEmpty(), "not scanning: " + b.signals);
+        b.op("scanForCylinders", new Object[] {400.0, 60.0});
+        b.deliver(gps, compass, image);
+        b.deliver(gps, compass, image);
+        assertEquals(1, b.signals.size(), "at most one per 400 ms: " + b.signals);
+        assertTrue(b.signals.get(0).startsWith("cylinderSighted[0.0,"), b.signals.toString());
+        for (int i = 0; i < 10; i++) {
+            b.deliver(gps, compass, image);
+        }
+        assertEquals(2, b.signals.size(), "again after 400 ms: " + b.signals);
+        b.op("ignoreCylindersNear", new Object[] {0.75, 0.0, 0.2});
+        for (int i = 0; i < 20; i++) {
+            b.deliver(gps, compass, image);
+        }
+        assertEquals(2, b.signals.size(), "the cylinder ahead lies in the ignored area: " + b.signals);
+        b.op("ignoreCylindersNear", new Object[] {0.0, 0.75, 0.2}); // off to a side: changes nothing
+        var other = new Bench(NavigationMiddleware.class);
+        other.op("scanForCylinders", new Object[] {400.0, 60.0});
+        other.op("ignoreCylindersNear", new Object[] {0.0, 0.75, 0.2});
+        other.deliver(gps, compass, image);
+        assertEquals(1, other.signals.size(), "an area off the line of sight hides nothing: " + other.signals);
+    }
+
+    @Test
     void gripForceMeansCaughtAndAFallIsSignalledForAPickedCylinder() throws Exception {
         var b = new Bench(ObjectPickingMiddleware.class);
         b.deliver(value(SensorKind.GRIP_FORCE, -40), new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {1, 1}),

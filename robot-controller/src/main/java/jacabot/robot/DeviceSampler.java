@@ -19,7 +19,7 @@ import java.util.Map;
  */
 final class DeviceSampler {
     private final Robot robot;
-    private final boolean cameraImage;
+    private boolean cameraImage; // whole images too: from the configuration, or asked for by enableSensor
     private final Map<SensorKind, DistanceSensor> distance = new EnumMap<>(SensorKind.class);
     private final Camera camera;
 
@@ -39,7 +39,7 @@ final class DeviceSampler {
     java.util.List<Integer> enableAll(int periodMs) {
         var ids = new java.util.ArrayList<Integer>();
         for (SensorKind k : SensorKind.values()) {
-            if (enable(k, periodMs)) {
+            if (toggle(k, periodMs)) { // not enable(): whole images only when configured or asked for
                 ids.add(k.id());
             }
         }
@@ -48,10 +48,24 @@ final class DeviceSampler {
 
     /** {@return whether the robot has a device for this kind (and it was enabled)} */
     boolean enable(SensorKind kind, int periodMs) {
-        return toggle(kind, periodMs);
+        if (kind == SensorKind.CAMERA_IMAGE && camera != null && camera.getSamplingPeriod() > 0) {
+            cameraImage = true; // the camera already runs: keep its period, add the whole image
+            return true;
+        }
+        boolean done = toggle(kind, periodMs);
+        if (done && kind == SensorKind.CAMERA_IMAGE) {
+            cameraImage = true;
+        }
+        return done;
     }
 
     boolean disable(SensorKind kind) {
+        if (kind == SensorKind.CAMERA_IMAGE) {
+            // the image only: the camera keeps serving its sections
+            boolean had = camera != null;
+            cameraImage = false;
+            return had;
+        }
         return toggle(kind, 0);
     }
 

@@ -1,0 +1,67 @@
+package jacabot.experiments;
+
+import java.util.Optional;
+
+/**
+ * A red cylinder seen far off in the whole camera image (issue 13): the widest run of columns
+ * holding a red pixel, by the thesis' red test ({@code r > 40}, red at least twice green and blue).
+ * The three section means of Chapter 4 §2.2 see a cylinder only within about 15 cm, where it
+ * fills a third of the image; one column of a 64-column image is under a degree, so a 2.5 cm
+ * cylinder shows from about a metre and a half.
+ *
+ * @param offset  degrees from the image's centre to the run's centre, positive to the right
+ * @param columns the run's width in columns
+ * @param distance a rough distance in metres from the apparent width (the cylinder's radius known)
+ */
+public record CylinderSighting(double offset, int columns, double distance) {
+    /** The experiments' cylinders: radius in metres. */
+    static final double CYLINDER_RADIUS = 0.0125;
+
+    /**
+     * {@return the widest red run of an image framed as {width, height, pixels...}, or empty}
+     *
+     * @param fov the camera's horizontal field of view, degrees
+     */
+    public static Optional<CylinderSighting> find(int[] framed, double fov) {
+        if (framed.length < 2) {
+            return Optional.empty();
+        }
+        int width = framed[0], height = framed[1];
+        if (width <= 0 || height <= 0 || framed.length != 2 + (long) width * height) {
+            return Optional.empty();
+        }
+        int bestFrom = -1, bestLength = 0, runFrom = -1;
+        for (int c = 0; c <= width; c++) {
+            boolean red = c < width && redColumn(framed, width, height, c);
+            if (red && runFrom < 0) {
+                runFrom = c;
+            } else if (!red && runFrom >= 0) {
+                if (c - runFrom > bestLength) {
+                    bestFrom = runFrom;
+                    bestLength = c - runFrom;
+                }
+                runFrom = -1;
+            }
+        }
+        if (bestLength == 0) {
+            return Optional.empty();
+        }
+        double perColumn = fov / width;
+        double centre = bestFrom + bestLength / 2.0;
+        double offset = (centre - width / 2.0) * perColumn;
+        double halfAngle = Math.toRadians(bestLength * perColumn / 2);
+        double distance = CYLINDER_RADIUS / Math.tan(halfAngle);
+        return Optional.of(new CylinderSighting(offset, bestLength, distance));
+    }
+
+    private static boolean redColumn(int[] framed, int width, int height, int c) {
+        for (int y = 0; y < height; y++) {
+            int p = framed[2 + y * width + c];
+            int r = (p >> 16) & 0xFF, g = (p >> 8) & 0xFF, b = p & 0xFF;
+            if (r > 40 && r > ObjectPickingMiddleware.RED_RATIO * g && r > ObjectPickingMiddleware.RED_RATIO * b) {
+                return true;
+            }
+        }
+        return false;
+    }
+}
