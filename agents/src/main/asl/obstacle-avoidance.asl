@@ -23,6 +23,13 @@ avoidTimeout(3000).
 trapWindow(8000).
 trapCount(5).
 escapeBack(700).
+// (issue 13) after an obstacle has left the front sensors, go on along an arc away from it this
+// long (ms): the sensors look ahead (±20°), so a box just out of their sight still sat at the
+// flank and was grazed when the robot went straight on (turning on the spot instead met the next
+// obstacle in a corner, and the robot swung to and fro)
+veerTime(800).
+// (issue 13) wheel speed of the straight legs (the thesis' forward is 50): coverage of big arenas
+cruiseSpeed(80).
 obstacleTimes([]).
 
 !start.
@@ -39,7 +46,11 @@ obstacleTimes([]).
 -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
-    <- println("Connection successful, waiting for sensor data"); acquireData; !moving.
+    <- println("Connection successful, waiting for sensor data");
+       // (issue 13) an obstacle is a sensor past the warning level, as in experiments 3-4: the
+       // left-right difference alone (about 16 cm on one side) kept the robot out of every gap
+       deltaBased(false);
+       acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
@@ -51,8 +62,13 @@ obstacleTimes([]).
 // and an obstacle that comes too often leads to an escape instead
 +!avoid(_) : trapped <- !escape; -avoiding.
 +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-+!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); !clear; -avoiding.
-+!avoid(_) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); !clear; -avoiding.
++!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); !clear; +veering; -avoiding; !veer(D).
++!avoid(D) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); !clear; +veering; -avoiding; !veer(D).
+
+// (issue 13) the arc away from the obstacle just avoided; a new obstacle interrupts it
++!veer(D) : obstacle(false) & D < 0 & cruiseSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
++!veer(D) : obstacle(false) & D > 0 & cruiseSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
++!veer(_) <- -veering.
 
 /* Recovery (issue 13): bounded waits, escapes */
 
@@ -77,9 +93,16 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 +!moving <- while (true) { .random(R); !move(R) }.
 
 +!move(N) : avoiding <- .wait("-avoiding"); !move(N).
++!move(N) : veering <- .wait("-veering"); !move(N).
 // (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
 +!move(N) : obstacle(true) & delta(V) <- +avoiding; stop; !noteObstacle; !avoid(V).
-+!move(N) : N <= 0.5 <- forward; .random(R); W = R * 10000; .wait(W).
-+!move(N) : N <= 0.75 & N > 0.5 <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
-+!move(N) : N < 1 & N > 0.75 <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
+// (issue 13) replacement: straight legs at cruiseSpeed, not forward; and the turns are made on the
+// spot, not along the listing's arcs (turnLeft/turnRight: one wheel at 20, the other at 50),
+// whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
+// nothing new)
++!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
++!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) & maxSpeed(M)
+    <- setSpeeds(-M / 2, M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000).
++!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) & maxSpeed(M)
+    <- setSpeeds(M / 2, -M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000).
 -!move(_) <- println("move failed").
