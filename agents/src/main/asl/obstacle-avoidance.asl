@@ -11,7 +11,7 @@
 // avoiding turn, and the robot drove into the wall with obstacle(true) still on, never
 // signalled again (thesis §1.2 shows the same plans; the race is theirs too).
 // Recovery (issue 13, marked "issue 13" below): every wait for obstacle(false) is bounded
-// (avoidTimeout) and ends, when it runs out, with an escape (back off, turn a random angle);
+// (avoidTimeout) and ends, when it runs out, with an escape (turn a random angle on the spot);
 // obstacles that come too often (trapCount within trapWindow: cycling in a corner or between
 // boxes) also lead to the escape. The console tells the story (escapes), not every avoidance.
 // The thesis' plans as published: as-published/obstacle-avoidance.asl.
@@ -22,12 +22,12 @@ middlewarePort(4444).
 avoidTimeout(3000).
 trapWindow(8000).
 trapCount(5).
-escapeBack(700).
 // (issue 13) after an obstacle has left the front sensors, go on along an arc away from it this
 // long (ms): the sensors look ahead (±20°), so a box just out of their sight still sat at the
 // flank and was grazed when the robot went straight on (turning on the spot instead met the next
 // obstacle in a corner, and the robot swung to and fro)
 veerTime(800).
+veerSpeed(50).
 // (issue 13) wheel speed of the straight legs (the thesis' forward is 50): coverage of big arenas
 cruiseSpeed(80).
 obstacleTimes([]).
@@ -46,11 +46,7 @@ obstacleTimes([]).
 -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
-    <- println("Connection successful, waiting for sensor data");
-       // (issue 13) an obstacle is a sensor past the warning level, as in experiments 3-4: the
-       // left-right difference alone (about 16 cm on one side) kept the robot out of every gap
-       deltaBased(false);
-       acquireData; !moving.
+    <- println("Connection successful, waiting for sensor data"); acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
@@ -66,8 +62,8 @@ obstacleTimes([]).
 +!avoid(D) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); !clear; +veering; -avoiding; !veer(D).
 
 // (issue 13) the arc away from the obstacle just avoided; a new obstacle interrupts it
-+!veer(D) : obstacle(false) & D < 0 & cruiseSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
-+!veer(D) : obstacle(false) & D > 0 & cruiseSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
++!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
++!veer(D) : obstacle(false) & D > 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
 +!veer(_) <- -veering.
 
 /* Recovery (issue 13): bounded waits, escapes */
@@ -83,10 +79,11 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
     <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]).
 
+// (issue 13) on the spot, no backing off: the robot cannot see behind it, and backing off drove
+// it into the box behind (a disc turning on the spot touches nothing new)
 +!escape : maxSpeed(M)
-    <- println("Trapped: backing off and turning away"); -+obstacleTimes([]);
-       ?escapeBack(B); setSpeeds(-M / 2, -M / 2); .wait(B);
-       .random(R); W = 600 + R * 1200; setSpeeds(M / 2, -M / 2); .wait(W); stop.
+    <- println("Trapped: turning away"); -+obstacleTimes([]);
+       .random(R); W = 1800 + R * 1800; setSpeeds(M / 2, -M / 2); .wait(W); stop.
 
 /* Random motion, suspended while avoiding (Chapter 4 §1.2, §5) */
 
@@ -102,7 +99,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // nothing new)
 +!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
 +!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) & maxSpeed(M)
-    <- setSpeeds(-M / 2, M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000).
+    <- setSpeeds(-M / 2, M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000 + R * 4000).
 +!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) & maxSpeed(M)
-    <- setSpeeds(M / 2, -M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000).
+    <- setSpeeds(M / 2, -M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000 + R * 4000).
 -!move(_) <- println("move failed").
