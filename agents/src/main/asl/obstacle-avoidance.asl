@@ -28,8 +28,9 @@ trapCount(5).
 // obstacle in a corner, and the robot swung to and fro)
 veerTime(800).
 veerSpeed(50).
-// (issue 13) wheel speed of the straight legs (the thesis' forward is 50): coverage of big arenas
-cruiseSpeed(80).
+// (issue 13) wheel speed of the straight legs (the thesis' forward is 50): coverage of big arenas;
+// a straight leg lasts 5 to 20 s unless an obstacle ends it
+cruiseSpeed(100).
 obstacleTimes([]).
 
 !start.
@@ -97,7 +98,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // spot, not along the listing's arcs (turnLeft/turnRight: one wheel at 20, the other at 50),
 // whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
 // nothing new)
-+!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
++!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; .wait(W).
 +!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) & maxSpeed(M)
     <- setSpeeds(-M / 2, M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000 + R * 4000).
 +!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) & maxSpeed(M)
