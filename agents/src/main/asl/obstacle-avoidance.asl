@@ -31,6 +31,10 @@ veerSpeed(50).
 // (issue 13) wheel speed of the straight legs (the thesis' forward is 50): coverage of big arenas;
 // a straight leg lasts 5 to 20 s unless an obstacle ends it
 cruiseSpeed(100).
+// (issue 13) the MyBot's wheels, for dead reckoning: metres per second of a speed unit, axle (m);
+// the middleware keeps the floor crossed and proposes turns towards floor not yet crossed
+wheelGeometry(0.001, 0.09).
+turnSpeed(100).
 obstacleTimes([]).
 
 !start.
@@ -47,7 +51,9 @@ obstacleTimes([]).
 -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
 +!waitConnection : connected(true)
-    <- println("Connection successful, waiting for sensor data"); acquireData; !moving.
+    <- println("Connection successful, waiting for sensor data");
+       ?wheelGeometry(U, A); odometry(U, A);
+       acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
@@ -59,8 +65,9 @@ obstacleTimes([]).
 // and an obstacle that comes too often leads to an escape instead
 +!avoid(_) : trapped <- !escape; -avoiding.
 +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-+!avoid(D) : D < 0 & maxSpeed(M) <- setSpeeds(-M / 2, M / 2); !clear; +veering; -avoiding; !veer(D).
-+!avoid(D) : maxSpeed(M) <- setSpeeds(M / 2, -M / 2); !clear; +veering; -avoiding; !veer(D).
+// (issue 13) the turns at turnSpeed (the listing: M / 2): less time spent turning, more ground
++!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
++!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // (issue 13) the arc away from the obstacle just avoided; a new obstacle interrupts it
 +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
@@ -84,7 +91,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // it into the box behind (a disc turning on the spot touches nothing new)
 +!escape : maxSpeed(M)
     <- println("Trapped: turning away"); -+obstacleTimes([]);
-       .random(R); W = 1800 + R * 1800; setSpeeds(M / 2, -M / 2); .wait(W); stop.
+       ?turnSpeed(S); .random(R); W = (1800 + R * 1800) * M / 2 / S; setSpeeds(S, -S); .wait(W); stop.
 
 /* Random motion, suspended while avoiding (Chapter 4 §1.2, §5) */
 
@@ -98,9 +105,11 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // spot, not along the listing's arcs (turnLeft/turnRight: one wheel at 20, the other at 50),
 // whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
 // nothing new)
-+!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; .wait(W).
-+!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) & maxSpeed(M)
-    <- setSpeeds(-M / 2, M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000 + R * 4000).
-+!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) & maxSpeed(M)
-    <- setSpeeds(M / 2, -M / 2); .random(R); W = R * 1500; .wait(W); setSpeeds(V, V); .wait(1000 + R * 4000).
++!move(N) : N <= 0.3 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; .wait(W).
+// (issue 13) replacement of the random left and right turns: the turn towards the floor not yet
+// crossed (exploreTurn, from dead reckoning), then a straight leg
++!move(N) : N > 0.3 & cruiseSpeed(V) & turnSpeed(S)
+    <- exploreTurn(S, Side, Ms);
+       if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
+       setSpeeds(V, V); .random(R); .wait(5000 + R * 15000).
 -!move(_) <- println("move failed").

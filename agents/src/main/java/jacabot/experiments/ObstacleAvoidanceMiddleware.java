@@ -17,6 +17,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     static final double DELTA_LIMIT = 100;
     static final double WARNING = 350;
     static final double SAFE = 200;
+    /** Where an obstacle is marked on the exploration map, metres from the robot's centre. */
+    static final double OBSTACLE_RANGE = 0.13;
     /** With delta-based detection off, only the warning threshold counts (thesis: deltaBased(false)). */
     private boolean deltaBased = true;
 
@@ -42,8 +44,39 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return SensorKind.RIGHT_DISTANCE;
     }
 
+    /** Dead reckoning and the floor crossed (issue 13), once the agent gave the wheel geometry. */
+    private ExplorationMap map;
+
+    /** Starts dead reckoning from the wheel speeds: metres per second of a speed unit, axle length in metres. */
+    @jacabot.cartago.OPERATION
+    void odometry(double speedUnit, double axleLength) {
+        map = new ExplorationMap(speedUnit, axleLength);
+    }
+
+    /**
+     * The turn on the spot towards the most floor not crossed yet (issue 13): {@code side} "left" or
+     * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
+     */
+    @jacabot.cartago.OPERATION
+    void exploreTurn(double speed, jacabot.cartago.OpFeedbackParam<String> side, jacabot.cartago.OpFeedbackParam<Double> ms) {
+        if (map == null || !(speed > 0)) {
+            failed("exploreTurn needs odometry(SpeedUnit, AxleLength) first and a positive speed");
+            return;
+        }
+        double turn = map.bestTurn();
+        double degreesPerSecond = Math.toDegrees(2 * speed * map.speedUnit() / map.axle());
+        side.set(turn >= 0 ? "left" : "right");
+        ms.set((double) Math.round(1000 * Math.abs(turn) / degreesPerSecond));
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
+        if (kind == SensorKind.WHEEL_SPEEDS && map != null) {
+            double[] w = info.getDoubleValues();
+            if (w.length >= 2) {
+                map.wheels(simTimeMs(), w[0], w[1]);
+            }
+        }
         if (stopDistance) {
             return;
         }
@@ -63,6 +96,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
+                if (obstacle && map != null) {
+                    map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
+                }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();
             }

@@ -136,6 +136,23 @@ class MiddlewareTest {
     }
 
     @Test
+    void exploreTurnNeedsOdometryThenProposesATurnTimedForTheWheelSpeed() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        var side = new OpFeedbackParam<String>();
+        var ms = new OpFeedbackParam<Double>();
+        assertTrue(!b.op("exploreTurn", new Object[] {100.0, side, ms}).succeeded(), "no odometry yet");
+        b.op("odometry", new Object[] {0.001, 0.09});
+        // a straight run ahead: the floor ahead is known, so the proposal is a turn
+        for (int i = 0; i < 50; i++) {
+            b.deliver(new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, 100}));
+        }
+        assertTrue(b.op("exploreTurn", new Object[] {100.0, side, ms}).succeeded());
+        assertTrue(side.get().equals("left") || side.get().equals("right"), side.get());
+        // at 100 the MyBot turns 127 degrees a second: a turn of 30 to 180 degrees takes 0.2 to 1.5 s
+        assertTrue(ms.get() >= 200 && ms.get() <= 1500, ms.get() + " ms");
+    }
+
+    @Test
     void gripForceMeansCaughtAndAFallIsSignalledForAPickedCylinder() throws Exception {
         var b = new Bench(ObjectPickingMiddleware.class);
         b.deliver(value(SensorKind.GRIP_FORCE, -40), new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {1, 1}),

@@ -1,0 +1,126 @@
+package jacabot.experiments;
+
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * Where a robot without GPS has been (issue 13): its pose by dead reckoning from the wheel speeds
+ * in effect, the 10 cm cells its centre has crossed, and the cells where it met an obstacle. It
+ * proposes the turn towards the most floor not yet crossed, so that a random walk spreads over a
+ * large arena instead of going over the same ground. The frame is the robot's start pose; the
+ * heading grows with left turns (right wheel faster).
+ */
+final class ExplorationMap {
+    static final double CELL = 0.10;
+    /** How far ahead a candidate heading is scored, metres. */
+    static final double HORIZON = 3.0;
+    /** Candidate headings: every 30 degrees around. */
+    static final int DIRECTIONS = 12;
+
+    private final double speedUnit, axle;
+    private double x, z, heading; // metres, metres, radians
+    private double left, right;   // wheel speeds in effect, speed units
+    private long lastMs = -1;
+    private final Map<Long, Integer> visits = new HashMap<>();
+    private final Map<Long, Boolean> blocked = new HashMap<>();
+
+    /**
+     * @param speedUnit metres per second of one wheel speed unit
+     * @param axle      distance between the wheels, metres
+     */
+    ExplorationMap(double speedUnit, double axle) {
+        if (!(speedUnit > 0) || !(axle > 0)) {
+            throw new IllegalArgumentException("speed unit and axle length must be positive, got " + speedUnit + ", " + axle);
+        }
+        this.speedUnit = speedUnit;
+        this.axle = axle;
+        visit();
+    }
+
+    /** The wheel speeds in effect from {@code nowMs} on: the motion since the last call is integrated first. */
+    void wheels(long nowMs, double newLeft, double newRight) {
+        if (lastMs >= 0 && nowMs > lastMs) {
+            double dt = (nowMs - lastMs) / 1000.0;
+            double vl = left * speedUnit, vr = right * speedUnit;
+            double v = (vl + vr) / 2, w = (vr - vl) / axle;
+            double mid = heading + w * dt / 2;
+            x += v * Math.cos(mid) * dt;
+            z += v * Math.sin(mid) * dt;
+            heading += w * dt;
+            visit();
+        }
+        lastMs = nowMs;
+        left = newLeft;
+        right = newRight;
+    }
+
+    /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
+    void obstacle(double bearing, double distance) {
+        double a = heading + Math.toRadians(bearing);
+        blocked.put(key(x + distance * Math.cos(a), z + distance * Math.sin(a)), true);
+    }
+
+    /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
+    double bestTurn() {
+        double best = 0, bestScore = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < DIRECTIONS; k++) {
+            double turn = k <= DIRECTIONS / 2 ? k * 360.0 / DIRECTIONS : (k - DIRECTIONS) * 360.0 / DIRECTIONS;
+            double score = score(heading + Math.toRadians(turn)) - Math.abs(turn) / 360.0;
+            if (score > bestScore) {
+                bestScore = score;
+                best = turn;
+            }
+        }
+        return best;
+    }
+
+    private double score(double a) {
+        int fresh = 0;
+        long previous = key(x, z);
+        for (double d = CELL / 2; d <= HORIZON + 1e-9; d += CELL / 2) {
+            long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
+            if (blocked.containsKey(k)) {
+                break;
+            }
+            if (k != previous && !visits.containsKey(k)) {
+                fresh++;
+            }
+            previous = k;
+        }
+        return fresh;
+    }
+
+    private void visit() {
+        visits.merge(key(x, z), 1, Integer::sum);
+    }
+
+    double speedUnit() {
+        return speedUnit;
+    }
+
+    double axle() {
+        return axle;
+    }
+
+    int cellsVisited() {
+        return visits.size();
+    }
+
+    double x() {
+        return x;
+    }
+
+    double z() {
+        return z;
+    }
+
+    /** {@return the heading in degrees, left turns positive} */
+    double headingDegrees() {
+        return Math.toDegrees(heading);
+    }
+
+    private static long key(double px, double pz) {
+        long i = (long) Math.floor(px / CELL), j = (long) Math.floor(pz / CELL);
+        return (i << 32) ^ (j & 0xFFFFFFFFL);
+    }
+}

@@ -1,0 +1,57 @@
+package jacabot.experiments;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+class ExplorationMapTest {
+    /** The MyBot: 1 mm/s per speed unit, 9 cm between the wheels. */
+    private final ExplorationMap map = new ExplorationMap(0.001, 0.09);
+
+    @Test
+    void deadReckoningIntegratesTheWheelSpeedsInEffect() {
+        map.wheels(0, 100, 100);
+        map.wheels(2000, 100, 100); // 2 s at 0.1 m/s
+        assertEquals(0.2, map.x(), 1e-9);
+        assertEquals(0.0, map.z(), 1e-9);
+        map.wheels(2000, -50, 50);
+        // left turn: (0.05 + 0.05) / 0.09 rad/s for the time of a quarter turn
+        long quarter = Math.round(1000 * (Math.PI / 2) / (0.1 / 0.09));
+        map.wheels(2000 + quarter, 0, 0);
+        assertEquals(90, map.headingDegrees(), 0.5);
+        assertEquals(0.2, map.x(), 1e-9, "a turn on the spot does not move the centre");
+    }
+
+    @Test
+    void theTurnPointsAtFloorNotYetCrossed() {
+        // the robot has driven 1 m ahead and back: the floor ahead is known
+        map.wheels(0, 100, 100);
+        map.wheels(10_000, -100, -100);
+        map.wheels(20_000, 0, 0);
+        double turn = map.bestTurn();
+        assertTrue(Math.abs(turn) >= 60, "away from the metre already crossed, got " + turn);
+        // now 1 m behind and back too: only the sides are new
+        map.wheels(20_000, -100, -100);
+        map.wheels(30_000, 100, 100);
+        map.wheels(40_000, 0, 0);
+        turn = map.bestTurn();
+        // (a diagonal crosses more 10 cm cells per metre than a side way: any turn off the line will do)
+        assertTrue(Math.abs(turn) >= 30 && Math.abs(turn) <= 150, "off the line crossed both ways, got " + turn);
+    }
+
+    @Test
+    void anObstacleMarkEndsTheFloorAHeadingCanReach() {
+        map.obstacle(0, 0.13);
+        double turn = map.bestTurn();
+        assertTrue(turn != 0, "not straight into the obstacle just met, got " + turn);
+        assertTrue(map.cellsVisited() >= 1);
+    }
+
+    @Test
+    void aWheelGeometryMustBePositive() {
+        assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0, 0.09));
+        assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0.001, -1));
+    }
+}
