@@ -47,7 +47,9 @@ public abstract class MiddlewareArtifact extends Artifact {
     public enum FailSafe { TRIPPED }
 
     void init(int port) throws IOException {
-        link = MiddlewareLink.open(LinkConfig.defaults().withPort(port));
+        // the link's connections and closings go to the workspace's console as the artifact's lines
+        // ([middleware] ...), not straight to stderr: the launcher's console decides what is shown
+        link = MiddlewareLink.open(LinkConfig.defaults().withPort(port).withLog(this::log));
         defineObsProperty("connected", false);
         defineProperties();
     }
