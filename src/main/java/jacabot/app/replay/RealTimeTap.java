@@ -17,8 +17,9 @@ import java.util.function.Consumer;
 
 /**
  * The step log of a real-time (viewer) run. There the controller and the agent run on their own
- * threads, so the step is taken from the controller's event log on the simulation thread (its
- * readings line, the commands it applied, then its pose line, which ends the step, world lock held),
+ * threads, so the step is taken from the controller's event log: its readings line and its pose
+ * line (which ends the step, on the simulation thread, world lock held), with the commands applied
+ * since the step before (in real time on the controller's receiving thread, as they arrive),
  * and the mind from the agent's latest sample ({@link jacabot.app.inspector.MindWatch#sampleEvery}):
  * a step carries a mind change only when a new sample came.
  */
@@ -59,20 +60,21 @@ public final class RealTimeTap implements Closeable {
 
     private void event(String line) {
         // "step N t=T KIND=v ...", "step N apply CMD", "step N pose X Z H" (RobotController)
-        int a = line.indexOf(' ');
-        int b = a < 0 ? -1 : line.indexOf(' ', a + 1);
-        if (b < 0) {
+        String[] p = line.split(" ", 4);
+        if (p.length < 3 || !p[0].equals("step")) {
             return;
         }
-        String rest = line.substring(b + 1);
-        String word = line.substring(a + 1, b);
-        if (word.startsWith("t=")) {
-            timeMs = Long.parseLong(word.substring(2));
+        String rest = p.length > 3 ? p[3] : "";
+        if (p[2].startsWith("t=")) {
+            timeMs = Long.parseLong(p[2].substring(2));
             readings = rest.isEmpty() ? List.of() : Arrays.asList(rest.split(" "));
-            applied.clear();
-        } else if (line.startsWith("apply ", a + 1)) {
-            applied.add(line.substring(a + 1 + "apply ".length()));
-        } else if (line.startsWith("pose ", a + 1) && timeMs >= 0) {
+        } else if (p[2].equals("apply")) {
+            // in real time the controller applies a command as it arrives, on its receiving thread:
+            // it goes with the next step written
+            synchronized (applied) {
+                applied.add(rest);
+            }
+        } else if (p[2].equals("pose") && timeMs >= 0) {
             write();
         }
     }
@@ -85,8 +87,13 @@ public final class RealTimeTap implements Closeable {
         var body = new StepLog.Body(p.x(), p.z(), p.heading(), robot.hasBattery() ? robot.getBattery().energy() : null,
                 robot.getWheels().getLeftSpeed(), robot.getWheels().getRightSpeed(),
                 robot.hasGripper() ? robot.getGripper().heldObject() : null, robot.contactTime());
+        List<String> commands;
+        synchronized (applied) {
+            commands = List.copyOf(applied);
+            applied.clear();
+        }
         try {
-            log.stepText(timeMs, body, List.copyOf(applied), readings, sampled.getAndSet(null), world.supervisor().objects());
+            log.stepText(timeMs, body, commands, readings, sampled.getAndSet(null), world.supervisor().objects());
         } catch (UncheckedIOException e) {
             failure = e.getCause(); // a full disk: the run goes on, the log stops
         }
