@@ -9,7 +9,6 @@ import jacabot.app.run.RealTimeRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -52,8 +51,9 @@ class RealTimeTapTest {
             source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
         var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
+        var console = new java.io.ByteArrayOutputStream();
         try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, "navigation.asl", 3, 2,
-                new PrintStream(OutputStream.nullOutputStream()), 0, tap.controllerEvents())) {
+                new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
             var watch = MindWatch.attach(null, run.mas().agent("robot"), null).alsoTo(tap.minds());
             AutoCloseable sampling = MindWatch.sampleEvery(List.of(watch), 50);
             run.start();
@@ -66,6 +66,10 @@ class RealTimeTapTest {
             sampling.close();
             assertNull(tap.closeLog());
         }
+        // the link's own lines go to the run's console (where the launcher's levels apply), not to stderr:
+        // `jacabot bench latency` printed them inside its table
+        assertTrue(console.toString(StandardCharsets.UTF_8).contains("[middleware] controller connected: robot 'khepera'"),
+                console.toString(StandardCharsets.UTF_8));
         int steps = 0, withCommands = 0, withMind = 0, distances = 0;
         long last = -1;
         try (var reader = new StepLog.Reader(out.resolve(StepLog.FILE))) {
