@@ -66,7 +66,7 @@ final class ExperimentCommand implements Callable<Integer> {
     private int port = 0;
 
     @Option(names = "--link-log", description = "also write OUT/link-log.txt: the controller's event log, a line per "
-            + "control step's readings, applied command and pose (about 12 MB per simulated 10 minutes)")
+            + "control step's readings, applied command and pose (about 7 MB per simulated 10 minutes)")
     private boolean linkLog;
 
     @picocli.CommandLine.Mixin
