@@ -66,7 +66,7 @@ final class ExperimentCommand implements Callable<Integer> {
     private int port = 0;
 
     @Option(names = "--link-log", description = "also write OUT/link-log.txt: the controller's event log, a line per "
-            + "control step's readings, applied command and pose (about 7 MB per simulated 10 minutes)")
+            + "control step's readings, applied command and pose (2.5-7 MB per simulated 10 minutes)")
     private boolean linkLog;
 
     @picocli.CommandLine.Mixin
@@ -309,12 +309,12 @@ final class ExperimentCommand implements Callable<Integer> {
                     ConsoleLog.lines(log::result));
             var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
             for (String name : run.mas().agentNames()) {
-                var watch = jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
-                        name.equals("robot") ? jacabot.app.replay.RunTap.robotView(simWorld) : null);
-                if (name.equals("robot")) {
-                    watch.alsoTo(tap.minds());
+                boolean robot = name.equals("robot");
+                if (robot || inspector != null) { // the robot's mind also goes to the step log
+                    var watch = jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
+                            robot ? jacabot.app.replay.RunTap.robotView(simWorld) : null);
+                    watches.add(robot ? watch.alsoTo(tap.minds()) : watch);
                 }
-                watches.add(watch);
             }
             AutoCloseable sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
             run.start();
@@ -344,8 +344,10 @@ final class ExperimentCommand implements Callable<Integer> {
                 inspector.close();
             }
         } catch (AslSyntaxException e) {
+            tap.close();
             throw new UserError(e.getMessage());
         } catch (CartagoException e) {
+            tap.close();
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
                     + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
         }
