@@ -123,8 +123,6 @@ final class RunCommand implements Callable<Integer> {
         }
         // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
-        MiddlewareLink.setDefaultLiveness(watch);
-        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
         // off by default: console programs end in moments; --inspector shows their minds
         var results = jacabot.app.console.ConsoleLog.lines(log::result);
         var inspector = inspectorOptions.start(false, "jacabot run " + file, results);
@@ -137,10 +135,19 @@ final class RunCommand implements Callable<Integer> {
             }
             sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
         }
-        if (stepping) {
-            mas.runStepping();
-        } else {
-            mas.runThreads();
+        MiddlewareLink.setDefaultLiveness(watch); // the agents make their middleware, and so its link, as they run
+        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
+        try {
+            if (stepping) {
+                mas.runStepping();
+            } else {
+                mas.runThreads();
+            }
+        } finally {
+            // the defaults are the process's: links opened after this run (the next in-process
+            // command, a test) must not ask agents that have stopped
+            MiddlewareLink.setDefaultLiveness(() -> true);
+            MiddlewareLink.setDefaultQuiescence(() -> true);
         }
         sampling.close();
         if (inspector != null) {
