@@ -125,10 +125,11 @@ final class ExperimentCommand implements Callable<Integer> {
             }
             sourceName = "agents/src/main/asl/" + experiment.id() + ".asl";
         }
+        var mixUps = new java.util.ArrayList<String>();
         if (!baseline) {
-            ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source, sourceName).forEach(log::warn);
+            mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source, sourceName));
         } else {
-            ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> log.warn(worldFile
+            ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
         }
         Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
@@ -143,6 +144,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError(worldFile + ": the world has no robot; add one under \"robots\"");
         }
         log.info("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
+        mixUps.forEach(log::warn); // before the run, which goes on
         if (baseline) {
             log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
