@@ -7,8 +7,8 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     @Test
     void packagesDependOneWayAndNeverUpwards() {
-        // the application composes every module; inside it: the installation and the mind inspector,
+        // the application composes every module; inside it: the installation, the console, the mind inspector,
         // the run drivers, the recorder and replay, the plots, the scenario API, the benches, the CLI
-        PackageLayers.of("jacabot.app", "", "inspector", "run", "replay", "plot", "scenario", "bench", "cli").check();
+        PackageLayers.of("jacabot.app", "", "console", "inspector", "run", "replay", "plot", "scenario", "bench", "cli").check();
     }
 }

@@ -59,4 +59,28 @@ class InstalledLauncherTest {
         assertTrue(Files.isRegularFile(dir.resolve("out/summary.json")), out);
         assertTrue(out.contains("World my-world.json"), out);
     }
+
+    @Test
+    void theDefaultRunIsCalmAndWritesNoLinkLog(@TempDir Path empty) throws Exception {
+        String out = run(empty, "experiment", "navigation", "--headless", "--duration", "2s");
+        assertTrue(out.startsWith("Experiment 3 (navigation)"), "jacabot's own line first:\n" + out);
+        assertTrue(Files.isRegularFile(empty.resolve("runs/navigation-3/steps.jsonl.gz")), out);
+        assertTrue(!Files.exists(empty.resolve("runs/navigation-3/link-log.txt")), "no link log unless --link-log");
+        String quiet = run(empty, "experiment", "navigation", "--headless", "--duration", "2s", "--quiet");
+        assertTrue(quiet.startsWith("run: navigation"), quiet);
+    }
+
+    @Test
+    void compareBenchAndSweepRunFromAnEmptyFolder(@TempDir Path empty) throws Exception {
+        String compare = run(empty, "compare", "--seeds", "1", "--duration", "2s");
+        assertEquals(8, compare.lines().filter(l -> l.matches("\\| [a-z-]+ \\| (agent|baseline) \\| 1 \\|.*")).count(), compare);
+        // the baselines' code metrics, from the sources bundled with the installation
+        assertTrue(compare.lines().anyMatch(l -> l.matches("\\| suspend-resume \\| \\d+ \\| \\d+ \\|.*")), compare);
+        String bench = run(empty, "bench", "sim", "--duration", "3s");
+        assertTrue(bench.startsWith("Experiment 4 with the agent, lockstep, seed 13, "), "the experiment's seed:\n" + bench);
+        String sweep = run(empty, "sweep", "navigation", "--worlds", "worlds", "--seeds", "1", "--duration", "2s",
+                "--controllers", "agent", "--jobs", "1", "--no-progress");
+        assertTrue(sweep.startsWith("Sweep: 1 runs (1 worlds x 1 seeds x 1 controllers)"), sweep);
+        assertTrue(Files.isRegularFile(empty.resolve("runs/sweep/report.md")), sweep);
+    }
 }

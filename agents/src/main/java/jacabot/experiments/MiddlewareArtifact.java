@@ -47,9 +47,20 @@ public abstract class MiddlewareArtifact extends Artifact {
     public enum FailSafe { TRIPPED }
 
     void init(int port) throws IOException {
-        link = MiddlewareLink.open(LinkConfig.defaults().withPort(port));
+        // the link's connections and closings go to the workspace's console as the artifact's lines
+        // ([middleware] ...), not straight to stderr: the launcher's console decides what is shown
+        link = MiddlewareLink.open(LinkConfig.defaults().withPort(port).withLog(this::linkLog));
         defineObsProperty("connected", false);
         defineProperties();
+    }
+
+    /** A line of the link's (its threads call it, also while the workspace closes). */
+    private void linkLog(String line) {
+        try {
+            log(line);
+        } catch (RuntimeException e) {
+            System.err.println("[middleware] " + line); // the workspace is gone: as before, on stderr
+        }
     }
 
     void init(int port, String mode) throws IOException {

@@ -42,13 +42,14 @@ public final class LatencyBenchmark {
     /** Samples of each hand-off of the machine's floor (one per millisecond). */
     static final int FLOOR_SAMPLES = 3000;
 
-    private final Path root;
+    private final Path world;
     private final double seconds;
     private final double speed;
     private final PrintStream out;
 
-    public LatencyBenchmark(Path root, double seconds, double speed, PrintStream out) {
-        this.root = root;
+    /** @param world experiment 1's world file */
+    public LatencyBenchmark(Path world, double seconds, double speed, PrintStream out) {
+        this.world = world;
         this.seconds = seconds;
         this.speed = speed;
         this.out = out;
@@ -79,7 +80,7 @@ public final class LatencyBenchmark {
     }
 
     private SimWorld world() throws Exception {
-        return BaselineRunner.load(root.resolve(Experiment.OBSTACLE_AVOIDANCE.worldFile()), 1);
+        return BaselineRunner.load(world, 1);
     }
 
     /** Moves the first box just ahead of the robot, or back to where it was. */

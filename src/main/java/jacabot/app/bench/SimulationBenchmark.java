@@ -18,13 +18,14 @@ import java.util.Locale;
  * world with the procedural baseline, to show what the agent layers cost.
  */
 public final class SimulationBenchmark {
-    private final Path root;
+    private final Path world;
     private final double seconds;
     private final long seed;
     private final PrintStream out;
 
-    public SimulationBenchmark(Path root, double seconds, long seed, PrintStream out) {
-        this.root = root;
+    /** @param world experiment 4's world file */
+    public SimulationBenchmark(Path world, double seconds, long seed, PrintStream out) {
+        this.world = world;
         this.seconds = seconds;
         this.seed = seed;
         this.out = out;
@@ -32,7 +33,6 @@ public final class SimulationBenchmark {
 
     public void run() throws Exception {
         Experiment e = Experiment.SUSPEND_RESUME;
-        Path world = root.resolve(e.worldFile());
         String source;
         try (InputStream in = SimulationBenchmark.class.getResourceAsStream(e.agentResource())) {
             source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
@@ -49,8 +49,8 @@ public final class SimulationBenchmark {
         var mw = m.result().middlewareCosts();
         long serialization = c.encodingNanos() + mw.decodingNanos();
         long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
-        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, %.0f s simulated in %.2f s: %.0fx real time; "
-                + "%d control steps, %d reasoning cycles, %d artifact steps%n", seconds, wall / 1e9, seconds / (wall / 1e9),
+        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated in %.2f s: %.0fx real time; "
+                + "%d control steps, %d reasoning cycles, %d artifact steps%n", seed, seconds, wall / 1e9, seconds / (wall / 1e9),
                 m.result().steps(), m.run().cycles(), m.run().artifactSteps());
         out.println("| part | wall time (s) | share | per control step (us) |");
         out.println("|---|---|---|---|");

@@ -72,15 +72,22 @@ final class BenchCommand implements Runnable {
         @Option(names = "--duration", paramLabel = "T", description = "simulated time (default ${DEFAULT-VALUE})")
         private String duration = "10m";
 
-        @Option(names = "--seed", description = "seed (default ${DEFAULT-VALUE})")
-        private long seed = 4;
+        @Option(names = "--seed", description = "seed (default: the world file's, 13, as `jacabot experiment suspend-resume`)")
+        private Long seed;
 
-        @Option(names = "--root", paramLabel = "DIR", description = "the repository, for worlds/ (default: .)")
-        private Path root = Path.of(".");
+        @Option(names = "--root", paramLabel = "DIR", description = "a repository to take worlds/ from (default: the installation's)")
+        private Path root;
 
         @Override
         public Integer call() throws Exception {
-            new jacabot.app.bench.SimulationBenchmark(root, duration(duration), seed,
+            Path world = CompareCommand.bundled(root, jacabot.robot.Experiment.SUSPEND_RESUME.worldFile());
+            long runSeed;
+            try {
+                runSeed = seed != null ? seed : jacabot.sim.io.WorldFileReader.read(world).seed();
+            } catch (jacabot.sim.io.WorldFileException e) {
+                throw new UserError(e.getMessage());
+            }
+            new jacabot.app.bench.SimulationBenchmark(world, duration(duration), runSeed,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
@@ -101,15 +108,16 @@ final class BenchCommand implements Runnable {
         @Option(names = "--speed", paramLabel = "X", description = "real time x this factor (default ${DEFAULT-VALUE})")
         private double speed = 8;
 
-        @Option(names = "--root", paramLabel = "DIR", description = "the repository, for worlds/ (default: .)")
-        private Path root = Path.of(".");
+        @Option(names = "--root", paramLabel = "DIR", description = "a repository to take worlds/ from (default: the installation's)")
+        private Path root;
 
         @Override
         public Integer call() throws Exception {
             if (!(speed > 0) || Double.isInfinite(speed)) {
                 throw new UserError("--speed must be a positive number, got " + speed);
             }
-            new jacabot.app.bench.LatencyBenchmark(root, duration(duration), speed,
+            new jacabot.app.bench.LatencyBenchmark(CompareCommand.bundled(root,
+                    jacabot.robot.Experiment.OBSTACLE_AVOIDANCE.worldFile()), duration(duration), speed,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }

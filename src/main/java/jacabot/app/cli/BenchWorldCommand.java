@@ -20,14 +20,14 @@ final class BenchWorldCommand implements Callable<Integer> {
     @Option(names = "--duration", paramLabel = "T", description = "simulated time per world (default ${DEFAULT-VALUE})")
     private String duration = "300s";
 
-    @Option(names = "--worlds", paramLabel = "DIR", description = "where the four world files are (default ${DEFAULT-VALUE})")
-    private Path worlds = Path.of("worlds");
+    @Option(names = "--worlds", paramLabel = "DIR", description = "where the four world files are (default: the installation's worlds/)")
+    private Path worlds;
 
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            new WorldBenchmark(worlds, ExperimentCommand.parseDuration(duration), spec.commandLine().getOut()).run();
+            new WorldBenchmark(worlds != null ? worlds : jacabot.app.Installation.resolve("worlds"), ExperimentCommand.parseDuration(duration), spec.commandLine().getOut()).run();
             return 0;
         } catch (IllegalArgumentException e) {
             err.println("error: " + e.getMessage());

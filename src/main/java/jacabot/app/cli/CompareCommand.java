@@ -35,8 +35,9 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--duration", paramLabel = "T", description = "simulated time per run (default ${DEFAULT-VALUE})")
     private String duration = "5m";
 
-    @Option(names = "--root", paramLabel = "DIR", description = "the repository (worlds/, sources) (default: .)")
-    private Path root = Path.of(".");
+    @Option(names = "--root", paramLabel = "DIR",
+            description = "a repository to take worlds/ and the baselines' sources from (default: the installation's)")
+    private Path root;
 
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec spec;
@@ -49,7 +50,7 @@ final class CompareCommand implements Callable<Integer> {
                 + "| storage entries without a cylinder | reactive time median / p99 (ms) | response time median / p99 (ms) |");
         out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         for (Experiment e : Experiment.values()) {
-            Path world = root.resolve(e.worldFile());
+            Path world = bundled(root, e.worldFile());
             for (long seed : seeds) {
                 AgentRun a = runAgent(e, world, seed, seconds);
                 out.println(row(e, "agent", seed, a.summary) + " " + ms(a.reactive) + " | " + ms(a.response) + " |");
@@ -65,13 +66,19 @@ final class CompareCommand implements Callable<Integer> {
         out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
         out.println("|---|---|---|---|---|---|---|---|---|---|");
         for (Experiment e : Experiment.values()) {
-            CodeMetrics c = CodeMetrics.of(e, CodeMetrics.sourceDir(root));
+            CodeMetrics c = CodeMetrics.of(e, root != null ? CodeMetrics.sourceDir(root)
+                    : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
             AgentMetrics a = AgentMetrics.of(e, agentSource(e));
             out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d: %s |%n", e, c.codeLines(), c.ifs(),
                     c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
                     a.coordinationBeliefs().size(), String.join(", ", a.coordinationBeliefs()));
         }
         return 0;
+    }
+
+    /** {@return a file of the repository: under {@code --root} if given, else the installation's (from any folder)} */
+    static Path bundled(Path root, String file) {
+        return root != null ? root.resolve(file) : jacabot.app.Installation.resolve(file);
     }
 
     private static String agentSource(Experiment e) throws java.io.IOException {

@@ -4,6 +4,8 @@ import jacabot.agent.parser.AslSyntaxException;
 import jacabot.cartago.CartagoException;
 import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepCoordinator;
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.ExperimentMatch;
 import jacabot.app.run.LockstepRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
@@ -63,16 +65,23 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "where the middleware listens on loopback (default: a free port)")
     private int port = 0;
 
+    @Option(names = "--link-log", description = "also write OUT/link-log.txt: the controller's event log, a line per "
+            + "control step's readings, applied command and pose (2.5-7 MB per simulated 10 minutes)")
+    private boolean linkLog;
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
+
+    @picocli.CommandLine.Mixin
+    private VerbosityOptions verbosity = new VerbosityOptions();
 
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec commandSpec;
 
     @Override
     public Integer call() throws Exception {
-        java.io.PrintWriter stdout = commandSpec.commandLine().getOut();
-        java.io.PrintStream console = ConsoleStreams.of(stdout);
+        ConsoleLog log = verbosity.console(commandSpec);
+        java.io.PrintStream console = log.agents();
         double seconds;
         try {
             seconds = parseDuration(duration);
@@ -116,6 +125,13 @@ final class ExperimentCommand implements Callable<Integer> {
             }
             sourceName = "agents/src/main/asl/" + experiment.id() + ".asl";
         }
+        var mixUps = new java.util.ArrayList<String>();
+        if (!baseline) {
+            mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source, sourceName));
+        } else {
+            ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
+                    + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
+        }
         Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
         SimWorld simWorld;
@@ -127,23 +143,23 @@ final class ExperimentCommand implements Callable<Integer> {
         if (simWorld.robots().isEmpty()) {
             throw new UserError(worldFile + ": the world has no robot; add one under \"robots\"");
         }
-        stdout.println("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
+        log.info("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
+        mixUps.forEach(log::warn); // before the run, which goes on
         if (baseline) {
-            stdout.println("World " + worldFile + ", seed " + runSeed + ", " + duration
+            log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
             var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
-            report(stdout, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            report(log, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
             return 0;
         }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
         if (viewer) {
-            stdout.println("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
+            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, source, sourceName, runSeed, seconds, console);
+            return runWithViewer(simWorld, source, sourceName, runSeed, seconds, log, outDir);
         }
-        stdout.println("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
-        stdout.flush();
+        log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         try {
             run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed, console);
@@ -153,7 +169,8 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
         Robot robot = simWorld.robots().get(0);
-        var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed, console);
+        var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
+                ConsoleLog.lines(log::result));
         var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
@@ -163,13 +180,11 @@ final class ExperimentCommand implements Callable<Integer> {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
                 var now = recorder.summary("agent");
-                stdout.printf("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s%n",
+                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s",
                         data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
-                        now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy()));
-                stdout.flush();
+                        now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy())));
             }
         });
-        // the link log goes to disk as it is made: a long run keeps no copy of it in memory
         var done = new java.util.concurrent.CountDownLatch(1);
         var terminated = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
@@ -182,15 +197,24 @@ final class ExperimentCommand implements Callable<Integer> {
             }
         }, "experiment-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
-        try (var linkLog = java.nio.file.Files.newBufferedWriter(outDir.resolve("link-log.txt"), StandardCharsets.UTF_8)) {
-            run.port(port).controllerLogTo(line -> {
-                try {
-                    linkLog.write(line);
-                    linkLog.write('\n');
-                } catch (IOException e) {
-                    throw new java.io.UncheckedIOException(e);
-                }
-            });
+        // the link log (off unless asked for) goes to disk as it is made: a long run keeps no copy of it in memory
+        try (var linkFile = linkLog ? Files.newBufferedWriter(outDir.resolve("link-log.txt"), StandardCharsets.UTF_8)
+                : java.io.Writer.nullWriter()) {
+            run.port(port);
+            if (linkLog) {
+                log.info("Link log: " + outDir.resolve("link-log.txt") + " (the controller's readings, applied commands "
+                        + "and poses, a line each)");
+                run.controllerLogTo(line -> {
+                    try {
+                        linkFile.write(line);
+                        linkFile.write('\n');
+                    } catch (IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                });
+            } else {
+                run.stepLogs(false); // not formatted at all: a tenth of a run's time
+            }
             LockstepCoordinator.Result result;
             try {
                 result = run.runFor(seconds);
@@ -198,21 +222,23 @@ final class ExperimentCommand implements Callable<Integer> {
                 throw new IllegalStateException(port != 0 ? "cannot listen on port " + port + " (" + e.getMessage()
                         + "); choose another with --port" : e.getMessage(), e);
             }
-            linkLog.flush();
+            linkFile.flush();
             tap.close();
             if (terminated.get()) {
-                stdout.printf("Stopped by a signal at t=%.2f s; writing what there is.%n", simWorld.timeMs() / 1000.0);
+                log.result(String.format("Stopped by a signal at t=%.2f s; writing what there is.", simWorld.timeMs() / 1000.0));
             } else if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
-                stdout.println("The link ended early:");
-                result.linkLog().forEach(l -> stdout.println("  " + l));
+                log.result("The link ended early:");
+                result.linkLog().forEach(l -> log.result("  " + l));
+            } else {
+                result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(stdout, recorder.summary("agent"), recorder, outDir, wall, run.cycles());
+            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles());
             jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
-            jacabot.app.plot.RunPlots.writeAll(outDir, console);
+            jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             if (inspector != null) {
                 inspector.showPlots(outDir);
-                inspectorOptions.linger(inspector, console);
+                inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
                 inspector.close();
             }
         } finally {
@@ -258,36 +284,41 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** Writes the summary (JSON and text), the event log and the trajectory, and prints them. */
-    private static void report(java.io.PrintWriter stdout, jacabot.robot.run.RunSummary summary,
+    private static void report(ConsoleLog log, jacabot.robot.run.RunSummary summary,
             jacabot.robot.run.RunRecorder recorder, Path outDir, double wallSeconds, long cycles) throws IOException {
         Files.createDirectories(outDir);
         summary.writeJson(outDir.resolve("summary.json"));
         Files.writeString(outDir.resolve("summary.txt"), summary.toText());
         Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
         recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
-        stdout.println();
-        stdout.print(summary.toText());
-        stdout.printf("%.0f s simulated in %.1f s (%.0fx real time)%s.%n", summary.duration(), wallSeconds,
-                summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : "");
-        stdout.println("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
-        stdout.flush();
+        log.info("");
+        summary.toText().lines().forEach(log::result);
+        log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
+                summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : ""));
+        log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
     private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds,
-            java.io.PrintStream console) throws Exception {
-        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, console, port)) {
-            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed, console);
-            AutoCloseable sampling = () -> {
-            };
-            if (inspector != null) {
-                var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
-                for (String name : run.mas().agentNames()) {
-                    watches.add(jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
-                            name.equals("robot") ? jacabot.app.replay.RunTap.robotView(simWorld) : null));
+            ConsoleLog log, Path outDir) throws Exception {
+        // the step log as in a headless run; its steps come from the controller's event log
+        var tap = jacabot.app.replay.RealTimeTap.open(simWorld, outDir, experiment, sourceName);
+        var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
+        long start = System.nanoTime();
+        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, log.agents(),
+                port, tap.controllerEvents())) {
+            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
+                    ConsoleLog.lines(log::result));
+            var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
+            for (String name : run.mas().agentNames()) {
+                boolean robot = name.equals("robot");
+                if (robot || inspector != null) { // the robot's mind also goes to the step log
+                    var watch = jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
+                            robot ? jacabot.app.replay.RunTap.robotView(simWorld) : null);
+                    watches.add(robot ? watch.alsoTo(tap.minds()) : watch);
                 }
-                sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
             }
+            AutoCloseable sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
             run.start();
             var closed = new java.util.concurrent.CountDownLatch(1);
             javax.swing.SwingUtilities.invokeLater(() -> {
@@ -307,16 +338,26 @@ final class ExperimentCommand implements Callable<Integer> {
             }
             run.runner().stop();
             sampling.close();
+            var failure = tap.closeLog();
+            if (failure != null) {
+                log.warn("the step log " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " stopped early: " + failure.getMessage());
+            }
             if (inspector != null) {
                 inspector.close();
             }
         } catch (AslSyntaxException e) {
+            tap.close();
             throw new UserError(e.getMessage());
         } catch (CartagoException e) {
+            tap.close();
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
                     + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
         }
-        console.printf("Stopped at t=%.1f s of simulated time.%n", simWorld.time());
+        log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
+        recorder.detach();
+        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1);
+        log.result("Step log: " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " (jacabot replay " + outDir + ")");
+        jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
         return 0;
     }
 

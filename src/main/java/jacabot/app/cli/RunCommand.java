@@ -66,13 +66,17 @@ final class RunCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
+    @picocli.CommandLine.Mixin
+    private VerbosityOptions verbosity = new VerbosityOptions();
+
     @Spec
     private CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
-        var out = ConsoleStreams.of(spec.commandLine().getOut());
+        var log = verbosity.console(spec);
+        var out = log.agents(); // as Jason prints it with --verbose; repeated lines folded by default
         if (port != null && (port < 1 || port > 65535)) {
             throw new UserError("--port must be in 1..65535, got " + port);
         }
@@ -100,6 +104,9 @@ final class RunCommand implements Callable<Integer> {
         } catch (MasLauncher.UserError e) {
             throw new UserError(e.getMessage());
         }
+        if (file.toString().endsWith(".mas2j")) {
+            projectWarnings(file).forEach(log::warn);
+        }
         int listen = port != null ? port : declaredPort(mas);
         if (port != null) {
             for (String name : mas.agentNames()) {
@@ -116,10 +123,9 @@ final class RunCommand implements Callable<Integer> {
         }
         // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
-        MiddlewareLink.setDefaultLiveness(watch);
-        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
         // off by default: console programs end in moments; --inspector shows their minds
-        var inspector = inspectorOptions.start(false, "jacabot run " + file, out);
+        var results = jacabot.app.console.ConsoleLog.lines(log::result);
+        var inspector = inspectorOptions.start(false, "jacabot run " + file, results);
         AutoCloseable sampling = () -> {
         };
         if (inspector != null) {
@@ -129,16 +135,26 @@ final class RunCommand implements Callable<Integer> {
             }
             sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
         }
-        if (stepping) {
-            mas.runStepping();
-        } else {
-            mas.runThreads();
+        MiddlewareLink.setDefaultLiveness(watch); // the agents make their middleware, and so its link, as they run
+        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
+        try {
+            if (stepping) {
+                mas.runStepping();
+            } else {
+                mas.runThreads();
+            }
+        } finally {
+            // the defaults are the process's: links opened after this run (the next in-process
+            // command, a test) must not ask agents that have stopped
+            MiddlewareLink.setDefaultLiveness(() -> true);
+            MiddlewareLink.setDefaultQuiescence(() -> true);
         }
         sampling.close();
         if (inspector != null) {
-            inspectorOptions.linger(inspector, out);
+            inspectorOptions.linger(inspector, results);
             inspector.close();
         }
+        log.flush(); // the counts of the last folded lines
         if (stats) {
             long cycles = 0;
             for (String name : mas.agentNames()) {
@@ -147,6 +163,28 @@ final class RunCommand implements Callable<Integer> {
             err.println("cycles " + cycles);
         }
         return 0;
+    }
+
+    /** {@return warnings when a robot project's agents make another experiment's middleware than it is named for} */
+    static List<String> projectWarnings(Path mas2j) {
+        try {
+            String text = java.nio.file.Files.readString(mas2j);
+            var name = java.util.regex.Pattern.compile("\\bMAS\\s+(\\w+)").matcher(text);
+            if (!name.find()) {
+                return List.of();
+            }
+            var made = new ArrayList<String>();
+            var asl = java.util.regex.Pattern.compile("([\\w./-]+\\.asl)\\b").matcher(text);
+            while (asl.find()) {
+                Path agent = mas2j.toAbsolutePath().getParent().resolve(asl.group(1));
+                if (java.nio.file.Files.isRegularFile(agent)) {
+                    made.addAll(jacabot.app.run.ExperimentMatch.middlewaresMadeBy(java.nio.file.Files.readString(agent)));
+                }
+            }
+            return jacabot.app.run.ExperimentMatch.checkProject(name.group(1), mas2j.toString(), made);
+        } catch (IOException | RuntimeException e) {
+            return List.of(); // the launcher has loaded it already; a check that cannot read it stays silent
+        }
     }
 
     /** {@return the port in an agent's {@value #PORT_BELIEF} belief, or 0 when none declares one} */

@@ -74,10 +74,14 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--no-progress", description = "no progress bar on stderr")
     private boolean noProgress;
 
+    @CommandLine.Mixin
+    private VerbosityOptions verbosity = new VerbosityOptions();
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter o = spec.commandLine().getOut();
+        var log = verbosity.console(spec);
         List<Experiment> experiments;
         double seconds, wallLimit;
         List<Long> runSeeds;
@@ -118,6 +122,9 @@ final class SweepCommand implements Callable<Integer> {
             if (worlds != null && generate != null) {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
             }
+            if (worlds != null && !Files.isDirectory(worlds) && !worlds.isAbsolute()) {
+                worlds = jacabot.app.Installation.resolve(worlds.toString()); // --worlds worlds: the bundled ones, from anywhere
+            }
             if (worlds != null && !Files.isDirectory(worlds)) {
                 throw new IllegalArgumentException(worlds + ": no such directory");
             }
@@ -142,12 +149,11 @@ final class SweepCommand implements Callable<Integer> {
             return 2;
         }
         List<SweepJob> jobList = SweepPlan.jobs(list, runSeeds, controllers, shardIndex, shards);
-        o.printf(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s%n",
+        log.info(String.format(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s",
                 jobList.size(), list.size(), runSeeds.size(), controllers.size(),
-                shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir);
-        o.flush();
-        Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : System.err)
-                .onResult(r -> writeLogs(dir.resolve("logs"), r));
+                shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
+        Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
+                .onResult(r -> writeLogs(dir.resolve("logs"), r, log));
         Sweep.Outcomes result = sweep.run(jobList);
         List<RunOutcome> runs = new ArrayList<>(result.runs());
         runs.sort(Sweep.ORDER);
@@ -162,14 +168,13 @@ final class SweepCommand implements Callable<Integer> {
         try (var w = Files.newBufferedWriter(dir.resolve("sweep.properties"), StandardCharsets.UTF_8)) {
             meta.store(w, "jacabot sweep");
         }
-        o.print(SweepReport.markdown(runs, throughput));
-        o.println();
-        o.println("Written: " + dir.resolve("runs.csv") + ", report.md, logs/");
-        o.flush();
+        SweepReport.markdown(runs, throughput).lines().forEach(log::result);
+        log.result("");
+        log.result("Written: " + dir.resolve("runs.csv") + ", report.md, logs/");
         return 0;
     }
 
-    private static void writeLogs(Path logs, SweepRun.Result r) {
+    private static void writeLogs(Path logs, SweepRun.Result r, jacabot.app.console.ConsoleLog log) {
         RunOutcome o = r.outcome();
         String base = o.experiment().id() + "_" + o.world() + "_" + o.controller() + "_seed" + o.seed();
         try {
@@ -179,7 +184,7 @@ final class SweepCommand implements Callable<Integer> {
                         + String.join("\n", r.consoleTail()) + "\n", StandardCharsets.UTF_8);
             }
         } catch (IOException e) {
-            System.err.println("warning: cannot write the logs of " + base + ": " + e.getMessage());
+            log.warn("cannot write the logs of " + base + ": " + e.getMessage());
         }
     }
 

@@ -115,16 +115,28 @@ public final class StepLog {
          */
         public void step(long timeMs, Body body, List<Command> commands, List<SensorInfo> readings, MindState mind,
                 List<ObjectState> world) {
+            var text = new ArrayList<String>(readings.size());
+            readings.forEach(x -> text.add(reading(x)));
+            stepText(timeMs, body, commands.stream().map(Command::toString).collect(java.util.stream.Collectors.toList()),
+                    text, mind, world);
+        }
+
+        /**
+         * Writes one step whose commands and readings are already text (a real-time run takes them
+         * from the controller's event log: {@code KIND=value} readings, the commands it applied).
+         */
+        public void stepText(long timeMs, Body body, List<String> commands, List<String> readings, MindState mind,
+                List<ObjectState> world) {
             ObjectNode n = JSON.createObjectNode();
             n.put("t", timeMs);
             n.set("body", JSON.valueToTree(body));
             if (!commands.isEmpty()) {
                 ArrayNode c = n.putArray("cmd");
-                commands.forEach(x -> c.add(x.toString()));
+                commands.forEach(c::add);
             }
             if (!readings.isEmpty()) {
                 ArrayNode r = n.putArray("in");
-                readings.forEach(x -> r.add(reading(x)));
+                readings.forEach(r::add);
             }
             if (world != null) {
                 ObjectNode moved = null;

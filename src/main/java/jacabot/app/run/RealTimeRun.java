@@ -43,6 +43,16 @@ public final class RealTimeRun implements AutoCloseable {
     /** @param port where the middleware listens (0: a free loopback port) */
     public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
             double speed, PrintStream console, int port) throws AslSyntaxException, CartagoException {
+        this(world, experiment, agentSource, agentFile, seed, speed, console, port, null);
+    }
+
+    /**
+     * @param controllerEvents the controller's event log (a line per reading batch, applied command
+     *                         and pose, on the simulation thread; e.g. for the step log), or null
+     */
+    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+            double speed, PrintStream console, int port, java.util.function.Consumer<String> controllerEvents)
+            throws AslSyntaxException, CartagoException {
         this.world = world;
         // both ends are in this process: a fresh secret of this run's, no file needed
         jacabot.robot.link.LinkSecret.useInThisProcess(jacabot.robot.link.LinkSecret.random());
@@ -71,7 +81,8 @@ public final class RealTimeRun implements AutoCloseable {
         // heartbeats only while the agent reasons: a stuck or dead agent lets the fail-safe stop the robot
         middleware.link().setLiveness(new AgentWatch(mas, STALL_MS));
         controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", boundPort)
-                .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line)));
+                .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line))
+                .withEventLog(controllerEvents));
     }
 
     public SimRunner runner() {

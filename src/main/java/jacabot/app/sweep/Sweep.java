@@ -1,6 +1,6 @@
 package jacabot.app.sweep;
 
-import java.io.PrintStream;
+import jacabot.app.console.ConsoleLog;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
@@ -29,7 +29,7 @@ public final class Sweep {
     private final int jobs;
     private final double seconds;
     private final double wallLimitS;
-    private PrintStream progress;
+    private ConsoleLog progress;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
 
@@ -56,9 +56,9 @@ public final class Sweep {
         this.wallLimitS = wallLimitS;
     }
 
-    /** Draws a progress bar on this stream (stderr), or nothing when null. */
-    public Sweep progress(PrintStream stream) {
-        this.progress = stream;
+    /** Draws a progress bar through this console (in place on stderr, not with --quiet), or nothing when null. */
+    public Sweep progress(ConsoleLog console) {
+        this.progress = console;
         return this;
     }
 
@@ -149,8 +149,7 @@ public final class Sweep {
         } finally {
             pool.shutdownNow();
             if (progress != null) {
-                progress.println();
-                progress.flush();
+                progress.endInPlace();
             }
         }
         List<RunOutcome> all;
@@ -182,10 +181,9 @@ public final class Sweep {
         int width = 30;
         int full = total == 0 ? width : finished * width / total;
         String eta = finished == 0 ? "?" : format(wall / finished * (total - finished));
-        progress.printf(Locale.ROOT, "\r[%s%s] %d/%d runs, %d failed, %.1f sim-min/s, %s elapsed, ETA %s   ",
+        progress.inPlace(String.format(Locale.ROOT, "[%s%s] %d/%d runs, %d failed, %.1f sim-min/s, %s elapsed, ETA %s   ",
                 "#".repeat(full), ".".repeat(width - full), finished, total, failed, wall > 0 ? simulated / 60 / wall : 0,
-                format(wall), eta);
-        progress.flush();
+                format(wall), eta));
     }
 
     private static String format(double s) {

@@ -92,7 +92,7 @@ class LauncherErrorsTest {
 
     @Test
     void anExperimentWritesItsOutputsAndLinkLog(@TempDir Path dir) throws Exception {
-        var r = experiment("--duration", "2s", "--out", dir.toString());
+        var r = experiment("--duration", "2s", "--out", dir.toString(), "--link-log");
         assertEquals("0", r[0], r[2]);
         assertTrue(r[1].contains("Written: "), r[1]);
         long steps = Files.readAllLines(dir.resolve("link-log.txt")).stream().filter(l -> l.matches("step \\d+ t=.*")).count();

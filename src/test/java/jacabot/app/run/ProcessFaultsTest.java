@@ -183,7 +183,8 @@ class ProcessFaultsTest {
         Path console = dir.resolve("console.txt");
         Process p = new ProcessBuilder(java, "-Xmx256m", "-cp", System.getProperty("java.class.path"),
                 "jacabot.app.cli.JacabotCommand", "experiment", "obstacle-avoidance", "--headless", "--duration", "60m",
-                "--out", out.toString()).directory(ROOT.toFile()).redirectErrorStream(true).redirectOutput(console.toFile()).start();
+                "--out", out.toString(), "--link-log").directory(ROOT.toFile()).redirectErrorStream(true)
+                .redirectOutput(console.toFile()).start();
         try {
             waitLong(() -> {
                 try {
