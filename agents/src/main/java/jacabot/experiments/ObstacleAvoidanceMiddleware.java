@@ -30,6 +30,20 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         defineObsProperty("obstacle", false);
     }
 
+    /** The front sensors' levels for obstacle(true) and for clear again (default {@value #WARNING}, {@value #SAFE}). */
+    private double warning = WARNING, safe = SAFE;
+
+    /** Sets the levels (issue 13: the agent's beliefs, not Java constants); the warning must exceed the safe level. */
+    @jacabot.cartago.OPERATION
+    void obstacleLevels(double warningLevel, double safeLevel) {
+        if (!(warningLevel > safeLevel) || !(safeLevel > 0)) {
+            failed("obstacleLevels(Warning, Safe) needs Warning > Safe > 0, got " + warningLevel + ", " + safeLevel);
+            return;
+        }
+        warning = warningLevel;
+        safe = safeLevel;
+    }
+
     @jacabot.cartago.OPERATION
     void deltaBased(boolean on) {
         deltaBased = on;
@@ -90,9 +104,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
-            if (deltaBased && Math.abs(delta) > DELTA_LIMIT || right > WARNING || left > WARNING) {
+            if (deltaBased && Math.abs(delta) > DELTA_LIMIT || right > warning || left > warning) {
                 obstacle = true;
-            } else if (right < SAFE && left < SAFE && Math.abs(delta) <= DELTA_LIMIT / 2 && clearAhead()) {
+            } else if (right < safe && left < safe && Math.abs(delta) <= DELTA_LIMIT / 2 && clearAhead()) {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
