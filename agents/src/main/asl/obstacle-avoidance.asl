@@ -35,8 +35,6 @@ cruiseSpeed(100).
 // the middleware keeps the floor crossed and proposes turns towards floor not yet crossed
 wheelGeometry(0.001, 0.09).
 turnSpeed(100).
-// (issue 13) MyBot sensor levels: obstacle past 250 (about 10 cm), clear under 150 (about 14 cm)
-obstacleLevels(250, 150).
 obstacleTimes([]).
 
 !start.
@@ -55,10 +53,6 @@ obstacleTimes([]).
 +!waitConnection : connected(true)
     <- println("Connection successful, waiting for sensor data");
        ?wheelGeometry(U, A); odometry(U, A);
-       // (issue 13) an obstacle is a sensor past the warning level, as in experiments 3-4: the
-       // left-right difference (a box 16 cm off on one side) kept the robot out of 30 cm gaps;
-       // the levels are the agent's (obstacleLevels)
-       deltaBased(false); ?obstacleLevels(W, S); obstacleLevels(W, S);
        acquireData; !moving.
 +!waitConnection <- .wait(100); !waitConnection.
 

@@ -16,8 +16,6 @@ final class ExplorationMap {
     static final double HORIZON = 3.0;
     /** Candidate headings: every 30 degrees around. */
     static final int DIRECTIONS = 12;
-    /** Floor within this distance counts fully, farther floor half. */
-    static final double NEAR = 1.0;
 
     private final double speedUnit, axle;
     private double x, z, heading; // metres, metres, radians
@@ -59,11 +57,7 @@ final class ExplorationMap {
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        double ox = x + distance * Math.cos(a), oz = z + distance * Math.sin(a);
-        // a short piece of wall across the line of sight: walls are long, one cell hid little
-        for (int k = -1; k <= 1; k++) {
-            blocked.put(key(ox - k * CELL * Math.sin(a), oz + k * CELL * Math.cos(a)), true);
-        }
+        blocked.put(key(x + distance * Math.cos(a), z + distance * Math.sin(a)), true);
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -81,7 +75,7 @@ final class ExplorationMap {
     }
 
     private double score(double a) {
-        double fresh = 0;
+        int fresh = 0;
         long previous = key(x, z);
         for (double d = CELL / 2; d <= HORIZON + 1e-9; d += CELL / 2) {
             long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
@@ -89,7 +83,7 @@ final class ExplorationMap {
                 break;
             }
             if (k != previous && !visits.containsKey(k)) {
-                fresh += d <= NEAR ? 1 : 0.5; // nearer floor is likelier to be reachable
+                fresh++;
             }
             previous = k;
         }
