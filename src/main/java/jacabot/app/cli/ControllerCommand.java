@@ -49,8 +49,8 @@ final class ControllerCommand implements Callable<Integer> {
     private double speed = 1.0;
 
     @Option(names = "--fail-safe-ms", paramLabel = "MS",
-            description = "stop the wheels after this long without a command or heartbeat (default ${DEFAULT-VALUE})")
-    private long failSafeMs = 500;
+            description = "stop the wheels after this long (wall clock and simulated time) without a command or heartbeat (default ${DEFAULT-VALUE})")
+    private long failSafeMs = ControllerConfig.FAIL_SAFE_MS;
 
     @Option(names = "--secret-file", paramLabel = "FILE",
             description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
