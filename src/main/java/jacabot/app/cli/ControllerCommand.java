@@ -56,6 +56,13 @@ final class ControllerCommand implements Callable<Integer> {
             description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
     private Path secretFile;
 
+    @Option(names = "--tls-store", paramLabel = "FILE",
+            description = "connect with TLS, trusting the certificates of this key store (PKCS12 or JKS, made with keytool)")
+    private Path tlsStore;
+
+    @Option(names = "--tls-password-file", paramLabel = "FILE", description = "the --tls-store's password, on the file's first line")
+    private Path tlsPasswordFile;
+
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec spec;
 
@@ -83,6 +90,11 @@ final class ControllerCommand implements Callable<Integer> {
         } catch (java.io.IOException | java.io.UncheckedIOException e) {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
+        if (tlsStore != null) {
+            config = config.withTls(TlsOptions.context(tlsStore, tlsPasswordFile));
+        } else if (tlsPasswordFile != null) {
+            throw new UserError("--tls-password-file goes with --tls-store FILE");
+        }
         if (seconds != null && !(seconds > 0 && seconds < 1e9)) {
             throw new UserError("--seconds must be a positive number, got " + seconds);
         }
@@ -105,7 +117,7 @@ final class ControllerCommand implements Callable<Integer> {
         }
         stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
-                lockstep ? "lockstep" : "real time x" + speed, host, port));
+                lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
         Thread hook = new Thread(controller::close, "controller-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
