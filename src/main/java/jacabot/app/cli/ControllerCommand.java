@@ -56,6 +56,10 @@ final class ControllerCommand implements Callable<Integer> {
             description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
     private Path secretFile;
 
+    @Option(names = "--event-log", paramLabel = "FILE",
+            description = "write a line per reading, applied command and pose (two lockstep runs of one world and agent give the same file)")
+    private Path eventLog;
+
     @Option(names = "--tls-store", paramLabel = "FILE",
             description = "connect with TLS, trusting the certificates of this key store (PKCS12 or JKS, made with keytool)")
     private Path tlsStore;
@@ -109,6 +113,23 @@ final class ControllerCommand implements Callable<Integer> {
         } catch (RuntimeException e) {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
+        java.io.BufferedWriter events = null;
+        if (eventLog != null) {
+            try {
+                events = java.nio.file.Files.newBufferedWriter(eventLog, java.nio.charset.StandardCharsets.UTF_8);
+            } catch (java.io.IOException e) {
+                throw new UserError("--event-log " + eventLog + ": cannot write it (" + e.getMessage() + ")");
+            }
+            java.io.BufferedWriter sink = events;
+            config = config.withEventLog(line -> {
+                try {
+                    sink.write(line);
+                    sink.write('\n');
+                } catch (java.io.IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            });
+        }
         RobotController controller;
         try {
             controller = new RobotController(simWorld, config);
@@ -118,13 +139,18 @@ final class ControllerCommand implements Callable<Integer> {
         stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
                 lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
-        Thread hook = new Thread(controller::close, "controller-shutdown");
+        final java.io.BufferedWriter eventsFile = events;
+        Thread hook = new Thread(() -> {
+            controller.close();
+            closeQuietly(eventsFile);
+        }, "controller-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             controller.start();
             run(controller.runner());
         } finally {
             controller.close();
+            closeQuietly(eventsFile);
             try {
                 controller.runner().stop();
                 Runtime.getRuntime().removeShutdownHook(hook);
@@ -136,6 +162,16 @@ final class ControllerCommand implements Callable<Integer> {
                 simWorld.time(), controller.steps()));
         stdout.flush();
         return 0;
+    }
+
+    private static void closeQuietly(java.io.Writer w) {
+        if (w != null) {
+            try {
+                w.close();
+            } catch (java.io.IOException e) {
+                // the run is over; nothing more to say
+            }
+        }
     }
 
     private void run(SimRunner runner) throws InterruptedException {

@@ -63,6 +63,14 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "where the middleware listens on loopback (default: a free port)")
     private int port = 0;
 
+    @Option(names = "--remote-controller", description = "the agent side only: wait on --port (default 4444) for "
+            + "`jacabot controller --lockstep` in another process, and run with it step by step (the same run as in one process)")
+    private boolean remoteController;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "with --remote-controller: the link secret shared with the controller (default ~/.jacabot/link-secret)")
+    private Path secretFile;
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
@@ -152,6 +160,9 @@ final class ExperimentCommand implements Callable<Integer> {
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
+        if (remoteController) {
+            return runWithRemoteController(run, seconds, stdout);
+        }
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed, console);
         var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
@@ -223,6 +234,28 @@ final class ExperimentCommand implements Callable<Integer> {
                 // the hook is running: it waits for done
             }
         }
+        return 0;
+    }
+
+    /** The agent side of the two-process lockstep set-up: the world, its summary and its logs are the controller's. */
+    private int runWithRemoteController(LockstepRun run, double seconds, java.io.PrintWriter stdout) throws Exception {
+        int listen = port != 0 ? port : jacabot.robot.link.Protocol.DEFAULT_PORT;
+        try {
+            jacabot.robot.link.LinkSecret.useInThisProcess(secretFile != null ? jacabot.robot.link.LinkSecret.loadOrCreate(secretFile)
+                    : jacabot.robot.link.LinkSecret.userDefault());
+        } catch (IOException | java.io.UncheckedIOException e) {
+            throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
+        }
+        stdout.println("Waiting for `jacabot controller --lockstep --port " + listen + "` with the same world file.");
+        stdout.flush();
+        LockstepCoordinator.Result result;
+        try {
+            result = run.stepLogs(false).port(listen).remoteController(true).runFor(seconds);
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot listen on port " + listen + " (" + e.getMessage() + "); choose another with --port", e);
+        }
+        stdout.printf("%d steps (%.1f s simulated) with the remote controller, %d reasoning cycles.%n", result.steps(),
+                result.steps() * run.world().controlStep() / 1000.0, run.cycles());
         return 0;
     }
 
