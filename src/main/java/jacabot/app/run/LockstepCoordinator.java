@@ -110,6 +110,12 @@ public final class LockstepCoordinator {
         return this;
     }
 
+    /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
+    public int listeningPort() {
+        MiddlewareLink m = remoteLink;
+        return m != null ? m.port() : 0;
+    }
+
     /** Ends the run at the current step (e.g. on SIGTERM): {@link #runFor} returns what it has. */
     public void stop() {
         stopRequested = true;
@@ -215,6 +221,7 @@ public final class LockstepCoordinator {
         private volatile boolean connectedOnce;
         /** A remote controller's run ends after the step before this simulated time (ms); −1: at its goodbye. */
         private long endAt = -1;
+        private volatile boolean answeredLast;
 
         Server(MiddlewareLink link, List<String> agentLog) {
             this.link = link;
@@ -233,6 +240,8 @@ public final class LockstepCoordinator {
                     readings.clear();
                 } else if (e instanceof LinkEvent.Reading) {
                     readings.add(((LinkEvent.Reading) e).info());
+                } else if (e instanceof LinkEvent.StepMarker && answeredLast) {
+                    end.countDown(); // a controller that runs on past this side's duration: it is cut off here
                 } else if (e instanceof LinkEvent.StepMarker) {
                     LinkEvent.StepMarker m = (LinkEvent.StepMarker) e;
                     List<Command> commands = callAgent(new StepData(m.step(), m.simTimeMs(), readings));
@@ -243,7 +252,9 @@ public final class LockstepCoordinator {
                     link.answerStep(commands, m.step());
                     steps++;
                     if (endAt >= 0 && m.simTimeMs() + link.robot().controlStepMs() >= endAt) {
-                        end.countDown(); // the same steps as an in-process run of this duration
+                        // the same steps as an in-process run of this duration; the answer is still on
+                        // its way, so wait for the controller's goodbye rather than close at once
+                        answeredLast = true;
                     }
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)

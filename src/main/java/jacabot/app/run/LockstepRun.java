@@ -166,6 +166,12 @@ public final class LockstepRun {
         return this;
     }
 
+    /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
+    public int listeningPort() {
+        LockstepCoordinator c = coordinator;
+        return c != null ? c.listeningPort() : 0;
+    }
+
     /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
     public void stop() {
         LockstepCoordinator c = coordinator;

@@ -10,8 +10,6 @@ import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimWorld;
 import java.io.InputStream;
 import java.io.PrintStream;
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
@@ -39,12 +37,6 @@ class TwoProcessReplayTest {
         return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), e.worldFile()));
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        }
-    }
-
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "NAVIGATION"})
     void theTwoProcessLockstepRunIsTheInProcessRun(Experiment e) throws Exception {
@@ -54,28 +46,44 @@ class TwoProcessReplayTest {
 
         LinkSecret secret = LinkSecret.random();
         LinkSecret.useInThisProcess(secret); // the agent side's "user secret"; the controller is given it
-        int port = freePort();
         SimWorld agentSide = world(e);
         var two = new LockstepRun(agentSide, null, e, agent(e), e.id() + ".asl", agentSide.seed(), quiet)
-                .port(port).remoteController(true);
+                .remoteController(true); // port 0: a free one
         LockstepCoordinator.Result[] result = new LockstepCoordinator.Result[1];
+        Throwable[] failed = new Throwable[1];
         Thread agents = new Thread(() -> {
             try {
                 result[0] = two.runFor(SECONDS);
-            } catch (Exception failed) {
-                throw new IllegalStateException(failed);
+            } catch (Throwable t) {
+                failed[0] = t;
             }
         }, "agent-side");
         agents.start();
+        long listening = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (two.listeningPort() == 0 && failed[0] == null && System.nanoTime() < listening) {
+            Thread.sleep(10);
+        }
+        assertTrue(failed[0] == null, () -> "the agent side failed: " + failed[0]);
+        int port = two.listeningPort();
         List<String> controllerLog = new CopyOnWriteArrayList<>();
         var cc = ControllerConfig.defaults().withAddress("127.0.0.1", port).withSecret(secret).withLockstep(true)
                 .withBackoff(20, 200).withLog(line -> { }).withEventLog(controllerLog::add);
         try (var controller = new RobotController(world(e), cc)) {
             controller.start();
-            controller.runner().runFor(SECONDS);
+            Thread simulation = new Thread(() -> controller.runner().runFor(SECONDS), "controller-side");
+            simulation.setDaemon(true);
+            simulation.start();
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+            while (simulation.isAlive() && System.nanoTime() < end && (agents.isAlive() || result[0] != null)) {
+                simulation.join(100);
+            }
+            assertTrue(failed[0] == null, () -> "the agent side failed: " + failed[0] + "; controller: " + controller.lastProblem());
+            assertTrue(!simulation.isAlive(), () -> "the controller did not finish; its last problem: " + controller.lastProblem()
+                    + "; the agent side's link log: " + (result[0] != null ? result[0].linkLog() : "(running)"));
+        } finally {
+            LinkSecret.resetUserDefault();
         }
         agents.join(TimeUnit.SECONDS.toMillis(120));
-        LinkSecret.resetUserDefault();
         assertTrue(result[0] != null, "the agent side did not end");
         assertEquals(agentSide.timeMs(), 0, "the agent side's world is not stepped");
         assertEquals(one.steps(), result[0].steps());
