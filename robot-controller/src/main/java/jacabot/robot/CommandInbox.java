@@ -4,6 +4,7 @@ import jacabot.robot.link.CommandCode;
 import jacabot.robot.link.ReceivedCommand;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
@@ -20,18 +21,30 @@ final class CommandInbox {
     record Drained(List<ReceivedCommand> commands, boolean dropped) {
     }
 
+    /** How long nothing has come from the agent side, in wall-clock and in simulated milliseconds. */
+    record Silence(long wallMs, long simMs) {
+    }
+
     private final Object lock;
     private final LongSupplier nanoTime;
+    private final LongSupplier simTimeMs;
     private final List<ReceivedCommand> commands = new ArrayList<>();
     private long ackedStep = -1;
     private boolean connected, dropped, closed;
-    private long lastHeardNanos;
+    private long lastHeardNanos, lastHeardSimMs;
     private long connections;
     private Consumer<ReceivedCommand> onReceipt;
 
-    CommandInbox(Object lock, LongSupplier nanoTime) {
+    /** @param simTimeMs the world's time; read with {@code lock} held, so between two world steps */
+    CommandInbox(Object lock, LongSupplier nanoTime, LongSupplier simTimeMs) {
         this.lock = lock;
         this.nanoTime = nanoTime;
+        this.simTimeMs = simTimeMs;
+    }
+
+    private void heard() {
+        lastHeardNanos = nanoTime.getAsLong();
+        lastHeardSimMs = simTimeMs.getAsLong();
     }
 
     /**
@@ -47,7 +60,7 @@ final class CommandInbox {
     /** Receiver thread: a valid command arrived (a heartbeat only refreshes the silence timer). */
     void offer(ReceivedCommand rc) {
         synchronized (lock) {
-            lastHeardNanos = nanoTime.getAsLong();
+            heard();
             CommandCode code = rc.command().code();
             if (code == CommandCode.STEP_ACK) {
                 ackedStep = Math.max(ackedStep, (long) rc.command().arg(0));
@@ -68,7 +81,7 @@ final class CommandInbox {
             connected = up;
             if (up) {
                 connections++;
-                lastHeardNanos = nanoTime.getAsLong();
+                heard();
             } else {
                 dropped = true;
                 commands.clear(); // half a step's commands must not be mistaken for a whole one
@@ -98,10 +111,28 @@ final class CommandInbox {
         }
     }
 
-    /** {@return wall-clock nanoseconds since the last command or heartbeat} */
-    long silenceNanos() {
+    /**
+     * Real time, simulation thread, world lock held: the silence that trips a fail-safe of
+     * {@code limitMs}, or null. It trips once the agent side has been silent for {@code limitMs} of
+     * wall-clock time and of simulated time. When the world ran faster than the wall clock (a speed
+     * factor, or a runner catching up after a pause) and the robot is moving, the world is held here
+     * (its lock released) until a word comes or the wall clock catches up: so the robot never drives
+     * more than {@code limitMs} of simulated time, plus one control step, on a word that is not renewed.
+     */
+    Silence awaitSilence(long limitMs, boolean moving) throws InterruptedException {
         synchronized (lock) {
-            return nanoTime.getAsLong() - lastHeardNanos;
+            while (connected && !closed) {
+                long wallMs = TimeUnit.NANOSECONDS.toMillis(nanoTime.getAsLong() - lastHeardNanos);
+                long simMs = simTimeMs.getAsLong() - lastHeardSimMs;
+                if (wallMs >= limitMs && simMs >= limitMs || wallMs >= limitMs && !moving) {
+                    return new Silence(wallMs, simMs);
+                }
+                if (simMs < limitMs || !moving) {
+                    return null;
+                }
+                lock.wait(Math.max(1, Math.min(10, limitMs - wallMs)));
+            }
+            return null;
         }
     }
 

@@ -11,7 +11,6 @@ import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 
 /**
  * The robot controller process of the thesis (Chapter 3 §2.3–2.4), run against a sim-world robot
@@ -61,7 +60,7 @@ public final class RobotController implements AutoCloseable {
         this.robot = config.robotName() == null ? world.robots().get(0) : world.robot(config.robotName());
         this.sampler = new DeviceSampler(robot, config.sendCameraImage());
         this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
-        this.inbox = new CommandInbox(world, config.nanoTime());
+        this.inbox = new CommandInbox(world, config.nanoTime(), world::timeMs);
         this.link = new RobotLink(config, inbox, costs);
         this.runner = new SimRunner(world, this::controlStep);
         if (config.lockstep()) {
@@ -191,9 +190,17 @@ public final class RobotController implements AutoCloseable {
         if (d.dropped()) {
             failSafe("the link to the middleware dropped");
         }
-        long silence = TimeUnit.NANOSECONDS.toMillis(inbox.silenceNanos());
-        if (inbox.isConnected() && silence >= config.failSafeMs() && d.commands().isEmpty()) {
-            failSafe("no command or heartbeat for " + silence + " ms");
+        if (d.commands().isEmpty() && !failSafeTripped) {
+            try {
+                CommandInbox.Silence silence = inbox.awaitSilence(config.failSafeMs(), executor.moving());
+                if (silence != null) {
+                    failSafe("no command or heartbeat for " + silence.wallMs() + " ms (" + silence.simMs()
+                            + " ms of simulated time)");
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return null;
+            }
         }
         return d.commands();
     }

@@ -63,4 +63,28 @@ class KinematicsTest {
         assertEquals(0.05, w.robot("k").trajectory().get(25).x(), 1e-9);
         assertEquals(0.002, w.robot("k").trajectory().get(1).x(), 1e-12);
     }
+
+    @Test
+    void aLongTrajectoryIsThinnedToEverySecondPoseAndKeepsTheLatest() {
+        SimWorld w = TestWorlds.khepera(0, 0, 0, "");
+        w.robot("k").setSpeeds(20, -10);
+        java.util.List<Pose> every = new java.util.ArrayList<>(java.util.List.of(w.robot("k").pose()));
+        w.addListener(new jacabot.sim.engine.WorldListener() {
+            @Override
+            public void controlStepEnded(long timeMs) {
+                every.add(w.robot("k").pose());
+            }
+        });
+        int limit = 1 << 15, steps = 2 * limit + 3;
+        for (int i = 0; i < steps; i++) {
+            w.step();
+        }
+        var t = w.robot("k").trajectory();
+        assertTrue(t.size() <= limit + 1, t.size() + " poses");
+        assertEquals(limit / 2 + 2, t.size(), "every 4th of 65,539 steps, then the latest");
+        for (int j = 0; j < t.size() - 1; j++) {
+            assertEquals(every.get(4 * j), t.get(j), "pose " + j);
+        }
+        assertEquals(w.robot("k").pose(), t.get(t.size() - 1));
+    }
 }

@@ -49,12 +49,23 @@ final class ControllerCommand implements Callable<Integer> {
     private double speed = 1.0;
 
     @Option(names = "--fail-safe-ms", paramLabel = "MS",
-            description = "stop the wheels after this long without a command or heartbeat (default ${DEFAULT-VALUE})")
-    private long failSafeMs = 500;
+            description = "stop the wheels after this long (wall clock and simulated time) without a command or heartbeat (default ${DEFAULT-VALUE})")
+    private long failSafeMs = ControllerConfig.FAIL_SAFE_MS;
 
     @Option(names = "--secret-file", paramLabel = "FILE",
             description = "the link secret shared with the middleware (default ~/.jacabot/link-secret, made 0600 if absent)")
     private Path secretFile;
+
+    @Option(names = "--event-log", paramLabel = "FILE",
+            description = "write a line per reading, applied command and pose (two lockstep runs of one world and agent give the same file)")
+    private Path eventLog;
+
+    @Option(names = "--tls-store", paramLabel = "FILE",
+            description = "connect with TLS, trusting the certificates of this key store (PKCS12 or JKS, made with keytool)")
+    private Path tlsStore;
+
+    @Option(names = "--tls-password-file", paramLabel = "FILE", description = "the --tls-store's password, on the file's first line")
+    private Path tlsPasswordFile;
 
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec spec;
@@ -83,6 +94,11 @@ final class ControllerCommand implements Callable<Integer> {
         } catch (java.io.IOException | java.io.UncheckedIOException e) {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
+        if (tlsStore != null) {
+            config = config.withTls(TlsOptions.context(tlsStore, tlsPasswordFile));
+        } else if (tlsPasswordFile != null) {
+            throw new UserError("--tls-password-file goes with --tls-store FILE");
+        }
         if (seconds != null && !(seconds > 0 && seconds < 1e9)) {
             throw new UserError("--seconds must be a positive number, got " + seconds);
         }
@@ -97,6 +113,23 @@ final class ControllerCommand implements Callable<Integer> {
         } catch (RuntimeException e) {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
+        java.io.BufferedWriter events = null;
+        if (eventLog != null) {
+            try {
+                events = java.nio.file.Files.newBufferedWriter(eventLog, java.nio.charset.StandardCharsets.UTF_8);
+            } catch (java.io.IOException e) {
+                throw new UserError("--event-log " + eventLog + ": cannot write it (" + e.getMessage() + ")");
+            }
+            java.io.BufferedWriter sink = events;
+            config = config.withEventLog(line -> {
+                try {
+                    sink.write(line);
+                    sink.write('\n');
+                } catch (java.io.IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            });
+        }
         RobotController controller;
         try {
             controller = new RobotController(simWorld, config);
@@ -105,14 +138,19 @@ final class ControllerCommand implements Callable<Integer> {
         }
         stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
-                lockstep ? "lockstep" : "real time x" + speed, host, port));
-        Thread hook = new Thread(controller::close, "controller-shutdown");
+                lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
+        final java.io.BufferedWriter eventsFile = events;
+        Thread hook = new Thread(() -> {
+            controller.close();
+            closeQuietly(eventsFile);
+        }, "controller-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             controller.start();
             run(controller.runner());
         } finally {
             controller.close();
+            closeQuietly(eventsFile);
             try {
                 controller.runner().stop();
                 Runtime.getRuntime().removeShutdownHook(hook);
@@ -124,6 +162,16 @@ final class ControllerCommand implements Callable<Integer> {
                 simWorld.time(), controller.steps()));
         stdout.flush();
         return 0;
+    }
+
+    private static void closeQuietly(java.io.Writer w) {
+        if (w != null) {
+            try {
+                w.close();
+            } catch (java.io.IOException e) {
+                // the run is over; nothing more to say
+            }
+        }
     }
 
     private void run(SimRunner runner) throws InterruptedException {

@@ -69,6 +69,14 @@ final class ExperimentCommand implements Callable<Integer> {
             + "control step's readings, applied command and pose (2.5-7 MB per simulated 10 minutes)")
     private boolean linkLog;
 
+    @Option(names = "--remote-controller", description = "the agent side only: wait on --port (default 4444) for "
+            + "`jacabot controller --lockstep` in another process, and run with it step by step (the same run as in one process)")
+    private boolean remoteController;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "with --remote-controller: the link secret shared with the controller (default ~/.jacabot/link-secret)")
+    private Path secretFile;
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
@@ -168,6 +176,9 @@ final class ExperimentCommand implements Callable<Integer> {
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
+        if (remoteController) {
+            return runWithRemoteController(run, seconds, log);
+        }
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
@@ -249,6 +260,27 @@ final class ExperimentCommand implements Callable<Integer> {
                 // the hook is running: it waits for done
             }
         }
+        return 0;
+    }
+
+    /** The agent side of the two-process lockstep set-up: the world, its summary and its logs are the controller's. */
+    private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log) throws Exception {
+        int listen = port != 0 ? port : jacabot.robot.link.Protocol.DEFAULT_PORT;
+        try {
+            jacabot.robot.link.LinkSecret.useInThisProcess(secretFile != null ? jacabot.robot.link.LinkSecret.loadOrCreate(secretFile)
+                    : jacabot.robot.link.LinkSecret.userDefault());
+        } catch (IOException | java.io.UncheckedIOException e) {
+            throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
+        }
+        log.info("Waiting for `jacabot controller --lockstep --port " + listen + "` with the same world file.");
+        LockstepCoordinator.Result result;
+        try {
+            result = run.stepLogs(false).port(listen).remoteController(true).runFor(seconds);
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot listen on port " + listen + " (" + e.getMessage() + "); choose another with --port", e);
+        }
+        log.result(String.format("%d steps (%.1f s simulated) with the remote controller, %d reasoning cycles.", result.steps(),
+                result.steps() * run.world().controlStep() / 1000.0, run.cycles()));
         return 0;
     }
 

@@ -63,6 +63,18 @@ final class RunCommand implements Callable<Integer> {
             description = "the link secret shared with `jacabot controller` (default ~/.jacabot/link-secret, made 0600 if absent)")
     private Path secretFile;
 
+    @Option(names = "--tls-store", paramLabel = "FILE",
+            description = "the middleware takes the controller over TLS, with the key of this store (PKCS12 or JKS, made with keytool); "
+                    + "it listens on --tls-address at the middleware's port")
+    private Path tlsStore;
+
+    @Option(names = "--tls-password-file", paramLabel = "FILE", description = "the --tls-store's password, on the file's first line")
+    private Path tlsPasswordFile;
+
+    @Option(names = "--tls-address", paramLabel = "HOST",
+            description = "with --tls-store: the address to listen on, e.g. this machine's address on the lab network (default ${DEFAULT-VALUE})")
+    private String tlsAddress = "127.0.0.1";
+
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
@@ -108,13 +120,34 @@ final class RunCommand implements Callable<Integer> {
             projectWarnings(file).forEach(log::warn);
         }
         int listen = port != null ? port : declaredPort(mas);
-        if (port != null) {
+        if (tlsStore != null && listen <= 0) {
+            throw new UserError("--tls-store: no agent of " + file + " has a robot middleware (" + PORT_BELIEF + "(P) belief)");
+        }
+        javax.net.ssl.SSLContext tls = tlsStore != null ? TlsOptions.context(tlsStore, tlsPasswordFile) : null;
+        if (tls == null && tlsPasswordFile != null) {
+            throw new UserError("--tls-password-file goes with --tls-store FILE");
+        }
+        int middlewarePort = tls != null ? freeLoopbackPort() : listen; // behind the TLS relay
+        if (port != null || tls != null) {
             for (String name : mas.agentNames()) {
-                setPort(mas.agent(name), port);
+                setPort(mas.agent(name), middlewarePort);
             }
         }
+        jacabot.app.run.TlsRelay relay = null;
+        if (tls != null) {
+            try {
+                relay = jacabot.app.run.TlsRelay.start(tls, InetAddress.getByName(tlsAddress), listen, middlewarePort,
+                        line -> err.println("[middleware] " + line));
+            } catch (IOException e) {
+                throw new IllegalStateException("cannot listen with TLS on " + tlsAddress + ":" + listen + " (" + e.getMessage()
+                        + "); choose another with --port or --tls-address");
+            }
+            err.println("[middleware] TLS on " + tlsAddress + ":" + listen + ", relayed to the middleware on loopback");
+        }
         if (listen > 0) {
-            checkFree(listen);
+            if (tls == null) {
+                checkFree(listen);
+            }
             try {
                 LinkSecret.userDefault(); // a secret file that cannot be read is told now, in one line
             } catch (java.io.UncheckedIOException e) {
@@ -150,6 +183,9 @@ final class RunCommand implements Callable<Integer> {
             MiddlewareLink.setDefaultQuiescence(() -> true);
         }
         sampling.close();
+        if (relay != null) {
+            relay.close();
+        }
         if (inspector != null) {
             inspectorOptions.linger(inspector, results);
             inspector.close();
@@ -211,6 +247,12 @@ final class RunCommand implements Callable<Integer> {
             }
         }
         agent.addBelief(Literal.of(PORT_BELIEF, new NumberTerm(port)).addAnnot(Literal.SOURCE_SELF), false);
+    }
+
+    private static int freeLoopbackPort() throws IOException {
+        try (ServerSocket probe = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return probe.getLocalPort();
+        }
     }
 
     /** A port in use is a one-line error with what to do, not a run that ends quietly. */

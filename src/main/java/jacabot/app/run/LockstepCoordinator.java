@@ -62,6 +62,8 @@ public final class LockstepCoordinator {
     private boolean stepLogs = true;
     private Consumer<String> controllerLogSink;
     private int port;
+    private boolean remote;
+    private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
 
@@ -96,12 +98,34 @@ public final class LockstepCoordinator {
         return this;
     }
 
+    /**
+     * The two-process set-up: the controller is another process ({@code jacabot controller
+     * --lockstep}) that connects to {@link #port} with the user's link secret; this side answers its
+     * steps exactly as for an in-process controller, so both runs are the same run. The world here
+     * only gives the spec; it is not stepped. {@link Result#controllerLog()} is then empty (the
+     * controller writes its own: {@code jacabot controller --event-log FILE}).
+     */
+    public LockstepCoordinator remoteController(boolean on) {
+        this.remote = on;
+        return this;
+    }
+
+    /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
+    public int listeningPort() {
+        MiddlewareLink m = remoteLink;
+        return m != null ? m.port() : 0;
+    }
+
     /** Ends the run at the current step (e.g. on SIGTERM): {@link #runFor} returns what it has. */
     public void stop() {
         stopRequested = true;
         InProcessLink l = running;
         if (l != null) {
             l.controller().close();
+        }
+        MiddlewareLink m = remoteLink;
+        if (m != null) {
+            m.close();
         }
     }
 
@@ -116,6 +140,9 @@ public final class LockstepCoordinator {
         List<String> agentLog = Collections.synchronizedList(new ArrayList<>());
         List<String> linkLog = Collections.synchronizedList(new ArrayList<>());
         Consumer<String> log = linkLog::add;
+        if (remote) {
+            return runRemote(seconds, agentLog, linkLog);
+        }
         ControllerConfig cc = ControllerConfig.defaults().withRobot(robotName).withLockstep(true).withLog(log);
         if (stepLogs) {
             cc = cc.withEventLog(controllerLogSink != null ? controllerLogSink : controllerLog::add);
@@ -159,6 +186,26 @@ public final class LockstepCoordinator {
         }
     }
 
+    /** {@link #runFor} with the controller in another process: until its goodbye or {@code seconds} of steps. */
+    private Result runRemote(double seconds, List<String> agentLog, List<String> linkLog) throws IOException, InterruptedException {
+        try (MiddlewareLink link = MiddlewareLink.open(LinkConfig.defaults().withPort(port).withLog(linkLog::add))) {
+            remoteLink = link;
+            if (stopRequested) {
+                link.close();
+            }
+            Server server = new Server(link, stepLogs ? agentLog : null);
+            server.endAt = Math.round(seconds * 1000);
+            link.handOver(server);
+            try {
+                server.awaitEnd();
+            } finally {
+                remoteLink = null;
+            }
+            return new Result(server.steps, List.of(), List.copyOf(agentLog), link.timings().response(),
+                    List.copyOf(linkLog), new LinkCosts(), link.costs(), link.timings());
+        }
+    }
+
     /**
      * The agent side, run on the link's reading thread: collect a step's readings, call the agent
      * at its marker, answer with the commands and the acknowledgement in one write.
@@ -171,7 +218,10 @@ public final class LockstepCoordinator {
         private volatile long lastEventNanos = System.nanoTime();
         private volatile RuntimeException failure;
         private volatile long steps;
-        private boolean connectedOnce;
+        private volatile boolean connectedOnce;
+        /** A remote controller's run ends after the step before this simulated time (ms); −1: at its goodbye. */
+        private long endAt = -1;
+        private volatile boolean answeredLast;
 
         Server(MiddlewareLink link, List<String> agentLog) {
             this.link = link;
@@ -190,6 +240,8 @@ public final class LockstepCoordinator {
                     readings.clear();
                 } else if (e instanceof LinkEvent.Reading) {
                     readings.add(((LinkEvent.Reading) e).info());
+                } else if (e instanceof LinkEvent.StepMarker && answeredLast) {
+                    end.countDown(); // a controller that runs on past this side's duration: it is cut off here
                 } else if (e instanceof LinkEvent.StepMarker) {
                     LinkEvent.StepMarker m = (LinkEvent.StepMarker) e;
                     List<Command> commands = callAgent(new StepData(m.step(), m.simTimeMs(), readings));
@@ -199,6 +251,11 @@ public final class LockstepCoordinator {
                     readings.clear();
                     link.answerStep(commands, m.step());
                     steps++;
+                    if (endAt >= 0 && m.simTimeMs() + link.robot().controlStepMs() >= endAt) {
+                        // the same steps as an in-process run of this duration; the answer is still on
+                        // its way, so wait for the controller's goodbye rather than close at once
+                        answeredLast = true;
+                    }
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
@@ -213,6 +270,9 @@ public final class LockstepCoordinator {
         /** Waits for the controller's goodbye; rethrows the agent side's failure. */
         void awaitEnd() throws InterruptedException {
             while (!end.await(1, TimeUnit.SECONDS)) {
+                if (!connectedOnce && endAt >= 0) {
+                    continue; // waiting for the other process's controller, as long as it takes
+                }
                 if (System.nanoTime() - lastEventNanos > TimeUnit.SECONDS.toNanos(SILENCE_LIMIT_SECONDS)) {
                     throw new IllegalStateException("no data from the controller for " + SILENCE_LIMIT_SECONDS + " s");
                 }

@@ -58,6 +58,7 @@ public final class LockstepRun {
     private boolean stepLogs = true;
     private Consumer<String> controllerLogSink;
     private int port;
+    private boolean remoteController;
     private volatile LockstepCoordinator coordinator;
     private Consumer<StepData> onStep = d -> {
     };
@@ -156,6 +157,21 @@ public final class LockstepRun {
         return this;
     }
 
+    /**
+     * The controller is another process ({@code jacabot controller --lockstep --port P}); see
+     * {@link LockstepCoordinator#remoteController}: the same run as in one process, step for step.
+     */
+    public LockstepRun remoteController(boolean on) {
+        this.remoteController = on;
+        return this;
+    }
+
+    /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
+    public int listeningPort() {
+        LockstepCoordinator c = coordinator;
+        return c != null ? c.listeningPort() : 0;
+    }
+
     /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
     public void stop() {
         LockstepCoordinator c = coordinator;
@@ -166,7 +182,8 @@ public final class LockstepRun {
 
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
-        var c = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs).port(port);
+        var c = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs).port(port)
+                .remoteController(remoteController);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
         }

@@ -52,7 +52,8 @@ public final class RunRecorder implements WorldListener {
     private final double cellSize, minX, minZ;
     private final int cellsX, cellsZ;
     private final boolean[] visited;
-    private final List<Pose> trajectory = new ArrayList<>();
+    /** The pose at the end of the last control step (the trajectory itself is sim-world's, bounded). */
+    private Pose last;
     private final List<String> events = new ArrayList<>();
     private final List<Double> pickTimes = new ArrayList<>(), deliveryTimes = new ArrayList<>();
 
@@ -80,7 +81,7 @@ public final class RunRecorder implements WorldListener {
         this.cellsZ = Math.max(1, (int) Math.round(d / cellSize));
         this.visited = new boolean[cellsX * cellsZ];
         Pose p = robot.pose();
-        trajectory.add(p);
+        last = p;
         visit(p);
         contactAtStart = robot.contactTime();
         contact = contactAtStart;
@@ -115,8 +116,8 @@ public final class RunRecorder implements WorldListener {
     public void controlStepEnded(long timeMs) {
         nowMs = timeMs;
         Pose p = robot.pose();
-        distance += p.position().distanceTo(trajectory.get(trajectory.size() - 1).position());
-        trajectory.add(p);
+        distance += p.position().distanceTo(last.position());
+        last = p;
         visit(p);
         recordContact();
         recordGripper();
@@ -264,9 +265,13 @@ public final class RunRecorder implements WorldListener {
         return String.format(Locale.ROOT, format, args);
     }
 
-    /** {@return the robot's poses, one per control step since attaching (the first is the pose then)} */
+    /**
+     * {@return the robot's poses, one per control step since the world started, as sim-world keeps
+     * them (thinned past 32,768 poses: see {@code Robot.trajectory()}); the recorder keeps no copy, so
+     * an hour's run does not grow the heap}
+     */
     public List<Pose> trajectory() {
-        return List.copyOf(trajectory);
+        return robot.trajectory();
     }
 
     /** {@return the event log so far, one line per event} */

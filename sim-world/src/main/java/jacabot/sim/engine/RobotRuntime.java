@@ -22,7 +22,13 @@ final class RobotRuntime implements RobotHost, GraspHost {
     private final Physics physics;
     private final SimObject body;
     private final RayCaster rayCaster;
+    /** Poses kept at most (about 1.5 MB): past it the trajectory is thinned, so an hour's run keeps a flat heap. */
+    static final int TRAJECTORY_LIMIT = 1 << 15;
+    /** The pose every {@code stride} control steps, then the latest pose when it falls between two. */
     private final List<Pose> trajectory = new ArrayList<>();
+    private int stride = 1;
+    private long controlSteps;
+    private boolean latestBetween;
     private final Robot robot;
     private double contactTime;
 
@@ -71,7 +77,33 @@ final class RobotRuntime implements RobotHost, GraspHost {
         carryHeld();
         robot.afterPhysicsStep(dt, nowMs);
         if (controlStepEnd) {
-            trajectory.add(pose());
+            record(pose());
+        }
+    }
+
+    /**
+     * One pose per control step until {@link #TRAJECTORY_LIMIT}; then every second one is dropped and
+     * the stride doubles (the picture of an hour keeps its shape), the latest pose always kept last.
+     */
+    private void record(Pose p) {
+        controlSteps++;
+        if (latestBetween) {
+            trajectory.remove(trajectory.size() - 1);
+        }
+        trajectory.add(p);
+        latestBetween = controlSteps % stride != 0;
+        if (!latestBetween && trajectory.size() > TRAJECTORY_LIMIT) {
+            int kept = 0;
+            for (int i = 0; i < trajectory.size(); i += 2) {
+                trajectory.set(kept++, trajectory.get(i));
+            }
+            boolean latestDropped = (trajectory.size() - 1) % 2 != 0;
+            trajectory.subList(kept, trajectory.size()).clear();
+            stride *= 2;
+            if (latestDropped) {
+                trajectory.add(p);
+                latestBetween = true;
+            }
         }
     }
 

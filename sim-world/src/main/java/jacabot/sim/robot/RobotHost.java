@@ -27,7 +27,7 @@ public interface RobotHost {
     /** {@return the floor colour (for cameras)} */
     Rgb floorColor();
 
-    /** {@return the robot's poses, one per control step, from the start} */
+    /** {@return the robot's poses, one per control step from the start, thinned past a bound (see Robot#trajectory)} */
     List<Pose> trajectory();
 
     /** {@return the simulated seconds spent touching walls, obstacles or other robots} */
