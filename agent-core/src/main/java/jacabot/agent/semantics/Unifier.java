@@ -161,7 +161,7 @@ public final class Unifier {
             for (BodyStep s : b.steps()) {
                 steps.add(s.withTerm(apply(s.term())));
             }
-            return new BodyTerm(steps);
+            return new BodyTerm(steps, b.braced());
         }
         if (t instanceof PlanTerm p) {
             return new PlanTerm(p.label() == null ? null : apply(p.label()),
@@ -429,11 +429,11 @@ public final class Unifier {
                 return unify(new BodyTerm(a.subList(i, a.size())), sb.term());
             }
             if (isVarStep(sa) && !isAction(sb)) {
-                if (!unify(sa.term(), new BodyTerm(List.of(sb)))) {
+                if (!unify(sa.term(), BodyTerm.bare(sb))) {
                     return false;
                 }
             } else if (isVarStep(sb) && !isAction(sa)) {
-                if (!unify(new BodyTerm(List.of(sa)), sb.term())) {
+                if (!unify(BodyTerm.bare(sa), sb.term())) {
                     return false;
                 }
             } else if (isVarStep(sa) || isVarStep(sb)) {

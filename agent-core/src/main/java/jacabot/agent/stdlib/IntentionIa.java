@@ -69,10 +69,8 @@ final class IntentionIa extends DefaultInternalAction {
                         .addAnnot(Literal.of("code_src", new StringTerm(im.plan().source().jasonFile())));
             }
             Term trigger = new TriggerTerm(im.trigger().withLiteral(u.apply(im.trigger().literal())));
-            var steps = new ArrayList<jacabot.agent.syntax.BodyStep>();
-            for (var s : im.remainingSteps()) {
-                steps.add(s.withTerm(u.apply(s.term())));
-            }
+            // the body as written (Jason does not apply the unifier; its variables come out fresh)
+            var steps = new ArrayList<>(im.remainingSteps());
             var map = new ArrayList<Term>();
             for (Map.Entry<Var, Term> e : u.bindings().entrySet()) {
                 map.add(Literal.of("map", e.getKey(), u.apply(e.getValue())));

@@ -83,7 +83,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
         for (BodyStep s : b.steps()) {
             steps.add(s.withTerm(map(s.term())));
         }
-        return new BodyTerm(steps);
+        return new BodyTerm(steps, b.braced());
     }
 
     @Override
