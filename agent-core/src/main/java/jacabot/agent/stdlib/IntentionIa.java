@@ -59,7 +59,7 @@ final class IntentionIa extends DefaultInternalAction {
         return i.isSuspended() ? "suspended" : "waiting";
     }
 
-    private static Term stack(Intention i) {
+    static Term stack(Intention i) {
         var ims = new ArrayList<Term>();
         for (IntendedMeans im : i) {
             Unifier u = im.unifier();
