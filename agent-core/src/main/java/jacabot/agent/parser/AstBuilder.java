@@ -416,7 +416,7 @@ final class AstBuilder {
         if (ctx.logExpr() != null) {
             // { head :- body }: a rule as a term
             if (body.steps().size() == 1 && body.steps().get(0).term() instanceof Literal head) {
-                return Literal.of("rule__", head, logExpr(ctx.logExpr()));
+                return Literal.of(Literal.RULE_TERM, head, logExpr(ctx.logExpr()));
             }
             errors.add(where(ctx), "wrong place for a rule");
         }

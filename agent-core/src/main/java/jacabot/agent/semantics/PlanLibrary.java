@@ -62,6 +62,33 @@ public final class PlanLibrary {
         return named;
     }
 
+    /**
+     * Adds a plan told by {@code source} ({@code .add_plan}, {@code tellHow}): when the library
+     * already has the same plan (trigger, context and body; labels aside) it only gains the
+     * source, as in Jason. {@return the plan in the library}
+     */
+    public Plan add(Plan p, jacabot.agent.syntax.Term source, boolean atBeginning) {
+        Literal s = Literal.of("source", source);
+        for (int i = 0; i < plans.size(); i++) {
+            Plan known = plans.get(i);
+            if (samePlan(known, p)) {
+                Plan more = known.withLabel(known.label().addAnnot(s));
+                plans.set(i, more);
+                candidateCache.clear();
+                return more;
+            }
+        }
+        Literal label = p.label() == null ? Literal.atom("undefined") : p.label();
+        return add(p.withLabel(label.addAnnot(s)), atBeginning);
+    }
+
+    private static boolean samePlan(Plan a, Plan b) {
+        if (a.context() == null && b.context() != null || a.context() != null && b.context() != null && !a.context().equals(b.context())) {
+            return false;
+        }
+        return a.trigger().equals(b.trigger()) && a.body().equals(b.body());
+    }
+
     private Literal uniqueLabel() {
         while (true) {
             String l = "p__" + (++lastLabel);
@@ -83,6 +110,28 @@ public final class PlanLibrary {
     public boolean remove(String label) {
         candidateCache.clear();
         return plans.removeIf(p -> p.label().functor().equals(label));
+    }
+
+    /**
+     * Takes {@code source} away from the sources of the plan labelled {@code label}; the plan goes
+     * when none is left. {@return whether there is such a plan}
+     */
+    public boolean removeSource(String label, jacabot.agent.syntax.Term source) {
+        Plan p = get(label);
+        if (p == null) {
+            return false;
+        }
+        Literal s = Literal.of("source", source);
+        if (p.label().annots().contains(s)) {
+            Literal rest = p.label().withAnnots(p.label().annots().stream().filter(a -> !a.equals(s)).toList());
+            if (rest.hasSource()) {
+                plans.set(plans.indexOf(p), p.withLabel(rest));
+                candidateCache.clear();
+            } else {
+                remove(label);
+            }
+        }
+        return true;
     }
 
     /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */

@@ -23,6 +23,8 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, new PlanLabel());
+        put(map, new RelevantRules());
         put(map, new CurrentIntention());
         put(map, new Eval());
         put(map, new Delete());
