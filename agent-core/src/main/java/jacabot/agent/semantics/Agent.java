@@ -33,6 +33,7 @@ public final class Agent {
     private final BeliefBase beliefBase = new BeliefBase();
     private final PlanLibrary planLibrary = new PlanLibrary();
     private final Circumstance circumstance = new Circumstance();
+    private final GoalStates goalStates = new GoalStates(this);
     private final Solver solver = new Solver(this);
     private final ReasoningCycle cycle = new ReasoningCycle(this);
     private final Map<String, InternalAction> internalActions;
@@ -80,6 +81,17 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
+        circumstance.addListener(new CircumstanceListener() {
+            @Override
+            public void eventAdded(Event e) {
+                goalStates.eventAdded(e);
+            }
+        });
+    }
+
+    /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */
+    public GoalStates goalStates() {
+        return goalStates;
     }
 
     /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */

@@ -10,6 +10,7 @@ import java.util.List;
 public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
     private int lastLabel;
+    private boolean goalStatePlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
 
@@ -54,6 +55,7 @@ public final class PlanLibrary {
         }
         Plan named = p.withLabel(label);
         candidateCache.clear();
+        goalStatePlans |= p.trigger().op() == Trigger.Op.GOAL_STATE;
         if (atBeginning) {
             plans.add(0, named);
         } else {
@@ -171,6 +173,11 @@ public final class PlanLibrary {
         }
         // a variable in the asked trigger ({+!_} for .relevant_plans) matches every plan
         return !(te.literal() instanceof Literal el) || pl.samePredicate(el);
+    }
+
+    /** {@return whether a plan for goal-state meta-events ({@code ^!g}) was ever added} */
+    public boolean hasGoalStatePlans() {
+        return goalStatePlans;
     }
 
     public List<Plan> plans() {
