@@ -73,7 +73,8 @@ final class IntentionIa extends DefaultInternalAction {
             var steps = new ArrayList<>(im.remainingSteps());
             var map = new ArrayList<Term>();
             for (Map.Entry<Var, Term> e : u.bindings().entrySet()) {
-                map.add(Literal.of("map", e.getKey(), u.apply(e.getValue())));
+                // the value as bound, not evaluated again (it may hold plans with math.random in their bodies)
+                map.add(Literal.of("map", e.getKey(), e.getValue()));
             }
             ims.add(Literal.of("im", label, trigger, new BodyTerm(steps), listOf(map)));
         }

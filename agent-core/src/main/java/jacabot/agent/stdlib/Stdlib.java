@@ -23,6 +23,7 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, new ListFiles());
         put(map, new PlanLabel());
         put(map, new RelevantRules());
         put(map, new CurrentIntention());
