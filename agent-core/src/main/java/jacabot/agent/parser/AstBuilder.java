@@ -324,12 +324,12 @@ final class AstBuilder {
         }
         if (ctx instanceof VarLiteralContext v) {
             Var var = new Var(v.VAR().getText());
-            return v.list() == null ? var : new AnnotatedVar(var, list(v.list()).elements());
+            return v.list() == null ? var : annotated(var, list(v.list()));
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
             String name = u.UNNAMEDVAR().getText();
             Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
-            return u.list() == null ? var : new AnnotatedVar(var, list(u.list()).elements());
+            return u.list() == null ? var : annotated(var, list(u.list()));
         }
         StructureContext s = (StructureContext) ctx;
         String functor = s.name.getText();
@@ -357,6 +357,17 @@ final class AstBuilder {
 
     Term term(TermContext ctx) {
         return logExpr(ctx.logExpr());
+    }
+
+    /** {@code V[a, b | T]}: the annotations, and the tail when there is one. */
+    private static AnnotatedVar annotated(Var var, ListTerm annots) {
+        var items = new ArrayList<Term>();
+        Term t = annots;
+        while (t instanceof ListTerm.Cons c) {
+            items.add(c.head());
+            t = c.tail();
+        }
+        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t);
     }
 
     ListTerm list(ListContext ctx) {
