@@ -58,7 +58,14 @@ public final class MasLauncher {
         try {
             var mas = new LocalMAS(Clock.wall(), out, seed);
             if (name.endsWith(".mas2j")) {
-                MasProject project = Mas2jReader.read(file);
+                MasProject project;
+                try {
+                    project = Mas2jReader.read(file);
+                } catch (AslSyntaxException e) {
+                    // Jason's console line for a project it cannot read; our located errors follow on stderr
+                    out.println("[RunLocalMAS] Error parsing file file:" + file + "!");
+                    throw e;
+                }
                 if (project.environment() != null) {
                     mas.setEnvironment(newInstance(project.environment(), Environment.class), project.environmentArgs());
                 } else {

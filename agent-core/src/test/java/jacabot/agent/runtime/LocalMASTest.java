@@ -144,4 +144,13 @@ class LocalMASTest {
                 () -> Mas2jReader.read(dir.resolve("p.mas2j")));
         assertTrue(e.getMessage().contains("infrastructure 'Jade' is not supported"), e.getMessage());
     }
+
+    /** Jason refuses {@code at} as an agent name and prints this console line; we do too, and stop with an error. */
+    @Test
+    void aProjectThatDoesNotParsePrintsJasonsLine(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a; at;\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        org.junit.jupiter.api.Assertions.assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertEquals(List.of("[RunLocalMAS] Error parsing file file:" + dir.resolve("p.mas2j") + "!"), lines());
+    }
 }
