@@ -65,4 +65,27 @@ public class LocalArch implements AgentArch {
     public void wake() {
         mas.wake(name);
     }
+
+    @Override
+    public boolean dfRegister(String agent, String service) {
+        mas.df().register(agent, service);
+        return true;
+    }
+
+    @Override
+    public boolean dfDeregister(String agent, String service) {
+        mas.df().deregister(agent, service);
+        return true;
+    }
+
+    @Override
+    public java.util.Collection<String> dfSearch(String service) {
+        return mas.df().search(service);
+    }
+
+    @Override
+    public boolean dfSubscribe(String agent, String service) {
+        mas.df().subscribe(agent, service);
+        return true;
+    }
 }

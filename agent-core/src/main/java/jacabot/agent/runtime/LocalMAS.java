@@ -31,6 +31,7 @@ import java.util.function.Function;
 public final class LocalMAS {
     private final Map<String, Agent> agents = new LinkedHashMap<>();
     private final Map<String, Waker> wakers = new ConcurrentHashMap<>();
+    private final DirectoryFacilitator df = new DirectoryFacilitator(this::deliver);
     private volatile Clock clock;
     private final PrintStream out;
     private final long seed;
@@ -135,6 +136,10 @@ public final class LocalMAS {
 
     private synchronized List<Agent> agentList() {
         return new ArrayList<>(agents.values());
+    }
+
+    DirectoryFacilitator df() {
+        return df;
     }
 
     boolean deliver(Message m) {

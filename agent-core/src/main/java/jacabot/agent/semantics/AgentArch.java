@@ -61,4 +61,25 @@ public interface AgentArch {
     /** Called when the agent has something new to do (mail, feedback, a timer), from any thread. */
     default void wake() {
     }
+
+    // ---- the directory facilitator (Jason's DF: which agent provides which service) ----------
+
+    /** Registers {@code agent} as a provider of {@code service}. {@return whether there is a DF} */
+    default boolean dfRegister(String agent, String service) {
+        return false;
+    }
+
+    default boolean dfDeregister(String agent, String service) {
+        return false;
+    }
+
+    /** {@return the providers of a service, or null when there is no DF} */
+    default java.util.Collection<String> dfSearch(String service) {
+        return null;
+    }
+
+    /** Subscribes {@code agent} to the providers of {@code service} (told as {@code provider(A, S)}). */
+    default boolean dfSubscribe(String agent, String service) {
+        return false;
+    }
 }

@@ -23,6 +23,9 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        for (DfAction.Kind k : DfAction.Kind.values()) {
+            put(map, new DfAction(k));
+        }
         put(map, new ListFiles());
         put(map, new PlanLabel());
         put(map, new RelevantRules());

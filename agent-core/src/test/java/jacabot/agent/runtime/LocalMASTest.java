@@ -153,4 +153,30 @@ class LocalMASTest {
         org.junit.jupiter.api.Assertions.assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
         assertEquals(List.of("[RunLocalMAS] Error parsing file file:" + dir.resolve("p.mas2j") + "!"), lines());
     }
+
+    /** The directory facilitator: Jason 3.2.0 prints these lines for this project. */
+    @Test
+    void theDirectoryFacilitatorRegistersSearchesAndTellsSubscribers(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("s.asl"), "!reg.\n+!reg <- .df_register(seller); .df_register(\"buyer\"); .df_deregister(buyer).\n");
+        Files.writeString(dir.resolve("c.asl"), """
+                !go.
+                +!go <- .df_subscribe(seller); .wait(200); .df_search(seller, L); .print(L); .df_search(buyer, B); .print(B);
+                        .findall(P, provider(P, S), Ps); .sort(Ps, Sorted); .print(Sorted); .stopMAS.
+                +provider(P, S)[source(A)] <- .print(told(S), " by ", A).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: s #2; c; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runStepping();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[c] told(\"seller\") by df", "[c] told(\"seller\") by df", "[c] [s1,s2]", "[c] []", "[c] [s1,s2]"), lines());
+    }
 }
