@@ -332,7 +332,8 @@ final class AstBuilder {
             return u.list() == null ? var : annotated(var, list(u.list()));
         }
         StructureContext s = (StructureContext) ctx;
-        String functor = s.name.getText();
+        // a namespace, ns::b, is kept in the functor: b and ns::b are different predicates
+        String functor = (s.ns == null ? "" : s.ns.getText() + "::") + s.name.getText();
         List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
         List<Term> annots = s.list() == null ? List.of() : list(s.list()).elements();
         boolean negated = s.neg != null;
