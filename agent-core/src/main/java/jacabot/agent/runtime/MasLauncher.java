@@ -3,6 +3,7 @@ package jacabot.agent.runtime;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Term;
@@ -80,7 +81,10 @@ public final class MasLauncher {
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
-                        mas.createAgent(agName, program, parser, arch);
+                        Agent created = mas.createAgent(agName, program, parser, arch);
+                        if ("0".equals(spec.options().get("verbose"))) {
+                            created.setVerbosity(0);
+                        }
                     }
                 }
             } else {

@@ -34,6 +34,7 @@ public final class Agent {
     private final PlanLibrary planLibrary = new PlanLibrary();
     private final Circumstance circumstance = new Circumstance();
     private final GoalStates goalStates = new GoalStates(this);
+    private volatile int verbosity = 1;
     private final Solver solver = new Solver(this);
     private final ReasoningCycle cycle = new ReasoningCycle(this);
     private final Map<String, InternalAction> internalActions;
@@ -323,9 +324,17 @@ public final class Agent {
 
     // ---- console ------------------------------------------------------------------------------
 
-    /** Prints a console line as {@code [name] text}, as Jason's console does. */
+    /**
+     * Prints a console line as {@code [name] text}, as Jason's console does; with the project
+     * option {@code verbose=0} Jason's log shows warnings only and {@code .print} writes the bare text.
+     */
     public void print(String text) {
-        arch.console("[" + name + "] " + text);
+        arch.console(verbosity == 0 ? text : "[" + name + "] " + text);
+    }
+
+    /** Jason's {@code verbose} agent option: 0 warnings only, 1 (default) information, 2 details. */
+    public void setVerbosity(int level) {
+        verbosity = level;
     }
 
     /** Prints a warning on the console, in the same form. */

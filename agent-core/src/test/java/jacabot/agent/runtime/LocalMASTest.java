@@ -179,4 +179,15 @@ class LocalMASTest {
         assertTrue(launched.isStopped(), "the project reaches .stopMAS");
         assertEquals(List.of("[c] told(\"seller\") by df", "[c] told(\"seller\") by df", "[c] [s1,s2]", "[c] []", "[c] [s1,s2]"), lines());
     }
+
+    /** With verbose=0 Jason's .print writes the bare text; warnings keep the agent's name (as Jason 3.2.0). */
+    @Test
+    void verboseZeroPrintsBareText(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("q.asl"), "!s.\n+!s <- .print(hello, 1); .println(x); !nope.\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: q [verbose=0]; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        launched.runUntilQuiescent(1000);
+        assertEquals(List.of("hello1", "x", "[q] No fail event was generated for +!nope[source(self)]", "[q] ",
+                "[q] Found a goal for which there is no relevant plan: +!nope[source(self)]"), lines());
+    }
 }
