@@ -88,4 +88,9 @@ public class LocalArch implements AgentArch {
         mas.df().subscribe(agent, service);
         return true;
     }
+
+    @Override
+    public void stopMAS(long deadlineMs) {
+        mas.stopIn(deadlineMs);
+    }
 }

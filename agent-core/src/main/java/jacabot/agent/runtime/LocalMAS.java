@@ -170,6 +170,26 @@ public final class LocalMAS {
     }
 
     /** Stops every agent ({@code .stopMAS}); the run methods return. */
+    /** Jason's {@code .stopMAS(T)}: every agent gets {@code +jag_shutting_down(T)}, and the system stops T ms later. */
+    public void stopIn(long deadlineMs) {
+        var event = new jacabot.agent.semantics.Event(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
+                jacabot.agent.syntax.Trigger.Type.BELIEF, jacabot.agent.syntax.Literal.of("jag_shutting_down",
+                        new jacabot.agent.syntax.NumberTerm(deadlineMs))), null);
+        for (Agent a : agentList()) {
+            a.postExternalEvent(event);
+        }
+        Thread timer = new Thread(() -> {
+            try {
+                Thread.sleep(deadlineMs);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            stop();
+        }, "stopMAS-deadline");
+        timer.setDaemon(true);
+        timer.start();
+    }
+
     public void stop() {
         stopped = true;
         for (Agent a : agentList()) {

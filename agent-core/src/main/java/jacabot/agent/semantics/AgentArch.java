@@ -46,6 +46,14 @@ public interface AgentArch {
     }
 
     /** Stops the whole multi-agent system ({@code .stopMAS}). */
+    /**
+     * Stops the system after {@code deadlineMs}, first telling every agent
+     * {@code +jag_shutting_down(deadlineMs)} (Jason's {@code .stopMAS(T)}); by default at once.
+     */
+    default void stopMAS(long deadlineMs) {
+        stopMAS();
+    }
+
     default void stopMAS() {
     }
 

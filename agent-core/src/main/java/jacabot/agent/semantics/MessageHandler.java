@@ -51,6 +51,12 @@ final class MessageHandler {
                     }
                 }
                 break;
+            case "signal":
+                // an event without a belief, as Jason's signal
+                if (content instanceof Literal l) {
+                    c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, l.addAnnot(source)), null));
+                }
+                break;
             case "achieve":
                 if (content instanceof Literal l) {
                     c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, l.addAnnot(source)), null));

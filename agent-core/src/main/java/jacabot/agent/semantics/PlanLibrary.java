@@ -11,6 +11,7 @@ public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
     private int lastLabel;
     private boolean goalStatePlans;
+    private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
 
@@ -56,6 +57,7 @@ public final class PlanLibrary {
         Plan named = p.withLabel(label);
         candidateCache.clear();
         goalStatePlans |= p.trigger().op() == Trigger.Op.GOAL_STATE;
+        jagPlans |= p.trigger().literal() instanceof Literal l && l.functor().startsWith("jag_");
         if (atBeginning) {
             plans.add(0, named);
         } else {
@@ -178,6 +180,11 @@ public final class PlanLibrary {
     /** {@return whether a plan for goal-state meta-events ({@code ^!g}) was ever added} */
     public boolean hasGoalStatePlans() {
         return goalStatePlans;
+    }
+
+    /** {@return whether some plan reacts to the architecture's {@code jag_sleeping}, {@code jag_awaking}, ... events} */
+    public boolean hasJagPlans() {
+        return jagPlans;
     }
 
     public List<Plan> plans() {

@@ -53,6 +53,7 @@ final class ReasoningCycle {
         if (percepts != null) {
             ag.beliefUpdate(percepts);
         }
+        ag.senseIdleness();
         applyProcMsg();
     }
 

@@ -190,4 +190,41 @@ class LocalMASTest {
         assertEquals(List.of("hello1", "x", "[q] No fail event was generated for +!nope[source(self)]", "[q] ",
                 "[q] Found a goal for which there is no relevant plan: +!nope[source(self)]"), lines());
     }
+
+    /**
+     * Jason's idle events and shutdown: {@code +jag_sleeping}/{@code +jag_awaking}, a
+     * {@code signal} (an event, no belief) and {@code .stopMAS(T)} with {@code +jag_shutting_down(T)};
+     * the lines of each agent as Jason 3.2.0 printed them (up to the shutdown).
+     */
+    @Test
+    void idleEventsSignalAndStopWithDeadline(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("idle.asl"), """
+                +hi(X)[source(A)] <- .print(hi(X), " from ", A, " believed: ", .count(hi(_))).
+                +jag_sleeping <- .print(sleeping).
+                +jag_awaking <- .print(awaking).
+                +jag_shutting_down(T) <- .print(shutting_down(T)).
+                """);
+        Files.writeString(dir.resolve("s.asl"), """
+                !go.
+                +!go <- .wait(300); .send(idle, signal, hi(1)); .wait(300); .stopMAS(400).
+                +jag_shutting_down(T) <- .print(bye(T)).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: idle; s; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project stops after the deadline");
+        var idle = lines().stream().filter(l -> l.startsWith("[idle]")).collect(Collectors.toList());
+        assertEquals(List.of("[idle] sleeping", "[idle] awaking", "[idle] hi(1) from s believed: 0", "[idle] sleeping",
+                "[idle] shutting_down(400)", "[idle] awaking"), idle.subList(0, Math.min(6, idle.size())));
+        assertTrue(lines().contains("[s] bye(400)"), lines().toString());
+    }
 }
