@@ -93,4 +93,14 @@ public class LocalArch implements AgentArch {
     public void stopMAS(long deadlineMs) {
         mas.stopIn(deadlineMs);
     }
+
+    @Override
+    public String createAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return mas.spawn(agentName, program, parser);
+    }
+
+    @Override
+    public boolean killAgent(String agentName) {
+        return mas.kill(agentName);
+    }
 }

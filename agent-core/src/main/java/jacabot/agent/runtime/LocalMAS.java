@@ -31,6 +31,7 @@ import java.util.function.Function;
 public final class LocalMAS {
     private final Map<String, Agent> agents = new LinkedHashMap<>();
     private final Map<String, Waker> wakers = new ConcurrentHashMap<>();
+    private volatile boolean threadsRunning;
     private final DirectoryFacilitator df = new DirectoryFacilitator(this::deliver);
     private volatile Clock clock;
     private final PrintStream out;
@@ -288,7 +289,35 @@ public final class LocalMAS {
     // ---- threads ----------------------------------------------------------------------------------
 
     /** Runs each agent on its own thread until {@code .stopMAS}. */
+    /** An agent created while the system runs: it gets its own thread when agents have threads. */
+    String spawn(String name, AgentProgram program, AslParser parser) {
+        Agent ag = createAgent(name, program, parser, null);
+        if (threadsRunning) {
+            Thread t = new Thread(() -> agentLoop(ag), "agent-" + name);
+            t.setDaemon(true);
+            t.start();
+        }
+        wakeStepping();
+        return name;
+    }
+
+    /** Stops an agent and takes it out of the system. */
+    boolean kill(String name) {
+        Agent ag;
+        synchronized (this) {
+            ag = agents.remove(name);
+        }
+        if (ag == null) {
+            return false;
+        }
+        ag.stop();
+        wake(name);
+        wakers.remove(name);
+        return true;
+    }
+
     public void runThreads() throws InterruptedException {
+        threadsRunning = true;
         var threads = new ArrayList<Thread>();
         for (Agent a : agentList()) {
             Thread t = new Thread(() -> agentLoop(a), "agent-" + a.name());

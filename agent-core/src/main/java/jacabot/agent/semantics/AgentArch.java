@@ -70,6 +70,19 @@ public interface AgentArch {
     default void wake() {
     }
 
+    /**
+     * Creates an agent running {@code program} while the system runs (Jason's {@code .create_agent}).
+     * {@return the name given, or null when this infrastructure cannot}
+     */
+    default String createAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return null;
+    }
+
+    /** Stops and removes an agent (Jason's {@code .kill_agent}). {@return whether it existed} */
+    default boolean killAgent(String name) {
+        return false;
+    }
+
     // ---- the directory facilitator (Jason's DF: which agent provides which service) ----------
 
     /** Registers {@code agent} as a provider of {@code service}. {@return whether there is a DF} */

@@ -51,6 +51,25 @@ final class MessageHandler {
                     }
                 }
                 break;
+            case "tellHow":
+                // plans (as text or plan terms) told by the sender, with it as their source
+                for (Term t : content instanceof ListTerm list ? list.elements() : List.of(content)) {
+                    try {
+                        jacabot.agent.syntax.Plan p = t instanceof jacabot.agent.syntax.StringTerm st ? ag.parser().parsePlan(st.value())
+                                : t instanceof jacabot.agent.syntax.PlanTerm pt ? pt.toPlan() : null;
+                        if (p != null) {
+                            ag.planLibrary().add(p, source.args().get(0), false);
+                        }
+                    } catch (jacabot.agent.parser.AslSyntaxException | IllegalArgumentException e) {
+                        ag.warn("Error in the plan told by " + m.sender() + ": " + e.getMessage());
+                    }
+                }
+                break;
+            case "untellHow":
+                for (Term t : content instanceof ListTerm list ? list.elements() : List.of(content)) {
+                    ag.planLibrary().removeSource(t instanceof Literal l ? l.functor() : t.toString(), source.args().get(0));
+                }
+                break;
             case "signal":
                 // an event without a belief, as Jason's signal
                 if (content instanceof Literal l) {

@@ -23,6 +23,8 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, new CreateAgent());
+        put(map, new KillAgent());
         put(map, new Namespace());
         for (DfAction.Kind k : DfAction.Kind.values()) {
             put(map, new DfAction(k));

@@ -227,4 +227,35 @@ class LocalMASTest {
                 "[idle] shutting_down(400)", "[idle] awaking"), idle.subList(0, Math.min(6, idle.size())));
         assertTrue(lines().contains("[s] bye(400)"), lines().toString());
     }
+
+    /** .create_agent, tellHow (a plan as text, plan terms in a list) and .kill_agent: the lines Jason 3.2.0 printed. */
+    @Test
+    void agentsCreatedToldPlansAndKilled(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("boss.asl"), """
+                !go.
+                +!go <- .create_agent(w, "worker.asl"); .wait(200);
+                        .send(w, tellHow, "+!hello(X)[source(A)] <- .print(hello(X), \\" from \\", A).");
+                        .send(w, tellHow, [{ @k +!bye <- .print(bye) }]);
+                        .wait(100); .send(w, achieve, hello(1)); .send(w, achieve, bye); .wait(200);
+                        .all_names(L1); .print(L1);
+                        .kill_agent(w); .wait(100);
+                        .all_names(L2); .print(L2);
+                        .stopMAS.
+                """);
+        Files.writeString(dir.resolve("worker.asl"), "!start.\n+!start <- .print(started).\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: boss; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[w] started", "[w] hello(1) from boss", "[w] bye", "[boss] [boss,w]", "[boss] [boss]"), lines());
+    }
 }
