@@ -100,6 +100,11 @@ public class LocalArch implements AgentArch {
     }
 
     @Override
+    public String cloneAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return mas.spawnCopy(agentName, program, parser);
+    }
+
+    @Override
     public boolean killAgent(String agentName) {
         return mas.kill(agentName);
     }

@@ -291,7 +291,18 @@ public final class LocalMAS {
     /** Runs each agent on its own thread until {@code .stopMAS}. */
     /** An agent created while the system runs: it gets its own thread when agents have threads. */
     String spawn(String name, AgentProgram program, AslParser parser) {
+        return start(createAgent(name, program, parser, null));
+    }
+
+    /** A copy of an agent: its beliefs are there from the start, without {@code +b} events. */
+    String spawnCopy(String name, AgentProgram program, AslParser parser) {
         Agent ag = createAgent(name, program, parser, null);
+        ag.circumstance().eventList().forEach(ag.circumstance()::removeEvent);
+        return start(ag);
+    }
+
+    private String start(Agent ag) {
+        String name = ag.name();
         if (threadsRunning) {
             Thread t = new Thread(() -> agentLoop(ag), "agent-" + name);
             t.setDaemon(true);

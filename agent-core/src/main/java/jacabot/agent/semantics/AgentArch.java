@@ -78,6 +78,11 @@ public interface AgentArch {
         return null;
     }
 
+    /** As {@link #createAgent}, for a copy of a running agent: its beliefs produce no events (Jason's {@code .clone}). */
+    default String cloneAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return null;
+    }
+
     /** Stops and removes an agent (Jason's {@code .kill_agent}). {@return whether it existed} */
     default boolean killAgent(String name) {
         return false;

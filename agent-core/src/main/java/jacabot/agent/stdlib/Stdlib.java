@@ -23,6 +23,7 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, new Clone());
         put(map, new CreateAgent());
         put(map, new KillAgent());
         put(map, new Namespace());

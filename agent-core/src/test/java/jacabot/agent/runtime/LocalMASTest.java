@@ -258,4 +258,30 @@ class LocalMASTest {
         assertTrue(launched.isStopped(), "the project reaches .stopMAS");
         assertEquals(List.of("[w] started", "[w] hello(1) from boss", "[w] bye", "[boss] [boss,w]", "[boss] [boss]"), lines());
     }
+
+    /** .clone: the copy has the beliefs and plans, without their events or the goals (Jason 3.2.0's lines). */
+    @Test
+    void aCloneHasTheBeliefsAndPlansButNoEvents(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("main.asl"), """
+                test(1).
+                !start.
+                +!start <- +a(40); .clone("bob"); .send(bob, tell, p(10)); .wait(300); .stopMAS.
+                +a(X) <- .my_name(N); .print(added(X), " in ", N).
+                +p(X)[source(S)] : a(V) & test(T) <- .print(X, " : ", V + T, " from ", S).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: main; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[main] added(40) in main", "[bob] 10 : 41 from main"), lines());
+    }
 }
