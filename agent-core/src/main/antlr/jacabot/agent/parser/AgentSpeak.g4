@@ -58,7 +58,7 @@ arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
 
 literal     : 'true'                                                       # trueLiteral
             | 'false'                                                      # falseLiteral
-            | neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
+            | ( ns=ATOM '::' )? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
             | neg='~'? VAR list?                                           # varLiteral
             | neg='~'? UNNAMEDVAR list?                                    # unnamedVarLiteral
             ;

@@ -33,6 +33,18 @@ public final class AslParser {
         this(List.of());
     }
 
+    /** {@return the file found in the source path (or as given), or null} */
+    public Path locate(String file) {
+        for (Path dir : sourcePath) {
+            Path p = dir.resolve(file);
+            if (java.nio.file.Files.isRegularFile(p)) {
+                return p;
+            }
+        }
+        Path p = Path.of(file);
+        return java.nio.file.Files.isRegularFile(p) ? p : null;
+    }
+
     /** Parses an agent program from a file. */
     public AgentProgram parseFile(Path file) throws AslSyntaxException, IOException {
         return parseFile(file, new HashSet<>());

@@ -324,15 +324,16 @@ final class AstBuilder {
         }
         if (ctx instanceof VarLiteralContext v) {
             Var var = new Var(v.VAR().getText());
-            return v.list() == null ? var : new AnnotatedVar(var, list(v.list()).elements());
+            return v.list() == null ? var : annotated(var, list(v.list()));
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
             String name = u.UNNAMEDVAR().getText();
             Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
-            return u.list() == null ? var : new AnnotatedVar(var, list(u.list()).elements());
+            return u.list() == null ? var : annotated(var, list(u.list()));
         }
         StructureContext s = (StructureContext) ctx;
-        String functor = s.name.getText();
+        // a namespace, ns::b, is kept in the functor: b and ns::b are different predicates
+        String functor = (s.ns == null ? "" : s.ns.getText() + "::") + s.name.getText();
         List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
         List<Term> annots = s.list() == null ? List.of() : list(s.list()).elements();
         boolean negated = s.neg != null;
@@ -357,6 +358,17 @@ final class AstBuilder {
 
     Term term(TermContext ctx) {
         return logExpr(ctx.logExpr());
+    }
+
+    /** {@code V[a, b | T]}: the annotations, and the tail when there is one. */
+    private static AnnotatedVar annotated(Var var, ListTerm annots) {
+        var items = new ArrayList<Term>();
+        Term t = annots;
+        while (t instanceof ListTerm.Cons c) {
+            items.add(c.head());
+            t = c.tail();
+        }
+        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t);
     }
 
     ListTerm list(ListContext ctx) {
@@ -416,7 +428,7 @@ final class AstBuilder {
         if (ctx.logExpr() != null) {
             // { head :- body }: a rule as a term
             if (body.steps().size() == 1 && body.steps().get(0).term() instanceof Literal head) {
-                return Literal.of("rule__", head, logExpr(ctx.logExpr()));
+                return Literal.of(Literal.RULE_TERM, head, logExpr(ctx.logExpr()));
             }
             errors.add(where(ctx), "wrong place for a rule");
         }

@@ -65,4 +65,47 @@ public class LocalArch implements AgentArch {
     public void wake() {
         mas.wake(name);
     }
+
+    @Override
+    public boolean dfRegister(String agent, String service) {
+        mas.df().register(agent, service);
+        return true;
+    }
+
+    @Override
+    public boolean dfDeregister(String agent, String service) {
+        mas.df().deregister(agent, service);
+        return true;
+    }
+
+    @Override
+    public java.util.Collection<String> dfSearch(String service) {
+        return mas.df().search(service);
+    }
+
+    @Override
+    public boolean dfSubscribe(String agent, String service) {
+        mas.df().subscribe(agent, service);
+        return true;
+    }
+
+    @Override
+    public void stopMAS(long deadlineMs) {
+        mas.stopIn(deadlineMs);
+    }
+
+    @Override
+    public String createAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return mas.spawn(agentName, program, parser);
+    }
+
+    @Override
+    public String cloneAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return mas.spawnCopy(agentName, program, parser);
+    }
+
+    @Override
+    public boolean killAgent(String agentName) {
+        return mas.kill(agentName);
+    }
 }

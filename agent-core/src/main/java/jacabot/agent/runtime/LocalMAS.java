@@ -31,6 +31,8 @@ import java.util.function.Function;
 public final class LocalMAS {
     private final Map<String, Agent> agents = new LinkedHashMap<>();
     private final Map<String, Waker> wakers = new ConcurrentHashMap<>();
+    private volatile boolean threadsRunning;
+    private final DirectoryFacilitator df = new DirectoryFacilitator(this::deliver);
     private volatile Clock clock;
     private final PrintStream out;
     private final long seed;
@@ -137,6 +139,10 @@ public final class LocalMAS {
         return new ArrayList<>(agents.values());
     }
 
+    DirectoryFacilitator df() {
+        return df;
+    }
+
     boolean deliver(Message m) {
         // the concurrent map, not the synchronized agent(name): every agent's messages come here
         Waker w = wakers.get(m.receiver());
@@ -165,6 +171,26 @@ public final class LocalMAS {
     }
 
     /** Stops every agent ({@code .stopMAS}); the run methods return. */
+    /** Jason's {@code .stopMAS(T)}: every agent gets {@code +jag_shutting_down(T)}, and the system stops T ms later. */
+    public void stopIn(long deadlineMs) {
+        var event = new jacabot.agent.semantics.Event(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
+                jacabot.agent.syntax.Trigger.Type.BELIEF, jacabot.agent.syntax.Literal.of("jag_shutting_down",
+                        new jacabot.agent.syntax.NumberTerm(deadlineMs))), null);
+        for (Agent a : agentList()) {
+            a.postExternalEvent(event);
+        }
+        Thread timer = new Thread(() -> {
+            try {
+                Thread.sleep(deadlineMs);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            stop();
+        }, "stopMAS-deadline");
+        timer.setDaemon(true);
+        timer.start();
+    }
+
     public void stop() {
         stopped = true;
         for (Agent a : agentList()) {
@@ -263,7 +289,46 @@ public final class LocalMAS {
     // ---- threads ----------------------------------------------------------------------------------
 
     /** Runs each agent on its own thread until {@code .stopMAS}. */
+    /** An agent created while the system runs: it gets its own thread when agents have threads. */
+    String spawn(String name, AgentProgram program, AslParser parser) {
+        return start(createAgent(name, program, parser, null));
+    }
+
+    /** A copy of an agent: its beliefs are there from the start, without {@code +b} events. */
+    String spawnCopy(String name, AgentProgram program, AslParser parser) {
+        Agent ag = createAgent(name, program, parser, null);
+        ag.circumstance().eventList().forEach(ag.circumstance()::removeEvent);
+        return start(ag);
+    }
+
+    private String start(Agent ag) {
+        String name = ag.name();
+        if (threadsRunning) {
+            Thread t = new Thread(() -> agentLoop(ag), "agent-" + name);
+            t.setDaemon(true);
+            t.start();
+        }
+        wakeStepping();
+        return name;
+    }
+
+    /** Stops an agent and takes it out of the system. */
+    boolean kill(String name) {
+        Agent ag;
+        synchronized (this) {
+            ag = agents.remove(name);
+        }
+        if (ag == null) {
+            return false;
+        }
+        ag.stop();
+        wake(name);
+        wakers.remove(name);
+        return true;
+    }
+
     public void runThreads() throws InterruptedException {
+        threadsRunning = true;
         var threads = new ArrayList<Thread>();
         for (Agent a : agentList()) {
             Thread t = new Thread(() -> agentLoop(a), "agent-" + a.name());

@@ -3,6 +3,7 @@ package jacabot.agent.runtime;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Term;
@@ -58,7 +59,14 @@ public final class MasLauncher {
         try {
             var mas = new LocalMAS(Clock.wall(), out, seed);
             if (name.endsWith(".mas2j")) {
-                MasProject project = Mas2jReader.read(file);
+                MasProject project;
+                try {
+                    project = Mas2jReader.read(file);
+                } catch (AslSyntaxException e) {
+                    // Jason's console line for a project it cannot read; our located errors follow on stderr
+                    out.println("[RunLocalMAS] Error parsing file file:" + file + "!");
+                    throw e;
+                }
                 if (project.environment() != null) {
                     mas.setEnvironment(newInstance(project.environment(), Environment.class), project.environmentArgs());
                 } else {
@@ -73,7 +81,10 @@ public final class MasLauncher {
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
-                        mas.createAgent(agName, program, parser, arch);
+                        Agent created = mas.createAgent(agName, program, parser, arch);
+                        if ("0".equals(spec.options().get("verbose"))) {
+                            created.setVerbosity(0);
+                        }
                     }
                 }
             } else {

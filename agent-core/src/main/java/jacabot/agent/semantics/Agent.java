@@ -33,6 +33,11 @@ public final class Agent {
     private final BeliefBase beliefBase = new BeliefBase();
     private final PlanLibrary planLibrary = new PlanLibrary();
     private final Circumstance circumstance = new Circumstance();
+    private final GoalStates goalStates = new GoalStates(this);
+    private volatile int verbosity = 1;
+    private boolean sleepingEvent;
+    /** External events posted by other threads (the infrastructure), taken in at the next sense. */
+    private final ConcurrentLinkedQueue<Event> incoming = new ConcurrentLinkedQueue<>();
     private final Solver solver = new Solver(this);
     private final ReasoningCycle cycle = new ReasoningCycle(this);
     private final Map<String, InternalAction> internalActions;
@@ -80,6 +85,17 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
+        circumstance.addListener(new CircumstanceListener() {
+            @Override
+            public void eventAdded(Event e) {
+                goalStates.eventAdded(e);
+            }
+        });
+    }
+
+    /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */
+    public GoalStates goalStates() {
+        return goalStates;
     }
 
     /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */
@@ -130,8 +146,52 @@ public final class Agent {
         cycle.run();
     }
 
+    /**
+     * Jason's idle events: {@code +jag_sleeping} when the agent has nothing left to do,
+     * {@code +jag_awaking} when something comes again (posted in sense, only when plans react).
+     */
+    void senseIdleness() {
+        Event e;
+        while ((e = incoming.poll()) != null) {
+            circumstance.addEvent(e);
+        }
+        if (!planLibrary.hasJagPlans()) {
+            return;
+        }
+        if (nothingToDo()) {
+            if (!sleepingEvent) {
+                sleepingEvent = true;
+                circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, Literal.atom("jag_sleeping")), null));
+            }
+        } else if (sleepingEvent) {
+            sleepingEvent = false;
+            circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, Literal.atom("jag_awaking")), null));
+        }
+    }
+
+    /** Jason's TransitionSystem.canSleep: no event, intention, feedback, message or task. */
+    private boolean nothingToDo() {
+        if (circumstance.isAtomicIntentionSuspended()) {
+            return !circumstance.hasFeedbackAction() && !circumstance.hasMessage();
+        }
+        return !circumstance.hasEvent() && !circumstance.hasRunningIntention() && !circumstance.hasFeedbackAction()
+                && !circumstance.hasMessage() && beginOfCycle.isEmpty() && arch.canSleep();
+    }
+
+    /** Posts an external event from any thread (e.g. {@code +jag_shutting_down(T)}); it joins E at the next sense. */
+    public void postExternalEvent(Event e) {
+        incoming.add(e);
+        arch.wake();
+    }
+
     /** {@return whether a cycle now would do nothing (the agent may sleep until woken)} */
     public boolean canSleep() {
+        if (!incoming.isEmpty()) {
+            return false;
+        }
+        if (planLibrary.hasJagPlans() && !sleepingEvent && nothingToDo()) {
+            return false; // one more cycle, to post +jag_sleeping
+        }
         // the common case first: work is waiting (unless an atomic intention holds the agent)
         if (!circumstance.isAtomicIntentionSuspended()
                 && (circumstance.hasEvent() || circumstance.hasRunningIntention())) {
@@ -311,9 +371,17 @@ public final class Agent {
 
     // ---- console ------------------------------------------------------------------------------
 
-    /** Prints a console line as {@code [name] text}, as Jason's console does. */
+    /**
+     * Prints a console line as {@code [name] text}, as Jason's console does; with the project
+     * option {@code verbose=0} Jason's log shows warnings only and {@code .print} writes the bare text.
+     */
     public void print(String text) {
-        arch.console("[" + name + "] " + text);
+        arch.console(verbosity == 0 ? text : "[" + name + "] " + text);
+    }
+
+    /** Jason's {@code verbose} agent option: 0 warnings only, 1 (default) information, 2 details. */
+    public void setVerbosity(int level) {
+        verbosity = level;
     }
 
     /** Prints a warning on the console, in the same form. */

@@ -46,6 +46,14 @@ public interface AgentArch {
     }
 
     /** Stops the whole multi-agent system ({@code .stopMAS}). */
+    /**
+     * Stops the system after {@code deadlineMs}, first telling every agent
+     * {@code +jag_shutting_down(deadlineMs)} (Jason's {@code .stopMAS(T)}); by default at once.
+     */
+    default void stopMAS(long deadlineMs) {
+        stopMAS();
+    }
+
     default void stopMAS() {
     }
 
@@ -60,5 +68,44 @@ public interface AgentArch {
 
     /** Called when the agent has something new to do (mail, feedback, a timer), from any thread. */
     default void wake() {
+    }
+
+    /**
+     * Creates an agent running {@code program} while the system runs (Jason's {@code .create_agent}).
+     * {@return the name given, or null when this infrastructure cannot}
+     */
+    default String createAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return null;
+    }
+
+    /** As {@link #createAgent}, for a copy of a running agent: its beliefs produce no events (Jason's {@code .clone}). */
+    default String cloneAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+        return null;
+    }
+
+    /** Stops and removes an agent (Jason's {@code .kill_agent}). {@return whether it existed} */
+    default boolean killAgent(String name) {
+        return false;
+    }
+
+    // ---- the directory facilitator (Jason's DF: which agent provides which service) ----------
+
+    /** Registers {@code agent} as a provider of {@code service}. {@return whether there is a DF} */
+    default boolean dfRegister(String agent, String service) {
+        return false;
+    }
+
+    default boolean dfDeregister(String agent, String service) {
+        return false;
+    }
+
+    /** {@return the providers of a service, or null when there is no DF} */
+    default java.util.Collection<String> dfSearch(String service) {
+        return null;
+    }
+
+    /** Subscribes {@code agent} to the providers of {@code service} (told as {@code provider(A, S)}). */
+    default boolean dfSubscribe(String agent, String service) {
+        return false;
     }
 }

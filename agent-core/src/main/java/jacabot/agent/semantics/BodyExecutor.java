@@ -177,6 +177,15 @@ final class BodyExecutor {
 
     private void addBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
         boolean sameFocus = kind != BodyStep.Kind.ADD_BEL_NEW_FOCUS;
+        Term bound = im.unifier().apply(term);
+        if (bound instanceof Literal r && r.functor().equals(Literal.RULE_TERM) && r.arity() == 2 && r.args().get(0) instanceof Literal head) {
+            // +{ head :- body } adds a rule (renamed apart: its variables are its own)
+            var rule = (Literal) jacabot.agent.semantics.Renamer.renameApart(r, ag);
+            ag.beliefBase().addRule(new jacabot.agent.syntax.Rule(((Literal) rule.args().get(0)).addAnnot(Literal.SOURCE_SELF),
+                    rule.args().get(1)), kind == BodyStep.Kind.ADD_BEL_END);
+            rc.removeActionReQueue(i);
+            return;
+        }
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
         Literal added = ag.addBelief(body, kind == BodyStep.Kind.ADD_BEL_END);
         if (added != null) {

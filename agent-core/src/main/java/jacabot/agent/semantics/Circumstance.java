@@ -26,6 +26,8 @@ public final class Circumstance {
     private Intention atomicIntention;
     private boolean atomicIntentionSuspended;
     private final LinkedHashMap<String, Pending> pending = new LinkedHashMap<>();
+    /** Events suspended before any plan was chosen for them (Jason's PE). */
+    private final LinkedHashMap<String, Event> pendingEvents = new LinkedHashMap<>();
     private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
     private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
     private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
@@ -43,6 +45,23 @@ public final class Circumstance {
             atomicEvent = e;
         } else {
             events.add(e);
+        }
+        if (!listeners.isEmpty()) {
+            for (CircumstanceListener l : List.copyOf(listeners)) {
+                l.eventAdded(e);
+            }
+        }
+    }
+
+    /** Adds a meta-event ahead of the other events, after the meta-events already there (Jason's rule). */
+    void insertMetaEvent(Event e) {
+        var rest = new ArrayList<Event>();
+        while (!events.isEmpty() && events.peekFirst().trigger().op() == jacabot.agent.syntax.Trigger.Op.GOAL_STATE) {
+            rest.add(events.pollFirst());
+        }
+        rest.add(e);
+        for (int k = rest.size() - 1; k >= 0; k--) {
+            events.addFirst(rest.get(k));
         }
         if (!listeners.isEmpty()) {
             for (CircumstanceListener l : List.copyOf(listeners)) {
@@ -225,6 +244,18 @@ public final class Circumstance {
         }
         releaseIfAtomic(p.intention());
         return p.intention();
+    }
+
+    public void addPendingEvent(String key, Event e) {
+        pendingEvents.put(key, e);
+    }
+
+    public Event removePendingEvent(String key) {
+        return pendingEvents.remove(key);
+    }
+
+    public Map<String, Event> pendingEvents() {
+        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pendingEvents));
     }
 
     public Map<String, Pending> pendingIntentions() {

@@ -17,6 +17,17 @@ public final class GoalDropper {
     private final Literal goal;
     private final Trigger trigger;
 
+    private static final Literal DROP_BY_FAIL_GOAL = Literal.atom("drop_by_fail_goal");
+
+    /** Goal states of a goal dropped while still an event (Jason's .succeed_goal/.fail_goal). */
+    private void notifyEvent(Trigger t) {
+        if (mode == Mode.SUCCEED) {
+            ag.goalStates().finished(t, GoalStates.State.achieved);
+        } else {
+            ag.goalStates().post(t, GoalStates.State.failed, DROP_BY_FAIL_GOAL);
+        }
+    }
+
     public GoalDropper(Agent ag, Mode mode, Literal goal) {
         this.ag = ag;
         this.mode = mode;
@@ -38,6 +49,7 @@ public final class GoalDropper {
                     && ag.newUnifier().unifies(goal, i == null ? e.trigger().literal() : i.peek() == null
                             ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
+                notifyEvent(e.trigger());
                 if (i != null && !i.isFinished()) {
                     if (mode == Mode.SUCCEED) {
                         ag.cycle().removeActionReQueue(i);
@@ -92,7 +104,10 @@ public final class GoalDropper {
         if (im == null) {
             return 0;
         }
+        GoalStates gs = ag.goalStates();
+        Trigger dropped = GoalStates.of(im);
         if (mode == Mode.SUCCEED) {
+            gs.finished(dropped, GoalStates.State.achieved);
             if (!i.isFinished()) {
                 if (ag.circumstance().selectedIntention() != i) {
                     i.peek().removeCurrentStep();
@@ -102,7 +117,11 @@ public final class GoalDropper {
             }
             return 3;
         }
+        gs.post(dropped, GoalStates.State.failed, DROP_BY_FAIL_GOAL);
         Event failEvent = ag.failureEventFor(i, trigger);
+        if (failEvent == null) {
+            gs.finished(dropped, null);
+        }
         if (failEvent != null) {
             Literal lit = (Literal) failEvent.trigger().literal();
             List<Term> annots = List.of(Literal.of("error", Literal.atom("ia_failed")),

@@ -37,7 +37,7 @@ final class MessageHandler {
         switch (m.performative()) {
             case "tell":
                 for (Literal l : literals(content)) {
-                    Literal added = ag.addBelief(l.addAnnot(source), false);
+                    Literal added = ag.addBelief(nested(l, source), false);
                     if (added != null) {
                         c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
                     }
@@ -49,6 +49,31 @@ final class MessageHandler {
                     if (removed != null) {
                         c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
                     }
+                }
+                break;
+            case "tellHow":
+                // plans (as text or plan terms) told by the sender, with it as their source
+                for (Term t : content instanceof ListTerm list ? list.elements() : List.of(content)) {
+                    try {
+                        jacabot.agent.syntax.Plan p = t instanceof jacabot.agent.syntax.StringTerm st ? ag.parser().parsePlan(st.value())
+                                : t instanceof jacabot.agent.syntax.PlanTerm pt ? pt.toPlan() : null;
+                        if (p != null) {
+                            ag.planLibrary().add(p, source.args().get(0), false);
+                        }
+                    } catch (jacabot.agent.parser.AslSyntaxException | IllegalArgumentException e) {
+                        ag.warn("Error in the plan told by " + m.sender() + ": " + e.getMessage());
+                    }
+                }
+                break;
+            case "untellHow":
+                for (Term t : content instanceof ListTerm list ? list.elements() : List.of(content)) {
+                    ag.planLibrary().removeSource(t instanceof Literal l ? l.functor() : t.toString(), source.args().get(0));
+                }
+                break;
+            case "signal":
+                // an event without a belief, as Jason's signal
+                if (content instanceof Literal l) {
+                    c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, l.addAnnot(source)), null));
                 }
                 break;
             case "achieve":
@@ -72,6 +97,35 @@ final class MessageHandler {
         }
     }
 
+    /**
+     * Jason's {@code .add_nested_source}: the content's own sources go inside the sender's,
+     * {@code b[source(c)]} from a becomes {@code b[source(a)[source(c)]]}.
+     */
+    static Literal nested(Literal l, Literal source) {
+        var sources = new ArrayList<Term>();
+        var others = new ArrayList<Term>();
+        for (Term a : l.annots()) {
+            (a instanceof Literal al && al.functor().equals("source") && al.arity() == 1 ? sources : others).add(a);
+        }
+        if (sources.isEmpty()) {
+            return l.addAnnot(source);
+        }
+        others.add(source.withAnnots(sources));
+        return l.withAnnots(others);
+    }
+
+    /** The answer to an ask: the belief found, with its annotations but {@code source(self)} (Jason's bel_no_source_self). */
+    private Term answerFor(Unifier u, Term content) {
+        Term a = u.apply(content);
+        if (a instanceof Literal l && l.isGround()) {
+            Literal fact = ag.beliefBase().fact(l);
+            if (fact != null) {
+                return l.withAnnots(fact.annots().stream().filter(x -> !x.equals(Literal.SOURCE_SELF)).toList());
+            }
+        }
+        return a;
+    }
+
     private static List<Literal> literals(Term content) {
         var out = new ArrayList<Literal>();
         if (content instanceof Literal l) {
@@ -92,12 +146,12 @@ final class MessageHandler {
         Message reply;
         if (m.performative().equals("askOne")) {
             reply = it.hasNext()
-                    ? new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", it.next().apply(content), m.id())
+                    ? new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", answerFor(it.next(), content), m.id())
                     : new Message(ag.nextMessageId(), ag.name(), m.sender(), "untell", content, m.id());
         } else {
             var answers = new ArrayList<Term>();
             while (it.hasNext()) {
-                answers.add(it.next().apply(content));
+                answers.add(answerFor(it.next(), content));
             }
             reply = new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", ListTerm.of(answers), m.id());
         }
@@ -113,11 +167,11 @@ final class MessageHandler {
         if (m.performative().equals("untell") && send.arity() > 1 && send.arg(1).toString().equals("askOne")) {
             answer = Literal.FALSE;
         } else if (answer instanceof Literal l) {
-            answer = l.addAnnot(from);
+            answer = nested(l, from);
         } else if (answer instanceof ListTerm list) {
             var items = new ArrayList<Term>();
             for (Term t : list.elements()) {
-                items.add(t instanceof Literal l ? l.addAnnot(from) : t);
+                items.add(t instanceof Literal l ? nested(l, from) : t);
             }
             answer = ListTerm.of(items);
         }

@@ -10,6 +10,8 @@ import java.util.List;
 public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
     private int lastLabel;
+    private boolean goalStatePlans;
+    private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
 
@@ -54,12 +56,41 @@ public final class PlanLibrary {
         }
         Plan named = p.withLabel(label);
         candidateCache.clear();
+        goalStatePlans |= p.trigger().op() == Trigger.Op.GOAL_STATE;
+        jagPlans |= p.trigger().literal() instanceof Literal l && l.functor().startsWith("jag_");
         if (atBeginning) {
             plans.add(0, named);
         } else {
             plans.add(named);
         }
         return named;
+    }
+
+    /**
+     * Adds a plan told by {@code source} ({@code .add_plan}, {@code tellHow}): when the library
+     * already has the same plan (trigger, context and body; labels aside) it only gains the
+     * source, as in Jason. {@return the plan in the library}
+     */
+    public Plan add(Plan p, jacabot.agent.syntax.Term source, boolean atBeginning) {
+        Literal s = Literal.of("source", source);
+        for (int i = 0; i < plans.size(); i++) {
+            Plan known = plans.get(i);
+            if (samePlan(known, p)) {
+                Plan more = known.withLabel(known.label().addAnnot(s));
+                plans.set(i, more);
+                candidateCache.clear();
+                return more;
+            }
+        }
+        Literal label = p.label() == null ? Literal.atom("undefined") : p.label();
+        return add(p.withLabel(label.addAnnot(s)), atBeginning);
+    }
+
+    private static boolean samePlan(Plan a, Plan b) {
+        if (a.context() == null && b.context() != null || a.context() != null && b.context() != null && !a.context().equals(b.context())) {
+            return false;
+        }
+        return a.trigger().equals(b.trigger()) && a.body().equals(b.body());
     }
 
     private Literal uniqueLabel() {
@@ -83,6 +114,28 @@ public final class PlanLibrary {
     public boolean remove(String label) {
         candidateCache.clear();
         return plans.removeIf(p -> p.label().functor().equals(label));
+    }
+
+    /**
+     * Takes {@code source} away from the sources of the plan labelled {@code label}; the plan goes
+     * when none is left. {@return whether there is such a plan}
+     */
+    public boolean removeSource(String label, jacabot.agent.syntax.Term source) {
+        Plan p = get(label);
+        if (p == null) {
+            return false;
+        }
+        Literal s = Literal.of("source", source);
+        if (p.label().annots().contains(s)) {
+            Literal rest = p.label().withAnnots(p.label().annots().stream().filter(a -> !a.equals(s)).toList());
+            if (rest.hasSource()) {
+                plans.set(plans.indexOf(p), p.withLabel(rest));
+                candidateCache.clear();
+            } else {
+                remove(label);
+            }
+        }
+        return true;
     }
 
     /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */
@@ -122,6 +175,16 @@ public final class PlanLibrary {
         }
         // a variable in the asked trigger ({+!_} for .relevant_plans) matches every plan
         return !(te.literal() instanceof Literal el) || pl.samePredicate(el);
+    }
+
+    /** {@return whether a plan for goal-state meta-events ({@code ^!g}) was ever added} */
+    public boolean hasGoalStatePlans() {
+        return goalStatePlans;
+    }
+
+    /** {@return whether some plan reacts to the architecture's {@code jag_sleeping}, {@code jag_awaking}, ... events} */
+    public boolean hasJagPlans() {
+        return jagPlans;
     }
 
     public List<Plan> plans() {

@@ -53,6 +53,7 @@ final class ReasoningCycle {
         if (percepts != null) {
             ag.beliefUpdate(percepts);
         }
+        ag.senseIdleness();
         applyProcMsg();
     }
 
@@ -157,6 +158,9 @@ final class ReasoningCycle {
             ag.planListener().planSelected(se, p);
         }
         IntendedMeans im = new IntendedMeans(p, se.trigger(), u);
+        if (se.trigger().isAchieveGoal() && se.trigger().isAddition()) {
+            ag.goalStates().post(se.trigger(), GoalStates.State.executing, null);
+        }
         if (se.isExternal()) {
             Intention i = new Intention(ag.nextIntentionId());
             i.push(im);
@@ -169,6 +173,7 @@ final class ReasoningCycle {
         if (top != null && top.trigger().isAddition() && im.trigger().isAddition()
                 && top.trigger().isGoal() && im.trigger().isGoal() && top.isLastStep()
                 && samePredicate(top.trigger(), im.trigger())) {
+            ag.goalStates().finished(GoalStates.of(top), GoalStates.State.achieved);
             i.pop();
             IntendedMeans base = i.peek();
             if (base != null && base.renamedVars() != null) {
@@ -296,8 +301,8 @@ final class ReasoningCycle {
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
-            if (topTrigger.isAchieveGoal() && topTrigger.isAddition()) {
-                generateGoalStateEvent(topIM, "achieved");
+            if (topTrigger.isGoal()) {
+                ag.goalStates().finished(GoalStates.of(topIM), GoalStates.State.achieved);
             }
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
                 // a failure plan finished: drop the intended means up to the goal that failed
@@ -320,21 +325,6 @@ final class ReasoningCycle {
                     im.removeCurrentStep();
                 }
             }
-        }
-    }
-
-    /**
-     * Jason's goal-state meta-event {@code ^!g[state(S)]}: posted only when some plan listens to
-     * it, as an external event (its plans run in a new intention).
-     */
-    private void generateGoalStateEvent(IntendedMeans im, String state) {
-        if (!(im.unifier().apply(im.trigger().literal()) instanceof Literal goal)) {
-            return;
-        }
-        Trigger meta = new Trigger(Trigger.Op.GOAL_STATE, im.trigger().type(),
-                goal.addAnnot(Literal.of("state", Literal.atom(state))));
-        if (ag.planLibrary().hasCandidate(meta)) {
-            c.addEvent(new Event(meta, null));
         }
     }
 
@@ -379,6 +369,7 @@ final class ReasoningCycle {
         BodyStep step = im.currentStep();
         failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
         if (failEvent.trigger().isGoal()) {
+            notifyFailed(GoalStates.of(im), relevant, i, im, annots);
             if (relevant) {
                 c.addEvent(failEvent);
             } else {
@@ -396,6 +387,7 @@ final class ReasoningCycle {
         Trigger te = se.trigger();
         if (te.isAddition() && te.isGoal()) {
             Event failEvent = se.isExternal() ? externalFailureEvent(te) : findEventForFailure(se.intention(), te);
+            notifyFailed(te, failEvent != null, se.intention(), null, annots);
             if (failEvent != null) {
                 Literal lit = (Literal) te.literal();
                 c.addEvent(withFailureAnnots(failEvent, new BodyStep(BodyStep.Kind.ACHIEVE, lit, null), annots));
@@ -415,6 +407,25 @@ final class ReasoningCycle {
             ag.dropIntention(se.intention());
         }
         return true;
+    }
+
+    /** Goal states of a failure: failed, then handled by a failure plan or finished with the goals below. */
+    private void notifyFailed(Trigger goal, boolean handled, Intention i, IntendedMeans failedIM, List<Term> annots) {
+        GoalStates gs = ag.goalStates();
+        Term reason = annots.isEmpty() ? null : annots.get(0);
+        gs.post(goal, GoalStates.State.failed, reason);
+        if (handled) {
+            gs.post(goal, GoalStates.State.executing, Literal.atom("has_failure_plan"));
+            return;
+        }
+        gs.finished(goal, null);
+        if (i != null) {
+            for (IntendedMeans other : i) {
+                if (other != failedIM) {
+                    gs.finished(GoalStates.of(other), GoalStates.State.failed);
+                }
+            }
+        }
     }
 
     private Event externalFailureEvent(Trigger te) {

@@ -161,7 +161,7 @@ public final class Unifier {
             for (BodyStep s : b.steps()) {
                 steps.add(s.withTerm(apply(s.term())));
             }
-            return new BodyTerm(steps);
+            return new BodyTerm(steps, b.braced());
         }
         if (t instanceof PlanTerm p) {
             return new PlanTerm(p.label() == null ? null : apply(p.label()),
@@ -172,7 +172,7 @@ public final class Unifier {
             Term d = deref(av.var());
             List<Term> annots = applyAll(av.annots());
             if (d instanceof Var dv) {
-                return new AnnotatedVar(dv, annots);
+                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()));
             }
             Term value = apply(d);
             return value instanceof Literal l ? l.addAnnots(annots) : value;
@@ -385,10 +385,15 @@ public final class Unifier {
         if (!(other instanceof Literal l)) {
             return false;
         }
-        if (left && !subsetAnnots(av.annots(), l.annots())) {
+        if (av.tail() != null) {
+            boolean ok = left ? subsetAnnots(av.annots(), av.tail(), l.annots(), null)
+                    : subsetAnnots(l.annots(), null, av.annots(), av.tail());
+            if (!ok) {
+                return false;
+            }
+        } else if (left && !subsetAnnots(av.annots(), l.annots())) {
             return false;
-        }
-        if (!left && !subsetAnnots(l.annots(), av.annots())) {
+        } else if (!left && !subsetAnnots(l.annots(), av.annots())) {
             return false;
         }
         // as Jason, the variable stands for the literal; the annotations were matched apart
@@ -429,11 +434,11 @@ public final class Unifier {
                 return unify(new BodyTerm(a.subList(i, a.size())), sb.term());
             }
             if (isVarStep(sa) && !isAction(sb)) {
-                if (!unify(sa.term(), new BodyTerm(List.of(sb)))) {
+                if (!unify(sa.term(), BodyTerm.bare(sb))) {
                     return false;
                 }
             } else if (isVarStep(sb) && !isAction(sa)) {
-                if (!unify(new BodyTerm(List.of(sa)), sb.term())) {
+                if (!unify(BodyTerm.bare(sa), sb.term())) {
                     return false;
                 }
             } else if (isVarStep(sa) || isVarStep(sb)) {
@@ -455,6 +460,38 @@ public final class Unifier {
     }
 
     /** Each annotation of {@code sub} unifies with some annotation of {@code sup} (greedy, as Jason). */
+    /**
+     * Jason's subset test with tails: each annotation of {@code sub} unifies with one of
+     * {@code sup}, or else goes to {@code sup}'s tail; {@code sub}'s tail takes what is left of
+     * {@code sup}.
+     */
+    private boolean subsetAnnots(List<Term> sub, Term subTail, List<Term> sup, Term supTail) {
+        var left = new ArrayList<Term>(sup);
+        var extra = new ArrayList<Term>();
+        for (Term x : sub) {
+            boolean found = false;
+            for (int j = 0; j < left.size(); j++) {
+                int mark = bindings.size();
+                if (unify(x, left.get(j))) {
+                    left.remove(j);
+                    found = true;
+                    break;
+                }
+                bindings.truncate(mark);
+            }
+            if (!found) {
+                if (supTail == null) {
+                    return false;
+                }
+                extra.add(x);
+            }
+        }
+        if (!extra.isEmpty() && !unify(supTail, ListTerm.of(extra))) {
+            return false;
+        }
+        return subTail == null || unify(subTail, ListTerm.of(left));
+    }
+
     private boolean subsetAnnots(List<Term> sub, List<Term> sup) {
         for (int i = 0, n = sub.size(); i < n; i++) {
             Term x = sub.get(i);

@@ -38,12 +38,7 @@ final class AddPlan extends DefaultInternalAction {
             } else {
                 throw IaException.wrongArguments(name(), "'" + t + "' is not a plan");
             }
-            if (args.length >= 2 && p.label() != null) {
-                p = p.withLabel(p.label().addAnnot(Literal.of("source", args[1])));
-            } else if (args.length >= 2) {
-                p = p.withLabel(new Literal("undefined", List.of(), List.of(Literal.of("source", args[1])), false));
-            }
-            ag.planLibrary().add(p, begin);
+            ag.planLibrary().add(p, args.length >= 2 ? args[1] : Literal.SELF, begin);
         }
         return true;
     }

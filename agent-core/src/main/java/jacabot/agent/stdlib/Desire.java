@@ -26,6 +26,13 @@ final class Desire extends DefaultInternalAction {
             }
         }
         Intend.addIntended(ag, g, un, out);
+        for (Event e : ag.circumstance().pendingEvents().values()) {
+            Trigger t = e.trigger();
+            Unifier c = un.copy();
+            if (t.isAchieveGoal() && t.isAddition() && c.unifies(g, t.literal())) {
+                out.add(c);
+            }
+        }
         return out.iterator();
     }
 }

@@ -59,7 +59,7 @@ final class IntentionIa extends DefaultInternalAction {
         return i.isSuspended() ? "suspended" : "waiting";
     }
 
-    private static Term stack(Intention i) {
+    static Term stack(Intention i) {
         var ims = new ArrayList<Term>();
         for (IntendedMeans im : i) {
             Unifier u = im.unifier();
@@ -69,13 +69,12 @@ final class IntentionIa extends DefaultInternalAction {
                         .addAnnot(Literal.of("code_src", new StringTerm(im.plan().source().jasonFile())));
             }
             Term trigger = new TriggerTerm(im.trigger().withLiteral(u.apply(im.trigger().literal())));
-            var steps = new ArrayList<jacabot.agent.syntax.BodyStep>();
-            for (var s : im.remainingSteps()) {
-                steps.add(s.withTerm(u.apply(s.term())));
-            }
+            // the body as written (Jason does not apply the unifier; its variables come out fresh)
+            var steps = new ArrayList<>(im.remainingSteps());
             var map = new ArrayList<Term>();
             for (Map.Entry<Var, Term> e : u.bindings().entrySet()) {
-                map.add(Literal.of("map", e.getKey(), u.apply(e.getValue())));
+                // the value as bound, not evaluated again (it may hold plans with math.random in their bodies)
+                map.add(Literal.of("map", e.getKey(), e.getValue()));
             }
             ims.add(Literal.of("im", label, trigger, new BodyTerm(steps), listOf(map)));
         }

@@ -6,9 +6,14 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
+import java.util.Iterator;
 import java.util.List;
 
-/** {@code .random(X)}: X in [0,1); {@code .random(List, X)}: a random element (backtracks over up to N draws with a third argument). */
+/**
+ * {@code .random(X)}: a number in [0,1); {@code .random(X, N)}: N such numbers, one solution each
+ * (N = 0: without end); {@code .random(L, X[, N])}: elements of L drawn at random. All draw from
+ * the agent's generator, as {@code math.random} (so {@code .set_random_seed} repeats a run).
+ */
 final class Random extends DefaultInternalAction {
     Random() {
         super(".random", 1, 3);
@@ -19,13 +24,37 @@ final class Random extends DefaultInternalAction {
         if (args.length == 1) {
             return un.unifies(args[0], new NumberTerm(ag.random().nextDouble()));
         }
+        List<Term> items;
+        int max;
         if (args[0] instanceof ListTerm l) {
-            List<Term> items = l.elements();
+            items = l.elements();
             if (items.isEmpty()) {
                 return false;
             }
-            return un.unifies(args[1], items.get(ag.random().nextInt(items.size())));
+            max = args.length == 2 ? 1 : (int) number(args[2]);
+        } else {
+            items = null;
+            max = (int) number(args[1]);
         }
-        return un.unifies(args[0], new NumberTerm(ag.random().nextDouble() * number(args[1])));
+        return new Iterator<Unifier>() {
+            private int n;
+
+            @Override
+            public boolean hasNext() {
+                return (n < max || max == 0) && !ag.isStopped();
+            }
+
+            @Override
+            public Unifier next() {
+                n++;
+                Unifier c = un.copy();
+                if (items == null) {
+                    c.unifies(args[0], new NumberTerm(ag.random().nextDouble()));
+                } else {
+                    c.unifies(args[1], items.get(ag.random().nextInt(items.size())));
+                }
+                return c;
+            }
+        };
     }
 }

@@ -23,6 +23,18 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, new Clone());
+        put(map, new CreateAgent());
+        put(map, new KillAgent());
+        put(map, new Namespace());
+        for (DfAction.Kind k : DfAction.Kind.values()) {
+            put(map, new DfAction(k));
+        }
+        put(map, new ListFiles());
+        put(map, new PlanLabel());
+        put(map, new RelevantRules());
+        put(map, new CurrentIntention());
+        put(map, new Eval());
         put(map, new Delete());
         put(map, new Desire());
         put(map, new Difference());

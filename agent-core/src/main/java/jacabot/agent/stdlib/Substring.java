@@ -6,8 +6,15 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
 
-/** {@code .substring(Sub, S[, Pos])} finds Sub in S (each position); with S unbound, {@code .substring(S0, S, Start[, End])} extracts. */
+/**
+ * {@code .substring(Sub, S[, Pos[, End]])} as Jason: with two arguments whether Sub occurs in S;
+ * with an unbound Sub (or, kept by Jason for old programs, an unbound S) and a number Pos, the
+ * text from Pos (to End); otherwise each position of Sub in S, one solution each. Terms that
+ * are not strings are taken as their printed text.
+ */
 final class Substring extends DefaultInternalAction {
     Substring() {
         super(".substring", 2, 4);
@@ -15,33 +22,34 @@ final class Substring extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        String whole = text(args[0]);
-        if (args.length >= 3 && args[1] instanceof jacabot.agent.syntax.Var) {
+        String sub = textOf(args[0]);
+        String in = textOf(args[1]);
+        if (args.length == 2) {
+            return in.contains(sub);
+        }
+        boolean fixedStart = args[2] instanceof NumberTerm;
+        if (fixedStart && (args[0] instanceof Var || args[1] instanceof Var)) {
+            Term target = args[0] instanceof Var ? args[0] : args[1];
+            String from = args[0] instanceof Var ? in : sub;
             int start = (int) number(args[2]);
-            int end = args.length == 4 ? (int) number(args[3]) : whole.length();
-            if (start < 0 || end > whole.length() || start > end) {
+            int end = args.length == 4 && args[3] instanceof NumberTerm ? (int) number(args[3]) : from.length();
+            if (start < 0 || end > from.length() || start > end) {
                 throw IaException.wrongArguments(name(), "bad bounds " + start + ", " + end);
             }
-            return un.unifies(args[1], new StringTerm(whole.substring(start, end)));
+            return un.unifies(target, new StringTerm(from.substring(start, end)));
         }
-        String sub = whole;
-        String in = text(args[1]);
-        var out = new java.util.ArrayList<Unifier>();
-        int from = 0;
-        while (true) {
-            int p = in.indexOf(sub, from);
-            if (p < 0) {
-                break;
-            }
+        var out = new ArrayList<Unifier>();
+        for (int p = in.indexOf(sub); p >= 0 && p < in.length(); p = in.indexOf(sub, p + 1)) {
             Unifier c = un.copy();
-            if (args.length < 3 || c.unifies(args[2], new NumberTerm(p))) {
+            // Jason's End is one less than the end of the match; kept for the same answers
+            if (c.unifies(args[2], new NumberTerm(p)) && (args.length < 4 || c.unifies(args[3], new NumberTerm(p + sub.length() - 1)))) {
                 out.add(c);
-            }
-            from = p + 1;
-            if (args.length < 3) {
-                break;
             }
         }
         return out.iterator();
+    }
+
+    private static String textOf(Term t) {
+        return t instanceof StringTerm s ? s.value() : t.toString();
     }
 }

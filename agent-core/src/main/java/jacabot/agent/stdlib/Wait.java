@@ -125,6 +125,7 @@ final class Wait extends DefaultInternalAction {
             Literal reason = Literal.of("wait", new NumberTerm(si.id())).addAnnot(what);
             this.key = reason.toString();
             ag.circumstance().addPendingIntention(key, reason, si);
+            ag.goalStates().ofTop(si, jacabot.agent.semantics.GoalStates.State.waiting, reason);
         }
 
         void start() {
@@ -190,6 +191,7 @@ final class Wait extends DefaultInternalAction {
                         ag.circumstance().addPendingIntention(Suspensions.SUSPENDED + si.id(), Suspensions.REASON, si);
                     } else {
                         ag.circumstance().addRunningIntention(si);
+                        ag.goalStates().ofTop(si, jacabot.agent.semantics.GoalStates.State.executing, null);
                     }
                 }
             });

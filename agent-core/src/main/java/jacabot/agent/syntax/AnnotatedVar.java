@@ -5,11 +5,18 @@ import java.util.function.Consumer;
 
 /**
  * A variable with annotations, {@code P[error(E)]} or {@code _[source(ag)]}: it stands for a
- * literal that has (at least) these annotations, as Jason's annotated {@code VarTerm}.
+ * literal that has (at least) these annotations, as Jason's annotated {@code VarTerm}. With a
+ * tail, {@code P[H|T]}, the tail takes the literal's other annotations.
+ *
+ * @param tail null, or the variable after {@code |} in the annotations
  */
-public record AnnotatedVar(Var var, List<Term> annots) implements Term {
+public record AnnotatedVar(Var var, List<Term> annots, Term tail) implements Term {
     public AnnotatedVar {
         annots = List.copyOf(annots);
+    }
+
+    public AnnotatedVar(Var var, List<Term> annots) {
+        this(var, annots, null);
     }
 
     @Override
@@ -21,6 +28,9 @@ public record AnnotatedVar(Var var, List<Term> annots) implements Term {
     public void collectVars(Consumer<Var> sink) {
         sink.accept(var);
         annots.forEach(a -> a.collectVars(sink));
+        if (tail != null) {
+            tail.collectVars(sink);
+        }
     }
 
     @Override
@@ -32,6 +42,9 @@ public record AnnotatedVar(Var var, List<Term> annots) implements Term {
     public String toString() {
         var sb = new StringBuilder(var.toString()).append('[');
         TermOrder.join(sb, annots);
+        if (tail != null) {
+            sb.append('|').append(tail);
+        }
         return sb.append(']').toString();
     }
 }

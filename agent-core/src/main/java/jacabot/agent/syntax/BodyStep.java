@@ -25,6 +25,18 @@ public record BodyStep(Kind kind, Term term, SourceInfo source) {
         return new BodyStep(kind, newTerm, source);
     }
 
+    /** Equal steps are the same deed on the same term wherever they were written (as Jason's
+     *  {@code PlanBodyImpl}): the harness counts tests by comparing body terms. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof BodyStep b && b.kind == kind && b.term.equals(term);
+    }
+
+    @Override
+    public int hashCode() {
+        return kind.hashCode() * 31 + term.hashCode();
+    }
+
     @Override
     public String toString() {
         return kind.prefix + term;

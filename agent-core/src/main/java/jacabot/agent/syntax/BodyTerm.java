@@ -4,12 +4,35 @@ import java.util.List;
 import java.util.StringJoiner;
 import java.util.function.Consumer;
 
-/** A plan body, as a sequence of steps; as a term it is written in braces: {@code { a; !g }}. */
-public record BodyTerm(List<BodyStep> steps) implements Term {
+/**
+ * A plan body, as a sequence of steps; as a term it is written in braces: {@code { a; !g }}.
+ * A single step taken out of a body by a variable ({@code {T; _}}) is not braced: Jason prints
+ * it as the bare formula ({@code !g}); bracing is only printing and does not count for equality.
+ */
+public record BodyTerm(List<BodyStep> steps, boolean braced) implements Term {
     public static final BodyTerm EMPTY = new BodyTerm(List.of());
 
     public BodyTerm {
         steps = List.copyOf(steps);
+    }
+
+    public BodyTerm(List<BodyStep> steps) {
+        this(steps, true);
+    }
+
+    /** {@return the one step as a bare formula, as a variable step of a body term gets it} */
+    public static BodyTerm bare(BodyStep step) {
+        return new BodyTerm(List.of(step), false);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof BodyTerm b && b.steps.equals(steps);
+    }
+
+    @Override
+    public int hashCode() {
+        return steps.hashCode();
     }
 
     @Override
@@ -31,7 +54,7 @@ public record BodyTerm(List<BodyStep> steps) implements Term {
 
     @Override
     public String toString() {
-        return "{ " + bodyText() + " }";
+        return braced ? "{ " + bodyText() + " }" : bodyText();
     }
 
     @Override

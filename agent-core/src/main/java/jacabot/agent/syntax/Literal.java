@@ -18,6 +18,8 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     public static final Literal SELF = atom("self");
     public static final Literal SOURCE_SELF = of("source", SELF);
     public static final Literal SOURCE_PERCEPT = of("source", atom("percept"));
+    /** The functor of a rule used as a term, {@code { head :- body }}: {@code rule__(head, body)}. */
+    public static final String RULE_TERM = "rule__";
 
     public Literal {
         args = List.copyOf(args);
@@ -100,6 +102,11 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     public Literal withoutAnnots() {
         return annots.isEmpty() ? this : new Literal(functor, args, List.of(), negated);
+    }
+
+    /** {@return this literal without its {@code source(_)} annotations} */
+    public Literal withoutSources() {
+        return withAnnots(annots.stream().filter(a -> !(a instanceof Literal l && l.functor.equals("source") && l.args.size() == 1)).toList());
     }
 
     public Literal addAnnots(List<Term> more) {
@@ -186,6 +193,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public String toString() {
+        if (functor.equals(RULE_TERM) && args.size() == 2 && annots.isEmpty()) {
+            return args.get(0) + " :- " + args.get(1);
+        }
         var sb = new StringBuilder();
         if (negated) {
             sb.append('~');

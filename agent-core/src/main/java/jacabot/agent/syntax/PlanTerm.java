@@ -80,4 +80,16 @@ public record PlanTerm(Term label, Trigger trigger, Term context, Term body, Sou
         }
         return out.append(" }").toString();
     }
+
+    /** Plans as terms are equal by their parts (a missing context is {@code true}), wherever written. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof PlanTerm p && java.util.Objects.equals(p.label, label) && p.trigger.equals(trigger)
+                && p.contextOrTrue().equals(contextOrTrue()) && p.body.equals(body);
+    }
+
+    @Override
+    public int hashCode() {
+        return java.util.Objects.hash(label, trigger, contextOrTrue(), body);
+    }
 }

@@ -83,7 +83,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
         for (BodyStep s : b.steps()) {
             steps.add(s.withTerm(map(s.term())));
         }
-        return new BodyTerm(steps);
+        return new BodyTerm(steps, b.braced());
     }
 
     @Override
@@ -91,7 +91,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
         Term v = visitVar(t.var());
         List<Term> annots = mapAll(t.annots());
         if (v instanceof Var nv) {
-            return new AnnotatedVar(nv, annots);
+            return new AnnotatedVar(nv, annots, t.tail() == null ? null : map(t.tail()));
         }
         return v instanceof Literal l ? l.addAnnots(annots) : v;
     }

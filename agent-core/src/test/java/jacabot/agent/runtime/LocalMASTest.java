@@ -144,4 +144,144 @@ class LocalMASTest {
                 () -> Mas2jReader.read(dir.resolve("p.mas2j")));
         assertTrue(e.getMessage().contains("infrastructure 'Jade' is not supported"), e.getMessage());
     }
+
+    /** Jason refuses {@code at} as an agent name and prints this console line; we do too, and stop with an error. */
+    @Test
+    void aProjectThatDoesNotParsePrintsJasonsLine(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a; at;\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        org.junit.jupiter.api.Assertions.assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertEquals(List.of("[RunLocalMAS] Error parsing file file:" + dir.resolve("p.mas2j") + "!"), lines());
+    }
+
+    /** The directory facilitator: Jason 3.2.0 prints these lines for this project. */
+    @Test
+    void theDirectoryFacilitatorRegistersSearchesAndTellsSubscribers(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("s.asl"), "!reg.\n+!reg <- .df_register(seller); .df_register(\"buyer\"); .df_deregister(buyer).\n");
+        Files.writeString(dir.resolve("c.asl"), """
+                !go.
+                +!go <- .df_subscribe(seller); .wait(200); .df_search(seller, L); .print(L); .df_search(buyer, B); .print(B);
+                        .findall(P, provider(P, S), Ps); .sort(Ps, Sorted); .print(Sorted); .stopMAS.
+                +provider(P, S)[source(A)] <- .print(told(S), " by ", A).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: s #2; c; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runStepping();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[c] told(\"seller\") by df", "[c] told(\"seller\") by df", "[c] [s1,s2]", "[c] []", "[c] [s1,s2]"), lines());
+    }
+
+    /** With verbose=0 Jason's .print writes the bare text; warnings keep the agent's name (as Jason 3.2.0). */
+    @Test
+    void verboseZeroPrintsBareText(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("q.asl"), "!s.\n+!s <- .print(hello, 1); .println(x); !nope.\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: q [verbose=0]; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        launched.runUntilQuiescent(1000);
+        assertEquals(List.of("hello1", "x", "[q] No fail event was generated for +!nope[source(self)]", "[q] ",
+                "[q] Found a goal for which there is no relevant plan: +!nope[source(self)]"), lines());
+    }
+
+    /**
+     * Jason's idle events and shutdown: {@code +jag_sleeping}/{@code +jag_awaking}, a
+     * {@code signal} (an event, no belief) and {@code .stopMAS(T)} with {@code +jag_shutting_down(T)};
+     * the lines of each agent as Jason 3.2.0 printed them (up to the shutdown).
+     */
+    @Test
+    void idleEventsSignalAndStopWithDeadline(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("idle.asl"), """
+                +hi(X)[source(A)] <- .print(hi(X), " from ", A, " believed: ", .count(hi(_))).
+                +jag_sleeping <- .print(sleeping).
+                +jag_awaking <- .print(awaking).
+                +jag_shutting_down(T) <- .print(shutting_down(T)).
+                """);
+        Files.writeString(dir.resolve("s.asl"), """
+                !go.
+                +!go <- .wait(300); .send(idle, signal, hi(1)); .wait(300); .stopMAS(400).
+                +jag_shutting_down(T) <- .print(bye(T)).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: idle; s; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project stops after the deadline");
+        var idle = lines().stream().filter(l -> l.startsWith("[idle]")).collect(Collectors.toList());
+        assertEquals(List.of("[idle] sleeping", "[idle] awaking", "[idle] hi(1) from s believed: 0", "[idle] sleeping",
+                "[idle] shutting_down(400)", "[idle] awaking"), idle.subList(0, Math.min(6, idle.size())));
+        assertTrue(lines().contains("[s] bye(400)"), lines().toString());
+    }
+
+    /** .create_agent, tellHow (a plan as text, plan terms in a list) and .kill_agent: the lines Jason 3.2.0 printed. */
+    @Test
+    void agentsCreatedToldPlansAndKilled(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("boss.asl"), """
+                !go.
+                +!go <- .create_agent(w, "worker.asl"); .wait(200);
+                        .send(w, tellHow, "+!hello(X)[source(A)] <- .print(hello(X), \\" from \\", A).");
+                        .send(w, tellHow, [{ @k +!bye <- .print(bye) }]);
+                        .wait(100); .send(w, achieve, hello(1)); .send(w, achieve, bye); .wait(200);
+                        .all_names(L1); .print(L1);
+                        .kill_agent(w); .wait(100);
+                        .all_names(L2); .print(L2);
+                        .stopMAS.
+                """);
+        Files.writeString(dir.resolve("worker.asl"), "!start.\n+!start <- .print(started).\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: boss; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[w] started", "[w] hello(1) from boss", "[w] bye", "[boss] [boss,w]", "[boss] [boss]"), lines());
+    }
+
+    /** .clone: the copy has the beliefs and plans, without their events or the goals (Jason 3.2.0's lines). */
+    @Test
+    void aCloneHasTheBeliefsAndPlansButNoEvents(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("main.asl"), """
+                test(1).
+                !start.
+                +!start <- +a(40); .clone("bob"); .send(bob, tell, p(10)); .wait(300); .stopMAS.
+                +a(X) <- .my_name(N); .print(added(X), " in ", N).
+                +p(X)[source(S)] : a(V) & test(T) <- .print(X, " : ", V + T, " from ", S).
+                """);
+        Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: main; }\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        Thread runner = new Thread(() -> {
+            try {
+                launched.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        runner.join(20_000);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[main] added(40) in main", "[bob] 10 : 41 from main"), lines());
+    }
 }
