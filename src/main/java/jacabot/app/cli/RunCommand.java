@@ -88,7 +88,7 @@ final class RunCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         var log = verbosity.console(spec);
-        var out = log.agents(); // as Jason prints it with --verbose; repeated lines folded by default
+        var out = log.agentsVerbatim(); // as Jason prints it: a Jason program's output is compared line for line
         if (port != null && (port < 1 || port > 65535)) {
             throw new UserError("--port must be in 1..65535, got " + port);
         }

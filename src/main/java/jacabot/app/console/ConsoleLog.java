@@ -107,6 +107,20 @@ public final class ConsoleLog {
         return agents;
     }
 
+    /**
+     * {@return the agents' console line for line, as Jason prints it (dropped with {@code --quiet})}:
+     * for {@code jacabot run}, whose output users and the conformance checks compare with Jason's
+     */
+    public PrintStream agentsVerbatim() {
+        return lines(line -> {
+            if (level != Verbosity.QUIET) {
+                synchronized (this) {
+                    println(line);
+                }
+            }
+        });
+    }
+
     /** {@return a stream whose lines are {@link #info} lines (e.g. for the inspector's address)} */
     public PrintStream infoStream() {
         return lines(this::info);
