@@ -16,11 +16,12 @@ public final class DyingArch extends CAgentArch {
         super(local);
     }
 
-    /** The robot's {@code forward} goes out, and at the N-th the agent's next cycle dies: the robot is moving then. */
+    /** The robot's {@code forward} or {@code setSpeeds} goes out, and at the N-th the agent's next cycle dies: the robot is moving then. */
     @Override
     public void act(jacabot.agent.semantics.ActionExec action, Agent agent) {
         super.act(action, agent);
-        if (action.action().toString().startsWith("forward")
+        String act = action.action().toString();
+        if ((act.startsWith("forward") || act.startsWith("setSpeeds"))
                 && ++forwards >= Integer.getInteger("jacabot.test.dieAfter", 2)) {
             dying = true;
         }

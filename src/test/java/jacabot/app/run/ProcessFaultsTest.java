@@ -124,7 +124,7 @@ class ProcessFaultsTest {
         List<String> events = new CopyOnWriteArrayList<>(), log = new CopyOnWriteArrayList<>();
         try (var c = controller(port, secret, false, events, log)) {
             c.runner().start();
-            waitLong(() -> events.stream().anyMatch(e -> e.contains("apply forward")));
+            waitLong(() -> events.stream().anyMatch(e -> e.contains("apply forward") || e.contains("apply setSpeeds"))); // moving
             long killedAt = c.world().timeMs();
             agent.destroyForcibly(); // SIGKILL: no goodbye
             waitFor(() -> c.failSafeTrips() > 0);
@@ -157,7 +157,7 @@ class ProcessFaultsTest {
         List<String> events = new CopyOnWriteArrayList<>(), log = new CopyOnWriteArrayList<>();
         try (var c = controller(port, secret, false, events, log)) {
             c.runner().start();
-            waitLong(() -> events.stream().anyMatch(e -> e.contains("apply forward")));
+            waitLong(() -> events.stream().anyMatch(e -> e.contains("apply forward") || e.contains("apply setSpeeds"))); // moving
             long movingAt = c.world().timeMs(); // the agent thread dies at its next cycle
             assertTrue(agent.waitFor(60, TimeUnit.SECONDS), "the agent platform did not end");
             long endedAt = c.world().timeMs();
