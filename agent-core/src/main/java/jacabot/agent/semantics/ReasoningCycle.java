@@ -18,6 +18,8 @@ import java.util.Map;
  * {@link BodyExecutor}.
  */
 final class ReasoningCycle {
+    /** The most intended means an intention may hold before a new subgoal fails (system property jacabot.maxIntentionDepth). */
+    static final int MAX_INTENTION_DEPTH = Integer.getInteger("jacabot.maxIntentionDepth", 10_000);
     private final Agent ag;
     private final Circumstance c;
     private final BodyExecutor exec;
@@ -154,6 +156,12 @@ final class ReasoningCycle {
 
     /** AddIM: a new intention for an external event, or a new top of the event's intention. */
     private void applyAddIM(Event se, Plan p, Unifier u) {
+        if (!se.isExternal() && se.trigger().isAddition() && se.intention().size() >= MAX_INTENTION_DEPTH) {
+            // runaway goal recursion fails the goal instead of filling the heap (Jason would grow on)
+            generateGoalDeletionFromEvent(se, errorAnnots("stack_overflow", "the intention holds " + se.intention().size()
+                    + " intended means, the limit (-Djacabot.maxIntentionDepth)"));
+            return;
+        }
         if (ag.planListener() != null) {
             ag.planListener().planSelected(se, p);
         }

@@ -23,6 +23,19 @@ class ReasoningCycleTest {
     }
 
     @Test
+    void runawayGoalRecursionFailsTheGoalAtTheIntentionDepthLimit() {
+        // not a tail call: each !g stays under the plan that posted it, and the intention grows
+        var a = new TestAgent("""
+                !start.
+                +!start <- !g(0).
+                +!g(N) <- !g(N + 1); .print(never).
+                -!start[error(E)] <- .print(E).
+                """);
+        a.cycles(4 * ReasoningCycle.MAX_INTENTION_DEPTH);
+        assertEquals(List.of("stack_overflow"), a.printed());
+    }
+
+    @Test
     void failureAnnotationsTellWhatFailedAndWhere() {
         var a = new TestAgent("""
                 !g.
