@@ -66,9 +66,9 @@ steerEvery(2500).
 detours(0).
 searchAfter(45000).
 sweepSpacing(0.2).
-sweepSpeed(80).
+sweepSpeed(100).
 // (issue 13) travel to a target at this wheel speed, not the thesis' forward (50): big arenas
-travelSpeed(80).
+travelSpeed(100).
 storageClearance(0.22).
 // (issue 13) far sight: sightings at most every sightingEvery ms; the camera's field of view;
 // the approach's wheel speed; how long one cylinder is chased, and then ignored
