@@ -57,8 +57,7 @@ public record CylinderSighting(double offset, int columns, double distance) {
     private static boolean redColumn(int[] framed, int width, int height, int c) {
         for (int y = 0; y < height; y++) {
             int p = framed[2 + y * width + c];
-            int r = (p >> 16) & 0xFF, g = (p >> 8) & 0xFF, b = p & 0xFF;
-            if (r > 40 && r > ObjectPickingMiddleware.RED_RATIO * g && r > ObjectPickingMiddleware.RED_RATIO * b) {
+            if (ObjectPickingMiddleware.isRed((p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF)) {
                 return true;
             }
         }

@@ -1,7 +1,7 @@
 package jacabot.experiments;
 
-import java.util.HashMap;
-import java.util.Map;
+import java.util.HashSet;
+import java.util.Set;
 
 /**
  * Where a robot without GPS has been (issue 13): its pose by dead reckoning from the wheel speeds
@@ -21,8 +21,8 @@ final class ExplorationMap {
     private double x, z, heading; // metres, metres, radians
     private double left, right;   // wheel speeds in effect, speed units
     private long lastMs = -1;
-    private final Map<Long, Integer> visits = new HashMap<>();
-    private final Map<Long, Boolean> blocked = new HashMap<>();
+    private final Set<Long> visited = new HashSet<>();
+    private final Set<Long> blocked = new HashSet<>();
 
     /**
      * @param speedUnit metres per second of one wheel speed unit
@@ -57,7 +57,7 @@ final class ExplorationMap {
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        blocked.put(key(x + distance * Math.cos(a), z + distance * Math.sin(a)), true);
+        blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -79,10 +79,10 @@ final class ExplorationMap {
         long previous = key(x, z);
         for (double d = CELL / 2; d <= HORIZON + 1e-9; d += CELL / 2) {
             long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            if (blocked.containsKey(k)) {
+            if (blocked.contains(k)) {
                 break;
             }
-            if (k != previous && !visits.containsKey(k)) {
+            if (k != previous && !visited.contains(k)) {
                 fresh++;
             }
             previous = k;
@@ -91,19 +91,17 @@ final class ExplorationMap {
     }
 
     private void visit() {
-        visits.merge(key(x, z), 1, Integer::sum);
+        visited.add(key(x, z));
     }
 
-    double speedUnit() {
-        return speedUnit;
-    }
-
-    double axle() {
-        return axle;
+    /** {@return how long a turn of {@code degrees} on the spot takes, wheels at ±{@code wheelSpeed}, in ms} */
+    long turnMillis(double degrees, double wheelSpeed) {
+        double degreesPerSecond = Math.toDegrees(2 * wheelSpeed * speedUnit / axle);
+        return Math.round(1000 * Math.abs(degrees) / degreesPerSecond);
     }
 
     int cellsVisited() {
-        return visits.size();
+        return visited.size();
     }
 
     double x() {

@@ -162,9 +162,11 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     }
 
     private boolean red(int section) {
-        int r = rgb[3 * section];
-        int g = rgb[3 * section + 1];
-        int b = rgb[3 * section + 2];
+        return isRed(rgb[3 * section], rgb[3 * section + 1], rgb[3 * section + 2]);
+    }
+
+    /** The thesis' red test (§2.2), for a section mean or a pixel: bright enough, twice green and blue. */
+    static boolean isRed(int r, int g, int b) {
         return r > 40 && r > RED_RATIO * g && r > RED_RATIO * b;
     }
 

@@ -78,9 +78,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             return;
         }
         double turn = map.bestTurn();
-        double degreesPerSecond = Math.toDegrees(2 * speed * map.speedUnit() / map.axle());
         side.set(turn >= 0 ? "left" : "right");
-        ms.set((double) Math.round(1000 * Math.abs(turn) / degreesPerSecond));
+        ms.set((double) map.turnMillis(turn, speed));
     }
 
     @Override

@@ -48,23 +48,20 @@ final class DeviceSampler {
 
     /** {@return whether the robot has a device for this kind (and it was enabled)} */
     boolean enable(SensorKind kind, int periodMs) {
-        if (kind == SensorKind.CAMERA_IMAGE && camera != null && camera.getSamplingPeriod() > 0) {
-            cameraImage = true; // the camera already runs: keep its period, add the whole image
+        if (kind == SensorKind.CAMERA_IMAGE && camera != null) {
+            if (camera.getSamplingPeriod() == 0) {
+                camera.enable(periodMs); // a camera already running keeps its period
+            }
+            cameraImage = true;
             return true;
         }
-        boolean done = toggle(kind, periodMs);
-        if (done && kind == SensorKind.CAMERA_IMAGE) {
-            cameraImage = true;
-        }
-        return done;
+        return toggle(kind, periodMs);
     }
 
     boolean disable(SensorKind kind) {
         if (kind == SensorKind.CAMERA_IMAGE) {
-            // the image only: the camera keeps serving its sections
-            boolean had = camera != null;
-            cameraImage = false;
-            return had;
+            cameraImage = false; // the image only: the camera keeps serving its sections
+            return camera != null;
         }
         return toggle(kind, 0);
     }
