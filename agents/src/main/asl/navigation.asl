@@ -62,6 +62,8 @@ cameraFov(60).
 approachSpeed(40).
 homingGiveUp(40000).
 ignoreFor(15000).
+// (issue 13) how long to go on past an obstacle met on the way to a far cylinder, ms
+goRoundTime(2500).
 
 /* Initial goals */
 
@@ -221,9 +223,12 @@ ignoreFor(15000).
 /* Basic obstacle avoidance (Chapter 4 §1.2) */
 
 // (issue 13) replacement: the thesis' ".wait("+obstacle(false)")" became !clear, a bounded wait
-+!avoid(0) <- backward; turnAround; !clear; -avoiding.
-+!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding.
-+!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding.
++!avoid(0) <- backward; turnAround; !clear; -avoiding; !afterAvoid.
++!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding; !afterAvoid.
++!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding; !afterAvoid.
+// (issue 13) homing on a far cylinder when the obstacle came: go round it first
++!afterAvoid : homing(_) & not delivering <- !goRound.
++!afterAvoid.
 
 /* The carried cylinder has fallen: stop everything (Chapter 4 §2.1) */
 
@@ -240,7 +245,7 @@ ignoreFor(15000).
    area: ignoreCylindersNear). Turn towards it and go closer, steering; the plans above take it
    when it is near. */
 
-+cylinderSighted(Off, _) : not picking & not delivering & not avoiding & reachCylinder(false) & not ignoring
++cylinderSighted(Off, _) : not picking & not delivering & not avoiding & reachCylinder(false) & not ignoring & not goingRound
                            & not nearStorage & not insideArea
     <- .system_time(T); -+lastSighted(T); !home(Off).
 
@@ -249,6 +254,10 @@ ignoreFor(15000).
     <- println("The cylinder in sight cannot be reached: looking elsewhere");
        -homing(_); +ignoring; +avoiding; !escape; -avoiding; .wait(I); -ignoring.
 +!home(Off) <- !steerTo(Off).
+// (issue 13) an obstacle met on the way to a far cylinder: go on past it a while before turning
+// to the cylinder again (steering straight back drove into the same box until homingGiveUp)
++!goRound : travelSpeed(V) & goRoundTime(T) <- +goingRound; setSpeeds(V, V); .wait(T); -goingRound.
+-!goRound <- -goingRound.
 
 // turn on the spot when it is well to a side, else steer towards it on the way
 +!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).

@@ -43,6 +43,11 @@ cameraFov(60).
 approachSpeed(40).
 homingGiveUp(40000).
 ignoreFor(15000).
+// (issue 13) how long to go on past an obstacle met on the way to a far cylinder, ms
+goRoundTime(2500).
+// (issue 13) straight legs of the random walk and the search at this wheel speed, not the
+// thesis' forward (50): twice the ground in big arenas
+cruiseSpeed(100).
 
 !start.
 
@@ -93,9 +98,12 @@ ignoreFor(15000).
     <- +avoiding; .succeed_goal(move(_)); stop; if (S == "left") { !avoid(-1) } else { !avoid(1) }.
 
 // (issue 13) replacement: the thesis' ".wait("+obstacle(false)")" became !clear, a bounded wait
-+!avoid(0) <- backward; turnAround; !clear; -avoiding.
-+!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding.
-+!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding.
++!avoid(0) <- backward; turnAround; !clear; -avoiding; !afterAvoid.
++!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding; !afterAvoid.
++!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding; !afterAvoid.
+// (issue 13) homing on a far cylinder when the obstacle came: go round it first
++!afterAvoid : homing(_) & not delivering <- !goRound.
++!afterAvoid.
 
 /* Random motion, suspended while a more relevant task runs */
 
@@ -111,10 +119,10 @@ ignoreFor(15000).
 +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !avoid(D).
 // (issue 13) no cylinder for a while: long straight legs in random directions
 +!move(N) : searchAfter(S) & lastFound(T0) & .system_time(T) & T - T0 > S & not picked(true) & maxSpeed(M)
-    <- .random(R); setSpeeds(M / 2, -M / 2); .wait(R * 3000); forward; .wait(15000).
-+!move(N) : N <= 0.5 <- forward; .random(R); W = R * 10000; .wait(W).
-+!move(N) : N <= 0.75 & N > 0.5 <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
-+!move(N) : N < 1 & N > 0.75 <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); forward; .wait(1000).
+    <- .random(R); setSpeeds(M / 2, -M / 2); .wait(R * 3000); ?cruiseSpeed(V); setSpeeds(V, V); .wait(15000).
++!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
++!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
++!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
 -!move(_) <- println("move failed").
 
 /* Picking the cylinder up, with time limits (Chapter 4 §2.1) */
@@ -142,7 +150,7 @@ ignoreFor(15000).
    section means); the whole image shows one up to about 1.5 m away. Turn towards it and go
    closer, steering; the plans above take it when it is near. */
 
-+cylinderSighted(Off, _) : not picking & not picked(true) & not avoiding & reachCylinder(false) & not ignoring
++cylinderSighted(Off, _) : not picking & not picked(true) & not avoiding & reachCylinder(false) & not ignoring & not goingRound
     <- .system_time(T); -+lastSighted(T); !home(Off).
 
 +!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
@@ -150,6 +158,10 @@ ignoreFor(15000).
     <- println("The cylinder in sight cannot be reached: looking elsewhere");
        -homing(_); +ignoring; +avoiding; !escape; -avoiding; .wait(I); -ignoring.
 +!home(Off) <- !steerTo(Off).
+// (issue 13) an obstacle met on the way to a far cylinder: go on past it a while before turning
+// to the cylinder again (steering straight back drove into the same box until homingGiveUp)
++!goRound : cruiseSpeed(V) & goRoundTime(T) <- +goingRound; setSpeeds(V, V); .wait(T); -goingRound.
+-!goRound <- -goingRound.
 
 // turn on the spot when it is well to a side, else steer towards it on the way
 +!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).

@@ -285,7 +285,7 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** {@return the agent's text} @throws UserError when it cannot be read */
-    private static String readAgent(Path file) {
+    static String readAgent(Path file) {
         if (!Files.isRegularFile(file)) {
             throw new UserError("--agent " + file + ": no such file");
         }

@@ -56,6 +56,9 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
     private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
 
+    @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/as-published/navigation.asl (default: the packaged one)")
+    private Path agent;
+
     @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default: one per core, here ${DEFAULT-VALUE})")
     private int jobs = Runtime.getRuntime().availableProcessors();
 
@@ -119,6 +122,9 @@ final class SweepCommand implements Callable<Integer> {
                 shardIndex = Integer.parseInt(m.group(1));
                 shards = Integer.parseInt(m.group(2));
             }
+            if (agent != null && experiment.equals("all")) {
+                throw new IllegalArgumentException("--agent needs one EXPERIMENT, not all");
+            }
             if (worlds != null && generate != null) {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
             }
@@ -139,6 +145,19 @@ final class SweepCommand implements Callable<Integer> {
             err.flush();
             return 2;
         }
+        String agentSource = null;
+        if (agent != null) {
+            try {
+                Path file = Files.isRegularFile(agent) || agent.isAbsolute() ? agent : jacabot.app.Installation.resolve(agent.toString());
+                agentSource = ExperimentCommand.readAgent(file);
+                new jacabot.agent.parser.AslParser().parse(agentSource, file.toString()); // a syntax error before, not in every run
+                agent = file;
+            } catch (UserError | jacabot.agent.parser.AslSyntaxException e) {
+                err.println(e instanceof UserError ? "error: " + e.getMessage() : e.getMessage()); // file:line:col: error: ...
+                err.flush();
+                return 2;
+            }
+        }
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
         Files.createDirectories(dir.resolve("logs"));
         List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
@@ -154,6 +173,9 @@ final class SweepCommand implements Callable<Integer> {
                 shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
                 .onResult(r -> writeLogs(dir.resolve("logs"), r, log));
+        if (agentSource != null) {
+            sweep.agent(experiments.get(0), agentSource, agent.toString());
+        }
         Sweep.Outcomes result = sweep.run(jobList);
         List<RunOutcome> runs = new ArrayList<>(result.runs());
         runs.sort(Sweep.ORDER);

@@ -32,6 +32,7 @@ public final class Sweep {
     private ConsoleLog progress;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
+    private final Map<jacabot.robot.Experiment, String[]> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
 
     /** What a sweep leaves: every outcome (in job order) and the wall-clock time it took. */
     public record Outcomes(List<RunOutcome> runs, double wallSeconds, int jobs) {
@@ -68,6 +69,12 @@ public final class Sweep {
         return this;
     }
 
+    /** Runs {@code source} (named {@code file} in messages) as the agent of experiment {@code e}, not the packaged one. */
+    public Sweep agent(jacabot.robot.Experiment e, String source, String file) {
+        agents.put(e, new String[] {source, file});
+        return this;
+    }
+
     /** Runs the jobs; {@return the outcomes in job order} */
     public Outcomes run(List<SweepJob> list) throws InterruptedException {
         long start = System.nanoTime();
@@ -85,7 +92,10 @@ public final class Sweep {
             int index = i;
             futures.put(done.submit(() -> {
                 started.put(index, System.nanoTime());
-                SweepRun.Result r = SweepRun.run(list.get(index), seconds, wallLimitS);
+                SweepJob job = list.get(index);
+                String[] agent = agents.get(job.experiment());
+                SweepRun.Result r = agent == null ? SweepRun.run(job, seconds, wallLimitS)
+                        : SweepRun.run(job, seconds, wallLimitS, agent[0], agent[1]);
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

@@ -72,6 +72,11 @@ public final class SweepRun {
      * @param wallLimitS  wall-clock bound in seconds
      */
     public static Result run(SweepJob job, double seconds, double wallLimitS) {
+        return run(job, seconds, wallLimitS, agentSource(job.experiment()), job.experiment().id() + ".asl");
+    }
+
+    /** Runs a job with the agent {@code agentSource} (named {@code agentFile} in messages) instead of the packaged one. */
+    public static Result run(SweepJob job, double seconds, double wallLimitS, String agentSource, String agentFile) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -101,7 +106,7 @@ public final class SweepRun {
         String message = "";
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
-                var run = new LockstepRun(world, null, e, agentSource(e), e.id() + ".asl", job.seed(),
+                var run = new LockstepRun(world, null, e, agentSource, agentFile, job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false);
                 run.runFor(seconds);
             } else {

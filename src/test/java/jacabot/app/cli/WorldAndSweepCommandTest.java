@@ -92,6 +92,27 @@ class WorldAndSweepCommandTest {
     }
 
     @Test
+    void sweepRunsTheAgentGivenWithAgent(@TempDir Path dir) throws Exception {
+        Path worlds = dir.resolve("worlds");
+        Files.createDirectories(worlds);
+        Files.copy(ROOT.resolve("worlds/obstacle-avoidance.json"), worlds.resolve("obstacle-avoidance.json"));
+        Path agent = dir.resolve("idle.asl");
+        Files.writeString(agent, "!start.\n+!start <- .print(\"an idle agent of my own\").\n");
+        var r = CliRun.run("sweep", "obstacle-avoidance", "--agent", agent.toString(), "--worlds", worlds.toString(),
+                "--seeds", "1", "--duration", "3s", "--controllers", "agent", "--out", dir.resolve("s").toString(), "--no-progress");
+        assertEquals("0", r[0], r[2]);
+        String console = Files.readString(dir.resolve("s/logs/obstacle-avoidance_obstacle-avoidance_agent_seed1.failure.txt"));
+        assertTrue(console.contains("an idle agent of my own"), console);
+
+        Files.writeString(agent, "+!start <- .print(\n");
+        var bad = CliRun.run("sweep", "obstacle-avoidance", "--agent", agent.toString(), "--worlds", worlds.toString(),
+                "--out", dir.resolve("t").toString());
+        assertEquals("2", bad[0]);
+        assertTrue(bad[2].startsWith(agent + ":1:"), bad[2]); // file:line:col
+        assertEquals("2", CliRun.run("sweep", "all", "--agent", agent.toString(), "--out", dir.toString())[0]);
+    }
+
+    @Test
     void sweepUsageErrorsExitWith2(@TempDir Path dir) {
         assertEquals("2", CliRun.run("sweep", "flying")[0]);
         assertEquals("2", CliRun.run("sweep", "all", "--shard", "3/2", "--out", dir.toString())[0]);
