@@ -163,4 +163,24 @@ class JacaExamplesTest {
         assertEquals(List.of("[receiver] received hello1", "[receiver] received hello2", "[receiver] received hello3"),
                 run("07-messages").lines());
     }
+
+    @Test
+    void javaObjectsThroughTheCartagoInternalActions() throws Exception {
+        assertEquals(List.of("[binder] total: 9", "[binder] max: 9", "[binder] the clock runs",
+                "[binder] class: class demo.Tally", "[binder] sorted: [1,2,3]",
+                "[binder] ia_failed: cartago.invoke_obj: demo.Tally.reset(-1) threw java.lang.IllegalArgumentException: "
+                        + "a tally never goes below zero",
+                "[binder] ia_failed: cartago.invoke_obj: no public method demo.Tally.multiply for (2)"),
+                run("09-java-binding").lines());
+    }
+
+    @Test
+    void severalWorkspacesEachWithItsOwnBlackboard() throws Exception {
+        assertEquals(List.of("[visitor] starting in main", "[visitor] cannot join: unknown_workspace(\"attic\")",
+                "[visitor] now in kitchen", "[visitor] now in garden", "[visitor] not here: unknown_artifact(\"pot\")",
+                "[visitor] back in kitchen", "[visitor] the note here: left in the kitchen",
+                "[visitor] the pot was stirred 1 time(s)", "[visitor] after quitting: garden",
+                "[visitor] and finally in main again", "[visitor] joined: [\"main\"]"),
+                run("10-workspaces").lines());
+    }
 }
