@@ -91,7 +91,7 @@ public class CartagoEnvironment implements Environment {
             workspace = b.build();
             workspaces.put("main", workspace);
         }
-        remote = new RemoteNodes(this, args);
+        remote = new RemoteNodes(this, args, console);
     }
 
     private Workspace.Builder builder(String name) {

@@ -33,4 +33,17 @@ interface JoinedWorkspace {
             workspace.leave(agent);
         }
     }
+
+    /** A workspace of another process, through a session of its node. */
+    record Remote(jacabot.cartago.remote.RemoteWorkspace session, WorkspaceId id) implements JoinedWorkspace {
+        @Override
+        public void execOp(OpTarget target, String operation, Object[] args, OpCallback callback) {
+            session.execOp(target, operation, args, callback);
+        }
+
+        @Override
+        public void quit() {
+            session.quit();
+        }
+    }
 }

@@ -18,12 +18,19 @@ import org.junit.jupiter.api.Test;
  * and print what CArtAgO's description of each scenario says.
  */
 class JacaExamplesTest {
+    private static Path folder(String folder) {
+        return Path.of(System.getProperty("jacabot.rootDir", ".."), "examples", "jaca", folder);
+    }
+
     private static ProjectRun run(String folder) throws Exception {
-        Path dir = Path.of(System.getProperty("jacabot.rootDir", ".."), "examples", "jaca", folder);
         Path mas2j;
-        try (var files = Files.list(dir)) {
+        try (var files = Files.list(folder(folder))) {
             mas2j = files.filter(p -> p.toString().endsWith(".mas2j")).findFirst().orElseThrow();
         }
+        return run(folder, mas2j);
+    }
+
+    private static ProjectRun run(String folder, Path mas2j) throws Exception {
         ProjectRun run = ProjectRun.run(mas2j, 0, 90_000);
         assertTrue(run.stopped, folder + " did not end with .stopMAS:\n" + run.output);
         return run;
@@ -182,5 +189,46 @@ class JacaExamplesTest {
                 "[visitor] the pot was stirred 1 time(s)", "[visitor] after quitting: garden",
                 "[visitor] and finally in main again", "[visitor] joined: [\"main\"]"),
                 run("10-workspaces").lines());
+    }
+
+    @Test
+    void anAgentOfAnotherNodeWorksInThisNodesWorkspace() throws Exception {
+        int port;
+        try (var probe = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = probe.getLocalPort();
+        }
+        Path secret = Files.createTempDirectory("jacabot-secret").resolve("workspace-secret");
+        System.setProperty("jacabot.cartago.port", String.valueOf(port));
+        System.setProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY, secret.toString());
+        try {
+            var node = new java.util.concurrent.CompletableFuture<ProjectRun>();
+            var nodeThread = new Thread(() -> {
+                try {
+                    node.complete(run("11-remote", folder("11-remote").resolve("node.mas2j")));
+                } catch (Throwable t) {
+                    node.completeExceptionally(t);
+                }
+            });
+            nodeThread.start();
+            long deadline = System.currentTimeMillis() + 60_000;
+            while (true) {   // until the node listens
+                try (var probe = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), port)) {
+                    break;
+                } catch (java.io.IOException notYet) {
+                    assertTrue(System.currentTimeMillis() < deadline && !node.isDone(), "the node never listened");
+                    Thread.sleep(50);
+                }
+            }
+            ProjectRun visitor = run("11-remote", folder("11-remote").resolve("visitor.mas2j"));
+            assertEquals(List.of("[voyager] no attic there: join_failed(\"attic\",\"localhost\")",
+                    "[voyager] joined main remotely", "[voyager] count is 2", "[voyager] back in main",
+                    "[voyager] beliefs about the tally left: 0"), visitor.lines());
+            // the node's console prints what the visitor printed while its current workspace was the node's
+            assertEquals(List.of("[keeper] keeping main (local)", "[voyager] hello from another process",
+                    "[keeper] the visitor counted to 2"), node.get(90, java.util.concurrent.TimeUnit.SECONDS).lines());
+        } finally {
+            System.clearProperty("jacabot.cartago.port");
+            System.clearProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY);
+        }
     }
 }
