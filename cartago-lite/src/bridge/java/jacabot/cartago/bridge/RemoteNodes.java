@@ -89,11 +89,14 @@ final class RemoteNodes {
         }
         String h = host;
         int p = port;
+        WorkspaceId id = new WorkspaceId(name, h + ":" + p);
         connector.execute(() -> {
             RemoteWorkspace w;
             try {
+                // a lost node leaves the agent as a quit would (its percepts there are gone already)
                 w = RemoteWorkspace.join(h, p, name, session.agent(), session.observer(),
-                        WorkspaceSecret.loadOrCreate(WorkspaceSecret.defaultFile()));
+                        WorkspaceSecret.loadOrCreate(WorkspaceSecret.defaultFile()),
+                        () -> session.find(id).ifPresent(session::quitted));
             } catch (IOException | RuntimeException e) {
                 reply.fail("cannot join workspace " + name + " at " + h + ":" + p + ": " + e.getMessage(),
                         "join_failed", List.of(name, address));
@@ -102,7 +105,6 @@ final class RemoteNodes {
             synchronized (sessions) {
                 sessions.add(w);
             }
-            WorkspaceId id = new WorkspaceId(name, h + ":" + p);
             session.joined(new JoinedWorkspace.Remote(w, id));
             reply.succeed(Map.of(outputIndex, id));
         });

@@ -26,7 +26,8 @@ import java.util.function.UnaryOperator;
  * One agent's session in a workspace of another process ({@link WorkspaceServer}): operations go
  * there, and what the agent perceives there comes back to its observer, on this session's reader
  * thread. Artifact ids of that workspace carry its full name, {@code name@host:port}. When the
- * connection is lost, operations under way fail with {@code workspace_closed}.
+ * connection is lost (not quit), operations under way fail with {@code workspace_closed}, the
+ * observer hears that every focus there ended, and the {@code lost} callback runs.
  */
 public final class RemoteWorkspace implements AutoCloseable {
     private static final int CONNECT_TIMEOUT_MS = 5000;
@@ -38,7 +39,10 @@ public final class RemoteWorkspace implements AutoCloseable {
     private final Map<Integer, Pending> pending = new ConcurrentHashMap<>();
     private final AtomicInteger opIds = new AtomicInteger();
     private volatile boolean closed;
+    private volatile boolean quitting;
     private Thread reader;
+    /** What the agent focuses there, as the events told (read on loss, to end those focuses). */
+    private final Map<ArtifactId, List<PropertySnapshot>> focused = new java.util.LinkedHashMap<>();
 
     private record Pending(OpCallback callback, Object[] args) {
     }
@@ -58,6 +62,12 @@ public final class RemoteWorkspace implements AutoCloseable {
      */
     public static RemoteWorkspace join(String host, int port, String workspace, String agent, ArtifactObserver observer,
             WorkspaceSecret secret) throws IOException {
+        return join(host, port, workspace, agent, observer, secret, () -> { });
+    }
+
+    /** As {@link #join(String, int, String, String, ArtifactObserver, WorkspaceSecret)}, told when the connection is lost. */
+    public static RemoteWorkspace join(String host, int port, String workspace, String agent, ArtifactObserver observer,
+            WorkspaceSecret secret, Runnable lost) throws IOException {
         var socket = new Socket();
         try {
             socket.connect(new InetSocketAddress(host, port), CONNECT_TIMEOUT_MS);
@@ -80,7 +90,7 @@ public final class RemoteWorkspace implements AutoCloseable {
             }
             socket.setSoTimeout(0);
             var w = new RemoteWorkspace(socket, out, workspace, workspace + "@" + host + ":" + port);
-            w.reader = new Thread(() -> w.readLoop(in, observer), "remote-workspace-" + w.fullName);
+            w.reader = new Thread(() -> w.readLoop(in, observer, lost), "remote-workspace-" + w.fullName);
             w.reader.setDaemon(true);
             w.reader.start();
             return w;
@@ -155,7 +165,7 @@ public final class RemoteWorkspace implements AutoCloseable {
         return new OpOutcome.Failure("the connection to the remote workspace is lost", "workspace_closed", List.of());
     }
 
-    private void readLoop(DataInputStream in, ArtifactObserver observer) {
+    private void readLoop(DataInputStream in, ArtifactObserver observer, Runnable lost) {
         UnaryOperator<String> rename = this::fromNode;
         try {
             while (true) {
@@ -163,18 +173,24 @@ public final class RemoteWorkspace implements AutoCloseable {
                 if (type == Frames.OUTCOME) {
                     outcome(in, rename);
                 } else if (type == Frames.EVENT) {
-                    event(in, rename, observer);
+                    event(in, rename, observer, focused);
                 } else {
                     throw new IOException("unknown frame " + type);
                 }
             }
         } catch (IOException ended) {
-            close();
+            boolean unexpected = !quitting;
+            closeSocket();
             for (Integer id : new ArrayList<>(pending.keySet())) {
                 Pending p = pending.remove(id);
                 if (p != null) {
                     p.callback().completed(lost());
                 }
+            }
+            if (unexpected) {
+                focused.forEach((id, props) -> observer.focusEnded(id, props, false));
+                focused.clear();
+                lost.run();
             }
         }
     }
@@ -218,20 +234,40 @@ public final class RemoteWorkspace implements AutoCloseable {
         p.callback().completed(outcome);
     }
 
-    private static void event(DataInputStream in, UnaryOperator<String> rename, ArtifactObserver observer)
-            throws IOException {
+    private static void event(DataInputStream in, UnaryOperator<String> rename, ArtifactObserver observer,
+            Map<ArtifactId, List<PropertySnapshot>> focused) throws IOException {
         int kind = in.readUnsignedByte();
         if (!(Wire.read(in, rename) instanceof ArtifactId id)) {
             throw new IOException("an event without its artifact");
         }
         switch (kind) {
-            case Frames.FOCUSED -> observer.focused(id, Wire.readProperties(in, rename));
-            case Frames.ADDED -> observer.propertyAdded(id, Wire.readProperty(in, rename));
+            case Frames.FOCUSED -> {
+                List<PropertySnapshot> props = Wire.readProperties(in, rename);
+                focused.put(id, new ArrayList<>(props));
+                observer.focused(id, props);
+            }
+            case Frames.ADDED -> {
+                PropertySnapshot p = Wire.readProperty(in, rename);
+                focused.computeIfAbsent(id, k -> new ArrayList<>()).add(p);
+                observer.propertyAdded(id, p);
+            }
             case Frames.UPDATED -> {
                 PropertySnapshot old = Wire.readProperty(in, rename);
-                observer.propertyUpdated(id, old, Wire.readProperty(in, rename));
+                PropertySnapshot now = Wire.readProperty(in, rename);
+                List<PropertySnapshot> props = focused.get(id);
+                if (props != null && props.indexOf(old) >= 0) {
+                    props.set(props.indexOf(old), now);
+                }
+                observer.propertyUpdated(id, old, now);
             }
-            case Frames.REMOVED -> observer.propertyRemoved(id, Wire.readProperty(in, rename));
+            case Frames.REMOVED -> {
+                PropertySnapshot p = Wire.readProperty(in, rename);
+                List<PropertySnapshot> props = focused.get(id);
+                if (props != null) {
+                    props.remove(p);
+                }
+                observer.propertyRemoved(id, p);
+            }
             case Frames.SIGNALLED -> {
                 String type = Wire.readString(in);
                 Object args = Wire.read(in, rename);
@@ -242,6 +278,7 @@ public final class RemoteWorkspace implements AutoCloseable {
             }
             case Frames.ENDED -> {
                 List<PropertySnapshot> props = Wire.readProperties(in, rename);
+                focused.remove(id);
                 observer.focusEnded(id, props, in.readBoolean());
             }
             default -> throw new IOException("unknown event kind " + kind);
@@ -253,6 +290,7 @@ public final class RemoteWorkspace implements AutoCloseable {
      * body and closes the connection; waits up to 2 s for that.
      */
     public void quit() {
+        quitting = true;
         try {
             synchronized (out) {
                 if (!closed) {
@@ -271,8 +309,14 @@ public final class RemoteWorkspace implements AutoCloseable {
         close();
     }
 
+    /** Closes the connection without telling the observer or the {@code lost} callback (the node is told as by a quit). */
     @Override
     public void close() {
+        quitting = true;
+        closeSocket();
+    }
+
+    private void closeSocket() {
         closed = true;
         try {
             socket.close();

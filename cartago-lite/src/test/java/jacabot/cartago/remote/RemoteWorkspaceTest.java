@@ -176,4 +176,20 @@ class RemoteWorkspaceTest {
         assertThrows(IOException.class, () -> Wire.read(new DataInputStream(new ByteArrayInputStream(deep)),
                 UnaryOperator.identity()));
     }
+
+    @Test
+    void aLostNodeEndsTheFocusAndTellsTheClient() throws Exception {
+        var r = new Recorder();
+        var lost = new java.util.concurrent.CountDownLatch(1);
+        RemoteWorkspace w = RemoteWorkspace.join("127.0.0.1", server.port(), "main", "voyager", r, secret, lost::countDown);
+        var id = (ArtifactId) ((OpOutcome.Success) call(w, OpTarget.any(), "lookupArtifact", "counter",
+                new OpFeedbackParam<>())).outputs().get(1);
+        assertTrue(call(w, OpTarget.any(), "focus", id).succeeded());
+        assertTrue(call(w, OpTarget.id(id), "inc").succeeded());
+        server.close();
+        assertTrue(lost.await(10, TimeUnit.SECONDS), "the lost callback ran");
+        assertEquals("ended counter", r.events.get(r.events.size() - 1), r.events.toString());
+        var f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.id(id), "inc"));
+        assertEquals("workspace_closed", f.reasonFunctor());
+    }
 }
