@@ -124,9 +124,11 @@ public class CartagoEnvironment implements Environment {
         if (workspaces.containsKey(name)) {
             throw new IllegalArgumentException("workspace " + name + " already exists");
         }
-        if (workspace.mode() == Workspace.Mode.STEPPED || clock == null) {
-            throw new IllegalArgumentException("only the free-running node makes workspaces (this one is "
-                    + workspace.mode().toString().toLowerCase(java.util.Locale.ROOT) + ")");
+        if (workspace.mode() == Workspace.Mode.STEPPED) {
+            throw new IllegalArgumentException("a stepped node makes no more workspaces");
+        }
+        if (clock == null) {
+            throw new IllegalArgumentException("this node's workspace was made by its host, which makes no more");
         }
         Workspace w = builder(name).build();
         workspaces.put(name, w);
