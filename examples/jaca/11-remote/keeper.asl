@@ -11,5 +11,10 @@
 
 +count(2)
   <- println("the visitor counted to 2");
-     .wait(1000);
+     !visitor_gone;
+     println("the visitor left");
      .stopMAS.
+
+// a joined agent has a body artifact in the workspace until it quits
++!visitor_gone <- lookupArtifact("body_voyager", _); .wait(20); !visitor_gone.
+-!visitor_gone.

@@ -225,7 +225,7 @@ class JacaExamplesTest {
                     "[voyager] beliefs about the tally left: 0"), visitor.lines());
             // the node's console prints what the visitor printed while its current workspace was the node's
             assertEquals(List.of("[keeper] keeping main (local)", "[voyager] hello from another process",
-                    "[keeper] the visitor counted to 2"), node.get(90, java.util.concurrent.TimeUnit.SECONDS).lines());
+                    "[keeper] the visitor counted to 2", "[keeper] the visitor left"), node.get(90, java.util.concurrent.TimeUnit.SECONDS).lines());
         } finally {
             System.clearProperty("jacabot.cartago.port");
             System.clearProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY);
