@@ -197,8 +197,8 @@ public class CartagoEnvironment implements Environment {
         JoinedWorkspace where;
         try {
             where = where(session, act, artifact);
-        } catch (IllegalArgumentException e) {
-            reply.fail(e.getMessage(), "not_joined", List.of(e.getMessage().replaceFirst(".* workspace ", "")));
+        } catch (NotJoined e) {
+            reply.fail(e.getMessage(), "not_joined", List.of(e.workspace));
             return;
         }
         where.execOp(target, act.functor(), args, reply::outcome);
@@ -225,11 +225,22 @@ public class CartagoEnvironment implements Environment {
                 throw notJoined(a.workspace());
             }
         }
-        return session.current().orElseThrow(() -> notJoined("(none: every workspace was quit)"));
+        return session.current().orElseThrow(() -> new NotJoined("", "the agent has quit every workspace"));
     }
 
-    private static IllegalArgumentException notJoined(String workspaceName) {
-        return new IllegalArgumentException("the agent has not joined workspace " + workspaceName);
+    private static NotJoined notJoined(String workspaceName) {
+        return new NotJoined(workspaceName, "the agent has not joined workspace " + workspaceName);
+    }
+
+    /** An action for a workspace the agent is not in. */
+    private static final class NotJoined extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        final String workspace;
+
+        NotJoined(String workspace, String message) {
+            super(message, null, false, false);
+            this.workspace = workspace;
+        }
     }
 
     /** The outcome of one action: binds outputs, or fails with CArtAgO's annotations. */
