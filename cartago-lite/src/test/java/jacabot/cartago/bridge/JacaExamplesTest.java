@@ -143,7 +143,12 @@ class JacaExamplesTest {
         long late = run.lines().stream().filter(l -> l.matches("\\[bidder\\d\\] too late for an offer")).count();
         assertEquals(5, made + late, run.output);
         assertEquals("[announcer] got " + made + " offers", announcer.get(1));
-        assertTrue(made > 0, "seed 0 gives at least one timely bidder: " + run.output);
+        if (made == 0) {
+            // the deadline is wall time: on a machine loaded many times over, every bidder may be late
+            assertEquals(5, late, run.output);
+            assertEquals("[announcer] all bidders done", announcer.get(announcer.size() - 1));
+            return;
+        }
         assertTrue(announcer.get(2).matches("\\[announcer\\] awarded to offer_of_bidder\\d"), run.output);
         assertEquals(1, run.lines().stream().filter(l -> l.endsWith("] I won")).count(), run.output);
         assertEquals(made - 1, run.lines().stream().filter(l -> l.endsWith("] I lost")).count(), run.output);
