@@ -129,28 +129,37 @@ public final class RemoteWorkspace implements AutoCloseable {
             }
         }
         int id = opIds.incrementAndGet();
+        // the whole frame first, so that a value the wire refuses (a string over 1 MiB) sends nothing
+        var bytes = new java.io.ByteArrayOutputStream();
+        try {
+            var f = new DataOutputStream(bytes);
+            f.writeByte(Frames.EXEC);
+            f.writeInt(id);
+            if (target.isAny()) {
+                f.writeByte(Frames.TARGET_ANY);
+            } else if (target.id() != null) {
+                f.writeByte(Frames.TARGET_ID);
+                Wire.write(f, target.id(), this::toNode);
+            } else {
+                f.writeByte(Frames.TARGET_NAME);
+                Wire.writeString(f, target.name());
+            }
+            Wire.writeString(f, operation);
+            f.writeInt(args.length);
+            for (Object a : args) {
+                Wire.write(f, a, this::toNode);
+            }
+        } catch (IOException e) {
+            callback.completed(new OpOutcome.Failure(operation + ": " + e.getMessage(), "bad_argument", List.of()));
+            return;
+        }
         pending.put(id, new Pending(callback, args));
         try {
             synchronized (out) {
                 if (closed) {
                     throw new IOException("closed");
                 }
-                out.writeByte(Frames.EXEC);
-                out.writeInt(id);
-                if (target.isAny()) {
-                    out.writeByte(Frames.TARGET_ANY);
-                } else if (target.id() != null) {
-                    out.writeByte(Frames.TARGET_ID);
-                    Wire.write(out, target.id(), this::toNode);
-                } else {
-                    out.writeByte(Frames.TARGET_NAME);
-                    Wire.writeString(out, target.name());
-                }
-                Wire.writeString(out, operation);
-                out.writeInt(args.length);
-                for (Object a : args) {
-                    Wire.write(out, a, this::toNode);
-                }
+                bytes.writeTo(out);
                 out.flush();
             }
         } catch (IOException e) {

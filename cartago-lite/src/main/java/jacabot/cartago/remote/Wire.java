@@ -102,10 +102,8 @@ final class Wire {
 
     /** @throws NotTransferable when {@code v} holds a value of a shape that may not cross */
     static void check(Object v) {
-        if (v == null || v instanceof Boolean || v instanceof Number && !(v instanceof java.math.BigDecimal
-                || v instanceof java.math.BigInteger || v instanceof java.util.concurrent.atomic.AtomicInteger
-                || v instanceof java.util.concurrent.atomic.AtomicLong)
-                || v instanceof String || v instanceof Character || v instanceof Enum || v instanceof ArtifactId
+        if (v == null || v instanceof Boolean || v instanceof Integer || v instanceof Short || v instanceof Byte
+                || v instanceof Long || v instanceof Double || v instanceof Float || v instanceof String || v instanceof Character || v instanceof Enum || v instanceof ArtifactId
                 || v instanceof AgentId || v instanceof OpFeedbackParam) {
             return;
         }

@@ -237,7 +237,14 @@ public final class WorkspaceServer implements AutoCloseable {
                 for (int i = 0; i < argc; i++) {
                     args[i] = Wire.read(in, UnaryOperator.identity());
                 }
-                workspace.execOp(agent, target, op, args, outcome -> send(frame(o -> outcome(o, opId, outcome))));
+                workspace.execOp(agent, target, op, args, outcome -> {
+                    byte[] frame = frame(o -> outcome(o, opId, outcome));
+                    if (frame == null) {   // e.g. a string over the limit: the agent still gets an answer
+                        frame = frame(o -> outcome(o, opId, new OpOutcome.Failure(
+                                "the operation's result cannot be sent to a remote agent", "not_transferable", List.of())));
+                    }
+                    send(frame);
+                });
             }
         }
 
@@ -287,11 +294,9 @@ public final class WorkspaceServer implements AutoCloseable {
             var bytes = new ByteArrayOutputStream();
             try {
                 body.write(new DataOutputStream(bytes));
-            } catch (Wire.NotTransferable e) {
+            } catch (IOException | Wire.NotTransferable e) {
                 logger.warning(workspace.getName(), "not sent to remote agent " + agent + ": " + e.getMessage(), null);
                 return null;
-            } catch (IOException e) {
-                throw new IllegalStateException("writing to memory", e);
             }
             return bytes.toByteArray();
         }

@@ -46,6 +46,11 @@ class RemoteWorkspaceTest {
         }
 
         @OPERATION
+        void huge(OpFeedbackParam<String> out) {
+            out.set("x".repeat(Wire.MAX_STRING + 1));
+        }
+
+        @OPERATION
         void give(OpFeedbackParam<Object> out) {
             out.set(new Object() {
                 @Override
@@ -125,6 +130,9 @@ class RemoteWorkspaceTest {
         // a result of a shape that may not cross arrives as its text
         assertEquals("an object", ((OpOutcome.Success) call(w, OpTarget.name("faulty"), "give",
                 new OpFeedbackParam<>())).outputs().get(0));
+        var tooBig = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.name("faulty"), "huge",
+                new OpFeedbackParam<>()));
+        assertEquals("not_transferable", tooBig.reasonFunctor());
         assertTrue(call(w, OpTarget.name("counter"), "inc").succeeded());
         w.close();
     }
@@ -135,6 +143,12 @@ class RemoteWorkspaceTest {
         var f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.any(), "inc", new Object()));
         assertEquals("bad_argument", f.reasonFunctor());
         assertEquals(List.of(1), f.reasonArgs());
+        f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.any(), "inc", 1,
+                List.of(new java.util.concurrent.atomic.AtomicLong(3))));
+        assertEquals(List.of(2), f.reasonArgs(), "a Number of another class, inside a list");
+        f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.any(), "inc", "x".repeat(Wire.MAX_STRING + 1)));
+        assertEquals("bad_argument", f.reasonFunctor());
+        assertTrue(call(w, OpTarget.name("counter"), "inc").succeeded(), "nothing half-sent: the session goes on");
         w.close();
     }
 
