@@ -1,7 +1,7 @@
 package jacabot.cartago;
 
 import java.lang.reflect.Array;
-import java.lang.reflect.Method;
+import java.lang.reflect.Executable;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
@@ -32,13 +32,13 @@ final class ArgConverter {
     }
 
     /** {@return whether a method takes {@code count} arguments, counting varargs} */
-    static boolean acceptsArity(Method method, int count) {
+    static boolean acceptsArity(Executable method, int count) {
         int arity = method.getParameterCount();
         return count == arity || method.isVarArgs() && count >= arity - 1;
     }
 
     /** {@return the arguments converted for {@code method}, which accepts their number} */
-    static Object[] convertAll(Method method, Object[] args) throws Mismatch {
+    static Object[] convertAll(Executable method, Object[] args) throws Mismatch {
         Class<?>[] types = method.getParameterTypes();
         Object[] out = new Object[types.length];
         int fixed = method.isVarArgs() ? types.length - 1 : types.length;

@@ -32,15 +32,15 @@ public final class OpTarget {
         return new OpTarget(null, Objects.requireNonNull(name, "name"));
     }
 
-    ArtifactId id() {
+    public ArtifactId id() {
         return id;
     }
 
-    String name() {
+    public String name() {
         return name;
     }
 
-    boolean isAny() {
+    public boolean isAny() {
         return id == null && name == null;
     }
 

@@ -336,6 +336,14 @@ public final class Agent {
         return internalActions.get(functor);
     }
 
+    /**
+     * Adds a library's internal action (JaCa's {@code cartago.*} come with its architecture);
+     * on the agent's thread, before a plan uses it.
+     */
+    public void addInternalAction(String name, InternalAction ia) {
+        internalActions.put(name, ia);
+    }
+
     /** {@return a variable that no other variable equals} */
     public Var freshVar(Var like) {
         return new Var(like.name(), ++freshSerial);

@@ -28,6 +28,11 @@ public class CAgentArch extends LocalArch {
     private final ConcurrentLinkedQueue<java.util.function.Consumer<Agent>> pending = new ConcurrentLinkedQueue<>();
     /** The beliefs the focused properties became, by artifact. */
     private final Map<ArtifactId, List<Literal>> beliefs = new HashMap<>();
+    /** {@code current_wsp(Id, Name, Node)} and {@code joinedWsp(Id, Name, FullName)} as believed now. */
+    private final java.util.Set<Literal> workspaceBeliefs = new java.util.HashSet<>();
+    private final AgentSession session;
+    private final CartagoLibrary library;
+    private boolean libraryInstalled;
 
     public CAgentArch(LocalArch local) {
         super(local.mas(), local.name());
@@ -36,11 +41,17 @@ public class CAgentArch extends LocalArch {
             throw new IllegalStateException("agentArchClass jacabot.cartago.bridge.CAgentArch needs "
                     + "environment: jacabot.cartago.bridge.CartagoEnvironment");
         }
-        cartago.join(local.name(), new Observer());
+        session = cartago.session(local.name(), new Observer());
+        session.setListener(s -> queue(this::syncWorkspaceBeliefs));
+        library = new CartagoLibrary(cartago, session);
     }
 
     @Override
     public void sense(Agent agent) {
+        if (!libraryInstalled) {
+            library.install(agent);
+            libraryInstalled = true;
+        }
         java.util.function.Consumer<Agent> change;
         while ((change = pending.poll()) != null) {
             change.accept(agent);
@@ -55,6 +66,32 @@ public class CAgentArch extends LocalArch {
     private void queue(java.util.function.Consumer<Agent> change) {
         pending.add(change);
         wake();
+    }
+
+    /**
+     * Brings {@code current_wsp(WspId, Name, Node)} (CArtAgO 2's belief, which its examples use) and
+     * {@code joinedWsp(WspId, Name, FullName)} (CArtAgO 3's percept, one per joined workspace) up to date.
+     */
+    private void syncWorkspaceBeliefs(Agent ag) {
+        var now = new java.util.LinkedHashSet<Literal>();
+        session.current().ifPresent(w -> now.add(new Literal("current_wsp", List.of(TermConverter.toTerm(w.id()),
+                new StringTerm(w.id().name()), new StringTerm(w.id().node())), List.of(Literal.SOURCE_PERCEPT), false)));
+        for (JoinedWorkspace w : session.all()) {
+            now.add(new Literal("joinedWsp", List.of(TermConverter.toTerm(w.id()), new StringTerm(w.id().name()),
+                    new StringTerm(w.id().getFullName())), List.of(Literal.SOURCE_PERCEPT), false));
+        }
+        for (var it = workspaceBeliefs.iterator(); it.hasNext();) {
+            Literal l = it.next();
+            if (!now.contains(l)) {
+                ag.removePercept(l);
+                it.remove();
+            }
+        }
+        for (Literal l : now) {
+            if (workspaceBeliefs.add(l)) {
+                ag.addPercept(l);
+            }
+        }
     }
 
     private static List<Term> annots(ArtifactId id, String type) {

@@ -18,12 +18,19 @@ import org.junit.jupiter.api.Test;
  * and print what CArtAgO's description of each scenario says.
  */
 class JacaExamplesTest {
+    private static Path folder(String folder) {
+        return Path.of(System.getProperty("jacabot.rootDir", ".."), "examples", "jaca", folder);
+    }
+
     private static ProjectRun run(String folder) throws Exception {
-        Path dir = Path.of(System.getProperty("jacabot.rootDir", ".."), "examples", "jaca", folder);
         Path mas2j;
-        try (var files = Files.list(dir)) {
+        try (var files = Files.list(folder(folder))) {
             mas2j = files.filter(p -> p.toString().endsWith(".mas2j")).findFirst().orElseThrow();
         }
+        return run(folder, mas2j);
+    }
+
+    private static ProjectRun run(String folder, Path mas2j) throws Exception {
         ProjectRun run = ProjectRun.run(mas2j, 0, 90_000);
         assertTrue(run.stopped, folder + " did not end with .stopMAS:\n" + run.output);
         return run;
@@ -136,7 +143,12 @@ class JacaExamplesTest {
         long late = run.lines().stream().filter(l -> l.matches("\\[bidder\\d\\] too late for an offer")).count();
         assertEquals(5, made + late, run.output);
         assertEquals("[announcer] got " + made + " offers", announcer.get(1));
-        assertTrue(made > 0, "seed 0 gives at least one timely bidder: " + run.output);
+        if (made == 0) {
+            // the deadline is wall time: on a machine loaded many times over, every bidder may be late
+            assertEquals(5, late, run.output);
+            assertEquals("[announcer] all bidders done", announcer.get(announcer.size() - 1));
+            return;
+        }
         assertTrue(announcer.get(2).matches("\\[announcer\\] awarded to offer_of_bidder\\d"), run.output);
         assertEquals(1, run.lines().stream().filter(l -> l.endsWith("] I won")).count(), run.output);
         assertEquals(made - 1, run.lines().stream().filter(l -> l.endsWith("] I lost")).count(), run.output);
@@ -162,5 +174,66 @@ class JacaExamplesTest {
     void socketsWrappedInArtifacts() throws Exception {
         assertEquals(List.of("[receiver] received hello1", "[receiver] received hello2", "[receiver] received hello3"),
                 run("07-messages").lines());
+    }
+
+    @Test
+    void javaObjectsThroughTheCartagoInternalActions() throws Exception {
+        assertEquals(List.of("[binder] total: 9", "[binder] max: 9", "[binder] the clock runs",
+                "[binder] class: class demo.Tally", "[binder] sorted: [1,2,3]",
+                "[binder] ia_failed: cartago.invoke_obj: demo.Tally.reset(-1) threw java.lang.IllegalArgumentException: "
+                        + "a tally never goes below zero",
+                "[binder] ia_failed: cartago.invoke_obj: no public method demo.Tally.multiply for (2)"),
+                run("09-java-binding").lines());
+    }
+
+    @Test
+    void severalWorkspacesEachWithItsOwnBlackboard() throws Exception {
+        assertEquals(List.of("[visitor] starting in main", "[visitor] cannot join: unknown_workspace(\"attic\")",
+                "[visitor] now in kitchen", "[visitor] now in garden", "[visitor] not here: unknown_artifact(\"pot\")",
+                "[visitor] back in kitchen", "[visitor] the note here: left in the kitchen",
+                "[visitor] the pot was stirred 1 time(s)", "[visitor] after quitting: garden",
+                "[visitor] and finally in main again", "[visitor] joined: [\"main\"]"),
+                run("10-workspaces").lines());
+    }
+
+    @Test
+    void anAgentOfAnotherNodeWorksInThisNodesWorkspace() throws Exception {
+        int port;
+        try (var probe = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = probe.getLocalPort();
+        }
+        Path secret = Files.createTempDirectory("jacabot-secret").resolve("workspace-secret");
+        System.setProperty("jacabot.cartago.port", String.valueOf(port));
+        System.setProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY, secret.toString());
+        try {
+            var node = new java.util.concurrent.CompletableFuture<ProjectRun>();
+            var nodeThread = new Thread(() -> {
+                try {
+                    node.complete(run("11-remote", folder("11-remote").resolve("node.mas2j")));
+                } catch (Throwable t) {
+                    node.completeExceptionally(t);
+                }
+            });
+            nodeThread.start();
+            long deadline = System.currentTimeMillis() + 60_000;
+            while (true) {   // until the node listens
+                try (var probe = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), port)) {
+                    break;
+                } catch (java.io.IOException notYet) {
+                    assertTrue(System.currentTimeMillis() < deadline && !node.isDone(), "the node never listened");
+                    Thread.sleep(50);
+                }
+            }
+            ProjectRun visitor = run("11-remote", folder("11-remote").resolve("visitor.mas2j"));
+            assertEquals(List.of("[voyager] no attic there: join_failed(\"attic\",\"localhost\")",
+                    "[voyager] joined main remotely", "[voyager] count is 2", "[voyager] back in main",
+                    "[voyager] beliefs about the tally left: 0"), visitor.lines());
+            // the node's console prints what the visitor printed while its current workspace was the node's
+            assertEquals(List.of("[keeper] keeping main (local)", "[voyager] hello from another process",
+                    "[keeper] the visitor counted to 2", "[keeper] the visitor left"), node.get(90, java.util.concurrent.TimeUnit.SECONDS).lines());
+        } finally {
+            System.clearProperty("jacabot.cartago.port");
+            System.clearProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY);
+        }
     }
 }
