@@ -232,15 +232,16 @@ final class Physics {
             double c = Math.atan2((minZ + maxZ) / 2 - oz, (minX + maxX) / 2 - ox);
             double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
             for (int corner = 0; corner < 4; corner++) {
-                double a = Math.IEEEremainder(Math.atan2(((corner & 1) == 0 ? minZ : maxZ) - oz,
-                        ((corner & 2) == 0 ? minX : maxX) - ox) - c, 2 * Math.PI);
+                double a = Math.atan2(((corner & 1) == 0 ? minZ : maxZ) - oz, ((corner & 2) == 0 ? minX : maxX) - ox) - c;
+                a = a > Math.PI ? a - 2 * Math.PI : a < -Math.PI ? a + 2 * Math.PI : a; // within a half turn of c
                 lo = Math.min(lo, a);
                 hi = Math.max(hi, a);
             }
             lo -= ANGLE_MARGIN;
             hi += ANGLE_MARGIN;
             for (int k = 0; k < n; k++) {
-                double a = Math.IEEEremainder(bearing[k] - c, 2 * Math.PI);
+                double a = bearing[k] - c;
+                a -= 2 * Math.PI * Math.rint(a / (2 * Math.PI)); // about [-pi, pi]; the test below also tries a +- 2 pi
                 if (a >= lo && a <= hi || a + 2 * Math.PI <= hi || a - 2 * Math.PI >= lo) {
                     reach.get(k).add(o);
                 }
