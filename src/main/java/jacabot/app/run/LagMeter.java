@@ -100,6 +100,8 @@ public final class LagMeter implements AutoCloseable {
     private long agentLateMs;
     private long anchorWallNs, anchorSimMs;
     private double anchorSpeed = Double.NaN;
+    private long startSimMs = -1;
+    private boolean moving;
     private volatile Reading last;
     private Episode open;
     private java.util.concurrent.ScheduledExecutorService timer;
@@ -181,6 +183,13 @@ public final class LagMeter implements AutoCloseable {
             long now = wallNanos.getAsLong();
             long sim = world.timeMs();
             double speed = runner.speedFactor();
+            if (!moving) {
+                // until the world first moves (the controller is still connecting, the agent starting)
+                // there is no schedule to keep, and the first move starts it
+                moving = startSimMs >= 0 && sim > startSimMs;
+                startSimMs = startSimMs < 0 ? sim : startSimMs;
+                anchorSpeed = Double.NaN; // so the schedule is anchored below, at the first move too
+            }
             boolean paced = runner.mode() == SimRunner.Mode.REAL_TIME && !runner.isPaused();
             long behind = 0;
             if (!paced || speed != anchorSpeed) {

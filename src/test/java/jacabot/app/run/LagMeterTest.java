@@ -73,6 +73,27 @@ class LagMeterTest {
     }
 
     @Test
+    void aWorldWaitingForItsControllerIsNotLaggingYet() throws Exception {
+        SimWorld w = world();
+        var runner = new SimRunner(w, null);
+        runner.setSpeedFactor(16);
+        LagMeter m = meter(runner);
+        m.sample();
+        wall[0] += 5_000_000_000L; // the controller connects, the agent starts: the world stays at 0
+        assertFalse(m.sample().lagging());
+        wall[0] += 100_000_000L;
+        advance(w, 40); // the first step: the schedule starts here
+        assertFalse(m.sample().lagging());
+        wall[0] += 1_000_000_000L;
+        advance(w, 16_000);
+        assertFalse(m.sample().lagging(), m.last().toString());
+        wall[0] += 1_000_000_000L;
+        advance(w, 14_000);
+        assertEquals(2_000, m.sample().worldBehindMs(), "from then on, behind is behind");
+        assertEquals(List.of("start 2000 0"), heard);
+    }
+
+    @Test
     void pausedOrFastIsNotLagging() throws Exception {
         SimWorld w = world();
         var runner = new SimRunner(w, null);
