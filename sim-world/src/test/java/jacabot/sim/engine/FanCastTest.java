@@ -31,7 +31,7 @@ class FanCastTest {
                 physics.addCylinder(new CylinderSpec("c" + i, x, z, 0.01 + rnd.nextDouble() * 0.03, 0.05, 0.1, new Rgb(255, 0, 0)));
             } else {
                 physics.addBox(new BoxSpec("b" + i, x, z, 0.02 + rnd.nextDouble() * 0.2, 0.02 + rnd.nextDouble() * 0.2,
-                        rnd.nextDouble() * 360, 0.05, i % 2 == 0, 0.2, new Rgb(0, 0, 255)), i % 2 == 0 ? ObjectKind.BOX : ObjectKind.BOX);
+                        rnd.nextDouble() * 360, 0.05, i % 2 == 0, 0.2, new Rgb(0, 0, 255)), ObjectKind.BOX);
             }
         }
         SimObject robot = physics.addRobot("k", 0.035, 0.05, new Rgb(0, 255, 0), 0, 0, 0);
