@@ -17,6 +17,7 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
@@ -337,6 +338,7 @@ final class ExperimentCommand implements Callable<Integer> {
         var tap = jacabot.app.replay.RealTimeTap.open(simWorld, outDir, experiment, sourceName);
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
         long start = System.nanoTime();
+        List<jacabot.app.run.LagMeter.Episode> lags = List.of();
         try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, log.agents(),
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
@@ -351,10 +353,11 @@ final class ExperimentCommand implements Callable<Integer> {
                 }
             }
             AutoCloseable sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
+            run.lag().addListener(tap.lags()).addListener(jacabot.app.run.LagMeter.firstWarning(log::warn));
             run.start();
             var closed = new java.util.concurrent.CountDownLatch(1);
             javax.swing.SwingUtilities.invokeLater(() -> {
-                javax.swing.JFrame frame = jacabot.sim.viewer.WorldViewer.open(run.runner());
+                javax.swing.JFrame frame = jacabot.sim.viewer.WorldViewer.open(run.runner(), run.lag()::status);
                 frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
                 frame.addWindowListener(new java.awt.event.WindowAdapter() {
                     @Override
@@ -368,8 +371,11 @@ final class ExperimentCommand implements Callable<Integer> {
                     break;
                 }
             }
+            run.lag().close(); // an episode still open ends here, and is written with the next step
+            tap.awaitLagNotes(1000);
             run.runner().stop();
             sampling.close();
+            lags = run.lag().episodes();
             var failure = tap.closeLog();
             if (failure != null) {
                 log.warn("the step log " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " stopped early: " + failure.getMessage());
@@ -388,9 +394,21 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
         recorder.detach();
         report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1);
+        if (!lags.isEmpty()) {
+            var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
+            lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));
+            text.toString().lines().forEach(log::result);
+            Files.writeString(outDir.resolve("summary.txt"), text, java.nio.file.StandardOpenOption.APPEND);
+        }
         log.result("Step log: " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " (jacabot replay " + outDir + ")");
         jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
         return 0;
+    }
+
+    static String lagSummary(List<jacabot.app.run.LagMeter.Episode> lags, double simulatedSeconds) {
+        long ms = lags.stream().mapToLong(e -> e.endMs() - e.startMs()).sum();
+        return String.format(java.util.Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
+                lags.size(), lags.size() == 1 ? "" : "s", ms / 1000.0, simulatedSeconds);
     }
 
     static double parseDuration(String text) {

@@ -179,13 +179,22 @@ final class SweepCommand implements Callable<Integer> {
         Sweep.Outcomes result = sweep.run(jobList);
         List<RunOutcome> runs = new ArrayList<>(result.runs());
         runs.sort(Sweep.ORDER);
-        String throughput = String.format(Locale.ROOT, "%.2f simulated minutes per wall-clock second (%d runs, %d at once, %.0f s).",
-                result.simulatedMinutesPerSecond(), runs.size(), jobs, result.wallSeconds());
+        String throughput = String.format(Locale.ROOT, "%.2f simulated minutes per wall-clock second (%d runs, %d at once, %.0f s)",
+                result.simulatedMinutesPerSecond(), runs.size(), jobs, result.wallSeconds())
+                + (Double.isNaN(result.cpuSeconds()) ? "" : String.format(Locale.ROOT,
+                        "; %.2f per CPU-second (%.0f s of CPU on %d cores)", result.simulatedMinutesPerCpuSecond(),
+                        result.cpuSeconds(), Runtime.getRuntime().availableProcessors()))
+                + (Double.isNaN(result.loadAtStart()) ? "" : String.format(Locale.ROOT, "; load average %.1f at the start",
+                        result.loadAtStart()))
+                + ".";
         Files.writeString(dir.resolve("runs.csv"), SweepReport.csv(runs), StandardCharsets.UTF_8);
         Files.writeString(dir.resolve("report.md"), SweepReport.markdown(runs, throughput), StandardCharsets.UTF_8);
         Properties meta = new Properties();
         meta.setProperty("wall_s", String.format(Locale.ROOT, "%.3f", result.wallSeconds()));
         meta.setProperty("jobs", Integer.toString(jobs));
+        if (!Double.isNaN(result.cpuSeconds())) {
+            meta.setProperty("cpu_s", String.format(Locale.ROOT, "%.3f", result.cpuSeconds()));
+        }
         meta.setProperty("shard", shardIndex + "/" + shards);
         try (var w = Files.newBufferedWriter(dir.resolve("sweep.properties"), StandardCharsets.UTF_8)) {
             meta.store(w, "jacabot sweep");

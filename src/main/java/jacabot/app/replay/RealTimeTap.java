@@ -31,6 +31,7 @@ public final class RealTimeTap implements Closeable {
     private long timeMs = -1;
     private List<String> readings = List.of();
     private final List<String> applied = new ArrayList<>();
+    private final java.util.Queue<StepLog.Lag> lags = new java.util.concurrent.ConcurrentLinkedQueue<>();
     private IOException failure;
     private boolean closed;
 
@@ -51,6 +52,21 @@ public final class RealTimeTap implements Closeable {
     /** {@return where the agent's sampled minds go (on the agent's thread)} */
     public Consumer<MindState> minds() {
         return sampled::set;
+    }
+
+    /** {@return where the run's lag episodes go: each start and end is written with the next step (any thread)} */
+    public jacabot.app.run.LagMeter.Listener lags() {
+        return new jacabot.app.run.LagMeter.Listener() {
+            @Override
+            public void started(jacabot.app.run.LagMeter.Reading r) {
+                lags.add(new StepLog.Lag("start", r.worldBehindMs(), r.agentLateMs(), r.requested(), r.achieved()));
+            }
+
+            @Override
+            public void ended(jacabot.app.run.LagMeter.Episode e) {
+                lags.add(new StepLog.Lag("end", e.worstWorldBehindMs(), e.worstAgentLateMs(), e.requested(), e.lowestAchieved()));
+            }
+        };
     }
 
     /** {@return the controller's event log sink (on the simulation thread)} */
@@ -93,10 +109,25 @@ public final class RealTimeTap implements Closeable {
             applied.clear();
         }
         try {
-            log.stepText(timeMs, body, commands, readings, sampled.getAndSet(null), world.supervisor().objects());
+            // two notes in one step (an episode shorter than a step cannot be: the meter looks every 250 ms)
+            StepLog.Lag lag = lags.poll();
+            log.stepText(timeMs, body, commands, readings, sampled.getAndSet(null), world.supervisor().objects(), lag);
         } catch (UncheckedIOException e) {
             failure = e.getCause(); // a full disk: the run goes on, the log stops
         }
+    }
+
+    /**
+     * Waits (at most {@code timeoutMs}) until the lag notes given so far are written with a step:
+     * call after closing the {@link jacabot.app.run.LagMeter} and before stopping the world, so that
+     * an episode open at the end is recorded with its end. {@return whether they were}
+     */
+    public boolean awaitLagNotes(long timeoutMs) throws InterruptedException {
+        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (!lags.isEmpty() && failure == null && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        return lags.isEmpty();
     }
 
     /** Closes the log; {@return the error that stopped it early, or null} */

@@ -77,9 +77,20 @@ public final class StepLog {
         }
     }
 
-    /** One control step, as read back. {@code mind} holds only what changed. */
+    /** One control step, as read back. {@code mind} holds only what changed; {@code lag} is null but where a lag episode starts or ends. */
     public record Step(long timeMs, Body body, List<String> commands, List<String> readings, Map<String, Moved> moved,
-            MindDelta mind) {
+            MindDelta mind, Lag lag) {
+    }
+
+    /**
+     * A real-time run's lag episode starting ({@code "start"}) or ending ({@code "end"}) at a step, in
+     * simulated ms: how far the world was behind real time, how late the agent was, the speed factor
+     * asked for and the one achieved ({@link jacabot.app.run.LagMeter}). Lockstep runs never lag.
+     */
+    public record Lag(String state, long worldBehindMs, long agentLateMs, double requested, double achieved) {
+        public Lag {
+            achieved = Double.isFinite(achieved) ? Math.round(achieved * 10) / 10.0 : 0;
+        }
     }
 
     /** The agent's changes in one step; null lists mean "unchanged". */
@@ -127,6 +138,12 @@ public final class StepLog {
          */
         public void stepText(long timeMs, Body body, List<String> commands, List<String> readings, MindState mind,
                 List<ObjectState> world) {
+            stepText(timeMs, body, commands, readings, mind, world, null);
+        }
+
+        /** As {@link #stepText(long, Body, List, List, MindState, List)}, with a lag episode's start or end (or null). */
+        public void stepText(long timeMs, Body body, List<String> commands, List<String> readings, MindState mind,
+                List<ObjectState> world, Lag lag) {
             ObjectNode n = JSON.createObjectNode();
             n.put("t", timeMs);
             n.set("body", JSON.valueToTree(body));
@@ -160,6 +177,9 @@ public final class StepLog {
                         || d.events() != null) {
                     n.set("mind", JSON.valueToTree(d));
                 }
+            }
+            if (lag != null) {
+                n.set("lag", JSON.valueToTree(lag));
             }
             line(n);
         }
@@ -273,7 +293,9 @@ public final class StepLog {
                 moved.put(e.getKey(), JSON.treeToValue(e.getValue(), Moved.class));
             }
             MindDelta mind = n.has("mind") ? JSON.treeToValue(n.get("mind"), MindDelta.class) : null;
-            return new Step(n.get("t").asLong(), JSON.treeToValue(n.get("body"), Body.class), commands, readings, moved, mind);
+            Lag lag = n.has("lag") ? JSON.treeToValue(n.get("lag"), Lag.class) : null;
+            return new Step(n.get("t").asLong(), JSON.treeToValue(n.get("body"), Body.class), commands, readings, moved, mind,
+                    lag);
         }
 
         @Override

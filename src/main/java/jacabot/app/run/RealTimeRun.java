@@ -31,6 +31,7 @@ public final class RealTimeRun implements AutoCloseable {
     private final RobotController controller;
     private final MiddlewareArtifact middleware;
     private Thread agents;
+    private final LagMeter lag;
 
     /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
     public static final long STALL_MS = 100;
@@ -70,6 +71,7 @@ public final class RealTimeRun implements AutoCloseable {
         var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         agent.setPlanListener((event, plan) -> {
+            timeReaction(event);
             if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l
                     && l.getAnnot("percept_type") != null) {
                 var reading = middleware.takeTrigger();
@@ -83,6 +85,20 @@ public final class RealTimeRun implements AutoCloseable {
         controller = new RobotController(world, ControllerConfig.defaults().withAddress("127.0.0.1", boundPort)
                 .withSpeedFactor(speed).withLog(line -> console.println("[controller] " + line))
                 .withEventLog(controllerEvents));
+        lag = new LagMeter(controller.runner());
+        for (String name : mas.agentNames()) {
+            lag.watch(mas.agent(name));
+        }
+    }
+
+    /** On the agent's thread: a plan was chosen for {@code event} (the meter is made before the agent runs). */
+    private void timeReaction(jacabot.agent.semantics.Event event) {
+        lag.planSelected(event);
+    }
+
+    /** {@return how far the run falls behind real time (sampling from {@link #start()} on)} */
+    public LagMeter lag() {
+        return lag;
     }
 
     public SimRunner runner() {
@@ -115,10 +131,12 @@ public final class RealTimeRun implements AutoCloseable {
         agents.setDaemon(true);
         agents.start();
         controller.start();
+        lag.start();
     }
 
     @Override
     public void close() {
+        lag.close();
         controller.close();
         mas.stop();
         workspace.close();

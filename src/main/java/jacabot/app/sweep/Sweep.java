@@ -34,13 +34,38 @@ public final class Sweep {
     };
     private final Map<jacabot.robot.Experiment, String[]> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
 
-    /** What a sweep leaves: every outcome (in job order) and the wall-clock time it took. */
-    public record Outcomes(List<RunOutcome> runs, double wallSeconds, int jobs) {
+    /**
+     * What a sweep leaves: every outcome (in job order), the wall-clock time it took, the CPU time
+     * the whole JVM used meanwhile (NaN where the JVM does not tell) and the machine's load average
+     * at the start (NaN where unknown). On a shared machine the CPU figure is the steadier one: the
+     * wall clock also counts the other users' turns.
+     */
+    public record Outcomes(List<RunOutcome> runs, double wallSeconds, int jobs, double cpuSeconds, double loadAtStart) {
+        public Outcomes(List<RunOutcome> runs, double wallSeconds, int jobs) {
+            this(runs, wallSeconds, jobs, Double.NaN, Double.NaN);
+        }
+
         /** {@return simulated minutes per wall-clock second, all runs together} */
         public double simulatedMinutesPerSecond() {
             double sim = runs.stream().mapToDouble(RunOutcome::simulated).sum();
             return wallSeconds <= 0 ? 0 : sim / 60 / wallSeconds;
         }
+
+        /** {@return simulated minutes per second of CPU time (all the JVM's threads), NaN if unknown} */
+        public double simulatedMinutesPerCpuSecond() {
+            double sim = runs.stream().mapToDouble(RunOutcome::simulated).sum();
+            return cpuSeconds > 0 ? sim / 60 / cpuSeconds : Double.NaN;
+        }
+    }
+
+    /** {@return the CPU time of this JVM so far in seconds, NaN when it cannot be read} */
+    static double processCpuSeconds() {
+        var os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        if (os instanceof com.sun.management.OperatingSystemMXBean sun) {
+            long ns = sun.getProcessCpuTime();
+            return ns < 0 ? Double.NaN : ns / 1e9;
+        }
+        return Double.NaN;
     }
 
     /**
@@ -78,6 +103,8 @@ public final class Sweep {
     /** Runs the jobs; {@return the outcomes in job order} */
     public Outcomes run(List<SweepJob> list) throws InterruptedException {
         long start = System.nanoTime();
+        double cpuStart = processCpuSeconds();
+        double load = java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
         AtomicInteger threadNo = new AtomicInteger();
         ExecutorService pool = Executors.newFixedThreadPool(jobs, r -> {
             Thread t = new Thread(r, "sweep-" + threadNo.incrementAndGet());
@@ -166,7 +193,7 @@ public final class Sweep {
         synchronized (outcomes) {
             all = new ArrayList<>(List.of(outcomes));
         }
-        return new Outcomes(all, (System.nanoTime() - start) / 1e9, jobs);
+        return new Outcomes(all, (System.nanoTime() - start) / 1e9, jobs, processCpuSeconds() - cpuStart, load < 0 ? Double.NaN : load);
     }
 
     private static int count(RunOutcome[] outcomes) {

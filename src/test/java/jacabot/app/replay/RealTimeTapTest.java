@@ -92,4 +92,62 @@ class RealTimeTapTest {
         assertTrue(withCommands > 0, "the agent's commands, as the controller applied them");
         assertTrue(withMind > 0, "the agent's mind, from its samples");
     }
+
+    @Test
+    void aRunThatCannotKeepUpSaysSoAndRecordsItsLag(@TempDir Path out) throws Exception {
+        SimWorld world = SimWorld.of(WorldFileReader.read(RunTapTest.ROOT.resolve(RunTapTest.NAVIGATION.worldFile())));
+        String source;
+        try (InputStream in = RealTimeTapTest.class.getResourceAsStream(RunTapTest.NAVIGATION.agentResource())) {
+            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+        var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
+        var statuses = new java.util.concurrent.CopyOnWriteArrayList<String>();
+        var console = new java.io.ByteArrayOutputStream();
+        var warnings = new java.io.ByteArrayOutputStream();
+        // x100000: a simulated hour per 36 wall-clock ms, more than any machine steps a world over a socket
+        try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, "navigation.asl", 3, 100_000,
+                new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
+            run.lag().addListener(tap.lags()).addListener(new jacabot.app.run.LagMeter.Listener() {
+                @Override
+                public void started(jacabot.app.run.LagMeter.Reading r) {
+                    statuses.add(jacabot.app.run.LagMeter.status(r));
+                }
+
+                @Override
+                public void ended(jacabot.app.run.LagMeter.Episode e) {
+                }
+            });
+            run.lag().addListener(jacabot.app.run.LagMeter.firstWarning(jacabot.app.console.ConsoleLog.to(
+                    new PrintStream(warnings, true, StandardCharsets.UTF_8), jacabot.app.console.Verbosity.NORMAL)::warn));
+            run.start();
+            run.runner().start();
+            long deadline = System.nanoTime() + 60_000_000_000L;
+            while (run.lag().episodes().isEmpty() && System.nanoTime() < deadline) {
+                Thread.sleep(50);
+            }
+            Thread.sleep(600); // two more looks: still lagging, no second warning
+            assertTrue(run.lag().status().startsWith("LAG: world "), "the status line says so: " + run.lag().status());
+            run.lag().close();
+            assertTrue(tap.awaitLagNotes(5000), "the episode's end is written with a step");
+            run.runner().stop();
+            assertNull(tap.closeLog());
+        }
+        assertTrue(!statuses.isEmpty() && statuses.get(0).matches("LAG: world [0-9.]+ s behind real time \\(×100000 requested.*"),
+                statuses.toString());
+        String warned = warnings.toString(StandardCharsets.UTF_8);
+        assertEquals(1, warned.lines().count(), "one warning, not a flood: " + warned);
+        assertTrue(warned.startsWith("warning: at t=") && warned.contains("s behind real time (x100000 requested"), warned);
+        var lags = new java.util.ArrayList<StepLog.Lag>();
+        try (var reader = new StepLog.Reader(out.resolve(StepLog.FILE))) {
+            for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
+                if (s.lag() != null) {
+                    lags.add(s.lag());
+                }
+            }
+        }
+        assertEquals(List.of("start", "end"), lags.stream().map(StepLog.Lag::state).collect(java.util.stream.Collectors.toList()),
+                lags.toString());
+        assertTrue(lags.get(1).worldBehindMs() > jacabot.app.run.LagMeter.THRESHOLD_MS && lags.get(1).requested() == 100_000,
+                lags.toString());
+    }
 }

@@ -45,5 +45,10 @@ class SweepConcurrencyTest {
         }
         assertEquals(2, same, "both copies of the run finished");
         assertTrue(outcomes.simulatedMinutesPerSecond() > 0);
+        // the CPU figure (HotSpot tells it): four runs of real work cost CPU time, and less than all cores' wall time
+        assertTrue(outcomes.cpuSeconds() > 0.1 && outcomes.cpuSeconds() < outcomes.wallSeconds()
+                * Runtime.getRuntime().availableProcessors() + 1, outcomes.cpuSeconds() + " s of CPU in " + outcomes.wallSeconds());
+        assertEquals(outcomes.runs().stream().mapToDouble(RunOutcome::simulated).sum() / 60 / outcomes.cpuSeconds(),
+                outcomes.simulatedMinutesPerCpuSecond(), 1e-9);
     }
 }

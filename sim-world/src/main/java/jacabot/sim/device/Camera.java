@@ -119,9 +119,13 @@ public final class Camera extends Sensor {
         int[] img = new int[width * height];
         Arrays.fill(img, background.packed());
         Pose p = mount.get();
+        double[] bearings = new double[width];
         for (int c = 0; c < width; c++) {
-            double bearing = p.heading() - fov / 2 + (c + 0.5) * fov / width;
-            List<RayHit> hits = caster.castAll(p.position(), bearing, range);
+            bearings[c] = p.heading() - fov / 2 + (c + 0.5) * fov / width;
+        }
+        List<List<RayHit>> fan = caster.castFan(p.position(), bearings, range); // one broad phase for all columns
+        for (int c = 0; c < width; c++) {
+            List<RayHit> hits = fan.get(c);
             for (int r = 0; r < height; r++) {
                 img[r * width + c] = pixel(hits, rowSlopes[r]).packed();
             }

@@ -1,6 +1,7 @@
 package jacabot.sim.device;
 
 import jacabot.sim.geom.Pose;
+import java.util.List;
 import java.util.Random;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -98,10 +99,17 @@ public final class DistanceSensor extends Sensor {
         Pose p = mount.get();
         double range = table.maxInput();
         double sum = 0, noiseSum = 0, weights = 0;
+        double[] bearings = new double[rays];
+        for (int i = 0; i < rays; i++) {
+            bearings[i] = p.heading() + (rays == 1 ? 0 : -aperture / 2 + i * aperture / (rays - 1));
+        }
+        // the rays share one broad phase: the few objects this close are found once, not per ray
+        List<List<RayHit>> fan = rays == 1 ? List.of(caster.castAll(p.position(), bearings[0], range))
+                : caster.castFan(p.position(), bearings, range);
         for (int i = 0; i < rays; i++) {
             double angle = rays == 1 ? 0 : -aperture / 2 + i * aperture / (rays - 1);
             double w = rays == 1 ? 1 : Math.exp(-(angle / aperture) * (angle / aperture));
-            RayHit hit = caster.cast(p.position(), p.heading() + angle, range);
+            RayHit hit = fan.get(i).isEmpty() ? null : fan.get(i).get(0);
             double d = hit == null ? range : hit.distance();
             double reflectance = hit == null ? 1.0 : hit.color().red() / 255.0;
             sum += w * reflectance * table.output(d);

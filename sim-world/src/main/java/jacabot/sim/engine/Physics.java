@@ -38,6 +38,9 @@ final class Physics {
     /** How much the ray filter grows each bounding box, in metres: far above GJK's tolerance. */
     private static final double AABB_MARGIN = 1e-3;
 
+    /** Radians added on each side of an object's angle in a fan's broad phase: far above rounding. */
+    private static final double ANGLE_MARGIN = 1e-7;
+
     private final World<Body> world = new World<>();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
 
@@ -136,39 +139,126 @@ final class Physics {
 
     /** A ray caster that ignores one robot and every carried object. */
     RayCaster rayCaster(SimObject self) {
-        return (origin, bearingDeg, maxRange) -> castAll(self, origin, bearingDeg, maxRange);
+        return new RayCaster() {
+            @Override
+            public List<RayHit> castAll(Vec2 origin, double bearingDeg, double maxRange) {
+                return Physics.this.castAll(self, origin, bearingDeg, maxRange);
+            }
+
+            @Override
+            public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange) {
+                return Physics.this.castFan(self, origin, bearingsDeg, maxRange);
+            }
+        };
     }
 
     /**
      * Rays start {@link #BACKOFF} behind their origin (inside the robot, which is ignored), so that an
      * object pressed against the sensor, slightly penetrating, is still seen, at distance 0.
      */
-    private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
+    private static Ray ray(Vec2 origin, double bearingDeg) {
         double r = Math.toRadians(bearingDeg);
-        Ray ray = new Ray(new Vector2(origin.x() - BACKOFF * Math.cos(r), origin.z() - BACKOFF * Math.sin(r)), r);
+        return new Ray(new Vector2(origin.x() - BACKOFF * Math.cos(r), origin.z() - BACKOFF * Math.sin(r)), r);
+    }
+
+    private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
+        Ray ray = ray(origin, bearingDeg);
         Raycast raycast = new Raycast();
         List<RayHit> hits = new ArrayList<>(4);
         for (SimObject o : objects.values()) {
-            if (o == self || o.carriedBy != null) {
-                continue;
-            }
-            if (!mayCross(o.bounds(), ray, maxRange + BACKOFF)) {
-                continue;
-            }
-            double best = Double.POSITIVE_INFINITY;
-            for (BodyFixture f : o.body.getFixtures()) {
-                raycast.clear();
-                if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
-                        && raycast.getDistance() - BACKOFF < best) {
-                    best = Math.max(0, raycast.getDistance() - BACKOFF);
-                }
-            }
-            if (best <= maxRange) {
-                hits.add(new RayHit(best, o.color, o.height, o.id));
+            if (o != self && o.carriedBy == null) {
+                cast(o, ray, maxRange, raycast, hits);
             }
         }
         hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable: ties keep insertion order
         return hits;
+    }
+
+    /** Casts one ray against one object; a hit within range joins {@code hits}. */
+    private void cast(SimObject o, Ray ray, double maxRange, Raycast raycast, List<RayHit> hits) {
+        if (!mayCross(o.bounds(), ray, maxRange + BACKOFF)) {
+            return;
+        }
+        double best = Double.POSITIVE_INFINITY;
+        for (BodyFixture f : o.body.getFixtures()) {
+            raycast.clear();
+            if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
+                    && raycast.getDistance() - BACKOFF < best) {
+                best = Math.max(0, raycast.getDistance() - BACKOFF);
+            }
+        }
+        if (best <= maxRange) {
+            hits.add(new RayHit(best, o.color, o.height, o.id));
+        }
+    }
+
+    /**
+     * A camera's rays, each with the result {@link #castAll} gives it, with a broad phase shared by
+     * the fan: each object's box (grown by twice the ray filter's margin) is seen from the origin
+     * under an angle, and a ray is tried only against the objects whose angle holds its bearing, in
+     * the world's order. The filter is conservative (every point of a ray lies within
+     * {@code maxRange + BACKOFF} of the origin, and its part behind the origin within {@code BACKOFF}),
+     * so the rays meet the same objects in the same order as one by one: the image is the same, for
+     * about a tenth of the casts (64 columns × every object before).
+     */
+    private List<List<RayHit>> castFan(SimObject self, Vec2 origin, double[] bearingsDeg, double maxRange) {
+        int n = bearingsDeg.length;
+        double ox = origin.x(), oz = origin.z();
+        double[] bearing = new double[n];
+        for (int k = 0; k < n; k++) {
+            bearing[k] = Math.toRadians(bearingsDeg[k]);
+        }
+        List<List<SimObject>> reach = new ArrayList<>(n);
+        for (int k = 0; k < n; k++) {
+            reach.add(new ArrayList<>());
+        }
+        double grow = 2 * AABB_MARGIN;
+        for (SimObject o : objects.values()) {
+            if (o == self || o.carriedBy != null) {
+                continue;
+            }
+            AABB b = o.bounds();
+            double minX = b.getMinX() - grow, maxX = b.getMaxX() + grow, minZ = b.getMinY() - grow, maxZ = b.getMaxY() + grow;
+            double dx = Math.max(0, Math.max(minX - ox, ox - maxX)), dz = Math.max(0, Math.max(minZ - oz, oz - maxZ));
+            double d = Math.sqrt(dx * dx + dz * dz);
+            if (d > maxRange + BACKOFF) {
+                continue; // out of every ray's reach
+            }
+            if (d <= BACKOFF + grow) {
+                reach.forEach(r -> r.add(o)); // at the origin, or behind it within the back-off: every ray
+                continue;
+            }
+            // the origin is outside the box: the directions to it span less than a half turn around its centre's
+            double c = Math.atan2((minZ + maxZ) / 2 - oz, (minX + maxX) / 2 - ox);
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (int corner = 0; corner < 4; corner++) {
+                double a = Math.atan2(((corner & 1) == 0 ? minZ : maxZ) - oz, ((corner & 2) == 0 ? minX : maxX) - ox) - c;
+                a = a > Math.PI ? a - 2 * Math.PI : a < -Math.PI ? a + 2 * Math.PI : a; // within a half turn of c
+                lo = Math.min(lo, a);
+                hi = Math.max(hi, a);
+            }
+            lo -= ANGLE_MARGIN;
+            hi += ANGLE_MARGIN;
+            for (int k = 0; k < n; k++) {
+                double a = bearing[k] - c;
+                a -= 2 * Math.PI * Math.rint(a / (2 * Math.PI)); // about [-pi, pi]; the test below also tries a +- 2 pi
+                if (a >= lo && a <= hi || a + 2 * Math.PI <= hi || a - 2 * Math.PI >= lo) {
+                    reach.get(k).add(o);
+                }
+            }
+        }
+        List<List<RayHit>> fan = new ArrayList<>(n);
+        Raycast raycast = new Raycast();
+        for (int k = 0; k < n; k++) {
+            Ray ray = ray(origin, bearingsDeg[k]);
+            List<RayHit> hits = new ArrayList<>(4);
+            for (SimObject o : reach.get(k)) {
+                cast(o, ray, maxRange, raycast, hits);
+            }
+            hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable, as castAll's
+            fan.add(hits);
+        }
+        return fan;
     }
 
     /**

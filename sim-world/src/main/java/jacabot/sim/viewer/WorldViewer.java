@@ -29,11 +29,18 @@ public final class WorldViewer extends JPanel {
     private static final long serialVersionUID = 1L;
 
     private final transient SimRunner runner;
+    private final transient java.util.function.Supplier<String> note;
     private transient WorldSnapshot snapshot;
     private String dragged;
 
     public WorldViewer(SimRunner runner) {
+        this(runner, () -> "");
+    }
+
+    /** @param note more words for the status line, e.g. how far the run lags ("" for none) */
+    public WorldViewer(SimRunner runner, java.util.function.Supplier<String> note) {
         this.runner = runner;
+        this.note = note;
         this.snapshot = runner.world().snapshot();
         setPreferredSize(new Dimension(760, 820));
         MouseAdapter mouse = new MouseAdapter() {
@@ -93,11 +100,30 @@ public final class WorldViewer extends JPanel {
         String status = String.format(Locale.ROOT, "%s%s ×%.2f, measured ×%.1f", runner.isPaused() ? "paused, " : "",
                 runner.mode().name().toLowerCase(Locale.ROOT), runner.speedFactor(), runner.realTimeFactor());
         WorldRenderer.paint((Graphics2D) g, snapshot, getWidth(), getHeight(), status);
+        String more = note.get();
+        if (more != null && !more.isEmpty()) {
+            // in red on the footer's first row, right of the camera strip: seen, and never cut off the status line
+            Graphics2D g2 = (Graphics2D) g;
+            g2.setColor(new java.awt.Color(255, 90, 80));
+            var font = new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.BOLD, 12);
+            int room = getWidth() - 290;
+            if (g2.getFontMetrics(font).stringWidth(more) > room) {
+                font = font.deriveFont(10f);
+            }
+            g2.setFont(font);
+            int w = g2.getFontMetrics().stringWidth(more);
+            g2.drawString(more, Math.max(280, getWidth() - 10 - w), getHeight() - WorldRenderer.FOOTER + 18);
+        }
     }
 
     /** Opens a window on the runner's world and starts the runner. */
     public static JFrame open(SimRunner runner) {
-        WorldViewer viewer = new WorldViewer(runner);
+        return open(runner, () -> "");
+    }
+
+    /** Opens a window on the runner's world, {@code note} added to its status line, and starts the runner. */
+    public static JFrame open(SimRunner runner, java.util.function.Supplier<String> note) {
+        WorldViewer viewer = new WorldViewer(runner, note);
         JFrame frame = new JFrame("jacabot · " + runner.world().name());
         JPanel buttons = new JPanel();
         JButton pause = new JButton("pause");
