@@ -19,7 +19,8 @@ option       : ID '=' ( ID | NUMBER | STRING ) ;
 archClass    : kind=( 'agentArchClass' | 'agentClass' | 'beliefBaseClass' ) className arguments? ;
 className    : ID ( '.' ID )* ;
 arguments    : '(' ( argument ( ',' argument )* )? ')' ;
-argument     : NUMBER | STRING | className | '-' NUMBER ;
+// a structure, as in CArtAgO's ("standalone", protocol(lipermi)), reaches the class as its text
+argument     : NUMBER | STRING | className arguments? | '-' NUMBER ;
 
 ID      : [a-zA-Z_] [a-zA-Z0-9_\-]* ;
 NUMBER  : [0-9]+ ( '.' [0-9]+ )? ;

@@ -203,6 +203,8 @@ final class BodyExecutor {
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
         Literal removed = ag.removeBelief(body, ag.newUnifier());
         if (removed != null) {
+            // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
+            im.unifier().unifies(term, removed);
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), sameFocus ? i : null));
             if (!sameFocus) {
                 rc.removeActionReQueue(i);

@@ -137,6 +137,15 @@ class LocalMASTest {
         assertTrue(got.stream().noneMatch(l -> l.startsWith("[other] 1")), "other has no option beliefs: " + got);
     }
 
+    /** CArtAgO's remote examples give the environment a structure: it reaches the class as its text. */
+    @Test
+    void environmentArgumentsMayBeStructures(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"),
+                "MAS m {\n environment: my.Env(\"standalone\", protocol(lipermi), 3, -1)\n agents: a;\n}\n");
+        var project = Mas2jReader.read(dir.resolve("p.mas2j"));
+        assertEquals(List.of("standalone", "protocol(lipermi)", "3", "-1"), project.environmentArgs());
+    }
+
     @Test
     void anInfrastructureOtherThanLocalIsRefused(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n infrastructure: Jade\n agents: a;\n}\n");
