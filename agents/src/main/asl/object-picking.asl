@@ -46,8 +46,11 @@ ignoreFor(15000).
 // (issue 13) how long to go on past an obstacle met on the way to a far cylinder, ms
 goRoundTime(2500).
 // (issue 13) straight legs of the random walk and the search at this wheel speed, not the
-// thesis' forward (50): twice the ground in big arenas
+// thesis' forward (50): twice the ground in big arenas; once a cylinder is held, the thesis' 50
+// again (at 100 the battery, 1000 J, is empty after about 8 minutes)
 cruiseSpeed(100).
+legSpeed(50) :- picked(true).
+legSpeed(V) :- not picked(true) & cruiseSpeed(V).
 
 !start.
 
@@ -119,10 +122,10 @@ cruiseSpeed(100).
 +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !avoid(D).
 // (issue 13) no cylinder for a while: long straight legs in random directions
 +!move(N) : searchAfter(S) & lastFound(T0) & .system_time(T) & T - T0 > S & not picked(true) & maxSpeed(M)
-    <- .random(R); setSpeeds(M / 2, -M / 2); .wait(R * 3000); ?cruiseSpeed(V); setSpeeds(V, V); .wait(15000).
-+!move(N) : N <= 0.5 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
-+!move(N) : N <= 0.75 & N > 0.5 & cruiseSpeed(V) <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
-+!move(N) : N < 1 & N > 0.75 & cruiseSpeed(V) <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
+    <- .random(R); setSpeeds(M / 2, -M / 2); .wait(R * 3000); ?legSpeed(V); setSpeeds(V, V); .wait(15000).
++!move(N) : N <= 0.5 & legSpeed(V) <- setSpeeds(V, V); .random(R); W = R * 10000; .wait(W).
++!move(N) : N <= 0.75 & N > 0.5 & legSpeed(V) <- turnLeft; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
++!move(N) : N < 1 & N > 0.75 & legSpeed(V) <- turnRight; .random(R); W = R * 10000 / 2; .wait(W); setSpeeds(V, V); .wait(1000).
 -!move(_) <- println("move failed").
 
 /* Picking the cylinder up, with time limits (Chapter 4 §2.1) */
