@@ -37,6 +37,23 @@ final class Bindings {
         index = other.index == null ? null : new HashMap<>(other.index);
     }
 
+    /** {@return a copy of the first {@code n} bindings} */
+    Bindings prefix(int n) {
+        var b = new Bindings();
+        if (n > 0) {
+            b.pairs = Arrays.copyOf(pairs, 2 * (n + 2));
+            Arrays.fill(b.pairs, 2 * n, b.pairs.length, null);
+            b.size = n;
+            if (n >= INDEX_FROM) {
+                b.index = new HashMap<>();
+                for (int k = 0; k < n; k++) {
+                    b.index.put((Var) pairs[2 * k], k);
+                }
+            }
+        }
+        return b;
+    }
+
     Bindings copy() {
         return new Bindings(this);
     }
@@ -54,6 +71,23 @@ final class Bindings {
             }
         }
         return -1;
+    }
+
+    /** {@return the position of the variable's binding (bindings only append), or -1 when unbound} */
+    int position(Var v) {
+        return indexOf(v);
+    }
+
+    /** {@return the pairs bound since there were {@code mark}, to be {@link #append}ed later} */
+    Object[] suffix(int mark) {
+        return Arrays.copyOfRange(pairs, 2 * mark, 2 * size);
+    }
+
+    /** Binds the pairs of a {@link #suffix} again (its variables are unbound here). */
+    void append(Object[] more) {
+        for (int i = 0; i < more.length; i += 2) {
+            put((Var) more[i], (Term) more[i + 1]);
+        }
     }
 
     Term get(Var v) {
