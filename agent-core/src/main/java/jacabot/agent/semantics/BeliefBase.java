@@ -151,7 +151,7 @@ public final class BeliefBase {
             var map = new HashMap<Object, List<Entry>>();
             var loose = new ArrayList<Entry>();
             for (Entry e : all) {
-                Object k = key(e.literal.arg(0));
+                Object k = key(e.literal.arg(0), null);
                 if (k == null) {
                     if (loose.size() == MAX_UNKEYED) {
                         queriesUnchanged = Integer.MIN_VALUE;
@@ -225,7 +225,7 @@ public final class BeliefBase {
         if (g == null) {
             return List.of();
         }
-        Object key = first == null ? null : key(first);
+        Object key = first == null ? null : key(first, numberProbe);
         return key == null ? g.snapshot() : g.candidates(key);
     }
 
@@ -233,18 +233,37 @@ public final class BeliefBase {
      * {@return the argument when it is a constant that unifies only with itself (an atom without
      * annotations, a number, a string), or null}
      */
-    private static Object key(Term arg) {
+    private static Object key(Term arg, NumberKey probe) {
         if (arg instanceof Literal a) {
             return a.isAtom() ? a : null;
         }
         if (arg instanceof jacabot.agent.syntax.NumberTerm n) {
-            return new NumberKey(n.value() + 0.0);
+            return probe == null ? new NumberKey(n.value()) : probe.set(n.value());
         }
         return arg instanceof jacabot.agent.syntax.StringTerm ? arg : null;
     }
 
+    /** The number key of lookups (one mutable probe, as {@link #probe}). */
+    private final NumberKey numberProbe = new NumberKey(0);
+
     /** A number as a key: a double's own hash puts whole numbers in few buckets. */
-    private record NumberKey(double value) {
+    private static final class NumberKey {
+        private double value;
+
+        NumberKey(double value) {
+            set(value);
+        }
+
+        NumberKey set(double v) {
+            value = v + 0.0; // -0.0 is 0.0
+            return this;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof NumberKey k && k.value == value;
+        }
+
         @Override
         public int hashCode() {
             long bits = Double.doubleToLongBits(value) * 0x9E3779B97F4A7C15L;

@@ -115,6 +115,35 @@ public final class Solver {
             }
         }
 
+        /** As the mapper's, without its intermediate lists (a proof renames at every step). */
+        @Override
+        public Term visitLiteral(Literal l) {
+            int n = l.arity();
+            if (n == 0 && l.annots().isEmpty() || l.isGround()) {
+                return l;
+            }
+            List<Term> args;
+            switch (n) {
+                case 0:
+                    args = List.of();
+                    break;
+                case 1:
+                    args = List.of(map(l.arg(0)));
+                    break;
+                case 2:
+                    args = List.of(map(l.arg(0)), map(l.arg(1)));
+                    break;
+                default:
+                    Term[] a = new Term[n];
+                    for (int i = 0; i < n; i++) {
+                        a[i] = map(l.arg(i));
+                    }
+                    args = List.of(a);
+                    break;
+            }
+            return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated());
+        }
+
         @Override
         public Term visitVar(Var v) {
             for (int i = 0; i < vars.length; i++) {
