@@ -132,7 +132,8 @@ final class Bindings {
 
     /** {@return the pairs bound since there were {@code mark}, to be {@link #append}ed later} */
     Object[] suffix(int mark) {
-        return Arrays.copyOfRange(pairs, 2 * mark, 2 * size);
+        // an internal action's unifier is an extension of the one it was given: never shorter
+        return mark >= size ? NONE : Arrays.copyOfRange(pairs, 2 * mark, 2 * size);
     }
 
     /** Binds the pairs of a {@link #suffix} again (its variables are unbound here). */

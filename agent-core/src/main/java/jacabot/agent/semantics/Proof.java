@@ -131,10 +131,11 @@ final class Proof {
             formulaVars = vars;
         }
         var pairs = new ArrayList<Object>();
+        // in the formula's order, then in the order the values name them
         var seen = new HashSet<Var>(formulaVars);
-        var todo = new ArrayDeque<Var>(seen);
+        var todo = new ArrayDeque<Var>(formulaVars);
         while (!todo.isEmpty()) {
-            Var v = todo.pop();
+            Var v = todo.poll();
             Term b = w.binding(v);
             if (b == null) {
                 continue;
@@ -147,12 +148,12 @@ final class Proof {
             }
             if (value instanceof Var x) {
                 if (seen.add(x)) {
-                    todo.push(x);
+                    todo.add(x);
                 }
             } else if (!value.isGround()) {
                 value.collectVars(x -> {
                     if (seen.add(x)) {
-                        todo.push(x);
+                        todo.add(x);
                     }
                 });
             }
