@@ -19,7 +19,9 @@ import java.util.concurrent.TimeUnit;
  * the same options; a run's time is from the program's {@code start} line to its {@code end} line
  * (JVM start-up and Jason's shutdown are not counted). Runs alternate between the two
  * interpreters, after one discarded warm-up run each. Peak memory is the process' maximum
- * resident set (GNU time), reasoning cycles are counted by our interpreter.
+ * resident set (GNU time), reasoning cycles are counted by our interpreter. The deep recursion
+ * programs ({@link #DEEP}) are timed the same way, with a time limit per run, and a second table
+ * tells how time and memory grow with the depth of the proofs.
  */
 public final class InterpreterBenchmark {
     /** The programs: name, project file, what it does. */
@@ -30,17 +32,34 @@ public final class InterpreterBenchmark {
             new String[] {"rules", "rules.mas2j", "recursive ancestor rule over 1 000 facts, 10 000 queries"},
             new String[] {"messages", "messages.mas2j", "20 000 .send tell between two agents"},
             new String[] {"agents", "many.mas2j", "1 000 agents each counting to 1 000"});
+    /** A deep recursion program: a copy of {@code resource} with this chain length and query count. */
+    record Deep(String name, String resource, int length, int queries, String what) {
+    }
+
+    /** Rule proofs as deep as a chain of facts: the chain series (100 to 1 600), backtracking, many queries. */
+    public static final List<Deep> DEEP = List.of(
+            new Deep("ancestor-100", "ancestor.asl", 100, 200, "ancestor/2 end to end over a 100-long chain, 200 queries"),
+            new Deep("ancestor-200", "ancestor.asl", 200, 200, "the same over a 200-long chain"),
+            new Deep("ancestor-400", "ancestor.asl", 400, 200, "the same over a 400-long chain"),
+            new Deep("ancestor-800", "ancestor.asl", 800, 200, "the same over an 800-long chain"),
+            new Deep("ancestor-1600", "ancestor.asl", 1600, 200, "the same over a 1 600-long chain"),
+            new Deep("branches", "branches.asl", 100, 40,
+                    "ancestor/2 over a 100-long chain with 5 dead ends tried first at each link, 40 queries"),
+            new Deep("ancestor-300x2000", "ancestor.asl", 300, 2000, "ancestor/2 end to end over a 300-long chain, 2 000 queries"));
+    /** A run longer than this is its program's only measured run (the deep programs on a quadratic solver). */
+    private static final double LONG_RUN_SECONDS = 20;
     private static final String[] FILES = {"count.asl", "count.mas2j", "beliefs.asl", "beliefs.mas2j", "counter.asl",
         "counter.mas2j", "rules.asl", "rules.mas2j", "sender.asl", "receiver.asl", "messages.mas2j", "worker.asl",
-        "supervisor.asl", "many.mas2j"};
+        "supervisor.asl", "many.mas2j", "ancestor.asl", "branches.asl"};
     private static final String JASON_LOGGING = String.join("\n",
             "handlers = java.util.logging.ConsoleHandler", ".level = INFO",
             "java.util.logging.ConsoleHandler.level = FINE",
             "java.util.logging.ConsoleHandler.formatter = jason.runtime.MASConsoleLogFormatter", "java.level=OFF",
             "javax.level=OFF", "sun.level=OFF", "");
 
-    /** One measured run. */
-    record Run(double seconds, long peakKb, long cycles) {
+    /** One measured run; a run cut at the time limit has {@code timedOut}. */
+    record Run(double seconds, long peakKb, long cycles, boolean timedOut) {
+        static final Run NONE = new Run(Double.NaN, 0, 0, true);
     }
 
     private final String ourClasspath;
@@ -48,12 +67,25 @@ public final class InterpreterBenchmark {
     private final int runs;
     private final PrintStream out;
     private final Path dir;
+    private final java.util.Set<String> selected;
+    private final double limitSeconds;
 
     public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out) throws IOException {
+        this(ourClasspath, jasonClasspath, runs, out, null, 300);
+    }
+
+    /**
+     * @param programs the programs to run by name ({@code deep} for all of {@link #DEEP}), or null for all
+     * @param limitSeconds the longest a deep program's run may take; longer chains are then not run
+     */
+    public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out,
+            java.util.Set<String> programs, double limitSeconds) throws IOException {
         this.ourClasspath = ourClasspath;
         this.jasonClasspath = jasonClasspath;
         this.runs = runs;
         this.out = out;
+        this.selected = programs;
+        this.limitSeconds = limitSeconds;
         this.dir = Files.createTempDirectory("jacabot-bench");
         for (String f : FILES) {
             try (InputStream in = InterpreterBenchmark.class.getResourceAsStream("/bench/" + f)) {
@@ -61,12 +93,49 @@ public final class InterpreterBenchmark {
             }
         }
         Files.writeString(dir.resolve("jason-logging.properties"), JASON_LOGGING);
+        for (Deep d : DEEP) {
+            // Jason's project files take no '-' in names
+            String file = d.name().replace('-', '_');
+            Files.writeString(dir.resolve(file + ".asl"), variant(Files.readString(dir.resolve(d.resource())), d));
+            Files.writeString(dir.resolve(file + ".mas2j"), "MAS " + file + " { agents: " + file + " " + file + ".asl; }\n");
+        }
+    }
+
+    /** {@return the names of every program, the deep ones included} */
+    public static List<String> names() {
+        var names = new ArrayList<String>();
+        PROGRAMS.forEach(p -> names.add(p[0]));
+        DEEP.forEach(d -> names.add(d.name()));
+        return names;
+    }
+
+    /** {@return the program with the deep program's chain length and query count} */
+    static String variant(String program, Deep d) {
+        return program.replaceFirst("(?m)^length\\(\\d+\\)\\.", "length(" + d.length() + ").")
+                .replaceFirst("(?m)^queries\\(\\d+\\)\\.", "queries(" + d.queries() + ").");
+    }
+
+    private boolean wanted(String name) {
+        return selected == null || selected.contains(name)
+                || selected.contains("deep") && DEEP.stream().anyMatch(d -> d.name().equals(name));
     }
 
     public void run() throws IOException, InterruptedException {
+        if (PROGRAMS.stream().anyMatch(p -> wanted(p[0]))) {
+            programs();
+        }
+        if (DEEP.stream().anyMatch(d -> wanted(d.name()))) {
+            deep();
+        }
+    }
+
+    private void programs() throws IOException, InterruptedException {
         out.println("| program | ours (s) | Jason (s) | Jason / ours | our cycles/s | Jason cycles/s | our peak memory (MB) | Jason peak memory (MB) |");
         out.println("|---|---|---|---|---|---|---|---|");
         for (String[] p : PROGRAMS) {
+            if (!wanted(p[0])) {
+                continue;
+            }
             ours(p[1]);
             jason(p[1]);
             var ours = new ArrayList<Run>();
@@ -81,6 +150,74 @@ public final class InterpreterBenchmark {
             out.printf(Locale.ROOT, "| %s (%s) | %.3f | %.3f | %.2f | %,.0f | %,.0f | %d | %d |%n", p[0], p[2], o.seconds,
                     j.seconds, j.seconds / o.seconds, cycles / o.seconds, cycles / j.seconds, o.peakKb / 1024, j.peakKb / 1024);
         }
+    }
+
+    /**
+     * The deep programs: one row each, then how the chain series grows. Each interpreter's first run
+     * is a warm-up unless it took longer than {@link #LONG_RUN_SECONDS} (then it is the only run);
+     * a run cut at the limit skips that interpreter's longer chains.
+     */
+    private void deep() throws IOException, InterruptedException {
+        out.println();
+        out.println("| deep recursion program | ours (s) | Jason (s) | Jason / ours | our peak memory (MB) | Jason peak memory (MB) |");
+        out.println("|---|---|---|---|---|---|");
+        var series = new java.util.LinkedHashMap<Integer, Run[]>();
+        boolean oursCut = false;
+        boolean jasonCut = false;
+        for (Deep d : DEEP) {
+            if (!wanted(d.name())) {
+                continue;
+            }
+            boolean chain = d.name().startsWith("ancestor-") && d.queries() == 200;
+            Run o = oursCut && chain ? Run.NONE : deepRuns(true, d.name().replace('-', '_') + ".mas2j");
+            Run j = jasonCut && chain ? Run.NONE : deepRuns(false, d.name().replace('-', '_') + ".mas2j");
+            if (chain) {
+                oursCut |= o.timedOut;
+                jasonCut |= j.timedOut;
+                series.put(d.length(), new Run[] {o, j});
+            }
+            out.printf(Locale.ROOT, "| %s (%s) | %s | %s | %s | %s | %s |%n", d.name(), d.what(), seconds(o), seconds(j),
+                    o.timedOut || j.timedOut ? "–" : String.format(Locale.ROOT, "%.2f", j.seconds / o.seconds),
+                    megabytes(o), megabytes(j));
+        }
+        Run[] first = series.get(100);
+        if (first == null || series.size() < 2) {
+            return;
+        }
+        out.println();
+        out.println("Growth with the depth of the proofs, from the 100-long chain: (time or peak memory at length L ÷ at 100) ÷ (L ÷ 100);"
+                + " 1 or less is linear, and a solver quadratic in the depth doubles it with each doubling of L.");
+        out.println();
+        out.println("| chain length | ours: time | ours: peak memory | Jason: time | Jason: peak memory |");
+        out.println("|---|---|---|---|---|");
+        series.forEach((length, r) -> out.printf(Locale.ROOT, "| %,d | %s | %s | %s | %s |%n", length,
+                growth(r[0].seconds, first[0].seconds, r[0].timedOut, length), growth(r[0].peakKb, first[0].peakKb, r[0].timedOut, length),
+                growth(r[1].seconds, first[1].seconds, r[1].timedOut, length), growth(r[1].peakKb, first[1].peakKb, r[1].timedOut, length)));
+    }
+
+    private Run deepRuns(boolean ours, String project) throws IOException, InterruptedException {
+        Run warmUp = ours ? ours(project) : jason(project);
+        if (warmUp.timedOut || warmUp.seconds > LONG_RUN_SECONDS) {
+            return warmUp;
+        }
+        var measured = new ArrayList<Run>();
+        for (int i = 0; i < runs; i++) {
+            measured.add(ours ? ours(project) : jason(project));
+        }
+        return median(measured);
+    }
+
+    private String seconds(Run r) {
+        return r == Run.NONE ? "not run" : r.timedOut ? String.format(Locale.ROOT, "> %.0f", limitSeconds)
+                : String.format(Locale.ROOT, "%.3f", r.seconds);
+    }
+
+    private static String megabytes(Run r) {
+        return r.timedOut ? "–" : Long.toString(r.peakKb / 1024);
+    }
+
+    private static String growth(double value, double atHundred, boolean timedOut, int length) {
+        return timedOut ? "–" : String.format(Locale.ROOT, "%.2f", value / atHundred / (length / 100.0));
     }
 
     private Run ours(String project) throws IOException, InterruptedException {
@@ -109,6 +246,19 @@ public final class InterpreterBenchmark {
         cmd.add("-Djava.awt.headless=true");
         cmd.addAll(javaArgs);
         Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true).start();
+        var cut = new java.util.concurrent.atomic.AtomicBoolean();
+        var limit = new Thread(() -> {
+            try {
+                Thread.sleep((long) (limitSeconds * 1000));
+                cut.set(true);
+                p.descendants().forEach(ProcessHandle::destroyForcibly);
+                p.destroyForcibly();
+            } catch (InterruptedException e) {
+                // the run ended in time
+            }
+        });
+        limit.setDaemon(true);
+        limit.start();
         long start = -1;
         long end = -1;
         long cycles = 0;
@@ -128,10 +278,14 @@ public final class InterpreterBenchmark {
         if (!p.waitFor(10, TimeUnit.MINUTES)) {
             p.destroyForcibly();
         }
+        limit.interrupt();
+        if (cut.get()) {
+            return new Run(limitSeconds, 0, cycles, true);
+        }
         if (start < 0 || end < 0) {
             throw new IOException("the program did not print its start and end lines: " + String.join(" ", cmd));
         }
         long peak = gnuTime ? Long.parseLong(Files.readString(timeFile).trim().lines().reduce((a, b) -> b).orElse("0")) : 0;
-        return new Run((end - start) / 1e9, peak, cycles);
+        return new Run((end - start) / 1e9, peak, cycles, false);
     }
 }

@@ -17,7 +17,7 @@ final class BenchCommand implements Runnable {
     @Override
     public void run() {
         var out = spec.commandLine().getOut();
-        out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE]");
+        out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE] [--programs LIST] [--limit S]");
         out.println("       jacabot bench latency [--duration 60s] [--speed X]");
         out.println("       jacabot bench sim [--duration 10m] [--seed N]");
         out.flush();
@@ -49,14 +49,41 @@ final class BenchCommand implements Runnable {
                 description = "a file holding Jason's class path (default ${DEFAULT-VALUE})")
         private Path jasonClasspath = Path.of("build/jason-classpath.txt");
 
+        @Option(names = "--programs", split = ",", paramLabel = "LIST",
+                description = "the programs to run, by name; `deep` stands for every deep recursion program (default: all)")
+        private java.util.List<String> programs;
+
+        @Option(names = "--limit", paramLabel = "S", description = "seconds a run may take before it is cut (default ${DEFAULT-VALUE})")
+        private double limit = 300;
+
+        @Option(names = "--ours-classpath", paramLabel = "FILE",
+                description = "a file holding the class path of another build of ours to measure (default: this one)")
+        private Path oursClasspath;
+
         @Override
         public Integer call() throws Exception {
             if (!Files.isRegularFile(jasonClasspath)) {
                 throw new UserError(jasonClasspath + ": not found; run `gradle jasonClasspath` (or `gradle benchInterpreter`) first");
             }
+            if (oursClasspath != null && !Files.isRegularFile(oursClasspath)) {
+                throw new UserError("--ours-classpath: " + oursClasspath + ": not found");
+            }
+            if (programs != null) {
+                var known = new java.util.ArrayList<>(InterpreterBenchmark.names());
+                known.add("deep");
+                for (String p : programs) {
+                    if (!known.contains(p)) {
+                        throw new UserError("--programs: unknown program '" + p + "' (one of " + String.join(", ", known) + ")");
+                    }
+                }
+            }
+            if (!(limit > 0)) {
+                throw new UserError("--limit must be a positive number of seconds, got " + limit);
+            }
             String jason = Files.readString(jasonClasspath).trim();
-            new InterpreterBenchmark(System.getProperty("java.class.path"), jason, Math.max(1, runs),
-                    ConsoleStreams.of(spec.commandLine().getOut())).run();
+            String ours = oursClasspath == null ? System.getProperty("java.class.path") : Files.readString(oursClasspath).trim();
+            new InterpreterBenchmark(ours, jason, Math.max(1, runs), ConsoleStreams.of(spec.commandLine().getOut()),
+                    programs == null ? null : java.util.Set.copyOf(programs), limit).run();
             return 0;
         }
     }

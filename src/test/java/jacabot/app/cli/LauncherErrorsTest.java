@@ -54,6 +54,14 @@ class LauncherErrorsTest {
     }
 
     @Test
+    void anUnknownBenchProgramIsAUserError(@TempDir Path dir) throws Exception {
+        Path jason = dir.resolve("jason-classpath.txt");
+        Files.writeString(jason, "none.jar");
+        assertOneLine(CliRun.run("bench", "interpreter", "--jason-classpath", jason.toString(), "--programs", "rules,nope"),
+                "2", "--programs: unknown program 'nope'");
+    }
+
+    @Test
     void badNumbersAreUserErrors() {
         assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");
         assertOneLine(CliRun.run("compare", "--duration", "abc"), "2", "--duration: bad duration");

@@ -47,6 +47,19 @@ public final class BeliefBase {
         public Rule rule() {
             return rule;
         }
+
+        /** The rule's distinct variables, head first, in order of first occurrence (computed once). */
+        private jacabot.agent.syntax.Var[] ruleVars;
+
+        jacabot.agent.syntax.Var[] ruleVars() {
+            if (ruleVars == null) {
+                var vars = new java.util.LinkedHashSet<jacabot.agent.syntax.Var>();
+                rule.head().collectVars(vars::add);
+                rule.body().collectVars(vars::add);
+                ruleVars = vars.toArray(new jacabot.agent.syntax.Var[0]);
+            }
+            return ruleVars;
+        }
     }
 
     /**
@@ -88,9 +101,17 @@ public final class BeliefBase {
 
     /**
      * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
-     * snapshot reused by queries until the group changes.
+     * snapshot reused by queries until the group changes, and an index by first argument built
+     * once a large group is queried often enough unchanged.
      */
     private static final class Group {
+        /** Groups smaller than this are scanned, not indexed. */
+        private static final int INDEX_FROM = 16;
+        /** Queries of an unchanged group before its index is built (a changing group is scanned). */
+        private static final int INDEX_AFTER = 4;
+        /** Entries whose first argument is not a constant (rules with a variable there): at most this many. */
+        private static final int MAX_UNKEYED = 8;
+
         /** Its key in the map (kept with a spare group: the same predicate often comes back). */
         private Key key;
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
@@ -98,11 +119,53 @@ public final class BeliefBase {
         /** The facts by their arguments: adding a known fact must not scan a large group. */
         private final HashMap<List<Term>, Entry> facts = new HashMap<>();
 
+        /** The entries by first argument, each list with the unkeyed entries in their places. */
+        private HashMap<Object, List<Entry>> byFirst;
+        /** The entries whose first argument is not a constant, in order. */
+        private List<Entry> unkeyed;
+        private int queriesUnchanged;
+
         List<Entry> snapshot() {
             if (snapshot == null) {
                 snapshot = List.copyOf(entries);
+                byFirst = null;
+                queriesUnchanged = 0;
             }
             return snapshot;
+        }
+
+        /** {@return the entries that may match a query whose first argument is the constant {@code key}} */
+        List<Entry> candidates(Object key) {
+            List<Entry> all = snapshot();
+            if (byFirst == null) {
+                if (all.size() < INDEX_FROM || ++queriesUnchanged < INDEX_AFTER || !index(all)) {
+                    return all;
+                }
+            }
+            List<Entry> some = byFirst.get(key);
+            return some != null ? some : unkeyed;
+        }
+
+        /** Builds the index of {@code all}. {@return false when too many entries are unkeyed} */
+        private boolean index(List<Entry> all) {
+            var map = new HashMap<Object, List<Entry>>();
+            var loose = new ArrayList<Entry>();
+            for (Entry e : all) {
+                Object k = key(e.literal.arg(0), null);
+                if (k == null) {
+                    if (loose.size() == MAX_UNKEYED) {
+                        queriesUnchanged = Integer.MIN_VALUE;
+                        return false;
+                    }
+                    loose.add(e);
+                    map.values().forEach(l -> l.add(e));
+                } else {
+                    map.computeIfAbsent(k, x -> new ArrayList<>(loose)).add(e);
+                }
+            }
+            byFirst = map;
+            unkeyed = loose;
+            return true;
         }
 
         void add(Entry e, boolean atEnd) {
@@ -153,8 +216,59 @@ public final class BeliefBase {
      * iterate it while plans change the belief base.
      */
     public List<Entry> candidates(Literal l) {
+        return candidates(l, l.arity() == 0 ? null : l.arg(0));
+    }
+
+    /** As {@link #candidates(Literal)}, for a query whose first argument is {@code first} (its value when a bound variable) */
+    List<Entry> candidates(Literal l, Term first) {
         var g = group(l);
-        return g == null ? List.of() : g.snapshot();
+        if (g == null) {
+            return List.of();
+        }
+        Object key = first == null ? null : key(first, numberProbe);
+        return key == null ? g.snapshot() : g.candidates(key);
+    }
+
+    /**
+     * {@return the argument when it is a constant that unifies only with itself (an atom without
+     * annotations, a number, a string), or null}
+     */
+    private static Object key(Term arg, NumberKey probe) {
+        if (arg instanceof Literal a) {
+            return a.isAtom() ? a : null;
+        }
+        if (arg instanceof jacabot.agent.syntax.NumberTerm n) {
+            return probe == null ? new NumberKey(n.value()) : probe.set(n.value());
+        }
+        return arg instanceof jacabot.agent.syntax.StringTerm ? arg : null;
+    }
+
+    /** The number key of lookups (one mutable probe, as {@link #probe}). */
+    private final NumberKey numberProbe = new NumberKey(0);
+
+    /** A number as a key: a double's own hash puts whole numbers in few buckets. */
+    private static final class NumberKey {
+        private double value;
+
+        NumberKey(double value) {
+            set(value);
+        }
+
+        NumberKey set(double v) {
+            value = v + 0.0; // -0.0 is 0.0
+            return this;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof NumberKey k && k.value == value;
+        }
+
+        @Override
+        public int hashCode() {
+            long bits = Double.doubleToLongBits(value) * 0x9E3779B97F4A7C15L;
+            return (int) (bits ^ (bits >>> 32));
+        }
     }
 
     /** {@return the stored fact with exactly these arguments (any annotations), or null} */

@@ -4,23 +4,22 @@ import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.PlanTerm;
 import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Literal;
-import jacabot.agent.syntax.LogExpr;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.RelExpr;
-import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.TermMapper;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
-import java.util.Collections;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
 import java.util.NoSuchElementException;
 
 /**
  * Logical consequence: the solutions (unifiers) of a formula against the belief base, rules,
- * relational expressions and internal actions, lazily and in Jason's order.
+ * relational expressions and internal actions, lazily and in Jason's order. Each solution is the
+ * caller's unifier extended with the bindings of the formula's variables; a {@link Proof} does
+ * the resolution.
  */
 public final class Solver {
     private final Agent agent;
@@ -31,9 +30,9 @@ public final class Solver {
 
     /** {@return whether the formula has a solution; binds {@code u} to the first one} */
     public boolean believes(Term formula, Unifier u) {
-        Iterator<Unifier> it = solve(formula, u);
-        if (it.hasNext()) {
-            u.setFrom(it.next());
+        var proof = new Proof(this, formula, u, 0);
+        if (proof.next()) {
+            proof.keepAnswer();
             return true;
         }
         return false;
@@ -41,171 +40,167 @@ public final class Solver {
 
     /** {@return the solutions of a formula, each an extension of {@code u} (never changed)} */
     public Iterator<Unifier> solve(Term formula, Unifier u) {
-        Term f = u.deref(formula);
-        if (f instanceof Var) {
-            return Collections.emptyIterator();
+        return new Solutions(new Proof(this, formula, u.copy(), 0));
+    }
+
+    /** The solutions of a proof, each a unifier of its own. */
+    private static final class Solutions implements Iterator<Unifier> {
+        private final Proof proof;
+        private Unifier next;
+        private boolean over;
+
+        Solutions(Proof proof) {
+            this.proof = proof;
         }
-        if (f instanceof jacabot.agent.syntax.AnnotatedVar av) {
-            Term value = u.apply(av);
-            if (!(value instanceof Literal)) {
-                // _[source(a)]: every belief with these annotations
-                var out = new ArrayList<Unifier>();
-                for (BeliefBase.Entry e : agent.beliefBase().all()) {
-                    Unifier c = u.copy();
-                    if (e.rule() == null && c.unifies(av, e.literal())) {
-                        out.add(c);
-                    }
+
+        @Override
+        public boolean hasNext() {
+            if (next == null && !over) {
+                if (proof.next()) {
+                    next = proof.solution();
+                } else {
+                    over = true;
                 }
-                return out.iterator();
             }
-            f = value;
+            return next != null;
         }
-        if (f instanceof Literal l) {
-            // l.equals(TRUE) and l.equals(FALSE), without comparing every query's arguments
-            if (l.isAtom() && l.functor().equals("true")) {
-                return single(u.copy());
+
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new NoSuchElementException();
             }
-            if (l.isAtom() && l.functor().equals("false")) {
-                return Collections.emptyIterator();
-            }
-            if (l.isInternalAction()) {
-                return internalAction(l, u);
-            }
-            return literal(l, u);
+            Unifier u = next;
+            next = null;
+            return u;
         }
-        if (f instanceof LogExpr e) {
-            switch (e.op()) {
-                case NOT:
-                    return solve(e.left(), u).hasNext() ? Collections.emptyIterator() : single(u.copy());
-                case AND:
-                    return new Conjunction(solve(e.left(), u), e.right());
+    }
+
+    // ---- what a proof asks of the agent ----------------------------------------------------------
+
+    /** {@return the beliefs and rules that may match a literal, in order} */
+    List<BeliefBase.Entry> candidates(Literal q, Unifier u) {
+        return agent.beliefBase().candidates(q, q.arity() == 0 ? null : u.deref(q.arg(0)));
+    }
+
+    /**
+     * {@code _[source(a)]}: for every belief with these annotations, the bindings its unification
+     * makes in {@code w} (which is left as it was).
+     */
+    List<Object[]> annotated(jacabot.agent.syntax.AnnotatedVar av, Unifier w) {
+        var out = new ArrayList<Object[]>();
+        int mark = w.size();
+        for (BeliefBase.Entry e : agent.beliefBase().all()) {
+            if (e.rule() == null && w.unifies(av, e.literal())) {
+                out.add(w.bindingsSince(mark));
+                w.undoTo(mark);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * A rule's variables renamed apart from every other variable: fresh ones, made in order of
+     * first occurrence (head, then body), as the rule is used.
+     */
+    static final class Renaming extends TermMapper {
+        private final Var[] vars;
+        private final Var[] fresh;
+
+        Renaming(BeliefBase.Entry e, Agent agent) {
+            vars = e.ruleVars();
+            fresh = new Var[vars.length];
+            for (int i = 0; i < vars.length; i++) {
+                fresh[i] = agent.freshVar(vars[i]);
+            }
+        }
+
+        /** As the mapper's, without its intermediate lists (a proof renames at every step). */
+        @Override
+        public Term visitLiteral(Literal l) {
+            int n = l.arity();
+            if (n == 0 && l.annots().isEmpty() || l.isGround()) {
+                return l;
+            }
+            List<Term> args;
+            switch (n) {
+                case 0:
+                    args = List.of();
+                    break;
+                case 1:
+                    args = List.of(map(l.arg(0)));
+                    break;
+                case 2:
+                    args = List.of(map(l.arg(0)), map(l.arg(1)));
+                    break;
                 default:
-                    return new Concat(solve(e.left(), u), () -> solve(e.right(), u));
+                    Term[] a = new Term[n];
+                    for (int i = 0; i < n; i++) {
+                        a[i] = map(l.arg(i));
+                    }
+                    args = List.of(a);
+                    break;
             }
+            return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated());
         }
-        if (f instanceof RelExpr r) {
-            return relational(r, u);
-        }
-        return Collections.emptyIterator();
-    }
 
-    // ---- literals against the belief base ------------------------------------------------------
-
-    private Iterator<Unifier> literal(Literal query, Unifier u) {
-        Literal q = (Literal) u.apply(query);
-        List<BeliefBase.Entry> candidates = agent.beliefBase().candidates(q);
-        if (candidates.isEmpty()) {
-            return Collections.emptyIterator();
-        }
-        return new Candidates(candidates, q, u);
-    }
-
-    private Iterator<Unifier> match(Literal q, BeliefBase.Entry e, Unifier u) {
-        if (e.rule() != null) {
-            Rule r = rename(e.rule());
-            Unifier ru = u.unifiedCopyIgnoringAnnots(q, r.head());
-            if (ru == null) {
-                return Collections.emptyIterator();
-            }
-            if (!q.annots().isEmpty() && !ru.unifies(q, r.head())) {
-                return Collections.emptyIterator();
-            }
-            return solve(r.body(), ru);
-        }
-        Literal belief = e.literal();
-        if (!e.isGround()) {
-            // a fact with variables, like in(X, [X|_]): its variables are its own
-            belief = (Literal) Renamer.renameApart(belief, agent);
-        }
-        // most candidates fail: unify first, copy only on success
-        Unifier bu = u.unifiedCopyIgnoringAnnots(q, belief);
-        if (bu == null) {
-            return Collections.emptyIterator();
-        }
-        if (q.annots().isEmpty()) {
-            return single(bu);
-        }
-        return annotationMatches(q.annots(), belief.annots(), bu);
-    }
-
-    /** Every way of matching each query annotation with a distinct belief annotation, in order. */
-    private static Iterator<Unifier> annotationMatches(List<Term> query, List<Term> belief, Unifier u) {
-        var out = new ArrayList<Unifier>();
-        matchAnnots(query, 0, belief, new boolean[belief.size()], u, out);
-        return out.iterator();
-    }
-
-    private static void matchAnnots(List<Term> query, int i, List<Term> belief, boolean[] used, Unifier u,
-            List<Unifier> out) {
-        if (i == query.size()) {
-            out.add(u);
-            return;
-        }
-        for (int j = 0; j < belief.size(); j++) {
-            if (!used[j]) {
-                Unifier next = u.copy();
-                if (next.unifies(query.get(i), belief.get(j))) {
-                    used[j] = true;
-                    matchAnnots(query, i + 1, belief, used, next, out);
-                    used[j] = false;
+        @Override
+        public Term visitVar(Var v) {
+            for (int i = 0; i < vars.length; i++) {
+                if (vars[i].equals(v)) {
+                    return fresh[i];
                 }
             }
+            return v;
         }
     }
 
-    /** Renames a rule's variables apart from every other variable. */
-    private Rule rename(Rule r) {
-        var map = new HashMap<Var, Var>();
-        Term head = Renamer.renameApart(r.head(), agent::freshVar, map);
-        Term body = Renamer.renameApart(r.body(), agent::freshVar, map);
-        if (map.isEmpty()) {
-            return r;
-        }
-        return new Rule((Literal) head, body);
+    Renaming renaming(BeliefBase.Entry e) {
+        return new Renaming(e, agent);
+    }
+
+    /** A fact with variables, like in(X, [X|_]): its variables are its own. */
+    Literal renameApart(Literal fact) {
+        return (Literal) Renamer.renameApart(fact, agent);
     }
 
     // ---- internal actions in formulas -----------------------------------------------------------
 
-    @SuppressWarnings("unchecked")
-    private Iterator<Unifier> internalAction(Literal l, Unifier u) {
+    /** {@return the internal action a formula names, or null (with a warning)} */
+    InternalAction internalAction(Literal l) {
         InternalAction ia = agent.internalAction(l.functor());
         if (ia == null) {
             agent.warn("unknown internal action '" + l.functor() + "' in a formula");
-            return Collections.emptyIterator();
         }
-        Unifier copy = u.copy();
+        return ia;
+    }
+
+    /** {@return what the action answers: a Boolean, an iterator of unifiers, or false after a warning} */
+    Object execute(InternalAction ia, Literal l, Unifier u) {
         try {
-            Term[] args = agent.prepareArguments(ia, l, copy);
-            Object result = ia.execute(agent, copy, args);
-            if (result instanceof Boolean b) {
-                return b ? single(copy) : Collections.emptyIterator();
-            }
-            if (result instanceof Iterator<?> it) {
-                return (Iterator<Unifier>) it;
-            }
-            return Collections.emptyIterator();
+            Term[] args = agent.prepareArguments(ia, l, u);
+            return ia.execute(agent, u, args);
         } catch (IaException e) {
             agent.warn(e.getMessage());
-            return Collections.emptyIterator();
+            return Boolean.FALSE;
         }
     }
 
     // ---- relational expressions ---------------------------------------------------------------
 
-    private Iterator<Unifier> relational(RelExpr r, Unifier u) {
+    /** {@return whether the relation holds; a unification is made in {@code u} (nothing when it fails)} */
+    boolean relational(RelExpr r, Unifier u) {
         Term x = u.apply(r.left());
         Term y = u.apply(r.right());
         switch (r.op()) {
-            case UNIFY: {
-                Unifier c = u.copy();
-                return c.unifies(x, y) ? single(c) : Collections.emptyIterator();
-            }
+            case UNIFY:
+                return u.unifies(x, y);
             case UNIV:
                 return univ(x, y, u);
             case EQ:
-                return x.equals(y) ? single(u.copy()) : Collections.emptyIterator();
+                return x.equals(y);
             case DIF:
-                return !x.equals(y) ? single(u.copy()) : Collections.emptyIterator();
+                return !x.equals(y);
             default:
                 int c = x.compareTo(y);
                 boolean ok;
@@ -215,30 +210,29 @@ public final class Solver {
                     case GT: ok = c > 0; break;
                     default: ok = c >= 0; break;
                 }
-                return ok ? single(u.copy()) : Collections.emptyIterator();
+                return ok;
         }
     }
 
     /** {@code T =.. L}: L is [namespace, functor, args, annots]; 2 and 3 elements also build. */
-    private Iterator<Unifier> univ(Term x, Term y, Unifier u) {
-        Unifier c = u.copy();
+    private static boolean univ(Term x, Term y, Unifier c) {
         if (x instanceof Literal l) {
             Term decomposed = ListTerm.of(Literal.atom("default"), Literal.atom(l.functor()),
                     ListTerm.of(l.args()), ListTerm.of(l.annots()));
-            return c.unifies(decomposed, y) ? single(c) : Collections.emptyIterator();
+            return c.unifies(decomposed, y);
         }
         if (x instanceof PlanTerm p) {
             // Jason's plan is the structure plan(Label, Trigger, Context, Body)
             Term label = p.label() == null ? new Var("_", Long.MIN_VALUE) : p.label();
             Term decomposed = ListTerm.of(label, new TriggerTerm(p.trigger()), p.contextOrTrue(), p.body());
-            return c.unifies(decomposed, y) ? single(c) : Collections.emptyIterator();
+            return c.unifies(decomposed, y);
         }
         if (x instanceof Var && y instanceof ListTerm list && list.elements().size() == 4
                 && list.elements().get(1) instanceof TriggerTerm tt) {
             List<Term> parts = list.elements();
             Term context = parts.get(2).equals(Literal.TRUE) ? null : parts.get(2);
             var built = new PlanTerm(parts.get(0), tt.trigger(), context, parts.get(3), null);
-            return c.unifies(x, built) ? single(c) : Collections.emptyIterator();
+            return c.unifies(x, built);
         }
         if (x instanceof Var && y instanceof ListTerm list) {
             List<Term> parts = list.elements();
@@ -257,143 +251,20 @@ public final class Solver {
                 args = parts.get(2);
                 annots = parts.get(3);
             } else {
-                return Collections.emptyIterator();
+                return false;
             }
             String name = functor instanceof Literal fl ? fl.functor()
                     : functor instanceof StringTerm s ? s.value() : null;
             if (name == null || !(args instanceof ListTerm al) || !(annots instanceof ListTerm nl)) {
-                return Collections.emptyIterator();
+                return false;
             }
             Literal built = new Literal(name, al.elements(), nl.elements(), false);
-            return c.unifies(x, built) ? single(c) : Collections.emptyIterator();
+            return c.unifies(x, built);
         }
         if (x instanceof NumberTerm || x instanceof StringTerm) {
-            return c.unifies(ListTerm.of(x), y) ? single(c) : Collections.emptyIterator();
+            return c.unifies(ListTerm.of(x), y);
         }
-        return Collections.emptyIterator();
+        return false;
     }
 
-    // ---- lazy iterator helpers -----------------------------------------------------------------
-
-    static Iterator<Unifier> single(Unifier u) {
-        return new Single(u);
-    }
-
-    /** One solution (a single object, where a singleton list and its iterator are two). */
-    private static final class Single implements Iterator<Unifier> {
-        private Unifier next;
-
-        Single(Unifier u) {
-            this.next = u;
-        }
-
-        @Override
-        public boolean hasNext() {
-            return next != null;
-        }
-
-        @Override
-        public Unifier next() {
-            if (next == null) {
-                throw new NoSuchElementException();
-            }
-            Unifier u = next;
-            next = null;
-            return u;
-        }
-    }
-
-    /** Lazily, the solutions of one source after another (the shape of {@code &} and of candidates). */
-    private abstract static class Chain implements Iterator<Unifier> {
-        private Iterator<Unifier> current = Collections.emptyIterator();
-
-        /** {@return the solutions of the next source, or null when there is none left} */
-        abstract Iterator<Unifier> nextSource();
-
-        @Override
-        public final boolean hasNext() {
-            while (!current.hasNext()) {
-                Iterator<Unifier> source = nextSource();
-                if (source == null) {
-                    return false;
-                }
-                current = source;
-            }
-            return true;
-        }
-
-        @Override
-        public final Unifier next() {
-            if (!hasNext()) {
-                throw new NoSuchElementException();
-            }
-            return current.next();
-        }
-    }
-
-    /** The solutions of one conjunct after another (one object per {@code &}). */
-    private final class Conjunction extends Chain {
-        private final Iterator<Unifier> left;
-        private final Term right;
-
-        Conjunction(Iterator<Unifier> left, Term right) {
-            this.left = left;
-            this.right = right;
-        }
-
-        @Override
-        Iterator<Unifier> nextSource() {
-            return left.hasNext() ? solve(right, left.next()) : null;
-        }
-    }
-
-    /** The solutions of a query against each candidate belief or rule in turn. */
-    private final class Candidates extends Chain {
-        private final List<BeliefBase.Entry> entries;
-        private final Literal query;
-        private final Unifier u;
-        private int next;
-
-        Candidates(List<BeliefBase.Entry> entries, Literal query, Unifier u) {
-            this.entries = entries;
-            this.query = query;
-            this.u = u;
-        }
-
-        @Override
-        Iterator<Unifier> nextSource() {
-            return next == entries.size() ? null : match(query, entries.get(next++), u);
-        }
-    }
-
-    /** The first iterator's solutions, then the second's (computed only when reached). */
-    private static final class Concat implements Iterator<Unifier> {
-        private final Iterator<Unifier> first;
-        private final java.util.function.Supplier<Iterator<Unifier>> second;
-        private Iterator<Unifier> rest;
-
-        Concat(Iterator<Unifier> first, java.util.function.Supplier<Iterator<Unifier>> second) {
-            this.first = first;
-            this.second = second;
-        }
-
-        @Override
-        public boolean hasNext() {
-            if (first.hasNext()) {
-                return true;
-            }
-            if (rest == null) {
-                rest = second.get();
-            }
-            return rest.hasNext();
-        }
-
-        @Override
-        public Unifier next() {
-            if (!hasNext()) {
-                throw new NoSuchElementException();
-            }
-            return first.hasNext() ? first.next() : rest.next();
-        }
-    }
 }

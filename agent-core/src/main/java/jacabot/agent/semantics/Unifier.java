@@ -62,6 +62,44 @@ public final class Unifier {
         }
     }
 
+    // ---- the trail, for the solver: bindings only append, so a mark is a size ---------------------
+
+    int size() {
+        return bindings.size();
+    }
+
+    /** Undoes every binding made since the unifier had {@code mark} bindings. */
+    void undoTo(int mark) {
+        bindings.truncate(mark);
+    }
+
+    /** {@return the bindings made since {@code mark}} */
+    Object[] bindingsSince(int mark) {
+        return bindings.suffix(mark);
+    }
+
+    /** Makes the bindings of a {@link #bindingsSince} again. */
+    void rebind(Object[] pairs) {
+        bindings.append(pairs);
+    }
+
+    /** {@return the variable's own binding (one step, not dereferenced), or null} */
+    Term binding(Var v) {
+        return bindings.get(v);
+    }
+
+    /** {@return a new unifier with this one's first {@code mark} bindings and then {@code pairs}} */
+    Unifier prefixWith(int mark, Object[] pairs) {
+        var u = new Unifier(bindings.prefix(mark), evaluator);
+        u.bindings.append(pairs);
+        return u;
+    }
+
+    /** {@return whether the variable was bound once the unifier had {@code mark} bindings} */
+    boolean boundSince(Var v, int mark) {
+        return bindings.position(v) >= mark;
+    }
+
     public boolean isEmpty() {
         return bindings.isEmpty();
     }

@@ -1,0 +1,456 @@
+package jacabot.agent.semantics;
+
+import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.LogExpr;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.StringTerm;
+import jacabot.agent.syntax.RelExpr;
+import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.Iterator;
+import java.util.List;
+
+/**
+ * The proof of one formula, solution after solution in Jason's order (depth first, left to right,
+ * beliefs and rules in belief-base order). It works on one unifier whose bindings are a trail: a
+ * resolution step only appends bindings, and backtracking cuts them back to a choice point's mark.
+ * The goals still to prove are a linked list shared by the choice points, so a step copies neither
+ * bindings nor goals. A choice point is popped before its last alternative is tried, so a
+ * recursive clause called last (as in {@code ancestor/2}) leaves nothing behind: memory follows the
+ * live proof, and time the number of steps.
+ */
+final class Proof {
+    /** The deepest nesting of rules a proof may reach (system property jacabot.maxProofDepth). */
+    static final int MAX_DEPTH = Integer.getInteger("jacabot.maxProofDepth", 100_000);
+
+    /** A too deep proof: handled where the JVM's stack overflow was (error(stack_overflow)). */
+    static final class TooDeep extends StackOverflowError {
+        private static final long serialVersionUID = 1L;
+
+        TooDeep() {
+            super("a proof nested more than " + MAX_DEPTH + " rules (-Djacabot.maxProofDepth)");
+        }
+    }
+
+    /** Goals still to prove, first first, each with the depth of rules it comes from. */
+    private static final class Goals {
+        final Term goal;
+        final Goals next;
+        final int depth;
+
+        Goals(Term goal, Goals next, int depth) {
+            this.goal = goal;
+            this.next = next;
+            this.depth = depth;
+        }
+    }
+
+    /** A choice point: the trail mark and the goals after the choice. */
+    private abstract static class Choice {
+        final int mark;
+        final Goals rest;
+
+        Choice(int mark, Goals rest) {
+            this.mark = mark;
+            this.rest = rest;
+        }
+
+        /**
+         * Takes the next alternative (bindings are back at the mark). {@return whether one
+         * succeeded}; a choice with no alternative left has popped itself
+         */
+        abstract boolean resume(Proof p);
+    }
+
+    private final Solver solver;
+    private final Unifier w;
+    private final int base;
+    private final Term formula;
+    private final int startDepth;
+    private final ArrayList<Choice> choices = new ArrayList<>();
+    private Goals goals;
+    private boolean started;
+    private List<Var> formulaVars;
+
+    /** A proof that works in {@code w}, beginning with its bindings as they are now. */
+    Proof(Solver solver, Term formula, Unifier w, int depth) {
+        this.solver = solver;
+        this.w = w;
+        this.base = w.size();
+        this.formula = formula;
+        this.startDepth = depth;
+    }
+
+    /**
+     * Moves to the next solution, whose bindings are then in the unifier. {@return false when
+     * there is none left} (the unifier is then as it was)
+     */
+    boolean next() {
+        boolean found;
+        if (!started) {
+            started = true;
+            goals = new Goals(formula, null, startDepth);
+            found = run();
+        } else {
+            found = backtrack() && run();
+        }
+        if (!found) {
+            w.undoTo(base);
+        }
+        return found;
+    }
+
+    /** Keeps only the current solution's answer in the unifier (see {@link #answer}). */
+    void keepAnswer() {
+        Object[] answer = answer();
+        w.undoTo(base);
+        w.rebind(answer);
+    }
+
+    /** {@return the current solution as a new unifier: the first bindings and the answer} */
+    Unifier solution() {
+        return w.prefixWith(base, answer());
+    }
+
+    /**
+     * The bindings the current solution gives the formula's variables, each to its final value
+     * (chains through renamed rule variables are cut short). What only the rules' own variables
+     * were bound to is left out, as Jason's rule solutions leave it out, so a solution's size
+     * is the size of the answer, not of the proof.
+     */
+    private Object[] answer() {
+        if (formulaVars == null) {
+            var vars = new ArrayList<Var>();
+            formula.collectVars(vars::add);
+            formulaVars = vars;
+        }
+        var pairs = new ArrayList<Object>();
+        // in the formula's order, then in the order the values name them
+        var seen = new HashSet<Var>(formulaVars);
+        var todo = new ArrayDeque<Var>(formulaVars);
+        while (!todo.isEmpty()) {
+            Var v = todo.poll();
+            Term b = w.binding(v);
+            if (b == null) {
+                continue;
+            }
+            Term value = b;
+            if (w.boundSince(v, base)) {
+                value = w.deref(b);
+                pairs.add(v);
+                pairs.add(value);
+            }
+            if (value instanceof Var x) {
+                if (seen.add(x)) {
+                    todo.add(x);
+                }
+            } else if (!value.isGround()) {
+                value.collectVars(x -> {
+                    if (seen.add(x)) {
+                        todo.add(x);
+                    }
+                });
+            }
+        }
+        return pairs.toArray();
+    }
+
+    private boolean run() {
+        while (goals != null) {
+            Goals g = goals;
+            goals = g.next;
+            if (!step(g.goal, g.depth) && !backtrack()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean backtrack() {
+        while (!choices.isEmpty()) {
+            Choice c = choices.get(choices.size() - 1);
+            w.undoTo(c.mark);
+            if (c.resume(this)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void pop(Choice c) {
+        if (!choices.isEmpty() && choices.get(choices.size() - 1) == c) {
+            choices.remove(choices.size() - 1);
+        }
+    }
+
+    /** One goal: {@return false when it fails here} (goals then holds what follows it) */
+    private boolean step(Term goal, int depth) {
+        Term f = w.deref(goal);
+        if (f instanceof AnnotatedVar av) {
+            Term value = w.apply(av);
+            if (!(value instanceof Literal)) {
+                return branch(solver.annotated(av, w), w.size());
+            }
+            f = value;
+        }
+        if (f instanceof Literal l) {
+            if (l.isAtom() && l.functor().equals("true")) {
+                return true;
+            }
+            if (l.isAtom() && l.functor().equals("false")) {
+                return false;
+            }
+            return l.isInternalAction() ? internalAction(l) : literal(l, depth);
+        }
+        if (f instanceof LogExpr e) {
+            switch (e.op()) {
+                case NOT: {
+                    int mark = w.size();
+                    boolean provable = new Proof(solver, e.left(), w, depth).next();
+                    w.undoTo(mark);
+                    return !provable;
+                }
+                case AND:
+                    goals = new Goals(e.left(), new Goals(e.right(), goals, depth), depth);
+                    return true;
+                default:
+                    choices.add(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
+                    goals = new Goals(e.left(), goals, depth);
+                    return true;
+            }
+        }
+        if (f instanceof RelExpr r) {
+            return solver.relational(r, w);
+        }
+        return false;
+    }
+
+    private boolean literal(Literal l, int depth) {
+        Literal q = plain(l) ? l : (Literal) w.apply(l);
+        List<BeliefBase.Entry> candidates = solver.candidates(q, w);
+        switch (candidates.size()) {
+            case 0:
+                return false;
+            case 1:
+                return enter(q, candidates.get(0), goals, depth);
+            default:
+                var c = new Candidates(w.size(), goals, q, candidates, depth);
+                choices.add(c);
+                return c.resume(this);
+        }
+    }
+
+    /**
+     * {@return whether the term has nothing to evaluate (no arithmetic)} Unifying such a query as
+     * it is does what unifying it applied would, since unification follows bound variables
+     * itself; applying it would copy the values bound so far, which grow with the proof in
+     * recursions like {@code p(X) :- p(f(X))}.
+     */
+    private static boolean plain(Term t) {
+        while (t instanceof ListTerm.Cons c) {
+            if (!plain(c.head())) {
+                return false;
+            }
+            t = c.tail();
+        }
+        if (t instanceof Literal l) {
+            for (int i = 0, n = l.arity(); i < n; i++) {
+                if (!plain(l.arg(i))) {
+                    return false;
+                }
+            }
+            List<Term> annots = l.annots();
+            for (int i = 0, n = annots.size(); i < n; i++) {
+                if (!plain(annots.get(i))) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        return t instanceof Var || t instanceof NumberTerm || t instanceof StringTerm || t instanceof ListTerm.Empty;
+    }
+
+    /** Resolves the query with one belief or rule; the goals become {@code rest} after it. */
+    private boolean enter(Literal q, BeliefBase.Entry e, Goals rest, int depth) {
+        int mark = w.size();
+        if (e.rule() != null) {
+            Rule r = e.rule();
+            Solver.Renaming renaming = solver.renaming(e);
+            Literal head = (Literal) renaming.map(r.head());
+            if (!w.unifiesIgnoringAnnots(q, head)) {
+                return false;
+            }
+            if (!q.annots().isEmpty() && !w.unifies(q, head)) {
+                w.undoTo(mark);
+                return false;
+            }
+            if (depth >= MAX_DEPTH) {
+                throw new TooDeep();
+            }
+            // the body is renamed only once the head matched
+            goals = new Goals(renaming.map(r.body()), rest, depth + 1);
+            return true;
+        }
+        Literal belief = e.isGround() ? e.literal() : solver.renameApart(e.literal());
+        if (!w.unifiesIgnoringAnnots(q, belief)) {
+            return false;
+        }
+        goals = rest;
+        if (q.annots().isEmpty()) {
+            return true;
+        }
+        var ways = new ArrayList<Object[]>(1);
+        matchAnnots(q.annots(), 0, belief.annots(), new boolean[belief.annots().size()], mark, ways);
+        w.undoTo(mark);
+        return branch(ways, mark);
+    }
+
+    /** Every way of matching each query annotation with a distinct belief annotation, in order. */
+    private void matchAnnots(List<Term> query, int i, List<Term> belief, boolean[] used, int mark, List<Object[]> out) {
+        if (i == query.size()) {
+            out.add(w.bindingsSince(mark));
+            return;
+        }
+        for (int j = 0; j < belief.size(); j++) {
+            int m = w.size();
+            if (!used[j] && w.unifies(query.get(i), belief.get(j))) {
+                used[j] = true;
+                matchAnnots(query, i + 1, belief, used, mark, out);
+                used[j] = false;
+                w.undoTo(m);
+            }
+        }
+    }
+
+    /** Goes on with the first of several sets of bindings (made since {@code mark}), the others left as a choice. */
+    private boolean branch(List<Object[]> ways, int mark) {
+        if (ways.isEmpty()) {
+            return false;
+        }
+        w.rebind(ways.get(0));
+        if (ways.size() > 1) {
+            choices.add(new Ways(mark, goals, ways));
+        }
+        return true;
+    }
+
+    @SuppressWarnings("unchecked")
+    private boolean internalAction(Literal l) {
+        InternalAction ia = solver.internalAction(l);
+        if (ia == null) {
+            return false;
+        }
+        int mark = w.size();
+        // the action gets its own unifier: an action answering with an iterator keeps it
+        Unifier own = w.copy();
+        Object result = solver.execute(ia, l, own);
+        if (result instanceof Boolean b) {
+            if (b) {
+                w.rebind(own.bindingsSince(mark));
+            }
+            return b;
+        }
+        if (result instanceof Iterator<?> it) {
+            var c = new Solutions(mark, goals, (Iterator<Unifier>) it);
+            choices.add(c);
+            return c.resume(this);
+        }
+        return false;
+    }
+
+    // ---- choice points ---------------------------------------------------------------------------
+
+    /** The right side of {@code |}. */
+    private static final class Alternative extends Choice {
+        Alternative(int mark, Goals rest) {
+            super(mark, rest);
+        }
+
+        @Override
+        boolean resume(Proof p) {
+            p.pop(this);
+            p.goals = rest;
+            return true;
+        }
+    }
+
+    /** The beliefs and rules left for a query. */
+    private static final class Candidates extends Choice {
+        private final Literal query;
+        private final List<BeliefBase.Entry> entries;
+        private final int depth;
+        private int next;
+
+        Candidates(int mark, Goals rest, Literal query, List<BeliefBase.Entry> entries, int depth) {
+            super(mark, rest);
+            this.query = query;
+            this.entries = entries;
+            this.depth = depth;
+        }
+
+        @Override
+        boolean resume(Proof p) {
+            while (next < entries.size()) {
+                BeliefBase.Entry e = entries.get(next++);
+                if (next == entries.size()) {
+                    p.pop(this);
+                }
+                if (p.enter(query, e, rest, depth)) {
+                    return true;
+                }
+                p.w.undoTo(mark);
+            }
+            p.pop(this);
+            return false;
+        }
+    }
+
+    /** Sets of bindings left to try (annotation matches, beliefs of an annotated variable). */
+    private static final class Ways extends Choice {
+        private final List<Object[]> ways;
+        private int next = 1;
+
+        Ways(int mark, Goals rest, List<Object[]> ways) {
+            super(mark, rest);
+            this.ways = ways;
+        }
+
+        @Override
+        boolean resume(Proof p) {
+            Object[] way = ways.get(next++);
+            if (next == ways.size()) {
+                p.pop(this);
+            }
+            p.w.rebind(way);
+            p.goals = rest;
+            return true;
+        }
+    }
+
+    /** The solutions an internal action gives, each a unifier extending the one it was given. */
+    private static final class Solutions extends Choice {
+        private final Iterator<Unifier> it;
+
+        Solutions(int mark, Goals rest, Iterator<Unifier> it) {
+            super(mark, rest);
+            this.it = it;
+        }
+
+        @Override
+        boolean resume(Proof p) {
+            if (!it.hasNext()) {
+                p.pop(this);
+                return false;
+            }
+            p.w.rebind(it.next().bindingsSince(mark));
+            p.goals = rest;
+            return true;
+        }
+    }
+}
