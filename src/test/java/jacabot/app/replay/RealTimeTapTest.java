@@ -132,11 +132,13 @@ class RealTimeTapTest {
             run.runner().stop();
             assertNull(tap.closeLog());
         }
-        assertTrue(!statuses.isEmpty() && statuses.get(0).matches("LAG: world [0-9.]+ s behind real time \\(×100000 requested.*"),
-                statuses.toString());
+        // on a loaded machine the agent may fall behind the world before the world falls behind real time
+        assertTrue(!statuses.isEmpty() && statuses.get(0).matches(
+                "LAG: (world [0-9.]+ s behind real time \\(×100000 requested|agent [0-9.]+ s behind the world).*"), statuses.toString());
         String warned = warnings.toString(StandardCharsets.UTF_8);
         assertEquals(1, warned.lines().count(), "one warning, not a flood: " + warned);
-        assertTrue(warned.startsWith("warning: at t=") && warned.contains("s behind real time (x100000 requested"), warned);
+        assertTrue(warned.startsWith("warning: at t=") && (warned.contains("s behind real time (x100000 requested")
+                || warned.contains("s behind the world")), warned);
         var lags = new java.util.ArrayList<StepLog.Lag>();
         try (var reader = new StepLog.Reader(out.resolve(StepLog.FILE))) {
             for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
