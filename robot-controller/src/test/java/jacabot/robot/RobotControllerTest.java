@@ -162,7 +162,11 @@ class RobotControllerTest {
         assertFalse(controller.isConnected());
         try (var peer = middleware.accept(Protocol.VERSION)) { // the real one is taken
             peer.awaitWheels(0, 0);
-            assertEquals(1, controller.connections());
+            long counted = System.nanoTime() + TimeUnit.SECONDS.toNanos(10); // the controller counts it on its own thread
+            while (controller.connections() < 1 && System.nanoTime() < counted) {
+                Thread.sleep(10);
+            }
+            assertEquals(1, controller.connections(), "the refused stranger is not counted");
         }
     }
 }
