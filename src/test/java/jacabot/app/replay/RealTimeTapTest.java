@@ -147,9 +147,12 @@ class RealTimeTapTest {
                 }
             }
         }
-        assertEquals(List.of("start", "end"), lags.stream().map(StepLog.Lag::state).collect(java.util.stream.Collectors.toList()),
-                lags.toString());
-        assertTrue(lags.get(1).worldBehindMs() > jacabot.app.run.LagMeter.THRESHOLD_MS && lags.get(1).requested() == 100_000,
-                lags.toString());
+        // one episode, or (loaded machine) an agent episode that ended before the world's began
+        assertTrue(!lags.isEmpty() && lags.size() % 2 == 0, lags.toString());
+        for (int k = 0; k < lags.size(); k++) {
+            assertEquals(k % 2 == 0 ? "start" : "end", lags.get(k).state(), lags.toString());
+        }
+        StepLog.Lag last = lags.get(lags.size() - 1);
+        assertTrue(last.worldBehindMs() > jacabot.app.run.LagMeter.THRESHOLD_MS && last.requested() == 100_000, lags.toString());
     }
 }
