@@ -4,6 +4,7 @@ import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
@@ -71,10 +72,10 @@ final class BodyExecutor {
                 constraint(i, im, step, term);
                 break;
             case ACHIEVE:
-                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, prepareForEvent(term, im, im)), i));
+                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, withDeadline(prepareForEvent(term, im, im))), i));
                 break;
             case ACHIEVE_NEW_FOCUS:
-                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, prepareForEvent(term, im, null)), null));
+                c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, withDeadline(prepareForEvent(term, im, null))), null));
                 rc.removeActionReQueue(i);
                 break;
             case TEST:
@@ -232,6 +233,20 @@ final class BodyExecutor {
         } else {
             rc.removeActionReQueue(i);
         }
+    }
+
+    /**
+     * Jason's {@code !g[hard_deadline(T)]}: g fails with {@code error(deadline_reached)} when it is
+     * still pursued T ms (on the agent's clock) after it was posted.
+     */
+    private Literal withDeadline(Literal goal) {
+        Literal d = goal.getAnnot("hard_deadline");
+        if (d != null && d.arity() == 1 && d.args().get(0) instanceof NumberTerm n) {
+            long ms = (long) n.value();
+            ag.schedule(ag.clock().millis() + ms, () -> new GoalDropper(ag, GoalDropper.Mode.FAIL, goal, "deadline_reached",
+                    "hard deadline of " + ms + " ms reached").drop());
+        }
+        return goal;
     }
 
     /**

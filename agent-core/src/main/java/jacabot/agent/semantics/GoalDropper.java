@@ -28,11 +28,20 @@ public final class GoalDropper {
         }
     }
 
+    private final String error, message;
+
     public GoalDropper(Agent ag, Mode mode, Literal goal) {
+        this(ag, mode, goal, "ia_failed", "");
+    }
+
+    /** A dropper whose failure event carries {@code error(Error)} and {@code error_msg(Message)}. */
+    public GoalDropper(Agent ag, Mode mode, Literal goal, String error, String message) {
         this.ag = ag;
         this.mode = mode;
         this.goal = goal;
         this.trigger = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+        this.error = error;
+        this.message = message;
     }
 
     public void drop() {
@@ -124,8 +133,8 @@ public final class GoalDropper {
         }
         if (failEvent != null) {
             Literal lit = (Literal) failEvent.trigger().literal();
-            List<Term> annots = List.of(Literal.of("error", Literal.atom("ia_failed")),
-                    Literal.of("error_msg", new StringTerm("")));
+            List<Term> annots = List.of(Literal.of("error", Literal.atom(error)),
+                    Literal.of("error_msg", new StringTerm(message)));
             ag.circumstance().addEvent(new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i));
             return 2;
         }
