@@ -175,16 +175,7 @@ class LocalMASTest {
                 """);
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: s #2; c; }\n");
         var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
-        Thread runner = new Thread(() -> {
-            try {
-                launched.runStepping();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        runner.setDaemon(true);
-        runner.start();
-        runner.join(20_000);
+        runFor20s(launched, true);
         assertTrue(launched.isStopped(), "the project reaches .stopMAS");
         assertEquals(List.of("[c] told(\"seller\") by df", "[c] told(\"seller\") by df", "[c] [s1,s2]", "[c] []", "[c] [s1,s2]"), lines());
     }
@@ -220,16 +211,7 @@ class LocalMASTest {
                 """);
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: idle; s; }\n");
         var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
-        Thread runner = new Thread(() -> {
-            try {
-                launched.runThreads();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        runner.setDaemon(true);
-        runner.start();
-        runner.join(20_000);
+        runFor20s(launched, false);
         assertTrue(launched.isStopped(), "the project stops after the deadline");
         var idle = lines().stream().filter(l -> l.startsWith("[idle]")).collect(Collectors.toList());
         assertEquals(List.of("[idle] sleeping", "[idle] awaking", "[idle] hi(1) from s believed: 0", "[idle] sleeping",
@@ -254,16 +236,7 @@ class LocalMASTest {
         Files.writeString(dir.resolve("worker.asl"), "!start.\n+!start <- .print(started).\n");
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: boss; }\n");
         var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
-        Thread runner = new Thread(() -> {
-            try {
-                launched.runThreads();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        runner.setDaemon(true);
-        runner.start();
-        runner.join(20_000);
+        runFor20s(launched, false);
         assertTrue(launched.isStopped(), "the project reaches .stopMAS");
         assertEquals(List.of("[w] started", "[w] hello(1) from boss", "[w] bye", "[boss] [boss,w]", "[boss] [boss]"), lines());
     }
@@ -280,9 +253,20 @@ class LocalMASTest {
                 """);
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: main; }\n");
         var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(dir.resolve("p.mas2j"));
+        runFor20s(launched, false);
+        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
+        assertEquals(List.of("[main] added(40) in main", "[bob] 10 : 41 from main"), lines());
+    }
+
+    /** Runs the project on a daemon thread, stepping or a thread per agent, for at most 20 s (its .stopMAS ends it sooner). */
+    private static void runFor20s(LocalMAS launched, boolean stepping) throws InterruptedException {
         Thread runner = new Thread(() -> {
             try {
-                launched.runThreads();
+                if (stepping) {
+                    launched.runStepping();
+                } else {
+                    launched.runThreads();
+                }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -290,7 +274,5 @@ class LocalMASTest {
         runner.setDaemon(true);
         runner.start();
         runner.join(20_000);
-        assertTrue(launched.isStopped(), "the project reaches .stopMAS");
-        assertEquals(List.of("[main] added(40) in main", "[bob] 10 : 41 from main"), lines());
     }
 }
