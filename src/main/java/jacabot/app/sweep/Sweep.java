@@ -32,7 +32,7 @@ public final class Sweep {
     private ConsoleLog progress;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
-    private final Map<jacabot.robot.Experiment, String[]> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
+    private final Map<jacabot.robot.Experiment, SweepRun.Agent> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
 
     /**
      * What a sweep leaves: every outcome (in job order), the wall-clock time it took, the CPU time
@@ -96,7 +96,7 @@ public final class Sweep {
 
     /** Runs {@code source} (named {@code file} in messages) as the agent of experiment {@code e}, not the packaged one. */
     public Sweep agent(jacabot.robot.Experiment e, String source, String file) {
-        agents.put(e, new String[] {source, file});
+        agents.put(e, new SweepRun.Agent(source, file));
         return this;
     }
 
@@ -120,9 +120,9 @@ public final class Sweep {
             futures.put(done.submit(() -> {
                 started.put(index, System.nanoTime());
                 SweepJob job = list.get(index);
-                String[] agent = agents.get(job.experiment());
-                SweepRun.Result r = agent == null ? SweepRun.run(job, seconds, wallLimitS)
-                        : SweepRun.run(job, seconds, wallLimitS, agent[0], agent[1]);
+                SweepRun.Agent given = agents.get(job.experiment()); // read only once the jobs run
+                SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS,
+                        given != null ? given : SweepRun.Agent.packaged(job.experiment()));
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

@@ -72,11 +72,19 @@ public final class SweepRun {
      * @param wallLimitS  wall-clock bound in seconds
      */
     public static Result run(SweepJob job, double seconds, double wallLimitS) {
-        return run(job, seconds, wallLimitS, agentSource(job.experiment()), job.experiment().id() + ".asl");
+        return run(job, seconds, wallLimitS, Agent.packaged(job.experiment()));
     }
 
-    /** Runs a job with the agent {@code agentSource} (named {@code agentFile} in messages) instead of the packaged one. */
-    public static Result run(SweepJob job, double seconds, double wallLimitS, String agentSource, String agentFile) {
+    /** An agent's program text and the file that names it in messages. */
+    public record Agent(String source, String file) {
+        /** {@return the packaged agent of an experiment} */
+        public static Agent packaged(Experiment e) {
+            return new Agent(agentSource(e), e.id() + ".asl");
+        }
+    }
+
+    /** Runs a job with the given agent (the experiment's packaged one, or a user's). */
+    public static Result run(SweepJob job, double seconds, double wallLimitS, Agent agent) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -106,7 +114,7 @@ public final class SweepRun {
         String message = "";
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
-                var run = new LockstepRun(world, null, e, agentSource, agentFile, job.seed(),
+                var run = new LockstepRun(world, null, e, agent.source(), agent.file(), job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false);
                 run.runFor(seconds);
             } else {
