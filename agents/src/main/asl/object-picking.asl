@@ -105,7 +105,7 @@ legSpeed(V) :- not picked(true) & cruiseSpeed(V).
 +!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding; !afterAvoid.
 +!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding; !afterAvoid.
 // (issue 13) homing on a far cylinder when the obstacle came: go round it first
-+!afterAvoid : homing(_) & not delivering <- !goRound.
++!afterAvoid : homing(_) <- !goRound.
 +!afterAvoid.
 
 /* Random motion, suspended while a more relevant task runs */
