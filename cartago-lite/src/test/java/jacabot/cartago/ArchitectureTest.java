@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     @Test
     void packagesDependOneWayAndNeverUpwards() {
-        PackageLayers.of("jacabot.cartago", "", "remote", "examples", "bridge")
+        PackageLayers.of("jacabot.cartago", "", "tools", "remote", "examples", "bridge")
                 .mustNotUse("jacabot.robot..", "jacabot.sim..", "jacabot.experiments..", "jacabot.app..")
                 .check();
     }
