@@ -101,9 +101,7 @@ public abstract class GUIArtifact extends Artifact {
         try {
             setup();
         } catch (HeadlessException e) {
-            failed("no display: " + getClass().getName()
-                    + " opens a window, and this Java runs without a display (DISPLAY unset, or java.awt.headless)",
-                    "no_display");
+            failed("no display for its window (DISPLAY unset, or java.awt.headless)", "no_display");
         }
     }
 

@@ -170,6 +170,55 @@ class JacaExamplesTest {
                 run("07b-shell").lines());
     }
 
+    private static final String NO_DISPLAY =
+            "[gui_user] init of demo.NumberWindow failed: no display for its window (DISPLAY unset, or java.awt.headless)";
+
+    /**
+     * Without a display (CI) the window cannot open and the agent says so in one line; with one,
+     * the test works the window through the system's own events (java.awt.Robot): ok, a number
+     * typed with ENTER, ok again, a drag, then closing the window, which stops the agent.
+     */
+    @Test
+    void aSwingWindowAsAnArtifact() throws Exception {
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            assertEquals(List.of(NO_DISPLAY), run("07a-gui").lines());
+            return;
+        }
+        var done = new java.util.concurrent.CompletableFuture<ProjectRun>();
+        new Thread(() -> {
+            try {
+                done.complete(run("07a-gui"));
+            } catch (Throwable t) {
+                done.completeExceptionally(t);
+            }
+        }, "07a-gui").start();
+        javax.swing.JFrame frame = SwingDriver.frame("jacabot: 07a GUI", done);
+        var number = SwingDriver.find(frame, javax.swing.JTextField.class, "number");
+        var ok = SwingDriver.find(frame, javax.swing.JButton.class, "ok");
+        var pad = SwingDriver.find(frame, javax.swing.JPanel.class, "pad");
+        SwingDriver driver = new SwingDriver();
+        driver.click(ok);
+        driver.waitForText(number, "1");          // the agent answered ok with setValue(0 + 1)
+        driver.click(number);
+        driver.type(number, "41");
+        driver.click(ok);
+        driver.waitForText(number, "42");         // ENTER made value 41, then ok added one
+        driver.drag(pad);
+        javax.swing.SwingUtilities.invokeAndWait(() -> frame.dispatchEvent(
+                new java.awt.event.WindowEvent(frame, java.awt.event.WindowEvent.WINDOW_CLOSING)));
+        ProjectRun run = done.get(60, java.util.concurrent.TimeUnit.SECONDS);
+        List<String> lines = run.lines();
+        List<String> values = lines.stream().filter(l -> !l.contains("mouse dragged")).toList();
+        // the first value comes with the focus, a percept: the plan's next println may come first
+        assertEquals(java.util.Set.of("[gui_user] value is now 0",
+                "[gui_user] type a number and ENTER, press ok to add one, drag the mouse; close the window to stop"),
+                java.util.Set.copyOf(values.subList(0, 2)), run.output);
+        assertEquals(List.of("[gui_user] value is now 1", "[gui_user] value is now 41", "[gui_user] value is now 42",
+                "[gui_user] window closed"), values.subList(2, values.size()), run.output);
+        assertTrue(lines.stream().anyMatch(l -> l.matches("\\[gui_user\\] mouse dragged to \\d+,\\d+")), run.output);
+        assertEquals("[gui_user] window closed", lines.get(lines.size() - 1), run.output);
+    }
+
     @Test
     void socketsWrappedInArtifacts() throws Exception {
         assertEquals(List.of("[receiver] received hello1", "[receiver] received hello2", "[receiver] received hello3"),
