@@ -282,6 +282,35 @@ class GUIArtifactTest {
         }
     }
 
+    /** Links a button, then fails to start. */
+    public static class Unfinished extends GUIArtifact {
+        @Override
+        public void setup() {
+            linkActionEventToOp(new JButton("ok"), "okPressed");
+            throw new IllegalStateException("cannot finish");
+        }
+
+        @INTERNAL_OPERATION
+        void okPressed(ActionEvent e) {
+        }
+    }
+
+    @Test
+    void anArtifactThatFailsToStartLeavesNoEventThread() throws Exception {
+        try (Fixture f = new Fixture()) {
+            var failure = Calls.failure(f.ws, f.agent, OpTarget.any(), "makeArtifact", "u", Unfinished.class.getName(),
+                    new Object[0], new OpFeedbackParam<>());
+            assertEquals("init of " + Unfinished.class.getName() + " failed: java.lang.IllegalStateException: cannot finish",
+                    failure.message());
+            for (Thread t : Thread.getAllStackTraces().keySet()) {
+                if (t.getName().equals("gui-events-u")) {
+                    t.join(10_000);
+                    assertFalse(t.isAlive(), "the event thread of the artifact that never started still runs");
+                }
+            }
+        }
+    }
+
     /** Opens a window in setup, as CArtAgO's GUI artifacts do. */
     public static class Windowed extends GUIArtifact {
         JFrame frame;

@@ -95,13 +95,18 @@ public abstract class GUIArtifact extends Artifact {
 
     /**
      * Calls {@link #setup()}. Without a display, a window cannot be made: the artifact then fails
-     * to start with the reason {@code no_display}, in one line.
+     * to start with the reason {@code no_display}, in one line. An artifact that fails to start is
+     * never disposed, so its event thread is stopped here.
      */
     protected void init() {
         try {
             setup();
         } catch (HeadlessException e) {
+            stop();
             failed("no display for its window (DISPLAY unset, or java.awt.headless)", "no_display");
+        } catch (RuntimeException | Error e) {
+            stop();
+            throw e;
         }
     }
 
@@ -377,6 +382,10 @@ public abstract class GUIArtifact extends Artifact {
     /** Stops turning events into operations and disposes the main frame. */
     @Override
     protected void dispose() {
+        stop();
+    }
+
+    private void stop() {
         stopped = true;
         events.clear();
         synchronized (dispatcherLock) {
