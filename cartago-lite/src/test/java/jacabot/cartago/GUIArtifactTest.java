@@ -234,6 +234,28 @@ class GUIArtifactTest {
         }
     }
 
+    @Test
+    void inASteppedWorkspaceAnEventRunsAtARunPending() throws Exception {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            RecordingObserver obs = new RecordingObserver();
+            AgentId agent = ws.join("user", obs);
+            ArtifactId id = Calls.makeArtifact(ws, agent, "panel", NumberPanel.class);
+            ok(ws, agent, "focus", id);
+            ws.runPending();
+            obs.next(); // focused
+            NumberPanel panel = ws.artifactObject(id, NumberPanel.class).orElseThrow();
+            onEdt(panel.ok::doClick);
+            Thread.sleep(200);
+            assertEquals(List.of(), obs.drain(), "nothing runs between two runPending calls");
+            long deadline = System.currentTimeMillis() + 10_000;
+            while (obs.seen().size() < 2 && System.currentTimeMillis() < deadline) {
+                ws.runPending(); // the event's thread queues its operation when it gets the artifact
+                Thread.sleep(10);
+            }
+            obs.expect("panel !ok");
+        }
+    }
+
     /** Links to an operation it does not have. */
     public static class Misnamed extends GUIArtifact {
         @Override
