@@ -59,18 +59,22 @@ public abstract class GUIArtifact extends Artifact {
     private record Target(String name, Method method) {
     }
 
-    /** One event on its way to its operation; {@code seq} orders the operations' starts. */
+    /** An event the listener queued for its operation. */
+    private record Posted(Target target, String kind, EventObject event) {
+    }
+
+    /** An event given to its operation; {@code seq} orders the operations' starts. */
     static final class GUIEvent {
         private final long seq;
         private final Target target;
         private final String kind;
         private final EventObject event;
 
-        private GUIEvent(long seq, Target target, String kind, EventObject event) {
+        private GUIEvent(long seq, Posted posted) {
             this.seq = seq;
-            this.target = target;
-            this.kind = kind;
-            this.event = event;
+            this.target = posted.target();
+            this.kind = posted.kind();
+            this.event = posted.event();
         }
 
         @Override
@@ -82,7 +86,7 @@ public abstract class GUIArtifact extends Artifact {
     private final CommonEventListener listener = new CommonEventListener(this::post);
     /** Source, then event kind, to operation; written by the artifact, read on the event thread. */
     private final Map<Object, Map<String, Target>> links = new ConcurrentHashMap<>();
-    private final BlockingQueue<GUIEvent> events = new LinkedBlockingQueue<>();
+    private final BlockingQueue<Posted> events = new LinkedBlockingQueue<>();
     private volatile boolean stopped;
     private volatile JFrame mainFrame;
     private final Object dispatcherLock = new Object();
@@ -263,7 +267,7 @@ public abstract class GUIArtifact extends Artifact {
         Map<String, Target> kinds = links.get(event.getSource());
         Target target = kinds == null ? null : kinds.get(kind);
         if (target != null && !stopped) {
-            events.add(new GUIEvent(-1, target, kind, event));
+            events.add(new Posted(target, kind, event));
         }
     }
 
@@ -282,12 +286,12 @@ public abstract class GUIArtifact extends Artifact {
         long next = 0;
         try {
             while (!stopped) {
-                GUIEvent queued = events.take();
+                Posted posted = events.take();
                 beginExternalSession();
                 boolean ok = false;
                 try {
                     if (!stopped) {
-                        execInternalOp("handleGUIEvent", new GUIEvent(next++, queued.target, queued.kind, queued.event));
+                        execInternalOp("handleGUIEvent", new GUIEvent(next++, posted));
                     }
                     ok = true;
                 } finally {
