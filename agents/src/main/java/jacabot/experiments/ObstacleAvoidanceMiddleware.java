@@ -31,7 +31,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /** The front sensors' levels for obstacle(true) and for clear again (default {@value #WARNING}, {@value #SAFE}). */
-    private double warning = WARNING, safe = SAFE;
+    private double warning = WARNING, safe = SAFE, deltaLimit = DELTA_LIMIT;
 
     /** Sets the levels (issue 13: the agent's beliefs, not Java constants); the warning must exceed the safe level. */
     @jacabot.cartago.OPERATION
@@ -42,6 +42,16 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
         warning = warningLevel;
         safe = safeLevel;
+    }
+
+    /** Sets the left-right difference that signals an obstacle (default {@value #DELTA_LIMIT}); it must be positive. */
+    @jacabot.cartago.OPERATION
+    void deltaLimit(double limit) {
+        if (!(limit > 0)) {
+            failed("deltaLimit(Limit) needs Limit > 0, got " + limit);
+            return;
+        }
+        deltaLimit = limit;
     }
 
     @jacabot.cartago.OPERATION
@@ -103,9 +113,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
-            if (deltaBased && Math.abs(delta) > DELTA_LIMIT || right > warning || left > warning) {
+            if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning) {
                 obstacle = true;
-            } else if (right < safe && left < safe && Math.abs(delta) <= DELTA_LIMIT / 2 && clearAhead()) {
+            } else if (right < safe && left < safe && Math.abs(delta) <= deltaLimit / 2 && clearAhead()) {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
