@@ -10,8 +10,8 @@ import java.util.List;
 /**
  * What the robot is told about its world when it starts (issue 13): the landmarks of the world
  * file become initial beliefs, so no coordinate is written in an agent. {@code arena(Width, Depth)}
- * (centred on the origin), {@code storagePoint(X, Z)} and {@code charger(X, Z)} when the world has
- * them, in the GPS coordinates of {@code location(X, Y, Z)}. A belief of the same name and arity
+ * (centred on the origin), {@code storagePoint(X, Z)} with {@code storageRadius(R)}, and
+ * {@code charger(X, Z)} when the world has them, in the GPS coordinates of {@code location(X, Y, Z)}. A belief of the same name and arity
  * in the program (e.g. the thesis' literal {@code storagePoint(0.41, -0.41)}) is replaced, as the
  * two-process set-up does with the {@code .mas2j} option {@code beliefs="..."}.
  */
@@ -25,6 +25,8 @@ public final class WorldBeliefs {
         out.add(Literal.of("arena", NumberTerm.of(spec.arena().width()), NumberTerm.of(spec.arena().depth())));
         if (spec.storage() != null) {
             out.add(Literal.of("storagePoint", NumberTerm.of(spec.storage().x()), NumberTerm.of(spec.storage().z())));
+            // how near the point a cylinder counts as delivered: the agent keeps clear of that area
+            out.add(Literal.of("storageRadius", NumberTerm.of(spec.storage().radius())));
         }
         if (spec.charger() != null) {
             out.add(Literal.of("charger", NumberTerm.of(spec.charger().x()), NumberTerm.of(spec.charger().z())));
