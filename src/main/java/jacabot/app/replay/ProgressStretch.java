@@ -13,14 +13,15 @@ import java.util.regex.Pattern;
  * target"). Progress is entering a coverage cell not entered before, or coming {@link #CLOSER} m
  * nearer than ever to the current target. The target is what the agent last came to believe as
  * {@code targetPoint(X, Z)} (the storage point, the charger, the marked point) or
- * {@code waypoint(X, Z, _)} (the sweep): beliefs of the Khepera agents, read from the step log's
- * mind changes. A run without them is judged by coverage alone.
+ * {@code waypoint(X, Z, _)} (the sweep), and the target point again once the sweep's waypoint is
+ * dropped: beliefs of the Khepera agents, read from the step log's mind changes. A run without
+ * them is judged by coverage alone.
  */
 public final class ProgressStretch {
     /** How much nearer than ever before the robot must come to its target, metres. */
     public static final double CLOSER = 0.02;
     private static final Pattern TARGET = Pattern.compile(
-            "(?:targetPoint|waypoint)\\((-?[0-9.]+(?:E-?[0-9]+)?),(-?[0-9.]+(?:E-?[0-9]+)?)[,)].*");
+            "(targetPoint|waypoint)\\((-?[0-9.]+(?:E-?[0-9]+)?),(-?[0-9.]+(?:E-?[0-9]+)?)[,)].*");
 
     /** A stretch without progress, simulated seconds. */
     public record Stretch(double fromS, double toS) {
@@ -35,19 +36,32 @@ public final class ProgressStretch {
     /** {@return the longest stretch without progress in the step log {@code file}, with coverage cells of {@code cell} m} */
     public static Stretch longest(Path file, double cell) throws IOException {
         Set<Long> cells = new HashSet<>();
-        double[] target = null;
+        double[] point = null, target = null;
         double nearest = Double.POSITIVE_INFINITY;
         double last = 0, t = 0;
         Stretch worst = new Stretch(0, 0);
         try (var reader = new StepLog.Reader(file)) {
             for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
                 t = s.timeMs() / 1000.0;
-                if (s.mind() != null && s.mind().added() != null) {
-                    for (var b : s.mind().added()) {
-                        Matcher m = TARGET.matcher(b.literal());
-                        if (m.matches()) {
-                            target = new double[] {Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2))};
-                            nearest = Double.POSITIVE_INFINITY;
+                if (s.mind() != null) {
+                    if (s.mind().removed() != null) {
+                        for (String b : s.mind().removed()) {
+                            if (b.startsWith("waypoint(") && target != point) {
+                                target = point;
+                                nearest = Double.POSITIVE_INFINITY;
+                            }
+                        }
+                    }
+                    if (s.mind().added() != null) {
+                        for (var b : s.mind().added()) {
+                            Matcher m = TARGET.matcher(b.literal());
+                            if (m.matches()) {
+                                target = new double[] {Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))};
+                                nearest = Double.POSITIVE_INFINITY;
+                                if (m.group(1).equals("targetPoint")) {
+                                    point = target;
+                                }
+                            }
                         }
                     }
                 }
