@@ -2,6 +2,7 @@ package jacabot.experiments.link;
 
 import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.Uplink;
 import java.io.IOException;
@@ -142,9 +143,21 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         return link;
     }
 
-    /** {@return the port listened on (the chosen one when configured with 0)} */
+    /**
+     * The middleware end of an in-process link ({@link MemoryLink}): no port, no handshake, no
+     * thread of its own. The controller's frames are handled on the thread that writes them, its
+     * simulation thread; for lockstep runs answered through {@link #handOver} and {@link #answerStep}.
+     */
+    public static MiddlewareLink inMemory(LinkConfig config, MemoryLink memory) {
+        MiddlewareLink link = new MiddlewareLink(config, null);
+        memory.listen(hello -> RobotConnection.attachInMemory(memory, hello, link, config, link.costs));
+        OPEN.add(link);
+        return link;
+    }
+
+    /** {@return the port listened on (the chosen one when configured with 0); 0 for an in-process link} */
     public int port() {
-        return server.getLocalPort();
+        return server == null ? 0 : server.getLocalPort();
     }
 
     public boolean isConnected() {
@@ -343,6 +356,9 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
      * agent holds the world still instead of letting it run without a mind.
      */
     public void acknowledgeWhenAlive(long step) {
+        if (server == null) {
+            throw new UnsupportedOperationException("an in-process link has no heartbeat thread to retry an acknowledgement");
+        }
         if (alive() && quiet()) {
             pendingAck = -1;
             acknowledge(step);
@@ -410,7 +426,9 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         OPEN.remove(this);
         closed = true;
         try {
-            server.close();
+            if (server != null) {
+                server.close();
+            }
         } catch (IOException e) {
             // closing anyway
         }
