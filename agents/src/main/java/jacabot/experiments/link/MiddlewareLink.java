@@ -35,6 +35,9 @@ import java.util.function.Consumer;
  * out while the agent reasons ({@link #setLiveness}), so the controller's fail-safe stops the robot
  * when the agent is stuck or dead, not only when this process is.
  *
+ * <p>{@link #inMemory} makes the same end for a controller of this process, over a
+ * {@link MemoryLink} instead of a socket (sweeps): no port, no handshake, no threads.
+ *
  * <p>For CArtAgO: one {@link #receive()} is one {@code await(IBlockingCmd)}: its {@code exec()}
  * blocks until the next reading, step marker or connection change arrives.
  *

@@ -26,6 +26,8 @@ import java.util.List;
  * reads its sensor data stream, and the command stream to it. Nothing read is trusted: a batch with a
  * malformed reading is dropped and reported ({@link ReadingCheck}); after {@code maxBadFrames} of them
  * the connection is closed. Every way the connection can end is reported once, with its reason.
+ * Over an in-process link ({@link #attachInMemory}) the same checks run on the controller's thread,
+ * with neither handshake nor reading thread.
  */
 final class RobotConnection {
     /** What the connection tells the link. */
