@@ -76,6 +76,12 @@ class InMemoryLinkTest {
         SimWorld w = world(e);
         var run = new LockstepRun(w, null, e, agent(e), e.id() + ".asl", w.seed(),
                 new PrintStream(java.io.OutputStream.nullOutputStream())).inMemory(true);
+        var fiveSeconds = new java.util.concurrent.CountDownLatch(1);
+        run.onStep(d -> {
+            if (d.simTimeMs() >= 5000) {
+                fiveSeconds.countDown();
+            }
+        });
         LockstepCoordinator.Result[] result = new LockstepCoordinator.Result[1];
         Throwable[] failed = new Throwable[1];
         Thread t = new Thread(() -> {
@@ -86,10 +92,7 @@ class InMemoryLinkTest {
             }
         }, "in-memory-run");
         t.start();
-        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (w.timeMs() < 5000 && t.isAlive() && System.nanoTime() < until) {
-            Thread.sleep(5);
-        }
+        assertTrue(fiveSeconds.await(60, TimeUnit.SECONDS), () -> "5 simulated seconds within 60 s; failure: " + failed[0]);
         run.stop(); // the world's lock is held through each step, agent included: stop must not wait on it for ever
         t.join(TimeUnit.SECONDS.toMillis(30));
         assertTrue(!t.isAlive(), "the run ended after stop()");
