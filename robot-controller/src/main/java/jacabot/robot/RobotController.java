@@ -2,6 +2,7 @@ package jacabot.robot;
 import jacabot.robot.link.Readings;
 
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorInfo;
@@ -52,6 +53,20 @@ public final class RobotController implements AutoCloseable {
 
     /** @throws IllegalArgumentException when the world has no robot of the configured name */
     public RobotController(SimWorld world, ControllerConfig config) {
+        this(world, config, null);
+    }
+
+    /**
+     * A controller whose link is {@code memory} instead of TCP (the config's address, secret and TLS
+     * unused): the same frames, read by a middleware of this process on the simulation thread. Lockstep only.
+     *
+     * @throws IllegalArgumentException when the world has no robot of the configured name, or in real time
+     */
+    public RobotController(SimWorld world, ControllerConfig config, MemoryLink memory) {
+        if (memory != null && !config.lockstep()) {
+            // in real time the agent's thread would apply commands under the world's lock, inside the link's
+            throw new IllegalArgumentException("an in-process link serves lockstep runs only");
+        }
         this.world = world;
         this.config = config;
         if (world.robots().isEmpty()) {
@@ -61,7 +76,7 @@ public final class RobotController implements AutoCloseable {
         this.sampler = new DeviceSampler(robot, config.sendCameraImage());
         this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
         this.inbox = new CommandInbox(world, config.nanoTime(), world::timeMs);
-        this.link = new RobotLink(config, inbox, costs);
+        this.link = new RobotLink(config, inbox, costs, memory);
         this.runner = new SimRunner(world, this::controlStep);
         if (config.lockstep()) {
             runner.setMode(SimRunner.Mode.FAST); // the agent's acknowledgements pace the world

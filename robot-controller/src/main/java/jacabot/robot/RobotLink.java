@@ -4,6 +4,7 @@ import jacabot.robot.link.AuthenticationException;
 import jacabot.robot.link.CommandReader;
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
@@ -28,6 +29,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * into the {@link CommandInbox}; the <b>sender</b> writes the frames the simulation thread queues,
  * so neither a slow agent nor a slow socket ever blocks the other direction or the simulation. In
  * lockstep the simulation waits for the agent at every step anyway, so it writes its frames itself.
+ *
+ * <p>Over a {@link MemoryLink} (lockstep sweeps) there are neither threads nor socket: the same
+ * frames go through memory, and the middleware has read a step, and answered it, when its write returns.
  */
 final class RobotLink {
     /** A frame waiting for the sender thread. */
@@ -49,17 +53,24 @@ final class RobotLink {
     private volatile SensorDataWriter writer;
     private volatile String lastProblem;
     private Thread receiver, sender;
+    /** Null: TCP. */
+    private final MemoryLink memory;
 
-    RobotLink(ControllerConfig config, CommandInbox inbox, LinkCosts costs) {
+    RobotLink(ControllerConfig config, CommandInbox inbox, LinkCosts costs, MemoryLink memory) {
         this.config = config;
         this.inbox = inbox;
         this.costs = costs;
         this.outbox = new ArrayBlockingQueue<>(config.outboxCapacity());
+        this.memory = memory;
     }
 
     /** Starts connecting; {@code hello} declares the robot and its enabled sensors. */
     void start(Protocol.Hello greeting) {
         this.hello = greeting;
+        if (memory != null) {
+            connectInMemory();
+            return;
+        }
         receiver = new Thread(this::receiveLoop, "controller-receiver");
         sender = new Thread(this::sendLoop, "controller-sender");
         receiver.setDaemon(true);
@@ -108,6 +119,18 @@ final class RobotLink {
             return;
         }
         SensorDataWriter w = writer;
+        if (memory != null) {
+            closed.countDown(); // first: the goodbye that closes the link is then no problem to report
+            if (w != null) {
+                try {
+                    memory.fromController(out -> out.writeBye(new Uplink.Bye(reason)));
+                } catch (IOException e) {
+                    // closed already
+                }
+            }
+            memory.close("the controller stopped: " + reason);
+            return;
+        }
         if (w != null) {
             try {
                 w.writeBye(new Uplink.Bye(reason));
@@ -148,7 +171,11 @@ final class RobotLink {
             return;
         }
         try {
-            f.writeTo(w);
+            if (memory != null) {
+                memory.fromController(f::writeTo); // the middleware reads the frames before this returns
+            } else {
+                f.writeTo(w);
+            }
         } catch (IOException e) {
             // The receiver notices the broken socket too and reconnects; drop this frame.
             droppedFrames.incrementAndGet();
@@ -221,6 +248,42 @@ final class RobotLink {
         }
     }
 
+    /** One connection, made at once: the middleware end listens already (no handshake, see {@link MemoryLink}). */
+    private void connectInMemory() {
+        try {
+            SensorDataWriter w = new SensorDataWriter(memory.controllerOut(), config.resetEvery());
+            w.measure(costs);
+            CommandReader reader = new CommandReader(memory.controllerIn(), config.clock());
+            memory.connect(hello, w, new MemoryLink.Reader() {
+                @Override
+                public void read(long frames) {
+                    try {
+                        for (long i = 0; i < frames; i++) {
+                            accept(reader.read());
+                        }
+                    } catch (IOException e) {
+                        memory.close("garbage from the middleware: " + e.getMessage());
+                    }
+                }
+
+                @Override
+                public void closed(String reason) {
+                    writer = null;
+                    if (!isClosed()) { // no reconnecting: the wheels stop and lockstep waits for close()
+                        lastProblem = reason;
+                        config.log().accept(reason + "; the wheels are stopped");
+                        inbox.connectionChanged(false);
+                    }
+                }
+            });
+            writer = w;
+            config.log().accept("connected to the middleware in this process");
+            inbox.connectionChanged(true);
+        } catch (IOException e) {
+            problem("cannot connect to the middleware in this process: " + e.getMessage(), false);
+        }
+    }
+
     private void readCommands(CommandReader reader) throws IOException {
         while (!isClosed()) {
             ReceivedCommand rc = reader.read();
@@ -230,11 +293,15 @@ final class RobotLink {
                 }
                 return;
             }
-            if (rc.isValid()) {
-                inbox.offer(rc);
-            } else {
-                config.log().accept("command frame " + rc.seq() + " skipped: " + rc.skipped());
-            }
+            accept(rc);
+        }
+    }
+
+    private void accept(ReceivedCommand rc) {
+        if (rc.isValid()) {
+            inbox.offer(rc);
+        } else {
+            config.log().accept("command frame " + rc.seq() + " skipped: " + rc.skipped());
         }
     }
 

@@ -77,6 +77,10 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--no-progress", description = "no progress bar on stderr")
     private boolean noProgress;
 
+    @Option(names = "--socket", description = "agent runs talk over a loopback socket, as `jacabot experiment` does "
+            + "(default: the same frames in memory; the logs are the same, the socket is slower)")
+    private boolean socket;
+
     @CommandLine.Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -172,7 +176,7 @@ final class SweepCommand implements Callable<Integer> {
                 jobList.size(), list.size(), runSeeds.size(), controllers.size(),
                 shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
-                .onResult(r -> writeLogs(dir.resolve("logs"), r, log));
+                .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
         if (agentSource != null) {
             sweep.agent(experiments.get(0), agentSource, agent.toString());
         }

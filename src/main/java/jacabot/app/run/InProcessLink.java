@@ -4,14 +4,17 @@ import jacabot.experiments.link.LinkConfig;
 
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.link.LinkSecret;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.RobotController;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
 
 /**
  * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
- * on a free port: what tests and single-process runs use instead of two processes. Stepping the
- * world is left to the caller ({@code controller().runner()}).
+ * on a free port ({@link #start}): what tests and single-process runs use instead of two processes;
+ * or by the same frames in memory ({@link #inMemory}, lockstep only): what sweeps use, without the
+ * socket's system calls and thread hand-offs. Stepping the world is left to the caller
+ * ({@code controller().runner()}).
  */
 public final class InProcessLink implements AutoCloseable {
     private final MiddlewareLink middleware;
@@ -41,6 +44,26 @@ public final class InProcessLink implements AutoCloseable {
             RobotController controller = new RobotController(world,
                     controllerConfig.withAddress(java.net.InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
+            controller.start();
+            return new InProcessLink(link, controller);
+        } catch (RuntimeException e) {
+            link.close();
+            throw e;
+        }
+    }
+
+    /**
+     * Joins the two through a {@link MemoryLink}: the same frames and codecs as over the socket, read
+     * on the simulation thread as soon as they are written; no port, so no secret either. The
+     * controller connects at once, before this returns.
+     *
+     * @throws IllegalArgumentException when {@code controllerConfig} is not lockstep
+     */
+    public static InProcessLink inMemory(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig) {
+        MemoryLink memory = new MemoryLink(world); // the lock the simulation thread holds through a control step
+        MiddlewareLink link = MiddlewareLink.inMemory(linkConfig, memory);
+        try {
+            RobotController controller = new RobotController(world, controllerConfig, memory);
             controller.start();
             return new InProcessLink(link, controller);
         } catch (RuntimeException e) {

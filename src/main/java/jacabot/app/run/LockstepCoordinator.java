@@ -22,7 +22,7 @@ import java.util.function.Consumer;
 
 /**
  * Runs a world in lockstep with an agent side, over the real socket protocol (an
- * {@link InProcessLink}). Each control step: the controller sends the step's readings and a step
+ * {@link InProcessLink}), or with its frames in memory ({@link #inMemory}). Each control step: the controller sends the step's readings and a step
  * marker; the coordinator hands them to the {@link AgentSide} (deliver, reason until quiescent,
  * collect the actions), sends the returned commands and {@code STEP_ACK}; only then does the world
  * advance. Same world, agent and seed ⇒ the same run, to the byte of both event logs.
@@ -63,6 +63,7 @@ public final class LockstepCoordinator {
     private Consumer<String> controllerLogSink;
     private int port;
     private boolean remote;
+    private boolean inMemory;
     private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
@@ -110,6 +111,18 @@ public final class LockstepCoordinator {
         return this;
     }
 
+    /**
+     * The frames go through memory instead of a loopback socket ({@link InProcessLink#inMemory}), and
+     * the agent side answers each step on the simulation thread: the same run, to the byte of both
+     * event logs, without the socket's system calls and thread hand-offs (sweeps). The world's lock is
+     * then held during the agent's turn too, so a viewer or another thread querying the world waits
+     * for whole steps. Off by default: single runs keep the thesis' socket.
+     */
+    public LockstepCoordinator inMemory(boolean on) {
+        this.inMemory = on;
+        return this;
+    }
+
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
     public int listeningPort() {
         MiddlewareLink m = remoteLink;
@@ -147,7 +160,8 @@ public final class LockstepCoordinator {
         if (stepLogs) {
             cc = cc.withEventLog(controllerLogSink != null ? controllerLogSink : controllerLog::add);
         }
-        try (InProcessLink link = InProcessLink.start(world, cc, LinkConfig.defaults().withLog(log), port)) {
+        LinkConfig lc = LinkConfig.defaults().withLog(log);
+        try (InProcessLink link = inMemory ? InProcessLink.inMemory(world, cc, lc) : InProcessLink.start(world, cc, lc, port)) {
             running = link;
             if (stopRequested) {
                 link.controller().close();

@@ -59,6 +59,7 @@ public final class LockstepRun {
     private Consumer<String> controllerLogSink;
     private int port;
     private boolean remoteController;
+    private boolean inMemory;
     private volatile LockstepCoordinator coordinator;
     private Consumer<StepData> onStep = d -> {
     };
@@ -166,6 +167,12 @@ public final class LockstepRun {
         return this;
     }
 
+    /** The link's frames go through memory, not a loopback socket ({@link LockstepCoordinator#inMemory}): sweeps. */
+    public LockstepRun inMemory(boolean on) {
+        this.inMemory = on;
+        return this;
+    }
+
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
     public int listeningPort() {
         LockstepCoordinator c = coordinator;
@@ -183,7 +190,7 @@ public final class LockstepRun {
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
         var c = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs).port(port)
-                .remoteController(remoteController);
+                .remoteController(remoteController).inMemory(inMemory);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
         }

@@ -30,6 +30,7 @@ public final class Sweep {
     private final double seconds;
     private final double wallLimitS;
     private ConsoleLog progress;
+    private boolean socket;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
     private final Map<jacabot.robot.Experiment, SweepRun.Agent> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
@@ -94,6 +95,12 @@ public final class Sweep {
         return this;
     }
 
+    /** Agent runs talk over a loopback socket, as single runs do, instead of the in-process link (the same logs, slower). */
+    public Sweep socket(boolean on) {
+        this.socket = on;
+        return this;
+    }
+
     /** Runs {@code source} (named {@code file} in messages) as the agent of experiment {@code e}, not the packaged one. */
     public Sweep agent(jacabot.robot.Experiment e, String source, String file) {
         agents.put(e, new SweepRun.Agent(source, file));
@@ -122,7 +129,7 @@ public final class Sweep {
                 SweepJob job = list.get(index);
                 SweepRun.Agent given = agents.get(job.experiment()); // read only once the jobs run
                 SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS,
-                        given != null ? given : SweepRun.Agent.packaged(job.experiment()));
+                        given != null ? given : SweepRun.Agent.packaged(job.experiment()), socket);
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

@@ -27,7 +27,7 @@ import java.util.concurrent.ConcurrentHashMap;
  * Makes one {@link SweepJob}: loads nothing (the job holds the checked world), builds a fresh world
  * under the job's seed, runs the agent in lockstep ({@link LockstepRun}) or the baseline
  * ({@link BaselineRunner#create}) for the duration, and judges it with {@link SuccessCriteria}.
- * Everything a run uses is its own (world, agent platform, loopback port, recorder), so runs can go
+ * Everything a run uses is its own (world, agent platform, link, recorder), so runs can go
  * on any number of threads at once. A run that passes its wall-clock bound is stopped at its next
  * control step and reported as a hang; an exception is a crash; a run short of its duration an early end.
  */
@@ -83,8 +83,17 @@ public final class SweepRun {
         }
     }
 
-    /** Runs a job with the given agent (the experiment's packaged one, or a user's). */
+    /** Runs a job with the given agent (the experiment's packaged one, or a user's), over the in-process link. */
     public static Result run(SweepJob job, double seconds, double wallLimitS, Agent agent) {
+        return run(job, seconds, wallLimitS, agent, false);
+    }
+
+    /**
+     * Runs a job with the given agent; an agent run's link is a loopback socket when {@code socket}
+     * ({@code jacabot experiment}'s), else the same frames in memory: the same run, to the byte of
+     * its logs, without the socket's system calls and thread hand-offs.
+     */
+    public static Result run(SweepJob job, double seconds, double wallLimitS, Agent agent, boolean socket) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -115,7 +124,7 @@ public final class SweepRun {
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
                 var run = new LockstepRun(world, null, e, agent.source(), agent.file(), job.seed(),
-                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false);
+                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket);
                 run.runFor(seconds);
             } else {
                 BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {

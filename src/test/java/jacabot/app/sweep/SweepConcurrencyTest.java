@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Several lockstep runs share one JVM safely: a run's event log and figures are the same alone and
- * among others on a pool of threads (no shared statics, a loopback port per run, seeds per run).
+ * among others on a pool of threads (no shared statics, a link per run, seeds per run).
  */
 class SweepConcurrencyTest {
     static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));

@@ -2,6 +2,7 @@ package jacabot.experiments.link;
 
 import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.Uplink;
 import java.io.IOException;
@@ -33,6 +34,9 @@ import java.util.function.Consumer;
  * (it restarted) is rebased so that the time the agent sees never goes back; heartbeats only go
  * out while the agent reasons ({@link #setLiveness}), so the controller's fail-safe stops the robot
  * when the agent is stuck or dead, not only when this process is.
+ *
+ * <p>{@link #inMemory} makes the same end for a controller of this process, over a
+ * {@link MemoryLink} instead of a socket (sweeps): no port, no handshake, no threads.
  *
  * <p>For CArtAgO: one {@link #receive()} is one {@code await(IBlockingCmd)}: its {@code exec()}
  * blocks until the next reading, step marker or connection change arrives.
@@ -142,9 +146,21 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         return link;
     }
 
-    /** {@return the port listened on (the chosen one when configured with 0)} */
+    /**
+     * The middleware end of an in-process link ({@link MemoryLink}): no port, no handshake, no
+     * thread of its own. The controller's frames are handled on the thread that writes them, its
+     * simulation thread; for lockstep runs answered through {@link #handOver} and {@link #answerStep}.
+     */
+    public static MiddlewareLink inMemory(LinkConfig config, MemoryLink memory) {
+        MiddlewareLink link = new MiddlewareLink(config, null);
+        memory.listen(hello -> RobotConnection.attachInMemory(memory, hello, link, config, link.costs));
+        OPEN.add(link);
+        return link;
+    }
+
+    /** {@return the port listened on (the chosen one when configured with 0); 0 for an in-process link} */
     public int port() {
-        return server.getLocalPort();
+        return server == null ? 0 : server.getLocalPort();
     }
 
     public boolean isConnected() {
@@ -343,6 +359,9 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
      * agent holds the world still instead of letting it run without a mind.
      */
     public void acknowledgeWhenAlive(long step) {
+        if (server == null) {
+            throw new UnsupportedOperationException("an in-process link has no heartbeat thread to retry an acknowledgement");
+        }
         if (alive() && quiet()) {
             pendingAck = -1;
             acknowledge(step);
@@ -410,7 +429,9 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
         OPEN.remove(this);
         closed = true;
         try {
-            server.close();
+            if (server != null) {
+                server.close();
+            }
         } catch (IOException e) {
             // closing anyway
         }

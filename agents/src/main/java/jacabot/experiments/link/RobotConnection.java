@@ -6,6 +6,7 @@ import jacabot.robot.link.CommandWriter;
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.LinkSecret;
+import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.ReadingCheck;
@@ -25,6 +26,8 @@ import java.util.List;
  * reads its sensor data stream, and the command stream to it. Nothing read is trusted: a batch with a
  * malformed reading is dropped and reported ({@link ReadingCheck}); after {@code maxBadFrames} of them
  * the connection is closed. Every way the connection can end is reported once, with its reason.
+ * Over an in-process link ({@link #attachInMemory}) the same checks run on the controller's thread,
+ * with neither handshake nor reading thread.
  */
 final class RobotConnection {
     /** What the connection tells the link. */
@@ -44,7 +47,12 @@ final class RobotConnection {
         void detached(RobotConnection c, String reason);
     }
 
+    /** Null for an in-process link. */
     private final Socket socket;
+    /** Null for a socket. */
+    private final MemoryLink memory;
+    private volatile boolean memoryClosed;
+    private ReadingCheck check;
     private final Owner owner;
     private final SensorInfoFilter.Limits limits;
     private final LinkCosts costs;
@@ -59,12 +67,73 @@ final class RobotConnection {
     private int badFrames;
 
     RobotConnection(Socket socket, Owner owner, LinkConfig config, LinkCosts costs) {
+        this(socket, null, owner, config, costs);
+    }
+
+    private RobotConnection(Socket socket, MemoryLink memory, Owner owner, LinkConfig config, LinkCosts costs) {
         this.socket = socket;
+        this.memory = memory;
         this.owner = owner;
         this.limits = config.limits();
         this.costs = costs;
-        this.secret = config.secret();
+        this.secret = socket == null ? null : config.secret(); // an in-process link has no handshake
         this.maxBadFrames = config.guards().maxBadFrames();
+    }
+
+    /**
+     * The controller of an in-process link, attached at once: no handshake (nothing but this
+     * process reaches the link), and its frames are read on the controller's writing thread.
+     */
+    static MemoryLink.Reader attachInMemory(MemoryLink memory, Protocol.Hello hello, Owner owner, LinkConfig config,
+            LinkCosts costs) throws IOException {
+        RobotConnection c = new RobotConnection(null, memory, owner, config, costs);
+        var r = new SensorDataReader(memory.middlewareIn(), c.limits); // the stream header is there already
+        r.measure(costs);
+        c.reader = r;
+        c.check = new ReadingCheck(hello.sensors());
+        c.hello = hello;
+        c.handshakeDone = true;
+        owner.attached(c);
+        return new MemoryLink.Reader() {
+            @Override
+            public void read(long frames) {
+                c.readInMemory(frames);
+            }
+
+            @Override
+            public void closed(String reason) {
+                c.endInMemory(reason);
+            }
+        };
+    }
+
+    private void readInMemory(long frames) {
+        try {
+            for (long i = 0; i < frames && !memoryClosed; i++) {
+                String end = handle(reader.read());
+                if (end != null) {
+                    memory.close(end);
+                }
+            }
+        } catch (IOException e) {
+            memory.close(e instanceof ProtocolException ? e.getMessage() : "link failed: " + e.getMessage());
+        }
+    }
+
+    /** Reports the end of an in-process connection once, with the first reason given. */
+    private void endInMemory(String reason) {
+        String r;
+        synchronized (this) {
+            if (memoryClosed) {
+                return;
+            }
+            memoryClosed = true;
+            if (closeReason == null) {
+                closeReason = reason;
+            }
+            r = closeReason;
+        }
+        owner.detached(this, r);
     }
 
     void start() {
@@ -92,10 +161,14 @@ final class RobotConnection {
     }
 
     boolean isClosed() {
-        return socket.isClosed();
+        return memory != null ? memoryClosed : socket.isClosed();
     }
 
     void send(int seq, long sentMicros, Command c) throws IOException {
+        if (memory != null) {
+            memory.fromMiddleware(w -> w.write(seq, sentMicros, c));
+            return;
+        }
         CommandWriter w = commands;
         if (w == null) {
             throw new IOException("not connected");
@@ -105,6 +178,10 @@ final class RobotConnection {
 
     /** Writes several commands with one flush. */
     void send(int[] seqs, long sentMicros, List<Command> frames) throws IOException {
+        if (memory != null) {
+            memory.fromMiddleware(w -> w.writeAll(seqs, sentMicros, frames));
+            return;
+        }
         CommandWriter w = commands;
         if (w == null) {
             throw new IOException("not connected");
@@ -118,6 +195,10 @@ final class RobotConnection {
             if (closeReason == null) {
                 closeReason = reason;
             }
+        }
+        if (memory != null) {
+            memory.close(reason); // both ends hear it; this one reports its end then
+            return;
         }
         try {
             socket.close();
@@ -140,33 +221,13 @@ final class RobotConnection {
             handshakeDone = true;
             owner.attached(this);
             attached = true;
-            var check = new ReadingCheck(h.sensors());
+            check = new ReadingCheck(h.sensors());
             var r = new SensorDataReader(socket.getInputStream(), limits);
             r.measure(costs);
             reader = r;
             while (true) {
-                Uplink frame = r.read();
-                if (frame == null) {
-                    reason = "the controller closed the connection";
-                    break;
-                }
-                String bad = frame instanceof Uplink.Batch ? problem((Uplink.Batch) frame, check) : null;
-                if (bad == null) {
-                    try {
-                        owner.frame(this, frame);
-                    } catch (RuntimeException e) {
-                        bad = "handling it failed: " + e; // the reading thread goes on with the next frame
-                    }
-                }
-                if (bad != null) {
-                    owner.badFrame(this, bad);
-                    if (++badFrames > maxBadFrames) {
-                        reason = "more than " + maxBadFrames + " bad frames; the last: " + bad;
-                        break;
-                    }
-                }
-                if (frame instanceof Uplink.Bye) {
-                    reason = "the controller said goodbye: " + ((Uplink.Bye) frame).reason();
+                reason = handle(r.read());
+                if (reason != null) {
                     break;
                 }
             }
@@ -193,6 +254,31 @@ final class RobotConnection {
         } else {
             owner.refused(this, reason + " (from " + socket.getRemoteSocketAddress() + ")", authentication);
         }
+    }
+
+    /** Checks a frame and passes it on; {@return why the connection ends with it, or null} */
+    private String handle(Uplink frame) {
+        if (frame == null) {
+            return "the controller closed the connection";
+        }
+        String bad = frame instanceof Uplink.Batch ? problem((Uplink.Batch) frame, check) : null;
+        if (bad == null) {
+            try {
+                owner.frame(this, frame);
+            } catch (RuntimeException e) {
+                bad = "handling it failed: " + e; // the reading thread goes on with the next frame
+            }
+        }
+        if (bad != null) {
+            owner.badFrame(this, bad);
+            if (++badFrames > maxBadFrames) {
+                return "more than " + maxBadFrames + " bad frames; the last: " + bad;
+            }
+        }
+        if (frame instanceof Uplink.Bye) {
+            return "the controller said goodbye: " + ((Uplink.Bye) frame).reason();
+        }
+        return null;
     }
 
     private static String problem(Uplink.Batch b, ReadingCheck check) {

@@ -13,6 +13,8 @@ import java.util.List;
  */
 public final class CommandWriter {
     private final DataOutputStream out;
+    /** Frames written so far: an in-process reader reads as many ({@link MemoryLink}). */
+    private long framesWritten;
 
     public CommandWriter(OutputStream out) {
         this.out = new DataOutputStream(out);
@@ -22,6 +24,7 @@ public final class CommandWriter {
     public synchronized void write(int seq, long sentMicros, Command command) throws IOException {
         writeFrame(seq, sentMicros, command);
         out.flush();
+        framesWritten++;
     }
 
     /** Writes {@code commands.get(i)} with sequence number {@code seqs[i]}, then flushes once. */
@@ -30,6 +33,12 @@ public final class CommandWriter {
             writeFrame(seqs[i], sentMicros, commands.get(i));
         }
         out.flush();
+        framesWritten += commands.size();
+    }
+
+    /** {@return the frames written and flushed so far} */
+    public synchronized long framesWritten() {
+        return framesWritten;
     }
 
     private void writeFrame(int seq, long sentMicros, Command command) throws IOException {

@@ -20,6 +20,8 @@ public final class SensorDataWriter {
     private final int resetEvery;
     private int batchesSinceReset;
     private LinkCosts costs;
+    /** Frames written, and of them flushed: an in-process reader reads only whole, flushed frames ({@link MemoryLink}). */
+    private long framesWritten, framesFlushed;
 
     /** Writes the stream header at once. */
     public SensorDataWriter(OutputStream out, int resetEvery) throws IOException {
@@ -30,6 +32,16 @@ public final class SensorDataWriter {
         this.out = new ObjectOutputStream(buffered);
         this.out.flush();
         this.resetEvery = resetEvery;
+    }
+
+    /** {@return the frames written and flushed so far (a step is two: its batch and its marker)} */
+    public synchronized long framesFlushed() {
+        return framesFlushed;
+    }
+
+    private void flushed() throws IOException {
+        out.flush();
+        framesFlushed = framesWritten;
     }
 
     /** From now on, adds the time spent encoding and writing steps to {@code costs}. */
@@ -59,12 +71,13 @@ public final class SensorDataWriter {
         out.writeLong(marker.step());
         out.writeLong(marker.simTimeMs());
         out.writeBoolean(marker.awaitsAck());
+        framesWritten += 2;
         if (costs == null) {
-            out.flush();
+            flushed();
             return;
         }
         long t1 = System.nanoTime();
-        out.flush();
+        flushed();
         costs.addEncoding(t1 - t0);
         costs.addWriting(System.nanoTime() - t1);
     }
@@ -82,8 +95,9 @@ public final class SensorDataWriter {
         out.writeLong(a.simTimeMs());
         out.writeLong(a.receivedMicros());
         out.writeLong(a.appliedMicros());
+        framesWritten++;
         if (flush) {
-            out.flush();
+            flushed();
         }
     }
 
@@ -91,12 +105,14 @@ public final class SensorDataWriter {
         out.writeByte(Uplink.FAIL_SAFE);
         out.writeLong(f.simTimeMs());
         out.writeUTF(f.reason());
-        out.flush();
+        framesWritten++;
+        flushed();
     }
 
     public synchronized void writeBye(Uplink.Bye bye) throws IOException {
         out.writeByte(Uplink.BYE);
         out.writeUTF(bye.reason());
-        out.flush();
+        framesWritten++;
+        flushed();
     }
 }
