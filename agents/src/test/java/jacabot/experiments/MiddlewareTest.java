@@ -91,6 +91,22 @@ class MiddlewareTest {
     }
 
     @Test
+    void theAgentSetsTheLevelsAndTheDifferenceThatSignalAnObstacle() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        assertTrue(b.op("obstacleLevels", new Object[] {480.0, 300.0}).succeeded());
+        assertTrue(b.op("deltaLimit", new Object[] {150.0}).succeeded());
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 150), value(SensorKind.RIGHT_DISTANCE, 20));
+        assertEquals(false, b.properties.get("obstacle"), "a difference of 130 is under the limit of 150");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 400), value(SensorKind.RIGHT_DISTANCE, 380));
+        assertEquals(false, b.properties.get("obstacle"), "400 is under the warning level of 480");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 200), value(SensorKind.RIGHT_DISTANCE, 30));
+        assertEquals(true, b.properties.get("obstacle"), "a difference of 170");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 250), value(SensorKind.RIGHT_DISTANCE, 240));
+        assertEquals(false, b.properties.get("obstacle"), "both under the safe level of 300");
+        assertTrue(!b.op("deltaLimit", new Object[] {0.0}).succeeded(), "a limit must be positive");
+    }
+
+    @Test
     void aRedCylinderAheadIsSignalledOnceAndAGreyObstacleIsAnObstacle() throws Exception {
         var b = new Bench(ObjectPickingMiddleware.class);
         var red = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {90, 90, 90, 200, 40, 30, 90, 90, 90});
