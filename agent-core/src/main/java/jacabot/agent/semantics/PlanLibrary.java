@@ -9,6 +9,8 @@ import java.util.List;
 /** The plan library: plans in file order, each with a unique label ({@code p__N} when unnamed). */
 public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
+    /** Jason's kqmlPlans: how messages are handled by plans, after the agent's own plans, never listed. */
+    private List<Plan> kqmlPlans = List.of();
     private int lastLabel;
     private boolean goalStatePlans;
     private boolean jagPlans;
@@ -159,7 +161,23 @@ public final class PlanLibrary {
                 out.add(p);
             }
         }
+        for (Plan p : kqmlPlans) {
+            if (isCandidate(p.trigger(), te)) {
+                out.add(p);
+            }
+        }
         return out;
+    }
+
+    /** Sets the plans that handle messages when the agent's own plans do not ({@code +!kqml_received}). */
+    void setKqmlPlans(List<Plan> ps) {
+        kqmlPlans = List.copyOf(ps);
+        candidateCache.clear();
+    }
+
+    /** {@return whether p is one of the library's built-in message plans} */
+    boolean isKqmlPlan(Plan p) {
+        return kqmlPlans.stream().anyMatch(k -> k == p);
     }
 
     public boolean hasCandidate(Trigger te) {
