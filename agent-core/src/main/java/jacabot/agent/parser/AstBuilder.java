@@ -110,9 +110,42 @@ final class AstBuilder {
     BodyTerm planBody(PlanBodyContext ctx) {
         var steps = new ArrayList<BodyStep>();
         for (BodyItemContext item : ctx.bodyItem()) {
-            steps.add(item.statement() != null ? statement(item.statement()) : bodyFormula(item.bodyFormula()));
+            if (item.statement() != null) {
+                steps.add(statement(item.statement()));
+            } else {
+                steps.addAll(fork(item.forkFormula()));
+            }
         }
         return new BodyTerm(steps);
+    }
+
+    /** {@code B1 ||| B2} and {@code B1 |&| B2} as {@code .fork(or|and, {B1}, {B2})}; a lone operand stays as it is. */
+    private List<BodyStep> fork(ForkFormulaContext ctx) {
+        if (ctx.forkAnd().size() == 1) {
+            return forkAnd(ctx.forkAnd(0));
+        }
+        var branches = new ArrayList<Term>();
+        branches.add(Literal.atom("or"));
+        for (ForkAndContext a : ctx.forkAnd()) {
+            branches.add(new BodyTerm(forkAnd(a)));
+        }
+        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
+    }
+
+    private List<BodyStep> forkAnd(ForkAndContext ctx) {
+        if (ctx.forkOperand().size() == 1) {
+            return forkOperand(ctx.forkOperand(0));
+        }
+        var branches = new ArrayList<Term>();
+        branches.add(Literal.atom("and"));
+        for (ForkOperandContext o : ctx.forkOperand()) {
+            branches.add(new BodyTerm(forkOperand(o)));
+        }
+        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
+    }
+
+    private List<BodyStep> forkOperand(ForkOperandContext ctx) {
+        return ctx.bodyFormula() != null ? List.of(bodyFormula(ctx.bodyFormula())) : planBody(ctx.planBody()).steps();
     }
 
     private BodyTerm block(BlockContext ctx) {

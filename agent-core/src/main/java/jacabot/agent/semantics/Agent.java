@@ -349,6 +349,11 @@ public final class Agent {
         return new Var(like.name(), ++freshSerial);
     }
 
+    /** {@return a copy of an intention, with its own id and unifiers, not yet running (a branch of {@code .fork})} */
+    public Intention copyIntention(Intention i) {
+        return i.copyAs(nextIntentionId());
+    }
+
     int nextIntentionId() {
         return ++intentionSerial;
     }

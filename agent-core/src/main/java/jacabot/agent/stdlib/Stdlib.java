@@ -13,6 +13,8 @@ public final class Stdlib {
     public static Map<String, InternalAction> defaults() {
         var map = new LinkedHashMap<String, InternalAction>();
         put(map, new Abolish());
+        put(map, new Fork());
+        put(map, new Join());
         put(map, new Type());
         put(map, new At());
         put(map, new IntentionIa());
