@@ -3,11 +3,11 @@
 !start.
 +!start <- !a(2) |&| !b(3);
            .print(both_done);
-           (!w(100, x) ||| !w(300, y));
+           (!w(100, x) ||| !w(1000, y));
            .print(first_done);
-           !w(50, p) |&| (!w(400, q) ||| (!w(10, r); !w(10, s)));
+           !w(500, p) |&| (!w(2000, q) ||| (!w(100, r); !w(100, s)));
            .print(nested_done);
-           .wait(500);
+           .wait(2000);
            .print(end);
            .stopMAS.
 +!a(0).

@@ -10,7 +10,7 @@ termOnly    : term EOF ;
 planOnly    : plan EOF ;
 component   : directive | belief | initialGoal | plan ;
 
-directive   : '{' literal '}' ;
+directive   : '{' begin='begin' literal '}' | '{' literal '}' ;
 belief      : literal ( ':-' logExpr )? '.' ;
 initialGoal : '!' literal '.' ;
 

@@ -80,9 +80,28 @@ public final class AslParser {
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
         var plans = new ArrayList<Plan>();
+        // plans inside { begin P } ... { end }, innermost last, each with its pattern and position
+        var blocks = new java.util.ArrayDeque<Block>();
         if (errors.errors().isEmpty()) {
             for (ComponentContext c : tree.component()) {
-                if (c.belief() != null) {
+                if (c.directive() != null && c.directive().begin != null) {
+                    Term d = builder.literal(c.directive().literal());
+                    blocks.push(new Block(d instanceof Literal l ? l : Literal.atom(String.valueOf(d)), plans, builder.where(c)));
+                    plans = new ArrayList<>();
+                } else if (c.directive() != null && isEnd(builder.literal(c.directive().literal()))) {
+                    Block b = blocks.poll();
+                    if (b == null) {
+                        errors.add(builder.where(c), "{ end } without { begin ... }");
+                        continue;
+                    }
+                    List<Plan> made = GoalPatterns.apply(b.pattern, plans, this);
+                    if (made == null) {
+                        errors.add(b.where, "unknown directive '" + b.pattern + "'");
+                        made = plans;
+                    }
+                    plans = b.outer;
+                    plans.addAll(made);
+                } else if (c.belief() != null) {
                     beliefs.add(builder.belief(c.belief()));
                 } else if (c.initialGoal() != null) {
                     goals.add(builder.initialGoal(c.initialGoal()));
@@ -109,10 +128,21 @@ public final class AslParser {
                 }
             }
         }
+        if (!blocks.isEmpty() && errors.errors().isEmpty()) {
+            errors.add(blocks.peek().where, "{ begin " + blocks.peek().pattern + " } without { end }");
+        }
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
         return new AgentProgram(file, beliefs, goals, plans);
+    }
+
+    /** An open {@code { begin P }}: its pattern, the plans before it, and where it was opened. */
+    private record Block(Literal pattern, ArrayList<Plan> outer, jacabot.agent.syntax.SourceInfo where) {
+    }
+
+    private static boolean isEnd(Term d) {
+        return d instanceof Literal l && l.functor().equals("end") && l.arity() == 0;
     }
 
     private Path resolve(String name, Path dir) {

@@ -14,6 +14,7 @@ public final class Stdlib {
         var map = new LinkedHashMap<String, InternalAction>();
         put(map, new Abolish());
         put(map, new Fork());
+        put(map, new ListPlans());
         put(map, new Join());
         put(map, new Type());
         put(map, new At());
