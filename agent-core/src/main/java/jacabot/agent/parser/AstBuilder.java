@@ -278,7 +278,12 @@ final class AstBuilder {
             case "=": op = RelExpr.Op.UNIFY; break;
             default: op = RelExpr.Op.UNIV; break;
         }
-        return new RelExpr(op, left, right);
+        return new RelExpr(op, operand(left), operand(right));
+    }
+
+    /** An atom as an operand of a relational expression is a structure for Jason's {@code .structure}. */
+    private static Term operand(Term t) {
+        return t instanceof Literal l ? l.asOperandAtom() : t;
     }
 
     private Term relOperand(RelOperandContext ctx) {
