@@ -23,6 +23,9 @@ import org.antlr.v4.runtime.CommonTokenStream;
  */
 public final class AslParser {
     private final List<Path> sourcePath;
+    /** Functions registered while reading one program (its included files share them). */
+    private List<AgentProgram.UserFunction> userFunctions = new ArrayList<>();
+    private Set<String> userFunctionNames = new HashSet<>();
 
     /** @param sourcePath directories searched for included files, after the including file's own */
     public AslParser(List<Path> sourcePath) {
@@ -47,6 +50,8 @@ public final class AslParser {
 
     /** Parses an agent program from a file. */
     public AgentProgram parseFile(Path file) throws AslSyntaxException, IOException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
         return parseFile(file, new HashSet<>());
     }
 
@@ -63,6 +68,8 @@ public final class AslParser {
 
     /** Parses an agent program held in a string; {@code file} names it in error messages. */
     public AgentProgram parse(String text, String file) throws AslSyntaxException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
         try {
             return parse(text, file, null, new HashSet<>());
         } catch (IOException e) {
@@ -77,6 +84,7 @@ public final class AslParser {
         AgentSpeakParser parser = newParser(text, errors);
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
+        builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
         var plans = new ArrayList<Plan>();
@@ -122,6 +130,14 @@ public final class AslParser {
                             goals.addAll(sub.goals());
                             plans.addAll(sub.plans());
                         }
+                    } else if (d instanceof Literal l && l.functor().equals("register_function")) {
+                        AgentProgram.UserFunction f = userFunction(l);
+                        if (f == null) {
+                            errors.add(builder.where(c), "register_function needs a name, an arity and a predicate: '" + d + "'");
+                        } else {
+                            userFunctions.add(f);
+                            userFunctionNames.add(f.name() + "/" + f.arity());
+                        }
                     } else {
                         errors.add(builder.where(c), "unknown directive '" + d + "'");
                     }
@@ -134,7 +150,17 @@ public final class AslParser {
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
-        return new AgentProgram(file, beliefs, goals, plans);
+        return new AgentProgram(file, beliefs, goals, plans, userFunctions);
+    }
+
+    /** {@code register_function("f", N, "p")} (Jason's rule-defined function; its default predicate is f's name). */
+    private static AgentProgram.UserFunction userFunction(Literal l) {
+        if (l.arity() < 2 || !(l.arg(0) instanceof StringTerm name)
+                || !(l.arg(1) instanceof jacabot.agent.syntax.NumberTerm n)) {
+            return null;
+        }
+        String predicate = l.arity() > 2 && l.arg(2) instanceof StringTerm p ? p.value() : name.value();
+        return new AgentProgram.UserFunction(name.value(), (int) n.value(), predicate);
     }
 
     /** An open {@code { begin P }}: its pattern, the plans before it, and where it was opened. */

@@ -33,6 +33,13 @@ final class AstBuilder {
     private final ErrorCollector errors;
     private long unnamedSerial;
 
+    /** Functions registered by {@code register_function} so far, as {@code name/arity}. */
+    private java.util.Set<String> userFunctions = java.util.Set.of();
+
+    void setUserFunctions(java.util.Set<String> names) {
+        userFunctions = names;
+    }
+
     AstBuilder(String file, ErrorCollector errors) {
         this.file = file;
         this.errors = errors;
@@ -337,7 +344,8 @@ final class AstBuilder {
         } else {
             t = literal(ctx.literal());
             if (t instanceof Literal l && !l.negated() && l.annots().isEmpty()
-                    && ArithFunctions.isFunction(l.functor(), l.arity())) {
+                    && (ArithFunctions.isFunction(l.functor(), l.arity())
+                            || userFunctions.contains(l.functor() + "/" + l.arity()))) {
                 t = new ArithFunction(l.functor(), l.args());
             }
         }

@@ -100,6 +100,7 @@ public final class Agent {
 
     /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */
     public void load(AgentProgram program) {
+        program.functions().forEach(arith::register);
         for (Plan p : program.plans()) {
             planLibrary.add(withUrl(p), false);
         }
