@@ -81,7 +81,8 @@ final class AstBuilder {
         Trigger trigger = trigger(ctx.trigger());
         Term context = ctx.logExpr() == null ? null : logExpr(ctx.logExpr());
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
-        SourceInfo src = where(ctx);
+        // Jason's line of a plan (its code_line) is where its context starts, or else its body
+        SourceInfo src = where(ctx.logExpr() != null ? ctx.logExpr() : ctx.planBody() != null ? ctx.planBody() : ctx);
         return new Plan(label, trigger, context, body, src);
     }
 
