@@ -3,11 +3,11 @@
 !start.
 +!start <- !a(2) |&| !b(3);
            .print(both_done);
-           (!w(100, x) ||| !w(1000, y));
+           (!w(100, x) ||| !w(2000, y));
            .print(first_done);
-           !w(500, p) |&| (!w(2000, q) ||| (!w(100, r); !w(100, s)));
+           !w(1500, p) |&| (!w(4000, q) ||| (!w(100, r); !w(100, s)));
            .print(nested_done);
-           .wait(2000);
+           .wait(4000);
            .print(end);
            .stopMAS.
 +!a(0).
