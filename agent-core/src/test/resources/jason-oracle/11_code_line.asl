@@ -1,5 +1,5 @@
-// Jason's code_line of a plan (in .intention's labels) is the line where its context starts, or
-// else where its body starts, not the line of its trigger.
+// Jason's code_line of a plan (in .intention's labels) is its label's line, or else the line where
+// its context starts, or else where its body starts, not the line of its trigger.
 !s.
 +!a <- !p.
 +!b
@@ -12,5 +12,11 @@
 +!d(X)
    <- !p; // a comment
       .print(X).
+@l1
++!e
+  <- !p.
+@[atomic]
++!f : true
+  <- !p.
 +!p <- .intention(_,_,[_,im(L,_,_,_)|_],current); .print(L).
-+!s <- !a; !b; !c; !d(1); .stopMAS.
++!s <- !a; !b; !c; !d(1); !e; !f; .stopMAS.

@@ -81,8 +81,10 @@ final class AstBuilder {
         Trigger trigger = trigger(ctx.trigger());
         Term context = ctx.logExpr() == null ? null : logExpr(ctx.logExpr());
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
-        // Jason's line of a plan (its code_line) is where its context starts, or else its body
-        SourceInfo src = where(ctx.logExpr() != null ? ctx.logExpr() : ctx.planBody() != null ? ctx.planBody() : ctx);
+        // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
+        // or else its body
+        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
+                : ctx.planBody() != null ? ctx.planBody() : ctx);
         return new Plan(label, trigger, context, body, src);
     }
 
