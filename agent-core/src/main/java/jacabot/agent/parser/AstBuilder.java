@@ -79,13 +79,18 @@ final class AstBuilder {
     Plan plan(PlanContext ctx) {
         Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
         Trigger trigger = trigger(ctx.trigger());
-        Term context = ctx.logExpr() == null ? null : logExpr(ctx.logExpr());
+        Term context = ctx.logExpr() == null ? null : noTrue(logExpr(ctx.logExpr()));
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
         // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
         // or else its body
         SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
                 : ctx.planBody() != null ? ctx.planBody() : ctx);
         return new Plan(label, trigger, context, body, src);
+    }
+
+    /** A context that is just {@code true} is no context, as Jason reads it ({@code +!g : true <- b} prints {@code +!g <- b}). */
+    private static Term noTrue(Term context) {
+        return Literal.TRUE.equals(context) ? null : context;
     }
 
     Literal planLabel(PlanLabelContext ctx) {
@@ -462,7 +467,7 @@ final class AstBuilder {
                 Term t = ctx.planLabel().literal() == null ? null : literal(ctx.planLabel().literal());
                 label = t instanceof Var ? t : planLabel(ctx.planLabel());
             }
-            Term context = hasContext ? logExpr(ctx.logExpr()) : null;
+            Term context = hasContext ? noTrue(logExpr(ctx.logExpr())) : null;
             Term body = hasBody ? planBody(ctx.planBody()) : BodyTerm.EMPTY;
             if (body instanceof BodyTerm b && b.steps().size() == 1 && b.steps().get(0).kind() == BodyStep.Kind.ACTION
                     && b.steps().get(0).term() instanceof Var v) {
