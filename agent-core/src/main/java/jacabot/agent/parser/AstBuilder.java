@@ -248,7 +248,7 @@ final class AstBuilder {
             operand = ((DelAddBelContext) ctx).logExpr();
         }
         Term t = logExpr(operand);
-        if (!(t instanceof Literal) && !(t instanceof Var)) {
+        if (!(t instanceof Literal) && !(t instanceof Var) && !(t instanceof jacabot.agent.syntax.AnnotatedVar)) {
             errors.add(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
             t = Literal.TRUE;
         } else if (t instanceof Literal l && l.isInternalAction()) {

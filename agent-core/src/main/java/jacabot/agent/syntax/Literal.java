@@ -209,7 +209,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     @Override
     public String toString() {
         if (functor.equals(RULE_TERM) && args.size() == 2 && annots.isEmpty()) {
-            return args.get(0) + " :- " + args.get(1);
+            return "{ " + args.get(0) + " :- " + args.get(1) + " }"; // as Jason prints a rule as a term
         }
         var sb = new StringBuilder();
         if (negated) {
