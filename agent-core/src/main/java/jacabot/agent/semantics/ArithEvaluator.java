@@ -16,6 +16,9 @@ final class ArithEvaluator implements Unifier.Evaluator {
     private final java.util.Map<String, jacabot.agent.syntax.AgentProgram.UserFunction> userFunctions =
             new java.util.concurrent.ConcurrentHashMap<>();
 
+    /** system.time minus the agent's clock, fixed when system.time is first asked for. */
+    private volatile long epochOffset = Long.MIN_VALUE;
+
     ArithEvaluator(Agent agent) {
         this.agent = agent;
     }
@@ -60,8 +63,12 @@ final class ArithEvaluator implements Unifier.Evaluator {
         }
         switch (f.name()) {
             case "system.time":
-                // Jason's: the computer's time in ms since 1970 (.system_time reads the agent's clock)
-                return new NumberTerm(System.currentTimeMillis());
+                // Jason's: ms since 1970; counted on the agent's clock from the computer's time when
+                // first asked, so that it agrees with .wait (.system_time is the clock alone)
+                if (epochOffset == Long.MIN_VALUE) {
+                    epochOffset = System.currentTimeMillis() - agent.clock().millis();
+                }
+                return new NumberTerm(epochOffset + agent.clock().millis());
             case ".count": {
                 int n = 0;
                 Iterator<Unifier> it = agent.solver().solve(a.get(0), u);

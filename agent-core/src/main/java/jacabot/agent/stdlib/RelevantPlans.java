@@ -23,7 +23,7 @@ final class RelevantPlans extends DefaultInternalAction {
         var labels = new java.util.ArrayList<Term>();
         Term asked = RelevantPlans.withSelfSource(tt.trigger().literal());
         for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
-            if (ag.newUnifier().unifies(p.trigger().literal(), asked)) {
+            if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
                 plans.add(jacabot.agent.semantics.Renamer.renameApart(new PlanTerm(p), ag)); // its variables are its own
                 labels.add(p.label());
             }
