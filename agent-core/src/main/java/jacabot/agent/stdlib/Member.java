@@ -14,7 +14,7 @@ final class Member extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         var out = new java.util.ArrayList<Unifier>();
-        var items = Collections.elements(args[1]); // a list, or a set or queue of .set/.queue
+        var items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
         if (items == null) {
             items = list(args[1]).elements();
         }

@@ -17,12 +17,12 @@ final class QueueAdd extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var q = Collections.queue(name(), args[0]);
+        var q = TermCollections.queue(name(), args[0]);
         if (!all) {
             q.add(args[1]);
             return true;
         }
-        Collection<Term> items = Collections.elements(args[1]);
+        Collection<Term> items = TermCollections.elements(args[1]);
         if (items == null) {
             throw IaException.wrongArguments(name(), "'" + args[1] + "' is not a list");
         }

@@ -16,7 +16,7 @@ final class QueueTake extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var q = Collections.queue(name(), args[0]);
+        var q = TermCollections.queue(name(), args[0]);
         Term first = remove ? q.poll() : q.peek();
         return first != null && un.unifies(args[1], first);
     }

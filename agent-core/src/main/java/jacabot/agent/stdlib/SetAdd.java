@@ -17,12 +17,12 @@ final class SetAdd extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var set = Collections.set(name(), args[0], un);
+        var set = TermCollections.set(name(), args[0], un);
         if (!all) {
             set.add(args[1]);
             return true;
         }
-        Collection<Term> items = Collections.elements(args[1]);
+        Collection<Term> items = TermCollections.elements(args[1]);
         if (items == null) {
             throw IaException.wrongArguments(name(), "'" + args[1] + "' is not a list");
         }

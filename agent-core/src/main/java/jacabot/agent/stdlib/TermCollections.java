@@ -14,8 +14,8 @@ import java.util.TreeSet;
  * {@code PriorityBlockingQueue} in that order (as Jason's, so equal priorities come out in the
  * same order), a plain queue an {@code ArrayDeque}.
  */
-final class Collections {
-    private Collections() {
+final class TermCollections {
+    private TermCollections() {
     }
 
     /** {@return the set in t, a new one bound to t when it is a free variable} */
