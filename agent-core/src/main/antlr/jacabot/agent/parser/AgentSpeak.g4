@@ -10,7 +10,7 @@ termOnly    : term EOF ;
 planOnly    : plan EOF ;
 component   : directive | belief | initialGoal | plan ;
 
-directive   : '{' literal '}' ;
+directive   : '{' begin='begin' literal '}' | '{' literal '}' ;
 belief      : literal ( ':-' logExpr )? '.' ;
 initialGoal : '!' literal '.' ;
 
@@ -20,7 +20,13 @@ trigger     : op=( '+' | '-' | '^' ) kind=( '!' | '?' )? literal ;
 
 // A plan body: formulas separated by ';'. if/while/for need no ';' after their closing brace.
 planBody    : bodyItem ( ';' bodyItem | {_input.LA(-1) == RBRACE}? bodyItem )* ';'? ;
-bodyItem    : statement | bodyFormula ;
+bodyItem    : statement | forkFormula ;
+
+// B1 ||| B2: concurrent branches, the first to end wins; B1 |&| B2: all must end (|&| binds
+// tighter). A branch is a formula or a parenthesised body. Both become Jason's .fork(or|and, ...).
+forkFormula : forkAnd ( '|||' forkAnd )* ;
+forkAnd     : forkOperand ( '|&|' forkOperand )* ;
+forkOperand : bodyFormula | '(' planBody ')' ;
 
 statement   : 'if' '(' logExpr ')' block elifPart* elsePart?    # ifStatement
             | 'while' '(' logExpr ')' block                      # whileStatement

@@ -23,6 +23,9 @@ import org.antlr.v4.runtime.CommonTokenStream;
  */
 public final class AslParser {
     private final List<Path> sourcePath;
+    /** Functions registered while reading one program (its included files share them). */
+    private List<AgentProgram.UserFunction> userFunctions = new ArrayList<>();
+    private Set<String> userFunctionNames = new HashSet<>();
 
     /** @param sourcePath directories searched for included files, after the including file's own */
     public AslParser(List<Path> sourcePath) {
@@ -47,6 +50,8 @@ public final class AslParser {
 
     /** Parses an agent program from a file. */
     public AgentProgram parseFile(Path file) throws AslSyntaxException, IOException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
         return parseFile(file, new HashSet<>());
     }
 
@@ -63,6 +68,8 @@ public final class AslParser {
 
     /** Parses an agent program held in a string; {@code file} names it in error messages. */
     public AgentProgram parse(String text, String file) throws AslSyntaxException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
         try {
             return parse(text, file, null, new HashSet<>());
         } catch (IOException e) {
@@ -77,12 +84,32 @@ public final class AslParser {
         AgentSpeakParser parser = newParser(text, errors);
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
+        builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
         var plans = new ArrayList<Plan>();
+        // plans inside { begin P } ... { end }, innermost last, each with its pattern and position
+        var blocks = new java.util.ArrayDeque<Block>();
         if (errors.errors().isEmpty()) {
             for (ComponentContext c : tree.component()) {
-                if (c.belief() != null) {
+                if (c.directive() != null && c.directive().begin != null) {
+                    Term d = builder.literal(c.directive().literal());
+                    blocks.push(new Block(d instanceof Literal l ? l : Literal.atom(String.valueOf(d)), plans, builder.where(c)));
+                    plans = new ArrayList<>();
+                } else if (c.directive() != null && isEnd(builder.literal(c.directive().literal()))) {
+                    Block b = blocks.poll();
+                    if (b == null) {
+                        errors.add(builder.where(c), "{ end } without { begin ... }");
+                        continue;
+                    }
+                    List<Plan> made = GoalPatterns.apply(b.pattern, plans, this);
+                    if (made == null) {
+                        errors.add(b.where, "unknown directive '" + b.pattern + "'");
+                        made = plans;
+                    }
+                    plans = b.outer;
+                    plans.addAll(made);
+                } else if (c.belief() != null) {
                     beliefs.add(builder.belief(c.belief()));
                 } else if (c.initialGoal() != null) {
                     goals.add(builder.initialGoal(c.initialGoal()));
@@ -103,16 +130,45 @@ public final class AslParser {
                             goals.addAll(sub.goals());
                             plans.addAll(sub.plans());
                         }
+                    } else if (d instanceof Literal l && l.functor().equals("register_function")) {
+                        AgentProgram.UserFunction f = userFunction(l);
+                        if (f == null) {
+                            errors.add(builder.where(c), "register_function needs a name, an arity and a predicate: '" + d + "'");
+                        } else {
+                            userFunctions.add(f);
+                            userFunctionNames.add(f.name() + "/" + f.arity());
+                        }
                     } else {
                         errors.add(builder.where(c), "unknown directive '" + d + "'");
                     }
                 }
             }
         }
+        if (!blocks.isEmpty() && errors.errors().isEmpty()) {
+            errors.add(blocks.peek().where, "{ begin " + blocks.peek().pattern + " } without { end }");
+        }
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
-        return new AgentProgram(file, beliefs, goals, plans);
+        return new AgentProgram(file, beliefs, goals, plans, userFunctions);
+    }
+
+    /** {@code register_function("f", N, "p")} (Jason's rule-defined function; its default predicate is f's name). */
+    private static AgentProgram.UserFunction userFunction(Literal l) {
+        if (l.arity() < 2 || !(l.arg(0) instanceof StringTerm name)
+                || !(l.arg(1) instanceof jacabot.agent.syntax.NumberTerm n)) {
+            return null;
+        }
+        String predicate = l.arity() > 2 && l.arg(2) instanceof StringTerm p ? p.value() : name.value();
+        return new AgentProgram.UserFunction(name.value(), (int) n.value(), predicate);
+    }
+
+    /** An open {@code { begin P }}: its pattern, the plans before it, and where it was opened. */
+    private record Block(Literal pattern, ArrayList<Plan> outer, jacabot.agent.syntax.SourceInfo where) {
+    }
+
+    private static boolean isEnd(Term d) {
+        return d instanceof Literal l && l.functor().equals("end") && l.arity() == 0;
     }
 
     private Path resolve(String name, Path dir) {

@@ -33,6 +33,13 @@ final class AstBuilder {
     private final ErrorCollector errors;
     private long unnamedSerial;
 
+    /** Functions registered by {@code register_function} so far, as {@code name/arity}. */
+    private java.util.Set<String> userFunctions = java.util.Set.of();
+
+    void setUserFunctions(java.util.Set<String> names) {
+        userFunctions = names;
+    }
+
     AstBuilder(String file, ErrorCollector errors) {
         this.file = file;
         this.errors = errors;
@@ -72,10 +79,18 @@ final class AstBuilder {
     Plan plan(PlanContext ctx) {
         Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
         Trigger trigger = trigger(ctx.trigger());
-        Term context = ctx.logExpr() == null ? null : logExpr(ctx.logExpr());
+        Term context = ctx.logExpr() == null ? null : noTrue(logExpr(ctx.logExpr()));
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
-        SourceInfo src = where(ctx);
+        // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
+        // or else its body
+        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
+                : ctx.planBody() != null ? ctx.planBody() : ctx);
         return new Plan(label, trigger, context, body, src);
+    }
+
+    /** A context that is just {@code true} is no context, as Jason reads it ({@code +!g : true <- b} prints {@code +!g <- b}). */
+    private static Term noTrue(Term context) {
+        return Literal.TRUE.equals(context) ? null : context;
     }
 
     Literal planLabel(PlanLabelContext ctx) {
@@ -110,9 +125,42 @@ final class AstBuilder {
     BodyTerm planBody(PlanBodyContext ctx) {
         var steps = new ArrayList<BodyStep>();
         for (BodyItemContext item : ctx.bodyItem()) {
-            steps.add(item.statement() != null ? statement(item.statement()) : bodyFormula(item.bodyFormula()));
+            if (item.statement() != null) {
+                steps.add(statement(item.statement()));
+            } else {
+                steps.addAll(fork(item.forkFormula()));
+            }
         }
         return new BodyTerm(steps);
+    }
+
+    /** {@code B1 ||| B2} and {@code B1 |&| B2} as {@code .fork(or|and, {B1}, {B2})}; a lone operand stays as it is. */
+    private List<BodyStep> fork(ForkFormulaContext ctx) {
+        if (ctx.forkAnd().size() == 1) {
+            return forkAnd(ctx.forkAnd(0));
+        }
+        var branches = new ArrayList<Term>();
+        branches.add(Literal.atom("or"));
+        for (ForkAndContext a : ctx.forkAnd()) {
+            branches.add(new BodyTerm(forkAnd(a)));
+        }
+        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
+    }
+
+    private List<BodyStep> forkAnd(ForkAndContext ctx) {
+        if (ctx.forkOperand().size() == 1) {
+            return forkOperand(ctx.forkOperand(0));
+        }
+        var branches = new ArrayList<Term>();
+        branches.add(Literal.atom("and"));
+        for (ForkOperandContext o : ctx.forkOperand()) {
+            branches.add(new BodyTerm(forkOperand(o)));
+        }
+        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
+    }
+
+    private List<BodyStep> forkOperand(ForkOperandContext ctx) {
+        return ctx.bodyFormula() != null ? List.of(bodyFormula(ctx.bodyFormula())) : planBody(ctx.planBody()).steps();
     }
 
     private BodyTerm block(BlockContext ctx) {
@@ -200,7 +248,7 @@ final class AstBuilder {
             operand = ((DelAddBelContext) ctx).logExpr();
         }
         Term t = logExpr(operand);
-        if (!(t instanceof Literal) && !(t instanceof Var)) {
+        if (!(t instanceof Literal) && !(t instanceof Var) && !(t instanceof jacabot.agent.syntax.AnnotatedVar)) {
             errors.add(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
             t = Literal.TRUE;
         } else if (t instanceof Literal l && l.isInternalAction()) {
@@ -245,7 +293,12 @@ final class AstBuilder {
             case "=": op = RelExpr.Op.UNIFY; break;
             default: op = RelExpr.Op.UNIV; break;
         }
-        return new RelExpr(op, left, right);
+        return new RelExpr(op, operand(left), operand(right));
+    }
+
+    /** An atom as an operand of a relational expression is a structure for Jason's {@code .structure}. */
+    private static Term operand(Term t) {
+        return t instanceof Literal l ? l.asOperandAtom() : t;
     }
 
     private Term relOperand(RelOperandContext ctx) {
@@ -299,7 +352,8 @@ final class AstBuilder {
         } else {
             t = literal(ctx.literal());
             if (t instanceof Literal l && !l.negated() && l.annots().isEmpty()
-                    && ArithFunctions.isFunction(l.functor(), l.arity())) {
+                    && (ArithFunctions.isFunction(l.functor(), l.arity())
+                            || userFunctions.contains(l.functor() + "/" + l.arity()))) {
                 t = new ArithFunction(l.functor(), l.args());
             }
         }
@@ -413,7 +467,7 @@ final class AstBuilder {
                 Term t = ctx.planLabel().literal() == null ? null : literal(ctx.planLabel().literal());
                 label = t instanceof Var ? t : planLabel(ctx.planLabel());
             }
-            Term context = hasContext ? logExpr(ctx.logExpr()) : null;
+            Term context = hasContext ? noTrue(logExpr(ctx.logExpr())) : null;
             Term body = hasBody ? planBody(ctx.planBody()) : BodyTerm.EMPTY;
             if (body instanceof BodyTerm b && b.steps().size() == 1 && b.steps().get(0).kind() == BodyStep.Kind.ACTION
                     && b.steps().get(0).term() instanceof Var v) {

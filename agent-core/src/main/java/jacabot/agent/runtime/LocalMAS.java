@@ -93,6 +93,9 @@ public final class LocalMAS {
         this.clock = newClock;
     }
 
+    /** The p__N numbers of unnamed plans go on from agent to agent in load order, as in Jason. */
+    private final java.util.concurrent.atomic.AtomicInteger planLabels = new java.util.concurrent.atomic.AtomicInteger();
+
     /**
      * Creates an agent running a program. {@code archFactory} may wrap the local architecture
      * (e.g. the JaCa bridge); null keeps it.
@@ -106,6 +109,7 @@ public final class LocalMAS {
         AgentArch arch = archFactory == null ? local : archFactory.apply(local);
         Map<String, InternalAction> ias = Stdlib.defaults();
         Agent ag = new Agent(name, arch, ias, agentSeed(seed, agents.size()), parser);
+        ag.planLibrary().shareLabelCounter(planLabels);
         agents.put(name, ag);
         wakers.put(name, new Waker(ag));
         ag.load(program);

@@ -128,7 +128,7 @@ public final class MasLauncher {
             }
         }
         gs.addAll(p.goals());
-        return new AgentProgram(p.file(), bs, gs, p.plans());
+        return new AgentProgram(p.file(), bs, gs, p.plans(), p.functions());
     }
 
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {

@@ -100,6 +100,7 @@ public final class Agent {
 
     /** Loads a program: initial beliefs (with their events), rules, plans and initial goals. */
     public void load(AgentProgram program) {
+        program.functions().forEach(arith::register);
         for (Plan p : program.plans()) {
             planLibrary.add(withUrl(p), false);
         }
@@ -347,6 +348,11 @@ public final class Agent {
     /** {@return a variable that no other variable equals} */
     public Var freshVar(Var like) {
         return new Var(like.name(), ++freshSerial);
+    }
+
+    /** {@return a copy of an intention, with its own id and unifiers, not yet running (a branch of {@code .fork})} */
+    public Intention copyIntention(Intention i) {
+        return i.copyAs(nextIntentionId());
     }
 
     int nextIntentionId() {

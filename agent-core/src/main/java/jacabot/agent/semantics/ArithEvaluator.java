@@ -12,14 +12,63 @@ import java.util.List;
 final class ArithEvaluator implements Unifier.Evaluator {
     private final Agent agent;
 
+    /** Functions defined by rules ({@code register_function}), by {@code name/arity}. */
+    private final java.util.Map<String, jacabot.agent.syntax.AgentProgram.UserFunction> userFunctions =
+            new java.util.concurrent.ConcurrentHashMap<>();
+
+    /** system.time minus the agent's clock, fixed when system.time is first asked for. */
+    private volatile long epochOffset = Long.MIN_VALUE;
+
     ArithEvaluator(Agent agent) {
         this.agent = agent;
+    }
+
+    private Unifier newUnifier() {
+        var u = new Unifier();
+        u.setEvaluator(this);
+        return u;
+    }
+
+    void register(jacabot.agent.syntax.AgentProgram.UserFunction f) {
+        userFunctions.put(f.name() + "/" + f.arity(), f);
+    }
+
+    /** A rule-defined function: the last argument of the first solution of {@code p(Args..., R)}. */
+    private Term userFunction(jacabot.agent.syntax.AgentProgram.UserFunction f, List<Term> args, Unifier u) {
+        var all = new java.util.ArrayList<Term>();
+        for (Term a : args) {
+            Term v = u.apply(a);
+            if (!v.isGround()) {
+                return null; // evaluated once its arguments are bound (e.g. inside .findall)
+            }
+            all.add(v);
+        }
+        var result = new jacabot.agent.syntax.Var("FunctionResult__");
+        all.add(result);
+        // a proof of its own: the caller may be inside a proof whose bindings must stay as they are
+        Iterator<Unifier> it = agent.solver().solve(jacabot.agent.syntax.Literal.of(f.predicate(), all), newUnifier());
+        if (!it.hasNext()) {
+            return null;
+        }
+        Term value = it.next().apply(result);
+        return value.isGround() ? value : null;
     }
 
     @Override
     public Term evaluate(ArithFunction f, Unifier u) {
         List<Term> a = f.args();
+        var user = userFunctions.isEmpty() ? null : userFunctions.get(f.name() + "/" + a.size());
+        if (user != null) {
+            return userFunction(user, a, u);
+        }
         switch (f.name()) {
+            case "system.time":
+                // Jason's: ms since 1970; counted on the agent's clock from the computer's time when
+                // first asked, so that it agrees with .wait (.system_time is the clock alone)
+                if (epochOffset == Long.MIN_VALUE) {
+                    epochOffset = System.currentTimeMillis() - agent.clock().millis();
+                }
+                return new NumberTerm(epochOffset + agent.clock().millis());
             case ".count": {
                 int n = 0;
                 Iterator<Unifier> it = agent.solver().solve(a.get(0), u);

@@ -181,8 +181,10 @@ final class BodyExecutor {
         Term bound = im.unifier().apply(term);
         if (bound instanceof Literal r && r.functor().equals(Literal.RULE_TERM) && r.arity() == 2 && r.args().get(0) instanceof Literal head) {
             // +{ head :- body } adds a rule (renamed apart: its variables are its own)
+            // (+R[source(A)] with R a rule: the annotations go to its head, source(self) when it has none)
             var rule = (Literal) jacabot.agent.semantics.Renamer.renameApart(r, ag);
-            ag.beliefBase().addRule(new jacabot.agent.syntax.Rule(((Literal) rule.args().get(0)).addAnnot(Literal.SOURCE_SELF),
+            Literal ruleHead = ((Literal) rule.args().get(0)).addAnnots(rule.annots());
+            ag.beliefBase().addRule(new jacabot.agent.syntax.Rule(ruleHead.hasSource() ? ruleHead : ruleHead.addAnnot(Literal.SOURCE_SELF),
                     rule.args().get(1)), kind == BodyStep.Kind.ADD_BEL_END);
             rc.removeActionReQueue(i);
             return;

@@ -175,11 +175,17 @@ public final class Circumstance {
         return running.remove(i);
     }
 
-    /** {@return every intention: selected, running, pending, and those waiting in events or actions} */
+    /**
+     * {@return every intention: selected, running, pending, and those waiting in events or actions,
+     * the selected event's too (a plan's context may ask for the goals of the intention it is for)}
+     */
     public List<Intention> allIntentions() {
         var out = new ArrayList<Intention>();
         if (selectedIntention != null) {
             out.add(selectedIntention);
+        }
+        if (selectedEvent != null && selectedEvent.intention() != null && !out.contains(selectedEvent.intention())) {
+            out.add(selectedEvent.intention());
         }
         if (atomicIntention != null && !out.contains(atomicIntention)) {
             out.add(atomicIntention);

@@ -27,6 +27,14 @@ public final class IntendedMeans {
         this.steps = StepList.of(plan.body().steps(), null);
     }
 
+    /** {@return a copy with its own unifier, at the same step (for an intention that forks)} */
+    IntendedMeans copy() {
+        IntendedMeans c = new IntendedMeans(plan, trigger, unif.copy());
+        c.steps = steps;
+        c.renamedVars = renamedVars == null ? null : new LinkedHashMap<>(renamedVars);
+        return c;
+    }
+
     public Plan plan() {
         return plan;
     }
@@ -102,6 +110,11 @@ public final class IntendedMeans {
         } else {
             steps = new StepList(steps.head, StepList.of(more, new StepList(then, steps.next)));
         }
+    }
+
+    /** Replaces the current step by several (a fork's branch and its join). */
+    public void replaceCurrentStep(List<BodyStep> with) {
+        steps = StepList.of(with, steps == null ? null : steps.next);
     }
 
     /** Replaces the current step (e.g. a loop step with its saved state). */

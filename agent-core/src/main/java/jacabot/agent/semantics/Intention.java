@@ -16,6 +16,17 @@ public final class Intention implements Iterable<IntendedMeans> {
         this.id = id;
     }
 
+    /** {@return a copy of this intention's stack under another id (Jason's fork)} */
+    Intention copyAs(int newId) {
+        Intention c = new Intention(newId);
+        var ims = new java.util.ArrayList<IntendedMeans>(stack);
+        for (int k = ims.size() - 1; k >= 0; k--) {
+            c.push(ims.get(k).copy());
+        }
+        c.suspended = suspended;
+        return c;
+    }
+
     public int id() {
         return id;
     }

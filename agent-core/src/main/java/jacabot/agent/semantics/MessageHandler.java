@@ -2,6 +2,7 @@ package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayList;
@@ -17,11 +18,45 @@ final class MessageHandler {
     /** {@code source(S)} by sender: a stream of messages from one agent shares one annotation. */
     private final Map<String, Literal> sources = new HashMap<>();
 
+    /**
+     * An ask the belief base cannot answer but a {@code +?} plan may: the test goal runs in an
+     * intention of its own, and its failure answers {@code false}; other failures of a
+     * {@code kqml_received} goal are printed (as Jason's kqmlPlans).
+     */
+    private static final List<Plan> KQML_PLANS = parsePlans(
+            "@kqmlReceivedAskOne +!kqml_received(Sender, askOne, Content, MsgId) <- ?Content; .send(Sender, tell, Content, MsgId).",
+            "@kqmlReceivedAskOneFailed -!kqml_received(Sender, askOne, Content, MsgId)[error(test_goal_failed)]"
+                    + " <- .send(Sender, untell, Content, MsgId).",
+            "@kqmlError -!kqml_received(_, _, _, _)[error(Id), error_msg(Msg)] <- .print(\"Communication error -- \", Id, \": \", Msg).");
+
     MessageHandler(Agent ag, ReasoningCycle rc) {
         this.ag = ag;
         this.rc = rc;
+        ag.planLibrary().setKqmlPlans(KQML_PLANS);
     }
 
+    private static List<Plan> parsePlans(String... texts) {
+        var parser = new jacabot.agent.parser.AslParser();
+        var out = new ArrayList<Plan>();
+        for (String t : texts) {
+            try {
+                Plan p = parser.parsePlan(t);
+                out.add(p.withLabel(p.label().addAnnot(Literal.of("source", Literal.atom("kqmlPlans")))));
+            } catch (jacabot.agent.parser.AslSyntaxException e) {
+                throw new IllegalStateException(e);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * ProcMsg: a message becomes the goal {@code +!kqml_received(Sender, Performative, Content,
+     * MsgId)} when the agent has plans of its own for it (Jason's customisation of performatives)
+     * or when it is an ask; what the agent's plans leave is handled by {@link #handleByDefault}
+     * when the goal is selected (as Jason's kqmlPlans, which come after the agent's own plans).
+     * Other messages are handled at once. (Jason handles only tell and achieve at once; its
+     * other performatives go through plans, which lets a tell overtake an earlier untell.)
+     */
     void handle(Message m) {
         Circumstance c = ag.circumstance();
         if (m.inReplyTo() != null) {
@@ -31,9 +66,57 @@ final class MessageHandler {
                 return;
             }
         }
-        Literal source = sources.computeIfAbsent(m.sender(),
-                s -> Literal.of("source", Literal.atom(s.equals(ag.name()) ? "self" : s)));
-        Term content = m.content();
+        String sender = m.sender().equals(ag.name()) ? "self" : m.sender();
+        // asks wait for their turn among the events (and may need a +? plan); other messages are
+        // handled at once, in the order they came, unless the agent customises kqml_received
+        boolean direct = !m.performative().startsWith("ask") && !hasOwnKqmlPlans();
+        if (direct) {
+            perform(sender, m.performative(), m.content(), m.id());
+        } else {
+            Literal received = Literal.of("kqml_received", Literal.atom(sender), Literal.atom(m.performative()),
+                    m.content(), Literal.atom(m.id()));
+            c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, received), null));
+        }
+    }
+
+    private static final Trigger KQML_RECEIVED = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE,
+            Literal.of("kqml_received", new jacabot.agent.syntax.Var("S"), new jacabot.agent.syntax.Var("P"),
+                    new jacabot.agent.syntax.Var("C"), new jacabot.agent.syntax.Var("M")));
+
+    private boolean hasOwnKqmlPlans() {
+        for (Plan p : ag.planLibrary().candidates(KQML_RECEIVED)) {
+            if (!ag.planLibrary().isKqmlPlan(p)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * A {@code +!kqml_received} goal no plan of the agent's own applies to: the message is handled
+     * as Jason's default plans do. {@return false for an askOne the belief base cannot answer but
+     * a {@code +?} plan may: the built-in plan posting the test goal handles it}
+     */
+    boolean handleByDefault(Literal received) {
+        if (received.arity() != 4 || !(received.arg(0) instanceof Literal s) || !(received.arg(1) instanceof Literal p)) {
+            return false;
+        }
+        Term content = received.arg(2);
+        if (p.functor().equals("askOne") && content instanceof Literal l
+                && !ag.solver().solve(l, ag.newUnifier()).hasNext()
+                && ag.planLibrary().hasCandidate(new Trigger(Trigger.Op.ADD, Trigger.Type.TEST, l))) {
+            return false;
+        }
+        perform(s.functor(), p.functor(), content, received.arg(3).toString());
+        return true;
+    }
+
+    /** Handles a message from {@code sender} ({@code self} for the agent itself). */
+    private void perform(String sender, String performative, Term content, String msgId) {
+        Circumstance c = ag.circumstance();
+        String replyTo = sender.equals("self") ? ag.name() : sender;
+        Literal source = sources.computeIfAbsent(sender, x -> Literal.of("source", Literal.atom(x)));
+        var m = new Message(msgId, replyTo, ag.name(), performative, content, null);
         switch (m.performative()) {
             case "tell":
                 for (Literal l : literals(content)) {
@@ -58,6 +141,10 @@ final class MessageHandler {
                         jacabot.agent.syntax.Plan p = t instanceof jacabot.agent.syntax.StringTerm st ? ag.parser().parsePlan(st.value())
                                 : t instanceof jacabot.agent.syntax.PlanTerm pt ? pt.toPlan() : null;
                         if (p != null) {
+                            // the plan's own sources go (Jason's .remove_source_annot): the sender is its source
+                            if (p.label() != null) {
+                                p = p.withLabel(withoutSources(p.label()));
+                            }
                             ag.planLibrary().add(p, source.args().get(0), false);
                         }
                     } catch (jacabot.agent.parser.AslSyntaxException | IllegalArgumentException e) {
@@ -91,6 +178,9 @@ final class MessageHandler {
             case "askOne":
             case "askAll":
                 answer(m, content);
+                break;
+            case "askHow":
+                answerHow(m, content);
                 break;
             default:
                 ag.warn("Unknown performative '" + m.performative() + "' in " + m);
@@ -158,6 +248,40 @@ final class MessageHandler {
         ag.arch().sendMessage(reply);
     }
 
+    private static Literal withoutSources(Literal l) {
+        return l.withAnnots(l.annots().stream()
+                .filter(a -> !(a instanceof Literal al && al.functor().equals("source") && al.arity() == 1)).toList());
+    }
+
+    /** Answers askHow with the relevant plans, as plan terms without their source (Jason's {@code .remove_source_annot}). */
+    private void answerHow(Message m, Term content) {
+        Trigger te = null;
+        if (content instanceof jacabot.agent.syntax.TriggerTerm tt) {
+            te = tt.trigger();
+        } else if (content instanceof jacabot.agent.syntax.StringTerm st) {
+            try {
+                if (ag.parser().parseTerm("{" + st.value() + "}") instanceof jacabot.agent.syntax.TriggerTerm tt) {
+                    te = tt.trigger();
+                }
+            } catch (jacabot.agent.parser.AslSyntaxException e) {
+                te = null;
+            }
+        }
+        if (te == null) {
+            ag.warn("The content of askHow from " + m.sender() + " is not a trigger: " + content);
+            return;
+        }
+        var plans = new ArrayList<Term>();
+        // a trigger without a source asks for the agent's own plans (Jason's .relevant_plans)
+        Term asked = te.literal() instanceof Literal l && !l.hasSource() ? l.addAnnot(Literal.SOURCE_SELF) : te.literal();
+        for (Plan p : ag.planLibrary().candidates(te)) {
+            if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
+                plans.add(Renamer.renameApart(new jacabot.agent.syntax.PlanTerm(p.withLabel(withoutSources(p.label()))), ag));
+            }
+        }
+        ag.arch().sendMessage(new Message(ag.nextMessageId(), ag.name(), m.sender(), "tellHow", ListTerm.of(plans), m.id()));
+    }
+
     /** A sync ask got its answer: bind the fourth argument of the {@code .send} and resume. */
     private void answerAsk(Intention i, Message m) {
         IntendedMeans im = i.peek();
@@ -171,7 +295,10 @@ final class MessageHandler {
         } else if (answer instanceof ListTerm list) {
             var items = new ArrayList<Term>();
             for (Term t : list.elements()) {
-                items.add(t instanceof Literal l ? nested(l, from) : t);
+                items.add(t instanceof Literal l ? nested(l, from)
+                        : t instanceof jacabot.agent.syntax.PlanTerm pt && pt.label() instanceof Literal pl
+                                ? new jacabot.agent.syntax.PlanTerm(pl.addAnnot(from), pt.trigger(), pt.context(), pt.body(), pt.source())
+                                : t);
             }
             answer = ListTerm.of(items);
         }

@@ -9,7 +9,10 @@ import java.util.List;
 /** The plan library: plans in file order, each with a unique label ({@code p__N} when unnamed). */
 public final class PlanLibrary {
     private final List<Plan> plans = new ArrayList<>();
-    private int lastLabel;
+    /** Jason's kqmlPlans: how messages are handled by plans, after the agent's own plans, never listed. */
+    private List<Plan> kqmlPlans = List.of();
+    /** Numbers the unnamed plans; a MAS shares one among its agents, as Jason's labels are numbered JVM-wide. */
+    private java.util.concurrent.atomic.AtomicInteger lastLabel = new java.util.concurrent.atomic.AtomicInteger();
     private boolean goalStatePlans;
     private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
@@ -41,6 +44,14 @@ public final class PlanLibrary {
         public int hashCode() {
             return ((functor.hashCode() * 31 + arity) * 8 + op.ordinal() * 2 + (negated ? 1 : 0)) * 4 + type.ordinal();
         }
+    }
+
+    /**
+     * Numbers this library's unnamed plans ({@code p__N}) from a counter shared with other
+     * libraries: in Jason the plans of the second agent loaded go on from the first's.
+     */
+    public void shareLabelCounter(java.util.concurrent.atomic.AtomicInteger counter) {
+        lastLabel = counter;
     }
 
     /** Adds a plan (at the end, or at the beginning); names it and marks its source. */
@@ -95,7 +106,7 @@ public final class PlanLibrary {
 
     private Literal uniqueLabel() {
         while (true) {
-            String l = "p__" + (++lastLabel);
+            String l = "p__" + lastLabel.incrementAndGet();
             if (get(l) == null) {
                 return Literal.atom(l);
             }
@@ -159,7 +170,23 @@ public final class PlanLibrary {
                 out.add(p);
             }
         }
+        for (Plan p : kqmlPlans) {
+            if (isCandidate(p.trigger(), te)) {
+                out.add(p);
+            }
+        }
         return out;
+    }
+
+    /** Sets the plans that handle messages when the agent's own plans do not ({@code +!kqml_received}). */
+    void setKqmlPlans(List<Plan> ps) {
+        kqmlPlans = List.copyOf(ps);
+        candidateCache.clear();
+    }
+
+    /** {@return whether p is one of the library's built-in message plans} */
+    public boolean isKqmlPlan(Plan p) {
+        return kqmlPlans.stream().anyMatch(k -> k == p);
     }
 
     public boolean hasCandidate(Trigger te) {

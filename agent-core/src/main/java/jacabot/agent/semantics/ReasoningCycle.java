@@ -107,7 +107,16 @@ final class ReasoningCycle {
     private boolean applyFindOp(Event se) {
         boolean relevant = false;
         Unifier u = null;
+        // a message no plan of the agent's own handles gets the default handling (Jason's kqmlPlans)
+        boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
+                && se.trigger().literal() instanceof Literal l && l.arity() == 4 && l.functor().equals("kqml_received");
         for (Plan p : ag.planLibrary().candidates(se.trigger())) {
+            if (message && ag.planLibrary().isKqmlPlan(p)) {
+                message = false;
+                if (messages.handleByDefault((Literal) se.trigger().literal())) {
+                    return true;
+                }
+            }
             // a failed unification leaves the unifier empty: it serves the next plan
             if (u == null || !u.isEmpty()) {
                 u = ag.newUnifier();
@@ -125,6 +134,9 @@ final class ReasoningCycle {
                 option = it.next();
             }
             applyAddIM(se, p, option);
+            return true;
+        }
+        if (message && messages.handleByDefault((Literal) se.trigger().literal())) {
             return true;
         }
         return applyRelApplPlRule2(se, relevant ? "applicable" : "relevant");

@@ -5,7 +5,10 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
 
-/** {@code .structure(X)}: X is a structure (a list, or a literal that is not an atom). */
+/**
+ * {@code .structure(X)}: X is a structure: a list, a literal that is not an atom, or an atom
+ * written as an operand of a relational expression ({@code Z = a; .structure(Z)}), as in Jason.
+ */
 final class IsStructure extends DefaultInternalAction {
     IsStructure() {
         super(".structure", 1, 1);
@@ -13,6 +16,7 @@ final class IsStructure extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.ListTerm || args[0] instanceof jacabot.agent.syntax.Literal l && !l.isAtom();
+        return args[0] instanceof jacabot.agent.syntax.ListTerm
+                || args[0] instanceof jacabot.agent.syntax.Literal l && (!l.isAtom() || l.operandAtom());
     }
 }

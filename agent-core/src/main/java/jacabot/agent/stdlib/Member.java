@@ -14,7 +14,11 @@ final class Member extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         var out = new java.util.ArrayList<Unifier>();
-        for (Term t : list(args[1]).elements()) {
+        var items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
+        if (items == null) {
+            items = list(args[1]).elements();
+        }
+        for (Term t : items) {
             Unifier c = un.copy();
             if (c.unifies(args[0], t)) {
                 out.add(c);

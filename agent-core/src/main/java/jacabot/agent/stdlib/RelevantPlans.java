@@ -21,12 +21,18 @@ final class RelevantPlans extends DefaultInternalAction {
         }
         var plans = new java.util.ArrayList<Term>();
         var labels = new java.util.ArrayList<Term>();
+        Term asked = RelevantPlans.withSelfSource(tt.trigger().literal());
         for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
-            if (ag.newUnifier().unifies(p.trigger().literal(), tt.trigger().literal())) {
+            if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
                 plans.add(jacabot.agent.semantics.Renamer.renameApart(new PlanTerm(p), ag)); // its variables are its own
                 labels.add(p.label());
             }
         }
         return un.unifies(args[1], listOf(plans)) && (args.length < 3 || un.unifies(args[2], listOf(labels)));
+    }
+
+    /** A trigger without a source is asked for as the agent's own ({@code source(self)}), as Jason's. */
+    static Term withSelfSource(Term t) {
+        return t instanceof jacabot.agent.syntax.Literal l && !l.hasSource() ? l.addAnnot(jacabot.agent.syntax.Literal.SOURCE_SELF) : t;
     }
 }

@@ -12,7 +12,8 @@ import jacabot.agent.syntax.Term;
 /**
  * {@code .send(Receiver, Performative, Content[, Answer[, Timeout]])}: sends a message. An ask
  * with an answer argument suspends the intention until the reply (or the timeout, which binds
- * the answer to {@code timeout}).
+ * the answer to {@code timeout}). Any other performative's fourth argument is the id of the ask
+ * the message answers (a {@code kqml_received} plan replying, as Jason's).
  */
 final class Send extends DefaultInternalAction {
     Send() {
@@ -24,12 +25,13 @@ final class Send extends DefaultInternalAction {
         String performative = text(args[1]);
         boolean syncAsk = args.length >= 4 && performative.startsWith("ask");
         String id = ag.nextMessageId();
+        String inReplyTo = args.length >= 4 && !syncAsk ? text(args[3]) : null;
         if (args[0] instanceof ListTerm l) {
             for (Term r : l.elements()) {
-                send(ag, id, text(r), performative, args[2]);
+                send(ag, id, text(r), performative, args[2], inReplyTo);
             }
         } else {
-            send(ag, id, text(args[0]), performative, args[2]);
+            send(ag, id, text(args[0]), performative, args[2], inReplyTo);
         }
         if (syncAsk) {
             Intention si = ag.circumstance().selectedIntention();
@@ -50,9 +52,12 @@ final class Send extends DefaultInternalAction {
         return true;
     }
 
-    private static void send(Agent ag, String id, String receiver, String performative, Term content)
-            throws IaException {
-        if (!ag.arch().sendMessage(new Message(id, ag.name(), receiver, performative, content, null))) {
+    private static void send(Agent ag, String id, String receiver, String performative, Term content,
+            String inReplyTo) throws IaException {
+        if (receiver.equals("self")) {
+            receiver = ag.name(); // a message to oneself names its sender self (Jason's kqml_received)
+        }
+        if (!ag.arch().sendMessage(new Message(id, ag.name(), receiver, performative, content, inReplyTo))) {
             throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
         }
     }

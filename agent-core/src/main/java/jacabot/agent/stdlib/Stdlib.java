@@ -13,6 +13,16 @@ public final class Stdlib {
     public static Map<String, InternalAction> defaults() {
         var map = new LinkedHashMap<String, InternalAction>();
         put(map, new Abolish());
+        put(map, new Fork());
+        put(map, new ListPlans());
+        put(map, new SetAdd(false));
+        put(map, new SetAdd(true));
+        put(map, new QueueCreate());
+        put(map, new QueueAdd(false));
+        put(map, new QueueAdd(true));
+        put(map, new QueueTake(false));
+        put(map, new QueueTake(true));
+        put(map, new Join());
         put(map, new Type());
         put(map, new At());
         put(map, new IntentionIa());

@@ -13,7 +13,7 @@ public final class ArithFunctions {
             "math.asin/1", "math.acos/1", "math.atan/1", "math.random/0", "math.random/1",
             "math.pi/0", "math.e/0", "math.sum/1", "math.average/1", "math.mean/1", "math.median/1",
             "math.std_dev/1", "math.pow/2", "math.atan2/2", "math.signum/1",
-            ".count/1", ".length/1");
+            ".count/1", ".length/1", "system.time/0");
 
     private ArithFunctions() {
     }

@@ -10,7 +10,7 @@ import java.util.function.Consumer;
  * {@code [a1,...]} and strong negation {@code ~}. Annotations are kept sorted and without
  * duplicates, as Jason keeps them. Atoms are literals with no arguments and no annotations.
  */
-public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated)
+public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom)
         implements Term {
 
     public static final Literal TRUE = atom("true");
@@ -21,9 +21,24 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     /** The functor of a rule used as a term, {@code { head :- body }}: {@code rule__(head, body)}. */
     public static final String RULE_TERM = "rule__";
 
+    /**
+     * @param operandAtom an atom written as an operand of a relational expression ({@code Z = a}),
+     *        which Jason's parser makes a structure rather than an atom: only {@code .structure}
+     *        tells them apart, the flag counts for nothing else (equality, order, printing)
+     */
     public Literal {
         args = List.copyOf(args);
         annots = annots.isEmpty() ? List.of() : sortAnnots(annots);
+        operandAtom = operandAtom && args.isEmpty() && annots.isEmpty() && !negated;
+    }
+
+    public Literal(String functor, List<Term> args, List<Term> annots, boolean negated) {
+        this(functor, args, annots, negated, false);
+    }
+
+    /** {@return this atom as written in a relational expression (see {@link #operandAtom})} */
+    public Literal asOperandAtom() {
+        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true) : this;
     }
 
     public static Literal atom(String functor) {
@@ -194,7 +209,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     @Override
     public String toString() {
         if (functor.equals(RULE_TERM) && args.size() == 2 && annots.isEmpty()) {
-            return args.get(0) + " :- " + args.get(1);
+            return "{ " + args.get(0) + " :- " + args.get(1) + " }"; // as Jason prints a rule as a term
         }
         var sb = new StringBuilder();
         if (negated) {

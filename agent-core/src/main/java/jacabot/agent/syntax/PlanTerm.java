@@ -13,6 +13,13 @@ import java.util.function.Consumer;
  */
 public record PlanTerm(Term label, Trigger trigger, Term context, Term body, SourceInfo source) implements Term {
 
+    /** A plan's body taken out of it ({@code {@L +!g <- B}}) prints bare, as Jason's: {@code a; b}. */
+    public PlanTerm {
+        if (body instanceof BodyTerm b && b.braced()) {
+            body = new BodyTerm(b.steps(), false);
+        }
+    }
+
     public PlanTerm(Plan p) {
         this(p.label(), p.trigger(), p.context(), p.body(), p.source());
     }

@@ -64,6 +64,15 @@ class LocalMASTest {
     }
 
     @Test
+    void unnamedPlansAreNumberedAcrossAgentsInLoadOrder() throws Exception {
+        // Jason 3.2 numbers p__N JVM-wide: a's two plans are p__1 and p__2, so b's go on from p__3
+        agent("a", "+!x <- true.\n+!y <- true.\n");
+        agent("b", "!s.\n+!z <- true.\n+!s <- .relevant_plans({+!_}, _, L); .print(L).\n");
+        mas.runUntilQuiescent(10_000);
+        assertEquals(List.of("[b] [p__3[source(self),url(\"file:b.asl\")],p__4[source(self),url(\"file:b.asl\")]]"), lines());
+    }
+
+    @Test
     void messagesFromOneSenderArriveInOrder() throws Exception {
         agent("a", "!go.\n+!go <- for (.range(I, 1, 20)) { .send(b, tell, n(I)) }.\n");
         agent("b", "+n(I) <- .print(I).\n");
