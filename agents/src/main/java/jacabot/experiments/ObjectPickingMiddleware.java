@@ -29,6 +29,13 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private int[] rgb = new int[9];
     private boolean cylinderSignalled;
     private String lateralCylinder;
+    /**
+     * A lateral cylinder not turned to within this time is forgotten (issue 13): the agent may not
+     * act on the signal (busy, or near the storage area), and until then neither lateral cylinders
+     * nor far ones were signalled again: the robot drove past cylinders for the rest of the run.
+     */
+    static final long LATERAL_MEMORY_MS = 6000;
+    private long lateralSinceMs;
     private boolean holding;
     private double armPosition = 0;
     /** Sides whose very-close lateral obstacle was signalled; re-armed when that side is safe. */
@@ -91,6 +98,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     }
 
     private void sight(int[] image) {
+        forgetStaleLateral();
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
             return;
@@ -99,6 +107,12 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
             lastSightingMs = simTimeMs();
             signal("cylinderSighted", Math.round(s.offset() * 10) / 10.0, Math.round(s.distance() * 100) / 100.0);
         });
+    }
+
+    private void forgetStaleLateral() {
+        if (lateralCylinder != null && simTimeMs() - lateralSinceMs > LATERAL_MEMORY_MS) {
+            lateralCylinder = null;
+        }
     }
 
     /** Whether the sighting's ray meets an excluded area about as far as the cylinder seems to be. */
@@ -178,12 +192,14 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 if (v.length == 9) {
                     rgb = v;
                 }
+                forgetStaleLateral();
                 if (lateralCylinder != null && red(1)) {
                     lateralCylinder = null; // turned towards it: now it is ahead
                     signal("cylinderBeyond");
                 } else if (lateralCylinder == null && !stopDistance && !holding && !cylinderSignalled
                         && !red(1) && (red(0) || red(2))) {
                     lateralCylinder = red(0) ? "left" : "right";
+                    lateralSinceMs = simTimeMs();
                     signal(red(0) ? "cylinderLeft" : "cylinderRight");
                 }
                 break;
