@@ -226,7 +226,10 @@ tripTimeout(150000).
     <- .wait("-picking"); .wait(50); !move(N).
 // (issue 13) going to a cylinder seen far off, while it stays in sight
 +!move(N) : homing(_) & lastSighted(S) & .system_time(T) & T - S < 1500 <- .wait(300).
-+!move(N) : homing(_) <- -homing(_).
+// (issue 13) a cylinder lost from sight is not chased again at once: the sweep's turn towards its
+// waypoint and the homing turn towards a cylinder at the edge of the image took turns for minutes
++!move(N) : homing(_) <- -homing(_); !!lookAway.
++!lookAway : ignoreFor(I) <- +ignoring; .wait(I / 3); -ignoring.
 // (issue 13) an obstacle still seen when avoiding ended raises no new event: avoid it now
 +!move(N) : obstacle(true) & delta(D) <- +avoiding; stop; !avoid(D).
 // (issue 13) no cylinder for a while: sweep the arena instead of walking at random
