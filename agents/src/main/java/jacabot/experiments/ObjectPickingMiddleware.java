@@ -98,7 +98,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     }
 
     private void sight(int[] image) {
-        forgetStaleLateral();
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
             return;
@@ -186,13 +185,13 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
 
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
+        forgetStaleLateral(); // before any reading consults it: sections, far sight, lateral obstacles
         switch (kind) {
             case CAMERA_SECTIONS:
                 int[] v = info.getIntValues();
                 if (v.length == 9) {
                     rgb = v;
                 }
-                forgetStaleLateral();
                 if (lateralCylinder != null && red(1)) {
                     lateralCylinder = null; // turned towards it: now it is ahead
                     signal("cylinderBeyond");
