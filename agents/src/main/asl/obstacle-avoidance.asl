@@ -36,6 +36,8 @@ cruiseSpeed(100).
 // the middleware keeps the floor crossed and proposes turns towards floor not yet crossed
 wheelGeometry(0.001, 0.09).
 turnSpeed(100).
+// (issue 13) how long a straight leg may go over floor already crossed, ms (a cell is 1 s at cruiseSpeed)
+staleLimit(2000).
 // (issue 13) in an arena of closeArea m2 or more, closer to obstacles: the middleware's obstacle
 // at a front reading over 480 (about 5 cm; the thesis: 350, about 8 cm), clear under 300 (200), or
 // a left-right difference over 150 (100). The thesis' levels keep the robot's centre over 12 cm
@@ -97,11 +99,14 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
     <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]).
 
-// (issue 13) on the spot, no backing off: the robot cannot see behind it, and backing off drove
-// it into the box behind (a disc turning on the spot touches nothing new)
+// (issue 13) on the spot after a step back of 150 ms (1.5 cm): the robot cannot see behind it, and
+// a longer back-off drove it into the box behind; the short step frees it from a box it touches
+// out of the sensors' sight, which a disc turning on the spot stays in touch with (the contact time
+// of escapes in generated worlds)
 +!escape : maxSpeed(M)
     <- println("Trapped: turning away"); -+obstacleTimes([]);
-       ?turnSpeed(S); .random(R); W = (1800 + R * 1800) * M / 2 / S; setSpeeds(S, -S); .wait(W); stop.
+       ?turnSpeed(S); .random(R); W = (1800 + R * 1800) * M / 2 / S;
+       setSpeeds(-S, -S); .wait(150); setSpeeds(S, -S); .wait(W); stop.
 
 /* Random motion, suspended while avoiding (Chapter 4 §1.2, §5) */
 
@@ -115,11 +120,20 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // spot, not along the listing's arcs (turnLeft/turnRight: one wheel at 20, the other at 50),
 // whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
 // nothing new)
-+!move(N) : N <= 0.3 & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; .wait(W).
++!move(N) : N <= 0.3 & not stale & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; !leg(W).
+// (issue 13) just after an obstacle, no turn on the spot: the robot may still touch it at its flank,
+// out of the sensors' sight, and a disc turning on the spot stays in touch; a straight leg leaves
++!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & Now - T < 2000 & cruiseSpeed(V)
+    <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; !leg(W).
 // (issue 13) replacement of the random left and right turns: the turn towards the floor not yet
 // crossed (exploreTurn, from dead reckoning), then a straight leg
 +!move(N) : N > 0.3 & cruiseSpeed(V) & turnSpeed(S)
     <- exploreTurn(S, Side, Ms);
        if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
-       setSpeeds(V, V); .random(R); .wait(5000 + R * 15000).
+       -stale; setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
 -!move(_) <- println("move failed").
+
+// (issue 13) a straight leg of T ms, cut short once it has gone staleLimit ms over floor crossed
+// before (dead reckoning): in a big arena a leg over old ground was time lost for coverage
++!leg(T) : T <= 0.
++!leg(T) : staleLimit(L) <- .wait(500); staleTime(S); if (S >= L) { +stale } else { !leg(T - 500) }.

@@ -21,6 +21,7 @@ final class ExplorationMap {
     private double x, z, heading; // metres, metres, radians
     private double left, right;   // wheel speeds in effect, speed units
     private long lastMs = -1;
+    private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
 
@@ -47,7 +48,9 @@ final class ExplorationMap {
             x += v * Math.cos(mid) * dt;
             z += v * Math.sin(mid) * dt;
             heading += w * dt;
-            visit();
+            if (visit()) {
+                lastFreshMs = nowMs;
+            }
         }
         lastMs = nowMs;
         left = newLeft;
@@ -90,8 +93,13 @@ final class ExplorationMap {
         return fresh;
     }
 
-    private void visit() {
-        visited.add(key(x, z));
+    private boolean visit() {
+        return visited.add(key(x, z));
+    }
+
+    /** {@return how long, up to {@code nowMs}, the centre has crossed only cells crossed before, in ms} */
+    long staleMillis(long nowMs) {
+        return Math.max(0, nowMs - lastFreshMs);
     }
 
     /** {@return how long a turn of {@code degrees} on the spot takes, wheels at ±{@code wheelSpeed}, in ms} */

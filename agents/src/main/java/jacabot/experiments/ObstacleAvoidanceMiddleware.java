@@ -92,6 +92,19 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         ms.set((double) map.turnMillis(turn, speed));
     }
 
+    /**
+     * How long the robot has gone over floor already crossed (issue 13), in ms: a straight leg over
+     * old ground is cut short. Fails before {@code odometry}.
+     */
+    @jacabot.cartago.OPERATION
+    void staleTime(jacabot.cartago.OpFeedbackParam<Double> ms) {
+        if (map == null) {
+            failed("staleTime needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        ms.set((double) map.staleMillis(simTimeMs()));
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         if (kind == SensorKind.WHEEL_SPEEDS && map != null) {

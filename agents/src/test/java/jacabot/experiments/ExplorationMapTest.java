@@ -50,6 +50,23 @@ class ExplorationMapTest {
     }
 
     @Test
+    void staleTimeCountsOnlyFloorCrossedBefore() {
+        drive(0, 3000, 100); // 30 cm out: fresh cells all the way
+        assertTrue(map.staleMillis(3000) < 1000, "the cells just entered were new, got " + map.staleMillis(3000));
+        drive(3000, 5500, -100); // 25 cm back over the same cells
+        assertTrue(map.staleMillis(5500) >= 2000, "over old floor since 3 s, got " + map.staleMillis(5500));
+        drive(5500, 9000, -100); // past the start: new floor again
+        assertTrue(map.staleMillis(9000) < 1000, "fresh floor behind the start, got " + map.staleMillis(9000));
+    }
+
+    /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
+    private void drive(long fromMs, long toMs, double speed) {
+        for (long t = fromMs; t <= toMs; t += 40) {
+            map.wheels(t, speed, speed);
+        }
+    }
+
+    @Test
     void aWheelGeometryMustBePositive() {
         assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0, 0.09));
         assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0.001, -1));
