@@ -53,11 +53,29 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
         }
     }
 
-    /** {@return an agent file, named as given; it includes files beside it (then from the working directory)} */
+    /**
+     * {@return an agent file, named as given; it includes files beside it, then from the working
+     * directory, then the packaged agents' own (so a copy of a packaged agent keeps its
+     * {@code { include("common/initial-phase.asl") }} wherever it is)}
+     */
     public static AgentSource file(Path file) throws IOException {
         String text = Files.readString(file, StandardCharsets.UTF_8);
         return new AgentSource(new SourceResolver.Source(file.toString(), text, file.toAbsolutePath().normalize().toString()),
-                SourceResolver.files(List.of()));
+                filesThenPackaged(AgentSource.class.getClassLoader()));
+    }
+
+    /** Files (absolute locations) first, then the packaged agents' folder; a packaged source's includes stay packaged. */
+    private static SourceResolver filesThenPackaged(ClassLoader loader) {
+        SourceResolver files = SourceResolver.files(List.of());
+        SourceResolver packaged = SourceResolver.resources(loader);
+        var beside = new SourceResolver.Source("agents/src/main/asl/", "", PACKAGED);
+        return (file, from) -> {
+            if (from != null && from.location() != null && from.location().startsWith(PACKAGED)) {
+                return packaged.find(file, from);
+            }
+            SourceResolver.Source found = files.find(file, from);
+            return found != null ? found : packaged.find(file, beside);
+        };
     }
 
     /** {@return a program given as text (a probe, a test), named {@code name}; it can include files only by their path} */

@@ -48,6 +48,20 @@ class AgentSourceTest {
         assertEquals(dir.resolve("mine/agent.asl") + ":2:1: error: included file 'common/start.asl' not found", e.getMessage());
     }
 
+    /** A copy of a packaged agent, edited elsewhere, still finds the shared initial phase (the installation's). */
+    @Test
+    void aCopiedAgentFallsBackOnThePackagedIncludes(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("my-agent.asl"), AgentSource.packaged(Experiment.NAVIGATION).text());
+        AgentSource copy = AgentSource.file(dir.resolve("my-agent.asl"));
+        AgentProgram program = copy.parse(copy.parser());
+        assertEquals("agents/src/main/asl/common/initial-phase.asl", program.plans().get(1).source().file());
+        assertEquals(texts(AgentSource.packaged(Experiment.NAVIGATION).parse(copy.parser())), texts(program));
+        // a file of its own beside it comes first
+        Files.createDirectories(dir.resolve("common"));
+        Files.writeString(dir.resolve("common/initial-phase.asl"), "+!init(Id) <- lookupArtifact(\"mine\", Id).\n");
+        assertEquals(dir.resolve("common/initial-phase.asl").toString(), copy.parse(copy.parser()).plans().get(1).source().file());
+    }
+
     @Test
     void theAgentsCodeMetricsCountWhatTheyInclude() throws Exception {
         AgentSource packaged = AgentSource.packaged(Experiment.OBSTACLE_AVOIDANCE);
