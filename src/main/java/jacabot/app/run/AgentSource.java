@@ -43,7 +43,7 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
         String location = resource.startsWith("/") ? resource.substring(1) : resource;
         ClassLoader loader = AgentSource.class.getClassLoader();
         try (InputStream in = loader.getResourceAsStream(location)) {
-            if (in == null || !location.startsWith(PACKAGED)) {
+            if (in == null) {
                 throw new IOException("no agent " + resource + " on the class path");
             }
             String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
