@@ -81,12 +81,12 @@ goRoundTime(2500).
 
 +!start <- !init(Id); focus(Id); println("focus achieved"); accept; !waitConnection.
 
-// The experiment runner may have made the middleware already (lockstep runs); otherwise make it.
-+!init(Id) <- lookupArtifact("middleware", Id).
--!init(Id) : middlewarePort(P)
-    <- makeArtifact("middleware", "jacabot.experiments.NavigationMiddleware", [P], Id);
-       println("Artifact created").
--!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
+// The initial phase every agent shares (common/initial-phase.asl): +!init finds the middleware a
+// runner made (lockstep runs) or makes one of this class on middlewarePort; -!start stops the MAS
+// when the start fails. It stands where this agent's own copy stood (plan order and p__N labels
+// kept), in as many lines (the code_line of failure annotations below is kept too).
+middlewareClass("jacabot.experiments.NavigationMiddleware").
+{ include("common/initial-phase.asl") }
 
 +!waitConnection : connected(true)
     <- deltaBased(false);

@@ -58,12 +58,12 @@ legSpeed(V) :- not picked(true) & cruiseSpeed(V).
 
 +!start <- !init(Id); focus(Id); accept; !waitConnection.
 
-// The experiment runner may have made the middleware already (lockstep runs); otherwise make it.
-+!init(Id) <- lookupArtifact("middleware", Id).
--!init(Id) : middlewarePort(P)
-    <- makeArtifact("middleware", "jacabot.experiments.ObjectPickingMiddleware", [P], Id);
-       println("Artifact created").
--!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
+// The initial phase every agent shares (common/initial-phase.asl): +!init finds the middleware a
+// runner made (lockstep runs) or makes one of this class on middlewarePort; -!start stops the MAS
+// when the start fails. It stands where this agent's own copy stood (plan order and p__N labels
+// kept), in as many lines (the code_line of failure annotations below is kept too).
+middlewareClass("jacabot.experiments.ObjectPickingMiddleware").
+{ include("common/initial-phase.asl") }
 
 +!waitConnection : connected(true)
     <- println("Connection successful, waiting for sensor data");

@@ -13,7 +13,6 @@ import jacabot.sim.world.AreaSpec;
 import jacabot.sim.world.WorldSpec;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -98,11 +97,8 @@ final class ScenarioRun {
                 s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
         s = edit.apply(s);
         ScenarioRun run = new ScenarioRun(experiment, seed, SimWorld.of(s));
-        String source;
-        try (InputStream in = ScenarioRun.class.getResourceAsStream(agentResource)) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
-        var lockstep = new LockstepRun(run.world, null, experiment, source, experiment.id() + ".asl", seed,
+        var source = jacabot.app.run.AgentSource.resource(agentResource, experiment.id() + ".asl");
+        var lockstep = new LockstepRun(run.world, null, experiment, source, seed,
                 new PrintStream(run.new LineSink(), true, StandardCharsets.UTF_8));
         AreaSpec storage = s.storage();
         lockstep.onStep(data -> {

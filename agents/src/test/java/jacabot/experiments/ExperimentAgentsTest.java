@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.ObjectTerm;
@@ -25,6 +26,42 @@ class ExperimentAgentsTest {
                 assertTrue(program.plans().size() >= 10, file + " has its plans");
                 assertEquals(1, program.goals().size(), file + " starts with !start");
             }
+        }
+    }
+
+    /**
+     * The packaged agents include their initial phase from the class path (as the launcher loads
+     * them), and the shared plans sit where each agent's own copy was: right after +!start, before
+     * +!waitConnection (plan order is the order plans are tried in, and names the p__N labels).
+     */
+    @Test
+    void everyPackagedAgentIncludesItsInitialPhaseFromTheClassPath() throws Exception {
+        var loader = ExperimentAgentsTest.class.getClassLoader();
+        for (String name : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume")) {
+            String text;
+            try (var in = loader.getResourceAsStream("asl/" + name + ".asl")) {
+                text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            }
+            var program = new AslParser(SourceResolver.resources(loader))
+                    .parse(new SourceResolver.Source("agents/src/main/asl/" + name + ".asl", text, "asl/" + name + ".asl"));
+            assertEquals(List.of("+!start", "+!init(Id)", "-!init(Id)", "-!start[error_msg(M)]", "+!waitConnection",
+                    "+!waitConnection"), program.plans().subList(0, 6).stream().map(p -> p.trigger().toString()).toList(), name);
+            assertEquals("agents/src/main/asl/common/initial-phase.asl", program.plans().get(1).source().file());
+            assertEquals(new AslParser().parseFile(ASL.resolve(name + ".asl")).plans().size(), program.plans().size(),
+                    name + ": the same plans as read from disk");
+        }
+    }
+
+    /** Issue 19: the shared -!init makes the experiment's own middleware, named by the agent's middlewareClass. */
+    @Test
+    void withoutARunnerTheAgentMakesItsOwnMiddleware() {
+        for (String name : List.of("obstacle-avoidance", "object-picking")) {
+            var robot = connected(name);
+            String made = robot.actionNames().stream().filter(a -> a.startsWith("makeArtifact")).findFirst().orElseThrow();
+            String middleware = name.equals("obstacle-avoidance") ? "ObstacleAvoidanceMiddleware" : "ObjectPickingMiddleware";
+            assertEquals("makeArtifact(\"middleware\",\"jacabot.experiments." + middleware + "\",[4444],Id)",
+                    made.replaceAll(",_?\\w*Id\\)$", ",Id)"), robot.actionNames().toString());
+            assertEquals("println(\"Artifact created\")", robot.actionNames().get(robot.actionNames().indexOf(made) + 1));
         }
     }
 

@@ -2,6 +2,7 @@ package jacabot.app.bench;
 
 import jacabot.experiments.link.LatencyStats;
 import jacabot.robot.Experiment;
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.app.run.RealTimeRun;
 import jacabot.robot.baseline.BaselineRunner;
@@ -22,14 +23,14 @@ import java.util.Locale;
  * time: the agent's {@code stop} leaves the middleware → the controller applies it.
  */
 public final class LatencyBenchmark {
-    static final String AGENT = String.join("\n",
+    static final AgentSource AGENT = AgentSource.text("latency.asl", String.join("\n",
             "// The latency probe: react to every change of the obstacle property.",
             "!start.",
             "+!start <- lookupArtifact(\"middleware\", Id); focus(Id); accept; !go.",
             "+!go : connected(true) <- acquireData.",
             "+!go <- .wait(50); !go.",
             "+obstacle(true) <- stop.",
-            "+obstacle(false) <- stop.", "");
+            "+obstacle(false) <- stop.", ""));
     /** Simulated milliseconds between two moves of the box (each move is one sample). */
     static final long TOGGLE_MS = 120;
     /**
@@ -116,7 +117,7 @@ public final class LatencyBenchmark {
     private jacabot.experiments.link.LinkTimings realTime() throws Exception {
         SimWorld w = world();
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-        try (var run = new RealTimeRun(w, Experiment.OBSTACLE_AVOIDANCE, AGENT, "latency.asl", 1, speed, quiet)) {
+        try (var run = new RealTimeRun(w, Experiment.OBSTACLE_AVOIDANCE, AGENT, 1, speed, quiet)) {
             run.start();
             run.runner().setSpeedFactor(Math.max(speed, WARM_UP_SPEED));
             run.runner().start();
@@ -144,7 +145,7 @@ public final class LatencyBenchmark {
     private void lockstep() throws Exception {
         SimWorld w = world();
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-        var run = new LockstepRun(w, null, Experiment.OBSTACLE_AVOIDANCE, AGENT, "latency.asl", 1, quiet);
+        var run = new LockstepRun(w, null, Experiment.OBSTACLE_AVOIDANCE, AGENT, 1, quiet);
         var mover = new BoxMover(w);
         run.onStep(data -> {
             if (data.simTimeMs() >= TOGGLE_MS * 10 && data.simTimeMs() % TOGGLE_MS == 0) {

@@ -1,12 +1,12 @@
 package jacabot.app.bench;
 
 import jacabot.robot.Experiment;
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.sim.SimWorld;
 import java.io.ByteArrayOutputStream;
-import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -33,10 +33,7 @@ public final class SimulationBenchmark {
 
     public void run() throws Exception {
         Experiment e = Experiment.SUSPEND_RESUME;
-        String source;
-        try (InputStream in = SimulationBenchmark.class.getResourceAsStream(e.agentResource())) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+        AgentSource source = AgentSource.packaged(e);
         // Warm-up: a whole run first, so that the measured one runs compiled code rather than
         // sharing the two cores with the JIT compiler (whose C2 threads otherwise take a core for seconds).
         runAgent(world, source, seconds);
@@ -79,10 +76,10 @@ public final class SimulationBenchmark {
         out.printf(Locale.ROOT, "| %s | %.2f | %.0f%% | %.1f |%n", part, nanos / 1e9, 100.0 * nanos / wall, nanos / 1e3 / steps);
     }
 
-    private Measured runAgent(Path world, String source, double duration) throws Exception {
+    private Measured runAgent(Path world, AgentSource source, double duration) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-        var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, "suspend-resume.asl", seed, quiet);
+        var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
         var result = run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
         return new Measured(run, result);
     }

@@ -1,6 +1,7 @@
 package jacabot.app.cli;
 
 import jacabot.app.run.AgentMetrics;
+import jacabot.app.run.AgentSource;
 import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.baseline.BaselineRunner;
@@ -9,7 +10,6 @@ import jacabot.robot.run.RunRecorder;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import java.io.ByteArrayOutputStream;
-import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -68,7 +68,7 @@ final class CompareCommand implements Callable<Integer> {
         for (Experiment e : Experiment.values()) {
             CodeMetrics c = CodeMetrics.of(e, root != null ? CodeMetrics.sourceDir(root)
                     : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
-            AgentMetrics a = AgentMetrics.of(e, agentSource(e));
+            AgentMetrics a = AgentMetrics.of(e, AgentSource.packaged(e));
             out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d: %s |%n", e, c.codeLines(), c.ifs(),
                     c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
                     a.coordinationBeliefs().size(), String.join(", ", a.coordinationBeliefs()));
@@ -81,12 +81,6 @@ final class CompareCommand implements Callable<Integer> {
         return root != null ? root.resolve(file) : jacabot.app.Installation.resolve(file);
     }
 
-    private static String agentSource(Experiment e) throws java.io.IOException {
-        try (InputStream in = CompareCommand.class.getResourceAsStream(e.agentResource())) {
-            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
-    }
-
     private record AgentRun(RunSummary summary, jacabot.experiments.link.LatencyStats reactive,
             jacabot.experiments.link.LatencyStats response) {
     }
@@ -94,7 +88,7 @@ final class CompareCommand implements Callable<Integer> {
     private static AgentRun runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-        var run = new LockstepRun(simWorld, null, e, agentSource(e), e.id() + ".asl", seed, quiet);
+        var run = new LockstepRun(simWorld, null, e, AgentSource.packaged(e), seed, quiet);
         RunRecorder recorder = RunRecorder.attach(simWorld, e.robot());
         var result = run.runFor(seconds);
         return new AgentRun(recorder.summary("agent"), run.reactiveTimes(), result.response());

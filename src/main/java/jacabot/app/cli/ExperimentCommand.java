@@ -5,6 +5,7 @@ import jacabot.cartago.CartagoException;
 import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.ExperimentMatch;
 import jacabot.app.run.LockstepRun;
 import jacabot.sim.SimWorld;
@@ -13,7 +14,6 @@ import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -123,20 +123,12 @@ final class ExperimentCommand implements Callable<Integer> {
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),
                 spec.walls(), spec.boxes(), spec.cylinders(), spec.storage(), spec.charger(), spec.robots(), spec.events());
-        String source;
-        String sourceName;
-        if (agent != null) {
-            source = readAgent(agent);
-            sourceName = agent.toString();
-        } else {
-            try (InputStream in = ExperimentCommand.class.getResourceAsStream(experiment.agentResource())) {
-                source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            }
-            sourceName = "agents/src/main/asl/" + experiment.id() + ".asl";
-        }
+        AgentSource source = agent != null ? readAgent(agent)
+                : AgentSource.packaged(experiment, "agents/src/main/asl/" + experiment.id() + ".asl");
+        String sourceName = source.name();
         var mixUps = new java.util.ArrayList<String>();
         if (!baseline) {
-            mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source, sourceName));
+            mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source.text(), sourceName));
         } else {
             ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
@@ -166,12 +158,12 @@ final class ExperimentCommand implements Callable<Integer> {
         if (viewer) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, source, sourceName, runSeed, seconds, log, outDir);
+            return runWithViewer(simWorld, source, runSeed, seconds, log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         try {
-            run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed, console);
+            run = new LockstepRun(simWorld, null, experiment, source, runSeed, console);
         } catch (AslSyntaxException e) {
             throw new UserError(e.getMessage());
         } catch (CartagoException e) {
@@ -285,13 +277,13 @@ final class ExperimentCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** {@return the agent's text} @throws UserError when it cannot be read */
-    static String readAgent(Path file) {
+    /** {@return the agent in the file (its includes are read beside it)} @throws UserError when it cannot be read */
+    static AgentSource readAgent(Path file) {
         if (!Files.isRegularFile(file)) {
             throw new UserError("--agent " + file + ": no such file");
         }
         try {
-            return Files.readString(file, StandardCharsets.UTF_8);
+            return AgentSource.file(file);
         } catch (java.nio.file.AccessDeniedException e) {
             throw new UserError("--agent " + file + ": permission denied; make it readable (chmod u+r)");
         } catch (java.nio.charset.MalformedInputException e) {
@@ -332,14 +324,14 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, String source, String sourceName, long runSeed, double seconds,
+    private int runWithViewer(SimWorld simWorld, AgentSource source, long runSeed, double seconds,
             ConsoleLog log, Path outDir) throws Exception {
         // the step log as in a headless run; its steps come from the controller's event log
-        var tap = jacabot.app.replay.RealTimeTap.open(simWorld, outDir, experiment, sourceName);
+        var tap = jacabot.app.replay.RealTimeTap.open(simWorld, outDir, experiment, source.name());
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
         long start = System.nanoTime();
         List<jacabot.app.run.LagMeter.Episode> lags = List.of();
-        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, sourceName, runSeed, speed, log.agents(),
+        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
                     ConsoleLog.lines(log::result));

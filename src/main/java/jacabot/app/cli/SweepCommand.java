@@ -149,12 +149,12 @@ final class SweepCommand implements Callable<Integer> {
             err.flush();
             return 2;
         }
-        String agentSource = null;
+        jacabot.app.run.AgentSource agentSource = null;
         if (agent != null) {
             try {
                 Path file = Files.isRegularFile(agent) || agent.isAbsolute() ? agent : jacabot.app.Installation.resolve(agent.toString());
                 agentSource = ExperimentCommand.readAgent(file);
-                new jacabot.agent.parser.AslParser().parse(agentSource, file.toString()); // a syntax error before, not in every run
+                agentSource.parse(agentSource.parser()); // a syntax error before, not in every run
                 agent = file;
             } catch (UserError | jacabot.agent.parser.AslSyntaxException e) {
                 err.println(e instanceof UserError ? "error: " + e.getMessage() : e.getMessage()); // file:line:col: error: ...
@@ -178,7 +178,7 @@ final class SweepCommand implements Callable<Integer> {
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
                 .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
         if (agentSource != null) {
-            sweep.agent(experiments.get(0), agentSource, agent.toString());
+            sweep.agent(experiments.get(0), agentSource);
         }
         Sweep.Outcomes result = sweep.run(jobList);
         List<RunOutcome> runs = new ArrayList<>(result.runs());

@@ -1,7 +1,6 @@
 package jacabot.app.run;
 import jacabot.robot.Experiment;
 
-import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.BodyStep;
@@ -22,13 +21,21 @@ import java.util.TreeSet;
 public record AgentMetrics(Experiment experiment, int codeLines, int plans, int contexts, int conditions,
         Set<String> coordinationBeliefs) {
 
+    /** {@return the figures of an agent given as text (it includes files only by their path)} */
     public static AgentMetrics of(Experiment e, String source) throws AslSyntaxException {
-        AgentProgram program = new AslParser().parse(source, e.id() + ".asl");
+        return of(e, AgentSource.text(e.id() + ".asl", source));
+    }
+
+    /** {@return the figures of an agent and the sources it includes (the code lines of each count)} */
+    public static AgentMetrics of(Experiment e, AgentSource agent) throws AslSyntaxException {
+        AgentProgram program = agent.parse(agent.parser());
         int code = 0;
-        for (String line : source.split("\n")) {
-            String t = line.trim();
-            if (!t.isEmpty() && !t.startsWith("//") && !t.startsWith("/*") && !t.startsWith("*")) {
-                code++;
+        for (var source : agent.sources()) {
+            for (String line : source.text().split("\n")) {
+                String t = line.trim();
+                if (!t.isEmpty() && !t.startsWith("//") && !t.startsWith("/*") && !t.startsWith("*")) {
+                    code++;
+                }
             }
         }
         int contexts = 0;

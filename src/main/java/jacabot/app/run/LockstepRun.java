@@ -67,9 +67,9 @@ public final class LockstepRun {
     };
 
     /**
-     * @param agentSource the agent's program text; {@code agentFile} names it in messages
+     * @param agent the agent's program (its includes are read from where it came from)
      */
-    public LockstepRun(SimWorld world, String robotName, Experiment experiment, String agentSource, String agentFile,
+    public LockstepRun(SimWorld world, String robotName, Experiment experiment, AgentSource agent,
             long seed, PrintStream console) throws AslSyntaxException, CartagoException {
         this.world = world;
         this.robotName = robotName;
@@ -82,11 +82,10 @@ public final class LockstepRun {
         // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
         middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
-        var parser = new AslParser();
+        AslParser parser = agent.parser();
         // the world's landmarks reach the agent as initial beliefs (issue 13)
-        AgentProgram program = WorldBeliefs.inject(parser.parse(agentSource, agentFile), world.spec());
-        var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
-        agent.setPlanListener((event, plan) -> {
+        AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec());
+        mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
                 reactive.record((System.nanoTime() - deliveredNanos) / 1000);

@@ -36,22 +36,22 @@ public final class RealTimeRun implements AutoCloseable {
     /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
     public static final long STALL_MS = 100;
 
-    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+    public RealTimeRun(SimWorld world, Experiment experiment, AgentSource agent, long seed,
             double speed, PrintStream console) throws AslSyntaxException, CartagoException {
-        this(world, experiment, agentSource, agentFile, seed, speed, console, 0);
+        this(world, experiment, agent, seed, speed, console, 0);
     }
 
     /** @param port where the middleware listens (0: a free loopback port) */
-    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+    public RealTimeRun(SimWorld world, Experiment experiment, AgentSource agent, long seed,
             double speed, PrintStream console, int port) throws AslSyntaxException, CartagoException {
-        this(world, experiment, agentSource, agentFile, seed, speed, console, port, null);
+        this(world, experiment, agent, seed, speed, console, port, null);
     }
 
     /**
      * @param controllerEvents the controller's event log (a line per reading batch, applied command
      *                         and pose, on the simulation thread; e.g. for the step log), or null
      */
-    public RealTimeRun(SimWorld world, Experiment experiment, String agentSource, String agentFile, long seed,
+    public RealTimeRun(SimWorld world, Experiment experiment, AgentSource agent, long seed,
             double speed, PrintStream console, int port, java.util.function.Consumer<String> controllerEvents)
             throws AslSyntaxException, CartagoException {
         this.world = world;
@@ -65,12 +65,11 @@ public final class RealTimeRun implements AutoCloseable {
         var id = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), port);
         int boundPort = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
-        var parser = new AslParser();
+        AslParser parser = agent.parser();
         // the world's landmarks reach the agent as initial beliefs (issue 13)
-        var program = WorldBeliefs.inject(parser.parse(agentSource, agentFile), world.spec());
-        var agent = mas.createAgent("robot", program, parser, CAgentArch::new);
+        var program = WorldBeliefs.inject(agent.parse(parser), world.spec());
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
-        agent.setPlanListener((event, plan) -> {
+        mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
             timeReaction(event);
             if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l
                     && l.getAnnot("percept_type") != null) {

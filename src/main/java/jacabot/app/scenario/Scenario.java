@@ -4,6 +4,7 @@ import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.replay.RunTap;
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.cartago.CartagoException;
 import jacabot.robot.Experiment;
@@ -14,7 +15,6 @@ import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.world.WorldSpec;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -109,25 +109,21 @@ public final class Scenario {
         long runSeed = seed != null ? seed : s.seed();
         s = new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), runSeed, s.sensorNoise(), s.walls(),
                 s.boxes(), s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
-        String source;
-        String sourceName;
+        AgentSource source;
         if (agent != null) {
             if (!Files.isRegularFile(agent)) {
                 throw new ScenarioException(agent + ": no such file", null);
             }
-            source = Files.readString(agent, StandardCharsets.UTF_8);
-            sourceName = agent.toString();
+            source = AgentSource.file(agent);
         } else {
-            try (InputStream in = Scenario.class.getResourceAsStream(experiment.agentResource())) {
-                source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            }
-            sourceName = experiment.id() + ".asl";
+            source = AgentSource.packaged(experiment);
         }
+        String sourceName = source.name();
         var console = new ByteArrayOutputStream();
         SimWorld simWorld = SimWorld.of(s);
         LockstepRun run;
         try {
-            run = new LockstepRun(simWorld, null, experiment, source, sourceName, runSeed,
+            run = new LockstepRun(simWorld, null, experiment, source, runSeed,
                     new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false);
         } catch (AslSyntaxException e) {
             throw new ScenarioException(e.getMessage(), e);

@@ -33,7 +33,7 @@ public final class Sweep {
     private boolean socket;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
-    private final Map<jacabot.robot.Experiment, SweepRun.Agent> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
+    private final Map<jacabot.robot.Experiment, jacabot.app.run.AgentSource> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
 
     /**
      * What a sweep leaves: every outcome (in job order), the wall-clock time it took, the CPU time
@@ -101,9 +101,9 @@ public final class Sweep {
         return this;
     }
 
-    /** Runs {@code source} (named {@code file} in messages) as the agent of experiment {@code e}, not the packaged one. */
-    public Sweep agent(jacabot.robot.Experiment e, String source, String file) {
-        agents.put(e, new SweepRun.Agent(source, file));
+    /** Runs {@code agent} as the agent of experiment {@code e}, not the packaged one. */
+    public Sweep agent(jacabot.robot.Experiment e, jacabot.app.run.AgentSource agent) {
+        agents.put(e, agent);
         return this;
     }
 
@@ -127,9 +127,9 @@ public final class Sweep {
             futures.put(done.submit(() -> {
                 started.put(index, System.nanoTime());
                 SweepJob job = list.get(index);
-                SweepRun.Agent given = agents.get(job.experiment()); // read only once the jobs run
+                jacabot.app.run.AgentSource given = agents.get(job.experiment()); // read only once the jobs run
                 SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS,
-                        given != null ? given : SweepRun.Agent.packaged(job.experiment()), socket);
+                        given != null ? given : SweepRun.packaged(job.experiment()), socket);
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

@@ -1,5 +1,6 @@
 package jacabot.app.sweep;
 
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.app.world.Landmarks;
 import jacabot.robot.Experiment;
@@ -10,11 +11,8 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.WorldListener;
 import jacabot.sim.world.WorldSpec;
-import java.io.IOException;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -36,24 +34,15 @@ public final class SweepRun {
     public record Result(RunOutcome outcome, String eventLog, List<String> consoleTail) {
     }
 
-    private static final Map<Experiment, String> SOURCES = new ConcurrentHashMap<>();
+    private static final Map<Experiment, AgentSource> PACKAGED = new ConcurrentHashMap<>();
     private static final int CONSOLE_TAIL = 200;
 
     private SweepRun() {
     }
 
-    /** {@return the packaged agent of an experiment} */
-    public static String agentSource(Experiment e) {
-        return SOURCES.computeIfAbsent(e, x -> {
-            try (InputStream in = SweepRun.class.getResourceAsStream(x.agentResource())) {
-                if (in == null) {
-                    throw new IllegalStateException("no agent " + x.agentResource() + " on the class path");
-                }
-                return new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            } catch (IOException ex) {
-                throw new UncheckedIOException(ex);
-            }
-        });
+    /** {@return the packaged agent of an experiment, read once for all runs} */
+    public static AgentSource packaged(Experiment e) {
+        return PACKAGED.computeIfAbsent(e, AgentSource::packaged);
     }
 
     /** Stops a run from the stepping thread once its wall-clock bound has passed. */
@@ -72,19 +61,11 @@ public final class SweepRun {
      * @param wallLimitS  wall-clock bound in seconds
      */
     public static Result run(SweepJob job, double seconds, double wallLimitS) {
-        return run(job, seconds, wallLimitS, Agent.packaged(job.experiment()));
-    }
-
-    /** An agent's program text and the file that names it in messages. */
-    public record Agent(String source, String file) {
-        /** {@return the packaged agent of an experiment} */
-        public static Agent packaged(Experiment e) {
-            return new Agent(agentSource(e), e.id() + ".asl");
-        }
+        return run(job, seconds, wallLimitS, packaged(job.experiment()));
     }
 
     /** Runs a job with the given agent (the experiment's packaged one, or a user's), over the in-process link. */
-    public static Result run(SweepJob job, double seconds, double wallLimitS, Agent agent) {
+    public static Result run(SweepJob job, double seconds, double wallLimitS, AgentSource agent) {
         return run(job, seconds, wallLimitS, agent, false);
     }
 
@@ -93,7 +74,7 @@ public final class SweepRun {
      * ({@code jacabot experiment}'s), else the same frames in memory: the same run, to the byte of
      * its logs, without the socket's system calls and thread hand-offs.
      */
-    public static Result run(SweepJob job, double seconds, double wallLimitS, Agent agent, boolean socket) {
+    public static Result run(SweepJob job, double seconds, double wallLimitS, AgentSource agent, boolean socket) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -123,7 +104,7 @@ public final class SweepRun {
         String message = "";
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
-                var run = new LockstepRun(world, null, e, agent.source(), agent.file(), job.seed(),
+                var run = new LockstepRun(world, null, e, agent, job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket);
                 run.runFor(seconds);
             } else {

@@ -8,10 +8,8 @@ import jacabot.app.run.LockstepRun;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -61,12 +59,9 @@ class InspectorBrowserTest {
         Experiment experiment = Experiment.parse("navigation").orElseThrow();
         var spec = WorldFileReader.read(ROOT.resolve(experiment.worldFile()));
         SimWorld world = SimWorld.of(spec);
-        String source;
-        try (InputStream in = InspectorBrowserTest.class.getResourceAsStream(experiment.agentResource())) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+        var source = jacabot.app.run.AgentSource.packaged(experiment);
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
-        var run = new LockstepRun(world, null, experiment, source, "navigation.asl", spec.seed(), quiet).stepLogs(false);
+        var run = new LockstepRun(world, null, experiment, source, spec.seed(), quiet).stepLogs(false);
         AtomicBoolean stop = new AtomicBoolean();
         try (Inspector inspector = Inspector.startOnFreePort(); RunTap tap = RunTap.attach(run, inspector, null, experiment, "navigation.asl")) {
             inspector.title("experiment navigation (browser test)");

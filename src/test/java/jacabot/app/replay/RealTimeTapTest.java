@@ -8,7 +8,6 @@ import jacabot.app.inspector.MindWatch;
 import jacabot.app.run.RealTimeRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
-import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -46,13 +45,10 @@ class RealTimeTapTest {
     void aRealTimeRunWritesAStepPerControlStep(@TempDir Path out) throws Exception {
         var spec = WorldFileReader.read(RunTapTest.ROOT.resolve(RunTapTest.NAVIGATION.worldFile()));
         SimWorld world = SimWorld.of(spec);
-        String source;
-        try (InputStream in = RealTimeTapTest.class.getResourceAsStream(RunTapTest.NAVIGATION.agentResource())) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+        var source = jacabot.app.run.AgentSource.packaged(RunTapTest.NAVIGATION);
         var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
         var console = new java.io.ByteArrayOutputStream();
-        try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, "navigation.asl", 3, 2,
+        try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, 3, 2,
                 new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
             var watch = MindWatch.attach(null, run.mas().agent("robot"), null).alsoTo(tap.minds());
             AutoCloseable sampling = MindWatch.sampleEvery(List.of(watch), 50);
@@ -96,16 +92,13 @@ class RealTimeTapTest {
     @Test
     void aRunThatCannotKeepUpSaysSoAndRecordsItsLag(@TempDir Path out) throws Exception {
         SimWorld world = SimWorld.of(WorldFileReader.read(RunTapTest.ROOT.resolve(RunTapTest.NAVIGATION.worldFile())));
-        String source;
-        try (InputStream in = RealTimeTapTest.class.getResourceAsStream(RunTapTest.NAVIGATION.agentResource())) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+        var source = jacabot.app.run.AgentSource.packaged(RunTapTest.NAVIGATION);
         var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
         var statuses = new java.util.concurrent.CopyOnWriteArrayList<String>();
         var console = new java.io.ByteArrayOutputStream();
         var warnings = new java.io.ByteArrayOutputStream();
         // x100000: a simulated hour per 36 wall-clock ms, more than any machine steps a world over a socket
-        try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, "navigation.asl", 3, 100_000,
+        try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, 3, 100_000,
                 new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
             run.lag().addListener(tap.lags()).addListener(new jacabot.app.run.LagMeter.Listener() {
                 @Override

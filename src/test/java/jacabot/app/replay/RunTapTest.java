@@ -11,10 +11,8 @@ import jacabot.app.run.LockstepRun;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -29,11 +27,7 @@ class RunTapTest {
 
     private static LockstepRun run() throws Exception {
         var spec = WorldFileReader.read(ROOT.resolve(NAVIGATION.worldFile()));
-        String source;
-        try (InputStream in = RunTapTest.class.getResourceAsStream(NAVIGATION.agentResource())) {
-            source = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
-        return new LockstepRun(SimWorld.of(spec), null, NAVIGATION, source, "navigation.asl", 4,
+        return new LockstepRun(SimWorld.of(spec), null, NAVIGATION, jacabot.app.run.AgentSource.packaged(NAVIGATION), 4,
                 new PrintStream(OutputStream.nullOutputStream()));
     }
 

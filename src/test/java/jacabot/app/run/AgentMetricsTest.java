@@ -26,15 +26,9 @@ class AgentMetricsTest {
 
     @Test
     void theAppendixBAgentNeedsMoreCoordinationThanTheAvoidanceAgent() throws Exception {
-        var avoid = AgentMetrics.of(Experiment.OBSTACLE_AVOIDANCE, source(Experiment.OBSTACLE_AVOIDANCE));
-        var full = AgentMetrics.of(Experiment.SUSPEND_RESUME, source(Experiment.SUSPEND_RESUME));
+        var avoid = AgentMetrics.of(Experiment.OBSTACLE_AVOIDANCE, AgentSource.packaged(Experiment.OBSTACLE_AVOIDANCE));
+        var full = AgentMetrics.of(Experiment.SUSPEND_RESUME, AgentSource.packaged(Experiment.SUSPEND_RESUME));
         assertTrue(full.coordinationBeliefs().containsAll(Set.of("avoiding", "picking", "delivering", "charging")));
         assertTrue(full.plans() > 3 * avoid.plans() / 2, full.plans() + " vs " + avoid.plans());
-    }
-
-    private static String source(Experiment e) throws Exception {
-        try (var in = AgentMetricsTest.class.getResourceAsStream(e.agentResource())) {
-            return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        }
     }
 }

@@ -10,9 +10,7 @@ import jacabot.robot.RobotController;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.run.RunRecorder;
 import jacabot.sim.SimWorld;
-import java.io.InputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -28,10 +26,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 class InMemoryLinkTest {
     private static final double SECONDS = 40;
 
-    private static String agent(Experiment e) throws Exception {
-        try (InputStream in = InMemoryLinkTest.class.getResourceAsStream(e.agentResource())) {
-            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+    private static AgentSource agent(Experiment e) {
+        return AgentSource.packaged(e);
     }
 
     private static SimWorld world(Experiment e) throws Exception {
@@ -45,7 +41,7 @@ class InMemoryLinkTest {
     private static Run run(Experiment e, boolean inMemory) throws Exception {
         SimWorld w = world(e);
         RunRecorder recorder = RunRecorder.attach(w, e.robot());
-        var result = new LockstepRun(w, null, e, agent(e), e.id() + ".asl", w.seed(),
+        var result = new LockstepRun(w, null, e, agent(e), w.seed(),
                 new PrintStream(java.io.OutputStream.nullOutputStream())).inMemory(inMemory).runFor(SECONDS);
         var summary = recorder.summary(jacabot.app.sweep.SweepJob.AGENT);
         return new Run(result.eventLog(), result.steps(), summary.toJson(), summary.eventLog(), result.linkLog());
@@ -74,7 +70,7 @@ class InMemoryLinkTest {
     void aRunOverTheInProcessLinkStopsFromAnotherThread() throws Exception {
         Experiment e = Experiment.NAVIGATION;
         SimWorld w = world(e);
-        var run = new LockstepRun(w, null, e, agent(e), e.id() + ".asl", w.seed(),
+        var run = new LockstepRun(w, null, e, agent(e), w.seed(),
                 new PrintStream(java.io.OutputStream.nullOutputStream())).inMemory(true);
         var fiveSeconds = new java.util.concurrent.CountDownLatch(1);
         run.onStep(d -> {

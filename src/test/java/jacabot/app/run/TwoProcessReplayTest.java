@@ -8,9 +8,7 @@ import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimWorld;
-import java.io.InputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -27,10 +25,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 class TwoProcessReplayTest {
     private static final double SECONDS = 20;
 
-    private static String agent(Experiment e) throws Exception {
-        try (InputStream in = TwoProcessReplayTest.class.getResourceAsStream(e.agentResource())) {
-            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        }
+    private static AgentSource agent(Experiment e) {
+        return AgentSource.packaged(e);
     }
 
     private static SimWorld world(Experiment e) throws Exception {
@@ -42,12 +38,12 @@ class TwoProcessReplayTest {
     void theTwoProcessLockstepRunIsTheInProcessRun(Experiment e) throws Exception {
         PrintStream quiet = new PrintStream(java.io.OutputStream.nullOutputStream());
         SimWorld w = world(e);
-        var one = new LockstepRun(w, null, e, agent(e), e.id() + ".asl", w.seed(), quiet).runFor(SECONDS);
+        var one = new LockstepRun(w, null, e, agent(e), w.seed(), quiet).runFor(SECONDS);
 
         LinkSecret secret = LinkSecret.random();
         LinkSecret.useInThisProcess(secret); // the agent side's "user secret"; the controller is given it
         SimWorld agentSide = world(e);
-        var two = new LockstepRun(agentSide, null, e, agent(e), e.id() + ".asl", agentSide.seed(), quiet)
+        var two = new LockstepRun(agentSide, null, e, agent(e), agentSide.seed(), quiet)
                 .remoteController(true); // port 0: a free one
         LockstepCoordinator.Result[] result = new LockstepCoordinator.Result[1];
         Throwable[] failed = new Throwable[1];

@@ -23,6 +23,7 @@ import org.antlr.v4.runtime.CommonTokenStream;
  */
 public final class AslParser {
     private final List<Path> sourcePath;
+    private final SourceResolver includes;
     /** Functions registered while reading one program (its included files share them). */
     private List<AgentProgram.UserFunction> userFunctions = new ArrayList<>();
     private Set<String> userFunctionNames = new HashSet<>();
@@ -30,6 +31,13 @@ public final class AslParser {
     /** @param sourcePath directories searched for included files, after the including file's own */
     public AslParser(List<Path> sourcePath) {
         this.sourcePath = List.copyOf(sourcePath);
+        this.includes = SourceResolver.files(this.sourcePath);
+    }
+
+    /** @param includes where included sources are read from (e.g. class path resources) */
+    public AslParser(SourceResolver includes) {
+        this.sourcePath = List.of();
+        this.includes = includes;
     }
 
     public AslParser() {
@@ -50,17 +58,22 @@ public final class AslParser {
 
     /** Parses an agent program from a file. */
     public AgentProgram parseFile(Path file) throws AslSyntaxException, IOException {
-        userFunctions = new ArrayList<>();
-        userFunctionNames = new HashSet<>();
-        return parseFile(file, new HashSet<>());
+        return parse(new SourceResolver.Source(file.toString(), Files.readString(file, StandardCharsets.UTF_8),
+                file.toAbsolutePath().normalize().toString()));
     }
 
-    private AgentProgram parseFile(Path file, Set<Path> including) throws AslSyntaxException, IOException {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
-        Path key = file.toAbsolutePath().normalize();
+    /** Parses an agent program whose includes are found from its location by this parser's resolver. */
+    public AgentProgram parse(SourceResolver.Source source) throws AslSyntaxException, IOException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
+        return parse(source, new HashSet<>());
+    }
+
+    private AgentProgram parse(SourceResolver.Source source, Set<String> including) throws AslSyntaxException, IOException {
+        String key = source.location() != null ? source.location() : source.name();
         including.add(key);
         try {
-            return parse(text, file.toString(), file.toAbsolutePath().getParent(), including);
+            return parse(source.text(), source.name(), source, including);
         } finally {
             including.remove(key);
         }
@@ -71,14 +84,14 @@ public final class AslParser {
         userFunctions = new ArrayList<>();
         userFunctionNames = new HashSet<>();
         try {
-            return parse(text, file, null, new HashSet<>());
+            return parse(text, file, new SourceResolver.Source(file, text, null), new HashSet<>());
         } catch (IOException e) {
             throw new AslSyntaxException(List.of(new SyntaxError(
                     new jacabot.agent.syntax.SourceInfo(file, 0, 0), e.getMessage())));
         }
     }
 
-    private AgentProgram parse(String text, String file, Path dir, Set<Path> including)
+    private AgentProgram parse(String text, String file, SourceResolver.Source from, Set<String> including)
             throws AslSyntaxException, IOException {
         var errors = new ErrorCollector(file);
         AgentSpeakParser parser = newParser(text, errors);
@@ -119,13 +132,13 @@ public final class AslParser {
                     Term d = builder.literal(c.directive().literal());
                     if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
                             && l.arg(0) instanceof StringTerm name) {
-                        Path included = resolve(name.value(), dir);
+                        SourceResolver.Source included = includes.find(name.value(), from);
                         if (included == null) {
                             errors.add(builder.where(c), "included file '" + name.value() + "' not found");
-                        } else if (including.contains(included.toAbsolutePath().normalize())) {
+                        } else if (including.contains(included.location())) {
                             errors.add(builder.where(c), "file '" + name.value() + "' includes itself");
                         } else {
-                            AgentProgram sub = parseFile(included, including);
+                            AgentProgram sub = parse(included, including);
                             beliefs.addAll(sub.beliefs());
                             goals.addAll(sub.goals());
                             plans.addAll(sub.plans());
@@ -169,28 +182,6 @@ public final class AslParser {
 
     private static boolean isEnd(Term d) {
         return d instanceof Literal l && l.functor().equals("end") && l.arity() == 0;
-    }
-
-    private Path resolve(String name, Path dir) {
-        var candidates = new ArrayList<Path>();
-        Path p = Path.of(name);
-        if (p.isAbsolute()) {
-            candidates.add(p);
-        } else {
-            if (dir != null) {
-                candidates.add(dir.resolve(name));
-            }
-            for (Path d : sourcePath) {
-                candidates.add(d.resolve(name));
-            }
-            candidates.add(p);
-        }
-        for (Path c : candidates) {
-            if (Files.isRegularFile(c)) {
-                return c;
-            }
-        }
-        return null;
     }
 
     /** Parses one term, e.g. for {@code .term2string(T, "f(x)")}. */
