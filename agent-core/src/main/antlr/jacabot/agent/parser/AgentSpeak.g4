@@ -64,10 +64,12 @@ arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
 
 literal     : 'true'                                                       # trueLiteral
             | 'false'                                                      # falseLiteral
-            | ( ns=ATOM '::' )? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
-            | neg='~'? VAR list?                                           # varLiteral
-            | neg='~'? UNNAMEDVAR list?                                    # unnamedVarLiteral
+            | nsPrefix? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
+            | nsPrefix? neg='~'? VAR list?                                 # varLiteral
+            | nsPrefix? neg='~'? UNNAMEDVAR list?                          # unnamedVarLiteral
             ;
+// a namespace: ns::b, NS::b, _::b, and ::b (the namespace the file is read in)
+nsPrefix    : ns=( ATOM | VAR | UNNAMEDVAR )? '::' ;
 terms       : term ( ',' term )* ;
 term        : logExpr ;
 

@@ -55,12 +55,31 @@ public final class AslParser {
         return parseFile(file, new HashSet<>());
     }
 
+    /**
+     * Parses an agent program from a file as a module in namespace ns (Jason's {@code .include(F, NS)});
+     * null or {@code default}: the default namespace.
+     */
+    public AgentProgram parseFile(Path file, Term ns) throws AslSyntaxException, IOException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
+        return parseFile(file, new HashSet<>(), ns);
+    }
+
+    /** {@return a new namespace name, as Jason gives to {@code include(F, Var)}} */
+    public static Literal freshNamespace() {
+        return Namespaces.fresh();
+    }
+
     private AgentProgram parseFile(Path file, Set<Path> including) throws AslSyntaxException, IOException {
+        return parseFile(file, including, null);
+    }
+
+    private AgentProgram parseFile(Path file, Set<Path> including, Term ns) throws AslSyntaxException, IOException {
         String text = Files.readString(file, StandardCharsets.UTF_8);
         Path key = file.toAbsolutePath().normalize();
         including.add(key);
         try {
-            return parse(text, file.toString(), file.toAbsolutePath().getParent(), including);
+            return parse(text, file.toString(), file.toAbsolutePath().getParent(), including, ns);
         } finally {
             including.remove(key);
         }
@@ -71,19 +90,20 @@ public final class AslParser {
         userFunctions = new ArrayList<>();
         userFunctionNames = new HashSet<>();
         try {
-            return parse(text, file, null, new HashSet<>());
+            return parse(text, file, null, new HashSet<>(), null);
         } catch (IOException e) {
             throw new AslSyntaxException(List.of(new SyntaxError(
                     new jacabot.agent.syntax.SourceInfo(file, 0, 0), e.getMessage())));
         }
     }
 
-    private AgentProgram parse(String text, String file, Path dir, Set<Path> including)
+    private AgentProgram parse(String text, String file, Path dir, Set<Path> including, Term ns)
             throws AslSyntaxException, IOException {
         var errors = new ErrorCollector(file);
         AgentSpeakParser parser = newParser(text, errors);
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
+        builder.setNamespace(ns);
         builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
@@ -94,12 +114,25 @@ public final class AslParser {
             for (ComponentContext c : tree.component()) {
                 if (c.directive() != null && c.directive().begin != null) {
                     Term d = builder.literal(c.directive().literal());
+                    if (isNamespace(d)) {
+                        // { begin namespace(ns) } ... { end }: the plans stay where they are
+                        String error = builder.namespaces().begin((Literal) d);
+                        if (error != null) {
+                            errors.add(builder.where(c), error);
+                        }
+                        blocks.push(new Block((Literal) d, null, builder.where(c)));
+                        continue;
+                    }
                     blocks.push(new Block(d instanceof Literal l ? l : Literal.atom(String.valueOf(d)), plans, builder.where(c)));
                     plans = new ArrayList<>();
                 } else if (c.directive() != null && isEnd(builder.literal(c.directive().literal()))) {
                     Block b = blocks.poll();
                     if (b == null) {
                         errors.add(builder.where(c), "{ end } without { begin ... }");
+                        continue;
+                    }
+                    if (b.outer == null) {
+                        builder.namespaces().end();
                         continue;
                     }
                     List<Plan> made = GoalPatterns.apply(b.pattern, plans, this);
@@ -117,7 +150,15 @@ public final class AslParser {
                     plans.add(builder.plan(c.plan()));
                 } else {
                     Term d = builder.literal(c.directive().literal());
-                    if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
+                    if (isNamespace(d)) {
+                        // { namespace(ns, local) }: declares ns (local names are made unique here)
+                        String error = builder.namespaces().begin((Literal) d);
+                        if (error != null) {
+                            errors.add(builder.where(c), error);
+                        } else {
+                            builder.namespaces().end();
+                        }
+                    } else if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
                             && l.arg(0) instanceof StringTerm name) {
                         Path included = resolve(name.value(), dir);
                         if (included == null) {
@@ -125,7 +166,7 @@ public final class AslParser {
                         } else if (including.contains(included.toAbsolutePath().normalize())) {
                             errors.add(builder.where(c), "file '" + name.value() + "' includes itself");
                         } else {
-                            AgentProgram sub = parseFile(included, including);
+                            AgentProgram sub = parseFile(included, including, includeNamespace(l));
                             beliefs.addAll(sub.beliefs());
                             goals.addAll(sub.goals());
                             plans.addAll(sub.plans());
@@ -165,6 +206,22 @@ public final class AslParser {
 
     /** An open {@code { begin P }}: its pattern, the plans before it, and where it was opened. */
     private record Block(Literal pattern, ArrayList<Plan> outer, jacabot.agent.syntax.SourceInfo where) {
+    }
+
+    private static boolean isNamespace(Term d) {
+        return d instanceof Literal l && l.functor().equals("namespace");
+    }
+
+    /**
+     * The namespace of {@code include(F, NS)}: NS, a new one when NS is a variable, and without
+     * NS the one the directive is written in.
+     */
+    private static Term includeNamespace(Literal include) {
+        if (include.arity() < 2) {
+            return include.ns();
+        }
+        Term ns = include.arg(1);
+        return ns instanceof Literal a && a.isAtom() ? a : freshNamespace();
     }
 
     private static boolean isEnd(Term d) {

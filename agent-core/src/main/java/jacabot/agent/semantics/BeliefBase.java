@@ -3,6 +3,7 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -70,32 +71,38 @@ public final class BeliefBase {
         private String functor;
         private int arity;
         private boolean negated;
+        /** The namespace: null for the default one. */
+        private Term ns;
 
-        private Key(String functor, int arity, boolean negated) {
+        private Key(String functor, int arity, boolean negated, Term ns) {
             this.functor = functor;
             this.arity = arity;
             this.negated = negated;
+            this.ns = ns;
         }
 
         Key set(Literal l) {
             functor = l.functor();
             arity = l.arity();
             negated = l.negated();
+            ns = l.ns();
             return this;
         }
 
         static Key of(Literal l) {
-            return new Key(l.functor(), l.arity(), l.negated());
+            return new Key(l.functor(), l.arity(), l.negated(), l.ns());
         }
 
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.arity == arity && k.negated == negated && k.functor.equals(functor);
+            return o instanceof Key k && k.arity == arity && k.negated == negated && k.functor.equals(functor)
+                    && (k.ns == ns || k.ns != null && k.ns.equals(ns));
         }
 
         @Override
         public int hashCode() {
-            return functor.hashCode() * 31 + arity * 2 + (negated ? 1 : 0);
+            int h = functor.hashCode() * 31 + arity * 2 + (negated ? 1 : 0);
+            return ns == null ? h : h * 31 + ns.hashCode();
         }
     }
 
@@ -192,7 +199,7 @@ public final class BeliefBase {
     private int size;
 
     /** The lookup key; the belief base is used by its agent's thread only. */
-    private final Key probe = new Key(null, 0, false);
+    private final Key probe = new Key(null, 0, false, null);
 
     private Group group(Literal l) {
         return groups.get(probe.set(l));
@@ -221,6 +228,26 @@ public final class BeliefBase {
 
     /** As {@link #candidates(Literal)}, for a query whose first argument is {@code first} (its value when a bound variable) */
     List<Entry> candidates(Literal l, Term first) {
+        return candidates(l, l.ns(), first);
+    }
+
+    /**
+     * As {@link #candidates(Literal, Term)}, in namespace {@code ns} (the query's own, or its value):
+     * a variable namespace ({@code N::b}) asks every namespace, in the order the groups came.
+     */
+    List<Entry> candidates(Literal l, Term ns, Term first) {
+        if (ns instanceof Var) {
+            var out = new ArrayList<Entry>();
+            for (var g : groups.values()) {
+                if (g.key.functor.equals(l.functor()) && g.key.arity == l.arity() && g.key.negated == l.negated()) {
+                    out.addAll(g.snapshot());
+                }
+            }
+            return out;
+        }
+        if (ns != l.ns()) {
+            l = l.withNs(ns);
+        }
         var g = group(l);
         if (g == null) {
             return List.of();
@@ -409,6 +436,15 @@ public final class BeliefBase {
             groups.remove(probe.set(stored));
             spare = group;
         }
+    }
+
+    /** {@return the namespaces of the stored beliefs and rules, the default one as {@code default}, in order of arrival} */
+    public java.util.Set<Term> namespaces() {
+        var out = new java.util.LinkedHashSet<Term>();
+        for (var k : groups.keySet()) {
+            out.add(k.ns == null ? Literal.DEFAULT_NS : k.ns);
+        }
+        return out;
     }
 
     public List<Literal> beliefs() {

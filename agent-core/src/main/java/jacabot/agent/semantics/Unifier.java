@@ -147,7 +147,8 @@ public final class Unifier {
             if (!needsApply(l)) {
                 return l;
             }
-            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated());
+            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated(), false,
+                    l.ns() == null ? null : apply(l.ns()));
         }
         if (t instanceof ListTerm.Cons) {
             if (!needsApply(t)) {
@@ -230,6 +231,9 @@ public final class Unifier {
             return false;
         }
         if (t instanceof Literal l) {
+            if (l.ns() instanceof Var nv && bindings.get(nv) != null) {
+                return true;
+            }
             List<Term> args = l.args();
             for (int i = 0, n = args.size(); i < n; i++) {
                 if (needsApply(args.get(i))) {
@@ -307,22 +311,22 @@ public final class Unifier {
      * those literals (the belief base tries every candidate fact this way).
      */
     Unifier unifiedCopyIgnoringAnnots(Literal a, Literal b) {
-        if (!a.samePredicate(b)) {
+        if (!a.sameName(b)) {
             return null;
         }
         int mark = bindings.size();
-        Unifier result = unifyArgs(a, b) ? copy() : null;
+        Unifier result = unifyNs(a, b) && unifyArgs(a, b) ? copy() : null;
         bindings.truncate(mark);
         return result;
     }
 
     /** Unifies without annotation checks (annotations ignored on both sides). */
     public boolean unifiesIgnoringAnnots(Literal a, Literal b) {
-        if (!a.samePredicate(b)) {
+        if (!a.sameName(b)) {
             return false;
         }
         int mark = bindings.size();
-        if (unifyArgs(a, b)) {
+        if (unifyNs(a, b) && unifyArgs(a, b)) {
             return true;
         }
         bindings.truncate(mark);
@@ -338,6 +342,21 @@ public final class Unifier {
         return true;
     }
 
+    /** The namespaces of two literals (null, the default one, unifies with {@code default}). */
+    private boolean unifyNs(Literal a, Literal b) {
+        Term na = a.ns();
+        Term nb = b.ns();
+        return na == nb || unify(na == null ? Literal.DEFAULT_NS : na, nb == null ? Literal.DEFAULT_NS : nb);
+    }
+
+    /**
+     * As Jason, a variable takes no literal of another namespace than the default one
+     * ({@code X = ns::b} fails; {@code N::b = ns::b} binds N) and no local namespace's name.
+     */
+    private static boolean bindable(Term value) {
+        return !(value instanceof Literal l) || l.ns() == null && !l.isLocalNsName();
+    }
+
     /** Unifies, leaving the bindings made so far in place when it fails (callers cut them back). */
     private boolean unify(Term a, Term b) {
         a = deref(a);
@@ -346,10 +365,16 @@ public final class Unifier {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
             }
+            if (!bindable(b)) {
+                return false;
+            }
             bindings.put(va, b);
             return true;
         }
         if (b instanceof Var vb) {
+            if (!bindable(a)) {
+                return false;
+            }
             bindings.put(vb, a);
             return true;
         }
@@ -369,7 +394,7 @@ public final class Unifier {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
         if (a instanceof Literal la) {
-            if (!(b instanceof Literal lb) || !la.samePredicate(lb) || !unifyArgs(la, lb)) {
+            if (!(b instanceof Literal lb) || !la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
                 return false;
             }
             return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
@@ -435,6 +460,9 @@ public final class Unifier {
             return false;
         }
         // as Jason, the variable stands for the literal; the annotations were matched apart
+        if (!bindable(l)) {
+            return false;
+        }
         bindings.put(v, l.withoutAnnots());
         return true;
     }

@@ -29,7 +29,8 @@ public abstract class TermMapper implements TermVisitor<Term> {
         if (l.isGround()) {
             return l;
         }
-        return new Literal(l.functor(), mapAll(l.args()), mapAll(l.annots()), l.negated());
+        return new Literal(l.functor(), mapAll(l.args()), mapAll(l.annots()), l.negated(), false,
+                l.ns() == null ? null : map(l.ns()));
     }
 
     @Override
