@@ -65,9 +65,12 @@ public final class AslParser {
         return parseFile(file, new HashSet<>(), ns);
     }
 
+    /** Numbers the local namespaces and the anonymous includes of the files this parser reads. */
+    private final java.util.concurrent.atomic.AtomicInteger nsCounter = new java.util.concurrent.atomic.AtomicInteger();
+
     /** {@return a new namespace name, as Jason gives to {@code include(F, Var)}} */
-    public static Literal freshNamespace() {
-        return Namespaces.fresh();
+    public Literal freshNamespace() {
+        return Namespaces.fresh(nsCounter);
     }
 
     private AgentProgram parseFile(Path file, Set<Path> including) throws AslSyntaxException, IOException {
@@ -103,7 +106,7 @@ public final class AslParser {
         AgentSpeakParser parser = newParser(text, errors);
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
-        builder.setNamespace(ns);
+        builder.setNamespace(ns, nsCounter);
         builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
@@ -216,7 +219,7 @@ public final class AslParser {
      * The namespace of {@code include(F, NS)}: NS, a new one when NS is a variable, and without
      * NS the one the directive is written in.
      */
-    private static Term includeNamespace(Literal include) {
+    private Term includeNamespace(Literal include) {
         if (include.arity() < 2) {
             return include.ns();
         }

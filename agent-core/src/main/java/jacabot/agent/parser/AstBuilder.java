@@ -34,7 +34,7 @@ final class AstBuilder {
     private long unnamedSerial;
 
     /** The namespaces of the file being read (Jason's modules). */
-    private Namespaces namespaces = new Namespaces(null);
+    private Namespaces namespaces = new Namespaces(null, new java.util.concurrent.atomic.AtomicInteger());
     /**
      * Whether an argument or a list element is being read: its literals are in the default
      * namespace unless prefixed, as Jason reads them.
@@ -53,8 +53,8 @@ final class AstBuilder {
     }
 
     /** Reads the file in namespace ns (null: the default one), as an included module. */
-    void setNamespace(Term ns) {
-        namespaces = new Namespaces(ns);
+    void setNamespace(Term ns, java.util.concurrent.atomic.AtomicInteger counter) {
+        namespaces = new Namespaces(ns, counter);
     }
 
     AstBuilder(String file, ErrorCollector errors) {

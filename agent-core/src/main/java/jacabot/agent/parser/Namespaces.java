@@ -23,8 +23,11 @@ import java.util.concurrent.atomic.AtomicInteger;
  * Null stands for the default namespace.
  */
 final class Namespaces {
-    /** Jason numbers local namespaces and anonymous includes from one counter for the whole JVM. */
-    private static final AtomicInteger COUNTER = new AtomicInteger();
+    /**
+     * Numbers local namespaces and anonymous includes: Jason's counter is the JVM's, ours the
+     * parser's (one per multi-agent system), so a run's names do not depend on earlier runs.
+     */
+    private final AtomicInteger counter;
 
     /** Jason's keywords: always in the default namespace, wherever they are written. */
     private static final Set<String> KEYWORDS = Set.of("atomic/0", "breakpoint/0", "all_unifs/0", "default/0",
@@ -37,7 +40,8 @@ final class Namespaces {
     private final Deque<Term> outer = new ArrayDeque<>();
 
     /** @param ns the namespace the file is read in (null: the default one) */
-    Namespaces(Term ns) {
+    Namespaces(Term ns, AtomicInteger counter) {
+        this.counter = counter;
         current = ns;
         thisNs = ns;
     }
@@ -73,8 +77,8 @@ final class Namespaces {
     }
 
     /** {@return a new namespace for {@code include(file, Var)}} */
-    static Literal fresh() {
-        return Literal.atom("ns" + COUNTER.incrementAndGet());
+    static Literal fresh(AtomicInteger counter) {
+        return Literal.atom("ns" + counter.incrementAndGet());
     }
 
     /**
@@ -90,7 +94,7 @@ final class Namespaces {
             String type = directive.arg(1) instanceof Literal t && t.isAtom() ? t.functor() : "";
             if (type.equals("local")) {
                 ns = local.computeIfAbsent(name.functor(),
-                        n -> Literal.atom(Literal.LOCAL_NS_PREFIX + COUNTER.incrementAndGet() + n));
+                        n -> Literal.atom(Literal.LOCAL_NS_PREFIX + counter.incrementAndGet() + n));
             } else if (type.equals("global")) {
                 local.remove(name.functor());
             } else {

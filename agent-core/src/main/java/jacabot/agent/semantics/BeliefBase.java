@@ -194,6 +194,12 @@ public final class BeliefBase {
     }
 
     private final LinkedHashMap<Key, Group> groups = new LinkedHashMap<>();
+    /**
+     * The namespaces the belief base has had, in order of arrival: the default one, and
+     * {@code kqml}, which every Jason agent has for the rules of its message plans.
+     */
+    private final java.util.LinkedHashSet<Term> knownNs = new java.util.LinkedHashSet<>(
+            List.of(Literal.DEFAULT_NS, Literal.atom("kqml")));
     /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
     private Group spare;
     private int size;
@@ -208,6 +214,7 @@ public final class BeliefBase {
     private Group groupFor(Literal l) {
         Group g = group(l);
         if (g == null) {
+            knownNs.add(l.nsTerm());
             g = spare == null ? new Group() : spare;
             spare = null;
             if (g.key == null || !g.key.equals(probe)) {
@@ -238,8 +245,9 @@ public final class BeliefBase {
     List<Entry> candidates(Literal l, Term ns, Term first) {
         if (ns instanceof Var) {
             var out = new ArrayList<Entry>();
-            for (var g : groups.values()) {
-                if (g.key.functor.equals(l.functor()) && g.key.arity == l.arity() && g.key.negated == l.negated()) {
+            for (Term n : namespaces()) {
+                var g = group(l.withNs(n));
+                if (g != null) {
                     out.addAll(g.snapshot());
                 }
             }
@@ -438,13 +446,28 @@ public final class BeliefBase {
         }
     }
 
-    /** {@return the namespaces of the stored beliefs and rules, the default one as {@code default}, in order of arrival} */
-    public java.util.Set<Term> namespaces() {
-        var out = new java.util.LinkedHashSet<Term>();
-        for (var k : groups.keySet()) {
-            out.add(k.ns == null ? Literal.DEFAULT_NS : k.ns);
+    /**
+     * {@return the namespaces the belief base has had, the default one as {@code default}} They come
+     * in the order of Jason's belief base, a {@code ConcurrentHashMap} keyed by namespace atoms, so
+     * that {@code .namespace(N)} and queries {@code N::b} enumerate them as Jason does.
+     */
+    public List<Term> namespaces() {
+        int table = 16;
+        while (knownNs.size() >= table * 3 / 4) {
+            table *= 2;
         }
+        int mask = table - 1;
+        var out = new ArrayList<Term>(knownNs);
+        // a stable sort: namespaces in one bin stay in order of arrival
+        out.sort(java.util.Comparator.comparingInt(n -> jasonHash(n) & mask));
         return out;
+    }
+
+    /** Jason's hash of a namespace atom (functor's, plus the default namespace's for the others), spread as the map spreads it. */
+    private static int jasonHash(Term ns) {
+        int d = Literal.DEFAULT_NS_NAME.hashCode();
+        int h = ns instanceof Literal l && !l.isDefaultNsName() ? l.functor().hashCode() + d : d;
+        return (h ^ (h >>> 16)) & 0x7fffffff;
     }
 
     public List<Literal> beliefs() {

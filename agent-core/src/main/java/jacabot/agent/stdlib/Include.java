@@ -1,6 +1,5 @@
 package jacabot.agent.stdlib;
 
-import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
@@ -29,7 +28,7 @@ final class Include extends DefaultInternalAction {
         Term ns = null;
         if (args.length > 1) {
             if (args[1] instanceof Var) {
-                ns = AslParser.freshNamespace();
+                ns = ag.parser().freshNamespace();
             } else if (args[1] instanceof Literal a && a.isAtom()) {
                 ns = a;
             } else {
