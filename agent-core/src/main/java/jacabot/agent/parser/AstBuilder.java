@@ -231,7 +231,7 @@ final class AstBuilder {
             if (t instanceof Literal l) {
                 return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
             }
-            if (t instanceof Var) {
+            if (t instanceof Var || t instanceof AnnotatedVar) {
                 return new BodyStep(Kind.ACTION, t, src);
             }
             if (t instanceof RelExpr || t instanceof LogExpr) {
@@ -330,12 +330,15 @@ final class AstBuilder {
      * an operand is a term, so it leaves the current namespace for the default one, as in Jason.
      */
     private Term operand(Term t) {
+        Term ns = inTerm ? null : namespaces.current();
         if (t instanceof Literal l) {
-            Term ns = inTerm ? null : namespaces.current();
             if (l.ns() != null && l.ns().equals(ns)) {
                 l = l.withNs(null);
             }
             return l.asOperandAtom();
+        }
+        if (t instanceof AnnotatedVar av && av.ns() != null && av.ns().equals(ns)) {
+            return av.annots().isEmpty() && av.tail() == null ? av.var() : new AnnotatedVar(av.var(), av.annots(), av.tail());
         }
         return t;
     }
@@ -416,15 +419,15 @@ final class AstBuilder {
             return Literal.FALSE;
         }
         if (ctx instanceof VarLiteralContext v) {
-            noNamespace(v.nsPrefix());
+            Term ns = varNs(v.nsPrefix());
             Var var = new Var(v.VAR().getText());
-            return v.list() == null ? var : annotated(var, list(v.list()));
+            return ns == null && v.list() == null ? var : annotated(var, v.list() == null ? ListTerm.EMPTY : list(v.list()), ns);
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
-            noNamespace(u.nsPrefix());
+            Term ns = varNs(u.nsPrefix());
             String name = u.UNNAMEDVAR().getText();
             Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
-            return u.list() == null ? var : annotated(var, list(u.list()));
+            return ns == null && u.list() == null ? var : annotated(var, u.list() == null ? ListTerm.EMPTY : list(u.list()), ns);
         }
         StructureContext s = (StructureContext) ctx;
         String functor = s.name.getText();
@@ -456,11 +459,12 @@ final class AstBuilder {
             return namespaces.thisNs();
         }
         String text = p.ns.getText();
-        if (p.ns.getType() == AgentSpeakParser.VAR) {
+        text = text.substring(0, text.length() - 2);
+        if (p.ns.getType() == AgentSpeakParser.NS_VAR) {
+            if (text.startsWith("_")) {
+                return text.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(text);
+            }
             return new Var(text);
-        }
-        if (p.ns.getType() == AgentSpeakParser.UNNAMEDVAR) {
-            return text.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(text);
         }
         if (text.equals(Literal.DEFAULT_NS_NAME)) {
             return null;
@@ -468,11 +472,9 @@ final class AstBuilder {
         return text.equals("this_ns") ? namespaces.thisNs() : Literal.atom(text);
     }
 
-    /** A variable keeps no namespace here (Jason's {@code ns::X}): said, rather than dropped. */
-    private void noNamespace(NsPrefixContext p) {
-        if (p != null && !(p.ns != null && p.ns.getText().equals(Literal.DEFAULT_NS_NAME))) {
-            errors.add(where(p), "a namespace before a variable ('" + p.getText() + "') is not supported");
-        }
+    /** A variable's namespace: the one written, or else the current one for a formula (Jason's {@code var(NS)}). */
+    private Term varNs(NsPrefixContext p) {
+        return namespaces.map(p != null ? explicitNs(p) : inTerm ? null : namespaces.current());
     }
 
     /** As Jason, the atom {@code this_ns} written as a term names the namespace the file is read in. */
@@ -494,14 +496,14 @@ final class AstBuilder {
     }
 
     /** {@code V[a, b | T]}: the annotations, and the tail when there is one. */
-    private static AnnotatedVar annotated(Var var, ListTerm annots) {
+    private static AnnotatedVar annotated(Var var, ListTerm annots, Term ns) {
         var items = new ArrayList<Term>();
         Term t = annots;
         while (t instanceof ListTerm.Cons c) {
             items.add(c.head());
             t = c.tail();
         }
-        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t);
+        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t, ns);
     }
 
     ListTerm list(ListContext ctx) {

@@ -24,9 +24,9 @@ final class MessageHandler {
      * {@code kqml_received} goal are printed (as Jason's kqmlPlans).
      */
     private static final List<Plan> KQML_PLANS = parsePlans(
-            "@kqmlReceivedAskOne +!kqml_received(Sender, askOne, Content, MsgId) <- ?Content; .send(Sender, tell, Content, MsgId).",
-            "@kqmlReceivedAskOneFailed -!kqml_received(Sender, askOne, Content, MsgId)[error(test_goal_failed)]"
-                    + " <- .send(Sender, untell, Content, MsgId).",
+            "@kqmlReceivedAskOne +!kqml_received(Sender, askOne, NS::Content, MsgId) <- ?NS::Content; .send(Sender, tell, NS::Content, MsgId).",
+            "@kqmlReceivedAskOneFailed -!kqml_received(Sender, askOne, NS::Content, MsgId)[error(test_goal_failed)]"
+                    + " <- .send(Sender, untell, NS::Content, MsgId).",
             "@kqmlError -!kqml_received(_, _, _, _)[error(Id), error_msg(Msg)] <- .print(\"Communication error -- \", Id, \": \", Msg).");
 
     MessageHandler(Agent ag, ReasoningCycle rc) {

@@ -210,11 +210,11 @@ public final class Unifier {
         if (t instanceof AnnotatedVar av) {
             Term d = deref(av.var());
             List<Term> annots = applyAll(av.annots());
+            Term ns = av.ns() == null ? null : apply(av.ns());
             if (d instanceof Var dv) {
-                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()));
+                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()), ns);
             }
-            Term value = apply(d);
-            return value instanceof Literal l ? l.addAnnots(annots) : value;
+            return av.wrap(apply(d), annots, ns);
         }
         return t;
     }
@@ -365,14 +365,14 @@ public final class Unifier {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
             }
-            if (!bindable(b)) {
+            if (!bindable(b) || b instanceof AnnotatedVar avb && avb.ns() != null && !unify(Literal.DEFAULT_NS, avb.ns())) {
                 return false;
             }
             bindings.put(va, b);
             return true;
         }
         if (b instanceof Var vb) {
-            if (!bindable(a)) {
+            if (!bindable(a) || a instanceof AnnotatedVar ava && ava.ns() != null && !unify(Literal.DEFAULT_NS, ava.ns())) {
                 return false;
             }
             bindings.put(vb, a);
@@ -443,10 +443,22 @@ public final class Unifier {
             return left ? unify(value, other) : unify(other, value);
         }
         if (other instanceof AnnotatedVar o) {
-            return unify(v, o.var());
+            return (av.ns() == null && o.ns() == null || unify(nsOf(av), nsOf(o))) && unify(v, o.var());
         }
         if (!(other instanceof Literal l)) {
+            // as Jason, ns::X = 10 binds X: only literals have namespaces and annotations
+            if (av.ns() != null && av.annots().isEmpty() && av.tail() == null && !(other instanceof Var)) {
+                bindings.put(v, other);
+                return true;
+            }
             return false;
+        }
+        if (av.ns() != null) {
+            // ns::X and a literal: the namespaces unify, X takes the literal in the default namespace
+            if (!unify(av.ns(), l.nsTerm())) {
+                return false;
+            }
+            l = l.withNs(null);
         }
         if (av.tail() != null) {
             boolean ok = left ? subsetAnnots(av.annots(), av.tail(), l.annots(), null)
@@ -463,8 +475,13 @@ public final class Unifier {
         if (!bindable(l)) {
             return false;
         }
-        bindings.put(v, l.withoutAnnots());
+        // (a variable with a namespace only, NS::W, keeps the annotations, as Jason's)
+        bindings.put(v, av.annots().isEmpty() && av.tail() == null ? l : l.withoutAnnots());
         return true;
+    }
+
+    private static Term nsOf(AnnotatedVar av) {
+        return av.ns() == null ? Literal.DEFAULT_NS : av.ns();
     }
 
     private boolean unifyPlans(PlanTerm a, PlanTerm b) {

@@ -91,10 +91,11 @@ public abstract class TermMapper implements TermVisitor<Term> {
     public Term visitAnnotatedVar(AnnotatedVar t) {
         Term v = visitVar(t.var());
         List<Term> annots = mapAll(t.annots());
+        Term ns = t.ns() == null ? null : map(t.ns());
         if (v instanceof Var nv) {
-            return new AnnotatedVar(nv, annots, t.tail() == null ? null : map(t.tail()));
+            return new AnnotatedVar(nv, annots, t.tail() == null ? null : map(t.tail()), ns);
         }
-        return v instanceof Literal l ? l.addAnnots(annots) : v;
+        return t.wrap(v, annots, ns);
     }
 
     @Override

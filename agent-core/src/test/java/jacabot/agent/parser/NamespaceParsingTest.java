@@ -30,6 +30,10 @@ class NamespaceParsingTest {
         assertNull(d.ns());
         assertEquals(Literal.of("b", new jacabot.agent.syntax.NumberTerm(1)), d);
         assertTrue(((Literal) parser.parseTerm("NS::b")).ns() instanceof Var);
+        // a variable with a namespace stands for a literal of that namespace
+        var nsVar = (jacabot.agent.syntax.AnnotatedVar) parser.parseTerm("ns::X");
+        assertEquals("ns::X", nsVar.toString());
+        assertEquals(Literal.atom("ns"), nsVar.ns());
     }
 
     @Test
@@ -97,7 +101,7 @@ class NamespaceParsingTest {
     void badNamespaceDirectivesAreReported() {
         var e = assertThrows(AslSyntaxException.class, () -> parser.parse("{ namespace(n, private) }\n", "bad.asl"));
         assertTrue(e.getMessage().startsWith("bad.asl:1:1: error: the second argument of the namespace directive"), e.getMessage());
-        var v = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- .print(ns::X).\n", "v.asl"));
-        assertTrue(v.getMessage().contains("v.asl:1:15: error: a namespace before a variable"), v.getMessage());
+        var v = assertThrows(AslSyntaxException.class, () -> parser.parse("{ begin namespace(N) }\n{ end }\n", "v.asl"));
+        assertTrue(v.getMessage().startsWith("v.asl:1:1: error: the namespace directive needs an atom"), v.getMessage());
     }
 }

@@ -48,6 +48,27 @@ class NamespaceTest {
     }
 
     @Test
+    void aVariableWithANamespaceTakesTheLiteralInTheDefaultNamespace() throws Exception {
+        var u = new Unifier();
+        assertTrue(u.unifies(t("ns::A"), t("ns::bob[x]")));
+        assertEquals("bob[x]", u.apply(new Var("A")).toString());
+        assertEquals("ns::bob[x]", u.apply(t("ns::A")).toString());
+        assertFalse(new Unifier().unifies(t("ns::A"), t("xx::bob")));
+        assertFalse(new Unifier().unifies(t("ns::A"), t("bob")));
+        var both = new Unifier();
+        assertTrue(both.unifies(t("ns::A"), t("B::bob")));
+        assertEquals("bob", both.apply(new Var("A")).toString());
+        assertEquals("ns", both.apply(new Var("B")).toString());
+        assertFalse(new Unifier().unifies(new Var("X"), t("ns::Y")), "X and ns::Y are in different namespaces");
+        var n = new Unifier();
+        assertTrue(n.unifies(t("ns::A"), t("10")), "numbers have no namespace");
+        assertEquals("10", n.apply(new Var("A")).toString());
+        var k = new Unifier();
+        assertTrue(k.unifies(t("kk(30, j::X)"), t("kk(30, j::uu)")));
+        assertEquals("uu", k.apply(new Var("X")).toString());
+    }
+
+    @Test
     void namespacesComeFirstInTheStandardOrder() throws Exception {
         assertTrue(TermOrder.compare(t("ns1::b"), t("ns2::a")) < 0);
         assertTrue(TermOrder.compare(t("ns2::a"), t("ns1::b")) > 0);
