@@ -65,6 +65,18 @@ public final class AslParser {
         return parseFile(file, new HashSet<>(), ns);
     }
 
+    /**
+     * Jason's one counter of fresh variables ({@code _N}): the unnamed variables this parser reads
+     * and, through {@link #varCounter()}, those the agents of its multi-agent system make (renaming
+     * apart), so that they get the numbers Jason's would.
+     */
+    private final java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
+
+    /** {@return the counter that numbers fresh variables, shared by the agents this parser reads programs for} */
+    public java.util.concurrent.atomic.AtomicLong varCounter() {
+        return varCounter;
+    }
+
     /** Numbers the local namespaces and the anonymous includes of the files this parser reads. */
     private final java.util.concurrent.atomic.AtomicInteger nsCounter = new java.util.concurrent.atomic.AtomicInteger();
 
@@ -107,6 +119,7 @@ public final class AslParser {
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
         builder.setNamespace(ns, nsCounter);
+        builder.setVarCounter(varCounter);
         builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
@@ -258,7 +271,7 @@ public final class AslParser {
         var errors = new ErrorCollector("<term>");
         var parser = newParser(text, errors);
         var tree = parser.termOnly();
-        Term t = errors.errors().isEmpty() ? new AstBuilder("<term>", errors).term(tree.term()) : null;
+        Term t = errors.errors().isEmpty() ? builder("<term>", errors).term(tree.term()) : null;
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
@@ -270,11 +283,17 @@ public final class AslParser {
         var errors = new ErrorCollector("<plan>");
         var parser = newParser(text, errors);
         var tree = parser.planOnly();
-        Plan p = errors.errors().isEmpty() ? new AstBuilder("<plan>", errors).plan(tree.plan()) : null;
+        Plan p = errors.errors().isEmpty() ? builder("<plan>", errors).plan(tree.plan()) : null;
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
         return p;
+    }
+
+    private AstBuilder builder(String name, ErrorCollector errors) {
+        var b = new AstBuilder(name, errors);
+        b.setVarCounter(varCounter);
+        return b;
     }
 
     private static AgentSpeakParser newParser(String text, ErrorCollector errors) {

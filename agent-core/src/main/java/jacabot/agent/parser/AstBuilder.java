@@ -31,7 +31,11 @@ import org.antlr.v4.runtime.Token;
 final class AstBuilder {
     private final String file;
     private final ErrorCollector errors;
-    private long unnamedSerial;
+    /**
+     * Numbers unnamed variables: each {@code _} or {@code _X} read takes a number, as each makes a
+     * new variable of Jason's one counter (see {@link AslParser#varCounter()}).
+     */
+    private java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
 
     /** The namespaces of the file being read (Jason's modules). */
     private Namespaces namespaces = new Namespaces(null, new java.util.concurrent.atomic.AtomicInteger());
@@ -46,6 +50,16 @@ final class AstBuilder {
 
     void setUserFunctions(java.util.Set<String> names) {
         userFunctions = names;
+    }
+
+    void setVarCounter(java.util.concurrent.atomic.AtomicLong counter) {
+        varCounter = counter;
+    }
+
+    /** {@code _X}: the same variable wherever written in the clause, yet it takes a number, as in Jason. */
+    private Var unnamed(String name) {
+        varCounter.incrementAndGet();
+        return new Var(name);
     }
 
     Namespaces namespaces() {
@@ -426,7 +440,7 @@ final class AstBuilder {
         if (ctx instanceof UnnamedVarLiteralContext u) {
             Term ns = varNs(u.nsPrefix());
             String name = u.UNNAMEDVAR().getText();
-            Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+            Var var = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
             return ns == null && u.list() == null ? var : annotated(var, u.list() == null ? ListTerm.EMPTY : list(u.list()), ns);
         }
         StructureContext s = (StructureContext) ctx;
@@ -462,7 +476,7 @@ final class AstBuilder {
         text = text.substring(0, text.length() - 2);
         if (p.ns.getType() == AgentSpeakParser.NS_VAR) {
             if (text.startsWith("_")) {
-                return text.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(text);
+                return text.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(text);
             }
             return new Var(text);
         }
@@ -536,7 +550,7 @@ final class AstBuilder {
                 tail = new Var(t.VAR().getText());
             } else if (t.UNNAMEDVAR() != null) {
                 String name = t.UNNAMEDVAR().getText();
-                tail = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+                tail = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
             } else {
                 tail = list(t.list());
             }

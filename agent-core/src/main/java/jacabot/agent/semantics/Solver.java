@@ -161,9 +161,12 @@ public final class Solver {
         return new Renaming(e, agent);
     }
 
-    /** A fact with variables, like in(X, [X|_]): its variables are its own. */
+    /**
+     * A fact with variables, like in(X, [X|_]): its variables are its own. Jason queries such a fact
+     * without renaming it, so the renaming takes no number of the counter of fresh variables.
+     */
     Literal renameApart(Literal fact) {
-        return (Literal) Renamer.renameApart(fact, agent);
+        return (Literal) Renamer.renameApart(fact, agent::internalVar, new java.util.HashMap<>());
     }
 
     // ---- internal actions in formulas -----------------------------------------------------------

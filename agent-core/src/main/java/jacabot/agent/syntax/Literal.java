@@ -250,14 +250,15 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public void collectVars(Consumer<Var> sink) {
-        if (ns != null) {
-            ns.collectVars(sink);
+        // annotations first, as Jason renames a literal's variables (so renamed ones get its numbers)
+        for (Term t : annots) {
+            t.collectVars(sink);
         }
         for (Term t : args) {
             t.collectVars(sink);
         }
-        for (Term t : annots) {
-            t.collectVars(sink);
+        if (ns != null) {
+            ns.collectVars(sink);
         }
     }
 
