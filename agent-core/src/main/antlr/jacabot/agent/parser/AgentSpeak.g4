@@ -64,10 +64,13 @@ arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
 
 literal     : 'true'                                                       # trueLiteral
             | 'false'                                                      # falseLiteral
-            | ( ns=ATOM '::' )? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
-            | neg='~'? VAR list?                                           # varLiteral
-            | neg='~'? UNNAMEDVAR list?                                    # unnamedVarLiteral
+            | nsPrefix? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
+            | nsPrefix? neg='~'? VAR list?                                 # varLiteral
+            | nsPrefix? neg='~'? UNNAMEDVAR list?                          # unnamedVarLiteral
             ;
+// a namespace: ns::b, NS::b, _::b, and ::b (the namespace the file is read in); the prefix is one
+// token, so that ns::X is never read as the atom ns followed by ::X
+nsPrefix    : ns=( NS_ATOM | NS_VAR ) | '::' ;
 terms       : term ( ',' term )* ;
 term        : logExpr ;
 
@@ -84,6 +87,8 @@ NUMBER      : DIGIT+
             | DIGIT* '.' DIGIT+ EXPONENT?
             | DIGIT+ EXPONENT ;
 STRING      : '"' ( ~["\\\r\n] | '\\' . )* '"' ;
+NS_ATOM     : LC_LETTER CHAR* '::' ;
+NS_VAR      : ( UC_LETTER | '_' ) CHAR* '::' ;
 ATOM        : ( LC_LETTER | '.' CHAR ) ( CHAR | '.' CHAR )*
             | '\'' ~[']* '\'' ;
 VAR         : UC_LETTER CHAR* ;

@@ -66,14 +66,45 @@ public final class AslParser {
     public AgentProgram parse(SourceResolver.Source source) throws AslSyntaxException, IOException {
         userFunctions = new ArrayList<>();
         userFunctionNames = new HashSet<>();
-        return parse(source, new HashSet<>());
+        return parse(source, new HashSet<>(), null);
     }
 
-    private AgentProgram parse(SourceResolver.Source source, Set<String> including) throws AslSyntaxException, IOException {
+    /**
+     * Parses an agent program from a file as a module in namespace ns (Jason's {@code .include(F, NS)});
+     * null or {@code default}: the default namespace.
+     */
+    public AgentProgram parseFile(Path file, Term ns) throws AslSyntaxException, IOException {
+        userFunctions = new ArrayList<>();
+        userFunctionNames = new HashSet<>();
+        return parse(new SourceResolver.Source(file.toString(), Files.readString(file, StandardCharsets.UTF_8),
+                file.toAbsolutePath().normalize().toString()), new HashSet<>(), ns);
+    }
+
+    /**
+     * Jason's one counter of fresh variables ({@code _N}): the unnamed variables this parser reads
+     * and, through {@link #varCounter()}, those the agents of its multi-agent system make (renaming
+     * apart), so that they get the numbers Jason's would.
+     */
+    private final java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
+
+    /** {@return the counter that numbers fresh variables, shared by the agents this parser reads programs for} */
+    public java.util.concurrent.atomic.AtomicLong varCounter() {
+        return varCounter;
+    }
+
+    /** Numbers the local namespaces and the anonymous includes of the files this parser reads. */
+    private final java.util.concurrent.atomic.AtomicInteger nsCounter = new java.util.concurrent.atomic.AtomicInteger();
+
+    /** {@return a new namespace name, as Jason gives to {@code include(F, Var)}} */
+    public Literal freshNamespace() {
+        return Namespaces.fresh(nsCounter);
+    }
+
+    private AgentProgram parse(SourceResolver.Source source, Set<String> including, Term ns) throws AslSyntaxException, IOException {
         String key = source.location() != null ? source.location() : source.name();
         including.add(key);
         try {
-            return parse(source.text(), source.name(), source, including);
+            return parse(source.text(), source.name(), source, including, ns);
         } finally {
             including.remove(key);
         }
@@ -84,19 +115,21 @@ public final class AslParser {
         userFunctions = new ArrayList<>();
         userFunctionNames = new HashSet<>();
         try {
-            return parse(text, file, new SourceResolver.Source(file, text, null), new HashSet<>());
+            return parse(text, file, new SourceResolver.Source(file, text, null), new HashSet<>(), null);
         } catch (IOException e) {
             throw new AslSyntaxException(List.of(new SyntaxError(
                     new jacabot.agent.syntax.SourceInfo(file, 0, 0), e.getMessage())));
         }
     }
 
-    private AgentProgram parse(String text, String file, SourceResolver.Source from, Set<String> including)
+    private AgentProgram parse(String text, String file, SourceResolver.Source from, Set<String> including, Term ns)
             throws AslSyntaxException, IOException {
         var errors = new ErrorCollector(file);
         AgentSpeakParser parser = newParser(text, errors);
         var tree = parser.agent();
         var builder = new AstBuilder(file, errors);
+        builder.setNamespace(ns, nsCounter);
+        builder.setVarCounter(varCounter);
         builder.setUserFunctions(userFunctionNames);
         var beliefs = new ArrayList<Object>();
         var goals = new ArrayList<Literal>();
@@ -107,12 +140,25 @@ public final class AslParser {
             for (ComponentContext c : tree.component()) {
                 if (c.directive() != null && c.directive().begin != null) {
                     Term d = builder.literal(c.directive().literal());
+                    if (isNamespace(d)) {
+                        // { begin namespace(ns) } ... { end }: the plans stay where they are
+                        String error = builder.namespaces().begin((Literal) d);
+                        if (error != null) {
+                            errors.add(builder.where(c), error);
+                        }
+                        blocks.push(new Block((Literal) d, null, builder.where(c)));
+                        continue;
+                    }
                     blocks.push(new Block(d instanceof Literal l ? l : Literal.atom(String.valueOf(d)), plans, builder.where(c)));
                     plans = new ArrayList<>();
                 } else if (c.directive() != null && isEnd(builder.literal(c.directive().literal()))) {
                     Block b = blocks.poll();
                     if (b == null) {
                         errors.add(builder.where(c), "{ end } without { begin ... }");
+                        continue;
+                    }
+                    if (b.outer == null) {
+                        builder.namespaces().end();
                         continue;
                     }
                     List<Plan> made = GoalPatterns.apply(b.pattern, plans, this);
@@ -130,7 +176,15 @@ public final class AslParser {
                     plans.add(builder.plan(c.plan()));
                 } else {
                     Term d = builder.literal(c.directive().literal());
-                    if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
+                    if (isNamespace(d)) {
+                        // { namespace(ns, local) }: declares ns (local names are made unique here)
+                        String error = builder.namespaces().begin((Literal) d);
+                        if (error != null) {
+                            errors.add(builder.where(c), error);
+                        } else {
+                            builder.namespaces().end();
+                        }
+                    } else if (d instanceof Literal l && l.functor().equals("include") && l.arity() >= 1
                             && l.arg(0) instanceof StringTerm name) {
                         SourceResolver.Source included = includes.find(name.value(), from);
                         if (included == null) {
@@ -138,7 +192,7 @@ public final class AslParser {
                         } else if (including.contains(included.location())) {
                             errors.add(builder.where(c), "file '" + name.value() + "' includes itself");
                         } else {
-                            AgentProgram sub = parse(included, including);
+                            AgentProgram sub = parse(included, including, includeNamespace(l));
                             beliefs.addAll(sub.beliefs());
                             goals.addAll(sub.goals());
                             plans.addAll(sub.plans());
@@ -180,6 +234,22 @@ public final class AslParser {
     private record Block(Literal pattern, ArrayList<Plan> outer, jacabot.agent.syntax.SourceInfo where) {
     }
 
+    private static boolean isNamespace(Term d) {
+        return d instanceof Literal l && l.functor().equals("namespace");
+    }
+
+    /**
+     * The namespace of {@code include(F, NS)}: NS, a new one when NS is a variable, and without
+     * NS the one the directive is written in.
+     */
+    private Term includeNamespace(Literal include) {
+        if (include.arity() < 2) {
+            return include.ns();
+        }
+        Term ns = include.arg(1);
+        return ns instanceof Literal a && a.isAtom() ? a : freshNamespace();
+    }
+
     private static boolean isEnd(Term d) {
         return d instanceof Literal l && l.functor().equals("end") && l.arity() == 0;
     }
@@ -189,7 +259,7 @@ public final class AslParser {
         var errors = new ErrorCollector("<term>");
         var parser = newParser(text, errors);
         var tree = parser.termOnly();
-        Term t = errors.errors().isEmpty() ? new AstBuilder("<term>", errors).term(tree.term()) : null;
+        Term t = errors.errors().isEmpty() ? builder("<term>", errors).term(tree.term()) : null;
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
@@ -201,11 +271,17 @@ public final class AslParser {
         var errors = new ErrorCollector("<plan>");
         var parser = newParser(text, errors);
         var tree = parser.planOnly();
-        Plan p = errors.errors().isEmpty() ? new AstBuilder("<plan>", errors).plan(tree.plan()) : null;
+        Plan p = errors.errors().isEmpty() ? builder("<plan>", errors).plan(tree.plan()) : null;
         if (!errors.errors().isEmpty()) {
             throw new AslSyntaxException(errors.errors());
         }
         return p;
+    }
+
+    private AstBuilder builder(String name, ErrorCollector errors) {
+        var b = new AstBuilder(name, errors);
+        b.setVarCounter(varCounter);
+        return b;
     }
 
     private static AgentSpeakParser newParser(String text, ErrorCollector errors) {

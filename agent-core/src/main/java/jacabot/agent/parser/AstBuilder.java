@@ -31,13 +31,44 @@ import org.antlr.v4.runtime.Token;
 final class AstBuilder {
     private final String file;
     private final ErrorCollector errors;
-    private long unnamedSerial;
+    /**
+     * Numbers unnamed variables: each {@code _} or {@code _X} read takes a number, as each makes a
+     * new variable of Jason's one counter (see {@link AslParser#varCounter()}).
+     */
+    private java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
+
+    /** The namespaces of the file being read (Jason's modules). */
+    private Namespaces namespaces = new Namespaces(null, new java.util.concurrent.atomic.AtomicInteger());
+    /**
+     * Whether an argument or a list element is being read: its literals are in the default
+     * namespace unless prefixed, as Jason reads them.
+     */
+    private boolean inTerm;
 
     /** Functions registered by {@code register_function} so far, as {@code name/arity}. */
     private java.util.Set<String> userFunctions = java.util.Set.of();
 
     void setUserFunctions(java.util.Set<String> names) {
         userFunctions = names;
+    }
+
+    void setVarCounter(java.util.concurrent.atomic.AtomicLong counter) {
+        varCounter = counter;
+    }
+
+    /** {@code _X}: the same variable wherever written in the clause, yet it takes a number, as in Jason. */
+    private Var unnamed(String name) {
+        varCounter.incrementAndGet();
+        return new Var(name);
+    }
+
+    Namespaces namespaces() {
+        return namespaces;
+    }
+
+    /** Reads the file in namespace ns (null: the default one), as an included module. */
+    void setNamespace(Term ns, java.util.concurrent.atomic.AtomicInteger counter) {
+        namespaces = new Namespaces(ns, counter);
     }
 
     AstBuilder(String file, ErrorCollector errors) {
@@ -214,7 +245,7 @@ final class AstBuilder {
             if (t instanceof Literal l) {
                 return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
             }
-            if (t instanceof Var) {
+            if (t instanceof Var || t instanceof AnnotatedVar) {
                 return new BodyStep(Kind.ACTION, t, src);
             }
             if (t instanceof RelExpr || t instanceof LogExpr) {
@@ -248,6 +279,18 @@ final class AstBuilder {
             operand = ((DelAddBelContext) ctx).logExpr();
         }
         Term t = logExpr(operand);
+        if (t instanceof PlanTerm) {
+            // as Jason: +{plan} is .add_plan(plan, self, begin), +>{plan} adds at the end, -{plan} removes
+            if (kind == Kind.ADD_BEL || kind == Kind.ADD_BEL_END) {
+                Term at = Literal.atom(kind == Kind.ADD_BEL ? "begin" : "end");
+                return new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".add_plan", t, Literal.SELF, at), src);
+            }
+            if (kind == Kind.DEL_BEL) {
+                return new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".remove_plan", t), src);
+            }
+            errors.add(src, "wrong combination of operator '" + kind.prefix() + "' and a plan");
+            return new BodyStep(kind, Literal.TRUE, src);
+        }
         if (!(t instanceof Literal) && !(t instanceof Var) && !(t instanceof jacabot.agent.syntax.AnnotatedVar)) {
             errors.add(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
             t = Literal.TRUE;
@@ -296,9 +339,22 @@ final class AstBuilder {
         return new RelExpr(op, operand(left), operand(right));
     }
 
-    /** An atom as an operand of a relational expression is a structure for Jason's {@code .structure}. */
-    private static Term operand(Term t) {
-        return t instanceof Literal l ? l.asOperandAtom() : t;
+    /**
+     * An atom as an operand of a relational expression is a structure for Jason's {@code .structure};
+     * an operand is a term, so it leaves the current namespace for the default one, as in Jason.
+     */
+    private Term operand(Term t) {
+        Term ns = inTerm ? null : namespaces.current();
+        if (t instanceof Literal l) {
+            if (l.ns() != null && l.ns().equals(ns)) {
+                l = l.withNs(null);
+            }
+            return l.asOperandAtom();
+        }
+        if (t instanceof AnnotatedVar av && av.ns() != null && av.ns().equals(ns)) {
+            return av.annots().isEmpty() && av.tail() == null ? av.var() : new AnnotatedVar(av.var(), av.annots(), av.tail());
+        }
+        return t;
     }
 
     private Term relOperand(RelOperandContext ctx) {
@@ -377,19 +433,24 @@ final class AstBuilder {
             return Literal.FALSE;
         }
         if (ctx instanceof VarLiteralContext v) {
+            Term ns = varNs(v.nsPrefix());
             Var var = new Var(v.VAR().getText());
-            return v.list() == null ? var : annotated(var, list(v.list()));
+            return ns == null && v.list() == null ? var : annotated(var, v.list() == null ? ListTerm.EMPTY : list(v.list()), ns);
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
+            Term ns = varNs(u.nsPrefix());
             String name = u.UNNAMEDVAR().getText();
-            Var var = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
-            return u.list() == null ? var : annotated(var, list(u.list()));
+            Var var = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
+            return ns == null && u.list() == null ? var : annotated(var, u.list() == null ? ListTerm.EMPTY : list(u.list()), ns);
         }
         StructureContext s = (StructureContext) ctx;
-        // a namespace, ns::b, is kept in the functor: b and ns::b are different predicates
-        String functor = (s.ns == null ? "" : s.ns.getText() + "::") + s.name.getText();
+        String functor = s.name.getText();
+        Term ns = s.nsPrefix() != null ? explicitNs(s.nsPrefix()) : inTerm ? null : namespaces.current();
+        boolean outer = inTerm;
+        inTerm = true;
         List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
         List<Term> annots = s.list() == null ? List.of() : list(s.list()).elements();
+        inTerm = outer;
         boolean negated = s.neg != null;
         if (functor.indexOf('.') >= 0 && functor.charAt(0) != '\'') {
             if (!annots.isEmpty()) {
@@ -398,14 +459,48 @@ final class AstBuilder {
             if (negated) {
                 errors.add(where(ctx), "internal actions cannot be negated");
             }
+            ns = null; // as Jason's: internal actions have no namespace
         }
-        return new Literal(functor, args, annots, negated);
+        if (Namespaces.isKeyword(functor, args.size())) {
+            ns = null;
+        }
+        return new Literal(functor, args, annots, negated, false, namespaces.map(ns));
+    }
+
+    /** {@code ns::}, {@code NS::}, {@code _::}, {@code ::}: the namespace written (null: the default one). */
+    private Term explicitNs(NsPrefixContext p) {
+        if (p.ns == null) {
+            return namespaces.thisNs();
+        }
+        String text = p.ns.getText();
+        text = text.substring(0, text.length() - 2);
+        if (p.ns.getType() == AgentSpeakParser.NS_VAR) {
+            if (text.startsWith("_")) {
+                return text.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(text);
+            }
+            return new Var(text);
+        }
+        if (text.equals(Literal.DEFAULT_NS_NAME)) {
+            return null;
+        }
+        return text.equals("this_ns") ? namespaces.thisNs() : Literal.atom(text);
+    }
+
+    /** A variable's namespace: the one written, or else the current one for a formula (Jason's {@code var(NS)}). */
+    private Term varNs(NsPrefixContext p) {
+        return namespaces.map(p != null ? explicitNs(p) : inTerm ? null : namespaces.current());
+    }
+
+    /** As Jason, the atom {@code this_ns} written as a term names the namespace the file is read in. */
+    private Term thisNs(Term t) {
+        return t instanceof Literal l && l.isAtom() && l.ns() == null && l.functor().equals("this_ns")
+                ? namespaces.thisNsAtom() : t;
     }
 
     private List<Term> terms(TermsContext ctx) {
         var out = new ArrayList<Term>(ctx.term().size());
         for (TermContext t : ctx.term()) {
-            out.add(logExpr(t.logExpr()));
+            out.add(thisNs(logExpr(t.logExpr())));
         }
         return out;
     }
@@ -415,21 +510,31 @@ final class AstBuilder {
     }
 
     /** {@code V[a, b | T]}: the annotations, and the tail when there is one. */
-    private static AnnotatedVar annotated(Var var, ListTerm annots) {
+    private static AnnotatedVar annotated(Var var, ListTerm annots, Term ns) {
         var items = new ArrayList<Term>();
         Term t = annots;
         while (t instanceof ListTerm.Cons c) {
             items.add(c.head());
             t = c.tail();
         }
-        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t);
+        return new AnnotatedVar(var, items, t instanceof ListTerm ? null : t, ns);
     }
 
     ListTerm list(ListContext ctx) {
+        boolean outer = inTerm;
+        inTerm = true;
+        try {
+            return listElements(ctx);
+        } finally {
+            inTerm = outer;
+        }
+    }
+
+    private ListTerm listElements(ListContext ctx) {
         var items = new ArrayList<Term>();
         for (ListElementContext e : ctx.listElement()) {
             if (e.arithExpr() != null) {
-                items.add(arithExpr(e.arithExpr()));
+                items.add(thisNs(arithExpr(e.arithExpr())));
             } else if (e.STRING() != null) {
                 items.add(string(e.STRING().getText()));
             } else if (e.list() != null) {
@@ -445,7 +550,7 @@ final class AstBuilder {
                 tail = new Var(t.VAR().getText());
             } else if (t.UNNAMEDVAR() != null) {
                 String name = t.UNNAMEDVAR().getText();
-                tail = name.equals("_") ? new Var("_", -(++unnamedSerial)) : new Var(name);
+                tail = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
             } else {
                 tail = list(t.list());
             }

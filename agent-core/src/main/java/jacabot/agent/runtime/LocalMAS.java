@@ -100,6 +100,9 @@ public final class LocalMAS {
      * Creates an agent running a program. {@code archFactory} may wrap the local architecture
      * (e.g. the JaCa bridge); null keeps it.
      */
+    /** The unnamed variables ({@code _}) in Jason 3.2's {@code kqmlPlans.asl}, which each Jason agent reads. */
+    static final int JASON_KQML_PLANS_UNNAMED_VARS = 18;
+
     public synchronized Agent createAgent(String name, AgentProgram program, AslParser parser,
             Function<LocalArch, AgentArch> archFactory) {
         if (agents.containsKey(name)) {
@@ -113,6 +116,11 @@ public final class LocalMAS {
         agents.put(name, ag);
         wakers.put(name, new Waker(ag));
         ag.load(program);
+        if (parser != null) {
+            // Jason's agent then reads its kqmlPlans.asl, whose 18 unnamed variables take numbers
+            // of the counter of fresh variables (ours are built in): the next numbers are Jason's
+            parser.varCounter().addAndGet(JASON_KQML_PLANS_UNNAMED_VARS);
+        }
         return ag;
     }
 

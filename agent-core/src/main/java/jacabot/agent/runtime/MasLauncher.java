@@ -81,6 +81,10 @@ public final class MasLauncher {
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
+                        if (k > 1) {
+                            // as Jason, each instance reads its source: its own unnamed variables and local namespaces
+                            program = withOptions(parser.parseFile(asl), spec, parser);
+                        }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
                             created.setVerbosity(0);

@@ -122,6 +122,8 @@ public final class Agent {
             }
         }
         for (Literal g : program.goals()) {
+            // as Jason, a goal's variables are renamed apart (they take numbers of its one counter)
+            g = g.isGround() ? g : (Literal) Renamer.renameApart(g, this);
             Literal goal = g.hasSource() ? g : g.addAnnot(Literal.SOURCE_SELF);
             circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal), null));
         }
@@ -346,8 +348,21 @@ public final class Agent {
     }
 
     /** {@return a variable that no other variable equals} */
+    /**
+     * {@return a variable no other has, for renaming apart} Its number comes from the counter its
+     * parser shares with the other agents of the system, as Jason's unnamed variables ({@code _41})
+     * come from one counter.
+     */
+    /**
+     * {@return a variable no other has, for a renaming Jason does not make (its number is not one
+     * of the counter's: Jason's would not have been taken)}
+     */
+    Var internalVar(Var like) {
+        return new Var(like.name(), -(++freshSerial));
+    }
+
     public Var freshVar(Var like) {
-        return new Var(like.name(), ++freshSerial);
+        return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);
     }
 
     /** {@return a copy of an intention, with its own id and unifiers, not yet running (a branch of {@code .fork})} */

@@ -3,6 +3,7 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -70,32 +71,38 @@ public final class BeliefBase {
         private String functor;
         private int arity;
         private boolean negated;
+        /** The namespace: null for the default one. */
+        private Term ns;
 
-        private Key(String functor, int arity, boolean negated) {
+        private Key(String functor, int arity, boolean negated, Term ns) {
             this.functor = functor;
             this.arity = arity;
             this.negated = negated;
+            this.ns = ns;
         }
 
         Key set(Literal l) {
             functor = l.functor();
             arity = l.arity();
             negated = l.negated();
+            ns = l.ns();
             return this;
         }
 
         static Key of(Literal l) {
-            return new Key(l.functor(), l.arity(), l.negated());
+            return new Key(l.functor(), l.arity(), l.negated(), l.ns());
         }
 
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.arity == arity && k.negated == negated && k.functor.equals(functor);
+            return o instanceof Key k && k.arity == arity && k.negated == negated && k.functor.equals(functor)
+                    && (k.ns == ns || k.ns != null && k.ns.equals(ns));
         }
 
         @Override
         public int hashCode() {
-            return functor.hashCode() * 31 + arity * 2 + (negated ? 1 : 0);
+            int h = functor.hashCode() * 31 + arity * 2 + (negated ? 1 : 0);
+            return ns == null ? h : h * 31 + ns.hashCode();
         }
     }
 
@@ -187,12 +194,18 @@ public final class BeliefBase {
     }
 
     private final LinkedHashMap<Key, Group> groups = new LinkedHashMap<>();
+    /**
+     * The namespaces the belief base has had, in order of arrival: the default one, and
+     * {@code kqml}, which every Jason agent has for the rules of its message plans.
+     */
+    private final java.util.LinkedHashSet<Term> knownNs = new java.util.LinkedHashSet<>(
+            List.of(Literal.DEFAULT_NS, Literal.atom("kqml")));
     /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
     private Group spare;
     private int size;
 
     /** The lookup key; the belief base is used by its agent's thread only. */
-    private final Key probe = new Key(null, 0, false);
+    private final Key probe = new Key(null, 0, false, null);
 
     private Group group(Literal l) {
         return groups.get(probe.set(l));
@@ -201,6 +214,7 @@ public final class BeliefBase {
     private Group groupFor(Literal l) {
         Group g = group(l);
         if (g == null) {
+            knownNs.add(l.nsTerm());
             g = spare == null ? new Group() : spare;
             spare = null;
             if (g.key == null || !g.key.equals(probe)) {
@@ -221,6 +235,27 @@ public final class BeliefBase {
 
     /** As {@link #candidates(Literal)}, for a query whose first argument is {@code first} (its value when a bound variable) */
     List<Entry> candidates(Literal l, Term first) {
+        return candidates(l, l.ns(), first);
+    }
+
+    /**
+     * As {@link #candidates(Literal, Term)}, in namespace {@code ns} (the query's own, or its value):
+     * a variable namespace ({@code N::b}) asks every namespace, in the order the groups came.
+     */
+    List<Entry> candidates(Literal l, Term ns, Term first) {
+        if (ns instanceof Var) {
+            var out = new ArrayList<Entry>();
+            for (Term n : namespaces()) {
+                var g = group(l.withNs(n));
+                if (g != null) {
+                    out.addAll(g.snapshot());
+                }
+            }
+            return out;
+        }
+        if (ns != l.ns()) {
+            l = l.withNs(ns);
+        }
         var g = group(l);
         if (g == null) {
             return List.of();
@@ -409,6 +444,30 @@ public final class BeliefBase {
             groups.remove(probe.set(stored));
             spare = group;
         }
+    }
+
+    /**
+     * {@return the namespaces the belief base has had, the default one as {@code default}} They come
+     * in the order of Jason's belief base, a {@code ConcurrentHashMap} keyed by namespace atoms, so
+     * that {@code .namespace(N)} and queries {@code N::b} enumerate them as Jason does.
+     */
+    public List<Term> namespaces() {
+        int table = 16;
+        while (knownNs.size() >= table * 3 / 4) {
+            table *= 2;
+        }
+        int mask = table - 1;
+        var out = new ArrayList<Term>(knownNs);
+        // a stable sort: namespaces in one bin stay in order of arrival
+        out.sort(java.util.Comparator.comparingInt(n -> jasonHash(n) & mask));
+        return out;
+    }
+
+    /** Jason's hash of a namespace atom (functor's, plus the default namespace's for the others), spread as the map spreads it. */
+    private static int jasonHash(Term ns) {
+        int d = Literal.DEFAULT_NS_NAME.hashCode();
+        int h = ns instanceof Literal l && !l.isDefaultNsName() ? l.functor().hashCode() + d : d;
+        return (h ^ (h >>> 16)) & 0x7fffffff;
     }
 
     public List<Literal> beliefs() {

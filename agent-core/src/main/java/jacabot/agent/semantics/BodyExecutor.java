@@ -36,9 +36,9 @@ final class BodyExecutor {
         BodyStep step = im.currentStep();
         Term term = step.term();
         BodyStep.Kind kind = step.kind();
-        if (term instanceof Var) {
+        if (term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar && kind == BodyStep.Kind.ACTION) {
             term = im.unifier().apply(term);
-            if (term instanceof Var) {
+            if (term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar) {
                 rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_without_value",
                         step.source() + ": Variable '" + step.term() + "' must be ground."));
                 return;
@@ -162,7 +162,7 @@ final class BodyExecutor {
             rc.removeActionReQueue(i);
             return;
         }
-        if (term instanceof Literal || term instanceof Var) {
+        if (term instanceof Literal || term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar) {
             Term applied = im.unifier().apply(term);
             if (applied instanceof Literal) {
                 Literal body = prepareForEvent(term, im, im);

@@ -1,5 +1,6 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -241,6 +242,21 @@ public final class Circumstance {
         if (i.isAtomic()) {
             atomicIntentionSuspended = false;
         }
+    }
+
+    /**
+     * {@return why an intention waits, as Jason's {@code .intention} tells: its reason in PI
+     * ({@code wait(Id)[time(T)]}, ...), or {@code action(A)} for an action whose feedback it waits
+     * for; null when it does not wait there}
+     */
+    public Literal waitingReason(Intention i) {
+        for (Pending p : pending.values()) {
+            if (p.intention() == i) {
+                return Literal.of("reason", p.reason());
+            }
+        }
+        ActionExec a = pendingActions.get(i.id());
+        return a != null && a.intention() == i ? Literal.of("action", a.action()) : null;
     }
 
     public Intention removePendingIntention(String key) {

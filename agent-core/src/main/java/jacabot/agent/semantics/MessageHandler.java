@@ -4,6 +4,7 @@ import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -15,6 +16,8 @@ import java.util.Map;
 final class MessageHandler {
     private final Agent ag;
     private final ReasoningCycle rc;
+    private static final Var ANONYMOUS_SOURCE = new Var("_");
+
     /** {@code source(S)} by sender: a stream of messages from one agent shares one annotation. */
     private final Map<String, Literal> sources = new HashMap<>();
 
@@ -24,9 +27,9 @@ final class MessageHandler {
      * {@code kqml_received} goal are printed (as Jason's kqmlPlans).
      */
     private static final List<Plan> KQML_PLANS = parsePlans(
-            "@kqmlReceivedAskOne +!kqml_received(Sender, askOne, Content, MsgId) <- ?Content; .send(Sender, tell, Content, MsgId).",
-            "@kqmlReceivedAskOneFailed -!kqml_received(Sender, askOne, Content, MsgId)[error(test_goal_failed)]"
-                    + " <- .send(Sender, untell, Content, MsgId).",
+            "@kqmlReceivedAskOne +!kqml_received(Sender, askOne, NS::Content, MsgId) <- ?NS::Content; .send(Sender, tell, NS::Content, MsgId).",
+            "@kqmlReceivedAskOneFailed -!kqml_received(Sender, askOne, NS::Content, MsgId)[error(test_goal_failed)]"
+                    + " <- .send(Sender, untell, NS::Content, MsgId).",
             "@kqmlError -!kqml_received(_, _, _, _)[error(Id), error_msg(Msg)] <- .print(\"Communication error -- \", Id, \": \", Msg).");
 
     MessageHandler(Agent ag, ReasoningCycle rc) {
@@ -274,6 +277,9 @@ final class MessageHandler {
         var plans = new ArrayList<Term>();
         // a trigger without a source asks for the agent's own plans (Jason's .relevant_plans)
         Term asked = te.literal() instanceof Literal l && !l.hasSource() ? l.addAnnot(Literal.SOURCE_SELF) : te.literal();
+        if (asked != te.literal()) {
+            ag.freshVar(ANONYMOUS_SOURCE); // Jason asks with source(_), a fresh variable: its number is taken
+        }
         for (Plan p : ag.planLibrary().candidates(te)) {
             if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
                 plans.add(Renamer.renameApart(new jacabot.agent.syntax.PlanTerm(p.withLabel(withoutSources(p.label()))), ag));

@@ -2,7 +2,9 @@ package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -25,8 +27,11 @@ public final class PlanLibrary {
         private final String functor;
         private final int arity;
         private final boolean negated;
+        /** The namespace (null: the default one; a variable stands for any). */
+        private final Term ns;
 
-        CandidateKey(Trigger.Op op, Trigger.Type type, String functor, int arity, boolean negated) {
+        CandidateKey(Trigger.Op op, Trigger.Type type, String functor, int arity, boolean negated, Term ns) {
+            this.ns = ns;
             this.op = op;
             this.type = type;
             this.functor = functor;
@@ -37,7 +42,7 @@ public final class PlanLibrary {
         @Override
         public boolean equals(Object o) {
             return o instanceof CandidateKey k && k.op == op && k.type == type && k.arity == arity
-                    && k.negated == negated && k.functor.equals(functor);
+                    && k.negated == negated && k.functor.equals(functor) && java.util.Objects.equals(k.ns, ns);
         }
 
         @Override
@@ -154,7 +159,7 @@ public final class PlanLibrary {
         if (!(te.literal() instanceof Literal l)) {
             return scan(te);
         }
-        var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated());
+        var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated(), l.ns());
         List<Plan> cached = candidateCache.get(key);
         if (cached == null) {
             cached = List.copyOf(scan(te));
@@ -201,7 +206,11 @@ public final class PlanLibrary {
             return true; // a variable trigger, e.g. +!G
         }
         // a variable in the asked trigger ({+!_} for .relevant_plans) matches every plan
-        return !(te.literal() instanceof Literal el) || pl.samePredicate(el);
+        if (!(te.literal() instanceof Literal el)) {
+            return true;
+        }
+        // a variable namespace (+N::b, as a trigger or asked) stands for every namespace
+        return pl.sameName(el) && (pl.ns() instanceof Var || el.ns() instanceof Var || java.util.Objects.equals(pl.ns(), el.ns()));
     }
 
     /** {@return whether a plan for goal-state meta-events ({@code ^!g}) was ever added} */

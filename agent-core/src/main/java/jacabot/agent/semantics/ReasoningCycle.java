@@ -216,7 +216,7 @@ final class ReasoningCycle {
 
     private static boolean samePredicate(Trigger a, Trigger b) {
         return a.literal() instanceof Literal la && b.literal() instanceof Literal lb
-                && la.functor().equals(lb.functor()) && la.arity() == lb.arity();
+                && la.functor().equals(lb.functor()) && la.arity() == lb.arity() && java.util.Objects.equals(la.ns(), lb.ns());
     }
 
     // ---- act ----------------------------------------------------------------------------------

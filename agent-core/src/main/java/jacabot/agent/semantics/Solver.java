@@ -80,7 +80,8 @@ public final class Solver {
 
     /** {@return the beliefs and rules that may match a literal, in order} */
     List<BeliefBase.Entry> candidates(Literal q, Unifier u) {
-        return agent.beliefBase().candidates(q, q.arity() == 0 ? null : u.deref(q.arg(0)));
+        return agent.beliefBase().candidates(q, q.ns() instanceof Var nv ? u.deref(nv) : q.ns(),
+                q.arity() == 0 ? null : u.deref(q.arg(0)));
     }
 
     /**
@@ -119,7 +120,7 @@ public final class Solver {
         @Override
         public Term visitLiteral(Literal l) {
             int n = l.arity();
-            if (n == 0 && l.annots().isEmpty() || l.isGround()) {
+            if (n == 0 && l.annots().isEmpty() && l.ns() == null || l.isGround()) {
                 return l;
             }
             List<Term> args;
@@ -141,7 +142,8 @@ public final class Solver {
                     args = List.of(a);
                     break;
             }
-            return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated());
+            return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated(),
+                    false, l.ns() == null ? null : map(l.ns()));
         }
 
         @Override
@@ -159,9 +161,12 @@ public final class Solver {
         return new Renaming(e, agent);
     }
 
-    /** A fact with variables, like in(X, [X|_]): its variables are its own. */
+    /**
+     * A fact with variables, like in(X, [X|_]): its variables are its own. Jason queries such a fact
+     * without renaming it, so the renaming takes no number of the counter of fresh variables.
+     */
     Literal renameApart(Literal fact) {
-        return (Literal) Renamer.renameApart(fact, agent);
+        return (Literal) Renamer.renameApart(fact, agent::internalVar, new java.util.HashMap<>());
     }
 
     // ---- internal actions in formulas -----------------------------------------------------------
@@ -217,8 +222,11 @@ public final class Solver {
     /** {@code T =.. L}: L is [namespace, functor, args, annots]; 2 and 3 elements also build. */
     private static boolean univ(Term x, Term y, Unifier c) {
         if (x instanceof Literal l) {
-            Term decomposed = ListTerm.of(Literal.atom("default"), Literal.atom(l.functor()),
-                    ListTerm.of(l.args()), ListTerm.of(l.annots()));
+            // as Jason, a list of three leaves the namespace out
+            boolean three = y instanceof ListTerm yl && yl.isProper() && yl.elements().size() == 3;
+            Term functor = Literal.atom(l.functor());
+            Term decomposed = three ? ListTerm.of(functor, ListTerm.of(l.args()), ListTerm.of(l.annots()))
+                    : ListTerm.of(l.nsTerm(), functor, ListTerm.of(l.args()), ListTerm.of(l.annots()));
             return c.unifies(decomposed, y);
         }
         if (x instanceof PlanTerm p) {
@@ -258,7 +266,8 @@ public final class Solver {
             if (name == null || !(args instanceof ListTerm al) || !(annots instanceof ListTerm nl)) {
                 return false;
             }
-            Literal built = new Literal(name, al.elements(), nl.elements(), false);
+            Term ns = parts.size() == 4 ? parts.get(0) : null;
+            Literal built = new Literal(name, al.elements(), nl.elements(), false, false, ns);
             return c.unifies(x, built);
         }
         if (x instanceof NumberTerm || x instanceof StringTerm) {

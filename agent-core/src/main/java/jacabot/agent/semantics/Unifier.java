@@ -147,7 +147,8 @@ public final class Unifier {
             if (!needsApply(l)) {
                 return l;
             }
-            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated());
+            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated(), false,
+                    l.ns() == null ? null : apply(l.ns()));
         }
         if (t instanceof ListTerm.Cons) {
             if (!needsApply(t)) {
@@ -209,11 +210,11 @@ public final class Unifier {
         if (t instanceof AnnotatedVar av) {
             Term d = deref(av.var());
             List<Term> annots = applyAll(av.annots());
+            Term ns = av.ns() == null ? null : apply(av.ns());
             if (d instanceof Var dv) {
-                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()));
+                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()), ns);
             }
-            Term value = apply(d);
-            return value instanceof Literal l ? l.addAnnots(annots) : value;
+            return av.wrap(apply(d), annots, ns);
         }
         return t;
     }
@@ -230,6 +231,9 @@ public final class Unifier {
             return false;
         }
         if (t instanceof Literal l) {
+            if (l.ns() instanceof Var nv && bindings.get(nv) != null) {
+                return true;
+            }
             List<Term> args = l.args();
             for (int i = 0, n = args.size(); i < n; i++) {
                 if (needsApply(args.get(i))) {
@@ -307,22 +311,22 @@ public final class Unifier {
      * those literals (the belief base tries every candidate fact this way).
      */
     Unifier unifiedCopyIgnoringAnnots(Literal a, Literal b) {
-        if (!a.samePredicate(b)) {
+        if (!a.sameName(b)) {
             return null;
         }
         int mark = bindings.size();
-        Unifier result = unifyArgs(a, b) ? copy() : null;
+        Unifier result = unifyNs(a, b) && unifyArgs(a, b) ? copy() : null;
         bindings.truncate(mark);
         return result;
     }
 
     /** Unifies without annotation checks (annotations ignored on both sides). */
     public boolean unifiesIgnoringAnnots(Literal a, Literal b) {
-        if (!a.samePredicate(b)) {
+        if (!a.sameName(b)) {
             return false;
         }
         int mark = bindings.size();
-        if (unifyArgs(a, b)) {
+        if (unifyNs(a, b) && unifyArgs(a, b)) {
             return true;
         }
         bindings.truncate(mark);
@@ -338,6 +342,21 @@ public final class Unifier {
         return true;
     }
 
+    /** The namespaces of two literals (null, the default one, unifies with {@code default}). */
+    private boolean unifyNs(Literal a, Literal b) {
+        Term na = a.ns();
+        Term nb = b.ns();
+        return na == nb || unify(na == null ? Literal.DEFAULT_NS : na, nb == null ? Literal.DEFAULT_NS : nb);
+    }
+
+    /**
+     * As Jason, a variable takes no literal of another namespace than the default one
+     * ({@code X = ns::b} fails; {@code N::b = ns::b} binds N) and no local namespace's name.
+     */
+    private static boolean bindable(Term value) {
+        return !(value instanceof Literal l) || l.ns() == null && !l.isLocalNsName();
+    }
+
     /** Unifies, leaving the bindings made so far in place when it fails (callers cut them back). */
     private boolean unify(Term a, Term b) {
         a = deref(a);
@@ -346,10 +365,16 @@ public final class Unifier {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
             }
+            if (!bindable(b) || b instanceof AnnotatedVar avb && avb.ns() != null && !unify(Literal.DEFAULT_NS, avb.ns())) {
+                return false;
+            }
             bindings.put(va, b);
             return true;
         }
         if (b instanceof Var vb) {
+            if (!bindable(a) || a instanceof AnnotatedVar ava && ava.ns() != null && !unify(Literal.DEFAULT_NS, ava.ns())) {
+                return false;
+            }
             bindings.put(vb, a);
             return true;
         }
@@ -369,7 +394,7 @@ public final class Unifier {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
         if (a instanceof Literal la) {
-            if (!(b instanceof Literal lb) || !la.samePredicate(lb) || !unifyArgs(la, lb)) {
+            if (!(b instanceof Literal lb) || !la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
                 return false;
             }
             return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
@@ -418,10 +443,22 @@ public final class Unifier {
             return left ? unify(value, other) : unify(other, value);
         }
         if (other instanceof AnnotatedVar o) {
-            return unify(v, o.var());
+            return (av.ns() == null && o.ns() == null || unify(nsOf(av), nsOf(o))) && unify(v, o.var());
         }
         if (!(other instanceof Literal l)) {
+            // as Jason, ns::X = 10 binds X: only literals have namespaces and annotations
+            if (av.ns() != null && av.annots().isEmpty() && av.tail() == null && !(other instanceof Var)) {
+                bindings.put(v, other);
+                return true;
+            }
             return false;
+        }
+        if (av.ns() != null) {
+            // ns::X and a literal: the namespaces unify, X takes the literal in the default namespace
+            if (!unify(av.ns(), l.nsTerm())) {
+                return false;
+            }
+            l = l.withNs(null);
         }
         if (av.tail() != null) {
             boolean ok = left ? subsetAnnots(av.annots(), av.tail(), l.annots(), null)
@@ -435,8 +472,16 @@ public final class Unifier {
             return false;
         }
         // as Jason, the variable stands for the literal; the annotations were matched apart
-        bindings.put(v, l.withoutAnnots());
+        if (!bindable(l)) {
+            return false;
+        }
+        // (a variable with a namespace only, NS::W, keeps the annotations, as Jason's)
+        bindings.put(v, av.annots().isEmpty() && av.tail() == null ? l : l.withoutAnnots());
         return true;
+    }
+
+    private static Term nsOf(AnnotatedVar av) {
+        return av.ns() == null ? Literal.DEFAULT_NS : av.ns();
     }
 
     private boolean unifyPlans(PlanTerm a, PlanTerm b) {

@@ -65,7 +65,7 @@ abstract class DefaultInternalAction implements InternalAction {
             return s.value();
         }
         // an atom prints as its functor: no text to build (.send's receiver and performative)
-        return t instanceof Literal l && l.isAtom() ? l.functor() : t.toString();
+        return t instanceof Literal l && l.isAtom() && l.ns() == null ? l.functor() : t.toString();
     }
 
     static Iterator<Unifier> none() {

@@ -41,7 +41,7 @@ final class IntentionIa extends DefaultInternalAction {
             if (!u.unifies(args[0], new NumberTerm(i.id()))) {
                 continue;
             }
-            if (!u.unifies(args[1], Literal.atom(state(c, i)))) {
+            if (!u.unifies(args[1], stateTerm(c, i))) {
                 continue;
             }
             if (args.length >= 3 && !u.unifies(args[2], jacabot.agent.semantics.Renamer.renameApart(stack(i), ag))) {
@@ -50,6 +50,13 @@ final class IntentionIa extends DefaultInternalAction {
             out.add(u);
         }
         return out.iterator();
+    }
+
+    /** The state, and for a waiting intention why, as Jason's: {@code waiting[reason(wait(3)[time(1500)])]}. */
+    private static Term stateTerm(Circumstance c, Intention i) {
+        String s = state(c, i);
+        Literal reason = s.equals("waiting") ? c.waitingReason(i) : null;
+        return reason == null ? Literal.atom(s) : Literal.atom(s).addAnnot(reason);
     }
 
     private static String state(Circumstance c, Intention i) {

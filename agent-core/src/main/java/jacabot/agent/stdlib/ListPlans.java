@@ -30,7 +30,7 @@ final class ListPlans extends DefaultInternalAction {
             if (!(args[0] instanceof TriggerTerm tt)) {
                 throw IaException.wrongArguments(name(), "'" + args[0] + "' is not a trigger");
             }
-            Term asked = RelevantPlans.withSelfSource(tt.trigger().literal());
+            Term asked = RelevantPlans.withSelfSource(tt.trigger().literal(), ag);
             for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
                 if (ag.planLibrary().plans().contains(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
                     ag.print(p.toString());

@@ -20,6 +20,9 @@ final class Print extends DefaultInternalAction {
         var sb = new StringBuilder();
         for (Term t : args) {
             sb.append(text(t));
+            if (t instanceof jacabot.agent.syntax.Var || t instanceof jacabot.agent.syntax.AnnotatedVar) {
+                sb.append("<no-value>"); // as Jason prints a variable still free
+            }
         }
         ag.print(sb.toString());
         return true;

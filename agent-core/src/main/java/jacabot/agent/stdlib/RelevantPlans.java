@@ -21,7 +21,7 @@ final class RelevantPlans extends DefaultInternalAction {
         }
         var plans = new java.util.ArrayList<Term>();
         var labels = new java.util.ArrayList<Term>();
-        Term asked = RelevantPlans.withSelfSource(tt.trigger().literal());
+        Term asked = RelevantPlans.withSelfSource(tt.trigger().literal(), ag);
         for (Plan p : ag.planLibrary().candidates(tt.trigger())) {
             if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
                 plans.add(jacabot.agent.semantics.Renamer.renameApart(new PlanTerm(p), ag)); // its variables are its own
@@ -32,7 +32,13 @@ final class RelevantPlans extends DefaultInternalAction {
     }
 
     /** A trigger without a source is asked for as the agent's own ({@code source(self)}), as Jason's. */
-    static Term withSelfSource(Term t) {
-        return t instanceof jacabot.agent.syntax.Literal l && !l.hasSource() ? l.addAnnot(jacabot.agent.syntax.Literal.SOURCE_SELF) : t;
+    static Term withSelfSource(Term t, Agent ag) {
+        if (t instanceof jacabot.agent.syntax.Literal l && !l.hasSource()) {
+            ag.freshVar(ANONYMOUS); // Jason asks with source(_), a fresh variable: its number is taken
+            return l.addAnnot(jacabot.agent.syntax.Literal.SOURCE_SELF);
+        }
+        return t;
     }
+
+    private static final jacabot.agent.syntax.Var ANONYMOUS = new jacabot.agent.syntax.Var("_");
 }

@@ -37,6 +37,7 @@ public final class Stdlib {
         put(map, new CreateAgent());
         put(map, new KillAgent());
         put(map, new Namespace());
+        put(map, new Include());
         for (DfAction.Kind k : DfAction.Kind.values()) {
             put(map, new DfAction(k));
         }

@@ -14,7 +14,8 @@ final class Term2string extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        if (!(args[0] instanceof jacabot.agent.syntax.Var) || !(args[1] instanceof StringTerm)) {
+        boolean free = args[0] instanceof jacabot.agent.syntax.Var || args[0] instanceof jacabot.agent.syntax.AnnotatedVar;
+        if (!free || !(args[1] instanceof StringTerm)) {
             return un.unifies(args[1], new StringTerm(args[0].toString()));
         }
         try {

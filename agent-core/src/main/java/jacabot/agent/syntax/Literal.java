@@ -9,10 +9,14 @@ import java.util.function.Consumer;
  * A literal: an atom, a structure {@code f(t1,...,tn)}, with optional annotations
  * {@code [a1,...]} and strong negation {@code ~}. Annotations are kept sorted and without
  * duplicates, as Jason keeps them. Atoms are literals with no arguments and no annotations.
+ * A literal lives in a namespace ({@code ns::b(1)}, Jason's modules): null stands for the default
+ * namespace, otherwise it is an atom or a variable ({@code NS::b}); {@code b} and {@code ns::b}
+ * are different predicates.
  */
-public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom)
+public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns)
         implements Term {
 
+    public static final Literal DEFAULT_NS = new Literal("default", List.of(), List.of(), false, false, null);
     public static final Literal TRUE = atom("true");
     public static final Literal FALSE = atom("false");
     public static final Literal SELF = atom("self");
@@ -20,6 +24,10 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     public static final Literal SOURCE_PERCEPT = of("source", atom("percept"));
     /** The functor of a rule used as a term, {@code { head :- body }}: {@code rule__(head, body)}. */
     public static final String RULE_TERM = "rule__";
+    /** The name of the default namespace, as a term ({@code default::b} is {@code b}). */
+    public static final String DEFAULT_NS_NAME = "default";
+    /** Jason's prefix of the unique names given to local namespaces ({@code #3priv}). */
+    public static final String LOCAL_NS_PREFIX = "#";
 
     /**
      * @param operandAtom an atom written as an operand of a relational expression ({@code Z = a}),
@@ -30,15 +38,50 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         args = List.copyOf(args);
         annots = annots.isEmpty() ? List.of() : sortAnnots(annots);
         operandAtom = operandAtom && args.isEmpty() && annots.isEmpty() && !negated;
+        if (ns instanceof Literal l && l.isDefaultNsName()) {
+            ns = null; // default::b is b
+        }
+    }
+
+    public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom) {
+        this(functor, args, annots, negated, operandAtom, null);
     }
 
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated) {
-        this(functor, args, annots, negated, false);
+        this(functor, args, annots, negated, false, null);
     }
 
     /** {@return this atom as written in a relational expression (see {@link #operandAtom})} */
     public Literal asOperandAtom() {
-        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true) : this;
+        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true, ns) : this;
+    }
+
+    /** {@return the same literal in namespace {@code newNs} (null or {@code default}: the default one)} */
+    public Literal withNs(Term newNs) {
+        if (newNs instanceof Literal l && l.isDefaultNsName()) {
+            newNs = null;
+        }
+        return java.util.Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs);
+    }
+
+    /** {@return the namespace as a term: the atom {@code default} for the default namespace} */
+    public Term nsTerm() {
+        return ns == null ? DEFAULT_NS : ns;
+    }
+
+    /** {@return whether the literal is in the default namespace} */
+    public boolean inDefaultNs() {
+        return ns == null;
+    }
+
+    /** {@return whether this is the atom {@code default}, the default namespace's name} */
+    public boolean isDefaultNsName() {
+        return isAtom() && ns == null && functor.equals(DEFAULT_NS_NAME);
+    }
+
+    /** {@return whether this atom names a local namespace ({@code #3priv}), which no variable may take} */
+    public boolean isLocalNsName() {
+        return isAtom() && functor.startsWith(LOCAL_NS_PREFIX);
     }
 
     public static Literal atom(String functor) {
@@ -81,12 +124,13 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     @Override
     public boolean equals(Object o) {
         return o == this || o instanceof Literal l && negated == l.negated && functor.equals(l.functor)
-                && args.equals(l.args) && annots.equals(l.annots);
+                && args.equals(l.args) && annots.equals(l.annots) && java.util.Objects.equals(ns, l.ns);
     }
 
     @Override
     public int hashCode() {
-        return ((functor.hashCode() * 31 + args.hashCode()) * 31 + annots.hashCode()) * 31 + Boolean.hashCode(negated);
+        int h = ((functor.hashCode() * 31 + args.hashCode()) * 31 + annots.hashCode()) * 31 + Boolean.hashCode(negated);
+        return ns == null ? h : h * 31 + ns.hashCode();
     }
 
     public int arity() {
@@ -108,15 +152,15 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     public Literal withAnnots(List<Term> newAnnots) {
-        return new Literal(functor, args, newAnnots, negated);
+        return new Literal(functor, args, newAnnots, negated, false, ns);
     }
 
     public Literal withArgs(List<Term> newArgs) {
-        return new Literal(functor, newArgs, annots, negated);
+        return new Literal(functor, newArgs, annots, negated, false, ns);
     }
 
     public Literal withoutAnnots() {
-        return annots.isEmpty() ? this : new Literal(functor, args, List.of(), negated);
+        return annots.isEmpty() ? this : new Literal(functor, args, List.of(), negated, false, ns);
     }
 
     /** {@return this literal without its {@code source(_)} annotations} */
@@ -158,7 +202,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         for (int i = lo; i < n; i++) {
             out[i + 1] = annots.get(i);
         }
-        return new Literal(functor, args, List.of(out), negated);
+        return new Literal(functor, args, List.of(out), negated, false, ns);
     }
 
     /** {@return the first annotation with this functor, or null} */
@@ -176,13 +220,21 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         return getAnnot("source") != null;
     }
 
-    /** {@return the same functor, arity and negation (the belief base's key)} */
+    /** {@return the same namespace, functor, arity and negation (the belief base's key)} */
     public boolean samePredicate(Literal o) {
+        return sameName(o) && java.util.Objects.equals(ns, o.ns);
+    }
+
+    /** {@return the same functor, arity and negation, whatever the namespaces} */
+    public boolean sameName(Literal o) {
         return negated == o.negated && args.size() == o.args.size() && functor.equals(o.functor);
     }
 
     @Override
     public boolean isGround() {
+        if (ns != null && !ns.isGround()) {
+            return false;
+        }
         for (int i = 0, n = args.size(); i < n; i++) {
             if (!args.get(i).isGround()) {
                 return false;
@@ -198,11 +250,15 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public void collectVars(Consumer<Var> sink) {
+        // annotations first, as Jason renames a literal's variables (so renamed ones get its numbers)
+        for (Term t : annots) {
+            t.collectVars(sink);
+        }
         for (Term t : args) {
             t.collectVars(sink);
         }
-        for (Term t : annots) {
-            t.collectVars(sink);
+        if (ns != null) {
+            ns.collectVars(sink);
         }
     }
 
@@ -212,6 +268,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
             return "{ " + args.get(0) + " :- " + args.get(1) + " }"; // as Jason prints a rule as a term
         }
         var sb = new StringBuilder();
+        if (ns != null) {
+            sb.append(ns).append("::"); // as Jason: ns::~b
+        }
         if (negated) {
             sb.append('~');
         }

@@ -29,7 +29,8 @@ public abstract class TermMapper implements TermVisitor<Term> {
         if (l.isGround()) {
             return l;
         }
-        return new Literal(l.functor(), mapAll(l.args()), mapAll(l.annots()), l.negated());
+        return new Literal(l.functor(), mapAll(l.args()), mapAll(l.annots()), l.negated(), false,
+                l.ns() == null ? null : map(l.ns()));
     }
 
     @Override
@@ -90,10 +91,11 @@ public abstract class TermMapper implements TermVisitor<Term> {
     public Term visitAnnotatedVar(AnnotatedVar t) {
         Term v = visitVar(t.var());
         List<Term> annots = mapAll(t.annots());
+        Term ns = t.ns() == null ? null : map(t.ns());
         if (v instanceof Var nv) {
-            return new AnnotatedVar(nv, annots, t.tail() == null ? null : map(t.tail()));
+            return new AnnotatedVar(nv, annots, t.tail() == null ? null : map(t.tail()), ns);
         }
-        return v instanceof Literal l ? l.addAnnots(annots) : v;
+        return t.wrap(v, annots, ns);
     }
 
     @Override

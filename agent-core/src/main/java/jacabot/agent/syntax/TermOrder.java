@@ -72,6 +72,12 @@ public final class TermOrder {
     }
 
     private static int compareLiterals(Literal a, Literal b) {
+        if (a.ns() != b.ns() && !java.util.Objects.equals(a.ns(), b.ns())) {
+            int n = compare(a.nsTerm(), b.nsTerm()); // Jason orders by namespace first
+            if (n != 0) {
+                return n;
+            }
+        }
         int c = a.functor().compareTo(b.functor());
         if (c != 0) {
             return c;

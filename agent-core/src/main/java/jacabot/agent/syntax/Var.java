@@ -40,8 +40,7 @@ public record Var(String name, long serial) implements Term {
         if (serial == 0) {
             return name;
         }
-        String base = name.startsWith("_") ? name.substring(1) : name;
-        return "_" + Math.abs(serial) + base;
+        return "_" + Math.abs(serial); // as Jason's (short) unnamed variables
     }
 
     @Override

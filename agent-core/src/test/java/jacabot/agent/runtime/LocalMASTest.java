@@ -128,6 +128,26 @@ class LocalMASTest {
         assertTrue(lines().containsAll(List.of("[w1] w1", "[w2] w2", "[w3] w3", "[solo] solo")), lines().toString());
     }
 
+    /**
+     * Fresh variables of all agents come from one counter, as Jason's: each agent's own unnamed
+     * variables (each instance reads its source) and Jason's 18 in kqmlPlans.asl take numbers first
+     * (18 for a, 2 + 18 for each b), then .relevant_plans' source(_) and the plan's renaming.
+     * Jason 3.2.0 prints the same line.
+     */
+    @Test
+    void freshVariablesAreNumberedAcrossAgentsAsJasonsAre(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("a.asl"), "!s.\n+!s <- .send(b2, tell, v(1)).\n");
+        Files.writeString(dir.resolve("b.asl"), """
+                x(_).
+                +v(X)[source(S)] <- .relevant_plans({+!h(_)}, L); .print(L).
+                +!h(A) <- .print(A).
+                """);
+        Files.writeString(dir.resolve("two.mas2j"), "MAS two { agents: a; b #2; }");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("two.mas2j"));
+        launched.runUntilQuiescent(1000);
+        assertEquals(List.of("[b2] [{ @p__5[source(self),url(\"file:b.asl\")] +!h(_60) <- .print(_60) }]"), lines());
+    }
+
     /** Options beliefs= and goals=, a file named without .asl, and the host after #N (Jason 3.2.0 prints the same lines). */
     @Test
     void mas2jAgentOptionsAddBeliefsAndGoals(@TempDir Path dir) throws Exception {
