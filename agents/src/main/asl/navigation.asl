@@ -68,6 +68,7 @@ storageClearance(0.15) :- not storageRadius(_).
 sightingEvery(400).
 cameraFov(60).
 approachSpeed(40).
+farApproach(0.45).
 homingGiveUp(40000).
 ignoreFor(15000).
 // (issue 13) how long to go on past an obstacle met on the way to a far cylinder, ms
@@ -258,9 +259,9 @@ middlewareClass("jacabot.experiments.NavigationMiddleware").
    area: ignoreCylindersNear). Turn towards it and go closer, steering; the plans above take it
    when it is near. */
 
-+cylinderSighted(Off, _) : not picking & not delivering & not avoiding & reachCylinder(false) & not ignoring & not goingRound
++cylinderSighted(Off, Dist) : not picking & not delivering & not avoiding & reachCylinder(false) & not ignoring & not goingRound
                            & not nearStorage & not insideArea
-    <- .system_time(T); -+lastSighted(T); !home(Off).
+    <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); !home(Off).
 
 +!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
 +!home(_) : homing(T0) & homingGiveUp(G) & .system_time(T) & T - T0 > G & ignoreFor(I)
@@ -275,6 +276,9 @@ middlewareClass("jacabot.experiments.NavigationMiddleware").
 // turn on the spot when it is well to a side, else steer towards it on the way
 +!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).
 +!steerTo(Off) : Off < -12 & maxSpeed(M) <- setSpeeds(-M / 4, M / 4).
+// (issue 13) a cylinder still far (farApproach m or more) is approached at travelSpeed: at the
+// approachSpeed a cylinder 1.5 m away took over a minute
++!steerTo(Off) : sightDistance(D) & farApproach(F) & D >= F & travelSpeed(V) <- setSpeeds(V - 10 + Off, V - 10 - Off).
 +!steerTo(Off) : approachSpeed(V) <- setSpeeds(V + Off, V - Off).
 
 /* Recovery (issue 13): bounded waits, escapes, steering, sweeping */
