@@ -121,6 +121,8 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
 // nothing new)
 +!move(N) : N <= 0.3 & not stale & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; !leg(W).
+// (issue 13) no straight leg right after one cut short over old floor: draw again
++!move(N) : N <= 0.3 & stale <- .random(R); !move(R).
 // (issue 13) just after an obstacle, no turn on the spot: the robot may still touch it at its flank,
 // out of the sensors' sight, and a disc turning on the spot stays in touch; a straight leg leaves
 +!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & Now - T < 2000 & cruiseSpeed(V)
