@@ -167,26 +167,20 @@ final class AstBuilder {
 
     /** {@code B1 ||| B2} and {@code B1 |&| B2} as {@code .fork(or|and, {B1}, {B2})}; a lone operand stays as it is. */
     private List<BodyStep> fork(ForkFormulaContext ctx) {
-        if (ctx.forkAnd().size() == 1) {
-            return forkAnd(ctx.forkAnd(0));
-        }
-        var branches = new ArrayList<Term>();
-        branches.add(Literal.atom("or"));
-        for (ForkAndContext a : ctx.forkAnd()) {
-            branches.add(new BodyTerm(forkAnd(a)));
-        }
-        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
+        return forkStep("or", ctx.forkAnd().stream().map(this::forkAnd).toList(), ctx);
     }
 
     private List<BodyStep> forkAnd(ForkAndContext ctx) {
-        if (ctx.forkOperand().size() == 1) {
-            return forkOperand(ctx.forkOperand(0));
+        return forkStep("and", ctx.forkOperand().stream().map(this::forkOperand).toList(), ctx);
+    }
+
+    private List<BodyStep> forkStep(String kind, List<List<BodyStep>> operands, ParserRuleContext ctx) {
+        if (operands.size() == 1) {
+            return operands.get(0);
         }
         var branches = new ArrayList<Term>();
-        branches.add(Literal.atom("and"));
-        for (ForkOperandContext o : ctx.forkOperand()) {
-            branches.add(new BodyTerm(forkOperand(o)));
-        }
+        branches.add(Literal.atom(kind));
+        operands.forEach(o -> branches.add(new BodyTerm(o)));
         return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
     }
 
