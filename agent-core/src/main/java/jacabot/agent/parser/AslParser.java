@@ -46,14 +46,7 @@ public final class AslParser {
 
     /** {@return the file found in the source path (or as given), or null} */
     public Path locate(String file) {
-        for (Path dir : sourcePath) {
-            Path p = dir.resolve(file);
-            if (java.nio.file.Files.isRegularFile(p)) {
-                return p;
-            }
-        }
-        Path p = Path.of(file);
-        return java.nio.file.Files.isRegularFile(p) ? p : null;
+        return SourceResolver.findFile(file, null, sourcePath);
     }
 
     /** Parses an agent program from a file. */

@@ -33,25 +33,28 @@ public interface SourceResolver {
     static SourceResolver files(List<Path> sourcePath) {
         List<Path> path = List.copyOf(sourcePath);
         return (file, from) -> {
-            var candidates = new ArrayList<Path>();
-            Path p = Path.of(file);
-            if (p.isAbsolute()) {
-                candidates.add(p);
-            } else {
-                if (from != null && from.location() != null) {
-                    candidates.add(Path.of(from.location()).getParent().resolve(file));
-                }
-                path.forEach(d -> candidates.add(d.resolve(file)));
-                candidates.add(p);
-            }
-            for (Path c : candidates) {
-                if (Files.isRegularFile(c)) {
-                    return new Source(c.toString(), Files.readString(c, StandardCharsets.UTF_8),
-                            c.toAbsolutePath().normalize().toString());
-                }
-            }
-            return null;
+            Path dir = from != null && from.location() != null ? Path.of(from.location()).getParent() : null;
+            Path c = findFile(file, dir, path);
+            return c == null ? null
+                    : new Source(c.toString(), Files.readString(c, StandardCharsets.UTF_8), c.toAbsolutePath().normalize().toString());
         };
+    }
+
+    /**
+     * {@return the first regular file that {@code file} names: in {@code dir} (when not null), then on
+     * {@code sourcePath}, then as given (an absolute name only as given); null when there is none}
+     */
+    static Path findFile(String file, Path dir, List<Path> sourcePath) {
+        Path p = Path.of(file);
+        var candidates = new ArrayList<Path>();
+        if (!p.isAbsolute()) {
+            if (dir != null) {
+                candidates.add(dir.resolve(file));
+            }
+            sourcePath.forEach(d -> candidates.add(d.resolve(file)));
+        }
+        candidates.add(p);
+        return candidates.stream().filter(Files::isRegularFile).findFirst().orElse(null);
     }
 
     /**
