@@ -120,21 +120,22 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // spot, not along the listing's arcs (turnLeft/turnRight: one wheel at 20, the other at 50),
 // whose inner flank swept blind into boxes beside the robot (a disc turning on the spot sweeps
 // nothing new)
-+!move(N) : N <= 0.3 & not stale & cruiseSpeed(V) <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; !leg(W).
++!move(N) : N <= 0.3 & not stale <- !straightLeg.
 // (issue 13) no straight leg right after one cut short over old floor: draw again
 +!move(N) : N <= 0.3 & stale <- .random(R); !move(R).
 // (issue 13) just after an obstacle, no turn on the spot: the robot may still touch it at its flank,
 // out of the sensors' sight, and a disc turning on the spot stays in touch; a straight leg leaves
-+!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & Now - T < 2000 & cruiseSpeed(V)
-    <- setSpeeds(V, V); .random(R); W = 5000 + R * 15000; !leg(W).
++!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & Now - T < 2000 <- !straightLeg.
 // (issue 13) replacement of the random left and right turns: the turn towards the floor not yet
 // crossed (exploreTurn, from dead reckoning), then a straight leg
-+!move(N) : N > 0.3 & cruiseSpeed(V) & turnSpeed(S)
++!move(N) : N > 0.3 & turnSpeed(S)
     <- exploreTurn(S, Side, Ms);
        if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
-       -stale; setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
+       -stale; !straightLeg.
 -!move(_) <- println("move failed").
 
+// (issue 13) a straight leg at cruiseSpeed of 5 to 20 s
++!straightLeg : cruiseSpeed(V) <- setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
 // (issue 13) a straight leg of T ms, cut short once it has gone staleLimit ms over floor crossed
 // before (dead reckoning): in a big arena a leg over old ground was time lost for coverage
 +!leg(T) : T <= 0.
