@@ -12,12 +12,13 @@ import java.util.Set;
  */
 final class ExplorationMap {
     static final double CELL = 0.10;
-    /** How far ahead a candidate heading is scored, metres. */
+    /** How far ahead a candidate heading is scored by default, metres. */
     static final double HORIZON = 3.0;
     /** Candidate headings: every 30 degrees around. */
     static final int DIRECTIONS = 12;
 
     private final double speedUnit, axle;
+    private double horizon = HORIZON;
     private double x, z, heading; // metres, metres, radians
     private double left, right;   // wheel speeds in effect, speed units
     private long lastMs = -1;
@@ -36,6 +37,14 @@ final class ExplorationMap {
         this.speedUnit = speedUnit;
         this.axle = axle;
         visit();
+    }
+
+    /** Scores headings over {@code metres} ahead from now on. */
+    void horizon(double metres) {
+        if (!(metres >= CELL)) {
+            throw new IllegalArgumentException("horizon must be at least " + CELL + " m, got " + metres);
+        }
+        horizon = metres;
     }
 
     /** The wheel speeds in effect from {@code nowMs} on: the motion since the last call is integrated first. */
@@ -80,7 +89,7 @@ final class ExplorationMap {
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);
-        for (double d = CELL / 2; d <= HORIZON + 1e-9; d += CELL / 2) {
+        for (double d = CELL / 2; d <= horizon + 1e-9; d += CELL / 2) {
             long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
             if (blocked.contains(k)) {
                 break;

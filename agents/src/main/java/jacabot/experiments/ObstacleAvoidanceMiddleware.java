@@ -78,6 +78,19 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
+     * How far ahead, in metres, {@code exploreTurn} counts the floor not crossed yet (default 3 m).
+     * Fails before {@code odometry} or under 0.1 m.
+     */
+    @jacabot.cartago.OPERATION
+    void exploreHorizon(double metres) {
+        if (map == null || !(metres >= ExplorationMap.CELL)) {
+            failed("exploreHorizon needs odometry(SpeedUnit, AxleLength) first and at least " + ExplorationMap.CELL + " m, got " + metres);
+            return;
+        }
+        map.horizon(metres);
+    }
+
+    /**
      * The turn on the spot towards the most floor not crossed yet (issue 13): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */

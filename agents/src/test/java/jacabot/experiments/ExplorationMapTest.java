@@ -59,6 +59,21 @@ class ExplorationMapTest {
         assertTrue(map.staleMillis(9000) < 1000, "fresh floor behind the start, got " + map.staleMillis(9000));
     }
 
+    @Test
+    void aShortHorizonPrefersNearFreshFloorToFarFreshFloor() {
+        drive(0, 6000, 100);      // 60 cm ahead and back: the near floor ahead is known
+        drive(6000, 12000, -100);
+        map.obstacle(180, 0.75);  // behind: 70 cm of new floor, then an obstacle
+        for (int bearing : new int[] {30, 60, 90, 120, 150}) { // the other headings: obstacles at once
+            map.obstacle(bearing, 0.3);
+            map.obstacle(-bearing, 0.3);
+        }
+        assertEquals(0, map.bestTurn(), 1e-9, "3 m ahead: 2.4 m of new floor beyond the known 60 cm");
+        map.horizon(0.6);
+        assertEquals(180, Math.abs(map.bestTurn()), 1e-9, "within 60 cm only the floor behind is new");
+        assertThrows(IllegalArgumentException.class, () -> map.horizon(0.05));
+    }
+
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
     private void drive(long fromMs, long toMs, double speed) {
         for (long t = fromMs; t <= toMs; t += 40) {
