@@ -10,17 +10,19 @@ import jacabot.sim.world.CylinderSpec;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
-import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.dyn4j.collision.narrowphase.Gjk;
 import org.dyn4j.collision.narrowphase.Raycast;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
-import org.dyn4j.geometry.AABB;
+import org.dyn4j.geometry.Circle;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
 import org.dyn4j.geometry.Ray;
+import org.dyn4j.geometry.Rectangle;
+import org.dyn4j.geometry.Transform;
 import org.dyn4j.geometry.Vector2;
 import org.dyn4j.world.World;
 
@@ -35,11 +37,15 @@ final class Physics {
     /** How far behind its origin a ray starts, in metres. */
     static final double BACKOFF = 0.01;
 
-    /** How much the ray filter grows each bounding box, in metres: far above GJK's tolerance. */
-    private static final double AABB_MARGIN = 1e-3;
+    /**
+     * How far from a rectangle a ray may pass and still get a GJK cast, in metres: GJK answers a hit
+     * once its point on the ray lies within {@code sqrt(DEFAULT_RAYCAST_EPSILON)} (0.12 mm) of a chord
+     * of the rectangle, so a ray that passes farther misses for it too.
+     */
+    private static final double GJK_MARGIN = 1e-3;
 
-    /** Radians added on each side of an object's angle in a fan's broad phase: far above rounding. */
-    private static final double ANGLE_MARGIN = 1e-7;
+    /** How much a fan's broad phase grows each bounding circle, in metres: more than the rectangles' margin. */
+    private static final double REACH_MARGIN = 2 * GJK_MARGIN;
 
     private final World<Body> world = new World<>();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
@@ -154,133 +160,129 @@ final class Physics {
 
     /**
      * Rays start {@link #BACKOFF} behind their origin (inside the robot, which is ignored), so that an
-     * object pressed against the sensor, slightly penetrating, is still seen, at distance 0.
+     * object pressed against the sensor, slightly penetrating, is still seen, at distance 0. The start
+     * and the unit direction are formed as dyn4j's {@code Ray} forms them (cosine and sine, then
+     * normalised), so that the distances are those of its casts to the bit.
      */
-    private static Ray ray(Vec2 origin, double bearingDeg) {
-        double r = Math.toRadians(bearingDeg);
-        return new Ray(new Vector2(origin.x() - BACKOFF * Math.cos(r), origin.z() - BACKOFF * Math.sin(r)), r);
+    private static final class Beam {
+        final double sx, sy, dx, dy, radians;
+        private Ray ray;
+
+        Beam(Vec2 origin, double bearingDeg) {
+            double r = Math.toRadians(bearingDeg);
+            radians = r;
+            double c = Math.cos(r), s = Math.sin(r);
+            sx = origin.x() - BACKOFF * c;
+            sy = origin.z() - BACKOFF * s;
+            double inverse = 1.0 / Math.sqrt(c * c + s * s);
+            dx = c * inverse;
+            dy = s * inverse;
+        }
+
+        /** {@return the same ray for dyn4j} */
+        Ray ray() {
+            if (ray == null) {
+                ray = new Ray(new Vector2(sx, sy), radians);
+            }
+            return ray;
+        }
     }
 
+    /** Every object of the world, in the world's order, the ray meets within range (no broad phase). */
     private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
-        Ray ray = ray(origin, bearingDeg);
-        Raycast raycast = new Raycast();
+        Beam beam = new Beam(origin, bearingDeg);
         List<RayHit> hits = new ArrayList<>(4);
         for (SimObject o : objects.values()) {
             if (o != self && o.carriedBy == null) {
-                cast(o, ray, maxRange, raycast, hits);
+                cast(o, beam, maxRange, hits);
             }
         }
-        hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable: ties keep insertion order
         return hits;
     }
 
-    /** Casts one ray against one object; a hit within range joins {@code hits}. */
-    private void cast(SimObject o, Ray ray, double maxRange, Raycast raycast, List<RayHit> hits) {
-        if (!mayCross(o.bounds(), ray, maxRange + BACKOFF)) {
-            return;
-        }
-        double best = Double.POSITIVE_INFINITY;
-        for (BodyFixture f : o.body.getFixtures()) {
-            raycast.clear();
-            if (world.getRaycastDetector().raycast(ray, maxRange + BACKOFF, f.getShape(), o.body.getTransform(), raycast)
-                    && raycast.getDistance() - BACKOFF < best) {
-                best = Math.max(0, raycast.getDistance() - BACKOFF);
+    /**
+     * Casts one ray against one object; a hit within range joins {@code hits}. A circle is solved in
+     * closed form, to the bit of dyn4j's circle cast. A rectangle keeps dyn4j's GJK answer, worked out
+     * without allocations ({@link BoxGjkCast}): near a corner it can be off the exact distance by
+     * millimetres (GJK stops within its tolerance; see RayShapesTest), and the world's trajectories
+     * depend on it. Only the rays that pass within {@link #GJK_MARGIN} of the rectangle, where GJK
+     * can answer a hit, are cast.
+     */
+    private void cast(SimObject o, Beam beam, double maxRange, List<RayHit> hits) {
+        double length = maxRange + BACKOFF;
+        Transform t = o.body.getTransform();
+        double d;
+        if (o.shape instanceof Circle c) {
+            d = RayShapes.circle(beam.sx, beam.sy, beam.dx, beam.dy, t.getTranslationX(), t.getTranslationY(),
+                    c.getRadius(), length);
+        } else if (o.shape instanceof Rectangle r) {
+            double w = r.getWidth(), h = r.getHeight();
+            if (!RayShapes.boxReach(beam.sx, beam.sy, beam.dx, beam.dy, t.getTranslationX(), t.getTranslationY(),
+                    t.getCost(), t.getSint(), w / 2, h / 2, GJK_MARGIN, length)) {
+                return;
             }
+            if (world.getRaycastDetector() instanceof Gjk gjk) {
+                d = BoxGjkCast.cast(beam.sx, beam.sy, beam.dx, beam.dy, w, h, t.getTranslationX(), t.getTranslationY(),
+                        t.getCost(), t.getSint(), length, gjk.getRaycastEpsilon(), gjk.getMaxRaycastIterations());
+            } else { // another detector: ask it
+                Raycast raycast = new Raycast();
+                d = world.getRaycastDetector().raycast(beam.ray(), length, r, t, raycast) ? raycast.getDistance() : Double.NaN;
+            }
+        } else {
+            throw new IllegalStateException("object '" + o.id + "' is neither a circle nor a rectangle");
         }
-        if (best <= maxRange) {
-            hits.add(new RayHit(best, o.color, o.height, o.id));
+        if (!Double.isNaN(d)) {
+            double best = Math.max(0, d - BACKOFF);
+            if (best <= maxRange) {
+                int at = hits.size();
+                while (at > 0 && hits.get(at - 1).distance() > best) {
+                    at--; // nearest first; a tie goes after the hits already there, in the world's order
+                }
+                hits.add(at, new RayHit(best, o.color, o.height, o.id));
+            }
         }
     }
 
     /**
      * A camera's rays, each with the result {@link #castAll} gives it, with a broad phase shared by
-     * the fan: each object's box (grown by twice the ray filter's margin) is seen from the origin
-     * under an angle, and a ray is tried only against the objects whose angle holds its bearing, in
-     * the world's order. The filter is conservative (every point of a ray lies within
-     * {@code maxRange + BACKOFF} of the origin, and its part behind the origin within {@code BACKOFF}),
-     * so the rays meet the same objects in the same order as one by one: the image is the same, for
-     * about a tenth of the casts (64 columns × every object before).
+     * the fan: the objects out of every ray's reach are dropped once, and each ray tries only the
+     * objects whose bounding circle (grown by {@link #REACH_MARGIN}) it crosses, in the world's order.
+     * The filter is conservative, so the rays meet the same objects in the same order as one by one.
      */
     private List<List<RayHit>> castFan(SimObject self, Vec2 origin, double[] bearingsDeg, double maxRange) {
         int n = bearingsDeg.length;
         double ox = origin.x(), oz = origin.z();
-        double[] bearing = new double[n];
-        for (int k = 0; k < n; k++) {
-            bearing[k] = Math.toRadians(bearingsDeg[k]);
-        }
-        List<List<SimObject>> reach = new ArrayList<>(n);
-        for (int k = 0; k < n; k++) {
-            reach.add(new ArrayList<>());
-        }
-        double grow = 2 * AABB_MARGIN;
+        double length = maxRange + BACKOFF;
+        List<SimObject> near = new ArrayList<>();
+        double[] cx = new double[objects.size()], cz = new double[objects.size()], reach = new double[objects.size()];
         for (SimObject o : objects.values()) {
             if (o == self || o.carriedBy != null) {
                 continue;
             }
-            AABB b = o.bounds();
-            double minX = b.getMinX() - grow, maxX = b.getMaxX() + grow, minZ = b.getMinY() - grow, maxZ = b.getMaxY() + grow;
-            double dx = Math.max(0, Math.max(minX - ox, ox - maxX)), dz = Math.max(0, Math.max(minZ - oz, oz - maxZ));
-            double d = Math.sqrt(dx * dx + dz * dz);
-            if (d > maxRange + BACKOFF) {
-                continue; // out of every ray's reach
+            Transform t = o.body.getTransform();
+            double x = t.getTranslationX(), z = t.getTranslationY(), r = o.boundingRadius + REACH_MARGIN;
+            double ex = x - ox, ez = z - oz;
+            if (Math.sqrt(ex * ex + ez * ez) > length + r) {
+                continue; // every ray's start lies within BACKOFF of the origin, its end within maxRange
             }
-            if (d <= BACKOFF + grow) {
-                reach.forEach(r -> r.add(o)); // at the origin, or behind it within the back-off: every ray
-                continue;
-            }
-            // the origin is outside the box: the directions to it span less than a half turn around its centre's
-            double c = Math.atan2((minZ + maxZ) / 2 - oz, (minX + maxX) / 2 - ox);
-            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
-            for (int corner = 0; corner < 4; corner++) {
-                double a = Math.atan2(((corner & 1) == 0 ? minZ : maxZ) - oz, ((corner & 2) == 0 ? minX : maxX) - ox) - c;
-                a = a > Math.PI ? a - 2 * Math.PI : a < -Math.PI ? a + 2 * Math.PI : a; // within a half turn of c
-                lo = Math.min(lo, a);
-                hi = Math.max(hi, a);
-            }
-            lo -= ANGLE_MARGIN;
-            hi += ANGLE_MARGIN;
-            for (int k = 0; k < n; k++) {
-                double a = bearing[k] - c;
-                a -= 2 * Math.PI * Math.rint(a / (2 * Math.PI)); // about [-pi, pi]; the test below also tries a +- 2 pi
-                if (a >= lo && a <= hi || a + 2 * Math.PI <= hi || a - 2 * Math.PI >= lo) {
-                    reach.get(k).add(o);
-                }
-            }
+            cx[near.size()] = x;
+            cz[near.size()] = z;
+            reach[near.size()] = r;
+            near.add(o);
         }
         List<List<RayHit>> fan = new ArrayList<>(n);
-        Raycast raycast = new Raycast();
         for (int k = 0; k < n; k++) {
-            Ray ray = ray(origin, bearingsDeg[k]);
+            Beam beam = new Beam(origin, bearingsDeg[k]);
             List<RayHit> hits = new ArrayList<>(4);
-            for (SimObject o : reach.get(k)) {
-                cast(o, ray, maxRange, raycast, hits);
+            for (int i = 0; i < near.size(); i++) {
+                double ex = cx[i] - beam.sx, ez = cz[i] - beam.sy;
+                double along = ex * beam.dx + ez * beam.dy, across = ex * beam.dy - ez * beam.dx;
+                if (Math.abs(across) <= reach[i] && along >= -reach[i] && along <= length + reach[i]) {
+                    cast(near.get(i), beam, maxRange, hits);
+                }
             }
-            hits.sort(Comparator.comparingDouble(RayHit::distance)); // stable, as castAll's
             fan.add(hits);
         }
         return fan;
-    }
-
-    /**
-     * The slab test of a ray segment against a box grown by {@link #AABB_MARGIN}: a cheap, conservative
-     * filter (a miss here is a miss for the exact cast), so the casts' results do not change while
-     * most of the GJK casts — each sensor ray against every object — are skipped.
-     */
-    private static boolean mayCross(AABB box, Ray ray, double length) {
-        Vector2 o = ray.getStart(), d = ray.getDirectionVector();
-        double[] t = {0, length};
-        return clip(o.x, d.x, box.getMinX() - AABB_MARGIN, box.getMaxX() + AABB_MARGIN, t)
-                && clip(o.y, d.y, box.getMinY() - AABB_MARGIN, box.getMaxY() + AABB_MARGIN, t);
-    }
-
-    /** Narrows the ray's interval {@code t} to one slab; {@return false when it becomes empty} */
-    private static boolean clip(double start, double dir, double lo, double hi, double[] t) {
-        if (Math.abs(dir) < 1e-12) {
-            return start >= lo && start <= hi;
-        }
-        double t1 = (lo - start) / dir, t2 = (hi - start) / dir;
-        t[0] = Math.max(t[0], Math.min(t1, t2));
-        t[1] = Math.min(t[1], Math.max(t1, t2));
-        return t[0] <= t[1];
     }
 }

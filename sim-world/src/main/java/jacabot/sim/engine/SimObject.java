@@ -4,8 +4,7 @@ import jacabot.sim.geom.Pose;
 import jacabot.sim.geom.Rgb;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
-import org.dyn4j.geometry.AABB;
-import org.dyn4j.geometry.Transform;
+import org.dyn4j.geometry.Convex;
 
 /** One thing of the world and its dyn4j body. Internal. */
 final class SimObject {
@@ -17,8 +16,10 @@ final class SimObject {
     final double sizeX, sizeZ; // full sizes; a cylinder's diameter twice
     final boolean movable;
     String carriedBy; // the robot holding this cylinder, or null
-    private AABB bounds; // cached for the sensors' rays, with the transform it was computed at
-    private double boundsX, boundsY, boundsCos, boundsSin;
+    /** The body's one shape, a circle or a rectangle centred on the body, which the sensors' rays solve in closed form. */
+    final Convex shape;
+    /** The radius of the circle around the body's centre that holds the shape, for the rays' broad phase. */
+    final double boundingRadius;
 
     SimObject(String id, ObjectKind kind, Body body, Rgb color, double height, double sizeX, double sizeZ, boolean movable) {
         this.id = id;
@@ -29,21 +30,9 @@ final class SimObject {
         this.sizeX = sizeX;
         this.sizeZ = sizeZ;
         this.movable = movable;
+        this.shape = body.getFixture(0).getShape();
+        this.boundingRadius = shape.getRadius();
         body.setUserData(this);
-    }
-
-    /** {@return the body's bounding box, recomputed only when the body has moved since the last call} */
-    AABB bounds() {
-        Transform t = body.getTransform();
-        if (bounds == null || t.getTranslationX() != boundsX || t.getTranslationY() != boundsY || t.getCost() != boundsCos
-                || t.getSint() != boundsSin) {
-            bounds = body.createAABB();
-            boundsX = t.getTranslationX();
-            boundsY = t.getTranslationY();
-            boundsCos = t.getCost();
-            boundsSin = t.getSint();
-        }
-        return bounds;
     }
 
     Pose pose() {
