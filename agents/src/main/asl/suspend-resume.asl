@@ -65,6 +65,8 @@ stuckWindows(14000, 0.03, 40000, 0.12).
 steerEvery(2500).
 detours(0).
 searchAfter(45000).
+// (issue 13) while sweeping, a look around this often, ms
+lookEvery(25000).
 // lanes this far apart: the camera sees a cylinder up to about 1.5 m ahead within 30 degrees
 // either side, so wider lanes leave no floor unseen, and the battery (1000 J, about 17 m of travel
 // at full speed) no longer runs out on a third of a big arena (generated worlds: navigation
@@ -113,7 +115,7 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
     <- deltaBased(false);
        ?stuckWindows(T1, R1, T2, R2); progressWindows(T1, R1, T2, R2);
        ?lowBatteryLevel(L); ?chargedLevel(C); batteryLevels(L, C);
-       .system_time(Now); +lastFound(Now); !!searchClock;
+       .system_time(Now); +lastFound(Now); +lastLook(Now); !!searchClock;
        ?storagePoint(X, Z); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z);
        ?sightingEvery(E); ?cameraFov(F); scanForCylinders(E, F); ?storageClearance(SC); ignoreCylindersNear(X, Z, SC);
        -+reachCylinder(false);
@@ -389,7 +391,11 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     <- !nextWaypoint; !lookAround.
 // (issue 13) a full turn on the spot, slowly enough for the camera's sightings: the far sight
 // plans take any cylinder it shows (a sighting ends the move, and this turn with it)
-+!lookAround : maxSpeed(M) <- setSpeeds(-M / 2, M / 2); .wait(6800); stop.
++!lookAround : maxSpeed(M) <- .system_time(T); -+lastLook(T); setSpeeds(-M / 2, M / 2); .wait(6800); stop.
+// (issue 13) while sweeping, also a look around every lookEvery ms: the camera sees a cylinder up
+// to 1.5 m away but only 30 degrees either side, and a lane passed cylinders just out of its sight
+// for minutes (generated worlds: suspend/resume 131 -> 139 of 150, held out 123 -> 139)
++!sweepStep : lookEvery(L) & lastLook(T0) & .system_time(T) & T - T0 > L <- !lookAround.
 // (issue 13) a waypoint is skipped once the robot has come no closer to it by waypointProgress m
 // for waypointPatience ms (the thesis has no sweep; a fixed 60 s per waypoint left the robot
 // half a minute among boxes in front of a waypoint it could not reach, as in gradle run's story;
