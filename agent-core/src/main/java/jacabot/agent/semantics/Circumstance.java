@@ -32,7 +32,8 @@ public final class Circumstance {
     private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
     private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
     private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
-    private final List<CircumstanceListener> listeners = new ArrayList<>();
+    /** Replaced, not changed, when a listener comes or goes: a listener may remove itself while notified, and tools attach from their own threads. */
+    private volatile CircumstanceListener[] listeners = new CircumstanceListener[0];
 
     private Event selectedEvent;
     private Intention selectedIntention;
@@ -47,10 +48,8 @@ public final class Circumstance {
         } else {
             events.add(e);
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.eventAdded(e);
-            }
+        for (CircumstanceListener l : listeners) {
+            l.eventAdded(e);
         }
     }
 
@@ -64,10 +63,8 @@ public final class Circumstance {
         for (int k = rest.size() - 1; k >= 0; k--) {
             events.addFirst(rest.get(k));
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.eventAdded(e);
-            }
+        for (CircumstanceListener l : listeners) {
+            l.eventAdded(e);
         }
     }
 
@@ -130,10 +127,8 @@ public final class Circumstance {
         } else {
             running.offer(i);
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.intentionAdded(i);
-            }
+        for (CircumstanceListener l : listeners) {
+            l.intentionAdded(i);
         }
     }
 
@@ -345,15 +340,24 @@ public final class Circumstance {
     // ---- listeners ----------------------------------------------------------------------------------
 
     public void addListener(CircumstanceListener l) {
-        listeners.add(l);
+        listeners = java.util.Arrays.copyOf(listeners, listeners.length + 1);
+        listeners[listeners.length - 1] = l;
     }
 
     public void removeListener(CircumstanceListener l) {
-        listeners.remove(l);
+        for (int k = 0; k < listeners.length; k++) {
+            if (listeners[k].equals(l)) {
+                var rest = new CircumstanceListener[listeners.length - 1];
+                System.arraycopy(listeners, 0, rest, 0, k);
+                System.arraycopy(listeners, k + 1, rest, k, rest.length - k);
+                listeners = rest;
+                return;
+            }
+        }
     }
 
     void notifyDropped(Intention i) {
-        for (CircumstanceListener l : List.copyOf(listeners)) {
+        for (CircumstanceListener l : listeners) {
             l.intentionDropped(i);
         }
     }

@@ -193,7 +193,9 @@ final class ReasoningCycle {
         if (top != null && top.trigger().isAddition() && im.trigger().isAddition()
                 && top.trigger().isGoal() && im.trigger().isGoal() && top.isLastStep()
                 && samePredicate(top.trigger(), im.trigger())) {
-            ag.goalStates().finished(GoalStates.of(top), GoalStates.State.achieved);
+            if (ag.goalStates().listening()) {
+                ag.goalStates().finished(GoalStates.of(top), GoalStates.State.achieved);
+            }
             i.pop();
             IntendedMeans base = i.peek();
             if (base != null && base.renamedVars() != null) {
@@ -321,7 +323,7 @@ final class ReasoningCycle {
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
-            if (topTrigger.isGoal()) {
+            if (topTrigger.isGoal() && ag.goalStates().listening()) {
                 ag.goalStates().finished(GoalStates.of(topIM), GoalStates.State.achieved);
             }
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
