@@ -86,13 +86,23 @@ final class MessageHandler {
             Literal.of("kqml_received", new jacabot.agent.syntax.Var("S"), new jacabot.agent.syntax.Var("P"),
                     new jacabot.agent.syntax.Var("C"), new jacabot.agent.syntax.Var("M")));
 
+    /** The plan library's version when {@link #ownKqmlPlans} was found (each message asks). */
+    private int kqmlPlansChecked = -1;
+    private boolean ownKqmlPlans;
+
     private boolean hasOwnKqmlPlans() {
-        for (Plan p : ag.planLibrary().candidates(KQML_RECEIVED)) {
-            if (!ag.planLibrary().isKqmlPlan(p)) {
-                return true;
+        PlanLibrary pl = ag.planLibrary();
+        if (kqmlPlansChecked != pl.version()) {
+            ownKqmlPlans = false;
+            for (Plan p : pl.candidates(KQML_RECEIVED)) {
+                if (!pl.isKqmlPlan(p)) {
+                    ownKqmlPlans = true;
+                    break;
+                }
             }
+            kqmlPlansChecked = pl.version();
         }
-        return false;
+        return ownKqmlPlans;
     }
 
     /**

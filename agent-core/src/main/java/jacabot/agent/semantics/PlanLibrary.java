@@ -19,6 +19,7 @@ public final class PlanLibrary {
     private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
+    private int version;
 
     /** A trigger's kind and predicate (equality written out: it is looked up for every event). */
     private static final class CandidateKey {
@@ -71,7 +72,7 @@ public final class PlanLibrary {
             label = label.addAnnot(Literal.SOURCE_SELF);
         }
         Plan named = p.withLabel(label);
-        candidateCache.clear();
+        changed();
         goalStatePlans |= p.trigger().op() == Trigger.Op.GOAL_STATE;
         jagPlans |= p.trigger().literal() instanceof Literal l && l.functor().startsWith("jag_");
         if (atBeginning) {
@@ -94,7 +95,7 @@ public final class PlanLibrary {
             if (samePlan(known, p)) {
                 Plan more = known.withLabel(known.label().addAnnot(s));
                 plans.set(i, more);
-                candidateCache.clear();
+                changed();
                 return more;
             }
         }
@@ -128,7 +129,7 @@ public final class PlanLibrary {
     }
 
     public boolean remove(String label) {
-        candidateCache.clear();
+        changed();
         return plans.removeIf(p -> p.label().functor().equals(label));
     }
 
@@ -146,12 +147,23 @@ public final class PlanLibrary {
             Literal rest = p.label().withAnnots(p.label().annots().stream().filter(a -> !a.equals(s)).toList());
             if (rest.hasSource()) {
                 plans.set(plans.indexOf(p), p.withLabel(rest));
-                candidateCache.clear();
+                changed();
             } else {
                 remove(label);
             }
         }
         return true;
+    }
+
+    /** The library changed: cached candidates go, and what callers derived from them is stale. */
+    private void changed() {
+        candidateCache.clear();
+        version++;
+    }
+
+    /** {@return a number that changes whenever the plans change} */
+    int version() {
+        return version;
     }
 
     /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */
@@ -186,12 +198,17 @@ public final class PlanLibrary {
     /** Sets the plans that handle messages when the agent's own plans do not ({@code +!kqml_received}). */
     void setKqmlPlans(List<Plan> ps) {
         kqmlPlans = List.copyOf(ps);
-        candidateCache.clear();
+        changed();
     }
 
     /** {@return whether p is one of the library's built-in message plans} */
     public boolean isKqmlPlan(Plan p) {
-        return kqmlPlans.stream().anyMatch(k -> k == p);
+        for (int i = 0, n = kqmlPlans.size(); i < n; i++) {
+            if (kqmlPlans.get(i) == p) {
+                return true;
+            }
+        }
+        return false;
     }
 
     public boolean hasCandidate(Trigger te) {
