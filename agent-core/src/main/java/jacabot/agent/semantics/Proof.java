@@ -10,7 +10,6 @@ import jacabot.agent.syntax.RelExpr;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.Iterator;
@@ -126,16 +125,18 @@ final class Proof {
      */
     private Object[] answer() {
         if (formulaVars == null) {
-            var vars = new ArrayList<Var>();
+            var vars = new java.util.LinkedHashSet<Var>();
             formula.collectVars(vars::add);
-            formulaVars = vars;
+            formulaVars = List.copyOf(vars);
         }
-        var pairs = new ArrayList<Object>();
-        // in the formula's order, then in the order the values name them
-        var seen = new HashSet<Var>(formulaVars);
-        var todo = new ArrayDeque<Var>(formulaVars);
-        while (!todo.isEmpty()) {
-            Var v = todo.poll();
+        // in the formula's order, then in the order the values name them; the queue is also the
+        // set of variables seen, searched in place while it is as short as a formula's
+        var queue = new ArrayList<Var>(formulaVars);
+        HashSet<Var> seen = null;
+        Object[] pairs = new Object[2 * queue.size()];
+        int n = 0;
+        for (int k = 0; k < queue.size(); k++) {
+            Var v = queue.get(k);
             Term b = w.binding(v);
             if (b == null) {
                 continue;
@@ -143,22 +144,34 @@ final class Proof {
             Term value = b;
             if (w.boundSince(v, base)) {
                 value = w.deref(b);
-                pairs.add(v);
-                pairs.add(value);
+                if (n == pairs.length) {
+                    pairs = java.util.Arrays.copyOf(pairs, 2 * n + 2);
+                }
+                pairs[n++] = v;
+                pairs[n++] = value;
             }
             if (value instanceof Var x) {
-                if (seen.add(x)) {
-                    todo.add(x);
-                }
+                seen = enqueue(x, queue, seen);
             } else if (!value.isGround()) {
-                value.collectVars(x -> {
-                    if (seen.add(x)) {
-                        todo.add(x);
-                    }
-                });
+                var found = new ArrayList<Var>();
+                value.collectVars(found::add);
+                for (Var x : found) {
+                    seen = enqueue(x, queue, seen);
+                }
             }
         }
-        return pairs.toArray();
+        return n == pairs.length ? pairs : java.util.Arrays.copyOf(pairs, n);
+    }
+
+    /** Queues a variable not seen yet. {@return the set of those seen, once the queue is long} */
+    private static HashSet<Var> enqueue(Var x, ArrayList<Var> queue, HashSet<Var> seen) {
+        if (seen == null && queue.size() > 16) {
+            seen = new HashSet<>(queue);
+        }
+        if (seen != null ? seen.add(x) : !queue.contains(x)) {
+            queue.add(x);
+        }
+        return seen;
     }
 
     private boolean run() {
