@@ -440,7 +440,8 @@ public final class Agent {
                 return removed;
             }
         }
-        for (BeliefBase.Entry e : beliefBase.candidates(q)) {
+        // the loop ends before the belief base changes, so it may go through the entries as they are
+        for (BeliefBase.Entry e : q.ns() instanceof Var ? beliefBase.candidates(q) : beliefBase.current(q)) {
             if (e.rule() != null) {
                 continue;
             }

@@ -134,7 +134,8 @@ public final class BeliefBase {
 
         List<Entry> snapshot() {
             if (snapshot == null) {
-                snapshot = List.copyOf(entries);
+                // a group of one (a counter, a state) without the array List.copyOf makes
+                snapshot = entries.size() == 1 ? List.of(entries.peekFirst()) : List.copyOf(entries);
                 byFirst = null;
                 queriesUnchanged = 0;
             }
@@ -262,6 +263,16 @@ public final class BeliefBase {
         }
         Object key = first == null ? null : key(first, numberProbe);
         return key == null ? g.snapshot() : g.candidates(key);
+    }
+
+    /**
+     * {@return the entries of the literal's predicate as they are, not a snapshot} For a caller
+     * that stops iterating before it changes the belief base ({@code -b(X)} removes the first
+     * match): a snapshot would copy a group that changes at every turn of a {@code -+b} loop.
+     */
+    Iterable<Entry> current(Literal l) {
+        Group g = group(l);
+        return g == null ? List.of() : g.entries;
     }
 
     /**

@@ -125,9 +125,7 @@ final class Proof {
      */
     private Object[] answer() {
         if (formulaVars == null) {
-            var vars = new java.util.LinkedHashSet<Var>();
-            formula.collectVars(vars::add);
-            formulaVars = List.copyOf(vars);
+            formulaVars = solver.varsOf(formula);
         }
         // in the formula's order, then in the order the values name them; the queue is also the
         // set of variables seen, searched in place while it is as short as a formula's

@@ -76,6 +76,25 @@ public final class Solver {
         }
     }
 
+    /** A formula and its distinct variables. */
+    private record FormulaVars(Term formula, List<Var> vars) {
+    }
+
+    /** The last formula whose variables were asked (a loop asks for its condition's at every turn), in one field: other threads may ask too. */
+    private FormulaVars lastVars = new FormulaVars(null, List.of());
+
+    /** {@return the distinct variables of a formula, in order of first occurrence} */
+    List<Var> varsOf(Term formula) {
+        FormulaVars last = lastVars;
+        if (last.formula() != formula) {
+            var vars = new java.util.LinkedHashSet<Var>();
+            formula.collectVars(vars::add);
+            last = new FormulaVars(formula, List.copyOf(vars));
+            lastVars = last;
+        }
+        return last.vars();
+    }
+
     // ---- what a proof asks of the agent ----------------------------------------------------------
 
     /** {@return the beliefs and rules that may match a literal, in order} */
