@@ -85,12 +85,7 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
-        circumstance.addListener(new CircumstanceListener() {
-            @Override
-            public void eventAdded(Event e) {
-                goalStates.eventAdded(e);
-            }
-        });
+        circumstance.own(goalStates, planLibrary::hasCandidate);
     }
 
     /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */

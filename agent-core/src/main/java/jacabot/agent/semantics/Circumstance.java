@@ -32,8 +32,13 @@ public final class Circumstance {
     private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
     private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
     private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
-    /** Replaced, not changed, when a listener comes or goes: a listener may remove itself while notified, and tools attach from their own threads. */
+    /**
+     * Replaced, not changed, when a listener comes or goes: a listener may remove itself while
+     * notified, and tools attach from their own threads.
+     */
     private volatile CircumstanceListener[] listeners = new CircumstanceListener[0];
+    private GoalStates goalStates;
+    private java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant;
 
     private Event selectedEvent;
     private Intention selectedIntention;
@@ -42,11 +47,30 @@ public final class Circumstance {
 
     // ---- events (E) -----------------------------------------------------------------------------
 
+    /**
+     * The agent's own: its goal states hear of every event (not a listener in Jason's sense), and
+     * its plan library tells whether a plan is relevant for an event.
+     */
+    void own(GoalStates goalStates, java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant) {
+        this.goalStates = goalStates;
+        this.relevant = relevant;
+    }
+
     public void addEvent(Event e) {
+        // as Jason's updateEvents: an external belief event no plan is relevant for is not kept,
+        // unless something listens to events (a .wait, an inspector); a message told or a -+b
+        // then costs no event to select and discard
+        if (e.intention() == null && e.trigger().type() == jacabot.agent.syntax.Trigger.Type.BELIEF
+                && relevant != null && listeners.length == 0 && !relevant.test(e.trigger())) {
+            return;
+        }
         if (e.isAtomic()) {
             atomicEvent = e;
         } else {
             events.add(e);
+        }
+        if (goalStates != null) {
+            goalStates.eventAdded(e);
         }
         for (CircumstanceListener l : listeners) {
             l.eventAdded(e);
@@ -62,6 +86,9 @@ public final class Circumstance {
         rest.add(e);
         for (int k = rest.size() - 1; k >= 0; k--) {
             events.addFirst(rest.get(k));
+        }
+        if (goalStates != null) {
+            goalStates.eventAdded(e);
         }
         for (CircumstanceListener l : listeners) {
             l.eventAdded(e);
