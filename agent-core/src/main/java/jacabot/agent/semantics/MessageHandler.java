@@ -128,10 +128,22 @@ final class MessageHandler {
     private void perform(String sender, String performative, Term content, String msgId) {
         Circumstance c = ag.circumstance();
         String replyTo = sender.equals("self") ? ag.name() : sender;
-        Literal source = sources.computeIfAbsent(sender, x -> Literal.of("source", Literal.atom(x)));
+        Literal source = sources.get(sender);
+        if (source == null) {
+            source = Literal.of("source", Literal.atom(sender));
+            sources.put(sender, source);
+        }
         var m = new Message(msgId, replyTo, ag.name(), performative, content, null);
         switch (m.performative()) {
             case "tell":
+                if (content instanceof Literal l) {
+                    // the usual tell, one literal
+                    Literal added = ag.addBelief(nested(l, source), false);
+                    if (added != null) {
+                        c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                    }
+                    break;
+                }
                 for (Literal l : literals(content)) {
                     Literal added = ag.addBelief(nested(l, source), false);
                     if (added != null) {
@@ -205,6 +217,9 @@ final class MessageHandler {
      * {@code b[source(c)]} from a becomes {@code b[source(a)[source(c)]]}.
      */
     static Literal nested(Literal l, Literal source) {
+        if (l.annots().isEmpty()) {
+            return l.addAnnot(source);
+        }
         var sources = new ArrayList<Term>();
         var others = new ArrayList<Term>();
         for (Term a : l.annots()) {
