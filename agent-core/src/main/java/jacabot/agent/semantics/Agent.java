@@ -370,7 +370,12 @@ public final class Agent {
     }
 
     public String nextMessageId() {
-        return "mid" + (++messageSerial);
+        return Message.idOf(nextMessageSerial());
+    }
+
+    /** {@return the number of the agent's next message, whose id is {@code mid}N} */
+    public int nextMessageSerial() {
+        return ++messageSerial;
     }
 
     /** {@return a unifier that evaluates this agent's arithmetic functions} */
