@@ -107,6 +107,32 @@ public final class BeliefBase {
     }
 
     /**
+     * A fact's arguments as a key, with their hash mixed: a whole number's hash (a double's) has
+     * its low bits zero, so the 20 000 facts n(N) a receiver is told filled a few buckets (turned
+     * into trees) of the list-hashed map.
+     */
+    private static final class Args {
+        private List<Term> args;
+        private int hash;
+
+        Args set(List<Term> a) {
+            args = a;
+            hash = (int) ((a.hashCode() * 0x9E3779B97F4A7C15L) >>> 32);
+            return this;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Args x && x.args.equals(args);
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
+    }
+
+    /**
      * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
      * snapshot reused by queries until the group changes, and an index by first argument built
      * once a large group is queried often enough unchanged.
@@ -124,7 +150,13 @@ public final class BeliefBase {
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
-        private final HashMap<List<Term>, Entry> facts = new HashMap<>();
+        private final HashMap<Args, Entry> facts = new HashMap<>();
+        /** The lookup key of {@link #facts} (the belief base is used by its agent's thread only). */
+        private final Args probe = new Args();
+
+        Entry fact(List<Term> args) {
+            return facts.get(probe.set(args));
+        }
 
         /** The entries by first argument, each list with the unkeyed entries in their places. */
         private HashMap<Object, List<Entry>> byFirst;
@@ -189,7 +221,7 @@ public final class BeliefBase {
             snapshot = null;
             entries.removeFirstOccurrence(e);
             if (e.rule == null) {
-                facts.remove(e.literal.args());
+                facts.remove(probe.set(e.literal.args()));
             }
         }
     }
@@ -323,7 +355,7 @@ public final class BeliefBase {
         if (g == null) {
             return null;
         }
-        Entry e = g.facts.get(l.args());
+        Entry e = g.fact(l.args());
         return e == null ? null : e.literal;
     }
 
@@ -349,12 +381,12 @@ public final class BeliefBase {
      */
     public Literal add(Literal l, boolean atEnd) {
         var group = groupFor(l);
-        Entry known = group.facts.get(l.args());
+        Entry known = group.fact(l.args());
         if (known != null) {
             return merge(known, l);
         }
         Entry e = new Entry(l);
-        group.facts.put(l.args(), e);
+        group.facts.put(new Args().set(l.args()), e);
         group.add(e, atEnd);
         size++;
         return l;
@@ -436,7 +468,7 @@ public final class BeliefBase {
         if (group == null) {
             return null;
         }
-        Entry e = group.facts.get(stored.args());
+        Entry e = group.fact(stored.args());
         if (e == null || (e.literal != stored && !e.literal.equals(stored))) {
             return null;
         }
@@ -453,7 +485,7 @@ public final class BeliefBase {
         if (group == null) {
             return null;
         }
-        Entry e = group.facts.get(removal.args());
+        Entry e = group.fact(removal.args());
         if (e == null || !containsAll(e.literal.annots(), removal.annots())) {
             return null;
         }
