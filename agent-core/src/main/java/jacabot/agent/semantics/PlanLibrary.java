@@ -40,6 +40,12 @@ public final class PlanLibrary {
             this.negated = negated;
         }
 
+        /** {@return whether this is the key of a trigger with this kind and literal} */
+        boolean matches(Trigger.Op o, Trigger.Type t, Literal l) {
+            return o == op && t == type && l.arity() == arity && l.negated() == negated && l.functor().equals(functor)
+                    && java.util.Objects.equals(l.ns(), ns);
+        }
+
         @Override
         public boolean equals(Object o) {
             return o instanceof CandidateKey k && k.op == op && k.type == type && k.arity == arity
@@ -158,6 +164,7 @@ public final class PlanLibrary {
     /** The library changed: cached candidates go, and what callers derived from them is stale. */
     private void changed() {
         candidateCache.clear();
+        last = null;
         version++;
     }
 
@@ -171,14 +178,26 @@ public final class PlanLibrary {
         if (!(te.literal() instanceof Literal l)) {
             return scan(te);
         }
+        Last last = this.last;
+        if (last != null && last.key.matches(te.op(), te.type(), l)) {
+            return last.plans;
+        }
         var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated(), l.ns());
         List<Plan> cached = candidateCache.get(key);
         if (cached == null) {
             cached = List.copyOf(scan(te));
             candidateCache.put(key, cached);
         }
+        this.last = new Last(key, cached);
         return cached;
     }
+
+    /** The last trigger's candidates: a loop of subgoals or a stream of messages asks for the same ones every cycle. */
+    private record Last(CandidateKey key, List<Plan> plans) {
+    }
+
+    /** One field, so that a look from another thread sees a key with its own plans. */
+    private Last last;
 
     private List<Plan> scan(Trigger te) {
         var out = new ArrayList<Plan>();
