@@ -247,7 +247,9 @@ public final class BeliefBase {
     private Group groupFor(Literal l) {
         Group g = group(l);
         if (g == null) {
-            knownNs.add(l.nsTerm());
+            if (l.ns() != null) {
+                knownNs.add(l.ns()); // the default namespace is there from the start
+            }
             g = spare == null ? new Group() : spare;
             spare = null;
             if (g.key == null || !g.key.equals(probe)) {
