@@ -165,6 +165,7 @@ public final class PlanLibrary {
     private void changed() {
         candidateCache.clear();
         last = null;
+        before = null;
         version++;
     }
 
@@ -182,22 +183,33 @@ public final class PlanLibrary {
         if (last != null && last.key.matches(te.op(), te.type(), l)) {
             return last.plans;
         }
+        Last before = this.before;
+        if (before != null && before.key.matches(te.op(), te.type(), l)) {
+            this.before = last;
+            this.last = before;
+            return before.plans;
+        }
         var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated(), l.ns());
         List<Plan> cached = candidateCache.get(key);
         if (cached == null) {
             cached = List.copyOf(scan(te));
             candidateCache.put(key, cached);
         }
+        this.before = last;
         this.last = new Last(key, cached);
         return cached;
     }
 
-    /** The last trigger's candidates: a loop of subgoals or a stream of messages asks for the same ones every cycle. */
+    /**
+     * The last two triggers' candidates: a loop of subgoals or a stream of messages asks for the
+     * same ones every cycle (a -+b loop for those of -b and +b in turn).
+     */
     private record Last(CandidateKey key, List<Plan> plans) {
     }
 
-    /** One field, so that a look from another thread sees a key with its own plans. */
+    /** A key with its own plans in each field, so that a look from another thread sees a pair that belongs together. */
     private Last last;
+    private Last before;
 
     private List<Plan> scan(Trigger te) {
         var out = new ArrayList<Plan>();

@@ -127,14 +127,15 @@ final class Proof {
         if (formulaVars == null) {
             formulaVars = solver.varsOf(formula);
         }
-        // in the formula's order, then in the order the values name them; the queue is also the
-        // set of variables seen, searched in place while it is as short as a formula's
-        var queue = new ArrayList<Var>(formulaVars);
+        // in the formula's order, then in the order the values name them ("more", made only when
+        // a value names variables)
+        List<Var> vars = formulaVars;
+        ArrayList<Var> more = null;
         HashSet<Var> seen = null;
-        Object[] pairs = new Object[2 * queue.size()];
+        Object[] pairs = new Object[2 * vars.size()];
         int n = 0;
-        for (int k = 0; k < queue.size(); k++) {
-            Var v = queue.get(k);
+        for (int k = 0; k < vars.size() + (more == null ? 0 : more.size()); k++) {
+            Var v = k < vars.size() ? vars.get(k) : more.get(k - vars.size());
             Term b = w.binding(v);
             if (b == null) {
                 continue;
@@ -149,25 +150,35 @@ final class Proof {
                 pairs[n++] = value;
             }
             if (value instanceof Var x) {
-                seen = enqueue(x, queue, seen);
+                if (more == null) {
+                    more = new ArrayList<>();
+                }
+                seen = enqueue(x, vars, more, seen);
             } else if (!value.isGround()) {
                 var found = new ArrayList<Var>();
                 value.collectVars(found::add);
+                if (more == null) {
+                    more = new ArrayList<>();
+                }
                 for (Var x : found) {
-                    seen = enqueue(x, queue, seen);
+                    seen = enqueue(x, vars, more, seen);
                 }
             }
         }
         return n == pairs.length ? pairs : java.util.Arrays.copyOf(pairs, n);
     }
 
-    /** Queues a variable not seen yet. {@return the set of those seen, once the queue is long} */
-    private static HashSet<Var> enqueue(Var x, ArrayList<Var> queue, HashSet<Var> seen) {
-        if (seen == null && queue.size() > 16) {
-            seen = new HashSet<>(queue);
+    /**
+     * Queues a variable not seen yet (neither the formula's nor queued). {@return the set of those
+     * seen, made once the queue is long}
+     */
+    private static HashSet<Var> enqueue(Var x, List<Var> vars, ArrayList<Var> more, HashSet<Var> seen) {
+        if (seen == null && vars.size() + more.size() > 16) {
+            seen = new HashSet<>(vars);
+            seen.addAll(more);
         }
-        if (seen != null ? seen.add(x) : !queue.contains(x)) {
-            queue.add(x);
+        if (seen != null ? seen.add(x) : !vars.contains(x) && !more.contains(x)) {
+            more.add(x);
         }
         return seen;
     }

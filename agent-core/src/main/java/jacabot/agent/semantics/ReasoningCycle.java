@@ -110,7 +110,9 @@ final class ReasoningCycle {
         // a message no plan of the agent's own handles gets the default handling (Jason's kqmlPlans)
         boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
                 && se.trigger().literal() instanceof Literal l && l.arity() == 4 && l.functor().equals("kqml_received");
-        for (Plan p : ag.planLibrary().candidates(se.trigger())) {
+        List<Plan> candidates = ag.planLibrary().candidates(se.trigger());
+        for (int k = 0, n = candidates.size(); k < n; k++) {
+            Plan p = candidates.get(k);
             if (message && ag.planLibrary().isKqmlPlan(p)) {
                 message = false;
                 if (messages.handleByDefault((Literal) se.trigger().literal())) {
