@@ -205,7 +205,11 @@ final class BodyExecutor {
     private void delBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
         boolean sameFocus = kind != BodyStep.Kind.DEL_BEL_NEW_FOCUS;
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
-        Literal removed = ag.removeBelief(body, ag.newUnifier());
+        // the usual -b(1) is found by its arguments, without a unifier to try candidates with
+        Literal removed = body.isGround() ? ag.beliefBase().removeFact(body) : null;
+        if (removed == null) {
+            removed = ag.removeBelief(body, ag.newUnifier());
+        }
         if (removed != null) {
             // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
             im.unifier().unifies(term, removed);

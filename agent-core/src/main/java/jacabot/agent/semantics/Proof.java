@@ -112,6 +112,11 @@ final class Proof {
         w.rebind(answer);
     }
 
+    /** Gives {@code into} the current solution: the first bindings and the answer. */
+    void solutionInto(Unifier into) {
+        into.setFromPrefix(w, base, answer());
+    }
+
     /** {@return the current solution as a new unifier: the first bindings and the answer} */
     Unifier solution() {
         return w.prefixWith(base, answer());
