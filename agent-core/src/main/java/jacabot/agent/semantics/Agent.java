@@ -85,12 +85,7 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
-        circumstance.addListener(new CircumstanceListener() {
-            @Override
-            public void eventAdded(Event e) {
-                goalStates.eventAdded(e);
-            }
-        });
+        circumstance.own(goalStates, planLibrary::hasCandidate);
     }
 
     /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */
@@ -375,7 +370,12 @@ public final class Agent {
     }
 
     public String nextMessageId() {
-        return "mid" + (++messageSerial);
+        return Message.idOf(nextMessageSerial());
+    }
+
+    /** {@return the number of the agent's next message, whose id is {@code mid}N} */
+    public int nextMessageSerial() {
+        return ++messageSerial;
     }
 
     /** {@return a unifier that evaluates this agent's arithmetic functions} */
@@ -440,7 +440,8 @@ public final class Agent {
                 return removed;
             }
         }
-        for (BeliefBase.Entry e : beliefBase.candidates(q)) {
+        // the loop ends before the belief base changes, so it may go through the entries as they are
+        for (BeliefBase.Entry e : q.ns() instanceof Var ? beliefBase.candidates(q) : beliefBase.current(q)) {
             if (e.rule() != null) {
                 continue;
             }

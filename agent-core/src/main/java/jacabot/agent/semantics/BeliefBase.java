@@ -107,6 +107,32 @@ public final class BeliefBase {
     }
 
     /**
+     * A fact's arguments as a key, with their hash mixed: a whole number's hash (a double's) has
+     * its low bits zero, so the 20 000 facts n(N) a receiver is told filled a few buckets (turned
+     * into trees) of the list-hashed map.
+     */
+    private static final class Args {
+        private List<Term> args;
+        private int hash;
+
+        Args set(List<Term> a) {
+            args = a;
+            hash = (int) ((a.hashCode() * 0x9E3779B97F4A7C15L) >>> 32);
+            return this;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Args x && x.args.equals(args);
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
+    }
+
+    /**
      * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
      * snapshot reused by queries until the group changes, and an index by first argument built
      * once a large group is queried often enough unchanged.
@@ -124,7 +150,13 @@ public final class BeliefBase {
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
-        private final HashMap<List<Term>, Entry> facts = new HashMap<>();
+        private final HashMap<Args, Entry> facts = new HashMap<>();
+        /** The lookup key of {@link #facts} (the belief base is used by its agent's thread only). */
+        private final Args probe = new Args();
+
+        Entry fact(List<Term> args) {
+            return facts.get(probe.set(args));
+        }
 
         /** The entries by first argument, each list with the unkeyed entries in their places. */
         private HashMap<Object, List<Entry>> byFirst;
@@ -134,7 +166,8 @@ public final class BeliefBase {
 
         List<Entry> snapshot() {
             if (snapshot == null) {
-                snapshot = List.copyOf(entries);
+                // a group of one (a counter, a state) without the array List.copyOf makes
+                snapshot = entries.size() == 1 ? List.of(entries.peekFirst()) : List.copyOf(entries);
                 byFirst = null;
                 queriesUnchanged = 0;
             }
@@ -188,7 +221,7 @@ public final class BeliefBase {
             snapshot = null;
             entries.removeFirstOccurrence(e);
             if (e.rule == null) {
-                facts.remove(e.literal.args());
+                facts.remove(probe.set(e.literal.args()));
             }
         }
     }
@@ -214,7 +247,9 @@ public final class BeliefBase {
     private Group groupFor(Literal l) {
         Group g = group(l);
         if (g == null) {
-            knownNs.add(l.nsTerm());
+            if (l.ns() != null) {
+                knownNs.add(l.ns()); // the default namespace is there from the start
+            }
             g = spare == null ? new Group() : spare;
             spare = null;
             if (g.key == null || !g.key.equals(probe)) {
@@ -265,6 +300,16 @@ public final class BeliefBase {
     }
 
     /**
+     * {@return the entries of the literal's predicate as they are, not a snapshot} For a caller
+     * that stops iterating before it changes the belief base ({@code -b(X)} removes the first
+     * match): a snapshot would copy a group that changes at every turn of a {@code -+b} loop.
+     */
+    Iterable<Entry> current(Literal l) {
+        Group g = group(l);
+        return g == null ? List.of() : g.entries;
+    }
+
+    /**
      * {@return the argument when it is a constant that unifies only with itself (an atom without
      * annotations, a number, a string), or null}
      */
@@ -312,7 +357,7 @@ public final class BeliefBase {
         if (g == null) {
             return null;
         }
-        Entry e = g.facts.get(l.args());
+        Entry e = g.fact(l.args());
         return e == null ? null : e.literal;
     }
 
@@ -338,22 +383,82 @@ public final class BeliefBase {
      */
     public Literal add(Literal l, boolean atEnd) {
         var group = groupFor(l);
-        Entry known = group.facts.get(l.args());
+        Entry known = group.fact(l.args());
         if (known != null) {
-            if (containsAll(known.literal.annots(), l.annots())) {
-                return null;
-            }
-            // the event announces only the new annotations, as Jason does
-            var fresh = new ArrayList<Term>(l.annots());
-            fresh.removeAll(known.literal.annots());
-            known.literal = known.literal.addAnnots(l.annots());
-            return l.withAnnots(fresh);
+            return merge(known, l);
         }
         Entry e = new Entry(l);
-        group.facts.put(l.args(), e);
+        group.facts.put(new Args().set(l.args()), e);
         group.add(e, atEnd);
         size++;
         return l;
+    }
+
+    /**
+     * Adds the annotations of {@code l} to a stored belief. {@return the literal with only the new
+     * annotations, which the event announces as Jason does, or null when there is none} Each new
+     * one is inserted in the sorted annotations: a belief told by a thousand agents has a thousand
+     * sources, and merging them all again at every message was quadratic in the number of senders.
+     */
+    private static Literal merge(Entry known, Literal l) {
+        Literal merged = known.literal;
+        List<Term> more = l.annots();
+        List<Term> fresh = null;
+        for (int i = 0, n = more.size(); i < n; i++) {
+            Term a = more.get(i);
+            int at = find(merged.annots(), a);
+            if (at >= 0) {
+                continue;
+            }
+            if (at == UNORDERED) {
+                return mergeAll(known, l);
+            }
+            merged = merged.addAnnot(a);
+            if (fresh == null) {
+                fresh = new ArrayList<>(n - i);
+            }
+            fresh.add(a);
+        }
+        if (fresh == null) {
+            return null;
+        }
+        known.literal = merged;
+        return fresh.size() == more.size() ? l : l.withAnnots(fresh);
+    }
+
+    /** As {@link #merge}, by sorting all annotations again (terms the order does not tell apart). */
+    private static Literal mergeAll(Entry known, Literal l) {
+        var fresh = new ArrayList<Term>(l.annots());
+        fresh.removeAll(known.literal.annots());
+        if (fresh.isEmpty()) {
+            return null;
+        }
+        known.literal = known.literal.addAnnots(l.annots());
+        return l.withAnnots(fresh);
+    }
+
+    /** A term of the standard order's rank that equals none of the terms it ranks equal to. */
+    private static final int UNORDERED = Integer.MIN_VALUE;
+
+    /**
+     * {@return the position of {@code t} in sorted annotations, a negative number when it is not
+     * there, or {@link #UNORDERED} when another term takes its place in the order}
+     */
+    private static int find(List<Term> sorted, Term t) {
+        int lo = 0;
+        int hi = sorted.size() - 1;
+        while (lo <= hi) {
+            int mid = (lo + hi) >>> 1;
+            int c = sorted.get(mid).compareTo(t);
+            if (c < 0) {
+                lo = mid + 1;
+            } else if (c > 0) {
+                hi = mid - 1;
+            } else {
+                return sorted.get(mid).equals(t) ? mid : UNORDERED;
+            }
+        }
+        return -1;
     }
 
     /**
@@ -365,7 +470,7 @@ public final class BeliefBase {
         if (group == null) {
             return null;
         }
-        Entry e = group.facts.get(stored.args());
+        Entry e = group.fact(stored.args());
         if (e == null || (e.literal != stored && !e.literal.equals(stored))) {
             return null;
         }
@@ -382,7 +487,7 @@ public final class BeliefBase {
         if (group == null) {
             return null;
         }
-        Entry e = group.facts.get(removal.args());
+        Entry e = group.fact(removal.args());
         if (e == null || !containsAll(e.literal.annots(), removal.annots())) {
             return null;
         }

@@ -207,6 +207,22 @@ final class Bindings {
         table = other.table == null ? null : other.table.clone();
     }
 
+    /** Replaces these bindings with a copy of another's first {@code n}, in the array already here when it fits. */
+    void setFromPrefix(Bindings other, int n) {
+        if (2 * n > pairs.length) {
+            pairs = new Object[2 * (n + 2)];
+        }
+        System.arraycopy(other.pairs, 0, pairs, 0, 2 * n);
+        if (size > n) {
+            Arrays.fill(pairs, 2 * n, 2 * size, null);
+        }
+        size = n;
+        table = null;
+        if (n >= INDEX_FROM) {
+            rebuild(n);
+        }
+    }
+
     int size() {
         return size;
     }

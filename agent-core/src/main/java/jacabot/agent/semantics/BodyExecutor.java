@@ -178,7 +178,8 @@ final class BodyExecutor {
 
     private void addBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
         boolean sameFocus = kind != BodyStep.Kind.ADD_BEL_NEW_FOCUS;
-        Term bound = im.unifier().apply(term);
+        // only a rule term, or a variable that may stand for one, needs applying here (+b(X) is applied below)
+        Term bound = term instanceof Literal t && !t.functor().equals(Literal.RULE_TERM) ? term : im.unifier().apply(term);
         if (bound instanceof Literal r && r.functor().equals(Literal.RULE_TERM) && r.arity() == 2 && r.args().get(0) instanceof Literal head) {
             // +{ head :- body } adds a rule (renamed apart: its variables are its own)
             // (+R[source(A)] with R a rule: the annotations go to its head, source(self) when it has none)
@@ -204,7 +205,11 @@ final class BodyExecutor {
     private void delBel(Intention i, IntendedMeans im, BodyStep.Kind kind, Term term) {
         boolean sameFocus = kind != BodyStep.Kind.DEL_BEL_NEW_FOCUS;
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
-        Literal removed = ag.removeBelief(body, ag.newUnifier());
+        // the usual -b(1) is found by its arguments, without a unifier to try candidates with
+        Literal removed = body.isGround() ? ag.beliefBase().removeFact(body) : null;
+        if (removed == null) {
+            removed = ag.removeBelief(body, ag.newUnifier());
+        }
         if (removed != null) {
             // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
             im.unifier().unifies(term, removed);

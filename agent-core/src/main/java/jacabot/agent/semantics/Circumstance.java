@@ -32,7 +32,13 @@ public final class Circumstance {
     private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
     private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
     private final ConcurrentLinkedQueue<Message> mailbox = new ConcurrentLinkedQueue<>();
-    private final List<CircumstanceListener> listeners = new ArrayList<>();
+    /**
+     * Replaced, not changed, when a listener comes or goes: a listener may remove itself while
+     * notified, and tools attach from their own threads.
+     */
+    private volatile CircumstanceListener[] listeners = new CircumstanceListener[0];
+    private GoalStates goalStates;
+    private java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant;
 
     private Event selectedEvent;
     private Intention selectedIntention;
@@ -41,16 +47,33 @@ public final class Circumstance {
 
     // ---- events (E) -----------------------------------------------------------------------------
 
+    /**
+     * The agent's own: its goal states hear of every event (not a listener in Jason's sense), and
+     * its plan library tells whether a plan is relevant for an event.
+     */
+    void own(GoalStates goalStates, java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant) {
+        this.goalStates = goalStates;
+        this.relevant = relevant;
+    }
+
     public void addEvent(Event e) {
+        // as Jason's updateEvents: an external belief event no plan is relevant for is not kept,
+        // unless something listens to events (a .wait, an inspector); a message told or a -+b
+        // then costs no event to select and discard
+        if (e.intention() == null && e.trigger().type() == jacabot.agent.syntax.Trigger.Type.BELIEF
+                && relevant != null && listeners.length == 0 && !relevant.test(e.trigger())) {
+            return;
+        }
         if (e.isAtomic()) {
             atomicEvent = e;
         } else {
             events.add(e);
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.eventAdded(e);
-            }
+        if (goalStates != null) {
+            goalStates.eventAdded(e);
+        }
+        for (CircumstanceListener l : listeners) {
+            l.eventAdded(e);
         }
     }
 
@@ -64,10 +87,11 @@ public final class Circumstance {
         for (int k = rest.size() - 1; k >= 0; k--) {
             events.addFirst(rest.get(k));
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.eventAdded(e);
-            }
+        if (goalStates != null) {
+            goalStates.eventAdded(e);
+        }
+        for (CircumstanceListener l : listeners) {
+            l.eventAdded(e);
         }
     }
 
@@ -130,10 +154,8 @@ public final class Circumstance {
         } else {
             running.offer(i);
         }
-        if (!listeners.isEmpty()) {
-            for (CircumstanceListener l : List.copyOf(listeners)) {
-                l.intentionAdded(i);
-            }
+        for (CircumstanceListener l : listeners) {
+            l.intentionAdded(i);
         }
     }
 
@@ -345,15 +367,24 @@ public final class Circumstance {
     // ---- listeners ----------------------------------------------------------------------------------
 
     public void addListener(CircumstanceListener l) {
-        listeners.add(l);
+        listeners = java.util.Arrays.copyOf(listeners, listeners.length + 1);
+        listeners[listeners.length - 1] = l;
     }
 
     public void removeListener(CircumstanceListener l) {
-        listeners.remove(l);
+        for (int k = 0; k < listeners.length; k++) {
+            if (listeners[k].equals(l)) {
+                var rest = new CircumstanceListener[listeners.length - 1];
+                System.arraycopy(listeners, 0, rest, 0, k);
+                System.arraycopy(listeners, k + 1, rest, k, rest.length - k);
+                listeners = rest;
+                return;
+            }
+        }
     }
 
     void notifyDropped(Intention i) {
-        for (CircumstanceListener l : List.copyOf(listeners)) {
+        for (CircumstanceListener l : listeners) {
             l.intentionDropped(i);
         }
     }

@@ -21,6 +21,14 @@ public final class GoalStates {
         this.ag = ag;
     }
 
+    /**
+     * {@return whether some plan listens to goal states} Without one, callers skip applying the
+     * goal's unifier for a post that would do nothing (a subgoal finishes every few cycles).
+     */
+    boolean listening() {
+        return ag.planLibrary().hasGoalStatePlans();
+    }
+
     /** Posts a state of a goal; triggers that are not goals (or are meta-events) post nothing. */
     public void post(Trigger goal, State state, Term reason) {
         if (!goal.isGoal() || goal.op() == Trigger.Op.GOAL_STATE || !(goal.literal() instanceof Literal lit)
@@ -70,7 +78,7 @@ public final class GoalStates {
     /** An event was added: a new goal is {@code pending} (as Jason, posted as an achievement goal). */
     void eventAdded(Event e) {
         Trigger t = e.trigger();
-        if (t.isAddition() && t.isGoal() && t.op() != Trigger.Op.GOAL_STATE) {
+        if (listening() && t.isAddition() && t.isGoal() && t.op() != Trigger.Op.GOAL_STATE) {
             post(new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, t.literal()), State.pending, null);
         }
     }

@@ -15,6 +15,8 @@ import java.util.Map;
 public final class IntendedMeans {
     private final Plan plan;
     private final Trigger trigger;
+    /** The plan's {@code atomic} option, looked up once: the intention asks at every push and pop. */
+    private final boolean atomic;
     private Unifier unif;
     private StepList steps;
     /** Variables of the current step renamed apart when it posted an event (caller side). */
@@ -22,6 +24,7 @@ public final class IntendedMeans {
 
     IntendedMeans(Plan plan, Trigger trigger, Unifier unif) {
         this.plan = plan;
+        this.atomic = plan.isAtomic();
         this.trigger = trigger;
         this.unif = unif;
         this.steps = StepList.of(plan.body().steps(), null);
@@ -37,6 +40,11 @@ public final class IntendedMeans {
 
     public Plan plan() {
         return plan;
+    }
+
+    /** {@return whether the plan is atomic} */
+    public boolean isAtomic() {
+        return atomic;
     }
 
     /** {@return the event's trigger, with the plan's unifier applied when asked} */

@@ -33,14 +33,14 @@ public final class Intention implements Iterable<IntendedMeans> {
 
     public void push(IntendedMeans im) {
         stack.push(im);
-        if (im.plan().isAtomic()) {
+        if (im.isAtomic()) {
             atomicCount++;
         }
     }
 
     public IntendedMeans pop() {
         IntendedMeans im = stack.pop();
-        if (im.plan().isAtomic()) {
+        if (im.isAtomic()) {
             atomicCount--;
         }
         return im;

@@ -1,17 +1,93 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Term;
+import java.util.Objects;
 
 /**
  * A message between agents (KQML-like performatives: tell, untell, achieve, askOne, askAll, ...).
- *
- * @param inReplyTo the id of the ask this message answers, or null
+ * A message an agent numbers ({@link #numbered}) makes its id, {@code mid}N, only when asked: a
+ * stream of tells is never asked for it, and making the text was a tenth of sending.
  */
-public record Message(String id, String sender, String receiver, String performative, Term content,
-        String inReplyTo) {
+public final class Message {
+    private volatile String id;
+    private final int serial;
+    private final String sender;
+    private final String receiver;
+    private final String performative;
+    private final Term content;
+    private final String inReplyTo;
+
+    /** @param inReplyTo the id of the ask this message answers, or null */
+    public Message(String id, String sender, String receiver, String performative, Term content, String inReplyTo) {
+        this(Objects.requireNonNull(id), 0, sender, receiver, performative, content, inReplyTo);
+    }
+
+    private Message(String id, int serial, String sender, String receiver, String performative, Term content,
+            String inReplyTo) {
+        this.id = id;
+        this.serial = serial;
+        this.sender = sender;
+        this.receiver = receiver;
+        this.performative = performative;
+        this.content = content;
+        this.inReplyTo = inReplyTo;
+    }
+
+    /** {@return a message whose id is the sender's {@code mid}N, for N its serial ({@link Agent#nextMessageSerial})} */
+    public static Message numbered(int serial, String sender, String receiver, String performative, Term content,
+            String inReplyTo) {
+        return new Message(null, serial, sender, receiver, performative, content, inReplyTo);
+    }
+
+    /** {@return the id of a message with this serial} */
+    public static String idOf(int serial) {
+        return "mid" + serial;
+    }
+
+    public String id() {
+        String i = id;
+        if (i == null) {
+            i = idOf(serial);
+            id = i;
+        }
+        return i;
+    }
+
+    public String sender() {
+        return sender;
+    }
+
+    public String receiver() {
+        return receiver;
+    }
+
+    public String performative() {
+        return performative;
+    }
+
+    public Term content() {
+        return content;
+    }
+
+    public String inReplyTo() {
+        return inReplyTo;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Message m && id().equals(m.id()) && sender.equals(m.sender) && receiver.equals(m.receiver)
+                && performative.equals(m.performative) && Objects.equals(content, m.content)
+                && Objects.equals(inReplyTo, m.inReplyTo);
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(id(), sender, receiver, performative, content, inReplyTo);
+    }
+
     @Override
     public String toString() {
-        return "<" + id + "," + sender + "," + performative + "," + receiver + "," + content
+        return "<" + id() + "," + sender + "," + performative + "," + receiver + "," + content
                 + (inReplyTo == null ? "" : "," + inReplyTo) + ">";
     }
 }

@@ -74,7 +74,7 @@ final class MessageHandler {
         // handled at once, in the order they came, unless the agent customises kqml_received
         boolean direct = !m.performative().startsWith("ask") && !hasOwnKqmlPlans();
         if (direct) {
-            perform(sender, m.performative(), m.content(), m.id());
+            perform(sender, m.performative(), m.content(), m, null);
         } else {
             Literal received = Literal.of("kqml_received", Literal.atom(sender), Literal.atom(m.performative()),
                     m.content(), Literal.atom(m.id()));
@@ -86,13 +86,23 @@ final class MessageHandler {
             Literal.of("kqml_received", new jacabot.agent.syntax.Var("S"), new jacabot.agent.syntax.Var("P"),
                     new jacabot.agent.syntax.Var("C"), new jacabot.agent.syntax.Var("M")));
 
+    /** The plan library's version when {@link #ownKqmlPlans} was found (each message asks). */
+    private int kqmlPlansChecked = -1;
+    private boolean ownKqmlPlans;
+
     private boolean hasOwnKqmlPlans() {
-        for (Plan p : ag.planLibrary().candidates(KQML_RECEIVED)) {
-            if (!ag.planLibrary().isKqmlPlan(p)) {
-                return true;
+        PlanLibrary pl = ag.planLibrary();
+        if (kqmlPlansChecked != pl.version()) {
+            ownKqmlPlans = false;
+            for (Plan p : pl.candidates(KQML_RECEIVED)) {
+                if (!pl.isKqmlPlan(p)) {
+                    ownKqmlPlans = true;
+                    break;
+                }
             }
+            kqmlPlansChecked = pl.version();
         }
-        return false;
+        return ownKqmlPlans;
     }
 
     /**
@@ -110,18 +120,32 @@ final class MessageHandler {
                 && ag.planLibrary().hasCandidate(new Trigger(Trigger.Op.ADD, Trigger.Type.TEST, l))) {
             return false;
         }
-        perform(s.functor(), p.functor(), content, received.arg(3).toString());
+        perform(s.functor(), p.functor(), content, null, received.arg(3).toString());
         return true;
     }
 
-    /** Handles a message from {@code sender} ({@code self} for the agent itself). */
-    private void perform(String sender, String performative, Term content, String msgId) {
+    /**
+     * Handles a message from {@code sender} ({@code self} for the agent itself); its id is the
+     * original's when there is one (made only if an answer or a warning needs it), else {@code msgId}.
+     */
+    private void perform(String sender, String performative, Term content, Message original, String msgId) {
         Circumstance c = ag.circumstance();
         String replyTo = sender.equals("self") ? ag.name() : sender;
-        Literal source = sources.computeIfAbsent(sender, x -> Literal.of("source", Literal.atom(x)));
-        var m = new Message(msgId, replyTo, ag.name(), performative, content, null);
-        switch (m.performative()) {
+        Literal source = sources.get(sender);
+        if (source == null) {
+            source = Literal.of("source", Literal.atom(sender));
+            sources.put(sender, source);
+        }
+        switch (performative) {
             case "tell":
+                if (content instanceof Literal l) {
+                    // the usual tell, one literal
+                    Literal added = ag.addBelief(nested(l, source), false);
+                    if (added != null) {
+                        c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                    }
+                    break;
+                }
                 for (Literal l : literals(content)) {
                     Literal added = ag.addBelief(nested(l, source), false);
                     if (added != null) {
@@ -151,7 +175,7 @@ final class MessageHandler {
                             ag.planLibrary().add(p, source.args().get(0), false);
                         }
                     } catch (jacabot.agent.parser.AslSyntaxException | IllegalArgumentException e) {
-                        ag.warn("Error in the plan told by " + m.sender() + ": " + e.getMessage());
+                        ag.warn("Error in the plan told by " + replyTo + ": " + e.getMessage());
                     }
                 }
                 break;
@@ -180,14 +204,19 @@ final class MessageHandler {
                 break;
             case "askOne":
             case "askAll":
-                answer(m, content);
+                answer(received(replyTo, performative, content, original, msgId), content);
                 break;
             case "askHow":
-                answerHow(m, content);
+                answerHow(received(replyTo, performative, content, original, msgId), content);
                 break;
             default:
-                ag.warn("Unknown performative '" + m.performative() + "' in " + m);
+                ag.warn("Unknown performative '" + performative + "' in " + received(replyTo, performative, content, original, msgId));
         }
+    }
+
+    /** The message as this agent answers it: from its sender to this agent. */
+    private Message received(String replyTo, String performative, Term content, Message original, String msgId) {
+        return new Message(original != null ? original.id() : msgId, replyTo, ag.name(), performative, content, null);
     }
 
     /**
@@ -195,6 +224,9 @@ final class MessageHandler {
      * {@code b[source(c)]} from a becomes {@code b[source(a)[source(c)]]}.
      */
     static Literal nested(Literal l, Literal source) {
+        if (l.annots().isEmpty()) {
+            return l.addAnnot(source);
+        }
         var sources = new ArrayList<Term>();
         var others = new ArrayList<Term>();
         for (Term a : l.annots()) {

@@ -19,6 +19,7 @@ public final class PlanLibrary {
     private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
     private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
+    private int version;
 
     /** A trigger's kind and predicate (equality written out: it is looked up for every event). */
     private static final class CandidateKey {
@@ -37,6 +38,12 @@ public final class PlanLibrary {
             this.functor = functor;
             this.arity = arity;
             this.negated = negated;
+        }
+
+        /** {@return whether this is the key of a trigger with this kind and literal} */
+        boolean matches(Trigger.Op o, Trigger.Type t, Literal l) {
+            return o == op && t == type && l.arity() == arity && l.negated() == negated && l.functor().equals(functor)
+                    && java.util.Objects.equals(l.ns(), ns);
         }
 
         @Override
@@ -71,7 +78,7 @@ public final class PlanLibrary {
             label = label.addAnnot(Literal.SOURCE_SELF);
         }
         Plan named = p.withLabel(label);
-        candidateCache.clear();
+        changed();
         goalStatePlans |= p.trigger().op() == Trigger.Op.GOAL_STATE;
         jagPlans |= p.trigger().literal() instanceof Literal l && l.functor().startsWith("jag_");
         if (atBeginning) {
@@ -94,7 +101,7 @@ public final class PlanLibrary {
             if (samePlan(known, p)) {
                 Plan more = known.withLabel(known.label().addAnnot(s));
                 plans.set(i, more);
-                candidateCache.clear();
+                changed();
                 return more;
             }
         }
@@ -128,7 +135,7 @@ public final class PlanLibrary {
     }
 
     public boolean remove(String label) {
-        candidateCache.clear();
+        changed();
         return plans.removeIf(p -> p.label().functor().equals(label));
     }
 
@@ -146,7 +153,7 @@ public final class PlanLibrary {
             Literal rest = p.label().withAnnots(p.label().annots().stream().filter(a -> !a.equals(s)).toList());
             if (rest.hasSource()) {
                 plans.set(plans.indexOf(p), p.withLabel(rest));
-                candidateCache.clear();
+                changed();
             } else {
                 remove(label);
             }
@@ -154,10 +161,33 @@ public final class PlanLibrary {
         return true;
     }
 
+    /** The library changed: cached candidates go, and what callers derived from them is stale. */
+    private void changed() {
+        candidateCache.clear();
+        last = null;
+        before = null;
+        version++;
+    }
+
+    /** {@return a number that changes whenever the plans change} */
+    int version() {
+        return version;
+    }
+
     /** {@return the plans whose trigger may be relevant for {@code te} (same kind, functor, arity)} */
     public List<Plan> candidates(Trigger te) {
         if (!(te.literal() instanceof Literal l)) {
             return scan(te);
+        }
+        Last last = this.last;
+        if (last != null && last.key.matches(te.op(), te.type(), l)) {
+            return last.plans;
+        }
+        Last before = this.before;
+        if (before != null && before.key.matches(te.op(), te.type(), l)) {
+            this.before = last;
+            this.last = before;
+            return before.plans;
         }
         var key = new CandidateKey(te.op(), te.type(), l.functor(), l.arity(), l.negated(), l.ns());
         List<Plan> cached = candidateCache.get(key);
@@ -165,8 +195,21 @@ public final class PlanLibrary {
             cached = List.copyOf(scan(te));
             candidateCache.put(key, cached);
         }
+        this.before = last;
+        this.last = new Last(key, cached);
         return cached;
     }
+
+    /**
+     * The last two triggers' candidates: a loop of subgoals or a stream of messages asks for the
+     * same ones every cycle (a -+b loop for those of -b and +b in turn).
+     */
+    private record Last(CandidateKey key, List<Plan> plans) {
+    }
+
+    /** A key with its own plans in each field, so that a look from another thread sees a pair that belongs together. */
+    private Last last;
+    private Last before;
 
     private List<Plan> scan(Trigger te) {
         var out = new ArrayList<Plan>();
@@ -186,12 +229,17 @@ public final class PlanLibrary {
     /** Sets the plans that handle messages when the agent's own plans do not ({@code +!kqml_received}). */
     void setKqmlPlans(List<Plan> ps) {
         kqmlPlans = List.copyOf(ps);
-        candidateCache.clear();
+        changed();
     }
 
     /** {@return whether p is one of the library's built-in message plans} */
     public boolean isKqmlPlan(Plan p) {
-        return kqmlPlans.stream().anyMatch(k -> k == p);
+        for (int i = 0, n = kqmlPlans.size(); i < n; i++) {
+            if (kqmlPlans.get(i) == p) {
+                return true;
+            }
+        }
+        return false;
     }
 
     public boolean hasCandidate(Trigger te) {

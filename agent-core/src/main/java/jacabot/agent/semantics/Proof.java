@@ -10,7 +10,6 @@ import jacabot.agent.syntax.RelExpr;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.Iterator;
@@ -113,6 +112,11 @@ final class Proof {
         w.rebind(answer);
     }
 
+    /** Gives {@code into} the current solution: the first bindings and the answer. */
+    void solutionInto(Unifier into) {
+        into.setFromPrefix(w, base, answer());
+    }
+
     /** {@return the current solution as a new unifier: the first bindings and the answer} */
     Unifier solution() {
         return w.prefixWith(base, answer());
@@ -126,16 +130,17 @@ final class Proof {
      */
     private Object[] answer() {
         if (formulaVars == null) {
-            var vars = new ArrayList<Var>();
-            formula.collectVars(vars::add);
-            formulaVars = vars;
+            formulaVars = solver.varsOf(formula);
         }
-        var pairs = new ArrayList<Object>();
-        // in the formula's order, then in the order the values name them
-        var seen = new HashSet<Var>(formulaVars);
-        var todo = new ArrayDeque<Var>(formulaVars);
-        while (!todo.isEmpty()) {
-            Var v = todo.poll();
+        // in the formula's order, then in the order the values name them ("more", made only when
+        // a value names variables)
+        List<Var> vars = formulaVars;
+        ArrayList<Var> more = null;
+        HashSet<Var> seen = null;
+        Object[] pairs = new Object[2 * vars.size()];
+        int n = 0;
+        for (int k = 0; k < vars.size() + (more == null ? 0 : more.size()); k++) {
+            Var v = k < vars.size() ? vars.get(k) : more.get(k - vars.size());
             Term b = w.binding(v);
             if (b == null) {
                 continue;
@@ -143,22 +148,44 @@ final class Proof {
             Term value = b;
             if (w.boundSince(v, base)) {
                 value = w.deref(b);
-                pairs.add(v);
-                pairs.add(value);
+                if (n == pairs.length) {
+                    pairs = java.util.Arrays.copyOf(pairs, 2 * n + 2);
+                }
+                pairs[n++] = v;
+                pairs[n++] = value;
             }
             if (value instanceof Var x) {
-                if (seen.add(x)) {
-                    todo.add(x);
+                if (more == null) {
+                    more = new ArrayList<>();
                 }
+                seen = enqueue(x, vars, more, seen);
             } else if (!value.isGround()) {
-                value.collectVars(x -> {
-                    if (seen.add(x)) {
-                        todo.add(x);
-                    }
-                });
+                var found = new ArrayList<Var>();
+                value.collectVars(found::add);
+                if (more == null) {
+                    more = new ArrayList<>();
+                }
+                for (Var x : found) {
+                    seen = enqueue(x, vars, more, seen);
+                }
             }
         }
-        return pairs.toArray();
+        return n == pairs.length ? pairs : java.util.Arrays.copyOf(pairs, n);
+    }
+
+    /**
+     * Queues a variable not seen yet (neither the formula's nor queued). {@return the set of those
+     * seen, made once the queue is long}
+     */
+    private static HashSet<Var> enqueue(Var x, List<Var> vars, ArrayList<Var> more, HashSet<Var> seen) {
+        if (seen == null && vars.size() + more.size() > 16) {
+            seen = new HashSet<>(vars);
+            seen.addAll(more);
+        }
+        if (seen != null ? seen.add(x) : !vars.contains(x) && !more.contains(x)) {
+            more.add(x);
+        }
+        return seen;
     }
 
     private boolean run() {

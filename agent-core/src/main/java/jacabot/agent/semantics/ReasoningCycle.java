@@ -110,7 +110,9 @@ final class ReasoningCycle {
         // a message no plan of the agent's own handles gets the default handling (Jason's kqmlPlans)
         boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
                 && se.trigger().literal() instanceof Literal l && l.arity() == 4 && l.functor().equals("kqml_received");
-        for (Plan p : ag.planLibrary().candidates(se.trigger())) {
+        List<Plan> candidates = ag.planLibrary().candidates(se.trigger());
+        for (int k = 0, n = candidates.size(); k < n; k++) {
+            Plan p = candidates.get(k);
             if (message && ag.planLibrary().isKqmlPlan(p)) {
                 message = false;
                 if (messages.handleByDefault((Literal) se.trigger().literal())) {
@@ -193,7 +195,9 @@ final class ReasoningCycle {
         if (top != null && top.trigger().isAddition() && im.trigger().isAddition()
                 && top.trigger().isGoal() && im.trigger().isGoal() && top.isLastStep()
                 && samePredicate(top.trigger(), im.trigger())) {
-            ag.goalStates().finished(GoalStates.of(top), GoalStates.State.achieved);
+            if (ag.goalStates().listening()) {
+                ag.goalStates().finished(GoalStates.of(top), GoalStates.State.achieved);
+            }
             i.pop();
             IntendedMeans base = i.peek();
             if (base != null && base.renamedVars() != null) {
@@ -321,7 +325,7 @@ final class ReasoningCycle {
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
-            if (topTrigger.isGoal()) {
+            if (topTrigger.isGoal() && ag.goalStates().listening()) {
                 ag.goalStates().finished(GoalStates.of(topIM), GoalStates.State.achieved);
             }
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {

@@ -43,6 +43,32 @@ public final class Solver {
         return new Solutions(new Proof(this, formula, u.copy(), 0));
     }
 
+    /**
+     * {@return the solutions of a formula one by one, each given into a unifier} As
+     * {@link #solve}, without a unifier made for each solution (a {@code for} loop's turns).
+     */
+    public Answers answers(Term formula, Unifier u) {
+        return new Answers(new Proof(this, formula, u.copy(), 0));
+    }
+
+    /** The solutions of a proof, given one by one into a unifier. */
+    public static final class Answers {
+        private final Proof proof;
+
+        Answers(Proof proof) {
+            this.proof = proof;
+        }
+
+        /** {@return whether there is another solution; {@code into} then holds it (else it is left as it was)} */
+        public boolean next(Unifier into) {
+            if (!proof.next()) {
+                return false;
+            }
+            proof.solutionInto(into);
+            return true;
+        }
+    }
+
     /** The solutions of a proof, each a unifier of its own. */
     private static final class Solutions implements Iterator<Unifier> {
         private final Proof proof;
@@ -74,6 +100,25 @@ public final class Solver {
             next = null;
             return u;
         }
+    }
+
+    /** A formula and its distinct variables. */
+    private record FormulaVars(Term formula, List<Var> vars) {
+    }
+
+    /** The last formula whose variables were asked (a loop asks for its condition's at every turn), in one field: other threads may ask too. */
+    private FormulaVars lastVars = new FormulaVars(null, List.of());
+
+    /** {@return the distinct variables of a formula, in order of first occurrence} */
+    List<Var> varsOf(Term formula) {
+        FormulaVars last = lastVars;
+        if (last.formula() != formula) {
+            var vars = new java.util.LinkedHashSet<Var>();
+            formula.collectVars(vars::add);
+            last = new FormulaVars(formula, List.copyOf(vars));
+            lastVars = last;
+        }
+        return last.vars();
     }
 
     // ---- what a proof asks of the agent ----------------------------------------------------------

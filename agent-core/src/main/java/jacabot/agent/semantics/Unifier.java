@@ -88,6 +88,12 @@ public final class Unifier {
         return bindings.get(v);
     }
 
+    /** Replaces this unifier's bindings with the first {@code mark} of another's and then {@code pairs}. */
+    void setFromPrefix(Unifier other, int mark, Object[] pairs) {
+        bindings.setFromPrefix(other.bindings, mark);
+        bindings.append(pairs);
+    }
+
     /** {@return a new unifier with this one's first {@code mark} bindings and then {@code pairs}} */
     Unifier prefixWith(int mark, Object[] pairs) {
         var u = new Unifier(bindings.prefix(mark), evaluator);

@@ -9,7 +9,7 @@ import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
-import java.util.Iterator;
+import jacabot.agent.semantics.Solver;
 
 /**
  * {@code for (C) {B}}, as Jason's {@code .foreach}: the body runs once for each solution of C
@@ -26,25 +26,25 @@ final class Foreach extends DefaultInternalAction {
     }
 
     @Override
-    @SuppressWarnings("unchecked")
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         IntendedMeans im = ag.circumstance().selectedIntention().peek();
         BodyStep forStep = im.currentStep();
-        Iterator<Unifier> it;
+        Solver.Answers answers;
         Unifier backup;
         if (args.length == 2) {
-            it = ag.solver().solve(args[0], un.copy());
-            if (!it.hasNext()) {
+            backup = un.copy();
+            answers = ag.solver().answers(args[0], backup);
+            // each solution is given into the loop's unifier, with no unifier of its own
+            if (!answers.next(un)) {
                 return true;
             }
-            backup = un.copy();
-            forStep = forStep.withTerm(Literal.of(".foreach", args[0], args[1], new ObjectTerm(it), new ObjectTerm(backup)));
-        } else {
-            it = (Iterator<Unifier>) ((ObjectTerm) args[2]).value();
-            backup = (Unifier) ((ObjectTerm) args[3]).value();
+            forStep = forStep.withTerm(Literal.of(".foreach", args[0], args[1], new ObjectTerm(answers), new ObjectTerm(backup)));
+            im.insertAfterCurrent(((BodyTerm) args[1]).steps(), forStep);
+            return true;
         }
-        if (it.hasNext()) {
-            un.setFrom(it.next());
+        answers = (Solver.Answers) ((ObjectTerm) args[2]).value();
+        backup = (Unifier) ((ObjectTerm) args[3]).value();
+        if (answers.next(un)) {
             im.insertAfterCurrent(((BodyTerm) args[1]).steps(), forStep);
         } else {
             un.setFrom(backup);

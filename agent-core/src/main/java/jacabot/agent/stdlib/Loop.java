@@ -9,7 +9,6 @@ import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
-import java.util.Iterator;
 
 /**
  * {@code while (C) {B}}, as Jason's {@code .loop}: the condition is tested against the unifier the
@@ -34,15 +33,20 @@ final class Loop extends DefaultInternalAction {
             Literal withBackup = Literal.of(".loop", args[0], args[1], new ObjectTerm(un.copy()));
             loopStep = loopStep.withTerm(withBackup);
         } else {
-            // the condition is solved against the saved unifier itself (solving never changes it)
             start = (Unifier) ((ObjectTerm) args[2]).value();
         }
-        Iterator<Unifier> it = ag.solver().solve(args[0], start);
-        if (it.hasNext()) {
-            un.setFrom(it.next());
+        // the condition is proved in the loop's unifier, reset to the saved one: it then holds
+        // the first solution, or is left as saved when there is none (no unifier of its own)
+        un.setFrom(start);
+        boolean holds;
+        try {
+            holds = ag.solver().believes(args[0], un);
+        } catch (RuntimeException | StackOverflowError e) {
+            un.setFrom(start); // a proof cut short leaves no bindings behind
+            throw e;
+        }
+        if (holds) {
             im.insertAfterCurrent(((BodyTerm) args[1]).steps(), loopStep);
-        } else {
-            un.setFrom(start);
         }
         return true;
     }

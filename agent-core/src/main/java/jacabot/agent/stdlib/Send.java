@@ -24,16 +24,17 @@ final class Send extends DefaultInternalAction {
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         String performative = text(args[1]);
         boolean syncAsk = args.length >= 4 && performative.startsWith("ask");
-        String id = ag.nextMessageId();
+        int serial = ag.nextMessageSerial();
         String inReplyTo = args.length >= 4 && !syncAsk ? text(args[3]) : null;
         if (args[0] instanceof ListTerm l) {
             for (Term r : l.elements()) {
-                send(ag, id, text(r), performative, args[2], inReplyTo);
+                send(ag, serial, text(r), performative, args[2], inReplyTo);
             }
         } else {
-            send(ag, id, text(args[0]), performative, args[2], inReplyTo);
+            send(ag, serial, text(args[0]), performative, args[2], inReplyTo);
         }
         if (syncAsk) {
+            String id = Message.idOf(serial);
             Intention si = ag.circumstance().selectedIntention();
             ag.circumstance().addPendingIntention(id, Literal.of("ask", Literal.atom(id)), si);
             ag.holdSelectedIntention();
@@ -52,12 +53,12 @@ final class Send extends DefaultInternalAction {
         return true;
     }
 
-    private static void send(Agent ag, String id, String receiver, String performative, Term content,
+    private static void send(Agent ag, int serial, String receiver, String performative, Term content,
             String inReplyTo) throws IaException {
         if (receiver.equals("self")) {
             receiver = ag.name(); // a message to oneself names its sender self (Jason's kqml_received)
         }
-        if (!ag.arch().sendMessage(new Message(id, ag.name(), receiver, performative, content, inReplyTo))) {
+        if (!ag.arch().sendMessage(Message.numbered(serial, ag.name(), receiver, performative, content, inReplyTo))) {
             throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
         }
     }

@@ -22,6 +22,8 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     public static final Literal SELF = atom("self");
     public static final Literal SOURCE_SELF = of("source", SELF);
     public static final Literal SOURCE_PERCEPT = of("source", atom("percept"));
+    /** The annotations {@code [source(self)]}. */
+    private static final List<Term> SOURCE_SELF_ONLY = List.of(SOURCE_SELF);
     /** The functor of a rule used as a term, {@code { head :- body }}: {@code rule__(head, body)}. */
     public static final String RULE_TERM = "rule__";
     /** The name of the default namespace, as a term ({@code default::b} is {@code b}). */
@@ -178,8 +180,12 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     public Literal addAnnot(Term annot) {
-        // one insertion into the sorted annotations, without re-sorting them
         int n = annots.size();
+        if (n == 0) {
+            // source(self) on a subgoal or a belief of the agent's own: a list shared by all
+            return new Literal(functor, args, annot == SOURCE_SELF ? SOURCE_SELF_ONLY : List.of(annot), negated, false, ns);
+        }
+        // one insertion into the sorted annotations, without re-sorting them
         int lo = 0;
         int hi = n;
         while (lo < hi) {
