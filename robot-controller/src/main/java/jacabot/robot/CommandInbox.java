@@ -9,9 +9,9 @@ import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
 /**
- * Where the receiver thread leaves commands for the simulation thread. Its monitor is the world
- * object: the simulation thread calls the controller while holding the world's lock (SimRunner),
- * so waiting here for the agent's acknowledgement releases the world to the viewer meanwhile.
+ * Where the link leaves commands for the simulation thread: the receiver thread in real time, the
+ * simulation thread itself in lockstep (it reads the answer to its step). Its monitor is the world
+ * object, so a command is taken between two physics steps.
  */
 final class CommandInbox {
     /** How a lockstep wait for {@code STEP_ACK(step)} ended. */
@@ -173,6 +173,13 @@ final class CommandInbox {
                 }
                 lock.wait();
             }
+        }
+    }
+
+    /** {@return whether {@code STEP_ACK(step)} has come} */
+    boolean hasAck(long step) {
+        synchronized (lock) {
+            return ackedStep >= step;
         }
     }
 

@@ -47,6 +47,8 @@ public final class RobotController implements AutoCloseable {
     private final LinkCosts costs = new LinkCosts();
     private final SimRunner runner;
     private volatile long step;
+    /** Lockstep: the step sensed under the world's lock, to be sent and answered without it. */
+    private Sensed sensed;
     private boolean failSafeTripped;
     private volatile long failSafeTrips;
     private volatile boolean started, closed;
@@ -77,7 +79,7 @@ public final class RobotController implements AutoCloseable {
         this.executor = new CommandExecutor(robot, sampler, world.controlStep(), config.log());
         this.inbox = new CommandInbox(world, config.nanoTime(), world::timeMs);
         this.link = new RobotLink(config, inbox, costs, memory);
-        this.runner = new SimRunner(world, this::controlStep);
+        this.runner = new SimRunner(world, this::controlStep, config.lockstep() ? this::answerStep : null);
         if (config.lockstep()) {
             runner.setMode(SimRunner.Mode.FAST); // the agent's acknowledgements pace the world
         } else {
@@ -157,10 +159,14 @@ public final class RobotController implements AutoCloseable {
         return link.droppedFrames();
     }
 
+    /** A lockstep step's readings, sampled at {@code now}. */
+    private record Sensed(long now, Uplink.Batch batch, Uplink.StepMarker marker) {
+    }
+
     /**
      * One control step, called with the world's lock held just before the world advances: sample
-     * and send, then take the commands (in lockstep, waiting for the agent's acknowledgement).
-     * Only the simulation thread calls it.
+     * and send, then take the commands. In lockstep it only samples: {@link #answerStep} sends the
+     * step and waits for the agent's acknowledgement without the lock. Only the simulation thread calls it.
      */
     public void controlStep(SimWorld w) {
         if (closed) {
@@ -174,10 +180,37 @@ public final class RobotController implements AutoCloseable {
         logReadings(now, readings);
         Uplink.Batch batch = new Uplink.Batch(step, now, sampledMicros, readings);
         Uplink.StepMarker marker = new Uplink.StepMarker(step, now, config.lockstep());
-        List<ReceivedCommand> received = config.lockstep() ? exchangeLockstep(batch, marker) : exchangeRealTime(batch, marker);
+        if (config.lockstep()) {
+            sensed = new Sensed(now, batch, marker);
+            return;
+        }
+        List<ReceivedCommand> received = exchangeRealTime(batch, marker);
+        if (received != null) {
+            act(now, received);
+        }
+    }
+
+    /**
+     * Lockstep, after {@link #controlStep} and without the world's lock: sends the step, waits for
+     * the agent's answer (a viewer still draws the world meanwhile), then applies it under the lock.
+     */
+    private void answerStep(SimWorld w) {
+        Sensed s = sensed;
+        sensed = null;
+        if (s == null) {
+            return;
+        }
+        List<ReceivedCommand> received = exchangeLockstep(s.batch(), s.marker());
         if (received == null) {
             return; // closed while waiting
         }
+        synchronized (world) {
+            act(s.now(), received);
+        }
+    }
+
+    /** Applies the step's commands that are due. World lock held. */
+    private void act(long now, List<ReceivedCommand> received) {
         for (ReceivedCommand rc : received) {
             executor.submit(rc);
         }
@@ -227,6 +260,7 @@ public final class RobotController implements AutoCloseable {
                     return null;
                 }
                 link.send(out -> out.writeStep(batch, marker));
+                link.readAnswer(batch.step());
                 switch (inbox.awaitAck(batch.step())) {
                     case ACKED:
                         return inbox.takeCommands();

@@ -9,6 +9,7 @@ import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorDataWriter;
+import jacabot.robot.link.SpinningInput;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -28,7 +29,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * connects (retrying with back-off, reconnecting after a drop), shakes hands and reads commands
  * into the {@link CommandInbox}; the <b>sender</b> writes the frames the simulation thread queues,
  * so neither a slow agent nor a slow socket ever blocks the other direction or the simulation. In
- * lockstep the simulation waits for the agent at every step anyway, so it writes its frames itself.
+ * lockstep the simulation waits for the agent at every step anyway, so it writes its frames and
+ * reads the answers itself; the receiver then only connects and shakes hands.
  *
  * <p>Over a {@link MemoryLink} (lockstep sweeps) there are neither threads nor socket: the same
  * frames go through memory, and the middleware has read a step, and answered it, when its write returns.
@@ -51,6 +53,8 @@ final class RobotLink {
     private final AtomicLong droppedFrames = new AtomicLong();
     private volatile Socket socket;
     private volatile SensorDataWriter writer;
+    /** Lockstep over TCP: the connection's command stream, read by the simulation thread. */
+    private volatile LentReader lent;
     private volatile String lastProblem;
     private Thread receiver, sender;
     /** Null: TCP. */
@@ -219,8 +223,18 @@ final class RobotLink {
                 everConnected = true;
                 backoff = config.minBackoffMs();
                 config.log().accept("connected to the middleware at " + config.host() + ":" + config.port());
-                inbox.connectionChanged(true);
-                readCommands(new CommandReader(s.getInputStream(), config.clock()));
+                // lockstep: the middleware's answer follows our frame within its turn
+                long spin = config.lockstep() && config.tls() == null ? SpinningInput.LOCKSTEP_SPIN_NANOS : 0;
+                CommandReader reader = new CommandReader(new SpinningInput(s.getInputStream(), spin), config.clock());
+                if (config.lockstep()) {
+                    LentReader l = new LentReader(reader);
+                    lent = l;
+                    inbox.connectionChanged(true);
+                    l.awaitEnd();
+                } else {
+                    inbox.connectionChanged(true);
+                    readCommands(reader);
+                }
             } catch (ProtocolException | AuthenticationException e) {
                 problem(e.getMessage(), up);
             } catch (SocketTimeoutException e) {
@@ -231,6 +245,7 @@ final class RobotLink {
                             : "waiting for the middleware at " + config.host() + ":" + config.port() + " (" + e.getMessage() + ")", up);
                 }
             } finally {
+                lent = null;
                 writer = null;
                 closeSocket();
                 if (up) {
@@ -281,6 +296,63 @@ final class RobotLink {
             inbox.connectionChanged(true);
         } catch (IOException e) {
             problem("cannot connect to the middleware in this process: " + e.getMessage(), false);
+        }
+    }
+
+    /**
+     * Lockstep over TCP, simulation thread, after writing step {@code step}: reads the middleware's
+     * commands up to its {@code STEP_ACK(step)}. Reading here rather than on the receiver thread saves
+     * two thread wake-ups per step. A failure ends the connection; {@code awaitAck} then reports it.
+     */
+    void readAnswer(long step) {
+        LentReader l = lent;
+        if (l != null) {
+            l.readUntilAck(step);
+        }
+    }
+
+    /**
+     * A lockstep connection's command stream, lent by the receiver thread to the simulation thread,
+     * which reads it at each step; the receiver waits for the connection's end to reconnect.
+     */
+    private final class LentReader {
+        private final CommandReader reader;
+        private final CountDownLatch ended = new CountDownLatch(1);
+        private volatile IOException failure;
+
+        LentReader(CommandReader reader) {
+            this.reader = reader;
+        }
+
+        void readUntilAck(long step) {
+            try {
+                while (!inbox.hasAck(step) && ended.getCount() > 0) {
+                    ReceivedCommand rc = reader.read();
+                    if (rc == null) {
+                        ended.countDown();
+                        return;
+                    }
+                    accept(rc);
+                }
+            } catch (IOException e) {
+                failure = e;
+                ended.countDown();
+            }
+        }
+
+        /** Receiver thread: returns when the middleware closed the stream, throws how else it ended. */
+        void awaitEnd() throws IOException {
+            try {
+                ended.await();
+            } catch (InterruptedException e) {
+                return; // closing
+            }
+            if (failure != null) {
+                throw failure;
+            }
+            if (!isClosed()) {
+                problem("the middleware closed the connection", true);
+            }
         }
     }
 

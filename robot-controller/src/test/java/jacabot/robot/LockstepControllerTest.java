@@ -57,6 +57,23 @@ class LockstepControllerTest {
     }
 
     @Test
+    void whileTheAgentReasonsTheWorldsLockIsFreeForAViewer() throws Exception {
+        try (var peer = middleware.accept(Protocol.VERSION)) {
+            marker(peer, 0);
+            var locked = new java.util.concurrent.CountDownLatch(1);
+            Thread viewer = new Thread(() -> {
+                synchronized (controller.world()) {
+                    locked.countDown();
+                }
+            });
+            viewer.start();
+            assertTrue(locked.await(5, java.util.concurrent.TimeUnit.SECONDS), "a viewer takes the world's lock during the agent's turn");
+            peer.send(Command.stepAck(0));
+            marker(peer, 1);
+        }
+    }
+
+    @Test
     void anUnknownCodeIsSkippedAndTheStepGoesOn() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
             marker(peer, 0);

@@ -15,6 +15,7 @@ public final class SimRunner {
 
     private final SimWorld world;
     private final Consumer<SimWorld> controller;
+    private final Consumer<SimWorld> unlocked;
     private volatile Mode mode = Mode.REAL_TIME;
     private volatile double speedFactor = 1.0;
     private volatile boolean paused;
@@ -26,8 +27,19 @@ public final class SimRunner {
 
     /** @param controller called before each control step, or null */
     public SimRunner(SimWorld world, Consumer<SimWorld> controller) {
+        this(world, controller, null);
+    }
+
+    /**
+     * @param controller called before each control step with the world's lock held, or null
+     * @param unlocked   called after it without the lock, or null: a lockstep controller waits there for
+     *                   a remote answer, so a viewer still reads the world meanwhile; what it changes in
+     *                   the world it changes inside {@code synchronized (world)}
+     */
+    public SimRunner(SimWorld world, Consumer<SimWorld> controller, Consumer<SimWorld> unlocked) {
         this.world = world;
         this.controller = controller;
+        this.unlocked = unlocked;
     }
 
     public SimWorld world() {
@@ -67,6 +79,9 @@ public final class SimRunner {
             synchronized (world) {
                 controller.accept(world);
             }
+        }
+        if (unlocked != null) {
+            unlocked.accept(world);
         }
         world.step();
         measure();

@@ -114,9 +114,8 @@ public final class LockstepCoordinator {
     /**
      * The frames go through memory instead of a loopback socket ({@link InProcessLink#inMemory}), and
      * the agent side answers each step on the simulation thread: the same run, to the byte of both
-     * event logs, without the socket's system calls and thread hand-offs (sweeps). The world's lock is
-     * then held during the agent's turn too, so a viewer or another thread querying the world waits
-     * for whole steps. Off by default: single runs keep the thesis' socket.
+     * event logs, without the socket's system calls and thread hand-offs (sweeps). As over the socket,
+     * the agent's turn runs without the world's lock. Off by default: single runs keep the thesis' socket.
      */
     public LockstepCoordinator inMemory(boolean on) {
         this.inMemory = on;

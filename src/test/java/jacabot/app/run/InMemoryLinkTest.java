@@ -89,7 +89,7 @@ class InMemoryLinkTest {
         }, "in-memory-run");
         t.start();
         assertTrue(fiveSeconds.await(60, TimeUnit.SECONDS), () -> "5 simulated seconds within 60 s; failure: " + failed[0]);
-        run.stop(); // the world's lock is held through each step, agent included: stop must not wait on it for ever
+        run.stop(); // the agent answers on the simulation thread: stop must not wait for it for ever
         t.join(TimeUnit.SECONDS.toMillis(30));
         assertTrue(!t.isAlive(), "the run ended after stop()");
         assertTrue(failed[0] == null, () -> "the run failed: " + failed[0]);
