@@ -45,7 +45,8 @@ public final class SimulationBenchmark {
         var c = m.result().controllerCosts();
         var mw = m.result().middlewareCosts();
         long serialization = c.encodingNanos() + mw.decodingNanos();
-        long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
+        long writes = c.writingNanos() + mw.writingNanos();
+        long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - writes - agent[0] - agent[1];
         out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated in %.2f s: %.0fx real time; "
                 + "%d control steps, %d reasoning cycles, %d artifact steps%n", seed, seconds, wall / 1e9, seconds / (wall / 1e9),
                 m.result().steps(), m.run().cycles(), m.run().artifactSteps());
@@ -56,7 +57,7 @@ public final class SimulationBenchmark {
         row("devices (sensors, camera, gripper, battery)", sim[1], wall, steps);
         row("sampling the devices into SensorInfo", c.samplingNanos(), wall, steps);
         row("serialization (ObjectOutputStream, ObjectInputStream)", serialization, wall, steps);
-        row("socket writes", c.writingNanos(), wall, steps);
+        row("socket writes (the step's frame, the agent's answer)", writes, wall, steps);
         row("artifact (middleware steps, operation threads)", agent[0], wall, steps);
         row("reasoning (agent cycles)", agent[1], wall, steps);
         row("waiting: socket and thread wake-ups", rest, wall, steps);

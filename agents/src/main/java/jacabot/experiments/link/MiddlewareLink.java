@@ -403,8 +403,10 @@ public final class MiddlewareLink implements AutoCloseable, RobotConnection.Owne
             seqs[i] = number(frames.get(i), now, step);
         }
         try {
+            long t0 = System.nanoTime();
             c.send(seqs, now, frames);
             lastSentNanos = System.nanoTime();
+            costs.addWriting(lastSentNanos - t0);
             return true;
         } catch (IOException e) {
             c.close("cannot send the answer to step " + step + ": " + e.getMessage());

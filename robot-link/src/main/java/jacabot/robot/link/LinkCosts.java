@@ -4,8 +4,8 @@ import java.util.concurrent.atomic.LongAdder;
 
 /**
  * Where the link's own time goes, in wall-clock nanoseconds, for the benchmarks: sampling the
- * devices into {@link SensorInfo}s, encoding a step's frame, writing it to the socket (on the
- * controller's side), decoding frames (on the middleware's). What a step costs beyond these and
+ * devices into {@link SensorInfo}s, encoding a step's frame, writing to the socket (the controller's
+ * frames, the middleware's lockstep answers), decoding frames (on the middleware's side). What a step costs beyond these and
  * the two ends' work is waiting: the socket's and the threads' wake-ups. Thread-safe.
  */
 public final class LinkCosts {
