@@ -24,6 +24,8 @@ final class ArtifactType {
     private final Map<String, List<OpMethod>> operations = new LinkedHashMap<>();
     private final Map<String, List<Method>> guards = new LinkedHashMap<>();
     private final List<Method> inits = new ArrayList<>();
+    /** The operations that never wait ({@link AwaitAnalysis}); read from the class files on first use. */
+    private Set<Method> neverWaiting;
 
     private ArtifactType(Class<? extends Artifact> type) {
         this.type = type;
@@ -90,6 +92,16 @@ final class ArtifactType {
         throw new IllegalArgumentException("operation " + op.getName() + " of " + type.getName()
                 + " names guard " + name + ", but no @GUARD " + name + " with "
                 + op.getParameterCount() + " parameter(s) exists");
+    }
+
+    /** {@return whether {@code op} never waits, so that a stepped workspace may run it on the caller's thread} */
+    synchronized boolean neverWaits(OpMethod op) {
+        if (neverWaiting == null) {
+            List<Method> all = new ArrayList<>();
+            operations.values().forEach(ops -> ops.forEach(o -> all.add(o.method())));
+            neverWaiting = AwaitAnalysis.neverWaiting(type, all);
+        }
+        return op.guard() == null && neverWaiting.contains(op.method());
     }
 
     Class<? extends Artifact> type() {

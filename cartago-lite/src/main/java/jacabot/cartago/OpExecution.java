@@ -43,6 +43,11 @@ final class OpExecution implements Runnable {
         return new OpExecution(core, null, new Object[0], agent, null);
     }
 
+    /** {@return whether this operation never waits ({@link AwaitAnalysis}): a stepped workspace runs it on its own thread} */
+    boolean neverWaits() {
+        return op != null && core.type().neverWaits(op);
+    }
+
     AgentId agent() {
         return agent;
     }

@@ -28,8 +28,12 @@ import java.util.function.BooleanSupplier;
 final class SteppedScheduler implements Scheduler {
     private static final Comparator<Waiter> ORDER = Comparator.comparingLong(Waiter::key).thenComparingLong(Waiter::seq);
 
-    /** A step waiting for its turn; {@code launch} steps start a new operation on a carrier. */
-    private record Waiter(long key, long seq, OpExecution op, BooleanSupplier ready, boolean underLock, boolean launch) {
+    /**
+     * A step waiting for its turn; {@code launch} steps start a new operation on a carrier, or on
+     * the runner's own thread when it never waits ({@code here}).
+     */
+    private record Waiter(long key, long seq, OpExecution op, BooleanSupplier ready, boolean underLock, boolean launch,
+                          boolean here) {
     }
 
     private final String workspace;
@@ -56,7 +60,7 @@ final class SteppedScheduler implements Scheduler {
 
     @Override
     public synchronized void launch(OpExecution op) {
-        waiting.add(new Waiter(clock.nowMillis(), seq++, op, () -> true, false, true));
+        waiting.add(new Waiter(clock.nowMillis(), seq++, op, () -> true, false, true, op.neverWaits()));
     }
 
     @Override
@@ -157,8 +161,15 @@ final class SteppedScheduler implements Scheduler {
         try {
             int steps = 0;
             for (Waiter next = drainAndPick(); next != null; next = drainAndPick()) {
-                grant(next);
-                returned.acquireUninterruptibly();
+                if (next.here()) {
+                    // the runner would only wait for a carrier: two thread wake-ups saved
+                    next.op().slot.inline = true;
+                    next.op().slot.turn = true;
+                    next.op().run();
+                } else {
+                    grant(next);
+                    returned.acquireUninterruptibly();
+                }
                 steps++;
             }
             return steps;
@@ -179,7 +190,7 @@ final class SteppedScheduler implements Scheduler {
         Waiter waiter;
         synchronized (this) {
             op.slot.outside = false;
-            waiter = new Waiter(key, seq++, op, ready, underLock, false);
+            waiter = new Waiter(key, seq++, op, ready, underLock, false, false);
             waiting.add(waiter);
         }
         if (op.slot.turn) {
@@ -231,7 +242,7 @@ final class SteppedScheduler implements Scheduler {
         }
         candidates.sort(ORDER);
         for (Waiter w : candidates) {
-            if (w.launch() && !reserveCarrier()) {
+            if (w.launch() && !w.here() && !reserveCarrier()) {
                 continue;
             }
             if (w.launch() || isReady(w)) {

@@ -68,7 +68,37 @@ class InlineOperationTest {
             assertEquals(null, probe(ws).lastThread, "neither ran yet: the first one is still queued");
             assertEquals(2, ws.runPending());
             assertTrue(first.join().succeeded() && second.join().succeeded());
-            assertTrue(probe(ws).lastThread.startsWith("cartago-main-op-"), probe(ws).lastThread);
+            // it never waits (AwaitAnalysis), so runPending ran it on this thread rather than a carrier's
+            assertEquals(Thread.currentThread().getName(), probe(ws).lastThread);
+        }
+    }
+
+    /** Remembers the thread of each step of an operation that waits. */
+    public static final class Sleeper extends Artifact {
+        final java.util.List<String> threads = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+        @OPERATION
+        void nap() {
+            threads.add(Thread.currentThread().getName());
+            await_time(0);
+            threads.add(Thread.currentThread().getName());
+        }
+    }
+
+    @Test
+    void atRunPendingAnOperationThatMayWaitRunsOnACarrierAndOneThatNeverWaitsHere() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            AgentId host = ws.join("host", new RecordingObserver());
+            ws.createArtifact("probe", Probe.class);
+            ws.createArtifact("sleeper", Sleeper.class);
+            CompletableFuture<OpOutcome> nap = Calls.start(ws, host, OpTarget.name("sleeper"), "nap");
+            CompletableFuture<OpOutcome> inc = Calls.start(ws, host, OpTarget.name("probe"), "inc");
+            ws.runPending();
+            assertTrue(nap.join().succeeded() && inc.join().succeeded());
+            assertEquals(Thread.currentThread().getName(), probe(ws).lastThread);
+            var sleeper = ws.artifactObject(ws.lookup("sleeper").orElseThrow(), Sleeper.class).orElseThrow();
+            assertEquals(2, sleeper.threads.size());
+            assertTrue(sleeper.threads.stream().allMatch(t -> t.startsWith("cartago-main-op-")), sleeper.threads.toString());
         }
     }
 
