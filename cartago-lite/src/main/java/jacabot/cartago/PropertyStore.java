@@ -105,6 +105,9 @@ final class PropertyStore {
 
     /** Makes the working version the committed one; {@return what observers must be told} */
     List<Change> commit() {
+        if (sameProperties()) {
+            return commitValues();
+        }
         List<Change> changes = new ArrayList<>();
         List<Committed> next = new ArrayList<>();
         for (ObsProperty p : working) {
@@ -123,6 +126,39 @@ final class PropertyStore {
         }
         committed = next;
         return changes;
+    }
+
+    /** {@return whether no property was defined or removed since the last commit (the usual case)} */
+    private boolean sameProperties() {
+        if (working.size() != committed.size()) {
+            return false;
+        }
+        for (int i = 0; i < working.size(); i++) {
+            if (working.get(i) != committed.get(i).property()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** {@link #commit()} when only values may have changed: an update replaces a property's values array. */
+    private List<Change> commitValues() {
+        List<Change> changes = null;
+        for (int i = 0; i < working.size(); i++) {
+            ObsProperty p = working.get(i);
+            Committed before = committed.get(i);
+            if (p.values() == before.values()) {
+                continue;
+            }
+            if (!p.sameValues(before.values())) {
+                if (changes == null) {
+                    changes = new ArrayList<>();
+                }
+                changes.add(new Change(PropertySnapshot.of(p.getName(), before.values()), p.snapshot()));
+            }
+            committed.set(i, new Committed(p, p.values()));
+        }
+        return changes == null ? List.of() : changes;
     }
 
     /** Forgets every change since the last commit, including definitions and removals. */
