@@ -267,7 +267,9 @@ public final class RobotController implements AutoCloseable {
                     case CLOSED:
                         return null;
                     default:
-                        failSafe("the link to the middleware dropped"); // then resend this step
+                        synchronized (world) { // it stops the wheels: between two physics steps, as a viewer reads them
+                            failSafe("the link to the middleware dropped"); // then resend this step
+                        }
                 }
             }
         } catch (InterruptedException e) {
