@@ -105,8 +105,13 @@ public class CAgentArch extends LocalArch {
         return a;
     }
 
-    private static Literal belief(ArtifactId id, PropertySnapshot p) {
-        return new Literal(p.name(), TermConverter.toTerms(p.values()), annots(id, "obs_prop"), false);
+    /** The annotations of each artifact's property beliefs, made once (used on the agent's thread only, in sense). */
+    private final Map<ArtifactId, List<Term>> propertyAnnots = new HashMap<>();
+
+    private Literal belief(ArtifactId id, PropertySnapshot p) {
+        // sorted and immutable, so the literal keeps the list as it is
+        List<Term> annots = propertyAnnots.computeIfAbsent(id, k -> new Literal("a", List.of(), annots(k, "obs_prop"), false).annots());
+        return new Literal(p.name(), TermConverter.toTerms(p.values()), annots, false);
     }
 
     private void add(Agent ag, ArtifactId id, PropertySnapshot p) {
@@ -157,7 +162,10 @@ public class CAgentArch extends LocalArch {
 
         @Override
         public void focusEnded(ArtifactId artifact, List<PropertySnapshot> properties, boolean disposed) {
-            queue(ag -> properties.forEach(p -> remove(ag, artifact, p)));
+            queue(ag -> {
+                properties.forEach(p -> remove(ag, artifact, p));
+                propertyAnnots.remove(artifact);
+            });
         }
     }
 }
