@@ -9,7 +9,6 @@ import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorDataWriter;
-import jacabot.robot.link.SpinningInput;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -223,9 +222,7 @@ final class RobotLink {
                 everConnected = true;
                 backoff = config.minBackoffMs();
                 config.log().accept("connected to the middleware at " + config.host() + ":" + config.port());
-                // lockstep: the middleware's answer follows our frame within its turn
-                long spin = config.lockstep() && config.tls() == null ? SpinningInput.LOCKSTEP_SPIN_NANOS : 0;
-                CommandReader reader = new CommandReader(new SpinningInput(s.getInputStream(), spin), config.clock());
+                CommandReader reader = new CommandReader(s.getInputStream(), config.clock());
                 if (config.lockstep()) {
                     LentReader l = new LentReader(reader);
                     lent = l;

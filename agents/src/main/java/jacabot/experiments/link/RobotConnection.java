@@ -13,7 +13,6 @@ import jacabot.robot.link.ReadingCheck;
 import jacabot.robot.link.SensorDataReader;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorInfoFilter;
-import jacabot.robot.link.SpinningInput;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -223,9 +222,7 @@ final class RobotConnection {
             owner.attached(this);
             attached = true;
             check = new ReadingCheck(h.sensors());
-            // lockstep: the controller's next frame follows our answer within its step's work
-            long spin = h.lockstep() && !(socket instanceof javax.net.ssl.SSLSocket) ? SpinningInput.LOCKSTEP_SPIN_NANOS : 0;
-            var r = new SensorDataReader(new SpinningInput(socket.getInputStream(), spin), limits);
+            var r = new SensorDataReader(socket.getInputStream(), limits);
             r.measure(costs);
             reader = r;
             while (true) {
