@@ -21,6 +21,10 @@ public final class IntendedMeans {
     private StepList steps;
     /** Variables of the current step renamed apart when it posted an event (caller side). */
     private Map<Var, Var> renamedVars;
+    /** The last loop turn's steps, made for the loop step's list {@code loopAt} and body {@code loopBody}. */
+    private StepList loopAt;
+    private List<BodyStep> loopBody;
+    private StepList loopTurn;
 
     IntendedMeans(Plan plan, Trigger trigger, Unifier unif) {
         this.plan = plan;
@@ -115,6 +119,15 @@ public final class IntendedMeans {
         if (steps == null) {
             insertAfterCurrent(List.of(then));
             insertAfterCurrent(more);
+        } else if (steps.head == then) {
+            // a loop's later turns: the loop step followed by what follows it is the current list
+            // itself, and the turn's list is the same as the last turn's (the lists never change)
+            if (loopAt != steps || loopBody != more) {
+                loopAt = steps;
+                loopBody = more;
+                loopTurn = new StepList(then, StepList.of(more, steps));
+            }
+            steps = loopTurn;
         } else {
             steps = new StepList(steps.head, StepList.of(more, new StepList(then, steps.next)));
         }
