@@ -136,9 +136,9 @@ final class Bindings {
         return mark >= size ? NONE : Arrays.copyOfRange(pairs, 2 * mark, 2 * size);
     }
 
-    /** Binds the pairs of a {@link #suffix} again (its variables are unbound here). */
-    void append(Object[] more) {
-        for (int i = 0; i < more.length; i += 2) {
+    /** Binds the first {@code n} slots of pairs of a {@link #suffix} again (its variables are unbound here). */
+    void append(Object[] more, int n) {
+        for (int i = 0; i < n; i += 2) {
             put((Var) more[i], (Term) more[i + 1]);
         }
     }

@@ -80,7 +80,12 @@ public final class Unifier {
 
     /** Makes the bindings of a {@link #bindingsSince} again. */
     void rebind(Object[] pairs) {
-        bindings.append(pairs);
+        bindings.append(pairs, pairs.length);
+    }
+
+    /** Makes the bindings of the first {@code n} slots of {@code pairs} again. */
+    void rebind(Object[] pairs, int n) {
+        bindings.append(pairs, n);
     }
 
     /** {@return the variable's own binding (one step, not dereferenced), or null} */
@@ -88,16 +93,16 @@ public final class Unifier {
         return bindings.get(v);
     }
 
-    /** Replaces this unifier's bindings with the first {@code mark} of another's and then {@code pairs}. */
-    void setFromPrefix(Unifier other, int mark, Object[] pairs) {
+    /** Replaces this unifier's bindings with the first {@code mark} of another's and then the first {@code n} slots of {@code pairs}. */
+    void setFromPrefix(Unifier other, int mark, Object[] pairs, int n) {
         bindings.setFromPrefix(other.bindings, mark);
-        bindings.append(pairs);
+        bindings.append(pairs, n);
     }
 
-    /** {@return a new unifier with this one's first {@code mark} bindings and then {@code pairs}} */
-    Unifier prefixWith(int mark, Object[] pairs) {
+    /** {@return a new unifier with this one's first {@code mark} bindings and then the first {@code n} slots of {@code pairs}} */
+    Unifier prefixWith(int mark, Object[] pairs, int n) {
         var u = new Unifier(bindings.prefix(mark), evaluator);
-        u.bindings.append(pairs);
+        u.bindings.append(pairs, n);
         return u;
     }
 
@@ -267,7 +272,7 @@ public final class Unifier {
         return !(t instanceof jacabot.agent.syntax.ObjectTerm);
     }
 
-    private List<Term> applyAll(List<Term> terms) {
+    List<Term> applyAll(List<Term> terms) {
         // one and two terms (most literals) without the array List.of(array) would copy
         switch (terms.size()) {
             case 0:
