@@ -262,6 +262,16 @@ final class BodyExecutor {
      * given.
      */
     Literal prepareForEvent(Term term, IntendedMeans im, IntendedMeans caller) {
+        if (term instanceof Literal l && l.annots().isEmpty() && l.ns() == null) {
+            // the usual +b(X) or !g(N + 1): one literal made, with its values and source(self)
+            List<Term> args = im.unifier().applyAll(l.args());
+            if (allGround(args)) {
+                if (caller != null) {
+                    caller.clearRenamedVars();
+                }
+                return l.withArgsFromSelf(args);
+            }
+        }
         Term applied = im.unifier().apply(term);
         if (!(applied instanceof Literal)) {
             throw new IllegalStateException("not a literal: " + applied);
@@ -279,6 +289,15 @@ final class BodyExecutor {
             }
         }
         return body.hasSource() ? body : body.addAnnot(Literal.SOURCE_SELF);
+    }
+
+    private static boolean allGround(List<Term> terms) {
+        for (int k = 0, n = terms.size(); k < n; k++) {
+            if (!terms.get(k).isGround()) {
+                return false;
+            }
+        }
+        return true;
     }
 
     static List<Term> elementsOf(Term t) {

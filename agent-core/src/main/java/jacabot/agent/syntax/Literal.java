@@ -179,6 +179,11 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         return withAnnots(all);
     }
 
+    /** {@return a literal with these arguments annotated {@code [source(self)]} only (a belief or goal of the agent's own)} */
+    public Literal withArgsFromSelf(List<Term> newArgs) {
+        return new Literal(functor, newArgs, SOURCE_SELF_ONLY, negated, false, ns);
+    }
+
     public Literal addAnnot(Term annot) {
         int n = annots.size();
         if (n == 0) {
