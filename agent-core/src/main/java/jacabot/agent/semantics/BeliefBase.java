@@ -235,6 +235,14 @@ public final class BeliefBase {
             List.of(Literal.DEFAULT_NS, Literal.atom("kqml")));
     /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
     private Group spare;
+    /** The group last put in the map: the last in its order while it is there. */
+    private Group newest;
+    /**
+     * The newest group, emptied but left in the map (where an empty group changes nothing), so
+     * that a belief added and removed in a loop does not take its group out and put it back each
+     * turn; it leaves once another group comes (it would not be the last any more).
+     */
+    private Group parked;
     private int size;
 
     /** The lookup key; the belief base is used by its agent's thread only. */
@@ -246,7 +254,16 @@ public final class BeliefBase {
 
     private Group groupFor(Literal l) {
         Group g = group(l);
+        if (g == parked) {
+            parked = null;
+        }
         if (g == null) {
+            if (parked != null) {
+                groups.remove(parked.key);
+                spare = parked;
+                parked = null;
+                probe.set(l);
+            }
             if (l.ns() != null) {
                 knownNs.add(l.ns()); // the default namespace is there from the start
             }
@@ -256,6 +273,7 @@ public final class BeliefBase {
                 g.key = Key.of(l);
             }
             groups.put(g.key, g);
+            newest = g;
         }
         return g;
     }
@@ -546,8 +564,12 @@ public final class BeliefBase {
         group.remove(e);
         size--;
         if (group.entries.isEmpty()) {
-            groups.remove(probe.set(stored));
-            spare = group;
+            if (group == newest) {
+                parked = group;
+            } else {
+                groups.remove(probe.set(stored));
+                spare = group;
+            }
         }
     }
 
