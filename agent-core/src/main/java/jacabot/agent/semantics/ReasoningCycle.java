@@ -24,6 +24,7 @@ final class ReasoningCycle {
     private final Circumstance c;
     private final BodyExecutor exec;
     private final MessageHandler messages;
+    private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
 
@@ -179,7 +180,7 @@ final class ReasoningCycle {
         if (ag.planListener() != null) {
             ag.planListener().planSelected(se, p);
         }
-        IntendedMeans im = new IntendedMeans(p, se.trigger(), u);
+        IntendedMeans im = start.of(p, se.trigger(), u);
         if (se.trigger().isAchieveGoal() && se.trigger().isAddition()) {
             ag.goalStates().post(se.trigger(), GoalStates.State.executing, null);
         }
