@@ -391,12 +391,28 @@ public final class Agent {
         if (n < ia.minArgs() || n > ia.maxArgs()) {
             throw IaException.wrongArgumentCount(l.functor(), n);
         }
+        if (!ia.appliesArguments()) {
+            // a loop's step comes back every turn: its arguments as they are, in the same array
+            PlainArgs last = plainArgs;
+            if (last.formula() != l) {
+                last = new PlainArgs(l, l.args().toArray(new Term[n]));
+                plainArgs = last;
+            }
+            return last.args();
+        }
         Term[] args = new Term[n];
         for (int i = 0; i < n; i++) {
-            args[i] = ia.appliesArguments() ? u.apply(l.arg(i)) : l.arg(i);
+            args[i] = u.apply(l.arg(i));
         }
         return args;
     }
+
+    /** A formula given to an action that takes its arguments as they are, and those arguments. */
+    private record PlainArgs(Literal formula, Term[] args) {
+    }
+
+    /** The last {@link PlainArgs}, in one field: a solver may run on another thread too. */
+    private PlainArgs plainArgs = new PlainArgs(null, new Term[0]);
 
     // ---- console ------------------------------------------------------------------------------
 

@@ -24,7 +24,10 @@ public interface InternalAction {
         return false;
     }
 
-    /** {@return whether arguments are given with the unifier applied (control structures say no)} */
+    /**
+     * {@return whether arguments are given with the unifier applied (control structures say no)}
+     * Arguments not applied come in an array shared by the calls for one formula: not to be changed.
+     */
     default boolean appliesArguments() {
         return true;
     }
