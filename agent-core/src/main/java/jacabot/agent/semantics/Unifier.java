@@ -353,6 +353,13 @@ public final class Unifier {
         return true;
     }
 
+    private boolean unifyLiterals(Literal la, Literal lb) {
+        if (!la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
+            return false;
+        }
+        return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+    }
+
     /** The namespaces of two literals (null, the default one, unifies with {@code default}). */
     private boolean unifyNs(Literal a, Literal b) {
         Term na = a.ns();
@@ -372,6 +379,13 @@ public final class Unifier {
     private boolean unify(Term a, Term b) {
         a = deref(a);
         b = deref(b);
+        // the usual cases first: two literals, two numbers (neither side a variable or arithmetic)
+        if (a instanceof Literal la && b instanceof Literal lb) {
+            return unifyLiterals(la, lb);
+        }
+        if (a instanceof NumberTerm na && b instanceof NumberTerm nb) {
+            return na.value() == nb.value();
+        }
         if (a instanceof Var va) {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
@@ -405,10 +419,7 @@ public final class Unifier {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
         if (a instanceof Literal la) {
-            if (!(b instanceof Literal lb) || !la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
-                return false;
-            }
-            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+            return b instanceof Literal lb && unifyLiterals(la, lb);
         }
         if (a instanceof ListTerm.Cons ca) {
             if (!(b instanceof ListTerm.Cons cb)) {
