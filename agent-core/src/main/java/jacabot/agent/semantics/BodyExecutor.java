@@ -247,6 +247,9 @@ final class BodyExecutor {
      * still pursued T ms (on the agent's clock) after it was posted.
      */
     private Literal withDeadline(Literal goal) {
+        if (goal.annots().size() < 2) {
+            return goal; // a goal made ready for its event has a source: nothing else to look at
+        }
         Literal d = goal.getAnnot("hard_deadline");
         if (d != null && d.arity() == 1 && d.args().get(0) instanceof NumberTerm n) {
             long ms = (long) n.value();
