@@ -72,7 +72,10 @@ final class Proof {
     private final int base;
     private final Term formula;
     private final int startDepth;
-    private final ArrayList<Choice> choices = new ArrayList<>();
+    /** The choice points, the last on top: an array made at the first (a loop's condition often has none). */
+    private Choice[] choices = NO_CHOICES;
+    private int nChoices;
+    private static final Choice[] NO_CHOICES = new Choice[0];
     private Goals goals;
     private boolean started;
     private List<Var> formulaVars;
@@ -212,8 +215,8 @@ final class Proof {
     }
 
     private boolean backtrack() {
-        while (!choices.isEmpty()) {
-            Choice c = choices.get(choices.size() - 1);
+        while (nChoices > 0) {
+            Choice c = choices[nChoices - 1];
             w.undoTo(c.mark);
             if (c.resume(this)) {
                 return true;
@@ -222,9 +225,16 @@ final class Proof {
         return false;
     }
 
+    private void push(Choice c) {
+        if (nChoices == choices.length) {
+            choices = java.util.Arrays.copyOf(choices, Math.max(8, 2 * nChoices));
+        }
+        choices[nChoices++] = c;
+    }
+
     private void pop(Choice c) {
-        if (!choices.isEmpty() && choices.get(choices.size() - 1) == c) {
-            choices.remove(choices.size() - 1);
+        if (nChoices > 0 && choices[nChoices - 1] == c) {
+            choices[--nChoices] = null;
         }
     }
 
@@ -259,7 +269,7 @@ final class Proof {
                     goals = new Goals(e.left(), new Goals(e.right(), goals, depth), depth);
                     return true;
                 default:
-                    choices.add(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
+                    push(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
                     goals = new Goals(e.left(), goals, depth);
                     return true;
             }
@@ -280,7 +290,7 @@ final class Proof {
                 return enter(q, candidates.get(0), goals, depth);
             default:
                 var c = new Candidates(w.size(), goals, q, candidates, depth);
-                choices.add(c);
+                push(c);
                 return c.resume(this);
         }
     }
@@ -374,7 +384,7 @@ final class Proof {
         }
         w.rebind(ways.get(0));
         if (ways.size() > 1) {
-            choices.add(new Ways(mark, goals, ways));
+            push(new Ways(mark, goals, ways));
         }
         return true;
     }
@@ -397,7 +407,7 @@ final class Proof {
         }
         if (result instanceof Iterator<?> it) {
             var c = new Solutions(mark, goals, (Iterator<Unifier>) it);
-            choices.add(c);
+            push(c);
             return c.resume(this);
         }
         return false;
