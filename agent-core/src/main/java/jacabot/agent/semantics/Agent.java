@@ -356,6 +356,15 @@ public final class Agent {
         return new Var(like.name(), -(++freshSerial));
     }
 
+    /** Takes the numbers {@code n} fresh variables would take (where Jason makes variables that nobody sees). */
+    void skipFreshVars(int n) {
+        if (parser != null) {
+            parser.varCounter().addAndGet(n);
+        } else {
+            freshSerial += n;
+        }
+    }
+
     public Var freshVar(Var like) {
         return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);
     }

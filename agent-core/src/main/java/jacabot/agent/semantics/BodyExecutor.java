@@ -225,12 +225,15 @@ final class BodyExecutor {
     /** {@code -+b}: removes the first belief like b (any arguments), then adds b. */
     private void delAddBel(Intention i, IntendedMeans im, Term term) {
         Literal body = prepareForEvent(term, im, im);
-        Term[] anyArgs = new Term[body.arity()];
-        for (int k = 0; k < anyArgs.length; k++) {
-            anyArgs[k] = ag.freshVar(ANY);
+        Literal removed = removeAnyArgs(body);
+        if (removed == NOT_GROUND) {
+            Term[] anyArgs = new Term[body.arity()];
+            for (int k = 0; k < anyArgs.length; k++) {
+                anyArgs[k] = ag.freshVar(ANY);
+            }
+            Literal pattern = body.withArgs(List.of(anyArgs));
+            removed = ag.removeBelief(pattern, ag.newUnifier());
         }
-        Literal pattern = body.withArgs(List.of(anyArgs));
-        Literal removed = ag.removeBelief(pattern, ag.newUnifier());
         if (removed != null) {
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
         }
@@ -240,6 +243,39 @@ final class BodyExecutor {
         } else {
             rc.removeActionReQueue(i);
         }
+    }
+
+    /** What {@link #removeAnyArgs} answers when it cannot tell. */
+    private static final Literal NOT_GROUND = Literal.atom("not ground");
+    /** Tries annotations (ground against ground: it binds nothing and stays empty). */
+    private final Unifier groundAnnots = new Unifier();
+
+    /**
+     * As removing the first belief like {@code body} with each argument a fresh variable (what
+     * {@code -+b} removes), among ground facts and with {@code body}'s annotations ground: the
+     * facts are tried by their annotations alone, as the fresh variables take any arguments, and
+     * the pattern is not built. {@return the removed part, null when no belief is like it, or
+     * {@link #NOT_GROUND} when a fact or an annotation has variables (nothing was done)}
+     */
+    private Literal removeAnyArgs(Literal body) {
+        if (body.arity() == 0 || body.ns() != null || !allGround(body.annots())) {
+            return NOT_GROUND;
+        }
+        for (BeliefBase.Entry e : ag.beliefBase().current(body)) {
+            if (e.rule() != null) {
+                continue;
+            }
+            if (!e.isGround()) {
+                return NOT_GROUND;
+            }
+            if (groundAnnots.unifiesAnnots(body.annots(), e.literal().annots())) {
+                // the pattern's fresh variables would have taken numbers of the agent's counter
+                ag.skipFreshVars(body.arity());
+                return ag.beliefBase().remove(e.literal(), e.literal().withAnnots(body.annots()));
+            }
+        }
+        ag.skipFreshVars(body.arity());
+        return null;
     }
 
     /**

@@ -597,6 +597,16 @@ public final class Unifier {
         return subTail == null || unify(subTail, ListTerm.of(left));
     }
 
+    /** {@return whether each annotation of {@code sub} unifies with one of {@code sup}} Nothing is bound when not. */
+    boolean unifiesAnnots(List<Term> sub, List<Term> sup) {
+        int mark = bindings.size();
+        if (subsetAnnots(sub, sup)) {
+            return true;
+        }
+        bindings.truncate(mark);
+        return false;
+    }
+
     private boolean subsetAnnots(List<Term> sub, List<Term> sup) {
         for (int i = 0, n = sub.size(); i < n; i++) {
             Term x = sub.get(i);
