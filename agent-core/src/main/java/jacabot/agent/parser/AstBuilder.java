@@ -59,7 +59,23 @@ final class AstBuilder {
     /** {@code _X}: the same variable wherever written in the clause, yet it takes a number, as in Jason. */
     private Var unnamed(String name) {
         varCounter.incrementAndGet();
-        return new Var(name.intern());
+        return named(name);
+    }
+
+    /**
+     * The variables written so far, one object per name: equal variables are equal objects, and
+     * a unifier finds a variable bound by the same object (say, a plan's N in its trigger and
+     * body) at the first comparison. Names are interned, as functors are.
+     */
+    private final java.util.HashMap<String, Var> named = new java.util.HashMap<>();
+
+    private Var named(String name) {
+        Var v = named.get(name);
+        if (v == null) {
+            v = new Var(name.intern());
+            named.put(v.name(), v);
+        }
+        return v;
     }
 
     Namespaces namespaces() {
@@ -428,7 +444,7 @@ final class AstBuilder {
         }
         if (ctx instanceof VarLiteralContext v) {
             Term ns = varNs(v.nsPrefix());
-            Var var = new Var(v.VAR().getText().intern());
+            Var var = named(v.VAR().getText());
             return ns == null && v.list() == null ? var : annotated(var, v.list() == null ? ListTerm.EMPTY : list(v.list()), ns);
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
@@ -474,7 +490,7 @@ final class AstBuilder {
             if (text.startsWith("_")) {
                 return text.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(text);
             }
-            return new Var(text.intern());
+            return named(text);
         }
         if (text.equals(Literal.DEFAULT_NS_NAME)) {
             return null;
@@ -543,7 +559,7 @@ final class AstBuilder {
         ListTailContext t = ctx.listTail();
         if (t != null) {
             if (t.VAR() != null) {
-                tail = new Var(t.VAR().getText().intern());
+                tail = named(t.VAR().getText());
             } else if (t.UNNAMEDVAR() != null) {
                 String name = t.UNNAMEDVAR().getText();
                 tail = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);

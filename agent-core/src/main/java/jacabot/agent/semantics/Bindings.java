@@ -71,14 +71,15 @@ final class Bindings {
                 if (at == 0) {
                     return -1;
                 }
-                Object k = p[2 * (at - 1)];
+                Var k = (Var) p[2 * (at - 1)];
                 if (k == v || k.equals(v)) {
                     return at - 1;
                 }
             }
         }
         for (int i = size - 1; i >= 0; i--) {
-            Object k = p[2 * i];
+            // as a Var, the call binds to Var.equals (no dispatch on Object's)
+            Var k = (Var) p[2 * i];
             if (k == v || k.equals(v)) {
                 return i;
             }

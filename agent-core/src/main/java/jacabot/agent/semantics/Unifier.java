@@ -152,7 +152,10 @@ public final class Unifier {
     public Term apply(Term t) {
         if (t instanceof Var v) {
             Term d = deref(v);
-            return d instanceof Var ? d : apply(d);
+            return d instanceof Var || d instanceof NumberTerm ? d : apply(d);
+        }
+        if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
+            return t; // before the long list of compound kinds below
         }
         if (t instanceof Literal l) {
             if (!needsApply(l)) {
