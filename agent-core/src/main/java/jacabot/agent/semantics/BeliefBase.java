@@ -22,6 +22,8 @@ public final class BeliefBase {
         private Literal literal;
         private final Rule rule;
         private final boolean ground;
+        /** The hash of a fact's arguments, kept by its group's {@link FactIndex}. */
+        int argsHash;
 
         Entry(Literal literal) {
             this.literal = literal;
@@ -107,32 +109,6 @@ public final class BeliefBase {
     }
 
     /**
-     * A fact's arguments as a key, with their hash mixed: a whole number's hash (a double's) has
-     * its low bits zero, so the 20 000 facts n(N) a receiver is told filled a few buckets (turned
-     * into trees) of the list-hashed map.
-     */
-    private static final class Args {
-        private List<Term> args;
-        private int hash;
-
-        Args set(List<Term> a) {
-            args = a;
-            hash = (int) ((a.hashCode() * 0x9E3779B97F4A7C15L) >>> 32);
-            return this;
-        }
-
-        @Override
-        public boolean equals(Object o) {
-            return o instanceof Args x && x.args.equals(args);
-        }
-
-        @Override
-        public int hashCode() {
-            return hash;
-        }
-    }
-
-    /**
      * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
      * snapshot reused by queries until the group changes, and an index by first argument built
      * once a large group is queried often enough unchanged.
@@ -150,12 +126,10 @@ public final class BeliefBase {
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
-        private final HashMap<Args, Entry> facts = new HashMap<>();
-        /** The lookup key of {@link #facts} (the belief base is used by its agent's thread only). */
-        private final Args probe = new Args();
+        private final FactIndex facts = new FactIndex();
 
         Entry fact(List<Term> args) {
-            return facts.get(probe.set(args));
+            return facts.get(args);
         }
 
         /** The entries by first argument, each list with the unkeyed entries in their places. */
@@ -221,7 +195,7 @@ public final class BeliefBase {
             snapshot = null;
             entries.removeFirstOccurrence(e);
             if (e.rule == null) {
-                facts.remove(probe.set(e.literal.args()));
+                facts.remove(e);
             }
         }
     }
@@ -406,7 +380,7 @@ public final class BeliefBase {
             return merge(known, l);
         }
         Entry e = new Entry(l);
-        group.facts.put(new Args().set(l.args()), e);
+        group.facts.add(e);
         group.add(e, atEnd);
         size++;
         return l;
