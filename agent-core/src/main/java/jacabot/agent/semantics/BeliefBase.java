@@ -375,12 +375,13 @@ public final class BeliefBase {
      */
     public Literal add(Literal l, boolean atEnd) {
         var group = groupFor(l);
-        Entry known = group.fact(l.args());
+        int hash = FactIndex.hash(l.args());
+        Entry known = group.facts.get(l.args(), hash);
         if (known != null) {
             return merge(known, l);
         }
         Entry e = new Entry(l);
-        group.facts.add(e);
+        group.facts.add(e, hash);
         group.add(e, atEnd);
         size++;
         return l;

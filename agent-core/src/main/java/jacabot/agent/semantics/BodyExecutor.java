@@ -206,13 +206,17 @@ final class BodyExecutor {
         boolean sameFocus = kind != BodyStep.Kind.DEL_BEL_NEW_FOCUS;
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
         // the usual -b(1) is found by its arguments, without a unifier to try candidates with
-        Literal removed = body.isGround() ? ag.beliefBase().removeFact(body) : null;
+        Literal removed = preparedGround ? ag.beliefBase().removeFact(body) : null;
+        // a plain -b(X, Y) with X and Y bound removed a fact with those arguments: unifying binds nothing
+        boolean unified = removed != null && preparedPlain;
         if (removed == null) {
             removed = ag.removeBelief(body, ag.newUnifier());
         }
         if (removed != null) {
             // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
-            im.unifier().unifies(term, removed);
+            if (!unified) {
+                im.unifier().unifies(term, removed);
+            }
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), sameFocus ? i : null));
             if (!sameFocus) {
                 rc.removeActionReQueue(i);
@@ -295,6 +299,11 @@ final class BodyExecutor {
         return goal;
     }
 
+    /** Whether the last literal {@link #prepareForEvent} made is ground. */
+    private boolean preparedGround;
+    /** Whether it came from a literal with neither annotations nor namespace, its variables all bound. */
+    private boolean preparedPlain;
+
     /**
      * Applies the unifier, renames the free variables apart (remembering the renaming in
      * {@code caller} so that results come back) and adds {@code source(self)} when no source is
@@ -308,15 +317,19 @@ final class BodyExecutor {
                 if (caller != null) {
                     caller.clearRenamedVars();
                 }
+                preparedGround = true;
+                preparedPlain = true;
                 return l.withArgsFromSelf(args);
             }
         }
+        preparedPlain = false;
         Term applied = im.unifier().apply(term);
         if (!(applied instanceof Literal)) {
             throw new IllegalStateException("not a literal: " + applied);
         }
         Literal body = (Literal) applied;
-        if (applied.isGround()) {
+        preparedGround = applied.isGround();
+        if (preparedGround) {
             if (caller != null) {
                 caller.clearRenamedVars();
             }

@@ -22,10 +22,14 @@ final class FactIndex {
 
     /** {@return the fact with these arguments, or null} */
     BeliefBase.Entry get(List<Term> args) {
+        return size == 0 ? null : get(args, hash(args));
+    }
+
+    /** As {@link #get(List)}, with the arguments' {@link #hash} known. */
+    BeliefBase.Entry get(List<Term> args, int h) {
         if (size == 0) {
             return null;
         }
-        int h = hash(args);
         BeliefBase.Entry[] s = slots;
         int mask = s.length - 1;
         for (int i = h & mask; ; i = (i + 1) & mask) {
@@ -39,9 +43,9 @@ final class FactIndex {
         }
     }
 
-    /** Adds a fact whose arguments are not there yet. */
-    void add(BeliefBase.Entry e) {
-        e.argsHash = hash(e.literal().args());
+    /** Adds a fact whose arguments (of this {@link #hash}) are not there yet. */
+    void add(BeliefBase.Entry e, int argsHash) {
+        e.argsHash = argsHash;
         if (2 * (size + 1) > slots.length) {
             grow();
         }
