@@ -147,7 +147,26 @@ final class ReasoningCycle {
 
     private static boolean isRelevant(Trigger planTrigger, Trigger event, Unifier u) {
         return planTrigger.op() == event.op() && planTrigger.type() == event.type()
+                && !firstArgsDiffer(planTrigger.literal(), event.literal())
                 && u.unifies(planTrigger.literal(), event.literal());
+    }
+
+    /**
+     * {@return whether both literals have as first argument a number, or a plain atom, and not
+     * the same} They cannot unify then: {@code +!count(200000)} is tried for every
+     * {@code !count(N)} of a loop, and this answers without the unifier.
+     */
+    private static boolean firstArgsDiffer(Term a, Term b) {
+        if (!(a instanceof Literal la) || !(b instanceof Literal lb) || la.arity() == 0 || lb.arity() == 0) {
+            return false;
+        }
+        Term x = la.arg(0);
+        Term y = lb.arg(0);
+        if (x instanceof jacabot.agent.syntax.NumberTerm nx) {
+            return y instanceof jacabot.agent.syntax.NumberTerm ny && nx.value() != ny.value();
+        }
+        return x instanceof Literal ax && y instanceof Literal ay && ax.isAtom() && ay.isAtom() && ax.ns() == null
+                && ay.ns() == null && !ax.functor().equals(ay.functor());
     }
 
     /** No relevant or applicable plan: goals fail, internal events go on, external ones are dropped. */
