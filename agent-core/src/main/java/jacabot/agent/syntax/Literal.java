@@ -99,6 +99,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     private static List<Term> sortAnnots(List<Term> annots) {
+        if (annots == SOURCE_SELF_ONLY) {
+            return annots; // the agent's own beliefs and goals: nothing to check
+        }
         if (isSortedSet(annots)) {
             return List.copyOf(annots);
         }
