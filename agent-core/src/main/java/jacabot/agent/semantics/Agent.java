@@ -85,7 +85,8 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
-        circumstance.own(goalStates, planLibrary::hasCandidate);
+        circumstance.own(goalStates, planLibrary::hasCandidate,
+                (op, l) -> planLibrary.hasCandidate(op, Trigger.Type.BELIEF, l));
     }
 
     /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */

@@ -239,7 +239,7 @@ final class BodyExecutor {
             removed = ag.removeBelief(pattern, ag.newUnifier());
         }
         if (removed != null) {
-            c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
+            c.addBeliefEvent(Trigger.Op.DEL, removed);
         }
         Literal added = ag.addBelief(body, false);
         if (added != null) {
