@@ -118,8 +118,7 @@ public final class AslParser {
     private AgentProgram parse(String text, String file, SourceResolver.Source from, Set<String> including, Term ns)
             throws AslSyntaxException, IOException {
         var errors = new ErrorCollector(file);
-        AgentSpeakParser parser = newParser(text, errors);
-        var tree = parser.agent();
+        var tree = agentTree(text, errors);
         var builder = new AstBuilder(file, errors);
         builder.setNamespace(ns, nsCounter);
         builder.setVarCounter(varCounter);
@@ -275,6 +274,29 @@ public final class AslParser {
         var b = new AstBuilder(name, errors);
         b.setVarCounter(varCounter);
         return b;
+    }
+
+    /**
+     * Parses a program in ANTLR's two stages: SLL prediction first, which gives the tree LL would
+     * give or stops at the first error, and full LL again only then (for the errors, or for input
+     * that needs it). SLL does a fraction of LL's work when the parser starts cold, as it does at
+     * every launch.
+     */
+    private static AgentSpeakParser.AgentContext agentTree(String text, ErrorCollector errors) {
+        var quiet = new ErrorCollector("");
+        AgentSpeakParser sll = newParser(text, quiet);
+        sll.removeErrorListeners();
+        sll.setErrorHandler(new org.antlr.v4.runtime.BailErrorStrategy());
+        sll.getInterpreter().setPredictionMode(org.antlr.v4.runtime.atn.PredictionMode.SLL);
+        try {
+            AgentSpeakParser.AgentContext tree = sll.agent();
+            if (quiet.errors().isEmpty()) {
+                return tree;
+            }
+        } catch (org.antlr.v4.runtime.misc.ParseCancellationException e) {
+            // an error, or input SLL cannot decide: parse again with LL
+        }
+        return newParser(text, errors).agent();
     }
 
     private static AgentSpeakParser newParser(String text, ErrorCollector errors) {

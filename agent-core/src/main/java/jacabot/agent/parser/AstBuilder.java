@@ -59,7 +59,23 @@ final class AstBuilder {
     /** {@code _X}: the same variable wherever written in the clause, yet it takes a number, as in Jason. */
     private Var unnamed(String name) {
         varCounter.incrementAndGet();
-        return new Var(name);
+        return named(name);
+    }
+
+    /**
+     * The variables written so far, one object per name: equal variables are equal objects, and
+     * a unifier finds a variable bound by the same object (say, a plan's N in its trigger and
+     * body) at the first comparison. Names are interned, as functors are.
+     */
+    private final java.util.HashMap<String, Var> named = new java.util.HashMap<>();
+
+    private Var named(String name) {
+        Var v = named.get(name);
+        if (v == null) {
+            v = new Var(name.intern());
+            named.put(v.name(), v);
+        }
+        return v;
     }
 
     Namespaces namespaces() {
@@ -428,7 +444,7 @@ final class AstBuilder {
         }
         if (ctx instanceof VarLiteralContext v) {
             Term ns = varNs(v.nsPrefix());
-            Var var = new Var(v.VAR().getText());
+            Var var = named(v.VAR().getText());
             return ns == null && v.list() == null ? var : annotated(var, v.list() == null ? ListTerm.EMPTY : list(v.list()), ns);
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
@@ -438,7 +454,9 @@ final class AstBuilder {
             return ns == null && u.list() == null ? var : annotated(var, u.list() == null ? ListTerm.EMPTY : list(u.list()), ns);
         }
         StructureContext s = (StructureContext) ctx;
-        String functor = s.name.getText();
+        // interned, as variable names: the interpreter compares functors and names all the time,
+        // and equal strings that are one object compare at once (as .send and its registry key)
+        String functor = s.name.getText().intern();
         Term ns = s.nsPrefix() != null ? explicitNs(s.nsPrefix()) : inTerm ? null : namespaces.current();
         boolean outer = inTerm;
         inTerm = true;
@@ -472,12 +490,12 @@ final class AstBuilder {
             if (text.startsWith("_")) {
                 return text.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(text);
             }
-            return new Var(text);
+            return named(text);
         }
         if (text.equals(Literal.DEFAULT_NS_NAME)) {
             return null;
         }
-        return text.equals("this_ns") ? namespaces.thisNs() : Literal.atom(text);
+        return text.equals("this_ns") ? namespaces.thisNs() : Literal.atom(text.intern());
     }
 
     /** A variable's namespace: the one written, or else the current one for a formula (Jason's {@code var(NS)}). */
@@ -541,7 +559,7 @@ final class AstBuilder {
         ListTailContext t = ctx.listTail();
         if (t != null) {
             if (t.VAR() != null) {
-                tail = new Var(t.VAR().getText());
+                tail = named(t.VAR().getText());
             } else if (t.UNNAMEDVAR() != null) {
                 String name = t.UNNAMEDVAR().getText();
                 tail = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);

@@ -48,12 +48,16 @@ public final class LocalMAS {
     /**
      * Wakes one sleeping agent thread. The sleeper raises {@code asleep} before it checks for
      * work and a waker raises {@code woken} before it checks {@code asleep}, so one of them sees
-     * the other: a busy agent is woken without a lock, and a sleeping one is never missed.
+     * the other: a busy agent is woken without a lock, and a sleeping one is never missed. The
+     * sleeper parks and the waker unparks it, with no lock: an unpark that comes before the park
+     * makes the park return at once. (With a lock and its condition, a sender of a message
+     * stream took the lock at nearly every message, the receiver catching up and raising asleep
+     * each time, and each waited for the other.)
      */
     private static final class Waker {
         final Agent agent;
-        final ReentrantLock lock = new ReentrantLock();
-        final Condition condition = lock.newCondition();
+        /** The agent's thread, once it runs. */
+        volatile Thread thread;
         volatile boolean woken;
         volatile boolean asleep;
 
@@ -219,21 +223,23 @@ public final class LocalMAS {
     void wake(String name) {
         Waker w = wakers.get(name);
         if (w != null) {
-            w.woken = true;
+            // raised only when down: a message stream to a busy agent then writes nothing that
+            // its thread reads (a woken still raised is the sleeper's to see and lower)
+            if (!w.woken) {
+                w.woken = true;
+            }
             if (w.asleep) {
-                w.lock.lock();
-                try {
-                    w.condition.signalAll();
-                } finally {
-                    w.lock.unlock();
-                }
+                java.util.concurrent.locks.LockSupport.unpark(w.thread);
             }
         }
         wakeStepping();
     }
 
     private void wakeStepping() {
-        wokenInStepping = true;
+        // as a waker's woken: written when down only, since agent threads read the fields around it
+        if (!wokenInStepping) {
+            wokenInStepping = true;
+        }
         if (steppingAsleep) {
             stepLock.lock();
             try {
@@ -361,6 +367,7 @@ public final class LocalMAS {
 
     private void agentLoop(Agent a, CountDownLatch allStarted) {
         Waker w = wakers.get(a.name());
+        w.thread = Thread.currentThread();
         try {
             if (allStarted != null) {
                 allStarted.await();
@@ -370,19 +377,26 @@ public final class LocalMAS {
                     a.reasoningCycle();
                     continue;
                 }
-                w.lock.lock();
+                if (w.woken) {
+                    // a wake came since the last look: look again, without raising asleep,
+                    // which makes every waker unpark this thread
+                    w.woken = false;
+                    continue;
+                }
+                w.asleep = true;
                 try {
-                    w.asleep = true;
                     if (!w.woken && a.canSleep()) {
                         long due = a.nextTimerDue();
                         // capped: a simulated clock may run faster than the wall clock
                         long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, Math.min(50, due - clock.millis()));
-                        w.condition.await(wait, TimeUnit.MILLISECONDS);
+                        java.util.concurrent.locks.LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(wait));
+                        if (Thread.interrupted()) {
+                            throw new InterruptedException();
+                        }
                     }
                     w.woken = false;
                 } finally {
                     w.asleep = false;
-                    w.lock.unlock();
                 }
             }
         } catch (InterruptedException e) {

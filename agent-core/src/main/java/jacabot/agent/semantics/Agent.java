@@ -85,7 +85,8 @@ public final class Agent {
         this.internalActions = internalActions;
         this.random = new Random(seed);
         this.parser = parser;
-        circumstance.own(goalStates, planLibrary::hasCandidate);
+        circumstance.own(goalStates, planLibrary::hasCandidate,
+                (op, l) -> planLibrary.hasCandidate(op, Trigger.Type.BELIEF, l));
     }
 
     /** {@return the goal states, which post {@code ^!g[state(S)]} meta-events} */
@@ -356,6 +357,15 @@ public final class Agent {
         return new Var(like.name(), -(++freshSerial));
     }
 
+    /** Takes the numbers {@code n} fresh variables would take (where Jason makes variables that nobody sees). */
+    void skipFreshVars(int n) {
+        if (parser != null) {
+            parser.varCounter().addAndGet(n);
+        } else {
+            freshSerial += n;
+        }
+    }
+
     public Var freshVar(Var like) {
         return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);
     }
@@ -391,12 +401,28 @@ public final class Agent {
         if (n < ia.minArgs() || n > ia.maxArgs()) {
             throw IaException.wrongArgumentCount(l.functor(), n);
         }
+        if (!ia.appliesArguments()) {
+            // a loop's step comes back every turn: its arguments as they are, in the same array
+            PlainArgs last = plainArgs;
+            if (last.formula() != l) {
+                last = new PlainArgs(l, l.args().toArray(new Term[n]));
+                plainArgs = last;
+            }
+            return last.args();
+        }
         Term[] args = new Term[n];
         for (int i = 0; i < n; i++) {
-            args[i] = ia.appliesArguments() ? u.apply(l.arg(i)) : l.arg(i);
+            args[i] = u.apply(l.arg(i));
         }
         return args;
     }
+
+    /** A formula given to an action that takes its arguments as they are, and those arguments. */
+    private record PlainArgs(Literal formula, Term[] args) {
+    }
+
+    /** The last {@link PlainArgs}, in one field: a solver may run on another thread too. */
+    private PlainArgs plainArgs = new PlainArgs(null, new Term[0]);
 
     // ---- console ------------------------------------------------------------------------------
 

@@ -22,6 +22,8 @@ public final class BeliefBase {
         private Literal literal;
         private final Rule rule;
         private final boolean ground;
+        /** The hash of a fact's arguments, kept by its group's {@link FactIndex}. */
+        int argsHash;
 
         Entry(Literal literal) {
             this.literal = literal;
@@ -107,32 +109,6 @@ public final class BeliefBase {
     }
 
     /**
-     * A fact's arguments as a key, with their hash mixed: a whole number's hash (a double's) has
-     * its low bits zero, so the 20 000 facts n(N) a receiver is told filled a few buckets (turned
-     * into trees) of the list-hashed map.
-     */
-    private static final class Args {
-        private List<Term> args;
-        private int hash;
-
-        Args set(List<Term> a) {
-            args = a;
-            hash = (int) ((a.hashCode() * 0x9E3779B97F4A7C15L) >>> 32);
-            return this;
-        }
-
-        @Override
-        public boolean equals(Object o) {
-            return o instanceof Args x && x.args.equals(args);
-        }
-
-        @Override
-        public int hashCode() {
-            return hash;
-        }
-    }
-
-    /**
      * The entries of one predicate in order, in a deque since {@code +b} adds at the front, with a
      * snapshot reused by queries until the group changes, and an index by first argument built
      * once a large group is queried often enough unchanged.
@@ -150,12 +126,10 @@ public final class BeliefBase {
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
-        private final HashMap<Args, Entry> facts = new HashMap<>();
-        /** The lookup key of {@link #facts} (the belief base is used by its agent's thread only). */
-        private final Args probe = new Args();
+        private final FactIndex facts = new FactIndex();
 
         Entry fact(List<Term> args) {
-            return facts.get(probe.set(args));
+            return facts.get(args);
         }
 
         /** The entries by first argument, each list with the unkeyed entries in their places. */
@@ -221,7 +195,7 @@ public final class BeliefBase {
             snapshot = null;
             entries.removeFirstOccurrence(e);
             if (e.rule == null) {
-                facts.remove(probe.set(e.literal.args()));
+                facts.remove(e);
             }
         }
     }
@@ -235,6 +209,14 @@ public final class BeliefBase {
             List.of(Literal.DEFAULT_NS, Literal.atom("kqml")));
     /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
     private Group spare;
+    /** The group last put in the map: the last in its order while it is there. */
+    private Group newest;
+    /**
+     * The newest group, emptied but left in the map (where an empty group changes nothing), so
+     * that a belief added and removed in a loop does not take its group out and put it back each
+     * turn; it leaves once another group comes (it would not be the last any more).
+     */
+    private Group parked;
     private int size;
 
     /** The lookup key; the belief base is used by its agent's thread only. */
@@ -246,7 +228,16 @@ public final class BeliefBase {
 
     private Group groupFor(Literal l) {
         Group g = group(l);
+        if (g == parked) {
+            parked = null;
+        }
         if (g == null) {
+            if (parked != null) {
+                groups.remove(parked.key);
+                spare = parked;
+                parked = null;
+                probe.set(l);
+            }
             if (l.ns() != null) {
                 knownNs.add(l.ns()); // the default namespace is there from the start
             }
@@ -256,6 +247,7 @@ public final class BeliefBase {
                 g.key = Key.of(l);
             }
             groups.put(g.key, g);
+            newest = g;
         }
         return g;
     }
@@ -383,12 +375,13 @@ public final class BeliefBase {
      */
     public Literal add(Literal l, boolean atEnd) {
         var group = groupFor(l);
-        Entry known = group.fact(l.args());
+        int hash = FactIndex.hash(l.args());
+        Entry known = group.facts.get(l.args(), hash);
         if (known != null) {
             return merge(known, l);
         }
         Entry e = new Entry(l);
-        group.facts.put(new Args().set(l.args()), e);
+        group.facts.add(e, hash);
         group.add(e, atEnd);
         size++;
         return l;
@@ -546,8 +539,12 @@ public final class BeliefBase {
         group.remove(e);
         size--;
         if (group.entries.isEmpty()) {
-            groups.remove(probe.set(stored));
-            spare = group;
+            if (group == newest) {
+                parked = group;
+            } else {
+                groups.remove(probe.set(stored));
+                spare = group;
+            }
         }
     }
 

@@ -71,14 +71,15 @@ final class Bindings {
                 if (at == 0) {
                     return -1;
                 }
-                Object k = p[2 * (at - 1)];
+                Var k = (Var) p[2 * (at - 1)];
                 if (k == v || k.equals(v)) {
                     return at - 1;
                 }
             }
         }
         for (int i = size - 1; i >= 0; i--) {
-            Object k = p[2 * i];
+            // as a Var, the call binds to Var.equals (no dispatch on Object's)
+            Var k = (Var) p[2 * i];
             if (k == v || k.equals(v)) {
                 return i;
             }
@@ -136,9 +137,9 @@ final class Bindings {
         return mark >= size ? NONE : Arrays.copyOfRange(pairs, 2 * mark, 2 * size);
     }
 
-    /** Binds the pairs of a {@link #suffix} again (its variables are unbound here). */
-    void append(Object[] more) {
-        for (int i = 0; i < more.length; i += 2) {
+    /** Binds the first {@code n} slots of pairs of a {@link #suffix} again (its variables are unbound here). */
+    void append(Object[] more, int n) {
+        for (int i = 0; i < n; i += 2) {
             put((Var) more[i], (Term) more[i + 1]);
         }
     }

@@ -206,13 +206,17 @@ final class BodyExecutor {
         boolean sameFocus = kind != BodyStep.Kind.DEL_BEL_NEW_FOCUS;
         Literal body = prepareForEvent(term, im, sameFocus ? im : null);
         // the usual -b(1) is found by its arguments, without a unifier to try candidates with
-        Literal removed = body.isGround() ? ag.beliefBase().removeFact(body) : null;
+        Literal removed = preparedGround ? ag.beliefBase().removeFact(body) : null;
+        // a plain -b(X, Y) with X and Y bound removed a fact with those arguments: unifying binds nothing
+        boolean unified = removed != null && preparedPlain;
         if (removed == null) {
             removed = ag.removeBelief(body, ag.newUnifier());
         }
         if (removed != null) {
             // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
-            im.unifier().unifies(term, removed);
+            if (!unified) {
+                im.unifier().unifies(term, removed);
+            }
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), sameFocus ? i : null));
             if (!sameFocus) {
                 rc.removeActionReQueue(i);
@@ -225,14 +229,17 @@ final class BodyExecutor {
     /** {@code -+b}: removes the first belief like b (any arguments), then adds b. */
     private void delAddBel(Intention i, IntendedMeans im, Term term) {
         Literal body = prepareForEvent(term, im, im);
-        Term[] anyArgs = new Term[body.arity()];
-        for (int k = 0; k < anyArgs.length; k++) {
-            anyArgs[k] = ag.freshVar(ANY);
+        Literal removed = removeAnyArgs(body);
+        if (removed == NOT_GROUND) {
+            Term[] anyArgs = new Term[body.arity()];
+            for (int k = 0; k < anyArgs.length; k++) {
+                anyArgs[k] = ag.freshVar(ANY);
+            }
+            Literal pattern = body.withArgs(List.of(anyArgs));
+            removed = ag.removeBelief(pattern, ag.newUnifier());
         }
-        Literal pattern = body.withArgs(List.of(anyArgs));
-        Literal removed = ag.removeBelief(pattern, ag.newUnifier());
         if (removed != null) {
-            c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
+            c.addBeliefEvent(Trigger.Op.DEL, removed);
         }
         Literal added = ag.addBelief(body, false);
         if (added != null) {
@@ -242,11 +249,47 @@ final class BodyExecutor {
         }
     }
 
+    /** What {@link #removeAnyArgs} answers when it cannot tell. */
+    private static final Literal NOT_GROUND = Literal.atom("not ground");
+    /** Tries annotations (ground against ground: it binds nothing and stays empty). */
+    private final Unifier groundAnnots = new Unifier();
+
+    /**
+     * As removing the first belief like {@code body} with each argument a fresh variable (what
+     * {@code -+b} removes), among ground facts and with {@code body}'s annotations ground: the
+     * facts are tried by their annotations alone, as the fresh variables take any arguments, and
+     * the pattern is not built. {@return the removed part, null when no belief is like it, or
+     * {@link #NOT_GROUND} when a fact or an annotation has variables (nothing was done)}
+     */
+    private Literal removeAnyArgs(Literal body) {
+        if (body.arity() == 0 || body.ns() != null || !allGround(body.annots())) {
+            return NOT_GROUND;
+        }
+        for (BeliefBase.Entry e : ag.beliefBase().current(body)) {
+            if (e.rule() != null) {
+                continue;
+            }
+            if (!e.isGround()) {
+                return NOT_GROUND;
+            }
+            if (groundAnnots.unifiesAnnots(body.annots(), e.literal().annots())) {
+                // the pattern's fresh variables would have taken numbers of the agent's counter
+                ag.skipFreshVars(body.arity());
+                return ag.beliefBase().remove(e.literal(), e.literal().withAnnots(body.annots()));
+            }
+        }
+        ag.skipFreshVars(body.arity());
+        return null;
+    }
+
     /**
      * Jason's {@code !g[hard_deadline(T)]}: g fails with {@code error(deadline_reached)} when it is
      * still pursued T ms (on the agent's clock) after it was posted.
      */
     private Literal withDeadline(Literal goal) {
+        if (goal.annots().size() < 2) {
+            return goal; // a goal made ready for its event has a source: nothing else to look at
+        }
         Literal d = goal.getAnnot("hard_deadline");
         if (d != null && d.arity() == 1 && d.args().get(0) instanceof NumberTerm n) {
             long ms = (long) n.value();
@@ -256,18 +299,37 @@ final class BodyExecutor {
         return goal;
     }
 
+    /** Whether the last literal {@link #prepareForEvent} made is ground. */
+    private boolean preparedGround;
+    /** Whether it came from a literal with neither annotations nor namespace, its variables all bound. */
+    private boolean preparedPlain;
+
     /**
      * Applies the unifier, renames the free variables apart (remembering the renaming in
      * {@code caller} so that results come back) and adds {@code source(self)} when no source is
      * given.
      */
     Literal prepareForEvent(Term term, IntendedMeans im, IntendedMeans caller) {
+        if (term instanceof Literal l && l.annots().isEmpty() && l.ns() == null) {
+            // the usual +b(X) or !g(N + 1): one literal made, with its values and source(self)
+            List<Term> args = im.unifier().applyAll(l.args());
+            if (allGround(args)) {
+                if (caller != null) {
+                    caller.clearRenamedVars();
+                }
+                preparedGround = true;
+                preparedPlain = true;
+                return l.withArgsFromSelf(args);
+            }
+        }
+        preparedPlain = false;
         Term applied = im.unifier().apply(term);
         if (!(applied instanceof Literal)) {
             throw new IllegalStateException("not a literal: " + applied);
         }
         Literal body = (Literal) applied;
-        if (applied.isGround()) {
+        preparedGround = applied.isGround();
+        if (preparedGround) {
             if (caller != null) {
                 caller.clearRenamedVars();
             }
@@ -279,6 +341,15 @@ final class BodyExecutor {
             }
         }
         return body.hasSource() ? body : body.addAnnot(Literal.SOURCE_SELF);
+    }
+
+    private static boolean allGround(List<Term> terms) {
+        for (int k = 0, n = terms.size(); k < n; k++) {
+            if (!terms.get(k).isGround()) {
+                return false;
+            }
+        }
+        return true;
     }
 
     static List<Term> elementsOf(Term t) {

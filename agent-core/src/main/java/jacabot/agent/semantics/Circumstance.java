@@ -51,9 +51,26 @@ public final class Circumstance {
      * The agent's own: its goal states hear of every event (not a listener in Jason's sense), and
      * its plan library tells whether a plan is relevant for an event.
      */
-    void own(GoalStates goalStates, java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant) {
+    void own(GoalStates goalStates, java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant,
+            java.util.function.BiPredicate<jacabot.agent.syntax.Trigger.Op, Literal> relevantBelief) {
         this.goalStates = goalStates;
         this.relevant = relevant;
+        this.relevantBelief = relevantBelief;
+    }
+
+    /** {@link #relevant} for a belief event's parts. */
+    private java.util.function.BiPredicate<jacabot.agent.syntax.Trigger.Op, Literal> relevantBelief;
+
+    /**
+     * Adds the external event {@code +b} or {@code -b} (op and b), as {@link #addEvent}; the event
+     * and its trigger are made only when the event is kept (a told receiver's beliefs that no plan
+     * is for are not).
+     */
+    public void addBeliefEvent(jacabot.agent.syntax.Trigger.Op op, Literal b) {
+        if (relevantBelief != null && listeners.length == 0 && !relevantBelief.test(op, b)) {
+            return;
+        }
+        addEvent(new Event(new jacabot.agent.syntax.Trigger(op, jacabot.agent.syntax.Trigger.Type.BELIEF, b), null));
     }
 
     public void addEvent(Event e) {

@@ -21,19 +21,43 @@ public final class IntendedMeans {
     private StepList steps;
     /** Variables of the current step renamed apart when it posted an event (caller side). */
     private Map<Var, Var> renamedVars;
+    /** The last loop turn's steps, made for the loop step's list {@code loopAt} and body {@code loopBody}. */
+    private StepList loopAt;
+    private List<BodyStep> loopBody;
+    private StepList loopTurn;
 
-    IntendedMeans(Plan plan, Trigger trigger, Unifier unif) {
+    /** An intended means whose plan's steps and atomic option are known (see {@link Start}). */
+    private IntendedMeans(Plan plan, Trigger trigger, Unifier unif, StepList steps, boolean atomic) {
         this.plan = plan;
-        this.atomic = plan.isAtomic();
+        this.atomic = atomic;
         this.trigger = trigger;
         this.unif = unif;
-        this.steps = StepList.of(plan.body().steps(), null);
+        this.steps = steps;
+    }
+
+    /**
+     * Makes intended means, keeping the last plan's steps and atomic option: the steps are an
+     * immutable list, so every intended means of a plan may start with the same one, and a loop
+     * of subgoals adopts the same plan again and again.
+     */
+    static final class Start {
+        private Plan plan;
+        private StepList steps;
+        private boolean atomic;
+
+        IntendedMeans of(Plan p, Trigger trigger, Unifier unif) {
+            if (p != plan) {
+                steps = StepList.of(p.body().steps(), null);
+                atomic = p.isAtomic();
+                plan = p;
+            }
+            return new IntendedMeans(p, trigger, unif, steps, atomic);
+        }
     }
 
     /** {@return a copy with its own unifier, at the same step (for an intention that forks)} */
     IntendedMeans copy() {
-        IntendedMeans c = new IntendedMeans(plan, trigger, unif.copy());
-        c.steps = steps;
+        IntendedMeans c = new IntendedMeans(plan, trigger, unif.copy(), steps, atomic);
         c.renamedVars = renamedVars == null ? null : new LinkedHashMap<>(renamedVars);
         return c;
     }
@@ -115,6 +139,15 @@ public final class IntendedMeans {
         if (steps == null) {
             insertAfterCurrent(List.of(then));
             insertAfterCurrent(more);
+        } else if (steps.head == then) {
+            // a loop's later turns: the loop step followed by what follows it is the current list
+            // itself, and the turn's list is the same as the last turn's (the lists never change)
+            if (loopAt != steps || loopBody != more) {
+                loopAt = steps;
+                loopBody = more;
+                loopTurn = new StepList(then, StepList.of(more, steps));
+            }
+            steps = loopTurn;
         } else {
             steps = new StepList(steps.head, StepList.of(more, new StepList(then, steps.next)));
         }

@@ -9,6 +9,8 @@ import java.util.Iterator;
 public final class Intention implements Iterable<IntendedMeans> {
     private final int id;
     private final ArrayDeque<IntendedMeans> stack = new ArrayDeque<>();
+    /** The top of the stack, or null: asked several times in every cycle. */
+    private IntendedMeans top;
     private int atomicCount;
     private boolean suspended;
 
@@ -33,6 +35,7 @@ public final class Intention implements Iterable<IntendedMeans> {
 
     public void push(IntendedMeans im) {
         stack.push(im);
+        top = im;
         if (im.isAtomic()) {
             atomicCount++;
         }
@@ -40,6 +43,7 @@ public final class Intention implements Iterable<IntendedMeans> {
 
     public IntendedMeans pop() {
         IntendedMeans im = stack.pop();
+        top = stack.peek();
         if (im.isAtomic()) {
             atomicCount--;
         }
@@ -47,7 +51,7 @@ public final class Intention implements Iterable<IntendedMeans> {
     }
 
     public IntendedMeans peek() {
-        return stack.peek();
+        return top;
     }
 
     public int size() {
@@ -55,7 +59,7 @@ public final class Intention implements Iterable<IntendedMeans> {
     }
 
     public boolean isFinished() {
-        return stack.isEmpty();
+        return top == null;
     }
 
     public boolean isAtomic() {

@@ -142,14 +142,14 @@ final class MessageHandler {
                     // the usual tell, one literal
                     Literal added = ag.addBelief(nested(l, source), false);
                     if (added != null) {
-                        c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                        c.addBeliefEvent(Trigger.Op.ADD, added);
                     }
                     break;
                 }
                 for (Literal l : literals(content)) {
                     Literal added = ag.addBelief(nested(l, source), false);
                     if (added != null) {
-                        c.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+                        c.addBeliefEvent(Trigger.Op.ADD, added);
                     }
                 }
                 break;
@@ -157,7 +157,7 @@ final class MessageHandler {
                 for (Literal l : literals(content)) {
                     Literal removed = ag.removeBelief(l.addAnnot(source), ag.newUnifier());
                     if (removed != null) {
-                        c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), null));
+                        c.addBeliefEvent(Trigger.Op.DEL, removed);
                     }
                 }
                 break;

@@ -246,6 +246,22 @@ public final class PlanLibrary {
         return !candidates(te).isEmpty();
     }
 
+    /**
+     * As {@link #hasCandidate(Trigger)} for a trigger of these parts, made only when the last two
+     * triggers' candidates do not answer (a told receiver asks for every message).
+     */
+    public boolean hasCandidate(Trigger.Op op, Trigger.Type type, Literal l) {
+        Last last = this.last;
+        if (last != null && last.key.matches(op, type, l)) {
+            return !last.plans.isEmpty();
+        }
+        Last before = this.before;
+        if (before != null && before.key.matches(op, type, l)) {
+            return !before.plans.isEmpty();
+        }
+        return hasCandidate(new Trigger(op, type, l));
+    }
+
     private static boolean isCandidate(Trigger pt, Trigger te) {
         if (pt.op() != te.op() || pt.type() != te.type()) {
             return false;

@@ -72,10 +72,16 @@ final class Proof {
     private final int base;
     private final Term formula;
     private final int startDepth;
-    private final ArrayList<Choice> choices = new ArrayList<>();
+    /** The choice points, the last on top: an array made at the first (a loop's condition often has none). */
+    private Choice[] choices = NO_CHOICES;
+    private int nChoices;
+    private static final Choice[] NO_CHOICES = new Choice[0];
     private Goals goals;
     private boolean started;
     private List<Var> formulaVars;
+    /** The current answer's pairs (variable, value), the first of them in use; see {@link #answer}. */
+    private Object[] answerPairs = NO_PAIRS;
+    private static final Object[] NO_PAIRS = new Object[0];
 
     /** A proof that works in {@code w}, beginning with its bindings as they are now. */
     Proof(Solver solver, Term formula, Unifier w, int depth) {
@@ -107,28 +113,31 @@ final class Proof {
 
     /** Keeps only the current solution's answer in the unifier (see {@link #answer}). */
     void keepAnswer() {
-        Object[] answer = answer();
+        int n = answer();
         w.undoTo(base);
-        w.rebind(answer);
+        w.rebind(answerPairs, n);
     }
 
     /** Gives {@code into} the current solution: the first bindings and the answer. */
     void solutionInto(Unifier into) {
-        into.setFromPrefix(w, base, answer());
+        int n = answer();
+        into.setFromPrefix(w, base, answerPairs, n);
     }
 
     /** {@return the current solution as a new unifier: the first bindings and the answer} */
     Unifier solution() {
-        return w.prefixWith(base, answer());
+        int n = answer();
+        return w.prefixWith(base, answerPairs, n);
     }
 
     /**
      * The bindings the current solution gives the formula's variables, each to its final value
      * (chains through renamed rule variables are cut short). What only the rules' own variables
      * were bound to is left out, as Jason's rule solutions leave it out, so a solution's size
-     * is the size of the answer, not of the proof.
+     * is the size of the answer, not of the proof. {@return the number of array slots used in
+     * {@link #answerPairs} (two per binding)}
      */
-    private Object[] answer() {
+    private int answer() {
         if (formulaVars == null) {
             formulaVars = solver.varsOf(formula);
         }
@@ -137,7 +146,12 @@ final class Proof {
         List<Var> vars = formulaVars;
         ArrayList<Var> more = null;
         HashSet<Var> seen = null;
-        Object[] pairs = new Object[2 * vars.size()];
+        // in an array of the proof's own, used up before the next answer (a loop's turn makes none)
+        Object[] pairs = answerPairs;
+        if (pairs.length < 2 * vars.size()) {
+            pairs = new Object[2 * vars.size()];
+            answerPairs = pairs;
+        }
         int n = 0;
         for (int k = 0; k < vars.size() + (more == null ? 0 : more.size()); k++) {
             Var v = k < vars.size() ? vars.get(k) : more.get(k - vars.size());
@@ -150,6 +164,7 @@ final class Proof {
                 value = w.deref(b);
                 if (n == pairs.length) {
                     pairs = java.util.Arrays.copyOf(pairs, 2 * n + 2);
+                    answerPairs = pairs;
                 }
                 pairs[n++] = v;
                 pairs[n++] = value;
@@ -170,7 +185,7 @@ final class Proof {
                 }
             }
         }
-        return n == pairs.length ? pairs : java.util.Arrays.copyOf(pairs, n);
+        return n;
     }
 
     /**
@@ -200,8 +215,8 @@ final class Proof {
     }
 
     private boolean backtrack() {
-        while (!choices.isEmpty()) {
-            Choice c = choices.get(choices.size() - 1);
+        while (nChoices > 0) {
+            Choice c = choices[nChoices - 1];
             w.undoTo(c.mark);
             if (c.resume(this)) {
                 return true;
@@ -210,9 +225,16 @@ final class Proof {
         return false;
     }
 
+    private void push(Choice c) {
+        if (nChoices == choices.length) {
+            choices = java.util.Arrays.copyOf(choices, Math.max(8, 2 * nChoices));
+        }
+        choices[nChoices++] = c;
+    }
+
     private void pop(Choice c) {
-        if (!choices.isEmpty() && choices.get(choices.size() - 1) == c) {
-            choices.remove(choices.size() - 1);
+        if (nChoices > 0 && choices[nChoices - 1] == c) {
+            choices[--nChoices] = null;
         }
     }
 
@@ -247,7 +269,7 @@ final class Proof {
                     goals = new Goals(e.left(), new Goals(e.right(), goals, depth), depth);
                     return true;
                 default:
-                    choices.add(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
+                    push(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
                     goals = new Goals(e.left(), goals, depth);
                     return true;
             }
@@ -268,7 +290,7 @@ final class Proof {
                 return enter(q, candidates.get(0), goals, depth);
             default:
                 var c = new Candidates(w.size(), goals, q, candidates, depth);
-                choices.add(c);
+                push(c);
                 return c.resume(this);
         }
     }
@@ -362,7 +384,7 @@ final class Proof {
         }
         w.rebind(ways.get(0));
         if (ways.size() > 1) {
-            choices.add(new Ways(mark, goals, ways));
+            push(new Ways(mark, goals, ways));
         }
         return true;
     }
@@ -385,7 +407,7 @@ final class Proof {
         }
         if (result instanceof Iterator<?> it) {
             var c = new Solutions(mark, goals, (Iterator<Unifier>) it);
-            choices.add(c);
+            push(c);
             return c.resume(this);
         }
         return false;
@@ -471,6 +493,15 @@ final class Proof {
 
         @Override
         boolean resume(Proof p) {
+            if (it instanceof InternalAction.Solutions s) {
+                // the bindings are back at the mark, which is what the action was given
+                if (!s.nextInto(p.w)) {
+                    p.pop(this);
+                    return false;
+                }
+                p.goals = rest;
+                return true;
+            }
             if (!it.hasNext()) {
                 p.pop(this);
                 return false;

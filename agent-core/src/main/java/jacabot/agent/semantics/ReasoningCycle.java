@@ -24,6 +24,7 @@ final class ReasoningCycle {
     private final Circumstance c;
     private final BodyExecutor exec;
     private final MessageHandler messages;
+    private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
 
@@ -146,7 +147,26 @@ final class ReasoningCycle {
 
     private static boolean isRelevant(Trigger planTrigger, Trigger event, Unifier u) {
         return planTrigger.op() == event.op() && planTrigger.type() == event.type()
+                && !firstArgsDiffer(planTrigger.literal(), event.literal())
                 && u.unifies(planTrigger.literal(), event.literal());
+    }
+
+    /**
+     * {@return whether both literals have as first argument a number, or a plain atom, and not
+     * the same} They cannot unify then: {@code +!count(200000)} is tried for every
+     * {@code !count(N)} of a loop, and this answers without the unifier.
+     */
+    private static boolean firstArgsDiffer(Term a, Term b) {
+        if (!(a instanceof Literal la) || !(b instanceof Literal lb) || la.arity() == 0 || lb.arity() == 0) {
+            return false;
+        }
+        Term x = la.arg(0);
+        Term y = lb.arg(0);
+        if (x instanceof jacabot.agent.syntax.NumberTerm nx) {
+            return y instanceof jacabot.agent.syntax.NumberTerm ny && nx.value() != ny.value();
+        }
+        return x instanceof Literal ax && y instanceof Literal ay && ax.isAtom() && ay.isAtom() && ax.ns() == null
+                && ay.ns() == null && !ax.functor().equals(ay.functor());
     }
 
     /** No relevant or applicable plan: goals fail, internal events go on, external ones are dropped. */
@@ -179,7 +199,7 @@ final class ReasoningCycle {
         if (ag.planListener() != null) {
             ag.planListener().planSelected(se, p);
         }
-        IntendedMeans im = new IntendedMeans(p, se.trigger(), u);
+        IntendedMeans im = start.of(p, se.trigger(), u);
         if (se.trigger().isAchieveGoal() && se.trigger().isAddition()) {
             ag.goalStates().post(se.trigger(), GoalStates.State.executing, null);
         }

@@ -80,7 +80,12 @@ public final class Unifier {
 
     /** Makes the bindings of a {@link #bindingsSince} again. */
     void rebind(Object[] pairs) {
-        bindings.append(pairs);
+        bindings.append(pairs, pairs.length);
+    }
+
+    /** Makes the bindings of the first {@code n} slots of {@code pairs} again. */
+    void rebind(Object[] pairs, int n) {
+        bindings.append(pairs, n);
     }
 
     /** {@return the variable's own binding (one step, not dereferenced), or null} */
@@ -88,16 +93,16 @@ public final class Unifier {
         return bindings.get(v);
     }
 
-    /** Replaces this unifier's bindings with the first {@code mark} of another's and then {@code pairs}. */
-    void setFromPrefix(Unifier other, int mark, Object[] pairs) {
+    /** Replaces this unifier's bindings with the first {@code mark} of another's and then the first {@code n} slots of {@code pairs}. */
+    void setFromPrefix(Unifier other, int mark, Object[] pairs, int n) {
         bindings.setFromPrefix(other.bindings, mark);
-        bindings.append(pairs);
+        bindings.append(pairs, n);
     }
 
-    /** {@return a new unifier with this one's first {@code mark} bindings and then {@code pairs}} */
-    Unifier prefixWith(int mark, Object[] pairs) {
+    /** {@return a new unifier with this one's first {@code mark} bindings and then the first {@code n} slots of {@code pairs}} */
+    Unifier prefixWith(int mark, Object[] pairs, int n) {
         var u = new Unifier(bindings.prefix(mark), evaluator);
-        u.bindings.append(pairs);
+        u.bindings.append(pairs, n);
         return u;
     }
 
@@ -147,7 +152,10 @@ public final class Unifier {
     public Term apply(Term t) {
         if (t instanceof Var v) {
             Term d = deref(v);
-            return d instanceof Var ? d : apply(d);
+            return d instanceof Var || d instanceof NumberTerm ? d : apply(d);
+        }
+        if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
+            return t; // before the long list of compound kinds below
         }
         if (t instanceof Literal l) {
             if (!needsApply(l)) {
@@ -267,7 +275,7 @@ public final class Unifier {
         return !(t instanceof jacabot.agent.syntax.ObjectTerm);
     }
 
-    private List<Term> applyAll(List<Term> terms) {
+    List<Term> applyAll(List<Term> terms) {
         // one and two terms (most literals) without the array List.of(array) would copy
         switch (terms.size()) {
             case 0:
@@ -348,6 +356,13 @@ public final class Unifier {
         return true;
     }
 
+    private boolean unifyLiterals(Literal la, Literal lb) {
+        if (!la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
+            return false;
+        }
+        return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+    }
+
     /** The namespaces of two literals (null, the default one, unifies with {@code default}). */
     private boolean unifyNs(Literal a, Literal b) {
         Term na = a.ns();
@@ -367,6 +382,13 @@ public final class Unifier {
     private boolean unify(Term a, Term b) {
         a = deref(a);
         b = deref(b);
+        // the usual cases first: two literals, two numbers (neither side a variable or arithmetic)
+        if (a instanceof Literal la && b instanceof Literal lb) {
+            return unifyLiterals(la, lb);
+        }
+        if (a instanceof NumberTerm na && b instanceof NumberTerm nb) {
+            return na.value() == nb.value();
+        }
         if (a instanceof Var va) {
             if (b instanceof Var vb && va.equals(vb)) {
                 return true;
@@ -400,10 +422,7 @@ public final class Unifier {
             return b instanceof NumberTerm nb && na.value() == nb.value();
         }
         if (a instanceof Literal la) {
-            if (!(b instanceof Literal lb) || !la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
-                return false;
-            }
-            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+            return b instanceof Literal lb && unifyLiterals(la, lb);
         }
         if (a instanceof ListTerm.Cons ca) {
             if (!(b instanceof ListTerm.Cons cb)) {
@@ -579,6 +598,16 @@ public final class Unifier {
             return false;
         }
         return subTail == null || unify(subTail, ListTerm.of(left));
+    }
+
+    /** {@return whether each annotation of {@code sub} unifies with one of {@code sup}} Nothing is bound when not. */
+    boolean unifiesAnnots(List<Term> sub, List<Term> sup) {
+        int mark = bindings.size();
+        if (subsetAnnots(sub, sup)) {
+            return true;
+        }
+        bindings.truncate(mark);
+        return false;
     }
 
     private boolean subsetAnnots(List<Term> sub, List<Term> sup) {

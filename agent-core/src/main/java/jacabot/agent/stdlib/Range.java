@@ -2,6 +2,7 @@ package jacabot.agent.stdlib;
 
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
+import jacabot.agent.semantics.InternalAction;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
@@ -21,39 +22,66 @@ final class Range extends DefaultInternalAction {
             throw IaException.wrongArguments(name(), "step 0");
         }
         // lazy: a for over a long range must not build every solution first
-        final double first = start;
-        final double last = end;
-        final double by = step;
-        return new java.util.Iterator<Unifier>() {
-            private double v = first;
-            private Unifier next = advance();
+        return new Values(un, args[0], start, end, step);
+    }
 
-            private Unifier advance() {
-                while (by > 0 ? v <= last : v >= last) {
+    /** The values from first to last, each bound to X by backtracking. */
+    private static final class Values implements InternalAction.Solutions {
+        private final Unifier un;
+        private final Term x;
+        private final double last;
+        private final double by;
+        private double v;
+        private Unifier pending;
+        private boolean looked;
+
+        Values(Unifier un, Term x, double first, double last, double by) {
+            this.un = un;
+            this.x = x;
+            this.v = first;
+            this.last = last;
+            this.by = by;
+        }
+
+        private boolean more() {
+            return by > 0 ? v <= last : v >= last;
+        }
+
+        @Override
+        public boolean nextInto(Unifier w) {
+            while (more()) {
+                boolean ok = w.unifies(x, new NumberTerm(v));
+                v += by;
+                if (ok) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        @Override
+        public boolean hasNext() {
+            if (!looked) {
+                looked = true;
+                pending = null;
+                while (pending == null && more()) {
                     Unifier c = un.copy();
-                    boolean ok = c.unifies(args[0], new NumberTerm(v));
-                    v += by;
-                    if (ok) {
-                        return c;
+                    if (c.unifies(x, new NumberTerm(v))) {
+                        pending = c;
                     }
+                    v += by;
                 }
-                return null;
             }
+            return pending != null;
+        }
 
-            @Override
-            public boolean hasNext() {
-                return next != null;
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new java.util.NoSuchElementException();
             }
-
-            @Override
-            public Unifier next() {
-                if (next == null) {
-                    throw new java.util.NoSuchElementException();
-                }
-                Unifier out = next;
-                next = advance();
-                return out;
-            }
-        };
+            looked = false;
+            return pending;
+        }
     }
 }

@@ -99,6 +99,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     }
 
     private static List<Term> sortAnnots(List<Term> annots) {
+        if (annots == SOURCE_SELF_ONLY) {
+            return annots; // the agent's own beliefs and goals: nothing to check
+        }
         if (isSortedSet(annots)) {
             return List.copyOf(annots);
         }
@@ -177,6 +180,11 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         var all = new ArrayList<Term>(annots);
         all.addAll(more);
         return withAnnots(all);
+    }
+
+    /** {@return a literal with these arguments annotated {@code [source(self)]} only (a belief or goal of the agent's own)} */
+    public Literal withArgsFromSelf(List<Term> newArgs) {
+        return new Literal(functor, newArgs, SOURCE_SELF_ONLY, negated, false, ns);
     }
 
     public Literal addAnnot(Term annot) {

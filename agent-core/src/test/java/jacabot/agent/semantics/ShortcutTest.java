@@ -1,0 +1,68 @@
+package jacabot.agent.semantics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import jacabot.agent.testing.TestAgent;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The interpreter's shortcuts for common cases (a loop's steps, {@code .range} in a proof,
+ * {@code -+b} among ground facts, a belief group emptied and filled again) do what the general
+ * paths did: the expected lines are those of the build before them.
+ */
+class ShortcutTest {
+
+    private static List<String> run(String program) {
+        var a = new TestAgent(program);
+        a.cycles(500);
+        return a.printed();
+    }
+
+    @Test
+    void delAddRemovesTheFirstBeliefWithTheAnnotationsAndTakesTheNumbersOfItsFreshVariables() {
+        List<String> out = run("""
+                !g.
+                +!g <- +c(1)[source(x)]; +c(2); -+c(9);
+                       .findall(X/S, c(X)[source(S)], L1); .print(L1);
+                       -+c(7)[source(x)];
+                       .findall(X/S, c(X)[source(S)], L2); .print(L2);
+                       !h(_); -+d(1, 2); !h(_); -+c(3); !h(_).
+                +!h(A) <- .print(A).
+                """);
+        assertEquals(List.of("[(9/self),(1/x)]", "[(7/x),(9/self)]"), out.subList(0, 2));
+        // each !h(_) renames its variable (one number); -+d(1, 2) takes two more, -+c(3) one
+        int first = number(out.get(2));
+        assertEquals(List.of(first + 3, first + 5), List.of(number(out.get(3)), number(out.get(4))));
+    }
+
+    /** The number of a fresh variable printed unbound, as {@code _24<no-value>}. */
+    private static int number(String printed) {
+        return Integer.parseInt(printed.substring(1, printed.indexOf('<')));
+    }
+
+    @Test
+    void aGroupEmptiedAndFilledAgainKeepsTheOrderOfGroups() {
+        assertEquals(List.of("[x(0),b(1),a(2)]", "[x(0),b(1),a(2),e(2),f(1)]"), run("""
+                x(0).
+                !g.
+                +!g <- +a(1); -a(1); +b(1); +a(2);
+                       .findall(B, B[source(self)], L3); .print(L3);
+                       +e(1); -e(1); +e(2); +f(1);
+                       .findall(B, B[source(self)], L4); .print(L4).
+                """));
+    }
+
+    @Test
+    void rangeGivesItsValuesInLoopsProofsAndBodies() {
+        assertEquals(List.of("y3", "i5", "i3", "i1", "z1", "[2,4]", "11", "12", "21", "22", "11", "21", "22"), run("""
+                !g.
+                +!g <- Y = 3; for (.range(Y, 1, 5)) { .print(y, Y) };
+                       for (.range(I, 5, 1, -2)) { .print(i, I) };
+                       .range(Z, 1, 3); .print(z, Z);
+                       .findall(V, .range(V, 1, 4) & V mod 2 == 0, L5); .print(L5);
+                       for (.range(P, 1, 2)) { for (.range(Q, 1, 2)) { .print(P, Q) } };
+                       +k(0); while (k(N) & N < 3) { for (.range(R, 1, N)) { .print(N, R) }; -+k(N + 1) }.
+                """));
+    }
+}
