@@ -97,7 +97,7 @@ public final class LockstepRun {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
-    /** {@return the artifact steps run so far (each runs on an operation thread: two thread hand-offs)} */
+    /** {@return the artifact steps run so far (on an operation thread, or on this one when the operation never waits)} */
     public long artifactSteps() {
         return stepper.artifactSteps();
     }
