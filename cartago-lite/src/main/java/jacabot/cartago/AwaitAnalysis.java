@@ -59,19 +59,18 @@ final class AwaitAnalysis {
         AwaitAnalysis analysis = new AwaitAnalysis(type, loader);
         Set<Method> result = new HashSet<>();
         for (Method op : ops) {
-            String owner = op.getDeclaringClass().getName().replace('.', '/');
-            if (!analysis.mayWait(owner, op.getName() + descriptor(op))) {
+            if (!analysis.mayWait(op.getName() + descriptor(op))) {
                 result.add(op);
             }
         }
         return result;
     }
 
-    private boolean mayWait(String owner, String method) {
+    /** {@return whether the operation {@code method} (name + descriptor), declared in the artifact's classes, may wait} */
+    private boolean mayWait(String method) {
         Deque<String[]> todo = new ArrayDeque<>();
         Set<String> seen = new LinkedHashSet<>();
-        todo.add(new String[] {owner, method});
-        for (String c : hierarchy) { // invoked by reflection, so dispatched to any override
+        for (String c : hierarchy) { // its declaration is among them; invoked by reflection, it runs any override
             todo.add(new String[] {c, method});
         }
         while (!todo.isEmpty()) {

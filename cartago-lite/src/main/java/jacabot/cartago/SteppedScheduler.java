@@ -143,10 +143,15 @@ final class SteppedScheduler implements Scheduler {
                 return false; // it would run first
             }
         }
+        runHere(op);
+        return true;
+    }
+
+    /** Runs an operation to its end on the calling thread, which holds the turn meanwhile (it may not wait). */
+    private static void runHere(OpExecution op) {
         op.slot.inline = true;
         op.slot.turn = true;
         op.run();
-        return true;
     }
 
     @Override
@@ -162,10 +167,7 @@ final class SteppedScheduler implements Scheduler {
             int steps = 0;
             for (Waiter next = drainAndPick(); next != null; next = drainAndPick()) {
                 if (next.here()) {
-                    // the runner would only wait for a carrier: two thread wake-ups saved
-                    next.op().slot.inline = true;
-                    next.op().slot.turn = true;
-                    next.op().run();
+                    runHere(next.op()); // the runner would only wait for a carrier: two thread wake-ups saved
                 } else {
                     grant(next);
                     returned.acquireUninterruptibly();

@@ -299,7 +299,7 @@ final class RobotLink {
     /**
      * Lockstep over TCP, simulation thread, after writing step {@code step}: reads the middleware's
      * commands up to its {@code STEP_ACK(step)}. Reading here rather than on the receiver thread saves
-     * two thread wake-ups per step. A failure ends the connection; {@code awaitAck} then reports it.
+     * a thread wake-up per step: the receiver's hand-off to this thread. A failure ends the connection; {@code awaitAck} then reports it.
      */
     void readAnswer(long step) {
         LentReader l = lent;
