@@ -54,6 +54,7 @@ final class Physics {
         world.setGravity(World.ZERO_GRAVITY);
         world.getSettings().setStepFrequency(basicTimeStepMs / 1000.0);
         world.getSettings().setAtRestDetectionEnabled(false);
+        world.setTimeOfImpactDetector(new BoundedAdvancement());
     }
 
     void step() {
