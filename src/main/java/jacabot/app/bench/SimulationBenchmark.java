@@ -10,7 +10,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Locale;
+import java.util.stream.Collectors;
 
 /**
  * Experiment 4 headless in lockstep with the agent in the loop (agent, artifact, socket,
@@ -22,32 +26,59 @@ public final class SimulationBenchmark {
     private final double seconds;
     private final long seed;
     private final PrintStream out;
+    private final int warmups;
+    private final int measuredRuns;
 
-    /** @param world experiment 4's world file */
-    public SimulationBenchmark(Path world, double seconds, long seed, PrintStream out) {
+    /**
+     * @param world        experiment 4's world file
+     * @param warmups      whole unmeasured runs first
+     * @param measuredRuns measured runs; the median one is reported
+     */
+    public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, PrintStream out) {
+        if (warmups < 0 || measuredRuns < 1) {
+            throw new IllegalArgumentException("warm-up runs must be >= 0 and measured runs >= 1, got " + warmups + " and " + measuredRuns);
+        }
         this.world = world;
         this.seconds = seconds;
         this.seed = seed;
+        this.warmups = warmups;
+        this.measuredRuns = measuredRuns;
         this.out = out;
     }
 
     public void run() throws Exception {
         Experiment e = Experiment.SUSPEND_RESUME;
         AgentSource source = AgentSource.packaged(e);
-        // Warm-up: a whole run first, so that the measured one runs compiled code rather than
-        // sharing the two cores with the JIT compiler (whose C2 threads otherwise take a core for seconds).
-        runAgent(world, source, seconds);
-        long t0 = System.nanoTime();
-        Measured m = runAgent(world, source, seconds);
-        long wall = System.nanoTime() - t0;
+        // Warm-up: whole runs first, so that the measured ones run compiled code. On two cores the
+        // JIT compiler shares the machine with the run's two threads, and one run is not enough for it
+        // to finish: in runs of 10 simulated minutes the speed keeps rising until about the fourth.
+        List<String> warm = new ArrayList<>();
+        for (int i = 0; i < warmups; i++) {
+            long w0 = System.nanoTime();
+            runAgent(world, source, seconds);
+            warm.add(factor(System.nanoTime() - w0));
+        }
+        List<Measured> runs = new ArrayList<>();
+        for (int i = 0; i < measuredRuns; i++) {
+            long t0 = System.nanoTime();
+            Measured m = runAgent(world, source, seconds);
+            runs.add(m.timed(System.nanoTime() - t0));
+        }
+        List<Measured> byWall = new ArrayList<>(runs);
+        byWall.sort(Comparator.comparingLong(Measured::wall));
+        Measured m = byWall.get(byWall.size() / 2); // the median run: the two threads' placement on the cores varies from run to run
+        long wall = m.wall();
         long[] sim = m.run().world().stepCost();
         long[] agent = m.run().agentSideCost();
         var c = m.result().controllerCosts();
         var mw = m.result().middlewareCosts();
         long serialization = c.encodingNanos() + mw.decodingNanos();
         long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
-        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated in %.2f s: %.0fx real time; "
-                + "%d control steps, %d reasoning cycles, %d artifact steps%n", seed, seconds, wall / 1e9, seconds / (wall / 1e9),
+        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated per run: %d warm-up runs (%s), "
+                + "then %d measured runs (%s)%n", seed, seconds, warmups, String.join(" ", warm), measuredRuns,
+                runs.stream().map(r -> factor(r.wall())).collect(Collectors.joining(" ")));
+        out.printf(Locale.ROOT, "The median run: %.0f s simulated in %.2f s: %.0fx real time; "
+                + "%d control steps, %d reasoning cycles, %d artifact steps%n", seconds, wall / 1e9, seconds / (wall / 1e9),
                 m.result().steps(), m.run().cycles(), m.run().artifactSteps());
         out.println("| part | wall time (s) | share | per control step (us) |");
         out.println("|---|---|---|---|");
@@ -67,16 +98,38 @@ public final class SimulationBenchmark {
             out.println("The rows add up to more than the whole: each socket write wakes the other side's thread,"
                     + " whose work overlaps the end of the write.");
         }
-        long b0 = System.nanoTime();
-        var baseline = BaselineRunner.execute(world, e, seed, seconds);
-        long bwall = System.nanoTime() - b0;
-        long[] bsim = baseline.world().stepCost();
-        out.printf(Locale.ROOT, "%nThe procedural baseline on the same world: %.2f s, %.0fx real time "
-                + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", bwall / 1e9, seconds / (bwall / 1e9),
-                100.0 * bsim[0] / bwall, 100.0 * bsim[1] / bwall, 100.0 * (bwall - bsim[0] - bsim[1]) / bwall);
+        baseline(e);
     }
 
-    private record Measured(LockstepRun run, LockstepCoordinator.Result result) {
+    /** The procedural baseline, warmed up and measured the same way; its median run. */
+    private void baseline(Experiment e) throws Exception {
+        for (int i = 0; i < warmups; i++) {
+            BaselineRunner.execute(world, e, seed, seconds);
+        }
+        List<long[]> runs = new ArrayList<>(); // wall, physics, devices
+        for (int i = 0; i < measuredRuns; i++) {
+            long b0 = System.nanoTime();
+            var baseline = BaselineRunner.execute(world, e, seed, seconds);
+            long[] bsim = baseline.world().stepCost();
+            runs.add(new long[] {System.nanoTime() - b0, bsim[0], bsim[1]});
+        }
+        String each = runs.stream().map(r -> factor(r[0])).collect(Collectors.joining(" "));
+        List<long[]> byWall = new ArrayList<>(runs);
+        byWall.sort(Comparator.comparingLong(r -> r[0]));
+        long[] b = byWall.get(byWall.size() / 2);
+        out.printf(Locale.ROOT, "%nThe procedural baseline on the same world, %d measured runs (%s): the median %.2f s, %.0fx real time "
+                + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", measuredRuns, each, b[0] / 1e9, seconds / (b[0] / 1e9),
+                100.0 * b[1] / b[0], 100.0 * b[2] / b[0], 100.0 * (b[0] - b[1] - b[2]) / b[0]);
+    }
+
+    private String factor(long wallNanos) {
+        return String.format(Locale.ROOT, "%.0fx", seconds / (wallNanos / 1e9));
+    }
+
+    private record Measured(LockstepRun run, LockstepCoordinator.Result result, long wall) {
+        Measured timed(long wallNanos) {
+            return new Measured(run, result, wallNanos);
+        }
     }
 
     private void row(String part, long nanos, long wall, long steps) {
@@ -88,6 +141,6 @@ public final class SimulationBenchmark {
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
         var result = run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
-        return new Measured(run, result);
+        return new Measured(run, result, 0);
     }
 }

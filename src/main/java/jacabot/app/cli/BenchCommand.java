@@ -105,8 +105,17 @@ final class BenchCommand implements Runnable {
         @Option(names = "--root", paramLabel = "DIR", description = "a repository to take worlds/ from (default: the installation's)")
         private Path root;
 
+        @Option(names = "--warmup", paramLabel = "N", description = "whole unmeasured runs first, while the JIT compiles (default ${DEFAULT-VALUE})")
+        private int warmups = 4;
+
+        @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
+        private int runs = 3;
+
         @Override
         public Integer call() throws Exception {
+            if (warmups < 0 || runs < 1) {
+                throw new UserError("--warmup must be 0 or more and --runs 1 or more, got " + warmups + " and " + runs);
+            }
             Path world = CompareCommand.bundled(root, jacabot.robot.Experiment.SUSPEND_RESUME.worldFile());
             long runSeed;
             try {
@@ -114,7 +123,7 @@ final class BenchCommand implements Runnable {
             } catch (jacabot.sim.io.WorldFileException e) {
                 throw new UserError(e.getMessage());
             }
-            new jacabot.app.bench.SimulationBenchmark(world, duration(duration), runSeed,
+            new jacabot.app.bench.SimulationBenchmark(world, duration(duration), runSeed, warmups, runs,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
