@@ -4,6 +4,7 @@ import jacabot.robot.link.AuthenticationException;
 import jacabot.robot.link.CommandReader;
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.LockstepSpin;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
@@ -314,6 +315,7 @@ final class RobotLink {
      */
     private final class LentReader {
         private final CommandReader reader;
+        private final LockstepSpin spin = new LockstepSpin();
         private final CountDownLatch ended = new CountDownLatch(1);
         private volatile IOException failure;
 
@@ -324,6 +326,7 @@ final class RobotLink {
         void readUntilAck(long step) {
             try {
                 while (!inbox.hasAck(step) && ended.getCount() > 0) {
+                    spin.await(reader::ready);
                     ReceivedCommand rc = reader.read();
                     if (rc == null) {
                         ended.countDown();

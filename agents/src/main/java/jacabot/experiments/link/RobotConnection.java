@@ -13,6 +13,7 @@ import jacabot.robot.link.ReadingCheck;
 import jacabot.robot.link.SensorDataReader;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorInfoFilter;
+import jacabot.robot.link.LockstepSpin;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -224,6 +225,9 @@ final class RobotConnection {
             check = new ReadingCheck(h.sensors());
             var r = new SensorDataReader(socket.getInputStream(), limits);
             r.measure(costs);
+            if (h.lockstep()) {
+                r.spinWith(new LockstepSpin()); // the controller waits for our answer, and we for its next step
+            }
             reader = r;
             while (true) {
                 reason = handle(r.read());

@@ -17,6 +17,11 @@ public final class CommandReader {
         this.clock = clock;
     }
 
+    /** {@return whether a frame's first byte can be read without blocking} */
+    public boolean ready() throws IOException {
+        return in.available() > 0;
+    }
+
     /**
      * Reads the next frame, blocking.
      *

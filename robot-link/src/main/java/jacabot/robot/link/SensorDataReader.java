@@ -26,6 +26,7 @@ public final class SensorDataReader {
     private long objectsInStream;
     private volatile long frameStartNanos;
     private LinkCosts costs;
+    private LockstepSpin spin;
 
     /**
      * Reads the stream header (so it blocks until the controller has written it).
@@ -65,6 +66,11 @@ public final class SensorDataReader {
         this.costs = costs;
     }
 
+    /** From now on, spins before each blocking read while that pays: for a lockstep link ({@link LockstepSpin}). */
+    public void spinWith(LockstepSpin spin) {
+        this.spin = spin;
+    }
+
     /**
      * Reads the next frame, blocking.
      *
@@ -75,6 +81,9 @@ public final class SensorDataReader {
             frameStartNanos = 0;
             int tag;
             try {
+                if (spin != null) {
+                    spin.await(() -> in.available() > 0 || buffered.available() > 0); // the object stream may hold bytes already
+                }
                 tag = in.read();
             } catch (ObjectStreamException e) {
                 throw garbage(e);
