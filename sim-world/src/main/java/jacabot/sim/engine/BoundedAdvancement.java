@@ -60,7 +60,8 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
         Vector2 ca = a.getCenter(), cb = b.getCenter();
         double ax = ta.getTransformedX(ca), ay = ta.getTransformedY(ca);
         double bx = tb.getTransformedX(cb), by = tb.getTransformedY(cb);
-        double gap = Math.hypot(ax - bx, ay - by) - a.getRadius() - b.getRadius();
+        double dx = ax - bx, dy = ay - by;
+        double gap = Math.sqrt(dx * dx + dy * dy) - a.getRadius() - b.getRadius(); // not hypot: StrictMath, and slow
         if (a instanceof Polygon p) {
             gap = Math.max(gap, edgeGap(p, ta, bx, by) - b.getRadius());
         }
