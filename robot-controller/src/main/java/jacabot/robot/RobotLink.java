@@ -316,17 +316,19 @@ final class RobotLink {
     private final class LentReader {
         private final CommandReader reader;
         private final LockstepSpin spin = new LockstepSpin();
+        private final LockstepSpin.Ready answerReady;
         private final CountDownLatch ended = new CountDownLatch(1);
         private volatile IOException failure;
 
         LentReader(CommandReader reader) {
             this.reader = reader;
+            this.answerReady = reader::ready;
         }
 
         void readUntilAck(long step) {
             try {
                 while (!inbox.hasAck(step) && ended.getCount() > 0) {
-                    spin.await(reader::ready);
+                    spin.await(answerReady);
                     ReceivedCommand rc = reader.read();
                     if (rc == null) {
                         ended.countDown();

@@ -27,6 +27,8 @@ public final class SensorDataReader {
     private volatile long frameStartNanos;
     private LinkCosts costs;
     private LockstepSpin spin;
+    /** Bytes of the next frame at hand: the object stream may hold some already, past the buffer's. */
+    private final LockstepSpin.Ready frameReady;
 
     /**
      * Reads the stream header (so it blocks until the controller has written it).
@@ -37,6 +39,7 @@ public final class SensorDataReader {
         this.filter = new SensorInfoFilter(limits);
         this.limits = limits;
         this.buffered = new BufferedInputStream(in);
+        this.frameReady = () -> this.in.available() > 0 || buffered.available() > 0;
         openStream();
     }
 
@@ -82,7 +85,7 @@ public final class SensorDataReader {
             int tag;
             try {
                 if (spin != null) {
-                    spin.await(() -> in.available() > 0 || buffered.available() > 0); // the object stream may hold bytes already
+                    spin.await(frameReady);
                 }
                 tag = in.read();
             } catch (ObjectStreamException e) {
