@@ -153,6 +153,7 @@ public final class LatencyBenchmark {
             }
         });
         var result = run.runFor(seconds * 4);
+        run.close();
         print("lockstep", run.reactiveTimes(), result.response());
         out.println();
         out.printf(Locale.ROOT, "Lockstep: %d commands answered a control step k; the latest was applied at step k+%d "

@@ -88,10 +88,11 @@ final class CompareCommand implements Callable<Integer> {
     private static AgentRun runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
-        var run = new LockstepRun(simWorld, null, e, AgentSource.packaged(e), seed, quiet);
-        RunRecorder recorder = RunRecorder.attach(simWorld, e.robot());
-        var result = run.runFor(seconds);
-        return new AgentRun(recorder.summary("agent"), run.reactiveTimes(), result.response());
+        try (var run = new LockstepRun(simWorld, null, e, AgentSource.packaged(e), seed, quiet)) {
+            RunRecorder recorder = RunRecorder.attach(simWorld, e.robot());
+            var result = run.runFor(seconds);
+            return new AgentRun(recorder.summary("agent"), run.reactiveTimes(), result.response());
+        }
     }
 
     private static String ms(jacabot.experiments.link.LatencyStats s) {

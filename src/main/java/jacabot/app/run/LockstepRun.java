@@ -35,7 +35,7 @@ import java.util.function.Consumer;
  * only then does the world advance. Agents, artifacts and the world all run in simulated time,
  * so a run is as fast as the machine allows and replays exactly under a seed.
  */
-public final class LockstepRun {
+public final class LockstepRun implements AutoCloseable {
     /** At most this many reasoning cycles per control step (a busy agent cannot stall the world). */
     static final long CYCLES_PER_STEP = 20_000;
 
@@ -184,6 +184,16 @@ public final class LockstepRun {
         if (c != null) {
             c.stop();
         }
+    }
+
+    /**
+     * Disposes the run's artifacts and ends its workspace's operation threads (they would idle
+     * for 30 s otherwise, one per run of a sweep). The agent's state and the run's figures stay
+     * readable; the run cannot go on.
+     */
+    @Override
+    public void close() {
+        workspace.close();
     }
 
     /** Runs {@code seconds} of simulated time. */

@@ -131,7 +131,7 @@ public final class Scenario {
             throw new ScenarioException("cannot make the middleware: " + e.getMessage(), e);
         }
         var recorder = RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
-        try (RunTap tap = out == null ? null : RunTap.attach(run, null, out, experiment, sourceName)) {
+        try (run; RunTap tap = out == null ? null : RunTap.attach(run, null, out, experiment, sourceName)) {
             run.runFor(duration.toMillis() / 1000.0);
         }
         var summary = recorder.summary("agent");

@@ -104,9 +104,10 @@ public final class SweepRun {
         String message = "";
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
-                var run = new LockstepRun(world, null, e, agent, job.seed(),
-                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket);
-                run.runFor(seconds);
+                try (var run = new LockstepRun(world, null, e, agent, job.seed(),
+                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket)) {
+                    run.runFor(seconds);
+                }
             } else {
                 BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
                     recorder.note(line);
