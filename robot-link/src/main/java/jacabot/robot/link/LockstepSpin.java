@@ -1,7 +1,6 @@
 package jacabot.robot.link;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.util.function.LongSupplier;
 
 /**
@@ -65,18 +64,13 @@ public final class LockstepSpin {
         budget = Math.min(MAX_BUDGET_NANOS, Math.max(budget, 2 * waited));
     }
 
-    /** Spins on a stream's {@code available()}. */
-    public void await(InputStream in) throws IOException {
-        await(() -> in.available() > 0);
-    }
-
     /** {@return the current budget in nanoseconds, 0 when the end just blocks} */
-    public long budgetNanos() {
+    long budgetNanos() {
         return budget;
     }
 
     /** {@return the waits that spun, and of them those the bytes ended} */
-    public long[] spinsAndCatches() {
+    long[] spinsAndCatches() {
         return new long[] {spins, caught};
     }
 
