@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.ToLongFunction;
 import java.util.stream.Collectors;
 
 /**
@@ -64,9 +65,7 @@ public final class SimulationBenchmark {
             Measured m = runAgent(world, source, seconds);
             runs.add(m.timed(System.nanoTime() - t0));
         }
-        List<Measured> byWall = new ArrayList<>(runs);
-        byWall.sort(Comparator.comparingLong(Measured::wall));
-        Measured m = byWall.get(byWall.size() / 2); // the median run: the two threads' placement on the cores varies from run to run
+        Measured m = median(runs, Measured::wall); // the two threads' placement on the cores varies from run to run
         long wall = m.wall();
         long[] sim = m.run().world().stepCost();
         long[] agent = m.run().agentSideCost();
@@ -114,12 +113,17 @@ public final class SimulationBenchmark {
             runs.add(new long[] {System.nanoTime() - b0, bsim[0], bsim[1]});
         }
         String each = runs.stream().map(r -> factor(r[0])).collect(Collectors.joining(" "));
-        List<long[]> byWall = new ArrayList<>(runs);
-        byWall.sort(Comparator.comparingLong(r -> r[0]));
-        long[] b = byWall.get(byWall.size() / 2);
+        long[] b = median(runs, r -> r[0]);
         out.printf(Locale.ROOT, "%nThe procedural baseline on the same world, %d measured runs (%s): the median %.2f s, %.0fx real time "
                 + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", measuredRuns, each, b[0] / 1e9, seconds / (b[0] / 1e9),
                 100.0 * b[1] / b[0], 100.0 * b[2] / b[0], 100.0 * (b[0] - b[1] - b[2]) / b[0]);
+    }
+
+    /** {@return the run of median wall time} */
+    private static <T> T median(List<T> runs, ToLongFunction<T> wall) {
+        List<T> byWall = new ArrayList<>(runs);
+        byWall.sort(Comparator.comparingLong(wall));
+        return byWall.get(byWall.size() / 2);
     }
 
     private String factor(long wallNanos) {
