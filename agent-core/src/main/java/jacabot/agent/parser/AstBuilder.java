@@ -127,12 +127,25 @@ final class AstBuilder {
         Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
         Trigger trigger = trigger(ctx.trigger());
         Term context = ctx.logExpr() == null ? null : noTrue(logExpr(ctx.logExpr()));
-        BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
+        BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : withoutLeadingTrue(planBody(ctx.planBody()));
         // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
         // or else its body
         SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
                 : ctx.planBody() != null ? ctx.planBody() : ctx);
         return new Plan(label, trigger, context, body, src);
+    }
+
+    /**
+     * A plan's body that starts with the action {@code true} starts after it, as Jason reads a plan
+     * ({@code +!g <- true.} is a plan with no body; a later {@code true}, or one in a plan term
+     * {@code { ... }}, stays an action).
+     */
+    private static BodyTerm withoutLeadingTrue(BodyTerm body) {
+        List<BodyStep> steps = body.steps();
+        if (steps.isEmpty() || steps.get(0).kind() != Kind.ACTION || !Literal.TRUE.equals(steps.get(0).term())) {
+            return body;
+        }
+        return new BodyTerm(steps.subList(1, steps.size()));
     }
 
     /** A context that is just {@code true} is no context, as Jason reads it ({@code +!g : true <- b} prints {@code +!g <- b}). */
