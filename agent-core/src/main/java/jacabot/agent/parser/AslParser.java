@@ -248,6 +248,12 @@ public final class AslParser {
 
     /** Parses one term, e.g. for {@code .term2string(T, "f(x)")}. */
     public Term parseTerm(String text) throws AslSyntaxException {
+        Term plain = PlainTerm.read(text);
+        return plain != null ? plain : parseTermByGrammar(text);
+    }
+
+    /** {@link #parseTerm} without the shortcut for plain atoms and numbers. */
+    Term parseTermByGrammar(String text) throws AslSyntaxException {
         var errors = new ErrorCollector("<term>");
         var parser = newParser(text, errors);
         var tree = parser.termOnly();
