@@ -112,6 +112,7 @@ final class ReasoningCycle {
         boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
                 && se.trigger().literal() instanceof Literal l && l.arity() == 4 && l.functor().equals("kqml_received");
         List<Plan> candidates = ag.planLibrary().candidates(se.trigger());
+        Term eventFirst = firstArg(se.trigger().literal());
         for (int k = 0, n = candidates.size(); k < n; k++) {
             Plan p = candidates.get(k);
             if (message && ag.planLibrary().isKqmlPlan(p)) {
@@ -120,16 +121,22 @@ final class ReasoningCycle {
                     return true;
                 }
             }
-            // a failed unification leaves the unifier empty: it serves the next plan
-            if (u == null || !u.isEmpty()) {
+            // a plan not taken leaves the unifier to the next one: a failed unification bound
+            // nothing, a context is solved in a copy
+            if (u == null) {
                 u = ag.newUnifier();
+            } else {
+                u.undoTo(0);
             }
-            if (!isRelevant(p.trigger(), se.trigger(), u)) {
+            if (!isRelevant(p.trigger(), se.trigger(), eventFirst, u)) {
                 continue;
             }
             relevant = true;
             Unifier option = u;
             if (p.context() != null) {
+                if (ag.solver().failsAtFirstComparison(p.context(), u)) {
+                    continue;
+                }
                 Iterator<Unifier> it = ag.solver().solve(p.context(), u);
                 if (!it.hasNext()) {
                     continue;
@@ -145,23 +152,28 @@ final class ReasoningCycle {
         return applyRelApplPlRule2(se, relevant ? "applicable" : "relevant");
     }
 
-    private static boolean isRelevant(Trigger planTrigger, Trigger event, Unifier u) {
+    /** {@code eventFirst}: the event literal's {@link #firstArg}, found once for all the candidates */
+    private static boolean isRelevant(Trigger planTrigger, Trigger event, Term eventFirst, Unifier u) {
         return planTrigger.op() == event.op() && planTrigger.type() == event.type()
-                && !firstArgsDiffer(planTrigger.literal(), event.literal())
+                && (eventFirst == null || !firstArgsDiffer(planTrigger.literal(), eventFirst))
                 && u.unifies(planTrigger.literal(), event.literal());
     }
 
+    /** {@return the first argument of a literal, or null} */
+    private static Term firstArg(Term t) {
+        return t instanceof Literal l && l.arity() > 0 ? l.arg(0) : null;
+    }
+
     /**
-     * {@return whether both literals have as first argument a number, or a plain atom, and not
-     * the same} They cannot unify then: {@code +!count(200000)} is tried for every
-     * {@code !count(N)} of a loop, and this answers without the unifier.
+     * {@return whether the plan's literal and the event's have as first argument a number, or a
+     * plain atom, and not the same} They cannot unify then: {@code +!count(200000)} is tried for
+     * every {@code !count(N)} of a loop, and this answers without the unifier.
      */
-    private static boolean firstArgsDiffer(Term a, Term b) {
-        if (!(a instanceof Literal la) || !(b instanceof Literal lb) || la.arity() == 0 || lb.arity() == 0) {
+    private static boolean firstArgsDiffer(Term a, Term y) {
+        if (!(a instanceof Literal la) || la.arity() == 0) {
             return false;
         }
         Term x = la.arg(0);
-        Term y = lb.arg(0);
         if (x instanceof jacabot.agent.syntax.NumberTerm nx) {
             return y instanceof jacabot.agent.syntax.NumberTerm ny && nx.value() != ny.value();
         }

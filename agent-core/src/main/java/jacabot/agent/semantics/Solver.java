@@ -38,6 +38,52 @@ public final class Solver {
         return false;
     }
 
+    /**
+     * {@return whether a plan context has no solution, seen without a proof} It is so when its
+     * first conjunct is a comparison ({@code N mod 30 == 3}) that does not hold: a proof would fail
+     * there before anything else. Of a goal's many plans, most fail so, and a proof first copies
+     * the unifier. Terms with function calls ({@code math.random}) are left to the proof, which
+     * evaluates them once.
+     */
+    boolean failsAtFirstComparison(Term context, Unifier u) {
+        Term first = context;
+        while (first instanceof jacabot.agent.syntax.LogExpr e && e.op() == jacabot.agent.syntax.LogExpr.Op.AND) {
+            first = e.left();
+        }
+        if (!(first instanceof RelExpr r) || r.op() == RelExpr.Op.UNIFY || r.op() == RelExpr.Op.UNIV
+                || !withoutCalls(r.left(), u) || !withoutCalls(r.right(), u)) {
+            return false;
+        }
+        return !relational(r, u); // a comparison binds nothing
+    }
+
+    /** {@return whether applying {@code u} to the term calls no function} (lists and the rarer terms: no, to be safe) */
+    private static boolean withoutCalls(Term t, Unifier u) {
+        if (t instanceof Var v) {
+            Term d = u.deref(v);
+            return d instanceof Var || withoutCalls(d, u);
+        }
+        if (t instanceof NumberTerm || t instanceof StringTerm) {
+            return true;
+        }
+        if (t instanceof jacabot.agent.syntax.ArithExpr e) {
+            return withoutCalls(e.left(), u) && (e.right() == null || withoutCalls(e.right(), u));
+        }
+        if (t instanceof Literal l) {
+            return l.ns() == null && allWithoutCalls(l.args(), u) && allWithoutCalls(l.annots(), u);
+        }
+        return false;
+    }
+
+    private static boolean allWithoutCalls(List<Term> terms, Unifier u) {
+        for (int i = 0, n = terms.size(); i < n; i++) {
+            if (!withoutCalls(terms.get(i), u)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** {@return the solutions of a formula, each an extension of {@code u} (never changed)} */
     public Iterator<Unifier> solve(Term formula, Unifier u) {
         return new Solutions(new Proof(this, formula, u.copy(), 0));
