@@ -69,17 +69,21 @@ public final class InterpreterBenchmark {
     private final Path dir;
     private final java.util.Set<String> selected;
     private final double limitSeconds;
+    private final List<Path> projects;
 
     public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out) throws IOException {
-        this(ourClasspath, jasonClasspath, runs, out, null, 300);
+        this(ourClasspath, jasonClasspath, runs, out, null, 300, List.of());
     }
 
     /**
      * @param programs the programs to run by name ({@code deep} for all of {@link #DEEP}), or null for all
      * @param limitSeconds the longest a deep program's run may take; longer chains are then not run
+     * @param projects the user's own projects ({@code .mas2j}) to run too, each in its directory; an
+     *        agent prints {@code start} and {@code end} around what is measured
      */
     public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out,
-            java.util.Set<String> programs, double limitSeconds) throws IOException {
+            java.util.Set<String> programs, double limitSeconds, List<Path> projects) throws IOException {
+        this.projects = List.copyOf(projects);
         this.ourClasspath = ourClasspath;
         this.jasonClasspath = jasonClasspath;
         this.runs = runs;
@@ -121,7 +125,7 @@ public final class InterpreterBenchmark {
     }
 
     public void run() throws IOException, InterruptedException {
-        if (PROGRAMS.stream().anyMatch(p -> wanted(p[0]))) {
+        if (PROGRAMS.stream().anyMatch(p -> wanted(p[0])) || !projects.isEmpty()) {
             programs();
         }
         if (DEEP.stream().anyMatch(d -> wanted(d.name()))) {
@@ -136,20 +140,28 @@ public final class InterpreterBenchmark {
             if (!wanted(p[0])) {
                 continue;
             }
-            ours(p[1]);
-            jason(p[1]);
-            var ours = new ArrayList<Run>();
-            var jason = new ArrayList<Run>();
-            for (int i = 0; i < runs; i++) {
-                ours.add(ours(p[1]));
-                jason.add(jason(p[1]));
-            }
-            Run o = median(ours);
-            Run j = median(jason);
-            long cycles = o.cycles;
-            out.printf(Locale.ROOT, "| %s (%s) | %.3f | %.3f | %.2f | %,.0f | %,.0f | %d | %d |%n", p[0], p[2], o.seconds,
-                    j.seconds, j.seconds / o.seconds, cycles / o.seconds, cycles / j.seconds, o.peakKb / 1024, j.peakKb / 1024);
+            row(p[0] + " (" + p[2] + ")", dir.resolve(p[1]));
         }
+        for (Path project : projects) {
+            row(project.getFileName().toString(), project.toAbsolutePath());
+        }
+    }
+
+    /** Measures one project on both interpreters, alternating after a warm-up run each, and prints its row. */
+    private void row(String name, Path project) throws IOException, InterruptedException {
+        ours(project);
+        jason(project);
+        var ours = new ArrayList<Run>();
+        var jason = new ArrayList<Run>();
+        for (int i = 0; i < runs; i++) {
+            ours.add(ours(project));
+            jason.add(jason(project));
+        }
+        Run o = median(ours);
+        Run j = median(jason);
+        long cycles = o.cycles;
+        out.printf(Locale.ROOT, "| %s | %.3f | %.3f | %.2f | %,.0f | %,.0f | %d | %d |%n", name, o.seconds,
+                j.seconds, j.seconds / o.seconds, cycles / o.seconds, cycles / j.seconds, o.peakKb / 1024, j.peakKb / 1024);
     }
 
     /**
@@ -169,8 +181,9 @@ public final class InterpreterBenchmark {
                 continue;
             }
             boolean chain = d.name().startsWith("ancestor-") && d.queries() == 200;
-            Run o = oursCut && chain ? Run.NONE : deepRuns(true, d.name().replace('-', '_') + ".mas2j");
-            Run j = jasonCut && chain ? Run.NONE : deepRuns(false, d.name().replace('-', '_') + ".mas2j");
+            Path project = dir.resolve(d.name().replace('-', '_') + ".mas2j");
+            Run o = oursCut && chain ? Run.NONE : deepRuns(true, project);
+            Run j = jasonCut && chain ? Run.NONE : deepRuns(false, project);
             if (chain) {
                 oursCut |= o.timedOut;
                 jasonCut |= j.timedOut;
@@ -195,7 +208,7 @@ public final class InterpreterBenchmark {
                 growth(r[1].seconds, first[1].seconds, r[1].timedOut, length), growth(r[1].peakKb, first[1].peakKb, r[1].timedOut, length)));
     }
 
-    private Run deepRuns(boolean ours, String project) throws IOException, InterruptedException {
+    private Run deepRuns(boolean ours, Path project) throws IOException, InterruptedException {
         Run warmUp = ours ? ours(project) : jason(project);
         if (warmUp.timedOut || warmUp.seconds > LONG_RUN_SECONDS) {
             return warmUp;
@@ -220,13 +233,15 @@ public final class InterpreterBenchmark {
         return timedOut ? "–" : String.format(Locale.ROOT, "%.2f", value / atHundred / (length / 100.0));
     }
 
-    private Run ours(String project) throws IOException, InterruptedException {
-        return measure(List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats", project));
+    /** Runs a project (a {@code .mas2j}) in its directory, as its user would. */
+    private Run ours(Path project) throws IOException, InterruptedException {
+        return measure("our interpreter", project, List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats",
+                project.getFileName().toString()));
     }
 
-    private Run jason(String project) throws IOException, InterruptedException {
-        return measure(List.of("-cp", jasonClasspath, "jason.infra.local.RunLocalMAS", project, "--log-conf",
-                "jason-logging.properties"));
+    private Run jason(Path project) throws IOException, InterruptedException {
+        return measure("Jason", project, List.of("-cp", jasonClasspath, "jason.infra.local.RunLocalMAS",
+                project.getFileName().toString(), "--log-conf", dir.resolve("jason-logging.properties").toString()));
     }
 
     private static Run median(List<Run> rs) {
@@ -235,7 +250,28 @@ public final class InterpreterBenchmark {
         return a[a.length / 2];
     }
 
-    private Run measure(List<String> javaArgs) throws IOException, InterruptedException {
+    /** How long a project may run on after its {@code end} line (a program without {@code .stopMAS} never ends). */
+    private static final long AFTER_END_MILLIS = 10_000;
+
+    private static void stopAfterEnd(Process p) {
+        var stop = new Thread(() -> {
+            try {
+                if (!p.waitFor(AFTER_END_MILLIS, TimeUnit.MILLISECONDS)) {
+                    // the JVM under GNU time, which then reports its peak memory
+                    p.descendants().forEach(ProcessHandle::destroyForcibly);
+                    if (!p.waitFor(1, TimeUnit.SECONDS)) {
+                        p.destroyForcibly();
+                    }
+                }
+            } catch (InterruptedException e) {
+                // the benchmark is ending
+            }
+        });
+        stop.setDaemon(true);
+        stop.start();
+    }
+
+    private Run measure(String who, Path project, List<String> javaArgs) throws IOException, InterruptedException {
         Path timeFile = dir.resolve("time.txt");
         var cmd = new ArrayList<String>();
         boolean gnuTime = Files.isExecutable(Path.of("/usr/bin/time"));
@@ -245,7 +281,7 @@ public final class InterpreterBenchmark {
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.add("-Djava.awt.headless=true");
         cmd.addAll(javaArgs);
-        Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true).start();
+        Process p = new ProcessBuilder(cmd).directory(project.getParent().toFile()).redirectErrorStream(true).start();
         var cut = new java.util.concurrent.atomic.AtomicBoolean();
         var limit = new Thread(() -> {
             try {
@@ -270,6 +306,7 @@ public final class InterpreterBenchmark {
                     start = now;
                 } else if (line.endsWith("] end")) {
                     end = now;
+                    stopAfterEnd(p);
                 } else if (line.startsWith("cycles ")) {
                     cycles = Long.parseLong(line.substring(7).trim());
                 }
@@ -283,7 +320,8 @@ public final class InterpreterBenchmark {
             return new Run(limitSeconds, 0, cycles, true);
         }
         if (start < 0 || end < 0) {
-            throw new IOException("the program did not print its start and end lines: " + String.join(" ", cmd));
+            throw new IOException(project + ": on " + who + ", no agent printed its `start` and `end` lines"
+                    + " (.print(start) and .print(end) around what is measured)");
         }
         long peak = gnuTime ? Long.parseLong(Files.readString(timeFile).trim().lines().reduce((a, b) -> b).orElse("0")) : 0;
         return new Run((end - start) / 1e9, peak, cycles, false);

@@ -17,7 +17,7 @@ final class BenchCommand implements Runnable {
     @Override
     public void run() {
         var out = spec.commandLine().getOut();
-        out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE] [--programs LIST] [--limit S]");
+        out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE] [--programs LIST] [--project FILE.mas2j] [--limit S]");
         out.println("       jacabot bench latency [--duration 60s] [--speed X]");
         out.println("       jacabot bench sim [--duration 10m] [--seed N]");
         out.flush();
@@ -56,6 +56,12 @@ final class BenchCommand implements Runnable {
         @Option(names = "--limit", paramLabel = "S", description = "seconds a run may take before it is cut (default ${DEFAULT-VALUE})")
         private double limit = 300;
 
+        @Option(names = "--project", paramLabel = "FILE",
+                description = "a project of your own (.mas2j) to measure too, run in its directory; one of its agents prints "
+                        + "`start` and `end` (.print(start), .print(end)) around what is measured. Repeatable; given alone, "
+                        + "only these projects run")
+        private java.util.List<Path> projects = new java.util.ArrayList<>();
+
         @Option(names = "--ours-classpath", paramLabel = "FILE",
                 description = "a file holding the class path of another build of ours to measure (default: this one)")
         private Path oursClasspath;
@@ -77,13 +83,19 @@ final class BenchCommand implements Runnable {
                     }
                 }
             }
+            for (Path p : projects) {
+                if (!Files.isRegularFile(p) || !p.getFileName().toString().endsWith(".mas2j")) {
+                    throw new UserError("--project: " + p + ": not a .mas2j file");
+                }
+            }
             if (!(limit > 0)) {
                 throw new UserError("--limit must be a positive number of seconds, got " + limit);
             }
             String jason = Files.readString(jasonClasspath).trim();
             String ours = oursClasspath == null ? System.getProperty("java.class.path") : Files.readString(oursClasspath).trim();
             new InterpreterBenchmark(ours, jason, Math.max(1, runs), ConsoleStreams.of(spec.commandLine().getOut()),
-                    programs == null ? null : java.util.Set.copyOf(programs), limit).run();
+                    programs == null ? (projects.isEmpty() ? null : java.util.Set.of()) : java.util.Set.copyOf(programs), limit,
+                    projects).run();
             return 0;
         }
     }

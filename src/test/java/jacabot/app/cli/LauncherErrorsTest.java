@@ -62,6 +62,20 @@ class LauncherErrorsTest {
     }
 
     @Test
+    void aBenchProjectMustBeAProjectWhoseAgentPrintsStartAndEnd(@TempDir Path dir) throws Exception {
+        Path jason = dir.resolve("jason-classpath.txt");
+        Files.writeString(jason, dir.resolve("no-jason.jar").toString());
+        Files.writeString(dir.resolve("a.asl"), "!g.\n+!g <- .print(start); .print(end); .stopMAS.\n");
+        assertOneLine(CliRun.run("bench", "interpreter", "--jason-classpath", jason.toString(), "--project",
+                dir.resolve("a.asl").toString()), "2", "--project: " + dir.resolve("a.asl") + ": not a .mas2j file");
+        // our interpreter runs the project in its directory; "Jason" here is no Jason at all
+        Path project = dir.resolve("p.mas2j");
+        Files.writeString(project, "MAS p { agents: a; }\n");
+        assertOneLine(CliRun.run("bench", "interpreter", "--jason-classpath", jason.toString(), "--project", project.toString(),
+                "--runs", "1"), "1", project + ": on Jason, no agent printed its `start` and `end` lines");
+    }
+
+    @Test
     void badNumbersAreUserErrors() {
         assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");
         assertOneLine(CliRun.run("compare", "--duration", "abc"), "2", "--duration: bad duration");
