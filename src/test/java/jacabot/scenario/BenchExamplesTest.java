@@ -3,10 +3,6 @@ package jacabot.scenario;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.agent.runtime.MasLauncher;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -32,20 +28,9 @@ class BenchExamplesTest {
     }
 
     private static void run(Path project) throws Exception {
-        var bytes = new ByteArrayOutputStream();
-        var mas = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, false).load(project);
-        Thread t = new Thread(() -> {
-            try {
-                mas.runThreads();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        t.setDaemon(true);
-        t.start();
-        t.join(60_000);
-        assertTrue(mas.isStopped(), project + " ends with .stopMAS");
-        List<String> lines = bytes.toString(StandardCharsets.UTF_8).lines().collect(Collectors.toList());
+        var run = ProjectRun.of(project, 60_000);
+        assertTrue(run.mas.isStopped(), project + " ends with .stopMAS");
+        List<String> lines = run.console().lines().collect(Collectors.toList());
         List<String> marks = lines.stream().filter(l -> l.endsWith("] start") || l.endsWith("] end")).collect(Collectors.toList());
         assertEquals(2, marks.size(), String.join("\n", lines));
         assertTrue(marks.get(0).endsWith("start") && marks.get(1).endsWith("end"), String.join("\n", lines));
