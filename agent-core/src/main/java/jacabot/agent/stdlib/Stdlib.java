@@ -79,6 +79,7 @@ public final class Stdlib {
         put(map, new Print());
         put(map, new Printf());
         put(map, new Println());
+        put(map, new Puts());
         put(map, new Random());
         put(map, new Range());
         put(map, new RelevantPlans());
