@@ -71,6 +71,7 @@ public final class Stdlib {
         put(map, new IsStructure());
         put(map, new Length());
         put(map, new Loop());
+        put(map, ChangeCase.lower());
         put(map, Extremum.max());
         put(map, new Member());
         put(map, Extremum.min());
@@ -84,6 +85,7 @@ public final class Stdlib {
         put(map, new Range());
         put(map, new RelevantPlans());
         put(map, new RemovePlan());
+        put(map, new Replace());
         put(map, new Resume());
         put(map, new Reverse());
         put(map, new Send());
@@ -99,6 +101,7 @@ public final class Stdlib {
         put(map, new Term2string());
         put(map, new Time());
         put(map, new Union());
+        put(map, ChangeCase.upper());
         put(map, new Wait());
         return map;
     }
