@@ -77,6 +77,7 @@ public final class Stdlib {
         put(map, Extremum.min());
         put(map, new MyName());
         put(map, new Nth());
+        put(map, Sublists.prefix());
         put(map, new Print());
         put(map, new Printf());
         put(map, new Println());
@@ -93,7 +94,9 @@ public final class Stdlib {
         put(map, new Setof());
         put(map, new Sort());
         put(map, new StopMAS());
+        put(map, Sublists.sublist());
         put(map, new Substring());
+        put(map, Sublists.suffix());
         put(map, new SucceedGoal());
         put(map, new Suspend());
         put(map, new Suspended());
