@@ -33,6 +33,7 @@ public final class Stdlib {
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
+        put(map, CopyTerm.copyTerm());
         put(map, new Clone());
         put(map, new CreateAgent());
         put(map, new KillAgent());
@@ -45,6 +46,7 @@ public final class Stdlib {
         put(map, new PlanLabel());
         put(map, new RelevantRules());
         put(map, new CurrentIntention());
+        put(map, new DateIa());
         put(map, new Eval());
         put(map, new Delete());
         put(map, new Desire());
@@ -55,6 +57,7 @@ public final class Stdlib {
         put(map, new DropDesire());
         put(map, new DropEvent());
         put(map, new DropIntention());
+        put(map, new Empty());
         put(map, new Fail());
         put(map, new FailGoal());
         put(map, new Findall());
@@ -76,6 +79,7 @@ public final class Stdlib {
         put(map, new Member());
         put(map, Extremum.min());
         put(map, new MyName());
+        put(map, new NanoTime());
         put(map, new Nth());
         put(map, Sublists.prefix());
         put(map, new Print());
@@ -86,12 +90,14 @@ public final class Stdlib {
         put(map, new Range());
         put(map, new RelevantPlans());
         put(map, new RemovePlan());
+        put(map, CopyTerm.renameApart());
         put(map, new Replace());
         put(map, new Resume());
         put(map, new Reverse());
         put(map, new Send());
         put(map, new SetRandomSeed());
         put(map, new Setof());
+        put(map, new Shuffle());
         put(map, new Sort());
         put(map, new StopMAS());
         put(map, Sublists.sublist());
@@ -105,6 +111,7 @@ public final class Stdlib {
         put(map, new Time());
         put(map, new Union());
         put(map, ChangeCase.upper());
+        put(map, new Version());
         put(map, new Wait());
         return map;
     }
