@@ -15,6 +15,7 @@ public final class Stdlib {
         put(map, new Abolish());
         put(map, new Fork());
         put(map, new ListPlans());
+        put(map, new ListRules());
         put(map, new SetAdd(false));
         put(map, new SetAdd(true));
         put(map, new QueueCreate());
@@ -28,8 +29,12 @@ public final class Stdlib {
         put(map, new IntentionIa());
         put(map, new Log());
         put(map, new AddAnnot());
+        put(map, new AddNestedSource());
         put(map, new AddPlan());
         put(map, new AllNames());
+        put(map, AssertBelief.asserta());
+        put(map, AssertBelief.assertz());
+        put(map, new Belief());
         put(map, new Broadcast());
         put(map, new Concat());
         put(map, new Count());
@@ -90,6 +95,7 @@ public final class Stdlib {
         put(map, new Range());
         put(map, new RelevantPlans());
         put(map, new RemovePlan());
+        put(map, new RemoveSourceAnnot());
         put(map, CopyTerm.renameApart());
         put(map, new Replace());
         put(map, new Resume());

@@ -7,7 +7,10 @@ import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
-/** What the Jason oracle programs cannot show: a seeded .shuffle, and errors Jason gives as Java exceptions. */
+/**
+ * What the Jason oracle programs cannot show: a seeded .shuffle, errors Jason gives as Java
+ * exceptions, and .list_rules (Jason also lists its KQML rules, in an order of its hash map).
+ */
 class StringsAndTermsTest {
     private static List<String> run(String program) {
         var a = new TestAgent(program);
@@ -53,5 +56,17 @@ class StringsAndTermsTest {
                 !g.
                 +!g <- N = 3; S = "x"; L = [1, "a"]; .puts("n=#{N} s=#{S} l=#{L}").
                 """));
+    }
+
+    @Test
+    void listRulesPrintsEachRuleAndNoFact() {
+        List<String> printed = run("""
+                r(X) :- X > 1 & b(X).
+                r(1) :- true.
+                b(3).
+                !g.
+                +!g <- .list_rules(ignored).
+                """);
+        assertEquals(List.of("r(X)[source(self)] :- ((X > 1) & b(X))", "r(1)[source(self)] :- true"), printed);
     }
 }
