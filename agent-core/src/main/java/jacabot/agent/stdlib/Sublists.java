@@ -8,7 +8,7 @@ import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
-import java.util.ArrayList;
+import java.util.Iterator;
 import java.util.List;
 
 /**
@@ -51,48 +51,76 @@ final class Sublists extends DefaultInternalAction {
             throw new IaException("wrong_arguments", "Wrong argument for internal action '" + ia + "': first argument must be "
                     + (strings ? "a list, string, or a variable" : "a list or a variable"));
         }
-        var out = new ArrayList<Unifier>();
-        for (Term part : parts(args[1])) {
-            Unifier c = un.copy();
-            if (c.unifies(args[0], part)) { // a string part never unifies with a list P, nor a list with a string
-                out.add(c);
-            }
-        }
-        return out.iterator();
+        // lazy: .sublist of a long list has a quadratic number of parts, and a test needs the first
+        return new Parts(un, args[0], args[1]);
     }
 
-    /** The candidates in Jason's order. */
-    private List<Term> parts(Term whole) {
-        var out = new ArrayList<Term>();
-        if (whole instanceof StringTerm s) {
-            String v = s.value();
-            for (int n = v.length(); n >= 0; n--) {
-                out.add(new StringTerm(kind == Kind.PREFIX ? v.substring(0, n) : v.substring(v.length() - n)));
-            }
-            return out;
+    /** The candidates in Jason's order, each made only when the previous did not unify. */
+    private final class Parts implements Iterator<Unifier> {
+        private final Unifier un;
+        private final Term x;
+        private final String text;
+        private final List<Term> items;
+        private final int size;
+        /** The next candidate: [from, to) of the list or string; from == to is the empty one, the last. */
+        private int from;
+        private int to;
+        private boolean done;
+        private Unifier pending;
+
+        Parts(Unifier un, Term x, Term whole) {
+            this.un = un;
+            this.x = x;
+            this.text = whole instanceof StringTerm s ? s.value() : null;
+            this.items = text == null ? ((ListTerm) whole).elements() : null;
+            this.size = text != null ? text.length() : items.size();
+            this.to = size;
         }
-        List<Term> items = ((ListTerm) whole).elements();
-        int size = items.size();
-        switch (kind) {
-            case PREFIX -> {
-                for (int n = size; n >= 0; n--) {
-                    out.add(listOf(items.subList(0, n)));
+
+        @Override
+        public boolean hasNext() {
+            while (pending == null && !done) {
+                Term part = text != null ? new StringTerm(text.substring(from, to)) : listOf(items.subList(from, to));
+                step();
+                Unifier c = un.copy();
+                if (c.unifies(x, part)) { // a string part never unifies with a list, nor a list with a string
+                    pending = c;
                 }
             }
-            case SUFFIX -> {
-                for (int n = size; n >= 0; n--) {
-                    out.add(listOf(items.subList(size - n, size)));
-                }
+            return pending != null;
+        }
+
+        /** Moves to the next candidate: prefixes shrink at the end, suffixes at the start, sublists both. */
+        private void step() {
+            if (from == to) {
+                done = true; // the empty part comes last
+                return;
             }
-            case SUBLIST -> {
-                for (int from = 0; from < size; from++) {
-                    for (int to = size; to > from; to--) {
-                        out.add(listOf(items.subList(from, to)));
+            switch (kind) {
+                case PREFIX -> to--;
+                case SUFFIX -> from++;
+                case SUBLIST -> {
+                    if (to > from + 1) {
+                        to--;
+                    } else if (from + 1 < size) {
+                        from++;
+                        to = size;
+                    } else {
+                        from = size; // the empty one
+                        to = size;
                     }
                 }
-                out.add(listOf(List.of()));
             }
         }
-        return out;
+
+        @Override
+        public Unifier next() {
+            if (!hasNext()) {
+                throw new java.util.NoSuchElementException();
+            }
+            Unifier u = pending;
+            pending = null;
+            return u;
+        }
     }
 }
