@@ -6,6 +6,7 @@
       .puts("a=#{A} u=#{Zed} e=#{1+2} s=#{ A } n=#{} x=#{a} i=#{1}");
       .puts("s=#{S} n=#{N} f=#{F} l=#{L} twice=#{S}#{A}");
       .puts("nested #{#{A}} open #{A");
+      .puts("unnamed #{_} #{_}"); .copy_term(f(_), Fresh); .print(Fresh);
       .puts("into #{W} #{A}", R);
       .print(R);
       W = 1;

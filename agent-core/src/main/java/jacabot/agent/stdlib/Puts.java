@@ -14,7 +14,8 @@ import java.util.regex.Pattern;
 
 /**
  * {@code .puts(S[, R])} as Jason's: S with each {@code #{Name}} replaced by the value of the
- * variable (or the atom, or number) Name; an unbound variable gives its name, and anything but
+ * variable (or the atom, or number) Name; an unbound variable gives its name ({@code #{_}} a new
+ * unnamed variable, {@code _N}, as Jason reads it), and anything but
  * a bare name inside the braces is left as written. With a variable R the text is bound to R
  * instead of printed; with any other R, Jason prints S followed by R only when R is a string.
  */
@@ -31,31 +32,34 @@ final class Puts extends DefaultInternalAction {
         if (!(args[0] instanceof StringTerm s)) {
             throw new IaException("wrong_arguments", "Wrong argument for internal action 'puts': first argument must be a string");
         }
-        String out = interpolate(s.value(), un);
+        String out = interpolate(s.value(), un, ag);
         if (args.length == 2) {
             if (args[1] instanceof Var || args[1] instanceof AnnotatedVar) {
                 return un.unifies(args[1], new StringTerm(out));
             }
             if (args[1] instanceof StringTerm more) {
-                out += interpolate(more.value(), un);
+                out += interpolate(more.value(), un, ag);
             }
         }
         ag.print(out);
         return true;
     }
 
-    private static String interpolate(String s, Unifier un) {
+    private static String interpolate(String s, Unifier un, Agent ag) {
         Matcher m = HOLE.matcher(s);
         var sb = new StringBuilder();
         while (m.find()) {
-            m.appendReplacement(sb, Matcher.quoteReplacement(text(un.apply(named(m.group(1))))));
+            m.appendReplacement(sb, Matcher.quoteReplacement(text(un.apply(named(m.group(1), ag)))));
         }
         m.appendTail(sb);
         return sb.toString();
     }
 
     /** The term a bare name stands for: a variable, a number or an atom. */
-    private static Term named(String name) {
+    private static Term named(String name, Agent ag) {
+        if (name.equals("_")) {
+            return ag.freshVar(new Var("_")); // read as Jason reads it: a new unnamed variable, _N
+        }
         char c = name.charAt(0);
         if (Character.isUpperCase(c) || c == '_') {
             return new Var(name);
