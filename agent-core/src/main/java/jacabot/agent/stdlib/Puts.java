@@ -17,7 +17,8 @@ import java.util.regex.Pattern;
  * variable (or the atom, or number) Name; an unbound variable gives its name ({@code #{_}} a new
  * unnamed variable, {@code _N}, as Jason reads it), and anything but
  * a bare name inside the braces is left as written. With a variable R the text is bound to R
- * instead of printed; with any other R, Jason prints S followed by R only when R is a string.
+ * instead of printed; with any other R, Jason prints S followed by R (interpolated too) only when
+ * R is a string.
  */
 final class Puts extends DefaultInternalAction {
     /** A name of letters, digits and {@code _} only: {@code #{ A }} or {@code #{1+2}} stay as they are. */
