@@ -11,10 +11,13 @@ import java.util.function.Consumer;
  * duplicates, as Jason keeps them. Atoms are literals with no arguments and no annotations.
  * A literal lives in a namespace ({@code ns::b(1)}, Jason's modules): null stands for the default
  * namespace, otherwise it is an atom or a variable ({@code NS::b}); {@code b} and {@code ns::b}
- * are different predicates.
+ * are different predicates. As in Jason, the annotations may end with a tail variable,
+ * {@code b[x|T]} or {@code b[|T]}: it takes the annotations a matching literal has beyond these.
+ *
+ * @param tail null (nearly always), or the variable after {@code |} in the annotations
  */
-public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns)
-        implements Term {
+public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns,
+        Term tail) implements Term {
 
     public static final Literal DEFAULT_NS = new Literal("default", List.of(), List.of(), false, false, null);
     public static final Literal TRUE = atom("true");
@@ -38,6 +41,20 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
      */
     public Literal {
         args = List.copyOf(args);
+        if (tail != null) {
+            // a tail bound to a list: its elements join the annotations, its own tail stays the tail
+            if (tail instanceof ListTerm lt) {
+                var all = new ArrayList<Term>(annots);
+                Term t = lt;
+                while (t instanceof ListTerm.Cons c) {
+                    all.add(c.head());
+                    t = c.tail();
+                }
+                annots = all;
+                tail = t instanceof ListTerm ? null : t;
+            }
+            operandAtom = false;
+        }
         annots = annots.isEmpty() ? List.of() : sortAnnots(annots);
         operandAtom = operandAtom && args.isEmpty() && annots.isEmpty() && !negated;
         if (ns instanceof Literal l && l.isDefaultNsName()) {
@@ -45,17 +62,21 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         }
     }
 
+    public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns) {
+        this(functor, args, annots, negated, operandAtom, ns, null);
+    }
+
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom) {
-        this(functor, args, annots, negated, operandAtom, null);
+        this(functor, args, annots, negated, operandAtom, null, null);
     }
 
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated) {
-        this(functor, args, annots, negated, false, null);
+        this(functor, args, annots, negated, false, null, null);
     }
 
     /** {@return this atom as written in a relational expression (see {@link #operandAtom})} */
     public Literal asOperandAtom() {
-        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true, ns) : this;
+        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true, ns, null) : this;
     }
 
     /** {@return the same literal in namespace {@code newNs} (null or {@code default}: the default one)} */
@@ -63,7 +84,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         if (newNs instanceof Literal l && l.isDefaultNsName()) {
             newNs = null;
         }
-        return java.util.Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs);
+        return java.util.Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs, tail);
     }
 
     /** {@return the namespace as a term: the atom {@code default} for the default namespace} */
@@ -129,13 +150,17 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     @Override
     public boolean equals(Object o) {
         return o == this || o instanceof Literal l && negated == l.negated && functor.equals(l.functor)
-                && args.equals(l.args) && annots.equals(l.annots) && java.util.Objects.equals(ns, l.ns);
+                && args.equals(l.args) && annots.equals(l.annots) && java.util.Objects.equals(ns, l.ns)
+                && (tail == l.tail || tail != null && tail.equals(l.tail));
     }
 
     @Override
     public int hashCode() {
         int h = ((functor.hashCode() * 31 + args.hashCode()) * 31 + annots.hashCode()) * 31 + Boolean.hashCode(negated);
-        return ns == null ? h : h * 31 + ns.hashCode();
+        if (ns != null) {
+            h = h * 31 + ns.hashCode();
+        }
+        return tail == null ? h : h * 31 + tail.hashCode();
     }
 
     public int arity() {
@@ -148,7 +173,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     /** {@return whether this is a plain atom (no arguments, annotations or negation)} */
     public boolean isAtom() {
-        return args.isEmpty() && annots.isEmpty() && !negated;
+        return args.isEmpty() && annots.isEmpty() && !negated && tail == null;
     }
 
     /** {@return whether the functor names an internal action ({@code .print}, {@code jia.f})} */
@@ -156,16 +181,18 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         return functor.indexOf('.') >= 0 && functor.charAt(0) != '\'';
     }
 
+    /** {@return the literal with these annotations (the tail, if any, kept)} */
     public Literal withAnnots(List<Term> newAnnots) {
-        return new Literal(functor, args, newAnnots, negated, false, ns);
+        return new Literal(functor, args, newAnnots, negated, false, ns, tail);
     }
 
     public Literal withArgs(List<Term> newArgs) {
-        return new Literal(functor, newArgs, annots, negated, false, ns);
+        return new Literal(functor, newArgs, annots, negated, false, ns, tail);
     }
 
+    /** {@return the literal with no annotations and no tail} */
     public Literal withoutAnnots() {
-        return annots.isEmpty() ? this : new Literal(functor, args, List.of(), negated, false, ns);
+        return annots.isEmpty() && tail == null ? this : new Literal(functor, args, List.of(), negated, false, ns);
     }
 
     /** {@return this literal without its {@code source(_)} annotations} */
@@ -191,7 +218,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         int n = annots.size();
         if (n == 0) {
             // source(self) on a subgoal or a belief of the agent's own: a list shared by all
-            return new Literal(functor, args, annot == SOURCE_SELF ? SOURCE_SELF_ONLY : List.of(annot), negated, false, ns);
+            return new Literal(functor, args, annot == SOURCE_SELF ? SOURCE_SELF_ONLY : List.of(annot), negated, false, ns, tail);
         }
         // one insertion into the sorted annotations, without re-sorting them
         int lo = 0;
@@ -216,7 +243,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         for (int i = lo; i < n; i++) {
             out[i + 1] = annots.get(i);
         }
-        return new Literal(functor, args, List.of(out), negated, false, ns);
+        return new Literal(functor, args, List.of(out), negated, false, ns, tail);
     }
 
     /** {@return the first annotation with this functor, or null} */
@@ -246,6 +273,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public boolean isGround() {
+        if (tail != null) {
+            return false;
+        }
         if (ns != null && !ns.isGround()) {
             return false;
         }
@@ -268,6 +298,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         for (Term t : annots) {
             t.collectVars(sink);
         }
+        if (tail != null) {
+            tail.collectVars(sink);
+        }
         for (Term t : args) {
             t.collectVars(sink);
         }
@@ -278,7 +311,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     @Override
     public String toString() {
-        if (functor.equals(RULE_TERM) && args.size() == 2 && annots.isEmpty()) {
+        if (functor.equals(RULE_TERM) && args.size() == 2 && annots.isEmpty() && tail == null) {
             return "{ " + args.get(0) + " :- " + args.get(1) + " }"; // as Jason prints a rule as a term
         }
         var sb = new StringBuilder();
@@ -294,9 +327,12 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
             TermOrder.join(sb, args);
             sb.append(')');
         }
-        if (!annots.isEmpty()) {
+        if (!annots.isEmpty() || tail != null) {
             sb.append('[');
             TermOrder.join(sb, annots);
+            if (tail != null) {
+                sb.append('|').append(tail); // as Jason: b[x|T], b[|T]
+            }
             sb.append(']');
         }
         return sb.toString();

@@ -89,7 +89,12 @@ public final class TermOrder {
         if (c != 0) {
             return c;
         }
-        return compareSeq(a.annots(), b.annots());
+        c = compareSeq(a.annots(), b.annots());
+        if (c != 0 || a.tail() == b.tail()) {
+            return c;
+        }
+        // as Jason orders them: d, d[|T], d[a], d[a|T]
+        return a.tail() == null ? -1 : b.tail() == null ? 1 : compare(a.tail(), b.tail());
     }
 
     private static int compareSeq(List<Term> a, List<Term> b) {
