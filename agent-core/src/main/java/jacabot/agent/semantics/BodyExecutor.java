@@ -262,7 +262,7 @@ final class BodyExecutor {
      * {@link #NOT_GROUND} when a fact or an annotation has variables (nothing was done)}
      */
     private Literal removeAnyArgs(Literal body) {
-        if (body.arity() == 0 || body.ns() != null || !allGround(body.annots())) {
+        if (body.arity() == 0 || body.ns() != null || body.tail() != null || !allGround(body.annots())) {
             return NOT_GROUND;
         }
         for (BeliefBase.Entry e : ag.beliefBase().current(body)) {
@@ -310,7 +310,7 @@ final class BodyExecutor {
      * given.
      */
     Literal prepareForEvent(Term term, IntendedMeans im, IntendedMeans caller) {
-        if (term instanceof Literal l && l.annots().isEmpty() && l.ns() == null) {
+        if (term instanceof Literal l && l.annots().isEmpty() && l.ns() == null && l.tail() == null) {
             // the usual +b(X) or !g(N + 1): one literal made, with its values and source(self)
             List<Term> args = im.unifier().applyAll(l.args());
             if (allGround(args)) {

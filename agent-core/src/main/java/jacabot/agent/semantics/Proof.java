@@ -320,7 +320,7 @@ final class Proof {
                     return false;
                 }
             }
-            return true;
+            return l.tail() == null || plain(l.tail());
         }
         return t instanceof Var || t instanceof NumberTerm || t instanceof StringTerm || t instanceof ListTerm.Empty;
     }
@@ -335,7 +335,7 @@ final class Proof {
             if (!w.unifiesIgnoringAnnots(q, head)) {
                 return false;
             }
-            if (!q.annots().isEmpty() && !w.unifies(q, head)) {
+            if ((!q.annots().isEmpty() || q.tail() != null) && !w.unifies(q, head)) {
                 w.undoTo(mark);
                 return false;
             }
@@ -351,7 +351,15 @@ final class Proof {
             return false;
         }
         goals = rest;
-        if (q.annots().isEmpty()) {
+        if (q.annots().isEmpty() && q.tail() == null) {
+            return true;
+        }
+        if (q.tail() != null) {
+            // as Jason, b[x|T] matches a belief one way only (the first annotation x unifies with)
+            if (!w.unifies(q, belief)) {
+                w.undoTo(mark);
+                return false;
+            }
             return true;
         }
         var ways = new ArrayList<Object[]>(1);

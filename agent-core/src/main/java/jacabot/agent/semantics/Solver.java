@@ -70,7 +70,7 @@ public final class Solver {
             return withoutCalls(e.left(), u) && (e.right() == null || withoutCalls(e.right(), u));
         }
         if (t instanceof Literal l) {
-            return l.ns() == null && allWithoutCalls(l.args(), u) && allWithoutCalls(l.annots(), u);
+            return l.ns() == null && l.tail() == null && allWithoutCalls(l.args(), u) && allWithoutCalls(l.annots(), u);
         }
         return false;
     }
@@ -211,7 +211,7 @@ public final class Solver {
         @Override
         public Term visitLiteral(Literal l) {
             int n = l.arity();
-            if (n == 0 && l.annots().isEmpty() && l.ns() == null || l.isGround()) {
+            if (n == 0 && l.annots().isEmpty() && l.ns() == null && l.tail() == null || l.isGround()) {
                 return l;
             }
             List<Term> args;
@@ -234,7 +234,7 @@ public final class Solver {
                     break;
             }
             return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated(),
-                    false, l.ns() == null ? null : map(l.ns()));
+                    false, l.ns() == null ? null : map(l.ns()), l.tail() == null ? null : map(l.tail()));
         }
 
         @Override
@@ -316,8 +316,10 @@ public final class Solver {
             // as Jason, a list of three leaves the namespace out
             boolean three = y instanceof ListTerm yl && yl.isProper() && yl.elements().size() == 3;
             Term functor = Literal.atom(l.functor());
-            Term decomposed = three ? ListTerm.of(functor, ListTerm.of(l.args()), ListTerm.of(l.annots()))
-                    : ListTerm.of(l.nsTerm(), functor, ListTerm.of(l.args()), ListTerm.of(l.annots()));
+            Term annots = l.tail() == null ? ListTerm.of(l.annots())
+                    : l.annots().isEmpty() ? l.tail() : ListTerm.of(l.annots(), l.tail());
+            Term decomposed = three ? ListTerm.of(functor, ListTerm.of(l.args()), annots)
+                    : ListTerm.of(l.nsTerm(), functor, ListTerm.of(l.args()), annots);
             return c.unifies(decomposed, y);
         }
         if (x instanceof PlanTerm p) {
@@ -358,7 +360,8 @@ public final class Solver {
                 return false;
             }
             Term ns = parts.size() == 4 ? parts.get(0) : null;
-            Literal built = new Literal(name, al.elements(), nl.elements(), false, false, ns);
+            // the annotations as the tail: the literal takes its elements, and its own tail if any
+            Literal built = new Literal(name, al.elements(), List.of(), false, false, ns, nl);
             return c.unifies(x, built);
         }
         if (x instanceof NumberTerm || x instanceof StringTerm) {

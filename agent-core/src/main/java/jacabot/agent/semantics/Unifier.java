@@ -161,8 +161,9 @@ public final class Unifier {
             if (!needsApply(l)) {
                 return l;
             }
+            // a tail bound to a list brings its elements into the annotations (the constructor's work)
             return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated(), false,
-                    l.ns() == null ? null : apply(l.ns()));
+                    l.ns() == null ? null : apply(l.ns()), l.tail() == null ? null : apply(l.tail()));
         }
         if (t instanceof ListTerm.Cons) {
             if (!needsApply(t)) {
@@ -245,7 +246,7 @@ public final class Unifier {
             return false;
         }
         if (t instanceof Literal l) {
-            if (l.ns() instanceof Var nv && bindings.get(nv) != null) {
+            if (l.ns() instanceof Var nv && bindings.get(nv) != null || l.tail() != null && needsApply(l.tail())) {
                 return true;
             }
             List<Term> args = l.args();
@@ -360,7 +361,29 @@ public final class Unifier {
         if (!la.sameName(lb) || !unifyNs(la, lb) || !unifyArgs(la, lb)) {
             return false;
         }
-        return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+        if (la.tail() == null && lb.tail() == null) {
+            return la.annots().isEmpty() || subsetAnnots(la.annots(), lb.annots());
+        }
+        return unifyAnnotsWithTails(la, lb);
+    }
+
+    /** The annotations of two literals, one of them at least with a tail ({@code b[x|T]}). */
+    private boolean unifyAnnotsWithTails(Literal la, Literal lb) {
+        // a tail bound since the literal was built: its elements are annotations to match
+        if (la.tail() != null && !(deref(la.tail()) instanceof Var)) {
+            la = (Literal) apply(la);
+        }
+        if (lb.tail() != null && !(deref(lb.tail()) instanceof Var)) {
+            lb = (Literal) apply(lb);
+        }
+        if (la.annots().isEmpty() && la.tail() == null) {
+            return true;
+        }
+        // as Jason, d[|T] = d fails (and d = d[|T] succeeds, leaving T free)
+        if (lb.annots().isEmpty() && lb.tail() == null) {
+            return false;
+        }
+        return subsetAnnots(la.annots(), la.tail(), lb.annots(), lb.tail());
     }
 
     /** The namespaces of two literals (null, the default one, unifies with {@code default}). */
@@ -485,9 +508,9 @@ public final class Unifier {
             }
             l = l.withNs(null);
         }
-        if (av.tail() != null) {
-            boolean ok = left ? subsetAnnots(av.annots(), av.tail(), l.annots(), null)
-                    : subsetAnnots(l.annots(), null, av.annots(), av.tail());
+        if (av.tail() != null || l.tail() != null) {
+            boolean ok = left ? subsetAnnots(av.annots(), av.tail(), l.annots(), l.tail())
+                    : subsetAnnots(l.annots(), l.tail(), av.annots(), av.tail());
             if (!ok) {
                 return false;
             }
@@ -597,7 +620,8 @@ public final class Unifier {
         if (!extra.isEmpty() && !unify(supTail, ListTerm.of(extra))) {
             return false;
         }
-        return subTail == null || unify(subTail, ListTerm.of(left));
+        // as Jason, d[a|T] = d[a,b|U] gives T = [b|U], but d[a|T] = d[a|U] gives T = []
+        return subTail == null || unify(subTail, supTail == null || left.isEmpty() ? ListTerm.of(left) : ListTerm.of(left, supTail));
     }
 
     /** {@return whether each annotation of {@code sub} unifies with one of {@code sup}} Nothing is bound when not. */
