@@ -64,7 +64,7 @@ arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
 
 literal     : 'true'                                                       # trueLiteral
             | 'false'                                                      # falseLiteral
-            | nsPrefix? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? list?  # structure
+            | nsPrefix? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? annots?  # structure
             | nsPrefix? neg='~'? VAR list?                                 # varLiteral
             | nsPrefix? neg='~'? UNNAMEDVAR list?                          # unnamedVarLiteral
             ;
@@ -77,6 +77,8 @@ term        : logExpr ;
 list        : '[' ( listElement ( ',' listElement )* ( '|' listTail )? )? ']' ;
 listElement : arithExpr | STRING | list | braceTerm ;
 listTail    : VAR | UNNAMEDVAR | list ;
+// a literal's annotations, which (as Jason's) may be a tail alone: b[|T]
+annots      : list | '[' '|' listTail ']' ;
 
 // { +b }, { +!g : c <- body }, { a; b }, { h :- body }
 braceTerm   : '{' ( planLabel? trigger ( ':' logExpr )? ( '<-' planBody )?

@@ -430,7 +430,7 @@ final class AstBuilder {
             t = logExpr(ctx.logExpr());
         } else {
             t = literal(ctx.literal());
-            if (t instanceof Literal l && !l.negated() && l.annots().isEmpty()
+            if (t instanceof Literal l && !l.negated() && l.annots().isEmpty() && l.tail() == null
                     && (ArithFunctions.isFunction(l.functor(), l.arity())
                             || userFunctions.contains(l.functor() + "/" + l.arity()))) {
                 t = new ArithFunction(l.functor(), l.args());
@@ -474,11 +474,23 @@ final class AstBuilder {
         boolean outer = inTerm;
         inTerm = true;
         List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
-        List<Term> annots = s.list() == null ? List.of() : list(s.list()).elements();
+        List<Term> annots = List.of();
+        Term tail = null;
+        if (s.annots() != null) {
+            // b[x,y|T] or b[|T]: the elements, and the tail when it is not a list ([z|[]] has none)
+            Term t = s.annots().list() != null ? list(s.annots().list()) : listTail(s.annots().listTail());
+            var items = new ArrayList<Term>();
+            while (t instanceof ListTerm.Cons c) {
+                items.add(c.head());
+                t = c.tail();
+            }
+            annots = items;
+            tail = t instanceof ListTerm ? null : t;
+        }
         inTerm = outer;
         boolean negated = s.neg != null;
         if (functor.indexOf('.') >= 0 && functor.charAt(0) != '\'') {
-            if (!annots.isEmpty()) {
+            if (!annots.isEmpty() || tail != null) {
                 errors.add(where(ctx), "internal actions cannot have annotations");
             }
             if (negated) {
@@ -489,7 +501,7 @@ final class AstBuilder {
         if (Namespaces.isKeyword(functor, args.size())) {
             ns = null;
         }
-        return new Literal(functor, args, annots, negated, false, namespaces.map(ns));
+        return new Literal(functor, args, annots, negated, false, namespaces.map(ns), tail);
     }
 
     /** {@code ns::}, {@code NS::}, {@code _::}, {@code ::}: the namespace written (null: the default one). */
@@ -568,19 +580,18 @@ final class AstBuilder {
                 items.add(braceTerm(e.braceTerm()));
             }
         }
-        Term tail = ListTerm.EMPTY;
-        ListTailContext t = ctx.listTail();
-        if (t != null) {
-            if (t.VAR() != null) {
-                tail = named(t.VAR().getText());
-            } else if (t.UNNAMEDVAR() != null) {
-                String name = t.UNNAMEDVAR().getText();
-                tail = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
-            } else {
-                tail = list(t.list());
-            }
+        return ListTerm.of(items, ctx.listTail() == null ? ListTerm.EMPTY : listTail(ctx.listTail()));
+    }
+
+    private Term listTail(ListTailContext t) {
+        if (t.VAR() != null) {
+            return named(t.VAR().getText());
         }
-        return ListTerm.of(items, tail);
+        if (t.UNNAMEDVAR() != null) {
+            String name = t.UNNAMEDVAR().getText();
+            return name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
+        }
+        return list(t.list());
     }
 
     private Term braceTerm(BraceTermContext ctx) {
