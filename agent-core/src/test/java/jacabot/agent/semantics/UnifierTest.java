@@ -43,6 +43,59 @@ class UnifierTest {
     }
 
     @Test
+    void aTailInALiteralsAnnotationsTakesTheOthers() throws Exception {
+        var u = new Unifier();
+        assertTrue(u.unifies(t("b(1)[x|A]"), t("b(1)[source(self),x,y]")));
+        assertEquals("[source(self),y]", u.apply(new Var("A")).toString());
+        u = new Unifier();
+        assertTrue(u.unifies(t("d[a,b]"), t("d[a|T]")), "what the first has beyond the second's goes to its tail");
+        assertEquals("[b]", u.apply(new Var("T")).toString());
+        u = new Unifier();
+        // as Jason: d[a|T] = d[b|U] gives U = [a] and T = [b|U]
+        assertTrue(u.unifies(t("d[a|T]"), t("d[b|U]")));
+        assertEquals("[a]", u.apply(new Var("U")).toString());
+        assertEquals("[b,a]", u.apply(new Var("T")).toString());
+        u = new Unifier();
+        assertTrue(u.unifies(t("d[a|T]"), t("d[a|U]")));
+        assertEquals("[]", u.apply(new Var("T")).toString());
+        assertFalse(new Unifier().unifies(t("d[a|T]"), t("d[b,c]")));
+        assertFalse(new Unifier().unifies(t("d[|T]"), t("d")), "as Jason, a tail alone needs some annotation");
+        assertTrue(new Unifier().unifies(t("d"), t("d[|T]")));
+    }
+
+    @Test
+    void aBoundTailBringsItsElementsIntoTheAnnotations() throws Exception {
+        var u = new Unifier();
+        assertTrue(u.unifies(new Var("T"), t("[y,w]")));
+        Term applied = u.apply(t("d(1)[x|T]"));
+        assertEquals("d(1)[w,x,y]", applied.toString());
+        assertTrue(applied.isGround());
+        assertEquals(t("d(1)[w,x,y]"), applied);
+        u = new Unifier();
+        assertTrue(u.unifies(new Var("T"), t("[y|R]")));
+        assertEquals("d[x,y|R]", u.apply(t("d[x|T]")).toString());
+        u = new Unifier();
+        assertTrue(u.unifies(new Var("T"), t("[y]")));
+        assertTrue(u.unifies(t("d[x|T]"), t("d[x,y,z]")), "the bound tail's elements are matched too");
+        assertFalse(u.unifies(t("d[x|T]"), t("d[x,z]")));
+    }
+
+    @Test
+    void aLiteralWithATailPrintsAndComparesAsJasons() throws Exception {
+        assertEquals("c[|T]", t("c[|T]").toString());
+        assertEquals("c(1)[a,b|T]", t("c(1)[b,a|T]").toString());
+        assertEquals("c[z]", t("c[z|[]]").toString(), "an empty tail is none");
+        assertEquals(t("c[|T]"), t("c[|T]"));
+        assertEquals(t("c[|T]").hashCode(), t("c[|T]").hashCode());
+        assertFalse(t("c[|T]").equals(t("c")));
+        assertFalse(t("c[a|T]").equals(t("c[a|U]")));
+        assertFalse(t("c[|T]").isGround());
+        assertTrue(t("c").compareTo(t("c[|T]")) < 0);
+        assertTrue(t("c[|T]").compareTo(t("c[a]")) < 0);
+        assertTrue(t("c[a]").compareTo(t("c[a|T]")) < 0);
+    }
+
+    @Test
     void stringsAtomsAndStructuresAreDistinct() throws Exception {
         assertFalse(new Unifier().unifies(t("\"a\""), t("a")));
         assertFalse(new Unifier().unifies(t("f(x)"), t("g(x)")));
