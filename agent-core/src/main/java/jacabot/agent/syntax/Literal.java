@@ -42,17 +42,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     public Literal {
         args = List.copyOf(args);
         if (tail != null) {
-            // a tail bound to a list: its elements join the annotations, its own tail stays the tail
-            if (tail instanceof ListTerm lt) {
-                var all = new ArrayList<Term>(annots);
-                Term t = lt;
-                while (t instanceof ListTerm.Cons c) {
-                    all.add(c.head());
-                    t = c.tail();
-                }
-                annots = all;
-                tail = t instanceof ListTerm ? null : t;
-            }
+            // out of line: the constructor of every literal stays small enough to be inlined
+            annots = annotsWithTail(annots, tail);
+            tail = tailEnd(tail);
             operandAtom = false;
         }
         annots = annots.isEmpty() ? List.of() : sortAnnots(annots);
@@ -117,6 +109,29 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     public static Literal of(String functor, List<Term> args) {
         return new Literal(functor, args, List.of(), false);
+    }
+
+    /** {@return the annotations with the elements of a tail bound to a list} */
+    private static List<Term> annotsWithTail(List<Term> annots, Term tail) {
+        if (!(tail instanceof ListTerm)) {
+            return annots;
+        }
+        var all = new ArrayList<Term>(annots);
+        Term t = tail;
+        while (t instanceof ListTerm.Cons c) {
+            all.add(c.head());
+            t = c.tail();
+        }
+        return all;
+    }
+
+    /** {@return the tail that is left: a list's own tail, or null for a list ending in []} */
+    private static Term tailEnd(Term tail) {
+        Term t = tail;
+        while (t instanceof ListTerm.Cons c) {
+            t = c.tail();
+        }
+        return t instanceof ListTerm ? null : t;
     }
 
     private static List<Term> sortAnnots(List<Term> annots) {
