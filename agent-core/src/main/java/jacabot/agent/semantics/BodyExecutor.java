@@ -215,7 +215,9 @@ final class BodyExecutor {
         if (removed != null) {
             // as Jason: -b(X) binds X to the belief removed (CArtAgO's producers count with it)
             if (!unified) {
-                im.unifier().unifies(term, removed);
+                // (as Jason's, -b[x|T] leaves T free: the literal is unified without its tail)
+                im.unifier().unifies(term instanceof Literal tl && tl.tail() != null
+                        ? new Literal(tl.functor(), tl.args(), tl.annots(), tl.negated(), false, tl.ns()) : term, removed);
             }
             c.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, removed), sameFocus ? i : null));
             if (!sameFocus) {
