@@ -29,6 +29,7 @@ p(1)[a, b].
   d[a, c|T10] = d[b|T11]; .print(T10, " ", T11);
   d[|T12] = d[a]; .print(T12);
   d = d[|T13]; .print(T13);
+  if (V[|R6] = e(1)[a, b]) { .print(V, " ", R6) } else { .print(no_var) };
   if (d[|T14] = d) { .print(yes, T14) } else { .print(no_empty) };
   if (d[a|T15] = d[b, c]) { .print(yes, T15) } else { .print(no_a) };
   if (d[a|T16] = d[a, b|U16]) { .print(T16, " ", U16) } else { .print(no) };

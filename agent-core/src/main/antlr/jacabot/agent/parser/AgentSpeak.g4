@@ -65,8 +65,8 @@ arithSimple : sign=( '+' | '-' )? ( NUMBER | '(' logExpr ')' | literal ) ;
 literal     : 'true'                                                       # trueLiteral
             | 'false'                                                      # falseLiteral
             | nsPrefix? neg='~'? name=( ATOM | 'begin' | 'end' ) ( '(' terms ')' )? annots?  # structure
-            | nsPrefix? neg='~'? VAR list?                                 # varLiteral
-            | nsPrefix? neg='~'? UNNAMEDVAR list?                          # unnamedVarLiteral
+            | nsPrefix? neg='~'? VAR annots?                               # varLiteral
+            | nsPrefix? neg='~'? UNNAMEDVAR annots?                        # unnamedVarLiteral
             ;
 // a namespace: ns::b, NS::b, _::b, and ::b (the namespace the file is read in); the prefix is one
 // token, so that ns::X is never read as the atom ns followed by ::X

@@ -458,13 +458,13 @@ final class AstBuilder {
         if (ctx instanceof VarLiteralContext v) {
             Term ns = varNs(v.nsPrefix());
             Var var = named(v.VAR().getText());
-            return ns == null && v.list() == null ? var : annotated(var, v.list() == null ? ListTerm.EMPTY : list(v.list()), ns);
+            return ns == null && v.annots() == null ? var : annotated(var, annotList(v.annots()), ns);
         }
         if (ctx instanceof UnnamedVarLiteralContext u) {
             Term ns = varNs(u.nsPrefix());
             String name = u.UNNAMEDVAR().getText();
             Var var = name.equals("_") ? new Var("_", varCounter.incrementAndGet()) : unnamed(name);
-            return ns == null && u.list() == null ? var : annotated(var, u.list() == null ? ListTerm.EMPTY : list(u.list()), ns);
+            return ns == null && u.annots() == null ? var : annotated(var, annotList(u.annots()), ns);
         }
         StructureContext s = (StructureContext) ctx;
         // interned, as variable names: the interpreter compares functors and names all the time,
@@ -478,7 +478,7 @@ final class AstBuilder {
         Term tail = null;
         if (s.annots() != null) {
             // b[x,y|T] or b[|T]: the elements, and the tail when it is not a list ([z|[]] has none)
-            Term t = s.annots().list() != null ? list(s.annots().list()) : listTail(s.annots().listTail());
+            Term t = annotList(s.annots());
             var items = new ArrayList<Term>();
             while (t instanceof ListTerm.Cons c) {
                 items.add(c.head());
@@ -546,8 +546,16 @@ final class AstBuilder {
         return logExpr(ctx.logExpr());
     }
 
+    /** {@code [a, b | T]} as a list, {@code [|T]} as its tail alone; none: {@code []}. */
+    private Term annotList(AnnotsContext ctx) {
+        if (ctx == null) {
+            return ListTerm.EMPTY;
+        }
+        return ctx.list() != null ? list(ctx.list()) : listTail(ctx.listTail());
+    }
+
     /** {@code V[a, b | T]}: the annotations, and the tail when there is one. */
-    private static AnnotatedVar annotated(Var var, ListTerm annots, Term ns) {
+    private static AnnotatedVar annotated(Var var, Term annots, Term ns) {
         var items = new ArrayList<Term>();
         Term t = annots;
         while (t instanceof ListTerm.Cons c) {
