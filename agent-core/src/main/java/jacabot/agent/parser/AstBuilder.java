@@ -474,23 +474,12 @@ final class AstBuilder {
         boolean outer = inTerm;
         inTerm = true;
         List<Term> args = s.terms() == null ? List.of() : terms(s.terms());
-        List<Term> annots = List.of();
-        Term tail = null;
-        if (s.annots() != null) {
-            // b[x,y|T] or b[|T]: the elements, and the tail when it is not a list ([z|[]] has none)
-            Term t = annotList(s.annots());
-            var items = new ArrayList<Term>();
-            while (t instanceof ListTerm.Cons c) {
-                items.add(c.head());
-                t = c.tail();
-            }
-            annots = items;
-            tail = t instanceof ListTerm ? null : t;
-        }
+        // b[x,y|T], b[|T]: the annotations as a list, which the literal takes apart (b[] has none)
+        Term annots = s.annots() == null ? ListTerm.EMPTY : annotList(s.annots());
         inTerm = outer;
         boolean negated = s.neg != null;
         if (functor.indexOf('.') >= 0 && functor.charAt(0) != '\'') {
-            if (!annots.isEmpty() || tail != null) {
+            if (!(annots instanceof ListTerm.Empty)) {
                 errors.add(where(ctx), "internal actions cannot have annotations");
             }
             if (negated) {
@@ -501,7 +490,8 @@ final class AstBuilder {
         if (Namespaces.isKeyword(functor, args.size())) {
             ns = null;
         }
-        return new Literal(functor, args, annots, negated, false, namespaces.map(ns), tail);
+        return new Literal(functor, args, List.of(), negated, false, namespaces.map(ns),
+                annots instanceof ListTerm.Empty ? null : annots);
     }
 
     /** {@code ns::}, {@code NS::}, {@code _::}, {@code ::}: the namespace written (null: the default one). */

@@ -14,7 +14,8 @@ import java.util.function.Consumer;
  * are different predicates. As in Jason, the annotations may end with a tail variable,
  * {@code b[x|T]} or {@code b[|T]}: it takes the annotations a matching literal has beyond these.
  *
- * @param tail null (nearly always), or the variable after {@code |} in the annotations
+ * @param tail null (nearly always), or what follows {@code |} in the annotations: a variable, or a
+ *        list whose elements join the annotations (its own tail, if any, becomes the tail)
  */
 public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns,
         Term tail) implements Term {
