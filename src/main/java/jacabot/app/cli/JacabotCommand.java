@@ -13,11 +13,17 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = JacabotCommand.Version.class,
         description = "JaCa-style BDI robots in a simulated world: companion code to the thesis "
-                + "'Programming Robots with an Agent-Oriented BDI-based Control Architecture'.",
-        subcommands = {RunCommand.class, ExperimentCommand.class, CompareCommand.class, BenchCommand.class, ControllerCommand.class,
-                WorldCommand.class, SweepCommand.class, ReplayCommand.class, PlotCommand.class,
-                CommandLine.HelpCommand.class})
+                + "'Programming Robots with an Agent-Oriented BDI-based Control Architecture'.")
 public final class JacabotCommand implements Runnable {
+    /**
+     * The subcommands, in the order of the usage text. picocli reads a command's annotations and
+     * fields when it is added: for the eight a run does not need, about 35 ms of its 330 ms to its
+     * first output. So a command line naming one gets that one alone ({@link #commandLine(String...)}).
+     */
+    private static final List<Class<?>> SUBCOMMANDS = List.of(RunCommand.class, ExperimentCommand.class,
+            CompareCommand.class, BenchCommand.class, ControllerCommand.class, WorldCommand.class, SweepCommand.class,
+            ReplayCommand.class, PlotCommand.class, CommandLine.HelpCommand.class);
+
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;
 
@@ -42,7 +48,7 @@ public final class JacabotCommand implements Runnable {
 
     /** Runs the launcher and returns its exit code (0 ok, 1 runtime failure, 2 user error). */
     public static int execute(String... args) {
-        return commandLine().execute(args);
+        return commandLine(args).execute(args);
     }
 
     /**
@@ -52,6 +58,44 @@ public final class JacabotCommand implements Runnable {
      */
     public static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new JacabotCommand());
+        for (Class<?> sub : SUBCOMMANDS) {
+            cl.addSubcommand(sub);
+        }
+        return withHandlers(cl);
+    }
+
+    /**
+     * {@return the launcher's command line for these arguments}: with only the subcommand they
+     * name, or every subcommand when they name none of them (help, a mistyped name, no name).
+     */
+    public static CommandLine commandLine(String... args) {
+        Class<?> named = namedSubcommand(args);
+        if (named == null) {
+            return commandLine();
+        }
+        CommandLine cl = new CommandLine(new JacabotCommand());
+        cl.addSubcommand(named);
+        return withHandlers(cl);
+    }
+
+    /** {@return the subcommand the first argument that is not an option names, or null} */
+    private static Class<?> namedSubcommand(String[] args) {
+        for (String a : args) {
+            if (a.startsWith("-")) {
+                continue; // --debug, the one option before a subcommand that takes no value
+            }
+            for (Class<?> sub : SUBCOMMANDS) {
+                Command c = sub.getAnnotation(Command.class);
+                if (c != null && c.name().equals(a) && sub != CommandLine.HelpCommand.class) {
+                    return sub;
+                }
+            }
+            return null;
+        }
+        return null;
+    }
+
+    private static CommandLine withHandlers(CommandLine cl) {
         cl.setParameterExceptionHandler((ex, args) -> {
             CommandLine c = ex.getCommandLine();
             c.getErr().println("error: " + ex.getMessage() + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");

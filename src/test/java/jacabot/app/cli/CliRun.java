@@ -12,7 +12,7 @@ final class CliRun {
     static String[] run(String... args) {
         var out = new StringWriter();
         var err = new StringWriter();
-        var cl = JacabotCommand.commandLine();
+        var cl = JacabotCommand.commandLine(args);
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
         int code = cl.execute(args);

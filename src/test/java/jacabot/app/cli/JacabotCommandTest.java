@@ -21,7 +21,27 @@ class JacabotCommandTest {
     void helpListsTheSubcommands() {
         var result = run("--help");
         assertEquals("0", result[0]);
-        assertTrue(result[1].contains("experiment"), result[1]);
+        for (String sub : new String[] {"run", "experiment", "compare", "bench", "controller", "world", "sweep", "replay", "plot", "help"}) {
+            assertTrue(result[1].contains("\n  " + sub + " "), sub + " missing from:\n" + result[1]);
+        }
+    }
+
+    @Test
+    void aCommandLineNamingASubcommandBuildsThatOneAlone() {
+        assertEquals(java.util.Set.of("run"), JacabotCommand.commandLine("run", "x.mas2j").getSubcommands().keySet());
+        assertEquals(java.util.Set.of("sweep"), JacabotCommand.commandLine("--debug", "sweep", "all").getSubcommands().keySet());
+        assertEquals(10, JacabotCommand.commandLine("help", "run").getSubcommands().size());
+        assertEquals(10, JacabotCommand.commandLine("--help").getSubcommands().size());
+    }
+
+    @Test
+    void helpOnASubcommandAndAMistypedOneStillSeeThemAll() {
+        var help = run("help", "run");
+        assertEquals("0", help[0]);
+        assertTrue(help[1].contains("Usage: jacabot run"), help[1]);
+        var typo = run("rnu", "x.mas2j");
+        assertEquals("2", typo[0]);
+        assertTrue(typo[2].startsWith("error: Unmatched arguments from index 0: 'rnu'"), typo[2]);
     }
 
     @Test
