@@ -146,9 +146,8 @@ final class BodyExecutor {
     }
 
     private void constraint(Intention i, IntendedMeans im, BodyStep step, Term term) {
-        Iterator<Unifier> it = ag.solver().solve(term, im.unifier());
-        if (it.hasNext()) {
-            im.setUnifier(it.next());
+        // the first solution is made in the intention's own unifier, as an internal action's
+        if (ag.solver().believes(term, im.unifier())) {
             rc.removeActionReQueue(i);
         } else {
             // Jason's wording: the body from this formula on, the position and the unifier

@@ -5,7 +5,6 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Term;
-import java.util.Iterator;
 
 /** {@code if (C) {A} elif ... else {B}}, as Jason's {@code .if_then_else(C, {A}, {B})}. */
 final class IfThenElse extends DefaultInternalAction {
@@ -20,10 +19,8 @@ final class IfThenElse extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        Iterator<Unifier> it = ag.solver().solve(args[0], un);
         BodyTerm branch = null;
-        if (it.hasNext()) {
-            un.setFrom(it.next());
+        if (ag.solver().believes(args[0], un)) {
             branch = (BodyTerm) args[1];
         } else if (args.length == 3) {
             branch = (BodyTerm) args[2];
