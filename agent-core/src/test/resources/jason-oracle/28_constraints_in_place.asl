@@ -1,5 +1,5 @@
 // Relations in a plan body (=, ==, \==, <, >=, =..), each binding in the intention's unifier or
-// failing with Jason's message, and conditions of if/elif/else and while.
+// failing with Jason's message, conditions of if/elif/else and while, and contexts of one relation.
 i(0).
 !start.
 +!start <-
@@ -16,7 +16,14 @@ i(0).
     if (N < 9 | G = 1) { .print(or_ran(G)) };
     while (i(I) & I < 3) { .print(turn(I)); J = I + 1; -+i(J) };
     ?i(Last); .print(after_loop(Last));
+    !ctx(4); !ctx(1); !ctx(f(1)); !ctx(a);
     !fails1; !fails2; !fails3.
+// contexts of one relation, binding for the body or choosing the plan
++!ctx(N) : N = f(A) <- .print(ctx_unified(A)).
++!ctx(N) : N > 3 & M = 1 <- .print(ctx_both(N, M)).
++!ctx(N) : M = N * 2 <- .print(ctx_bound(M)).
++!ctx(N) : N == a <- .print(ctx_atom).
+-!ctx(N)[error(E)] <- .print(ctx_failed(N, E)).
 +!fails1 <- V = 1; V = 2; .print(not_reached).
 -!fails1[error(E), error_msg(Msg)] <- .print(E); .print(Msg).
 +!fails2 <- V = 1; V > 3; .print(not_reached).

@@ -3,6 +3,7 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.RelExpr;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
@@ -133,6 +134,15 @@ final class ReasoningCycle {
             }
             relevant = true;
             Unifier option = u;
+            if (p.context() instanceof RelExpr r) {
+                // a context of one relation (N >= 10, X = Y + 1): its one solution, if any, made in
+                // the plan's own unifier without a proof (failing, it binds nothing for the next plan)
+                if (!ag.solver().relational(r, u)) {
+                    continue;
+                }
+                applyAddIM(se, p, u);
+                return true;
+            }
             if (p.context() != null) {
                 if (ag.solver().failsAtFirstComparison(p.context(), u)) {
                     continue;
