@@ -166,12 +166,30 @@ public final class ConsoleLog {
             @Override
             public synchronized void write(int b) {
                 if (b == '\n') {
-                    String text = line.toString(StandardCharsets.UTF_8);
-                    line.reset();
-                    sink.accept(text.endsWith("\r") ? text.substring(0, text.length() - 1) : text);
+                    endLine();
                 } else {
                     line.write(b);
                 }
+            }
+
+            /** A PrintStream writes a line's bytes at once: taken whole, not byte by byte. */
+            @Override
+            public synchronized void write(byte[] b, int off, int len) {
+                int start = off;
+                for (int i = off, end = off + len; i < end; i++) {
+                    if (b[i] == '\n') {
+                        line.write(b, start, i - start);
+                        endLine();
+                        start = i + 1;
+                    }
+                }
+                line.write(b, start, off + len - start);
+            }
+
+            private void endLine() {
+                String text = line.toString(StandardCharsets.UTF_8);
+                line.reset();
+                sink.accept(text.endsWith("\r") ? text.substring(0, text.length() - 1) : text);
             }
 
             @Override

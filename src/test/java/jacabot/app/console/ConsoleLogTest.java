@@ -78,4 +78,20 @@ class ConsoleLogTest {
             assertTrue(expected.getMessage().contains("exclude each other"));
         }
     }
+
+    @Test
+    void aLineStreamHandsOverWholeLinesHoweverTheyAreWritten() {
+        var got = new java.util.ArrayList<String>();
+        var stream = ConsoleLog.lines(got::add);
+        stream.print("[a] par");
+        stream.print("tial ");
+        stream.println("line");
+        stream.println("two\nlines in one");
+        stream.print("windows\r\n");
+        stream.println("café ✓");
+        stream.write('x');
+        stream.write('\n');
+        stream.print("unfinished");
+        assertEquals(java.util.List.of("[a] partial line", "two", "lines in one", "windows", "café ✓", "x"), got);
+    }
 }
