@@ -30,8 +30,11 @@ final class Delete extends DefaultInternalAction {
                 }
             }
         } else {
+            // as Jason's: the pattern's variables keep what its first match bound them to, so
+            // .delete(p(_), [p(1), q(2), p(3)], L) gives [q(2), p(3)]
+            Unifier w = un.copy();
             for (Term t : items) {
-                if (!un.copy().unifies(args[0], t)) {
+                if (!w.unifies(args[0], t)) {
                     out.add(t);
                 }
             }

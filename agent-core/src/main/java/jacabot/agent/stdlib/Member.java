@@ -4,6 +4,9 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
+import java.util.Collection;
+import java.util.Iterator;
+import java.util.NoSuchElementException;
 
 /** {@code .member(X, L)}: X unifies with an element of L (backtracking). */
 final class Member extends DefaultInternalAction {
@@ -13,17 +16,33 @@ final class Member extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var out = new java.util.ArrayList<Unifier>();
-        var items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
-        if (items == null) {
-            items = list(args[1]).elements();
-        }
-        for (Term t : items) {
-            Unifier c = un.copy();
-            if (c.unifies(args[0], t)) {
-                out.add(c);
+        Collection<Term> items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
+        Term[] elements = (items == null ? list(args[1]).elements() : items).toArray(new Term[0]);
+        Unifier base = un.copy();
+        Term x = args[0];
+        // a solution's unifier is made when it is asked for (a plan body takes the first only), from
+        // the elements and the bindings of the call: a for loop's body may change both meanwhile
+        return new Iterator<Unifier>() {
+            private int i;
+            private Unifier next;
+
+            @Override
+            public boolean hasNext() {
+                while (next == null && i < elements.length) {
+                    next = base.unifiedCopy(x, elements[i++]);
+                }
+                return next != null;
             }
-        }
-        return out.iterator();
+
+            @Override
+            public Unifier next() {
+                if (!hasNext()) {
+                    throw new NoSuchElementException();
+                }
+                Unifier n = next;
+                next = null;
+                return n;
+            }
+        };
     }
 }

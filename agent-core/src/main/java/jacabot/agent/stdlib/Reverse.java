@@ -17,7 +17,7 @@ final class Reverse extends DefaultInternalAction {
         if (args[0] instanceof StringTerm s) {
             return un.unifies(args[1], new StringTerm(new StringBuilder(s.value()).reverse().toString()));
         }
-        var items = new java.util.ArrayList<>(list(args[0]).elements());
+        var items = list(args[0]).elements(); // a new list
         java.util.Collections.reverse(items);
         return un.unifies(args[1], listOf(items));
     }

@@ -13,7 +13,7 @@ final class Sort extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var items = new java.util.ArrayList<>(list(args[0]).elements());
+        var items = list(args[0]).elements(); // a new list
         java.util.Collections.sort(items);
         return un.unifies(args[1], listOf(items));
     }

@@ -99,9 +99,13 @@ public sealed interface ListTerm extends Term permits ListTerm.Empty, ListTerm.C
         return of(List.of(items));
     }
 
-    /** {@return the elements up to a non-list tail} */
+    /** {@return the elements up to a non-list tail, in a new list of the caller's} */
     default List<Term> elements() {
-        var out = new ArrayList<Term>();
+        int n = 0;
+        for (Term t = this; t instanceof Cons c; t = c.tail) {
+            n++;
+        }
+        var out = new ArrayList<Term>(n); // sized: a list of more than ten grew by copying
         Term t = this;
         while (t instanceof Cons c) {
             out.add(c.head);
