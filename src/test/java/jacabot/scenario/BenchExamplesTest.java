@@ -23,7 +23,7 @@ class BenchExamplesTest {
         try (Stream<Path> files = Files.list(dir)) {
             projects = files.filter(p -> p.toString().endsWith(".mas2j")).sorted().collect(Collectors.toList());
         }
-        assertEquals(9, projects.size(), "the projects of " + dir);
+        assertEquals(13, projects.size(), "the projects of " + dir);
         return projects.stream().map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> run(p)));
     }
 
