@@ -70,6 +70,8 @@ public final class InterpreterBenchmark {
     private final java.util.Set<String> selected;
     private final double limitSeconds;
     private final List<Path> projects;
+    /** Why the user's projects that could not be measured were not: said once every row is printed. */
+    private final List<String> failedProjects = new ArrayList<>();
 
     public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out) throws IOException {
         this(ourClasspath, jasonClasspath, runs, out, null, 300, List.of());
@@ -131,7 +133,11 @@ public final class InterpreterBenchmark {
         if (DEEP.stream().anyMatch(d -> wanted(d.name()))) {
             deep();
         }
+        if (!failedProjects.isEmpty()) {
+            throw new IOException(String.join("; ", failedProjects));
+        }
     }
+
 
     private void programs() throws IOException, InterruptedException {
         out.println("| program | ours (s) | Jason (s) | Jason / ours | our cycles/s | Jason cycles/s | our peak memory (MB) | Jason peak memory (MB) |");
@@ -143,7 +149,14 @@ public final class InterpreterBenchmark {
             row(p[0] + " (" + p[2] + ")", dir.resolve(p[1]));
         }
         for (Path project : projects) {
-            row(project.getFileName().toString(), project.toAbsolutePath());
+            String name = project.getFileName().toString();
+            try {
+                row(name, project.toAbsolutePath());
+            } catch (IOException e) {
+                // the other projects are still measured; the run ends in this error
+                failedProjects.add(e.getMessage());
+                out.printf("| %s | – | – | – | – | – | – | – |%n", name);
+            }
         }
     }
 

@@ -59,7 +59,8 @@ final class BenchCommand implements Runnable {
         @Option(names = "--project", paramLabel = "FILE",
                 description = "a project of your own (.mas2j) to measure too, run in its directory; one of its agents prints "
                         + "`start` and `end` (.print(start), .print(end)) around what is measured. Repeatable; given alone, "
-                        + "only these projects run")
+                        + "only these projects run. One that cannot be measured gets a row of dashes, the others still "
+                        + "run, and the command ends with its error (exit 1)")
         private java.util.List<Path> projects = new java.util.ArrayList<>();
 
         @Option(names = "--ours-classpath", paramLabel = "FILE",

@@ -73,6 +73,14 @@ class LauncherErrorsTest {
         Files.writeString(project, "MAS p { agents: a; }\n");
         assertOneLine(CliRun.run("bench", "interpreter", "--jason-classpath", jason.toString(), "--project", project.toString(),
                 "--runs", "1"), "1", project + ": on Jason, no agent printed its `start` and `end` lines");
+        // a project that cannot be measured leaves a row of dashes, and the next ones are still run
+        Path other = dir.resolve("q.mas2j");
+        Files.writeString(other, "MAS q { agents: a; }\n");
+        String[] both = CliRun.run("bench", "interpreter", "--jason-classpath", jason.toString(), "--project", project.toString(),
+                "--project", other.toString(), "--runs", "1");
+        assertOneLine(both, "1", project + ": on Jason, no agent printed");
+        assertTrue(both[2].contains(other + ": on Jason, no agent printed"), both[2]);
+        assertTrue(both[1].contains("| p.mas2j | – |") && both[1].contains("| q.mas2j | – |"), both[1]);
     }
 
     @Test
