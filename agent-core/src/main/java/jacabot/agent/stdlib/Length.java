@@ -7,7 +7,7 @@ import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 
-/** {@code .length(L, N)}: the length of a list or a string. */
+/** {@code .length(L, N)}: the length of a list, a string, or a set, queue or map. */
 final class Length extends DefaultInternalAction {
     Length() {
         super(".length", 2, 2);
@@ -20,6 +20,14 @@ final class Length extends DefaultInternalAction {
         }
         if (args[0] instanceof jacabot.agent.syntax.ListTerm l) {
             return un.unifies(args[1], new NumberTerm(l.elements().size()));
+        }
+        if (args[0] instanceof jacabot.agent.syntax.ObjectTerm o) { // a set, queue or map of .set/.queue/.map
+            if (o.value() instanceof java.util.Collection<?> c) {
+                return un.unifies(args[1], new NumberTerm(c.size()));
+            }
+            if (o.value() instanceof TermCollections.TermMap m) {
+                return un.unifies(args[1], new NumberTerm(m.size()));
+            }
         }
         return false; // as Jason: neither a list nor a string, the action just fails
     }

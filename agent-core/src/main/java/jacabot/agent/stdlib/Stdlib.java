@@ -18,6 +18,23 @@ public final class Stdlib {
         put(map, new ListRules());
         put(map, new SetAdd(false));
         put(map, new SetAdd(true));
+        put(map, new SetCreate());
+        put(map, new SetRemove());
+        for (SetOperation.Kind k : SetOperation.Kind.values()) {
+            put(map, new SetOperation(k));
+        }
+        put(map, new CollectionToList(false));
+        put(map, new CollectionToList(true));
+        for (String family : new String[] {"set", "queue", "map"}) {
+            put(map, new CollectionClear(family));
+            put(map, new CollectionCopy(family));
+        }
+        put(map, new MapCreate());
+        put(map, new MapPut());
+        put(map, new MapGet());
+        put(map, new MapRemove());
+        put(map, new MapEntries(true));
+        put(map, new MapEntries(false));
         put(map, new QueueCreate());
         put(map, new QueueAdd(false));
         put(map, new QueueAdd(true));

@@ -6,30 +6,112 @@ import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.Collection;
+import java.util.Map;
+import java.util.TreeMap;
 import java.util.TreeSet;
 
 /**
- * The mutable collections of Jason's {@code .set.*} and {@code .queue.*} actions, carried as
- * object terms: a set is a {@code TreeSet} in the standard order of terms, a priority queue a
- * {@code PriorityBlockingQueue} in that order (as Jason's, so equal priorities come out in the
- * same order), a plain queue an {@code ArrayDeque}.
+ * The mutable collections of Jason's {@code .set.*}, {@code .queue.*} and {@code .map.*} actions,
+ * carried as object terms: a set is a {@link TermSet} in the standard order of terms, a map a
+ * {@link TermMap} with its keys in that order, a priority queue a {@code PriorityBlockingQueue} in
+ * that order (as Jason's, so equal priorities come out in the same order), a plain queue an
+ * {@code ArrayDeque}. Sets and maps print as Jason's do ({@code {a,b}}, {@code {k->v}}), queues as
+ * Java's collections ({@code [a, b]}), which Jason shows too.
  */
 final class TermCollections {
     private TermCollections() {
     }
 
+    /** A set of terms in the standard order, printed as Jason prints its sets. */
+    static final class TermSet extends TreeSet<Term> {
+        private static final long serialVersionUID = 1L;
+
+        TermSet() {
+        }
+
+        TermSet(Collection<Term> items) {
+            super(items);
+        }
+
+        @Override
+        public String toString() {
+            var sb = new StringBuilder("{");
+            for (Term t : this) {
+                sb.append(sb.length() > 1 ? "," : "").append(t);
+            }
+            return sb.append('}').toString();
+        }
+    }
+
+    /**
+     * A map from terms to terms, its keys in the standard order, printed as Jason prints its maps.
+     * Two maps are equal (for {@code ==} and unification) only when they are the same map, as in
+     * Jason, where sets compare by contents but maps do not.
+     */
+    static final class TermMap extends TreeMap<Term, Term> {
+        private static final long serialVersionUID = 1L;
+
+        TermMap() {
+        }
+
+        TermMap(Map<Term, Term> entries) {
+            super(entries);
+        }
+
+        @Override
+        public String toString() {
+            var sb = new StringBuilder("{");
+            for (var e : entrySet()) {
+                sb.append(sb.length() > 1 ? "," : "").append(e.getKey()).append("->").append(e.getValue());
+            }
+            return sb.append('}').toString();
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return this == o;
+        }
+
+        @Override
+        public int hashCode() {
+            return System.identityHashCode(this);
+        }
+    }
+
     /** {@return the set in t, a new one bound to t when it is a free variable} */
-    @SuppressWarnings("unchecked")
-    static TreeSet<Term> set(String action, Term t, Unifier un) throws IaException {
+    static TermSet set(String action, Term t, Unifier un) throws IaException {
         if (t instanceof Var) {
-            var s = new TreeSet<Term>();
+            var s = new TermSet();
             un.unifies(t, new ObjectTerm(s));
             return s;
         }
-        if (t instanceof ObjectTerm o && o.value() instanceof TreeSet<?> s) {
-            return (TreeSet<Term>) s;
+        return set(action, t);
+    }
+
+    /** {@return the set in t} */
+    static TermSet set(String action, Term t) throws IaException {
+        if (t instanceof ObjectTerm o && o.value() instanceof TermSet s) {
+            return s;
         }
         throw IaException.wrongArguments(action, "'" + t + "' is not a set");
+    }
+
+    /** {@return the map in t, a new one bound to t when it is a free variable (as Jason's .map.put)} */
+    static TermMap map(String action, Term t, Unifier un) throws IaException {
+        if (t instanceof Var) {
+            var m = new TermMap();
+            un.unifies(t, new ObjectTerm(m));
+            return m;
+        }
+        return map(action, t);
+    }
+
+    /** {@return the map in t} */
+    static TermMap map(String action, Term t) throws IaException {
+        if (t instanceof ObjectTerm o && o.value() instanceof TermMap m) {
+            return m;
+        }
+        throw IaException.wrongArguments(action, "'" + t + "' is not a map");
     }
 
     /** {@return the queue in t} */
