@@ -1,7 +1,8 @@
 // Jason's .set.*, .queue.* and .map.* internal actions: sets print as {a,b} in the standard order,
 // maps as {k->v} by key, queues as Java's [a, b] (a priority queue in its heap's order); .length
 // counts them, .member walks sets and queues, == and = compare sets by contents and maps by
-// identity, and sets, queues and maps sort after structures, as they print.
+// identity, and sets, queues and maps sort after structures, as they print. A for over .map.key or
+// .member goes through the collection as it was when the loop began.
 !t.
 +!t <- .set.create(S); .set.add_all(S, [c, a, b, f(1), 3, "s"]); .print(S); .print("S=", S);
    .length(S, L); .print(L);
@@ -20,7 +21,7 @@
    if (A == B) { .print(same_set) }; if (A = B) { .print(sets_unify) };
    .sort([A, b, 1, "x", [a], f(a)], Sorted); .print(Sorted);
    if (.set.create(A)) { .print(created_again) } else { .print(create_bound_fails) };
-   !queues; !maps; !mixed;
+   !queues; !maps; !mixed; !loops;
    .stopMAS.
 
 +!queues <- .queue.create(Q); .queue.add_all(Q, [z, y, x]); .print(Q); .length(Q, QL); .print(QL);
@@ -58,3 +59,9 @@
 +!mixed <- .set.create(S); .map.create(M); .map.put(M, k, v); .queue.create(Q); .queue.add(Q, a);
    .set.add(S, M); .set.add(S, Q); .print([S, M, Q]);
    .sort([M, S, Q], L); .print(L); .term2string([S], T); .print(T).
+
++!loops <- .map.put(M, a, 1); .map.put(M, b, 2);
+   for (.map.key(M, K)) { .map.get(M, K, V); .print(K, " ", V); .map.put(M, c, 3) };
+   .print(M); .map.remove(M, c, _);
+   .findall(p(K2, V2), .map.key(M, K2) & .map.get(M, K2, V2), L); .print(L);
+   .set.add_all(S, [a, b]); for (.member(X, S)) { .print(X); .set.add(S, c) }; .print(S).

@@ -17,7 +17,10 @@ final class Member extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         Collection<Term> items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
-        Term[] elements = (items == null ? list(args[1]).elements() : items).toArray(new Term[0]);
+        if (items == null) { // a map too: Jason's .member takes lists and sets only
+            throw IaException.wrongArguments(name(), "'" + args[1] + "' is not a list, a set or a queue");
+        }
+        Term[] elements = items.toArray(new Term[0]);
         Unifier base = un.copy();
         Term x = args[0];
         // a solution's unifier is made when it is asked for (a plan body takes the first only), from

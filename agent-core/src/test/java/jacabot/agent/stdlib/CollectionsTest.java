@@ -1,0 +1,47 @@
+package jacabot.agent.stdlib;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import jacabot.agent.testing.TestAgent;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * What jason-oracle/30 cannot show: Jason ends a .set/.queue/.map action on a wrong collection in a
+ * NullPointerException (error {@code unknown}); ours fail with {@code wrong_arguments} and say why.
+ */
+class CollectionsTest {
+    private static List<String> run(String program) {
+        var a = new TestAgent(program);
+        a.cycles(100);
+        return a.printed();
+    }
+
+    @Test
+    void aWrongCollectionFailsTheIntentionWithWrongArgumentsAndSaysWhy() {
+        List<String> printed = run("""
+                !t.
+                +!t <- .set.create(S); .map.create(M); .queue.create(Q);
+                   !bad(.map.put(x, a, 1)); !bad(.map.get(S, a, _)); !bad(.map.key(Q, _)); !bad(.map.clear([a]));
+                   !bad(.set.remove(x, a)); !bad(.set.union(S, x)); !bad(.set.copy(M, _)); !bad(.set.to_list(Q, _));
+                   !bad(.queue.to_list(S, _)); !bad(.queue.copy(x, _)); !bad(.queue.clear(M)); !bad(.member(_, M));
+                   .print(done).
+                +!bad(A) <- A; .print(no_failure).
+                -!bad(_)[error(E), error_msg(Msg)] <- .print(E, " ", Msg).
+                """);
+        assertEquals(List.of(
+                "wrong_arguments Wrong arguments for '.map.put': 'x' is not a map",
+                "wrong_arguments Wrong arguments for '.map.get': '{}' is not a map",
+                "wrong_arguments Wrong arguments for '.map.key': '[]' is not a map",
+                "wrong_arguments Wrong arguments for '.map.clear': '[a]' is not a map",
+                "wrong_arguments Wrong arguments for '.set.remove': 'x' is not a set",
+                "wrong_arguments Wrong arguments for '.set.union': 'x' is not a list or a set",
+                "wrong_arguments Wrong arguments for '.set.copy': '{}' is not a set",
+                "wrong_arguments Wrong arguments for '.set.to_list': '[]' is not a set",
+                "wrong_arguments Wrong arguments for '.queue.to_list': '{}' is not a queue",
+                "wrong_arguments Wrong arguments for '.queue.copy': 'x' is not a queue",
+                "wrong_arguments Wrong arguments for '.queue.clear': '{}' is not a queue",
+                "wrong_arguments Wrong arguments for '.member': '{}' is not a list, a set or a queue",
+                "done"), printed);
+    }
+}
