@@ -136,6 +136,9 @@ public final class Stdlib {
         put(map, ChangeCase.upper());
         put(map, new Version());
         put(map, new Wait());
+        put(map, new Verbose());
+        put(map, new Perceive());
+        put(map, new PrintUnifier());
         return map;
     }
 
