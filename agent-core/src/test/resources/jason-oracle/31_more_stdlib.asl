@@ -1,6 +1,6 @@
-// .verbose, .perceive and .print_unifier (Jason 3.2.0)
+// .verbose, .perceive, .print_unifier and .signal (Jason 3.2.0)
 !start.
-+!start <- !verbosity; !perception; !unifiers; !wrong; .stopMAS.
++!start <- !verbosity; !perception; !unifiers; !signals; !wrong; .stopMAS.
 +!verbosity <- .verbose(1); .print(verbose_one); .verbose(1, ignored); .print(extra_argument_ignored).
 +!perception <- .perceive; .print(perceived).
 +!unifiers <- !none; !one; !struct; !args(7).
@@ -8,6 +8,18 @@
 +!one <- X = 3; .print_unifier.
 +!struct <- Y = f(Z, "s", [1, a]); .print_unifier.
 +!args(N) <- .print_unifier(foo, bar).
-+!wrong <- !w(.perceive(a)); !w(.perceive(a, b)).
+// a signalled trigger is an event as is: no source, no belief added, a new intention
++!signals <- .signal({+!sig(1)}); .signal({+sb(2)}); .signal({-sc}); .signal({+?sq}); .signal({+!sig(3)[x]});
+  .print(signalled); .wait(200); !check.
++!sig(N)[A] <- .print(sig_annotated, N, A); !depth.
++!sig(N) <- .print(sig, N); !depth.
++!sig(N)[source(S)] <- .print(never, S).
++!depth <- .intention(_, _, S, current); .length(S, K); .print(stack, K).
++sb(N) <- .print(sb, N).
+-sc <- .print(minus_sc).
++?sq <- .print(sq).
++!check <- ?sb(_); .print(believed).
+-!check <- .print(sb_not_believed).
++!wrong <- !w(.perceive(a)); !w(.perceive(a, b)); !w(.signal({+a}, b)).
 +!w(A) <- A; .print(not_failed, A).
 -!w(A)[error(E)] <- .print(failed, " ", E).

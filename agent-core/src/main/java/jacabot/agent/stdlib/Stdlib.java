@@ -139,6 +139,7 @@ public final class Stdlib {
         put(map, new Verbose());
         put(map, new Perceive());
         put(map, new PrintUnifier());
+        put(map, new Signal());
         return map;
     }
 

@@ -11,7 +11,7 @@ import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
-/** {@code .verbose} and {@code .perceive}: what jason-oracle/31 cannot show (bare console lines, percepts). */
+/** {@code .verbose}, {@code .perceive} and {@code .signal}: what jason-oracle/31 cannot show (bare console lines, percepts). */
 class MoreStdlibTest {
     @Test
     void verboseZeroPrintsBareTextAndOneRestoresTheName() {
@@ -44,5 +44,17 @@ class MoreStdlibTest {
         a.percepts = List.of();
         new Perceive().execute(a.agent, new Unifier(), new Term[0]);
         assertFalse(a.believes("seen[source(percept)]"), "a percept gone is a belief gone");
+    }
+
+    @Test
+    void signalOfANonTriggerFailsWithWrongArguments() {
+        // Jason posts an event without trigger and its reasoning cycle throws; ours fails the intention
+        var a = new TestAgent("""
+                !g.
+                +!g <- .signal(foo); .print(not_reached).
+                -!g[error(E), error_msg(M)] <- .print(E, " ", M).
+                """);
+        a.cycles(10);
+        assertEquals(List.of("wrong_arguments Wrong arguments for '.signal': 'foo' is not a trigger such as {+e}"), a.printed());
     }
 }
