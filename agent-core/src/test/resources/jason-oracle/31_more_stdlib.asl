@@ -1,6 +1,6 @@
-// .verbose, .perceive, .print_unifier and .signal (Jason 3.2.0)
+// .verbose, .perceive, .print_unifier, .signal and .internal_action (Jason 3.2.0)
 !start.
-+!start <- !verbosity; !perception; !unifiers; !signals; !wrong; .stopMAS.
++!start <- !verbosity; !perception; !unifiers; !signals; !ias; !wrong; .stopMAS.
 +!verbosity <- .verbose(1); .print(verbose_one); .verbose(1, ignored); .print(extra_argument_ignored).
 +!perception <- .perceive; .print(perceived).
 +!unifiers <- !none; !one; !struct; !args(7).
@@ -20,6 +20,10 @@
 +?sq <- .print(sq).
 +!check <- ?sb(_); .print(believed).
 -!check <- .print(sb_not_believed).
-+!wrong <- !w(.perceive(a)); !w(.perceive(a, b)); !w(.signal({+a}, b)).
+// .internal_action: only a call of a known internal action
++!ias <- !w(.internal_action(.print)); !w(.internal_action(.my_name(N))); Y = .print(y); !w(.internal_action(Y));
+  !w(.internal_action(".print")); !w(.internal_action(print)); !w(.internal_action(Z)); !w(.internal_action(foo(x)));
+  !w(.internal_action(3)); !w(.internal_action([.print])); !w(.internal_action(.nonexist(x))).
++!wrong <- !w(.perceive(a)); !w(.perceive(a, b)); !w(.signal({+a}, b)); !w(.internal_action(.print(x), 2)).
 +!w(A) <- A; .print(not_failed, A).
 -!w(A)[error(E)] <- .print(failed, " ", E).

@@ -140,6 +140,7 @@ public final class Stdlib {
         put(map, new Perceive());
         put(map, new PrintUnifier());
         put(map, new Signal());
+        put(map, new InternalActionCheck());
         return map;
     }
 
