@@ -141,6 +141,7 @@ public final class Stdlib {
         put(map, new PrintUnifier());
         put(map, new Signal());
         put(map, new InternalActionCheck());
+        put(map, new Done());
         return map;
     }
 
