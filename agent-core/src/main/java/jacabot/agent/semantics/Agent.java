@@ -480,7 +480,7 @@ public final class Agent {
     }
 
     /** Jason's default belief update: percepts replace the beliefs with {@code source(percept)}. */
-    void beliefUpdate(List<Literal> percepts) {
+    public void beliefUpdate(List<Literal> percepts) {
         var now = new HashSet<Literal>();
         for (Literal p : percepts) {
             now.add(p.hasSource() ? p : p.addAnnot(Literal.SOURCE_PERCEPT));

@@ -136,6 +136,12 @@ public final class Stdlib {
         put(map, ChangeCase.upper());
         put(map, new Version());
         put(map, new Wait());
+        put(map, new Verbose());
+        put(map, new Perceive());
+        put(map, new PrintUnifier());
+        put(map, new Signal());
+        put(map, new InternalActionCheck());
+        put(map, new Done());
         return map;
     }
 
