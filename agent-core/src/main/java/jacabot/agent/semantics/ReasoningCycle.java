@@ -3,7 +3,6 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
-import jacabot.agent.syntax.RelExpr;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
@@ -122,8 +121,8 @@ final class ReasoningCycle {
                     return true;
                 }
             }
-            // a plan not taken leaves the unifier to the next one: a failed unification bound
-            // nothing, a context is solved in a copy
+            // a plan not taken leaves the unifier to the next one: a failed unification or
+            // context bound nothing
             if (u == null) {
                 u = ag.newUnifier();
             } else {
@@ -133,27 +132,13 @@ final class ReasoningCycle {
                 continue;
             }
             relevant = true;
-            Unifier option = u;
-            if (p.context() instanceof RelExpr r) {
-                // a context of one relation (N >= 10, X = Y + 1): its one solution, if any, made in
-                // the plan's own unifier without a proof (failing, it binds nothing for the next plan)
-                if (!ag.solver().relational(r, u)) {
-                    continue;
-                }
-                applyAddIM(se, p, u);
-                return true;
+            // the context's first solution is made in the plan's own unifier; a context that fails
+            // leaves it as it was
+            if (p.context() != null && (ag.solver().failsAtFirstComparison(p.context(), u)
+                    || !ag.solver().believes(p.context(), u))) {
+                continue;
             }
-            if (p.context() != null) {
-                if (ag.solver().failsAtFirstComparison(p.context(), u)) {
-                    continue;
-                }
-                Iterator<Unifier> it = ag.solver().solve(p.context(), u);
-                if (!it.hasNext()) {
-                    continue;
-                }
-                option = it.next();
-            }
-            applyAddIM(se, p, option);
+            applyAddIM(se, p, u);
             return true;
         }
         if (message && messages.handleByDefault((Literal) se.trigger().literal())) {

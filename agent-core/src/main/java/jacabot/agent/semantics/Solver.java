@@ -45,11 +45,14 @@ public final class Solver {
     /**
      * {@return whether a plan context has no solution, seen without a proof} It is so when its
      * first conjunct is a comparison ({@code N mod 30 == 3}) that does not hold: a proof would fail
-     * there before anything else. Of a goal's many plans, most fail so, and a proof first copies
-     * the unifier. Terms with function calls ({@code math.random}) are left to the proof, which
-     * evaluates them once.
+     * there before anything else. Of a goal's many plans, most fail so, and a proof is built for
+     * each. Terms with function calls ({@code math.random}) are left to the proof, which evaluates
+     * them once; so is a context of one relation, which {@link #believes} decides without a proof.
      */
     boolean failsAtFirstComparison(Term context, Unifier u) {
+        if (context instanceof RelExpr) {
+            return false;
+        }
         Term first = context;
         while (first instanceof jacabot.agent.syntax.LogExpr e && e.op() == jacabot.agent.syntax.LogExpr.Op.AND) {
             first = e.left();
