@@ -306,7 +306,6 @@ public final class LocalMAS {
 
     // ---- threads ----------------------------------------------------------------------------------
 
-    /** Runs each agent on its own thread until {@code .stopMAS}. */
     /** An agent created while the system runs: it gets its own thread when agents have threads. */
     String spawn(String name, AgentProgram program, AslParser parser) {
         return start(createAgent(name, program, parser, null));
@@ -345,6 +344,7 @@ public final class LocalMAS {
         return true;
     }
 
+    /** Runs each agent on its own thread until {@code .stopMAS}. */
     public void runThreads() throws InterruptedException {
         threadsRunning = true;
         var threads = new ArrayList<Thread>();
@@ -365,6 +365,24 @@ public final class LocalMAS {
         }
     }
 
+    /**
+     * How many times an agent with nothing to do yields its core, looking for a wake, before it
+     * parks (system property jacabot.idleYields; 0 parks at once). Agents exchanging a stream of
+     * messages then find each other awake, and a sender seldom pays for an unpark; the JDK's
+     * synchronous queues spin before they park for the same reason.
+     */
+    static final int IDLE_YIELDS = Integer.getInteger("jacabot.idleYields", 50);
+
+    private static boolean yieldUntilWoken(Waker w) {
+        for (int k = 0; k < IDLE_YIELDS; k++) {
+            Thread.yield();
+            if (w.woken) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private void agentLoop(Agent a, CountDownLatch allStarted) {
         Waker w = wakers.get(a.name());
         w.thread = Thread.currentThread();
@@ -377,7 +395,7 @@ public final class LocalMAS {
                     a.reasoningCycle();
                     continue;
                 }
-                if (w.woken) {
+                if (w.woken || yieldUntilWoken(w)) {
                     // a wake came since the last look: look again, without raising asleep,
                     // which makes every waker unpark this thread
                     w.woken = false;

@@ -287,6 +287,34 @@ class LocalMASTest {
         assertEquals(List.of("[main] added(40) in main", "[bob] 10 : 41 from main"), lines());
     }
 
+    /** An agent with nothing to do parks its thread after its yields, and a message still wakes it. */
+    @Test
+    void anIdleAgentParksAndAMessageWakesIt() throws Exception {
+        var threaded = new LocalMAS(jacabot.agent.semantics.Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+        threaded.createAgent("bob", parser.parse("+hello[source(A)] <- .print(hello, A); .stopMAS.\n", "bob.asl"), parser, null);
+        Thread runner = new Thread(() -> {
+            try {
+                threaded.runThreads();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        runner.setDaemon(true);
+        runner.start();
+        Thread bob = null;
+        for (long end = System.nanoTime() + 10_000_000_000L; System.nanoTime() < end; Thread.sleep(5)) {
+            bob = Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals("agent-bob")).findFirst().orElse(null);
+            if (bob != null && bob.getState() == Thread.State.TIMED_WAITING) {
+                break;
+            }
+        }
+        assertTrue(bob != null && bob.getState() == Thread.State.TIMED_WAITING, "the idle agent's thread parks, it does not spin");
+        threaded.deliver(new jacabot.agent.semantics.Message("m1", "alice", "bob", "tell", jacabot.agent.syntax.Literal.atom("hello"), null));
+        runner.join(10_000);
+        assertTrue(threaded.isStopped(), "the message woke bob, whose plan stopped the system");
+        assertEquals(List.of("[bob] helloalice"), lines());
+    }
+
     /** Runs the project on a daemon thread, stepping or a thread per agent, for at most 20 s (its .stopMAS ends it sooner). */
     private static void runFor20s(LocalMAS launched, boolean stepping) throws InterruptedException {
         Thread runner = new Thread(() -> {
