@@ -292,15 +292,7 @@ class LocalMASTest {
     void anIdleAgentParksAndAMessageWakesIt() throws Exception {
         var threaded = new LocalMAS(jacabot.agent.semantics.Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
         threaded.createAgent("bob", parser.parse("+hello[source(A)] <- .print(hello, A); .stopMAS.\n", "bob.asl"), parser, null);
-        Thread runner = new Thread(() -> {
-            try {
-                threaded.runThreads();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        runner.setDaemon(true);
-        runner.start();
+        Thread runner = startRunning(threaded, false);
         Thread bob = null;
         for (long end = System.nanoTime() + 10_000_000_000L; System.nanoTime() < end; Thread.sleep(5)) {
             bob = Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals("agent-bob")).findFirst().orElse(null);
@@ -317,6 +309,11 @@ class LocalMASTest {
 
     /** Runs the project on a daemon thread, stepping or a thread per agent, for at most 20 s (its .stopMAS ends it sooner). */
     private static void runFor20s(LocalMAS launched, boolean stepping) throws InterruptedException {
+        startRunning(launched, stepping).join(20_000);
+    }
+
+    /** Starts the project on a daemon thread, stepping or a thread per agent. */
+    private static Thread startRunning(LocalMAS launched, boolean stepping) {
         Thread runner = new Thread(() -> {
             try {
                 if (stepping) {
@@ -330,6 +327,6 @@ class LocalMASTest {
         });
         runner.setDaemon(true);
         runner.start();
-        runner.join(20_000);
+        return runner;
     }
 }
