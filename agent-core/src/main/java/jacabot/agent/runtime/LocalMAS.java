@@ -367,14 +367,17 @@ public final class LocalMAS {
 
     /**
      * How many times an agent with nothing to do yields its core, looking for a wake, before it
-     * parks (system property jacabot.idleYields; 0 parks at once). Agents exchanging a stream of
-     * messages then find each other awake, and a sender seldom pays for an unpark; the JDK's
-     * synchronous queues spin before they park for the same reason.
+     * parks (system property jacabot.idleYields; 0 parks at once). Only an agent whose last park
+     * was ended by a wake within {@link #QUICK_WAKE_NANOS} yields: agents trading a stream of
+     * messages then find each other awake, and a sender seldom pays for an unpark (the JDK's
+     * synchronous queues spin before they park for the same reason), while an agent that waits
+     * long, or for good, parks at once instead of yielding to a thousand busy threads.
      */
     static final int IDLE_YIELDS = Integer.getInteger("jacabot.idleYields", 50);
+    private static final long QUICK_WAKE_NANOS = 200_000;
 
-    private static boolean yieldUntilWoken(Waker w) {
-        for (int k = 0; k < IDLE_YIELDS; k++) {
+    private static boolean yieldUntilWoken(Waker w, int yields) {
+        for (int k = 0; k < yields; k++) {
             Thread.yield();
             if (w.woken) {
                 return true;
@@ -390,12 +393,13 @@ public final class LocalMAS {
             if (allStarted != null) {
                 allStarted.await();
             }
+            int yields = 0; // before the next park
             while (!stopped && !a.isStopped()) {
                 if (!a.canSleep()) {
                     a.reasoningCycle();
                     continue;
                 }
-                if (w.woken || yieldUntilWoken(w)) {
+                if (w.woken || yieldUntilWoken(w, yields)) {
                     // a wake came since the last look: look again, without raising asleep,
                     // which makes every waker unpark this thread
                     w.woken = false;
@@ -407,10 +411,12 @@ public final class LocalMAS {
                         long due = a.nextTimerDue();
                         // capped: a simulated clock may run faster than the wall clock
                         long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, Math.min(50, due - clock.millis()));
+                        long parked = System.nanoTime();
                         java.util.concurrent.locks.LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(wait));
                         if (Thread.interrupted()) {
                             throw new InterruptedException();
                         }
+                        yields = w.woken && System.nanoTime() - parked < QUICK_WAKE_NANOS ? IDLE_YIELDS : 0;
                     }
                     w.woken = false;
                 } finally {
