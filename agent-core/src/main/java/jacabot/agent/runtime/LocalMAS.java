@@ -366,25 +366,15 @@ public final class LocalMAS {
     }
 
     /**
-     * How many times an agent with nothing to do yields its core, looking for a wake, before it
-     * parks (system property jacabot.idleYields; 0 parks at once). Only an agent whose last park
-     * was ended by a wake within {@link #QUICK_WAKE_NANOS} yields: agents trading a stream of
-     * messages then find each other awake, and a sender seldom pays for an unpark (the JDK's
-     * synchronous queues spin before they park for the same reason), while an agent that waits
-     * long, or for good, parks at once instead of yielding to a thousand busy threads.
+     * How long an agent receiving a stream of messages lingers when it runs out of work (system
+     * property jacabot.lingerMicros; 0 never lingers). An agent whose mailbox held two messages or
+     * more when a wake ended its park receives them faster than it wakes: when idle, it parks
+     * this long without raising {@code asleep}, so that its senders need not unpark it, and takes
+     * what came meanwhile in one go; it lingers again while each linger brings a message. Any
+     * other idle agent parks until the next wake, which ends the park at once: an agent in a
+     * conversation (one message a wake) answers as soon as before.
      */
-    static final int IDLE_YIELDS = Integer.getInteger("jacabot.idleYields", 50);
-    private static final long QUICK_WAKE_NANOS = 200_000;
-
-    private static boolean yieldUntilWoken(Waker w, int yields) {
-        for (int k = 0; k < yields; k++) {
-            Thread.yield();
-            if (w.woken) {
-                return true;
-            }
-        }
-        return false;
-    }
+    static final long LINGER_NANOS = TimeUnit.MICROSECONDS.toNanos(Long.getLong("jacabot.lingerMicros", 50));
 
     private void agentLoop(Agent a, CountDownLatch allStarted) {
         Waker w = wakers.get(a.name());
@@ -393,13 +383,22 @@ public final class LocalMAS {
             if (allStarted != null) {
                 allStarted.await();
             }
-            int yields = 0; // before the next park
+            boolean linger = false;
             while (!stopped && !a.isStopped()) {
                 if (!a.canSleep()) {
                     a.reasoningCycle();
                     continue;
                 }
-                if (w.woken || yieldUntilWoken(w, yields)) {
+                if (linger && !w.woken) {
+                    java.util.concurrent.locks.LockSupport.parkNanos(this, LINGER_NANOS);
+                    if (Thread.interrupted()) {
+                        throw new InterruptedException();
+                    }
+                    linger = a.circumstance().messageCount(1) == 1;
+                    w.woken = false;
+                    continue;
+                }
+                if (w.woken) {
                     // a wake came since the last look: look again, without raising asleep,
                     // which makes every waker unpark this thread
                     w.woken = false;
@@ -411,12 +410,11 @@ public final class LocalMAS {
                         long due = a.nextTimerDue();
                         // capped: a simulated clock may run faster than the wall clock
                         long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, Math.min(50, due - clock.millis()));
-                        long parked = System.nanoTime();
                         java.util.concurrent.locks.LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(wait));
                         if (Thread.interrupted()) {
                             throw new InterruptedException();
                         }
-                        yields = w.woken && System.nanoTime() - parked < QUICK_WAKE_NANOS ? IDLE_YIELDS : 0;
+                        linger = LINGER_NANOS > 0 && a.circumstance().messageCount(2) == 2;
                     }
                     w.woken = false;
                 } finally {

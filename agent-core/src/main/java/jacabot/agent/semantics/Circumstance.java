@@ -377,6 +377,15 @@ public final class Circumstance {
         return mailbox.poll();
     }
 
+    /** {@return how many messages wait in the mailbox, counted up to {@code atMost}} */
+    public int messageCount(int atMost) {
+        int n = 0;
+        for (var it = mailbox.iterator(); n < atMost && it.hasNext(); it.next()) {
+            n++;
+        }
+        return n;
+    }
+
     public boolean hasMessage() {
         return !mailbox.isEmpty();
     }

@@ -307,6 +307,18 @@ class LocalMASTest {
         assertEquals(List.of("[bob] helloalice"), lines());
     }
 
+    /** A receiver lingering between the messages of a stream (threads, not stepping) loses none, in order. */
+    @Test
+    void aStreamOfMessagesArrivesWholeAndInOrderBetweenThreads() throws Exception {
+        var threaded = new LocalMAS(jacabot.agent.semantics.Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+        threaded.createAgent("a", parser.parse("!go.\n+!go <- for (.range(I, 1, 5000)) { .send(b, tell, n(I)) }; .send(b, tell, last).\n", "a.asl"),
+                parser, null);
+        threaded.createAgent("b", parser.parse("next(1).\n+n(I) : next(I) <- -+next(I + 1).\n+n(I) <- .print(out_of_order, I).\n"
+                + "+last : next(N) <- .print(got, N - 1); .stopMAS.\n", "b.asl"), parser, null);
+        runFor20s(threaded, false);
+        assertEquals(List.of("[b] got5000"), lines());
+    }
+
     /** Runs the project on a daemon thread, stepping or a thread per agent, for at most 20 s (its .stopMAS ends it sooner). */
     private static void runFor20s(LocalMAS launched, boolean stepping) throws InterruptedException {
         startRunning(launched, stepping).join(20_000);
