@@ -31,9 +31,11 @@ public final class Circumstance {
     private final LinkedHashMap<String, Event> pendingEvents = new LinkedHashMap<>();
     private final HashMap<Integer, ActionExec> pendingActions = new HashMap<>();
     private final ConcurrentLinkedQueue<ActionExec> feedback = new ConcurrentLinkedQueue<>();
-    /** Guarded by itself: a lock taken without contention costs less than a lock-free queue's
-     *  compare-and-set chain while the code still runs interpreted, and adds no node per message. */
-    private final java.util.ArrayDeque<Message> mailbox = new java.util.ArrayDeque<>();
+    /**
+     * Guarded by itself: a lock taken without contention costs less than a lock-free queue's
+     * compare-and-set chain while the code still runs interpreted, and adds no node per message.
+     */
+    private final ArrayDeque<Message> mailbox = new ArrayDeque<>();
     /** Written under the mailbox's lock, read without it (the agent's look for work). */
     private volatile int mailboxSize;
     /**
