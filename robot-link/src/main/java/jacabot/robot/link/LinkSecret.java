@@ -150,11 +150,21 @@ public final class LinkSecret {
                 throw new IOException("the link secret " + file + " may be read by other users; run: chmod 600 " + file);
             }
         }
-        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
-        try {
-            return fromHex(text);
-        } catch (IllegalArgumentException e) {
-            throw new IOException(file + ": not a link secret (" + e.getMessage() + ")");
+        for (int attempt = 0; ; attempt++) {
+            String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
+            if (!text.isEmpty() || attempt == 20) {
+                try {
+                    return fromHex(text);
+                } catch (IllegalArgumentException e) {
+                    throw new IOException(file + ": not a link secret (" + e.getMessage() + ")");
+                }
+            }
+            try {
+                Thread.sleep(25); // made by the other process, which is writing it (loadOrCreate)
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while reading " + file);
+            }
         }
     }
 

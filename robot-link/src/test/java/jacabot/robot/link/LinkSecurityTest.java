@@ -106,6 +106,25 @@ class LinkSecurityTest {
                 .contains("not a link secret"));
     }
 
+    /** The other process has made the file but not yet written it: the reader waits for the secret. */
+    @Test
+    void aSecretFileReadWhileItIsWrittenGivesTheSecret(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("link-secret");
+        Files.createFile(file, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
+        String hex = "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef";
+        Thread writer = new Thread(() -> {
+            try {
+                Thread.sleep(100);
+                Files.writeString(file, hex + "\n");
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        writer.start();
+        assertEquals(hex, LinkSecret.loadOrCreate(file).toHex());
+        writer.join();
+    }
+
     @Test
     void readingsAreCheckedAgainstTheDeclaredDevices() {
         var check = new ReadingCheck(List.of(SensorKind.LEFT_DISTANCE.id(), SensorKind.GRIPPER_POSITIONS.id(),
