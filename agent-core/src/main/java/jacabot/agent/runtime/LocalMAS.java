@@ -394,7 +394,7 @@ public final class LocalMAS {
                     if (Thread.interrupted()) {
                         throw new InterruptedException();
                     }
-                    linger = a.circumstance().messageCount(1) == 1;
+                    linger = a.circumstance().hasMessage();
                     w.woken = false;
                     continue;
                 }
@@ -414,7 +414,7 @@ public final class LocalMAS {
                         if (Thread.interrupted()) {
                             throw new InterruptedException();
                         }
-                        linger = LINGER_NANOS > 0 && a.circumstance().messageCount(2) == 2;
+                        linger = LINGER_NANOS > 0 && a.circumstance().messageCount() >= 2;
                     }
                     w.woken = false;
                 } finally {

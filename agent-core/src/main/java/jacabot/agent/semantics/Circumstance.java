@@ -393,9 +393,9 @@ public final class Circumstance {
         }
     }
 
-    /** {@return how many messages wait in the mailbox, counted up to {@code atMost}} */
-    public int messageCount(int atMost) {
-        return Math.min(atMost, mailboxSize);
+    /** {@return how many messages wait in the mailbox} */
+    public int messageCount() {
+        return mailboxSize;
     }
 
     public boolean hasMessage() {
