@@ -80,47 +80,41 @@ final class TermCollections {
 
     /** {@return the set in t, a new one bound to t when it is a free variable} */
     static TermSet set(String action, Term t, Unifier un) throws IaException {
-        if (t instanceof Var) {
-            var s = new TermSet();
-            un.unifies(t, new ObjectTerm(s));
-            return s;
-        }
-        return set(action, t);
+        return t instanceof Var ? bindNew(t, un, new TermSet()) : set(action, t);
     }
 
     /** {@return the set in t} */
     static TermSet set(String action, Term t) throws IaException {
-        if (t instanceof ObjectTerm o && o.value() instanceof TermSet s) {
-            return s;
-        }
-        throw IaException.wrongArguments(action, "'" + t + "' is not a set");
+        return held(action, t, TermSet.class, "set");
     }
 
     /** {@return the map in t, a new one bound to t when it is a free variable (as Jason's .map.put)} */
     static TermMap map(String action, Term t, Unifier un) throws IaException {
-        if (t instanceof Var) {
-            var m = new TermMap();
-            un.unifies(t, new ObjectTerm(m));
-            return m;
-        }
-        return map(action, t);
+        return t instanceof Var ? bindNew(t, un, new TermMap()) : map(action, t);
     }
 
     /** {@return the map in t} */
     static TermMap map(String action, Term t) throws IaException {
-        if (t instanceof ObjectTerm o && o.value() instanceof TermMap m) {
-            return m;
-        }
-        throw IaException.wrongArguments(action, "'" + t + "' is not a map");
+        return held(action, t, TermMap.class, "map");
     }
 
     /** {@return the queue in t} */
     @SuppressWarnings("unchecked")
     static java.util.Queue<Term> queue(String action, Term t) throws IaException {
-        if (t instanceof ObjectTerm o && o.value() instanceof java.util.Queue<?> q) {
-            return (java.util.Queue<Term>) q;
+        return held(action, t, java.util.Queue.class, "queue");
+    }
+
+    private static <C> C bindNew(Term var, Unifier un, C fresh) {
+        un.unifies(var, new ObjectTerm(fresh));
+        return fresh;
+    }
+
+    /** {@return the collection of this type that t holds} */
+    private static <C> C held(String action, Term t, Class<C> type, String what) throws IaException {
+        if (t instanceof ObjectTerm o && type.isInstance(o.value())) {
+            return type.cast(o.value());
         }
-        throw IaException.wrongArguments(action, "'" + t + "' is not a queue");
+        throw IaException.wrongArguments(action, "'" + t + "' is not a " + what);
     }
 
     /** {@return the elements of a list, set or queue term, or null} */
