@@ -18,7 +18,7 @@ public final class Stdlib {
         put(map, new ListRules());
         put(map, new SetAdd(false));
         put(map, new SetAdd(true));
-        put(map, new SetCreate());
+        put(map, new CollectionCreate("set"));
         put(map, new SetRemove());
         for (SetOperation.Kind k : SetOperation.Kind.values()) {
             put(map, new SetOperation(k));
@@ -29,7 +29,7 @@ public final class Stdlib {
             put(map, new CollectionClear(family));
             put(map, new CollectionCopy(family));
         }
-        put(map, new MapCreate());
+        put(map, new CollectionCreate("map"));
         put(map, new MapPut());
         put(map, new MapGet());
         put(map, new MapRemove());
