@@ -1,0 +1,62 @@
+package jacabot.experiments.link;
+
+import java.util.Collection;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Closes connections that take too long to shake hands or to finish a frame, so a client that
+ * opens a socket and says nothing (or half a frame) costs a thread for {@link LinkConfig.Guards}'
+ * deadlines at most; and has the {@link HandshakeGuard} report failed handshakes. One thread,
+ * waking every 50 ms.
+ */
+final class ConnectionWatchdog {
+    private static final long PERIOD_MS = 50;
+
+    private final LinkConfig.Guards guards;
+    private final Collection<RobotConnection> live;
+    private final HandshakeGuard handshakes;
+    private final Thread thread = new Thread(this::watch, "middleware-watchdog");
+    private volatile boolean stopped;
+
+    ConnectionWatchdog(LinkConfig.Guards guards, Collection<RobotConnection> live, HandshakeGuard handshakes) {
+        this.guards = guards;
+        this.live = live;
+        this.handshakes = handshakes;
+        thread.setDaemon(true);
+    }
+
+    void start() {
+        thread.start();
+    }
+
+    void stop() {
+        stopped = true;
+        thread.interrupt();
+    }
+
+    private void watch() {
+        long handshakeNanos = TimeUnit.MILLISECONDS.toNanos(guards.handshakeMs());
+        long frameNanos = TimeUnit.MILLISECONDS.toNanos(guards.frameMs());
+        try {
+            while (!stopped) {
+                Thread.sleep(PERIOD_MS);
+                long now = System.nanoTime();
+                for (RobotConnection c : live) {
+                    if (c.isClosed()) {
+                        continue;
+                    }
+                    if (!c.handshakeDone() && now - c.startedNanos() > handshakeNanos) {
+                        c.close("no complete handshake within " + guards.handshakeMs() + " ms");
+                    }
+                    long frameStart = c.frameStartNanos();
+                    if (frameStart != 0 && now - frameStart > frameNanos) {
+                        c.close("a frame took longer than " + guards.frameMs() + " ms to arrive");
+                    }
+                }
+                handshakes.report();
+            }
+        } catch (InterruptedException e) {
+            // closing
+        }
+    }
+}
