@@ -9,54 +9,44 @@ import java.util.concurrent.TimeUnit;
  * deadlines at most; and has the {@link HandshakeGuard} report failed handshakes. One thread,
  * waking every 50 ms.
  */
-final class ConnectionWatchdog {
+final class ConnectionWatchdog extends LinkThread {
     private static final long PERIOD_MS = 50;
 
     private final LinkConfig.Guards guards;
     private final Collection<RobotConnection> live;
     private final HandshakeGuard handshakes;
-    private final Thread thread = new Thread(this::watch, "middleware-watchdog");
-    private volatile boolean stopped;
+    private final long handshakeNanos;
+    private final long frameNanos;
 
     ConnectionWatchdog(LinkConfig.Guards guards, Collection<RobotConnection> live, HandshakeGuard handshakes) {
+        super("middleware-watchdog");
         this.guards = guards;
         this.live = live;
         this.handshakes = handshakes;
-        thread.setDaemon(true);
+        this.handshakeNanos = TimeUnit.MILLISECONDS.toNanos(guards.handshakeMs());
+        this.frameNanos = TimeUnit.MILLISECONDS.toNanos(guards.frameMs());
     }
 
-    void start() {
-        thread.start();
+    @Override
+    long pauseMs() {
+        return PERIOD_MS;
     }
 
-    void stop() {
-        stopped = true;
-        thread.interrupt();
-    }
-
-    private void watch() {
-        long handshakeNanos = TimeUnit.MILLISECONDS.toNanos(guards.handshakeMs());
-        long frameNanos = TimeUnit.MILLISECONDS.toNanos(guards.frameMs());
-        try {
-            while (!stopped) {
-                Thread.sleep(PERIOD_MS);
-                long now = System.nanoTime();
-                for (RobotConnection c : live) {
-                    if (c.isClosed()) {
-                        continue;
-                    }
-                    if (!c.handshakeDone() && now - c.startedNanos() > handshakeNanos) {
-                        c.close("no complete handshake within " + guards.handshakeMs() + " ms");
-                    }
-                    long frameStart = c.frameStartNanos();
-                    if (frameStart != 0 && now - frameStart > frameNanos) {
-                        c.close("a frame took longer than " + guards.frameMs() + " ms to arrive");
-                    }
-                }
-                handshakes.report();
+    @Override
+    void round() {
+        long now = System.nanoTime();
+        for (RobotConnection c : live) {
+            if (c.isClosed()) {
+                continue;
             }
-        } catch (InterruptedException e) {
-            // closing
+            if (!c.handshakeDone() && now - c.startedNanos() > handshakeNanos) {
+                c.close("no complete handshake within " + guards.handshakeMs() + " ms");
+            }
+            long frameStart = c.frameStartNanos();
+            if (frameStart != 0 && now - frameStart > frameNanos) {
+                c.close("a frame took longer than " + guards.frameMs() + " ms to arrive");
+            }
         }
+        handshakes.report();
     }
 }

@@ -18,20 +18,16 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
 import jacabot.robot.link.Uplink;
-import jacabot.sim.SimWorld;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.ObjectOutputStream;
 import java.net.InetAddress;
 import java.net.Socket;
-import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Predicate;
 import org.junit.jupiter.api.Test;
 
 /** The middleware's end of the link, against the real controller and against hostile clients. */
