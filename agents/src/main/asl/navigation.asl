@@ -7,9 +7,10 @@
 // as-published/navigation.asl.
 
 middlewareClass("jacabot.experiments.NavigationMiddleware").
-// a waypoint of the sweep is skipped after this long, progress or not (the progress-based skip of
-// suspend-resume measured worse here: generated worlds 129 -> 119 of 150)
+// a waypoint of the sweep is skipped after this long, progress or not (the sweep's progress-based
+// skip measured worse here: generated worlds 129 -> 119 of 150)
 waypointPatience(60000).
+waypointProgress(off).
 
 !start.
 
@@ -19,7 +20,6 @@ waypointPatience(60000).
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
 { include("skills/recovery.asl") }
+{ include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
-
-@setUp +!setUp <- !setUpRecovery; !setUpSweep; !setUpDelivery; !setUpFarSight.

@@ -18,9 +18,10 @@ legSpeed(V) :- not picked(true) & travelSpeed(V).
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
 { include("skills/recovery.asl") }
+{ include("skills/progress-watch.asl") }
 
-@setUp
-+!setUp <- println("Connection successful, waiting for sensor data"); !setUpRecovery; .system_time(Now); +lastFound(Now); !setUpFarSight.
+setUpGoal(startSearchClock).
+@startSearchClock +!startSearchClock <- .system_time(Now); +lastFound(Now).
 
 // no cylinder for a while: long straight legs in random directions
 @searchLeg

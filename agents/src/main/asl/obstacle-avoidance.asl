@@ -10,5 +10,3 @@ middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 { include("skills/initial-phase.asl") }
 { include("skills/coverage.asl") }
 { include("skills/recovery.asl") }
-
-@setUp +!setUp <- println("Connection successful, waiting for sensor data"); !setUpCoverage.

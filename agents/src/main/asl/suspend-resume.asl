@@ -5,12 +5,6 @@
 // beliefs="..."). The thesis' plans as published: as-published/suspend-resume.asl.
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
-// a waypoint of the sweep is skipped once the robot has come no closer to it by waypointProgress m
-// for waypointPatience ms (a fixed 60 s per waypoint left the robot half a minute among boxes in
-// front of a waypoint it could not reach, as in gradle run's story; generated worlds: 128 -> 131
-// of 150, held out 123 -> 123)
-waypointPatience(20000).
-waypointProgress(0.1).
 
 !start.
 
@@ -21,7 +15,6 @@ waypointProgress(0.1).
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
 { include("skills/recovery.asl") }
+{ include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
-
-@setUp +!setUp <- !setUpRecovery; !setUpRecharge; !setUpSweep; !setUpDelivery; !setUpFarSight.

@@ -32,6 +32,7 @@ exploreHorizon(0.6).
 closeArea(2).
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & W * D >= A.
 obstacleTimes([]).
+setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for

@@ -10,6 +10,7 @@ maxRay(0.04).       // the widest threshold: with a wider one the robot stopped 
                     // put the cylinder down there and turned into the area empty
 steerEvery(2500).   // ms between heading checks on the way
 detours(0).         // obstacles met on this trip: each detour goes round longer
+stored(0).          // cylinders put down at the storage point so far
 // no cylinder is picked within storageClearance of the storage point: its radius (from the world)
 // and the cylinder held in front of the robot (a fixed 0.22 m left a cylinder knocked out of the
 // gripper next to the area where no plan would pick it up again)
@@ -29,6 +30,7 @@ storageClearance(0.15) :- not storageRadius(_).
 // only for a picked cylinder and has already updated picked(false) when the agent handles it, so
 // "+fallen : picked(true)" never applied).
 
+setUpGoal(setUpDelivery).
 travelling :- delivering.
 pickingOff :- delivering.
 pickingOff :- nearStorage.
@@ -67,7 +69,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     <- .drop_desire(balance); .drop_desire(computeGap); .drop_desire(avoid);
        stopAcquireDistance; -delivering; .wait(100);
        .print("TARGET POINT REACHED"); stop; .wait(40);
-       putDown; -desired(_); D2 = (O + 180) mod 360; +desired(D2);
+       putDown; ?stored(K); -+stored(K + 1); -desired(_); D2 = (O + 180) mod 360; +desired(D2);
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 

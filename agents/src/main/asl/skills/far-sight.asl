@@ -17,6 +17,7 @@ lostSightIgnore(5000).  // ms a cylinder lost from sight is ignored: the sweep's
                         // image took turns for minutes
 goRoundTime(2500).      // ms to go on past an obstacle met on the way (steering straight back
                         // drove into the same box until homingGiveUp)
+setUpGoal(setUpFarSight).
 // Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound.
 // Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding.
 // Needs: !escape (recovery). Include it after picking, before recovery.

@@ -2,9 +2,9 @@
 // procedure to create the artifact and put the focus on it ... we can call it, the initial phase").
 // Every experiment agent includes it first.
 // Reads: middlewareClass(C), the middleware artifact of the agent's experiment.
-// The agent supplies +!setUp (its skills' set-up once connected: console line, set-up goals of the
-// skills it includes) and the +!move(R) plans that choose what the robot does (its skills'); the
-// first applicable +!move plan wins, so the order of the includes is the order of priority.
+// Once connected, every setUpGoal(G) belief (a skill declares its own) is achieved, in the order of
+// the includes, before the data flows. The +!move(R) plans that choose what the robot does are the
+// skills'; the first applicable one wins, so the order of the includes is the order of priority.
 
 maxSpeed(100).         // the wheel speed command's top
 middlewarePort(4444).  // where the middleware listens (the thesis')
@@ -21,7 +21,9 @@ connectionPoll(100).   // ms between looks for connected(true) (§5; Appendix B:
        println("Artifact created").
 @startFailed -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
 
-@connected +!waitConnection : connected(true) <- !setUp; acquireData; !moving.
+@connected
++!waitConnection : connected(true)
+    <- println("Connection successful, waiting for sensor data"); for (setUpGoal(G)) { !G }; acquireData; !moving.
 @awaitConnection +!waitConnection : connectionPoll(T) <- .wait(T); !waitConnection.
 
 // The motion loop (Chapter 4 §1.2): a random number chooses among the moves of random motion;

@@ -23,6 +23,7 @@ travelling :- charging.
 pickingOff :- charging.
 onErrand :- charging.
 halted :- atCharger.
+setUpGoal(setUpRecharge).
 forgetOnFall(charging).
 forgetOnFall(atCharger).
 
@@ -57,15 +58,19 @@ forgetOnFall(atCharger).
 @rechargeSuspend
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- mark; +charging; ?battery(B); .print("Battery low! Level: ", B);
-       .succeed_goal(move(_)); -avoiding; -+detours(0);
-       stop; setThreshold(0.03); -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz);
-       !computeGap; !!balance; !!steer; !reachCharger; +atCharger; stop; .drop_intention(balance); stop;
-       stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+       !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
        !reachMarked; stop; .print("Previous pt reached");
        ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz); ?ray(R); setThreshold(R);
        !restoreOrientation(O); -charging.
+
+// the trip to the charger, "charging" believed (the task stays suspended): also a robot's way to park
+@goToCharger
++!goToCharger : charger(Cx, Cz)
+    <- .succeed_goal(move(_)); -avoiding; -+detours(0);
+       stop; setThreshold(0.03); -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz);
+       !computeGap; !!balance; !!steer; !reachCharger; +atCharger; stop; .drop_intention(balance); stop.
 
 @rechargeResume -charging : delivering <- .print("Restart delivering"); !computeGap; !balance; !!steer.
 

@@ -1,15 +1,11 @@
 // Skill: recovery, not in the thesis: bounded waits, escapes, an obstacle still in sight.
 // The thesis waits for obstacle(false) without a bound; a robot wedged between boxes waited for
 // ever. Here every such wait (!clear) ends, after avoidTimeout, with an escape (back off, turn a
-// random angle); the middleware's progress percept "stuck" (wheels turning, position unchanged or
-// circling, over stuckWindows) leads to an escape too (the plans for +stuck are the task skills').
+// random angle). See also progress-watch.asl (the middleware's "stuck" percept).
 // Parameters:
-avoidTimeout(3000).                      // ms an obstacle may stay before the escape
-escapeBack(1200).                        // ms of backing off in an escape
-stuckWindows(14000, 0.03, 40000, 0.12).  // ms and metres of the middleware's progress check
+avoidTimeout(3000).   // ms an obstacle may stay before the escape
+escapeBack(1200).     // ms of backing off in an escape
 // Reads: maxSpeed(M); picked(true) (picking). Include it after far sight, before sweep and random walk.
-
-@setUpRecovery +!setUpRecovery : stuckWindows(T1, R1, T2, R2) <- progressWindows(T1, R1, T2, R2).
 
 // the obstacle may already be gone (then no +obstacle(false) would come)
 @clearAlready +!clear : obstacle(false).

@@ -14,9 +14,16 @@ sweepSpeed(100).
 // side, and a lane passed cylinders just out of its sight for minutes (generated worlds:
 // navigation 129 -> 139 of 150, held out 119 -> 134; suspend/resume 131 -> 139, 123 -> 139)
 lookEvery(25000).
-// Reads (the agent's): waypointPatience(Ms): a waypoint is skipped after it; waypointProgress(M)
-// (optional): with it, the waypoint's clock restarts whenever the robot comes M closer, so the
-// patience counts time without progress. Without it the patience is a fixed time per waypoint.
+// A waypoint is skipped once the robot has come no closer to it by waypointProgress m for
+// waypointPatience ms (a fixed 60 s per waypoint left the robot half a minute among boxes in front
+// of a waypoint it could not reach, as in gradle run's story; generated worlds, suspend/resume:
+// 128 -> 131 of 150, held out 123 -> 123). An agent's own waypointPatience(Ms) and
+// waypointProgress(M | off) beliefs replace these defaults (off: a fixed time per waypoint).
+patience(P) :- waypointPatience(P).
+patience(20000) :- not waypointPatience(_).
+progressStep(G) :- waypointProgress(G).
+progressStep(0.1) :- not waypointProgress(_).
+setUpGoal(setUpSweep).
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
 // lastAvoid(T) (avoidance); maxSpeed(M).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
@@ -61,12 +68,12 @@ lookEvery(25000).
 @lookAround +!lookAround : maxSpeed(M) <- .system_time(T); -+lastLook(T); setSpeeds(-M / 2, M / 2); .wait(6800); stop.
 @lookEvery +!sweepStep : lookEvery(L) & lastLook(T0) & .system_time(T) & T - T0 > L <- !lookAround.
 @waypointSkipped
-+!sweepStep : waypoint(X, Z, T0) & .system_time(T) & waypointPatience(P) & T - T0 > P
++!sweepStep : waypoint(X, Z, T0) & .system_time(T) & patience(P) & T - T0 > P
     <- !nextWaypoint.
 @towardsWaypoint
 +!sweepStep : waypoint(X, Z, _) & location(Lx, _, Lz) & sweepSpeed(V)
     <- .system_time(T);
-       if (waypointProgress(G) & closest(B)) {
+       if (progressStep(G) & .number(G) & closest(B)) {
            Dist = math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz));
            if (Dist < B - G) { -+closest(Dist); -+waypoint(X, Z, T) }
        };

@@ -49,7 +49,7 @@ final class CompareCommand implements Callable<Integer> {
         out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) "
                 + "| storage entries without a cylinder | reactive time median / p99 (ms) | response time median / p99 (ms) |");
         out.println("|---|---|---|---|---|---|---|---|---|---|---|");
-        for (Experiment e : Experiment.values()) {
+        for (Experiment e : Experiment.thesis()) {
             Path world = bundled(root, e.worldFile());
             for (long seed : seeds) {
                 AgentRun a = runAgent(e, world, seed, seconds);
@@ -65,7 +65,7 @@ final class CompareCommand implements Callable<Integer> {
         out.println();
         out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
         out.println("|---|---|---|---|---|---|---|---|---|---|");
-        for (Experiment e : Experiment.values()) {
+        for (Experiment e : Experiment.thesis()) {
             CodeMetrics c = CodeMetrics.of(e, root != null ? CodeMetrics.sourceDir(root)
                     : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
             AgentMetrics a = AgentMetrics.of(e, AgentSource.packaged(e));
