@@ -30,9 +30,8 @@ class ExperimentAgentsTest {
     }
 
     /**
-     * The packaged agents include their initial phase from the class path (as the launcher loads
-     * them), and the shared plans sit where each agent's own copy was: right after +!start, before
-     * +!waitConnection (plan order is the order plans are tried in, and names the p__N labels).
+     * The packaged agents include their skills from the class path (as the launcher loads them),
+     * the initial phase first: its plans are the first of every agent's plan library.
      */
     @Test
     void everyPackagedAgentIncludesItsInitialPhaseFromTheClassPath() throws Exception {
@@ -46,13 +45,13 @@ class ExperimentAgentsTest {
                     .parse(new SourceResolver.Source("agents/src/main/asl/" + name + ".asl", text, "asl/" + name + ".asl"));
             assertEquals(List.of("+!start", "+!init(Id)", "-!init(Id)", "-!start[error_msg(M)]", "+!waitConnection",
                     "+!waitConnection"), program.plans().subList(0, 6).stream().map(p -> p.trigger().toString()).toList(), name);
-            assertEquals("agents/src/main/asl/common/initial-phase.asl", program.plans().get(1).source().file());
+            assertEquals("agents/src/main/asl/skills/initial-phase.asl", program.plans().get(1).source().file());
             assertEquals(new AslParser().parseFile(ASL.resolve(name + ".asl")).plans().size(), program.plans().size(),
                     name + ": the same plans as read from disk");
         }
     }
 
-    /** Issue 19: the shared -!init makes the experiment's own middleware, named by the agent's middlewareClass. */
+    /** The shared -!init makes the experiment's own middleware, named by the agent's middlewareClass. */
     @Test
     void withoutARunnerTheAgentMakesItsOwnMiddleware() {
         for (String name : List.of("obstacle-avoidance", "object-picking")) {
@@ -94,7 +93,7 @@ class ExperimentAgentsTest {
         robot.percept("delta(-150)").percept("obstacle(true)");
         robot.cycles(50);
         robot.advance(50, 100);
-        // (issue 13) no console line per avoidance any more: the behaviour is what is checked
+        // (recovery, not in the thesis) no console line per avoidance any more: the behaviour is what is checked
         assertTrue(robot.actionNames().contains("setSpeeds(-100,100)"), "turns left, away from the right... " + robot.actionNames());
         assertTrue(robot.believes("avoiding"));
         robot.unpercept("obstacle(true)").percept("obstacle(false)");
@@ -102,7 +101,7 @@ class ExperimentAgentsTest {
         assertTrue(!robot.believes("avoiding"));
     }
 
-    /** Issue 13: an obstacle that does not clear ends, after avoidTimeout, in an escape (back off, turn). */
+    /** Recovery, not in the thesis: an obstacle that does not clear ends, after avoidTimeout, in an escape (back off, turn). */
     @Test
     void anObstacleThatDoesNotClearEndsInAnEscape() {
         var robot = connected("obstacle-avoidance");
@@ -147,7 +146,7 @@ class ExperimentAgentsTest {
         assertTrue(!robot.believes("picking"), "random motion resumes");
     }
 
-    /** The thesis' behaviour, kept in the agent as published (issue 13 made the default agent recover). */
+    /** The thesis' behaviour, kept in the agent as published (the default agent adds recovery). */
     @Test
     void aFallenCylinderStopsEverything() {
         var robot = connected(ASL.resolve("as-published/object-picking.asl"));
@@ -162,7 +161,7 @@ class ExperimentAgentsTest {
         assertEquals(before, robot.actions.size(), "nothing runs after the fall");
     }
 
-    /** Issue 13: after a fall the default agent lets the cylinder go and wanders on. */
+    /** Recovery, not in the thesis: after a fall the default agent lets the cylinder go and wanders on. */
     @Test
     void aFallenCylinderIsLeftAndTheSearchGoesOn() {
         var robot = connected("object-picking");

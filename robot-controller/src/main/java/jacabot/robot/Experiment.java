@@ -1,12 +1,14 @@
 package jacabot.robot;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
 /**
- * The four experiments of the thesis' Chapter 4: their number, world file, robot and agent. The one
- * list of experiments; the launcher adds each one's middleware artifact.
+ * The four experiments of the thesis' Chapter 4, and tidy-up, a task composed of their skills (not
+ * in the thesis): their number, world file, robot and agent. The one list of experiments; the
+ * launcher adds each one's middleware artifact.
  */
 public enum Experiment {
     /** §1: the two-sensor MyBot wanders and avoids obstacles. */
@@ -16,7 +18,32 @@ public enum Experiment {
     /** §3: it brings red cylinders to the storage point with GPS and compass. */
     NAVIGATION(3, "khepera", "navigation to the storage point with GPS and compass"),
     /** §4 and Appendix B: as §3, recharging when the battery runs low. */
-    SUSPEND_RESUME(4, "khepera", "task suspend and resume on a low battery (Appendix B)");
+    SUSPEND_RESUME(4, "khepera", "task suspend and resume on a low battery (Appendix B)"),
+    /**
+     * Not in the thesis: every cylinder to the storage area, recharging when needed, then park on the
+     * charger; an agent made of the skills of §1-§4 alone, with no procedural baseline.
+     */
+    TIDY_UP(5, "khepera", "tidy-up: every cylinder to the storage area, then park on the charger (skills of 1-4)");
+
+    /** {@return the four experiments of the thesis' Chapter 4, those with a procedural baseline} */
+    public static List<Experiment> thesis() {
+        return List.of(OBSTACLE_AVOIDANCE, OBJECT_PICKING, NAVIGATION, SUSPEND_RESUME);
+    }
+
+    /** {@return whether the experiment has the thesis' procedural baseline (the C program's counterpart)} */
+    public boolean hasBaseline() {
+        return this != TIDY_UP;
+    }
+
+    /** {@return whether the world has a storage point (experiments 3, 4 and tidy-up)} */
+    public boolean needsStorage() {
+        return this == NAVIGATION || this == SUSPEND_RESUME || this == TIDY_UP;
+    }
+
+    /** {@return whether the world has a charger and the robot a battery that runs low (experiment 4 and tidy-up)} */
+    public boolean needsCharger() {
+        return this == SUSPEND_RESUME || this == TIDY_UP;
+    }
 
     private final int number;
     private final String robot;
@@ -81,7 +108,7 @@ public enum Experiment {
             }
         }
         throw new IllegalArgumentException("unknown experiment '" + id
-                + "' (expected obstacle-avoidance, object-picking, navigation or suspend-resume)");
+                + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume or tidy-up)");
     }
 
     @Override

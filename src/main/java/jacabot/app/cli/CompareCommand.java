@@ -39,6 +39,9 @@ final class CompareCommand implements Callable<Integer> {
             description = "a repository to take worlds/ and the baselines' sources from (default: the installation's)")
     private Path root;
 
+    @Option(names = "--code-only", description = "only the code tables (no runs): the metrics and what each experiment adds to the previous one")
+    private boolean codeOnly;
+
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec spec;
 
@@ -46,10 +49,14 @@ final class CompareCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         double seconds = BenchCommand.duration(duration);
         var out = ConsoleStreams.of(spec.commandLine().getOut());
+        if (codeOnly) {
+            codeTables(out);
+            return 0;
+        }
         out.println("| experiment | controller | seed | picked | delivered | coverage | contact (s) | lowest battery (J) "
                 + "| storage entries without a cylinder | reactive time median / p99 (ms) | response time median / p99 (ms) |");
         out.println("|---|---|---|---|---|---|---|---|---|---|---|");
-        for (Experiment e : Experiment.values()) {
+        for (Experiment e : Experiment.thesis()) {
             Path world = bundled(root, e.worldFile());
             for (long seed : seeds) {
                 AgentRun a = runAgent(e, world, seed, seconds);
@@ -63,9 +70,15 @@ final class CompareCommand implements Callable<Integer> {
                 + "trigger. Response time: from the command leaving the middleware to the controller applying it. "
                 + "Both wall clock, in lockstep on this machine. The baseline polls, decides and commands within one step.");
         out.println();
+        codeTables(out);
+        return 0;
+    }
+
+    /** The code metrics of each experiment, then what each adds to the one before (Chapter 5 §2: "new plans and/or beliefs"). */
+    private void codeTables(PrintStream out) throws Exception {
         out.println("| experiment | baseline: code lines | `if`s | loops | conditions | agent: code lines | plans | plans with a context | context conditions | coordination beliefs |");
         out.println("|---|---|---|---|---|---|---|---|---|---|");
-        for (Experiment e : Experiment.values()) {
+        for (Experiment e : Experiment.thesis()) {
             CodeMetrics c = CodeMetrics.of(e, root != null ? CodeMetrics.sourceDir(root)
                     : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
             AgentMetrics a = AgentMetrics.of(e, AgentSource.packaged(e));
@@ -73,7 +86,45 @@ final class CompareCommand implements Callable<Integer> {
                     c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
                     a.coordinationBeliefs().size(), String.join(", ", a.coordinationBeliefs()));
         }
-        return 0;
+        out.println();
+        out.println("What each experiment adds to the one before: the agent's skills (included files), plans, code lines and "
+                + "coordination beliefs; the baseline's code lines and conditions.");
+        out.println();
+        out.println("| experiment | agent: skills added | plans | code lines | coordination beliefs added | baseline: code lines | conditions |");
+        out.println("|---|---|---|---|---|---|---|");
+        AgentMetrics before = null;
+        CodeMetrics cBefore = null;
+        List<String> skillsBefore = List.of();
+        for (Experiment e : Experiment.values()) {
+            AgentSource source = AgentSource.packaged(e);
+            AgentMetrics a = AgentMetrics.of(e, source);
+            List<String> skills = source.sources().stream().skip(1).map(x -> Path.of(x.name()).getFileName().toString()).toList();
+            CodeMetrics c = e.hasBaseline() ? CodeMetrics.of(e, baselineDir()) : null;
+            var newBeliefs = new java.util.TreeSet<>(a.coordinationBeliefs());
+            if (before != null) {
+                newBeliefs.removeAll(before.coordinationBeliefs());
+            }
+            var newSkills = new ArrayList<>(skills);
+            newSkills.removeAll(skillsBefore);
+            out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s |%n", e, String.join(", ", newSkills),
+                    delta(a.plans(), before == null ? null : before.plans()),
+                    delta(a.codeLines(), before == null ? null : before.codeLines()), String.join(", ", newBeliefs),
+                    c == null ? "- (none)" : delta(c.codeLines(), cBefore == null ? null : cBefore.codeLines()),
+                    c == null ? "-" : delta(c.conditions(), cBefore == null ? null : cBefore.conditions()));
+            before = a;
+            skillsBefore = skills;
+            if (c != null) {
+                cBefore = c;
+            }
+        }
+    }
+
+    private Path baselineDir() {
+        return root != null ? CodeMetrics.sourceDir(root) : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString());
+    }
+
+    private static String delta(int now, Integer before) {
+        return before == null ? String.valueOf(now) : String.format(Locale.ROOT, "%d (%+d)", now, now - before);
     }
 
     /** {@return a file of the repository: under {@code --root} if given, else the installation's (from any folder)} */

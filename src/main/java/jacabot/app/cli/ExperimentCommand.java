@@ -25,14 +25,14 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.TypeConversionException;
 
-/** {@code jacabot experiment NAME}: runs one of the four experiments of the thesis' Chapter 4. */
+/** {@code jacabot experiment NAME}: runs one of the four experiments of the thesis' Chapter 4, or tidy-up (composed of their skills). */
 @Command(name = "experiment", mixinStandardHelpOptions = true,
         description = {"Runs an experiment of Chapter 4 with the agent in the loop: obstacle-avoidance, "
-                + "object-picking, navigation, suspend-resume (or 1-4).",
+                + "object-picking, navigation, suspend-resume (or 1-4); or tidy-up (5), a task composed of their skills.",
                 "Headless runs go in lockstep as fast as possible and end with a summary and a PNG of the trajectory."})
 final class ExperimentCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "NAME", converter = ExperimentConverter.class,
-            description = "obstacle-avoidance | object-picking | navigation | suspend-resume")
+            description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up")
     private Experiment experiment;
 
     @Option(names = "--headless", description = "no viewer: lockstep, as fast as possible (the default without a display)")
@@ -146,6 +146,9 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.info("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
         mixUps.forEach(log::warn); // before the run, which goes on
+        if (baseline && !experiment.hasBaseline()) {
+            throw new UserError("--baseline: " + experiment + " has no procedural baseline (only the thesis' four experiments have one)");
+        }
         if (baseline) {
             log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
@@ -423,7 +426,7 @@ final class ExperimentCommand implements Callable<Integer> {
         @Override
         public Experiment convert(String value) {
             return Experiment.parse(value).orElseThrow(() -> new TypeConversionException("unknown experiment '" + value
-                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume)"));
+                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up)"));
         }
     }
 }

@@ -38,7 +38,7 @@ final class SweepCommand implements Callable<Integer> {
     private CommandLine.Model.CommandSpec spec;
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "EXPERIMENT",
-            description = "obstacle-avoidance | object-picking | navigation | suspend-resume | all")
+            description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up | all (the thesis' four)")
     private String experiment;
 
     @Option(names = "--worlds", paramLabel = "DIR", description = "world files to sweep (a file belongs to the experiment its name starts with)")
@@ -46,6 +46,10 @@ final class SweepCommand implements Callable<Integer> {
 
     @Option(names = "--generate", paramLabel = "K", description = "K generated worlds per experiment, generator seeds 1..K (default 10 without --worlds)")
     private Integer generate;
+
+    @Option(names = "--world-seeds", paramLabel = "SEEDS",
+            description = "generated worlds of these generator seeds (1..N, N or a list), e.g. 51..100 for worlds kept out of tuning")
+    private String worldSeeds;
 
     @Option(names = "--max-side", paramLabel = "M", description = "with --generate: largest arena side in metres (default ${DEFAULT-VALUE})")
     private double maxSide = 3.0;
@@ -92,16 +96,17 @@ final class SweepCommand implements Callable<Integer> {
         List<Experiment> experiments;
         double seconds, wallLimit;
         List<Long> runSeeds;
+        List<Long> generatorSeeds = null;
         int shardIndex = 1, shards = 1;
         try {
             if (experiment == null) {
-                throw new IllegalArgumentException("which experiment? (obstacle-avoidance, object-picking, navigation, suspend-resume or all)");
+                throw new IllegalArgumentException("which experiment? (obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up or all)");
             }
             if (experiment.equals("all")) {
-                experiments = List.of(Experiment.values());
+                experiments = Experiment.thesis();
             } else {
                 experiments = List.of(Experiment.parse(experiment).orElseThrow(() -> new IllegalArgumentException(
-                        "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume or all)")));
+                        "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up or all)")));
             }
             seconds = ExperimentCommand.parseDuration(duration);
             wallLimit = ExperimentCommand.parseDuration(timeout);
@@ -131,6 +136,12 @@ final class SweepCommand implements Callable<Integer> {
             }
             if (worlds != null && generate != null) {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
+            }
+            if (worldSeeds != null && (worlds != null || generate != null)) {
+                throw new IllegalArgumentException("--world-seeds excludes --worlds and --generate");
+            }
+            if (worldSeeds != null) {
+                generatorSeeds = SweepPlan.seeds(worldSeeds);
             }
             if (worlds != null && !Files.isDirectory(worlds) && !worlds.isAbsolute()) {
                 worlds = jacabot.app.Installation.resolve(worlds.toString()); // --worlds worlds: the bundled ones, from anywhere
@@ -165,6 +176,7 @@ final class SweepCommand implements Callable<Integer> {
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
         Files.createDirectories(dir.resolve("logs"));
         List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
+                : generatorSeeds != null ? SweepPlan.generated(experiments, generatorSeeds, maxSide, dir.resolve("worlds"))
                 : SweepPlan.generated(experiments, generate == null ? 10 : generate, maxSide, dir.resolve("worlds"));
         if (list.isEmpty()) {
             err.println("error: " + worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");

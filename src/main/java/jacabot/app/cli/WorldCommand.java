@@ -35,7 +35,7 @@ final class WorldCommand implements Runnable {
         private CommandLine.Model.CommandSpec spec;
 
         @Parameters(index = "0", paramLabel = "EXPERIMENT", converter = ExperimentCommand.ExperimentConverter.class,
-                description = "obstacle-avoidance | object-picking | navigation | suspend-resume (or 1-4)")
+                description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up (or 1-5)")
         private Experiment experiment;
 
         @Option(names = "--seed", paramLabel = "N", required = true, description = "the generator's seed (also the world's seed)")

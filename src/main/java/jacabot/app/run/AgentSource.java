@@ -56,7 +56,7 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
     /**
      * {@return an agent file, named as given; it includes files beside it, then from the working
      * directory, then the packaged agents' own (so a copy of a packaged agent keeps its
-     * {@code { include("common/initial-phase.asl") }} wherever it is)}
+     * {@code { include("skills/initial-phase.asl") }} wherever it is)}
      */
     public static AgentSource file(Path file) throws IOException {
         String text = Files.readString(file, StandardCharsets.UTF_8);

@@ -84,7 +84,7 @@ public final class LockstepRun implements AutoCloseable {
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
         // the world's landmarks reach the agent as initial beliefs (issue 13)
-        AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec());
+        AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;

@@ -22,6 +22,7 @@ public final class Middlewares {
             case NAVIGATION:
                 return NavigationMiddleware.class;
             case SUSPEND_RESUME:
+            case TIDY_UP: // battery, charger and storage: all tidy-up needs
                 return SuspendResumeMiddleware.class;
             default:
                 throw new IllegalArgumentException("no middleware for " + experiment);

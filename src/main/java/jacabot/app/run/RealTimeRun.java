@@ -67,7 +67,7 @@ public final class RealTimeRun implements AutoCloseable {
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
         // the world's landmarks reach the agent as initial beliefs (issue 13)
-        var program = WorldBeliefs.inject(agent.parse(parser), world.spec());
+        var program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
             timeReaction(event);

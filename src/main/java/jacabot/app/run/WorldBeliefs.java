@@ -3,12 +3,13 @@ package jacabot.app.run;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
+import jacabot.robot.Experiment;
 import jacabot.sim.world.WorldSpec;
 import java.util.ArrayList;
 import java.util.List;
 
 /**
- * What the robot is told about its world when it starts (issue 13): the landmarks of the world
+ * What the robot is told about its world when it starts: the landmarks of the world
  * file become initial beliefs, so no coordinate is written in an agent. {@code arena(Width, Depth)}
  * (centred on the origin), {@code storagePoint(X, Z)} with {@code storageRadius(R)}, and
  * {@code charger(X, Z)} when the world has them, in the GPS coordinates of {@code location(X, Y, Z)}. A belief of the same name and arity
@@ -34,9 +35,26 @@ public final class WorldBeliefs {
         return out;
     }
 
+    /**
+     * {@return the landmark beliefs of a world for an experiment: tidy-up's task also names how many
+     * cylinders there are to store, {@code cylinders(N)}}
+     */
+    public static List<Literal> of(WorldSpec spec, Experiment experiment) {
+        var out = new ArrayList<Literal>(of(spec));
+        if (experiment == Experiment.TIDY_UP) {
+            out.add(Literal.of("cylinders", NumberTerm.of(spec.cylinders().size())));
+        }
+        return out;
+    }
+
     /** {@return the program with the world's beliefs first, replacing the program's own of the same name and arity} */
     public static AgentProgram inject(AgentProgram program, WorldSpec spec) {
-        List<Literal> world = of(spec);
+        return inject(program, spec, null);
+    }
+
+    /** {@return the program with the world's beliefs for the experiment first (see {@link #of(WorldSpec, Experiment)})} */
+    public static AgentProgram inject(AgentProgram program, WorldSpec spec, Experiment experiment) {
+        List<Literal> world = of(spec, experiment);
         var beliefs = new ArrayList<Object>(world);
         for (Object b : program.beliefs()) {
             if (!(b instanceof Literal l && world.stream().anyMatch(w -> w.functor().equals(l.functor()) && w.arity() == l.arity()))) {

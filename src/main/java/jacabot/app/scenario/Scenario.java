@@ -57,7 +57,7 @@ public final class Scenario {
     /** @throws IllegalArgumentException for an unknown experiment */
     public static Scenario of(String experiment) {
         return new Scenario(Experiment.parse(experiment).orElseThrow(() -> new IllegalArgumentException(
-                "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume)")));
+                "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up)")));
     }
 
     /** The agent's .asl file (default: the experiment's own agent). */

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Whether a run did its experiment's task (issue 13; docs/comparison.md, "Success criteria"), the
+ * Whether a run did its experiment's task (docs/comparison.md, "Success criteria"), the
  * one definition the sweep and the scenario tests share. Per run of 10 simulated minutes:
  * <ul>
  * <li>obstacle avoidance: contact under {@link #MAX_CONTACT_S} s in all and coverage at least
@@ -15,7 +15,10 @@ import java.util.Locale;
  * <li>navigation: at least {@link #MIN_DELIVERIES} deliveries, never into the storage area without a cylinder;</li>
  * <li>suspend/resume: the battery never empty, at least one delivery, and every low-battery episode
  *     ({@link BatteryEpisodes}) recharged and returned from, except one begun in the last
- *     {@link #EPISODE_GRACE_S} s of the run (it has not had the time).</li>
+ *     {@link #EPISODE_GRACE_S} s of the run (it has not had the time);</li>
+ * <li>tidy-up (not in the thesis): the battery never empty, and at the end every cylinder of the world
+ *     lies in the storage area (its centre within the area's radius) and the robot is parked on the
+ *     charger (its centre within the charger's radius).</li>
  * </ul>
  * A run that crashed, hung or ended early fails whatever its figures.
  */
@@ -28,9 +31,20 @@ public final class SuccessCriteria {
     private SuccessCriteria() {
     }
 
-    /** What the criteria read from a run. */
+    /**
+     * What the criteria read from a run; {@code cylinders}, {@code stored} and {@code parked} are the
+     * end of the run (how many cylinders the world has, how many lie in the storage area, whether the
+     * robot is on the charger), read for tidy-up only.
+     */
     public record Figures(double duration, double contactTime, double coverage, int picks, int deliveries,
-                          int storageEntriesEmpty, boolean batteryEmptied, int lowBatteryEpisodes, int episodesCompleted) {
+                          int storageEntriesEmpty, boolean batteryEmptied, int lowBatteryEpisodes, int episodesCompleted,
+                          int cylinders, int stored, boolean parked) {
+        /** The figures of an experiment of the thesis (no end state read). */
+        public Figures(double duration, double contactTime, double coverage, int picks, int deliveries,
+                int storageEntriesEmpty, boolean batteryEmptied, int lowBatteryEpisodes, int episodesCompleted) {
+            this(duration, contactTime, coverage, picks, deliveries, storageEntriesEmpty, batteryEmptied, lowBatteryEpisodes,
+                    episodesCompleted, 0, 0, false);
+        }
     }
 
     /** The verdict: success, or the reasons it failed (semicolon-separated in reports). */
@@ -92,6 +106,17 @@ public final class SuccessCriteria {
                 if (f.episodesCompleted() < f.lowBatteryEpisodes()) {
                     why.add((f.lowBatteryEpisodes() - f.episodesCompleted()) + " of " + f.lowBatteryEpisodes()
                             + " low-battery episodes without recharge and return");
+                }
+            }
+            case TIDY_UP -> {
+                if (f.batteryEmptied()) {
+                    why.add("battery empty");
+                }
+                if (f.stored() < f.cylinders()) {
+                    why.add(f.stored() + " of " + f.cylinders() + " cylinders in the storage area");
+                }
+                if (!f.parked()) {
+                    why.add("not parked on the charger");
                 }
             }
             default -> throw new IllegalArgumentException("no criteria for " + experiment);

@@ -31,9 +31,19 @@ public final class SweepPlan {
      * @param writeTo a directory to write them to (for replays), or null
      */
     public static List<World> generated(List<Experiment> experiments, int k, double maxSide, Path writeTo) throws IOException {
+        List<Long> worldSeeds = new ArrayList<>();
+        for (long seed = 1; seed <= k; seed++) {
+            worldSeeds.add(seed);
+        }
+        return generated(experiments, worldSeeds, maxSide, writeTo);
+    }
+
+    /** {@return generated worlds of these generator seeds for each experiment (e.g. 51..100: worlds kept out of tuning)} */
+    public static List<World> generated(List<Experiment> experiments, List<Long> worldSeeds, double maxSide, Path writeTo)
+            throws IOException {
         List<World> out = new ArrayList<>();
         for (Experiment e : experiments) {
-            for (long seed = 1; seed <= k; seed++) {
+            for (long seed : worldSeeds) {
                 var g = new WorldGenerator(e, seed).maxSide(maxSide).generate();
                 Path file = null;
                 if (writeTo != null) {
@@ -82,6 +92,9 @@ public final class SweepPlan {
         for (World w : worlds) {
             for (long seed : seeds) {
                 for (String c : controllers) {
+                    if (c.equals(SweepJob.BASELINE) && !w.experiment().hasBaseline()) {
+                        continue; // tidy-up: composed of the agents' skills, no C program to compare with
+                    }
                     all.add(new SweepJob(w.experiment(), c, w.name(), w.file(), w.spec(), w.problem(), seed));
                 }
             }

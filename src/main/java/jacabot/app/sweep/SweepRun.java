@@ -79,11 +79,11 @@ public final class SweepRun {
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
         if (job.spec() == null) {
-            return new Result(outcome(job, RunOutcome.CRASH, job.problem(), null, null, 0, 0), "", List.of());
+            return new Result(outcome(job, RunOutcome.CRASH, job.problem(), null, null, null, 0, 0), "", List.of());
         }
         var missing = Landmarks.missing(e, job.spec(), job.file() == null ? job.world() : job.file().toString());
         if (missing.isPresent()) {
-            return new Result(outcome(job, RunOutcome.CRASH, missing.get(), null, null, 0, 0), "", List.of());
+            return new Result(outcome(job, RunOutcome.CRASH, missing.get(), null, null, null, 0, 0), "", List.of());
         }
         WorldSpec s = job.spec();
         SimWorld world = SimWorld.of(new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), job.seed(),
@@ -133,18 +133,20 @@ public final class SweepRun {
         }
         double wall = (System.nanoTime() - start) / 1e9;
         RunSummary summary;
+        EndState end;
         synchronized (world) {
             summary = recorder.summary(job.controller());
+            end = EndState.of(world.snapshot(), job.experiment().robot());
         }
         if (status.equals(RunOutcome.OK) && summary.duration() < seconds - world.controlStep() / 1000.0) {
             status = RunOutcome.EARLY_END;
             message = String.format(java.util.Locale.ROOT, "ended at t=%.1f s of %.0f s", summary.duration(), seconds);
         }
-        return new Result(outcome(job, status, message, summary, battery.episodes(), seconds, wall),
+        return new Result(outcome(job, status, message, summary, end, battery.episodes(), seconds, wall),
                 summary.eventLog(), console.lines());
     }
 
-    private static RunOutcome outcome(SweepJob job, String status, String message, RunSummary s,
+    private static RunOutcome outcome(SweepJob job, String status, String message, RunSummary s, EndState end,
             List<BatteryEpisodes.Episode> episodes, double seconds, double wall) {
         SuccessCriteria.Figures f;
         if (s == null) {
@@ -155,7 +157,7 @@ public final class SweepRun {
             int completed = counted ? (int) episodes.stream().filter(BatteryEpisodes.Episode::completed).count() : 0;
             f = new SuccessCriteria.Figures(s.duration(), s.contactTime(), s.coverage(), s.picks(), s.deliveries(),
                     s.storageEntriesEmpty(), s.batteryEmptied(), counted ? SuccessCriteria.episodesDue(episodes, s.duration()) : 0,
-                    completed);
+                    completed, end == null ? 0 : end.cylinders(), end == null ? 0 : end.stored(), end != null && end.parked());
         }
         SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f);
         List<String> reasons = new ArrayList<>();

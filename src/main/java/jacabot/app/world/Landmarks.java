@@ -6,7 +6,7 @@ import java.util.Optional;
 
 /**
  * The landmarks an experiment needs in its world (Chapter 4 §3-4): navigation a storage point,
- * suspend/resume a storage point and a charger; and the robot the experiment drives. Checked before
+ * suspend/resume and tidy-up a storage point and a charger; and the robot the experiment drives. Checked before
  * a run starts, for the agent and the baseline alike.
  */
 public final class Landmarks {
@@ -20,11 +20,10 @@ public final class Landmarks {
             return Optional.of(file + ": $.robots: " + needs + "a robot named '" + experiment.robot() + "'; the world has "
                     + (spec.robots().isEmpty() ? "none" : "only " + String.join(", ", spec.robots().stream().map(r -> r.name()).toList())));
         }
-        boolean storage = experiment == Experiment.NAVIGATION || experiment == Experiment.SUSPEND_RESUME;
-        if (storage && spec.storage() == null) {
+        if (experiment.needsStorage() && spec.storage() == null) {
             return Optional.of(file + ": $.storage: " + needs + "a storage point; the world has none");
         }
-        if (experiment == Experiment.SUSPEND_RESUME && spec.charger() == null) {
+        if (experiment.needsCharger() && spec.charger() == null) {
             return Optional.of(file + ": $.charger: " + needs + "a charger; the world has none");
         }
         return Optional.empty();

@@ -82,8 +82,8 @@ public final class WorldGenerator {
                         + ", \"wallThickness\": 0.02, \"wallHeight\": 0.1 }")
                 .raw("basicTimeStep", "8").raw("controlStep", "40").raw("seed", Long.toString(seed));
 
-        boolean needsStorage = experiment == Experiment.NAVIGATION || experiment == Experiment.SUSPEND_RESUME;
-        boolean needsCharger = experiment == Experiment.SUSPEND_RESUME;
+        boolean needsStorage = experiment.needsStorage();
+        boolean needsCharger = experiment.needsCharger();
         double areaRadius = 0.06;
         double[] storage = null, charger = null;
         if (needsStorage) {
@@ -162,7 +162,7 @@ public final class WorldGenerator {
             j.raw("charger", "{ \"x\": " + num(charger[0]) + ", \"z\": " + num(charger[1]) + ", \"radius\": "
                     + num(areaRadius) + ", \"power\": 20 }");
         }
-        String battery = experiment == Experiment.SUSPEND_RESUME ? ", \"battery\": 560" : "";
+        String battery = needsCharger ? ", \"battery\": 560" : "";
         j.array("robots", List.of("{ \"name\": \"" + experiment.robot() + "\", \"model\": \"" + model.name() + "\", \"x\": "
                 + num(robot[0]) + ", \"z\": " + num(robot[1]) + ", \"heading\": " + num(heading) + battery + " }"));
         if (!events.isEmpty()) {
@@ -186,7 +186,7 @@ public final class WorldGenerator {
             kinds.add("move-cylinder-in-grip");
             kinds.add("knock");
         }
-        if (experiment == Experiment.SUSPEND_RESUME) {
+        if (experiment.needsCharger()) {
             kinds.add("drain");
         }
         List<String> events = new ArrayList<>();

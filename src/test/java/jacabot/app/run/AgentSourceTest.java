@@ -21,11 +21,12 @@ class AgentSourceTest {
         for (Experiment e : Experiment.values()) {
             AgentSource packaged = AgentSource.packaged(e, "agents/src/main/asl/" + e.id() + ".asl");
             AgentProgram program = packaged.parse(packaged.parser());
-            assertEquals("agents/src/main/asl/common/initial-phase.asl", program.plans().get(1).source().file(), e.id());
+            assertEquals("agents/src/main/asl/skills/initial-phase.asl", program.plans().get(1).source().file(), e.id());
             // the same program as the file in the repository (run from the repository, --agent)
             AgentSource file = AgentSource.file(ROOT.resolve("agents/src/main/asl/" + e.id() + ".asl"));
             assertEquals(texts(file.parse(file.parser())), texts(program), e.id());
-            assertEquals(2, packaged.sources().size(), "the agent and its initial phase");
+            long includes = packaged.text().lines().filter(l -> l.trim().startsWith("{ include(")).count();
+            assertEquals(1 + includes, packaged.sources().size(), "the agent and the skills it includes");
         }
     }
 
@@ -48,18 +49,18 @@ class AgentSourceTest {
         assertEquals(dir.resolve("mine/agent.asl") + ":2:1: error: included file 'common/start.asl' not found", e.getMessage());
     }
 
-    /** A copy of a packaged agent, edited elsewhere, still finds the shared initial phase (the installation's). */
+    /** A copy of a packaged agent, edited elsewhere, still finds the skills it includes (the installation's). */
     @Test
     void aCopiedAgentFallsBackOnThePackagedIncludes(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("my-agent.asl"), AgentSource.packaged(Experiment.NAVIGATION).text());
         AgentSource copy = AgentSource.file(dir.resolve("my-agent.asl"));
         AgentProgram program = copy.parse(copy.parser());
-        assertEquals("agents/src/main/asl/common/initial-phase.asl", program.plans().get(1).source().file());
+        assertEquals("agents/src/main/asl/skills/initial-phase.asl", program.plans().get(1).source().file());
         assertEquals(texts(AgentSource.packaged(Experiment.NAVIGATION).parse(copy.parser())), texts(program));
         // a file of its own beside it comes first
-        Files.createDirectories(dir.resolve("common"));
-        Files.writeString(dir.resolve("common/initial-phase.asl"), "+!init(Id) <- lookupArtifact(\"mine\", Id).\n");
-        assertEquals(dir.resolve("common/initial-phase.asl").toString(), copy.parse(copy.parser()).plans().get(1).source().file());
+        Files.createDirectories(dir.resolve("skills"));
+        Files.writeString(dir.resolve("skills/initial-phase.asl"), "+!init(Id) <- lookupArtifact(\"mine\", Id).\n");
+        assertEquals(dir.resolve("skills/initial-phase.asl").toString(), copy.parse(copy.parser()).plans().get(0).source().file());
     }
 
     @Test
@@ -73,7 +74,12 @@ class AgentSourceTest {
                 agentOnly++;
             }
         }
-        assertEquals(agentOnly + 5, withInclude.codeLines(), "the initial phase's 5 code lines");
+        int included = 0;
+        for (var source : packaged.sources().subList(1, packaged.sources().size())) {
+            included += (int) source.text().lines().map(String::trim)
+                    .filter(t -> !t.isEmpty() && !t.startsWith("//") && !t.startsWith("/*") && !t.startsWith("*")).count();
+        }
+        assertEquals(agentOnly + included, withInclude.codeLines(), "the agent's code lines and its skills'");
     }
 
     private static List<String> texts(AgentProgram p) {

@@ -53,8 +53,12 @@ class ProcessFaultsTest {
     private static Path project(Path dir, String arch) throws Exception {
         Files.copy(ROOT.resolve("agents/src/main/asl/obstacle-avoidance.asl"), dir.resolve("obstacle-avoidance.asl"));
         // and what it includes: jacabot run finds includes as Jason does, beside the file or on aslSourcePath
-        Files.createDirectories(dir.resolve("common"));
-        Files.copy(ROOT.resolve("agents/src/main/asl/common/initial-phase.asl"), dir.resolve("common/initial-phase.asl"));
+        Files.createDirectories(dir.resolve("skills"));
+        try (var skills = Files.list(ROOT.resolve("agents/src/main/asl/skills"))) {
+            for (Path skill : skills.toList()) {
+                Files.copy(skill, dir.resolve("skills").resolve(skill.getFileName()));
+            }
+        }
         Path mas = dir.resolve("robot.mas2j");
         Files.writeString(mas, "MAS robot {\n infrastructure: Local\n environment: jacabot.cartago.bridge.CartagoEnvironment\n"
                 + " agents:\n  robot obstacle-avoidance.asl agentArchClass " + arch + ";\n}\n");

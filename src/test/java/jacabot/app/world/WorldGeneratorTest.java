@@ -42,9 +42,9 @@ class WorldGeneratorTest {
                     case OBJECT_PICKING -> assertTrue(w.cylinders().size() >= 1, where);
                     default -> assertTrue(w.cylinders().size() >= 2, where);
                 }
-                boolean storage = e == Experiment.NAVIGATION || e == Experiment.SUSPEND_RESUME;
+                boolean storage = e == Experiment.NAVIGATION || e == Experiment.SUSPEND_RESUME || e == Experiment.TIDY_UP;
                 assertEquals(storage, w.storage() != null, where);
-                assertEquals(e == Experiment.SUSPEND_RESUME, w.charger() != null, where);
+                assertEquals(e == Experiment.SUSPEND_RESUME || e == Experiment.TIDY_UP, w.charger() != null, where);
                 for (AreaSpec a : new AreaSpec[] {w.storage(), w.charger()}) {
                     if (a == null) {
                         continue;

@@ -1,0 +1,30 @@
+// Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
+// needed, then park on the charger. Written from the skills of the four experiments alone: the
+// skills of suspend-resume, and two plans of its own that decide when the task is done.
+// From the world file: cylinders(N) (how many there are to store), storagePoint(X, Z),
+// storageRadius(R), charger(X, Z), arena(W, D).
+
+middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
+
+!start.
+
+{ include("skills/initial-phase.asl") }
+{ include("skills/recharge.asl") }
+{ include("skills/delivery.asl") }
+{ include("skills/avoidance.asl") }
+{ include("skills/picking.asl") }
+{ include("skills/far-sight.asl") }
+{ include("skills/recovery.asl") }
+{ include("skills/progress-watch.asl") }
+{ include("skills/sweep.asl") }
+{ include("skills/random-walk.asl") }
+
+// after each delivery and each recharge: is every cylinder stored?
+@doneDelivering -~delivered <- !parkIfDone.
+@doneRecharging -charging <- !parkIfDone.
+// parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
+@park
++!parkIfDone : stored(N) & cylinders(N) & not charging
+    <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; !goToCharger;
+       stopAcquireDistance; .print("Parked on the charger").
+@notDone +!parkIfDone.

@@ -1,0 +1,96 @@
+package jacabot.experiments;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The default agents are skills composed by include (Chapter 5 §2: a new skill is "new plans and/or
+ * beliefs"): no plan is written in two files, no tuning constant is declared in two files, every plan
+ * carries a label that says what it does, and no agent has two plans of one label. The agents as
+ * published (as-published/) are the thesis' listings and are exempt.
+ */
+class SkillLibraryTest {
+    private static final Path ASL = Path.of(System.getProperty("jacabot.projectDir", ".")).resolve("src/main/asl");
+
+    /** {@return every default agent file and skill file, each parsed on its own (without its includes)} */
+    private static Map<Path, AgentProgram> library() throws Exception {
+        var out = new TreeMap<Path, AgentProgram>();
+        try (Stream<Path> files = Files.walk(ASL)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".asl") && !ASL.relativize(p).startsWith("as-published")).toList()) {
+                out.put(ASL.relativize(f), new AslParser(SkillLibraryTest::noIncludes).parseFile(f));
+            }
+        }
+        return out;
+    }
+
+    private static jacabot.agent.parser.SourceResolver.Source noIncludes(String file,
+            jacabot.agent.parser.SourceResolver.Source from) {
+        return new jacabot.agent.parser.SourceResolver.Source(file, "", null);
+    }
+
+    /** A plan without its label: what two files would share if one copied the other. */
+    private static String text(Plan p) {
+        return p.trigger() + " : " + p.context() + " <- " + p.body();
+    }
+
+    @Test
+    void noPlanIsWrittenInTwoFiles() throws Exception {
+        var where = new TreeMap<String, Set<String>>();
+        library().forEach((file, program) -> program.plans().forEach(
+                p -> where.computeIfAbsent(text(p), k -> new TreeSet<>()).add(file.toString())));
+        var copies = where.entrySet().stream().filter(e -> e.getValue().size() > 1).map(e -> e.getValue() + " " + e.getKey()).toList();
+        assertEquals(List.of(), copies, "plans written in two files: include the skill that holds them");
+    }
+
+    /** A tuning constant: a fact with a number among its arguments, e.g. avoidTimeout(3000). */
+    @Test
+    void noConstantIsDeclaredInTwoFiles() throws Exception {
+        var where = new TreeMap<String, Set<String>>();
+        library().forEach((file, program) -> program.beliefs().stream()
+                .filter(b -> b instanceof Literal l && l.toString().matches("[^(]*\\(.*[(,\\[]\\s*-?[0-9].*"))
+                .forEach(b -> where.computeIfAbsent(b.toString(), k -> new TreeSet<>()).add(file.toString())));
+        var copies = where.entrySet().stream().filter(e -> e.getValue().size() > 1).map(e -> e.getValue() + " " + e.getKey()).toList();
+        assertEquals(List.of(), copies, "beliefs declared in two files: declare them once, in the skill that reads them");
+    }
+
+    @Test
+    void everyPlanHasALabelThatSaysWhatItDoes() throws Exception {
+        var unlabelled = new ArrayList<String>();
+        library().forEach((file, program) -> program.plans().stream()
+                .filter(p -> p.label() == null || p.label().functor().startsWith("p__"))
+                .forEach(p -> unlabelled.add(file + ":" + p.source().line() + " " + p.trigger())));
+        assertEquals(List.of(), unlabelled, "plans without a label");
+    }
+
+    /** Within one agent (its includes read in), a label names one plan, and every include is found. */
+    @Test
+    void everyAgentNamesEachPlanOnce() throws Exception {
+        for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up")) {
+            Path file = ASL.resolve(agent + ".asl");
+            if (!Files.exists(file)) {
+                continue;
+            }
+            AgentProgram program = new AslParser().parseFile(file);
+            var seen = new TreeSet<String>();
+            var twice = program.plans().stream().map(p -> p.label().functor()).filter(l -> !seen.add(l)).toList();
+            assertEquals(List.of(), twice, agent + ": labels used twice");
+            assertTrue(program.plans().stream().anyMatch(p -> p.source().file().contains("skills/")), agent + " includes its skills");
+        }
+    }
+}
