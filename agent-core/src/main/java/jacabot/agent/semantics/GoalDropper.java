@@ -30,11 +30,12 @@ public final class GoalDropper {
 
     private final String error, message;
 
+    /** As Jason's {@code .fail_goal}, the failure event carries no error annotation. */
     public GoalDropper(Agent ag, Mode mode, Literal goal) {
-        this(ag, mode, goal, "ia_failed", "");
+        this(ag, mode, goal, null, null);
     }
 
-    /** A dropper whose failure event carries {@code error(Error)} and {@code error_msg(Message)}. */
+    /** A dropper whose failure event carries {@code error(Error)} and {@code error_msg(Message)} (a null error: none). */
     public GoalDropper(Agent ag, Mode mode, Literal goal, String error, String message) {
         this.ag = ag;
         this.mode = mode;
@@ -77,6 +78,11 @@ public final class GoalDropper {
         if (si != null) {
             int r = dropIn(si);
             if (r > 1 || (r == 1 && mode == Mode.FAIL)) {
+                if (r == 2 && !si.isFinished()) {
+                    // Jason goes past the step that posted the dropped goal (its requeue after the
+                    // internal action), so the failure plan, once ended, ends the goals below it
+                    si.peek().removeCurrentStep();
+                }
                 ag.holdSelectedIntention();
             }
         }
@@ -132,10 +138,13 @@ public final class GoalDropper {
             gs.finished(dropped, null);
         }
         if (failEvent != null) {
-            Literal lit = (Literal) failEvent.trigger().literal();
-            List<Term> annots = List.of(Literal.of("error", Literal.atom(error)),
-                    Literal.of("error_msg", new StringTerm(message)));
-            ag.circumstance().addEvent(new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i));
+            if (error != null) {
+                Literal lit = (Literal) failEvent.trigger().literal();
+                List<Term> annots = List.of(Literal.of("error", Literal.atom(error)),
+                        Literal.of("error_msg", new StringTerm(message)));
+                failEvent = new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i);
+            }
+            ag.circumstance().addEvent(failEvent);
             return 2;
         }
         return 3;

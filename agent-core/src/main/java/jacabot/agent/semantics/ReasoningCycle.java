@@ -1,5 +1,6 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
@@ -358,8 +359,10 @@ final class ReasoningCycle {
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
                 // a failure plan finished: drop the intended means up to the goal that failed
                 im = i.peek();
+                // as Jason's, a caller that posted the goal through a variable (!G) ends here too
                 if (im.isFinished() || !(im.currentStep().kind() == BodyStep.Kind.ACHIEVE
-                        && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))) {
+                        && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))
+                        || im.currentStep().term() instanceof Var || im.currentStep().term() instanceof AnnotatedVar) {
                     im = i.pop();
                 }
                 while (!i.isFinished()
@@ -440,8 +443,11 @@ final class ReasoningCycle {
             Event failEvent = se.isExternal() ? externalFailureEvent(te) : findEventForFailure(se.intention(), te);
             notifyFailed(te, failEvent != null, se.intention(), null, annots);
             if (failEvent != null) {
-                Literal lit = (Literal) te.literal();
-                c.addEvent(withFailureAnnots(failEvent, new BodyStep(BodyStep.Kind.ACHIEVE, lit, null), annots));
+                // the goal's code_src and code_line are those of the step that posted it, as Jason's
+                Intention i = se.intention();
+                BodyStep caller = i == null || i.peek() == null ? null : i.peek().currentStep();
+                BodyStep goal = new BodyStep(BodyStep.Kind.ACHIEVE, te.literal(), caller == null ? null : caller.source());
+                c.addEvent(withFailureAnnots(failEvent, goal, annots));
                 return true;
             }
             // Jason's wording here differs from generateGoalDeletion's ("fail event"), and its dump of
