@@ -126,13 +126,15 @@ final class AstBuilder {
     Plan plan(PlanContext ctx) {
         Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
         Trigger trigger = trigger(ctx.trigger());
-        Term context = ctx.logExpr() == null ? null : noTrue(logExpr(ctx.logExpr()));
+        LogExprContext contextCtx = ctx.logExpr().stream().filter(e -> e != ctx.goalCondition).findFirst().orElse(null);
+        Term context = contextCtx == null ? null : noTrue(logExpr(contextCtx));
+        Term condition = ctx.goalCondition == null ? null : logExpr(ctx.goalCondition);
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : withoutLeadingTrue(planBody(ctx.planBody()));
-        // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
-        // or else its body
-        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
+        // Jason's line of a plan (its code_line) is its label's, or else where its context (or goal
+        // condition) starts, or else its body
+        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : !ctx.logExpr().isEmpty() ? ctx.logExpr(0)
                 : ctx.planBody() != null ? ctx.planBody() : ctx);
-        return new Plan(label, trigger, context, body, src);
+        return new Plan(label, trigger, context, body, src, condition);
     }
 
     /**

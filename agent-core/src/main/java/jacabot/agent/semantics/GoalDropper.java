@@ -6,16 +6,22 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 
-/** {@code .succeed_goal(g)} and {@code .fail_goal(g)}: end goal g wherever it is pursued. */
+/**
+ * {@code .succeed_goal(g)} and {@code .fail_goal(g)}: end goal g wherever it is pursued; and
+ * goals whose goal condition ({@code <:}) holds, ended as achieved (Jason's ClrSatInt).
+ */
 public final class GoalDropper {
     /** Whether the dropped goal counts as achieved or as failed. */
     public enum Mode { SUCCEED, FAIL }
 
     private final Agent ag;
     private final Mode mode;
+    /** The goal, or null when ending the goals whose condition holds. */
     private final Literal goal;
     private final Trigger trigger;
+    private final Predicate<IntendedMeans> intended;
 
     private static final Literal DROP_BY_FAIL_GOAL = Literal.atom("drop_by_fail_goal");
 
@@ -40,9 +46,39 @@ public final class GoalDropper {
         this.ag = ag;
         this.mode = mode;
         this.goal = goal;
-        this.trigger = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+        this.trigger = goal == null ? null : new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+        this.intended = goal == null ? null : im -> im.trigger().isAchieveGoal() && im.trigger().isAddition()
+                && ag.newUnifier().unifies(goal, im.trigger().literal());
         this.error = error;
         this.message = message;
+    }
+
+    private GoalDropper(Agent ag, Predicate<IntendedMeans> intended) {
+        this.ag = ag;
+        this.mode = Mode.SUCCEED;
+        this.goal = null;
+        this.trigger = null;
+        this.intended = intended;
+        this.error = null;
+        this.message = null;
+    }
+
+    /**
+     * Ends, as achieved, the goals whose goal condition holds, in every intention (Jason's
+     * ClrSatInt, at the start of each cycle's act stage while an intention has one): the intended
+     * means down to the lowest such goal are dropped, and the intention goes on below it.
+     */
+    static void dropSatisfied(Agent ag) {
+        int[] tested = {0};
+        new GoalDropper(ag, im -> {
+            if (im.hasGoalCondition() && !Literal.FALSE.equals(im.plan().goalCondition())) {
+                tested[0]++;
+            }
+            return im.goalConditionHolds(ag);
+        }).drop();
+        if (tested[0] == 0) {
+            ag.circumstance().resetIntentionsWithGoalCondition(); // none left (or only `false`): stop testing
+        }
     }
 
     public void drop() {
@@ -55,7 +91,7 @@ public final class GoalDropper {
                 if (r == 1) {
                     c.addRunningIntention(i);
                 }
-            } else if (e.trigger().isAchieveGoal() && e.trigger().isAddition()
+            } else if (goal != null && e.trigger().isAchieveGoal() && e.trigger().isAddition()
                     && ag.newUnifier().unifies(goal, i == null ? e.trigger().literal() : i.peek() == null
                             ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
@@ -115,7 +151,7 @@ public final class GoalDropper {
         if (i == null) {
             return 0;
         }
-        IntendedMeans im = i.dropGoal(goal, ag.newUnifier());
+        IntendedMeans im = i.dropGoal(intended);
         if (im == null) {
             return 0;
         }

@@ -282,6 +282,9 @@ final class ReasoningCycle {
 
     /** ProcAct: handle the feedback of one executed action; the cycle goes on to SelInt (as Jason). */
     private void applyProcAct() {
+        if (c.hasIntentionWithGoalCondition()) {
+            GoalDropper.dropSatisfied(ag);
+        }
         ActionExec a;
         while ((a = c.pollFeedbackAction()) != null) {
             Intention i = a.intention();
@@ -339,6 +342,8 @@ final class ReasoningCycle {
         }
     }
 
+    private static final Literal WAIT_GOAL_CONDITION = Literal.atom("wait_goal_condition");
+
     /** ClrInt: pops finished intended means, passing results back to the caller's step. */
     void applyClrInt(Intention i) {
         while (true) {
@@ -348,6 +353,13 @@ final class ReasoningCycle {
             }
             IntendedMeans im = i.peek();
             if (!im.isFinished()) {
+                return;
+            }
+            if (i.hasGoalCondition()) {
+                // Jason 3.2.0: once any plan of an intention holding a goal condition ends, the
+                // intention waits in PI until a goal condition of it holds
+                c.removeRunningIntention(i);
+                c.addPendingIntention(String.valueOf(i.id()), WAIT_GOAL_CONDITION, i);
                 return;
             }
             IntendedMeans topIM = i.pop();
