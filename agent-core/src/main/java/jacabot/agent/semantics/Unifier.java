@@ -208,7 +208,7 @@ public final class Unifier {
             return new LogExpr(e.op(), apply(e.left()), e.right() == null ? null : apply(e.right()));
         }
         if (t instanceof TriggerTerm tt) {
-            return new TriggerTerm(tt.trigger().withLiteral(apply(tt.trigger().literal())));
+            return new TriggerTerm(tt.trigger().withLiteral(apply(tt.trigger().literal())), tt.bare());
         }
         if (t instanceof BodyTerm b) {
             var steps = new ArrayList<BodyStep>(b.steps().size());
@@ -220,7 +220,7 @@ public final class Unifier {
         if (t instanceof PlanTerm p) {
             return new PlanTerm(p.label() == null ? null : apply(p.label()),
                     p.trigger().withLiteral(apply(p.trigger().literal())),
-                    p.context() == null ? null : apply(p.context()), apply(p.body()), p.source());
+                    p.context() == null ? null : apply(p.context()), apply(p.body()), p.source(), p.bare());
         }
         if (t instanceof AnnotatedVar av) {
             Term d = deref(av.var());
