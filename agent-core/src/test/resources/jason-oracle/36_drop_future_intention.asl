@@ -4,16 +4,16 @@
 
 +!start
    <- !!worker(1); !!worker(2); !!other;
-      .wait(50);
+      .wait(100);
       !drop(step(1)); .print(after_drop);
       !!self_case;
-      .wait(300);
+      .wait(1200);
       .print(end); .stopMAS.
 
 +!drop(G) <- .drop_future_intention(G); .print(dropped(G)).
 
-+!worker(N) <- .print(w(N)); .wait(100); !step(N); .print(w_end(N)).
-+!other <- .print(o); .wait(100); !step(3); .print(o_end).
++!worker(N) <- .print(w(N)); .wait(700); !step(N); .print(w_end(N)).
++!other <- .print(o); .wait(700); !step(3); .print(o_end).
 +!step(N) <- .print(step(N)).
 
 // the calling intention's own plan posts !z: it is dropped with it

@@ -28,6 +28,8 @@ final class ReasoningCycle {
     private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
+    /** Whether a cycle ran: the first reports the internal actions the agent does not know. */
+    private boolean started;
 
     ReasoningCycle(Agent ag) {
         this.ag = ag;
@@ -37,6 +39,10 @@ final class ReasoningCycle {
     }
 
     void run() {
+        if (!started) {
+            started = true;
+            UnknownActions.report(ag);
+        }
         sense();
         if (ag.isStopped()) {
             return;
