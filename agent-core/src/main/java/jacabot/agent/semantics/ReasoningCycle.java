@@ -39,11 +39,12 @@ final class ReasoningCycle {
     }
 
     void run() {
+        sense();
         if (!started) {
+            // after the first sense: an architecture adds its libraries' actions there (JaCa's cartago.*)
             started = true;
             UnknownActions.report(ag);
         }
-        sense();
         if (ag.isStopped()) {
             return;
         }

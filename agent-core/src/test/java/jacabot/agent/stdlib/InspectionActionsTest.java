@@ -89,4 +89,20 @@ class InspectionActionsTest {
         // the plans of w are written !s(N), which unifies with s(1) for both: Jason drops both
         assertEquals(List.of("dropped", "s(3)", "o"), a.printed());
     }
+
+    @Test
+    void unknownInternalActionsAreReportedBeforeTheFirstStepAndRunAsActions() {
+        var a = new TestAgent("""
+                !g.
+                +!g <- .print(a); lib.known(1); .unknown(2).
+                -!g[error(E)] <- .print(E).
+                """);
+        // a library's action added by the architecture before the agent runs is known
+        a.agent.addInternalAction("lib.known", (ag, un, args) -> true);
+        a.cycles(20);
+        assertEquals("[aslparser] [file:bob.asl:2] warning: The internal action class for '.unknown(2)' was not"
+                + " loaded! Error: java.lang.ClassNotFoundException: jason.stdlib.unknown", a.console.get(0));
+        assertEquals(List.of("a"), a.printed().subList(1, 2));
+        assertEquals(List.of(".unknown(2)"), a.actionNames(), "run as an environment action");
+    }
 }
