@@ -23,6 +23,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -35,6 +36,9 @@ import picocli.CommandLine.Spec;
                 "Console lines are printed as Jason prints them: [agent] text.",
                 "With a robot's middleware (agents/src/main/asl/*.mas2j) it listens for `jacabot controller`."})
 final class RunCommand implements Callable<Integer> {
+    /** Syntax errors say where they are and that they are errors: no second "error: " before them. */
+    private static final Pattern LOCATED = Pattern.compile("[^\\n]*:\\d+:\\d+: error: ");
+
     /** The belief the robot agents read their middleware's port from (their .asl holds the default). */
     static final String PORT_BELIEF = "middlewarePort";
 
@@ -114,6 +118,10 @@ final class RunCommand implements Callable<Integer> {
             e.lines().forEach(err::println); // file:line: message, one per error
             return 2;
         } catch (MasLauncher.UserError e) {
+            if (LOCATED.matcher(e.getMessage()).lookingAt()) {
+                err.println(e.getMessage()); // file:line:col: error: message, one line per error
+                return 2;
+            }
             throw new UserError(e.getMessage());
         }
         if (file.toString().endsWith(".mas2j")) {

@@ -128,4 +128,14 @@ class LauncherErrorsTest {
         long steps = Files.readAllLines(dir.resolve("link-log.txt")).stream().filter(l -> l.matches("step \\d+ t=.*")).count();
         assertEquals(50, steps, "one reading line per control step of 40 ms, streamed to the file");
     }
+
+    @Test
+    void aSyntaxErrorInAnAgentIsPrintedOnceWithItsPlace(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.asl");
+        Files.writeString(bad, "!g.\n+!g <- .print(a)).\n");
+        String[] r = CliRun.run("run", bad.toString());
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].startsWith(bad + ":2:17: error: unexpected ')'"), r[2]);
+        assertFalse(r[2].contains("error: " + bad), "no second 'error: ' before the place: " + r[2]);
+    }
 }

@@ -14,7 +14,8 @@ directive   : '{' begin='begin' literal '}' | '{' literal '}' ;
 belief      : literal ( ':-' logExpr )? '.' ;
 initialGoal : '!' literal '.' ;
 
-plan        : planLabel? trigger ( ':' logExpr )? ( '<-' planBody )? '.' ;
+// a goal condition (Jason 3.2's '<:'): the goal is achieved as soon as it holds
+plan        : planLabel? trigger ( ':' logExpr )? ( '<:' goalCondition=logExpr )? ( '<-' planBody )? '.' ;
 planLabel   : '@' ( literal | list ) ;
 trigger     : op=( '+' | '-' | '^' ) kind=( '!' | '?' )? literal ;
 

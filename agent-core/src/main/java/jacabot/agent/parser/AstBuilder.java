@@ -126,13 +126,15 @@ final class AstBuilder {
     Plan plan(PlanContext ctx) {
         Literal label = ctx.planLabel() == null ? null : planLabel(ctx.planLabel());
         Trigger trigger = trigger(ctx.trigger());
-        Term context = ctx.logExpr() == null ? null : noTrue(logExpr(ctx.logExpr()));
+        LogExprContext contextCtx = ctx.logExpr().stream().filter(e -> e != ctx.goalCondition).findFirst().orElse(null);
+        Term context = contextCtx == null ? null : noTrue(logExpr(contextCtx));
+        Term condition = ctx.goalCondition == null ? null : logExpr(ctx.goalCondition);
         BodyTerm body = ctx.planBody() == null ? BodyTerm.EMPTY : withoutLeadingTrue(planBody(ctx.planBody()));
-        // Jason's line of a plan (its code_line) is its label's, or else where its context starts,
-        // or else its body
-        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : ctx.logExpr() != null ? ctx.logExpr()
+        // Jason's line of a plan (its code_line) is its label's, or else where its context (or goal
+        // condition) starts, or else its body
+        SourceInfo src = where(ctx.planLabel() != null ? ctx.planLabel() : !ctx.logExpr().isEmpty() ? ctx.logExpr(0)
                 : ctx.planBody() != null ? ctx.planBody() : ctx);
-        return new Plan(label, trigger, context, body, src);
+        return new Plan(label, trigger, context, body, src, condition);
     }
 
     /**
@@ -180,147 +182,16 @@ final class AstBuilder {
         return new Trigger(op, type, literal(ctx.literal()));
     }
 
-    // ---- plan bodies ---------------------------------------------------------------------------
+    // ---- plan bodies (BodyBuilder) ------------------------------------------------------------
+
+    private final BodyBuilder bodies = new BodyBuilder(this);
 
     BodyTerm planBody(PlanBodyContext ctx) {
-        var steps = new ArrayList<BodyStep>();
-        for (BodyItemContext item : ctx.bodyItem()) {
-            if (item.statement() != null) {
-                steps.add(statement(item.statement()));
-            } else {
-                steps.addAll(fork(item.forkFormula()));
-            }
-        }
-        return new BodyTerm(steps);
+        return bodies.planBody(ctx);
     }
 
-    /** {@code B1 ||| B2} and {@code B1 |&| B2} as {@code .fork(or|and, {B1}, {B2})}; a lone operand stays as it is. */
-    private List<BodyStep> fork(ForkFormulaContext ctx) {
-        return forkStep("or", ctx.forkAnd().stream().map(this::forkAnd).toList(), ctx);
-    }
-
-    private List<BodyStep> forkAnd(ForkAndContext ctx) {
-        return forkStep("and", ctx.forkOperand().stream().map(this::forkOperand).toList(), ctx);
-    }
-
-    private List<BodyStep> forkStep(String kind, List<List<BodyStep>> operands, ParserRuleContext ctx) {
-        if (operands.size() == 1) {
-            return operands.get(0);
-        }
-        var branches = new ArrayList<Term>();
-        branches.add(Literal.atom(kind));
-        operands.forEach(o -> branches.add(new BodyTerm(o)));
-        return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), where(ctx)));
-    }
-
-    private List<BodyStep> forkOperand(ForkOperandContext ctx) {
-        return ctx.bodyFormula() != null ? List.of(bodyFormula(ctx.bodyFormula())) : planBody(ctx.planBody()).steps();
-    }
-
-    private BodyTerm block(BlockContext ctx) {
-        return ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
-    }
-
-    private BodyStep statement(StatementContext ctx) {
-        SourceInfo src = where(ctx);
-        if (ctx instanceof IfStatementContext s) {
-            return ifChain(s.logExpr(), s.block(), s.elifPart(), 0, s.elsePart(), src);
-        }
-        if (ctx instanceof WhileStatementContext s) {
-            return new BodyStep(Kind.INTERNAL_ACTION,
-                    Literal.of(".loop", logExpr(s.logExpr()), block(s.block())), src);
-        }
-        ForStatementContext s = (ForStatementContext) ctx;
-        return new BodyStep(Kind.INTERNAL_ACTION,
-                Literal.of(".foreach", logExpr(s.logExpr()), block(s.block())), src);
-    }
-
-    /** if/elif/else becomes nested {@code .if_then_else(Cond, {Then}, {Else})}, as in Jason. */
-    private BodyStep ifChain(LogExprContext cond, BlockContext then, List<ElifPartContext> elifs, int next,
-            ElsePartContext elsePart, SourceInfo src) {
-        BodyTerm elseBody = null;
-        if (next < elifs.size()) {
-            ElifPartContext e = elifs.get(next);
-            elseBody = new BodyTerm(List.of(ifChain(e.logExpr(), e.block(), elifs, next + 1, elsePart, where(e))));
-        } else if (elsePart != null) {
-            elseBody = block(elsePart.block());
-        }
-        Term c = logExpr(cond);
-        Literal ite = elseBody == null
-                ? Literal.of(".if_then_else", c, block(then))
-                : Literal.of(".if_then_else", c, block(then), elseBody);
-        return new BodyStep(Kind.INTERNAL_ACTION, ite, src);
-    }
-
-    private BodyStep bodyFormula(BodyFormulaContext ctx) {
-        SourceInfo src = where(ctx);
-        if (ctx instanceof AchieveContext c) {
-            return new BodyStep(Kind.ACHIEVE, literal(c.literal()), src);
-        }
-        if (ctx instanceof AchieveNewFocusContext c) {
-            return new BodyStep(Kind.ACHIEVE_NEW_FOCUS, literal(c.literal()), src);
-        }
-        if (ctx instanceof TestGoalContext c) {
-            return new BodyStep(Kind.TEST, logExpr(c.logExpr()), src);
-        }
-        if (ctx instanceof ActionOrConstraintContext c) {
-            Term t = logExpr(c.logExpr());
-            if (t instanceof Literal l) {
-                return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
-            }
-            if (t instanceof Var || t instanceof AnnotatedVar) {
-                return new BodyStep(Kind.ACTION, t, src);
-            }
-            if (t instanceof RelExpr || t instanceof LogExpr) {
-                return new BodyStep(Kind.CONSTRAINT, t, src);
-            }
-            errors.add(src, "'" + t + "' is not a valid plan body formula");
-            return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);
-        }
-        Kind kind;
-        LogExprContext operand;
-        if (ctx instanceof AddBelContext c) {
-            kind = Kind.ADD_BEL;
-            operand = c.logExpr();
-        } else if (ctx instanceof AddBelBeginContext c) {
-            kind = Kind.ADD_BEL;
-            operand = c.logExpr();
-        } else if (ctx instanceof AddBelEndContext c) {
-            kind = Kind.ADD_BEL_END;
-            operand = c.logExpr();
-        } else if (ctx instanceof AddBelNewFocusContext c) {
-            kind = Kind.ADD_BEL_NEW_FOCUS;
-            operand = c.logExpr();
-        } else if (ctx instanceof DelBelContext c) {
-            kind = Kind.DEL_BEL;
-            operand = c.logExpr();
-        } else if (ctx instanceof DelBelNewFocusContext c) {
-            kind = Kind.DEL_BEL_NEW_FOCUS;
-            operand = c.logExpr();
-        } else {
-            kind = Kind.DEL_ADD_BEL;
-            operand = ((DelAddBelContext) ctx).logExpr();
-        }
-        Term t = logExpr(operand);
-        if (t instanceof PlanTerm) {
-            // as Jason: +{plan} is .add_plan(plan, self, begin), +>{plan} adds at the end, -{plan} removes
-            if (kind == Kind.ADD_BEL || kind == Kind.ADD_BEL_END) {
-                Term at = Literal.atom(kind == Kind.ADD_BEL ? "begin" : "end");
-                return new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".add_plan", t, Literal.SELF, at), src);
-            }
-            if (kind == Kind.DEL_BEL) {
-                return new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".remove_plan", t), src);
-            }
-            errors.add(src, "wrong combination of operator '" + kind.prefix() + "' and a plan");
-            return new BodyStep(kind, Literal.TRUE, src);
-        }
-        if (!(t instanceof Literal) && !(t instanceof Var) && !(t instanceof jacabot.agent.syntax.AnnotatedVar)) {
-            errors.add(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
-            t = Literal.TRUE;
-        } else if (t instanceof Literal l && l.isInternalAction()) {
-            errors.add(src, "wrong combination of operator '" + kind.prefix() + "' and internal action " + l);
-        }
-        return new BodyStep(kind, t, src);
+    void error(SourceInfo where, String message) {
+        errors.add(where, message);
     }
 
     // ---- logical and arithmetic expressions ----------------------------------------------------

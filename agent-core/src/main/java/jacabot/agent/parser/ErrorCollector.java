@@ -2,15 +2,37 @@ package jacabot.agent.parser;
 
 import jacabot.agent.syntax.SourceInfo;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 
-/** The one funnel for lexer and parser errors: each becomes a {@link SyntaxError} with its position. */
+/**
+ * The one funnel for lexer and parser errors: each becomes a {@link SyntaxError} with its
+ * position, its message in AgentSpeak's terms ("expected an atom or a variable") instead of the
+ * grammar's token names.
+ */
 final class ErrorCollector extends BaseErrorListener {
     private final String file;
     private final List<SyntaxError> errors = new ArrayList<>();
+
+    /** What the grammar's named tokens are in AgentSpeak's words. */
+    private static final Map<String, String> WORDS = Map.ofEntries(Map.entry("ATOM", "an atom"),
+            Map.entry("VAR", "a variable"), Map.entry("UNNAMEDVAR", "a variable"),
+            Map.entry("NS_ATOM", "a namespace (ns::)"), Map.entry("NS_VAR", "a namespace (ns::)"),
+            Map.entry("NUMBER", "a number"), Map.entry("STRING", "a string"), Map.entry("RBRACE", "'}'"),
+            Map.entry("<EOF>", "the end of the file"), Map.entry("EOF", "the end of the file"),
+            Map.entry("ERROR_CHAR", "a character"));
+
+    private static final int MAX_EXPECTED = 12;
+    private static final Pattern INPUT = Pattern.compile("(?:mismatched|extraneous) input (.*) expecting (.*)");
+    private static final Pattern MISSING = Pattern.compile("missing (.*) at (.*)");
+    private static final Pattern NO_VIABLE = Pattern.compile("no viable alternative at input (.*)");
+    private static final Pattern LEXER = Pattern.compile("token recognition error at: (.*)");
 
     ErrorCollector(String file) {
         this.file = file;
@@ -19,7 +41,46 @@ final class ErrorCollector extends BaseErrorListener {
     @Override
     public void syntaxError(Recognizer<?, ?> recognizer, Object offendingSymbol, int line, int col,
             String msg, RecognitionException e) {
-        errors.add(new SyntaxError(new SourceInfo(file, line, col + 1), msg));
+        errors.add(new SyntaxError(new SourceInfo(file, line, col + 1), inAgentSpeak(msg, recognizer, e)));
+    }
+
+    /** {@return ANTLR's message said with AgentSpeak's words} */
+    static String inAgentSpeak(String msg, Recognizer<?, ?> recognizer, RecognitionException e) {
+        Matcher m = INPUT.matcher(msg);
+        if (m.matches()) {
+            return "unexpected " + m.group(1) + ", expected " + expected(m.group(2));
+        }
+        m = MISSING.matcher(msg);
+        if (m.matches()) {
+            return "expected " + expected(m.group(1)) + " before " + m.group(2);
+        }
+        m = NO_VIABLE.matcher(msg);
+        if (m.matches()) {
+            // what may come there, when that says something (at a term's start, nearly anything may)
+            var may = e == null ? null : e.getExpectedTokens();
+            String more = may == null || may.isNil() || may.size() > MAX_EXPECTED ? ""
+                    : ", expected " + expected(may.toString(recognizer.getVocabulary()));
+            return "cannot read " + m.group(1) + " here" + more;
+        }
+        m = LEXER.matcher(msg);
+        if (m.matches()) {
+            return "unexpected character " + m.group(1);
+        }
+        return msg;
+    }
+
+    /** {@code {NS_ATOM, NS_VAR, '('}} as "a namespace (ns::) or '('". */
+    private static String expected(String tokens) {
+        String inner = tokens.startsWith("{") && tokens.endsWith("}") ? tokens.substring(1, tokens.length() - 1) : tokens;
+        var words = new LinkedHashSet<String>();
+        for (String t : inner.split(",\\s*")) {
+            words.add(WORDS.getOrDefault(t.trim(), t.trim()));
+        }
+        var list = new ArrayList<>(words);
+        if (list.size() == 1) {
+            return list.get(0);
+        }
+        return String.join(", ", list.subList(0, list.size() - 1)) + " or " + list.get(list.size() - 1);
     }
 
     void add(SourceInfo where, String message) {

@@ -62,7 +62,7 @@ final class GoalPatterns {
                 // the goal is achieved when believed: test it at the end of the plan
                 var steps = new ArrayList<BodyStep>(p.body().steps());
                 steps.add(new BodyStep(BodyStep.Kind.TEST, planGoal, p.source()));
-                p = new Plan(p.label(), p.trigger(), p.context(), new BodyTerm(steps), p.source());
+                p = new Plan(p.label(), p.trigger(), p.context(), new BodyTerm(steps), p.source(), p.goalCondition());
             }
             out.add(p);
         }

@@ -108,10 +108,8 @@ final class BodyExecutor {
     private void internalAction(Intention i, IntendedMeans im, BodyStep step, Literal body) {
         InternalAction ia = ag.internalAction(body.functor());
         if (ia == null) {
-            String msg = "The internal action '" + body.functor() + "' is unknown (" + step.source() + ").";
-            if (!rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ia_failed", msg))) {
-                ag.warn(msg);
-            }
+            // as Jason, which reported it at load: an action for the environment
+            action(i, im, body);
             return;
         }
         boolean ok;

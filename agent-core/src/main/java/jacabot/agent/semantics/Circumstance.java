@@ -177,9 +177,26 @@ public final class Circumstance {
         } else {
             running.offer(i);
         }
+        if (i.hasGoalCondition()) {
+            intentionsWithGoalCondition++;
+        }
         for (CircumstanceListener l : listeners) {
             l.intentionAdded(i);
         }
+    }
+
+    /**
+     * Intentions with a goal condition added to I since the last look found none (Jason's count):
+     * the cycle tests goal conditions only while some may be pending.
+     */
+    private int intentionsWithGoalCondition;
+
+    boolean hasIntentionWithGoalCondition() {
+        return intentionsWithGoalCondition > 0;
+    }
+
+    void resetIntentionsWithGoalCondition() {
+        intentionsWithGoalCondition = 0;
     }
 
     Intention pollRunningIntention() {

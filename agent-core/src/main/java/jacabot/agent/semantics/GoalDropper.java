@@ -6,16 +6,22 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 
-/** {@code .succeed_goal(g)} and {@code .fail_goal(g)}: end goal g wherever it is pursued. */
+/**
+ * {@code .succeed_goal(g)} and {@code .fail_goal(g)}: end goal g wherever it is pursued; and
+ * goals whose goal condition ({@code <:}) holds, ended as achieved (Jason's ClrSatInt).
+ */
 public final class GoalDropper {
     /** Whether the dropped goal counts as achieved or as failed. */
     public enum Mode { SUCCEED, FAIL }
 
     private final Agent ag;
     private final Mode mode;
+    /** The goal, or null when ending the goals whose condition holds. */
     private final Literal goal;
     private final Trigger trigger;
+    private final Predicate<IntendedMeans> intended;
 
     private static final Literal DROP_BY_FAIL_GOAL = Literal.atom("drop_by_fail_goal");
 
@@ -30,18 +36,49 @@ public final class GoalDropper {
 
     private final String error, message;
 
+    /** As Jason's {@code .fail_goal}, the failure event carries no error annotation. */
     public GoalDropper(Agent ag, Mode mode, Literal goal) {
-        this(ag, mode, goal, "ia_failed", "");
+        this(ag, mode, goal, null, null);
     }
 
-    /** A dropper whose failure event carries {@code error(Error)} and {@code error_msg(Message)}. */
+    /** A dropper whose failure event carries {@code error(Error)} and {@code error_msg(Message)} (a null error: none). */
     public GoalDropper(Agent ag, Mode mode, Literal goal, String error, String message) {
         this.ag = ag;
         this.mode = mode;
         this.goal = goal;
-        this.trigger = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+        this.trigger = goal == null ? null : new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE, goal);
+        this.intended = goal == null ? null : im -> im.trigger().isAchieveGoal() && im.trigger().isAddition()
+                && ag.newUnifier().unifies(goal, im.trigger().literal());
         this.error = error;
         this.message = message;
+    }
+
+    private GoalDropper(Agent ag, Predicate<IntendedMeans> intended) {
+        this.ag = ag;
+        this.mode = Mode.SUCCEED;
+        this.goal = null;
+        this.trigger = null;
+        this.intended = intended;
+        this.error = null;
+        this.message = null;
+    }
+
+    /**
+     * Ends, as achieved, the goals whose goal condition holds, in every intention (Jason's
+     * ClrSatInt, at the start of each cycle's act stage while an intention has one): the intended
+     * means down to the lowest such goal are dropped, and the intention goes on below it.
+     */
+    static void dropSatisfied(Agent ag) {
+        int[] tested = {0};
+        new GoalDropper(ag, im -> {
+            if (im.hasGoalCondition() && !Literal.FALSE.equals(im.plan().goalCondition())) {
+                tested[0]++;
+            }
+            return im.goalConditionHolds(ag);
+        }).drop();
+        if (tested[0] == 0) {
+            ag.circumstance().resetIntentionsWithGoalCondition(); // none left (or only `false`): stop testing
+        }
     }
 
     public void drop() {
@@ -54,7 +91,7 @@ public final class GoalDropper {
                 if (r == 1) {
                     c.addRunningIntention(i);
                 }
-            } else if (e.trigger().isAchieveGoal() && e.trigger().isAddition()
+            } else if (goal != null && e.trigger().isAchieveGoal() && e.trigger().isAddition()
                     && ag.newUnifier().unifies(goal, i == null ? e.trigger().literal() : i.peek() == null
                             ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
@@ -77,6 +114,11 @@ public final class GoalDropper {
         if (si != null) {
             int r = dropIn(si);
             if (r > 1 || (r == 1 && mode == Mode.FAIL)) {
+                if (r == 2 && !si.isFinished()) {
+                    // Jason goes past the step that posted the dropped goal (its requeue after the
+                    // internal action), so the failure plan, once ended, ends the goals below it
+                    si.peek().removeCurrentStep();
+                }
                 ag.holdSelectedIntention();
             }
         }
@@ -109,7 +151,7 @@ public final class GoalDropper {
         if (i == null) {
             return 0;
         }
-        IntendedMeans im = i.dropGoal(goal, ag.newUnifier());
+        IntendedMeans im = i.dropGoal(intended);
         if (im == null) {
             return 0;
         }
@@ -132,10 +174,13 @@ public final class GoalDropper {
             gs.finished(dropped, null);
         }
         if (failEvent != null) {
-            Literal lit = (Literal) failEvent.trigger().literal();
-            List<Term> annots = List.of(Literal.of("error", Literal.atom(error)),
-                    Literal.of("error_msg", new StringTerm(message)));
-            ag.circumstance().addEvent(new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i));
+            if (error != null) {
+                Literal lit = (Literal) failEvent.trigger().literal();
+                List<Term> annots = List.of(Literal.of("error", Literal.atom(error)),
+                        Literal.of("error_msg", new StringTerm(message)));
+                failEvent = new Event(failEvent.trigger().withLiteral(lit.addAnnots(annots)), i);
+            }
+            ag.circumstance().addEvent(failEvent);
             return 2;
         }
         return 3;

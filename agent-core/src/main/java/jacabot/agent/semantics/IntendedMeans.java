@@ -25,6 +25,8 @@ public final class IntendedMeans {
     private StepList loopAt;
     private List<BodyStep> loopBody;
     private StepList loopTurn;
+    /** The unifier the plan was chosen with, kept for its goal condition (Jason's triggerUnif), or null. */
+    private final Unifier chosenWith;
 
     /** An intended means whose plan's steps and atomic option are known (see {@link Start}). */
     private IntendedMeans(Plan plan, Trigger trigger, Unifier unif, StepList steps, boolean atomic) {
@@ -33,6 +35,20 @@ public final class IntendedMeans {
         this.trigger = trigger;
         this.unif = unif;
         this.steps = steps;
+        this.chosenWith = plan.goalCondition() == null ? null : unif.copy();
+    }
+
+    /** {@return whether the plan has a goal condition ({@code <:})} */
+    public boolean hasGoalCondition() {
+        return chosenWith != null;
+    }
+
+    /**
+     * {@return whether the plan's goal condition holds, solved in the unifier the plan was chosen
+     * with (as Jason's), so that later bindings of the body do not count; false without one}
+     */
+    boolean goalConditionHolds(Agent ag) {
+        return chosenWith != null && ag.solver().believes(plan.goalCondition(), chosenWith.copy());
     }
 
     /**

@@ -4,6 +4,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayDeque;
 import java.util.Iterator;
+import java.util.function.Predicate;
 
 /** A stack of intended means, the top being the plan that runs. */
 public final class Intention implements Iterable<IntendedMeans> {
@@ -12,6 +13,8 @@ public final class Intention implements Iterable<IntendedMeans> {
     /** The top of the stack, or null: asked several times in every cycle. */
     private IntendedMeans top;
     private int atomicCount;
+    /** How many intended means have a goal condition (Jason's imWithGoalCondition). */
+    private int goalConditions;
     private boolean suspended;
 
     Intention(int id) {
@@ -39,6 +42,9 @@ public final class Intention implements Iterable<IntendedMeans> {
         if (im.isAtomic()) {
             atomicCount++;
         }
+        if (im.hasGoalCondition()) {
+            goalConditions++;
+        }
     }
 
     public IntendedMeans pop() {
@@ -46,6 +52,9 @@ public final class Intention implements Iterable<IntendedMeans> {
         top = stack.peek();
         if (im.isAtomic()) {
             atomicCount--;
+        }
+        if (im.hasGoalCondition()) {
+            goalConditions--;
         }
         return im;
     }
@@ -64,6 +73,11 @@ public final class Intention implements Iterable<IntendedMeans> {
 
     public boolean isAtomic() {
         return atomicCount > 0;
+    }
+
+    /** {@return whether some intended means of the stack has a goal condition} */
+    public boolean hasGoalCondition() {
+        return goalConditions > 0;
     }
 
     public boolean isSuspended() {
@@ -101,23 +115,31 @@ public final class Intention implements Iterable<IntendedMeans> {
      * many times as the goal occurs. {@return the last removed intended means for g, or null}
      */
     public IntendedMeans dropGoal(Literal g, Unifier u) {
+        return dropGoal(im -> im.trigger().isAchieveGoal() && im.trigger().isAddition()
+                && u.copy().unifies(g, im.trigger().literal()));
+    }
+
+    /**
+     * Removes the intended means down to and including the topmost one that passes the test, as
+     * long as one does. {@return the last removed intended means that passed, or null}
+     */
+    public IntendedMeans dropGoal(Predicate<IntendedMeans> test) {
         IntendedMeans result = null;
-        IntendedMeans target = findGoal(g, u);
+        IntendedMeans target = find(test);
         while (target != null) {
             result = target;
             while (peek() != target) {
                 pop();
             }
             pop();
-            target = findGoal(g, u);
+            target = find(test);
         }
         return result;
     }
 
-    private IntendedMeans findGoal(Literal g, Unifier u) {
+    private IntendedMeans find(Predicate<IntendedMeans> test) {
         for (IntendedMeans im : stack) {
-            Trigger t = im.trigger();
-            if (t.isAchieveGoal() && t.isAddition() && u.copy().unifies(g, t.literal())) {
+            if (test.test(im)) {
                 return im;
             }
         }

@@ -1,5 +1,6 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
@@ -27,6 +28,8 @@ final class ReasoningCycle {
     private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
+    /** Whether a cycle ran: the first reports the internal actions the agent does not know. */
+    private boolean started;
 
     ReasoningCycle(Agent ag) {
         this.ag = ag;
@@ -37,6 +40,11 @@ final class ReasoningCycle {
 
     void run() {
         sense();
+        if (!started) {
+            // after the first sense: an architecture adds its libraries' actions there (JaCa's cartago.*)
+            started = true;
+            UnknownActions.report(ag);
+        }
         if (ag.isStopped()) {
             return;
         }
@@ -281,6 +289,9 @@ final class ReasoningCycle {
 
     /** ProcAct: handle the feedback of one executed action; the cycle goes on to SelInt (as Jason). */
     private void applyProcAct() {
+        if (c.hasIntentionWithGoalCondition()) {
+            GoalDropper.dropSatisfied(ag);
+        }
         ActionExec a;
         while ((a = c.pollFeedbackAction()) != null) {
             Intention i = a.intention();
@@ -338,6 +349,8 @@ final class ReasoningCycle {
         }
     }
 
+    private static final Literal WAIT_GOAL_CONDITION = Literal.atom("wait_goal_condition");
+
     /** ClrInt: pops finished intended means, passing results back to the caller's step. */
     void applyClrInt(Intention i) {
         while (true) {
@@ -349,6 +362,13 @@ final class ReasoningCycle {
             if (!im.isFinished()) {
                 return;
             }
+            if (i.hasGoalCondition()) {
+                // Jason 3.2.0: once any plan of an intention holding a goal condition ends, the
+                // intention waits in PI until a goal condition of it holds
+                c.removeRunningIntention(i);
+                c.addPendingIntention(String.valueOf(i.id()), WAIT_GOAL_CONDITION, i);
+                return;
+            }
             IntendedMeans topIM = i.pop();
             Trigger topTrigger = topIM.trigger();
             Term topLiteral = topTrigger.literal();
@@ -358,8 +378,10 @@ final class ReasoningCycle {
             if (topTrigger.isGoal() && !topTrigger.isAddition() && !i.isFinished()) {
                 // a failure plan finished: drop the intended means up to the goal that failed
                 im = i.peek();
+                // as Jason's, a caller that posted the goal through a variable (!G) ends here too
                 if (im.isFinished() || !(im.currentStep().kind() == BodyStep.Kind.ACHIEVE
-                        && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))) {
+                        && im.unifier().copy().unifies(im.currentStep().term(), topLiteral))
+                        || im.currentStep().term() instanceof Var || im.currentStep().term() instanceof AnnotatedVar) {
                     im = i.pop();
                 }
                 while (!i.isFinished()
@@ -440,8 +462,11 @@ final class ReasoningCycle {
             Event failEvent = se.isExternal() ? externalFailureEvent(te) : findEventForFailure(se.intention(), te);
             notifyFailed(te, failEvent != null, se.intention(), null, annots);
             if (failEvent != null) {
-                Literal lit = (Literal) te.literal();
-                c.addEvent(withFailureAnnots(failEvent, new BodyStep(BodyStep.Kind.ACHIEVE, lit, null), annots));
+                // the goal's code_src and code_line are those of the step that posted it, as Jason's
+                Intention i = se.intention();
+                BodyStep caller = i == null || i.peek() == null ? null : i.peek().currentStep();
+                BodyStep goal = new BodyStep(BodyStep.Kind.ACHIEVE, te.literal(), caller == null ? null : caller.source());
+                c.addEvent(withFailureAnnots(failEvent, goal, annots));
                 return true;
             }
             // Jason's wording here differs from generateGoalDeletion's ("fail event"), and its dump of

@@ -91,22 +91,21 @@ public final class Solver {
         return true;
     }
 
-    /** {@return the solutions of a formula, each an extension of {@code u} (never changed)} */
-    public Iterator<Unifier> solve(Term formula, Unifier u) {
-        return new Solutions(new Proof(this, formula, u.copy(), 0));
-    }
-
     /**
-     * {@return the solutions of a formula one by one, each given into a unifier} As
-     * {@link #solve}, without a unifier made for each solution (a {@code for} loop's turns).
+     * {@return the solutions of a formula, each an extension of {@code u} (never changed)} Taken
+     * as an iterator, each solution is a unifier of its own; {@link Answers#next(Unifier)} gives
+     * them into one unifier instead (a {@code for} loop's turns), without one made per solution.
+     * One object is read one way only.
      */
-    public Answers answers(Term formula, Unifier u) {
+    public Answers solve(Term formula, Unifier u) {
         return new Answers(new Proof(this, formula, u.copy(), 0));
     }
 
-    /** The solutions of a proof, given one by one into a unifier. */
-    public static final class Answers {
+    /** The solutions of a proof: as unifiers of their own, or given one by one into a unifier. */
+    public static final class Answers implements Iterator<Unifier> {
         private final Proof proof;
+        private Unifier next;
+        private boolean over;
 
         Answers(Proof proof) {
             this.proof = proof;
@@ -119,17 +118,6 @@ public final class Solver {
             }
             proof.solutionInto(into);
             return true;
-        }
-    }
-
-    /** The solutions of a proof, each a unifier of its own. */
-    private static final class Solutions implements Iterator<Unifier> {
-        private final Proof proof;
-        private Unifier next;
-        private boolean over;
-
-        Solutions(Proof proof) {
-            this.proof = proof;
         }
 
         @Override

@@ -146,153 +146,15 @@ public final class Unifier {
         bindings.remove(v);
     }
 
-    // ---- application -------------------------------------------------------------------------
+    // ---- application (Substitution) -----------------------------------------------------------
 
     /** Replaces bound variables and evaluates arithmetic whose operands are all bound. */
     public Term apply(Term t) {
-        if (t instanceof Var v) {
-            Term d = deref(v);
-            return d instanceof Var || d instanceof NumberTerm ? d : apply(d);
-        }
-        if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
-            return t; // before the long list of compound kinds below
-        }
-        if (t instanceof Literal l) {
-            if (!needsApply(l)) {
-                return l;
-            }
-            // a tail bound to a list brings its elements into the annotations (the constructor's work)
-            return new Literal(l.functor(), applyAll(l.args()), applyAll(l.annots()), l.negated(), false,
-                    l.ns() == null ? null : apply(l.ns()), l.tail() == null ? null : apply(l.tail()));
-        }
-        if (t instanceof ListTerm.Cons) {
-            if (!needsApply(t)) {
-                return t;
-            }
-            var items = new ArrayList<Term>();
-            Term x = t;
-            while (x instanceof ListTerm.Cons c) {
-                items.add(apply(c.head()));
-                x = c.tail();
-                if (x instanceof Var) {
-                    x = deref(x);
-                }
-            }
-            return ListTerm.of(items, x instanceof ListTerm ? x : apply(x));
-        }
-        if (t instanceof ArithExpr e) {
-            Term l = apply(e.left());
-            Term r = e.right() == null ? null : apply(e.right());
-            if (l instanceof NumberTerm nl && (r == null || r instanceof NumberTerm)) {
-                if (r == null) {
-                    return e.op() == ArithExpr.Op.MINUS ? new NumberTerm(-nl.value()) : nl;
-                }
-                return new NumberTerm(e.op().apply(nl.value(), ((NumberTerm) r).value()));
-            }
-            return new ArithExpr(e.op(), l, r);
-        }
-        if (t instanceof ArithFunction f) {
-            var applied = new ArithFunction(f.name(), applyAll(f.args()));
-            if (evaluator != null) {
-                Term value = evaluator.evaluate(applied, this);
-                if (value != null) {
-                    return value;
-                }
-            }
-            return applied;
-        }
-        if (t instanceof RelExpr r) {
-            return new RelExpr(r.op(), apply(r.left()), apply(r.right()));
-        }
-        if (t instanceof LogExpr e) {
-            return new LogExpr(e.op(), apply(e.left()), e.right() == null ? null : apply(e.right()));
-        }
-        if (t instanceof TriggerTerm tt) {
-            return new TriggerTerm(tt.trigger().withLiteral(apply(tt.trigger().literal())));
-        }
-        if (t instanceof BodyTerm b) {
-            var steps = new ArrayList<BodyStep>(b.steps().size());
-            for (BodyStep s : b.steps()) {
-                steps.add(s.withTerm(apply(s.term())));
-            }
-            return new BodyTerm(steps, b.braced());
-        }
-        if (t instanceof PlanTerm p) {
-            return new PlanTerm(p.label() == null ? null : apply(p.label()),
-                    p.trigger().withLiteral(apply(p.trigger().literal())),
-                    p.context() == null ? null : apply(p.context()), apply(p.body()), p.source());
-        }
-        if (t instanceof AnnotatedVar av) {
-            Term d = deref(av.var());
-            List<Term> annots = applyAll(av.annots());
-            Term ns = av.ns() == null ? null : apply(av.ns());
-            if (d instanceof Var dv) {
-                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(av.tail()), ns);
-            }
-            return av.wrap(apply(d), annots, ns);
-        }
-        return t;
-    }
-
-    /**
-     * {@return whether applying this unifier changes the term: it has a bound variable or
-     * arithmetic} A term whose variables are all free comes back as it is, not copied.
-     */
-    private boolean needsApply(Term t) {
-        if (t instanceof Var v) {
-            return bindings.get(v) != null;
-        }
-        if (t instanceof NumberTerm || t instanceof jacabot.agent.syntax.StringTerm) {
-            return false;
-        }
-        if (t instanceof Literal l) {
-            if (l.ns() instanceof Var nv && bindings.get(nv) != null || l.tail() != null && needsApply(l.tail())) {
-                return true;
-            }
-            List<Term> args = l.args();
-            for (int i = 0, n = args.size(); i < n; i++) {
-                if (needsApply(args.get(i))) {
-                    return true;
-                }
-            }
-            List<Term> annots = l.annots();
-            for (int i = 0, n = annots.size(); i < n; i++) {
-                if (needsApply(annots.get(i))) {
-                    return true;
-                }
-            }
-            return false;
-        }
-        if (t instanceof ListTerm) {
-            Term x = t;
-            while (x instanceof ListTerm.Cons c) {
-                if (needsApply(c.head())) {
-                    return true;
-                }
-                x = c.tail();
-            }
-            return x instanceof Var v ? bindings.get(v) != null : !(x instanceof ListTerm.Empty);
-        }
-        return !(t instanceof jacabot.agent.syntax.ObjectTerm);
+        return Substitution.apply(this, t);
     }
 
     List<Term> applyAll(List<Term> terms) {
-        // one and two terms (most literals) without the array List.of(array) would copy
-        switch (terms.size()) {
-            case 0:
-                return terms;
-            case 1:
-                return List.of(apply(terms.get(0)));
-            case 2:
-                return List.of(apply(terms.get(0)), apply(terms.get(1)));
-            default:
-                break;
-        }
-        Term[] out = new Term[terms.size()];
-        for (int i = 0; i < out.length; i++) {
-            out[i] = apply(terms.get(i));
-        }
-        return List.of(out);
+        return Substitution.applyAll(this, terms);
     }
 
     // ---- unification -------------------------------------------------------------------------

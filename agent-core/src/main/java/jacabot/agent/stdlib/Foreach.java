@@ -33,7 +33,7 @@ final class Foreach extends DefaultInternalAction {
         Unifier backup;
         if (args.length == 2) {
             backup = un.copy();
-            answers = ag.solver().answers(args[0], backup);
+            answers = ag.solver().solve(args[0], backup);
             // each solution is given into the loop's unifier, with no unifier of its own
             if (!answers.next(un)) {
                 return true;

@@ -111,6 +111,10 @@ public final class Stdlib {
         put(map, new Random());
         put(map, new Range());
         put(map, new RelevantPlans());
+        put(map, new RelevantPlan());
+        put(map, new GetSrcInfo());
+        put(map, new SaveAgent());
+        put(map, new DropFutureIntention());
         put(map, new RemovePlan());
         put(map, new RemoveSourceAnnot());
         put(map, CopyTerm.renameApart());

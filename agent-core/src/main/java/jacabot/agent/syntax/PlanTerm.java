@@ -10,8 +10,10 @@ import java.util.function.Consumer;
  * @param label   null, a literal or a variable
  * @param context null (true), or a formula, or a variable
  * @param body    a {@link BodyTerm} or a variable
+ * @param bare    whether it prints as Jason prints a plan, {@code @L +!g <- B.}, not in braces
+ *                (the plan {@code .relevant_plan} gives)
  */
-public record PlanTerm(Term label, Trigger trigger, Term context, Term body, SourceInfo source) implements Term {
+public record PlanTerm(Term label, Trigger trigger, Term context, Term body, SourceInfo source, boolean bare) implements Term {
 
     /** A plan's body taken out of it ({@code {@L +!g <- B}}) prints bare, as Jason's: {@code a; b}. */
     public PlanTerm {
@@ -20,8 +22,17 @@ public record PlanTerm(Term label, Trigger trigger, Term context, Term body, Sou
         }
     }
 
+    public PlanTerm(Term label, Trigger trigger, Term context, Term body, SourceInfo source) {
+        this(label, trigger, context, body, source, false);
+    }
+
     public PlanTerm(Plan p) {
         this(p.label(), p.trigger(), p.context(), p.body(), p.source());
+    }
+
+    /** {@return the same plan term, printed as a plan or in braces} */
+    public PlanTerm printedBare(boolean asPlan) {
+        return new PlanTerm(label, trigger, context, body, source, asPlan);
     }
 
     /** {@return the plan this term describes} @throws IllegalArgumentException when a part is unbound */
@@ -70,7 +81,7 @@ public record PlanTerm(Term label, Trigger trigger, Term context, Term body, Sou
 
     @Override
     public String toString() {
-        var out = new StringBuilder("{ ");
+        var out = new StringBuilder(bare ? "" : "{ ");
         if (label != null) {
             out.append('@').append(label).append(' ');
         }
@@ -85,7 +96,7 @@ public record PlanTerm(Term label, Trigger trigger, Term context, Term body, Sou
         } else {
             out.append(" <- ").append(body);
         }
-        return out.append(" }").toString();
+        return out.append(bare ? "." : " }").toString();
     }
 
     /** Plans as terms are equal by their parts (a missing context is {@code true}), wherever written. */

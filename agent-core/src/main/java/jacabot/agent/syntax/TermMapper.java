@@ -75,7 +75,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
 
     @Override
     public Term visitTrigger(TriggerTerm tt) {
-        return new TriggerTerm(tt.trigger().withLiteral(map(tt.trigger().literal())));
+        return new TriggerTerm(tt.trigger().withLiteral(map(tt.trigger().literal())), tt.bare());
     }
 
     @Override
@@ -101,7 +101,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
     @Override
     public Term visitPlan(PlanTerm p) {
         return new PlanTerm(p.label() == null ? null : map(p.label()), p.trigger().withLiteral(map(p.trigger().literal())),
-                p.context() == null ? null : map(p.context()), map(p.body()), p.source());
+                p.context() == null ? null : map(p.context()), map(p.body()), p.source(), p.bare());
     }
 
     @Override

@@ -2,8 +2,15 @@ package jacabot.agent.syntax;
 
 import java.util.function.Consumer;
 
-/** A trigger used as a term, as in {@code .wait({+b})}. */
-public record TriggerTerm(Trigger trigger) implements Term {
+/**
+ * A trigger used as a term, as in {@code .wait({+b})}; a bare one prints without braces, as
+ * Jason prints a plan's trigger ({@code .relevant_plan(T, P)}).
+ */
+public record TriggerTerm(Trigger trigger, boolean bare) implements Term {
+    public TriggerTerm(Trigger trigger) {
+        this(trigger, false);
+    }
+
     @Override
     public boolean isGround() {
         return trigger.literal().isGround();
@@ -16,11 +23,22 @@ public record TriggerTerm(Trigger trigger) implements Term {
 
     @Override
     public String toString() {
-        return "{ " + trigger + " }";
+        return bare ? trigger.toString() : "{ " + trigger + " }";
     }
 
     @Override
     public <R> R accept(TermVisitor<R> v) {
         return v.visitTrigger(this);
+    }
+
+    /** Equal by the trigger, printed bare or not. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof TriggerTerm t && t.trigger.equals(trigger);
+    }
+
+    @Override
+    public int hashCode() {
+        return trigger.hashCode();
     }
 }

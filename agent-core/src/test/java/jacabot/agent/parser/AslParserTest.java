@@ -62,6 +62,25 @@ class AslParserTest {
     }
 
     @Test
+    void syntaxErrorsSayWhatWasExpectedInAgentSpeaksWords() {
+        var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- !ns::.\n", "ns.asl"));
+        String msg = e.errors().get(0).message();
+        assertTrue(msg.contains("an atom or a variable"), msg);
+        assertTrue(!msg.contains("NS_ATOM") && !msg.contains("VAR,") && !msg.contains("expecting"), msg);
+        var extra = assertThrows(AslSyntaxException.class, () -> parser.parse("b(1)).\n", "x.asl"));
+        assertEquals("unexpected ')', expected ':-' or '.'", extra.errors().get(0).message());
+    }
+
+    @Test
+    void goalConditionsAreReadAndPrintedAfterTheContext() throws Exception {
+        Plan p = parser.parse("+!g(X) : X > 0 <: done(X) <- .print(X).\n", "gc.asl").plans().get(0);
+        assertEquals("done(X)", p.goalCondition().toString());
+        assertEquals("(X > 0)", p.context().toString());
+        assertEquals("+!g(X) : (X > 0) <: done(X) <- .print(X).", p.toString());
+        assertEquals(null, parser.parse("+!g <- .print(x).\n", "gc.asl").plans().get(0).goalCondition());
+    }
+
+    @Test
     void includeDirectivesMergeFilesAndReportMissingOnes(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("lib.asl"), "shared(1).\n+!lib <- .print(lib).\n");
         Files.writeString(dir.resolve("main.asl"), "{ include(\"lib.asl\") }\n!lib.\n");

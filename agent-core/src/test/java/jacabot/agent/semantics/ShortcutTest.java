@@ -65,4 +65,29 @@ class ShortcutTest {
                        +k(0); while (k(N) & N < 3) { for (.range(R, 1, N)) { .print(N, R) }; -+k(N + 1) }.
                 """));
     }
+
+    /** {@code PlanLibrary.CandidateKey}: the candidates cached for a predicate change with the library. */
+    @Test
+    void cachedCandidatePlansFollowPlansAddedAndRemoved() {
+        assertEquals(List.of("base(1)", "extra(2)", "failed(h(3))"), run("""
+                !g.
+                +!g <- !h(1); +{ @extra +!h(X) : X > 1 <- .print(extra(X)) }; !h(2);
+                       .remove_plan(extra); !h(3).
+                +!h(X) : X < 2 <- .print(base(X)).
+                -!h(X) <- .print(failed(h(X))).
+                """));
+    }
+
+    /** {@code ReasoningCycle.firstArgsDiffer}: plans whose first argument is another constant are passed over unasked. */
+    @Test
+    void plansWithAnotherConstantFirstArgumentArePassedOver() {
+        assertEquals(List.of("two", "any(3)", "b", "any(c)", "any(2.5)"), run("""
+                !g.
+                +!g <- !c(2); !c(3); !c(b); !c(c); !c(2.5).
+                +!c(1) <- .print(one).
+                +!c(2) <- .print(two).
+                +!c(b) <- .print(b).
+                +!c(X) <- .print(any(X)).
+                """));
+    }
 }

@@ -2,6 +2,7 @@ package jacabot.agent.semantics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
@@ -120,5 +121,16 @@ class UnifierTest {
         c.unifies(new Var("Y"), t("2"));
         assertEquals("Y", u.apply(new Var("Y")).toString());
         assertEquals("2", c.apply(new Var("Y")).toString());
+    }
+
+    /** {@code Substitution}'s shortcut: a term with no bound variable comes back as it is, not copied. */
+    @Test
+    void applyingToATermWithNothingBoundGivesTheSameTerm() throws Exception {
+        var u = new Unifier();
+        u.unifies(new Var("X"), t("1"));
+        Term free = t("p(Y, [a, Z], q(W)[n])");
+        assertSame(free, u.apply(free));
+        Term bound = t("p(X, [a, X], q(W)[n])");
+        assertEquals("p(1,[a,1],q(W)[n])", u.apply(bound).toString());
     }
 }
