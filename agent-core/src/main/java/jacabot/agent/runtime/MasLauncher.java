@@ -3,6 +3,7 @@ package jacabot.agent.runtime;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
@@ -40,6 +41,15 @@ public final class MasLauncher {
         this.stepping = stepping;
     }
 
+    /** Where a project's included sources come from, given its source path (default: its files). */
+    private Function<List<Path>, SourceResolver> includes = SourceResolver::files;
+
+    /** Reads included sources with another resolver (e.g. {@code jacabot test}'s, which adds its test library). */
+    public MasLauncher includes(Function<List<Path>, SourceResolver> resolver) {
+        this.includes = resolver;
+        return this;
+    }
+
     /** The agent name for a lone {@code .asl} file: {@code 23_interleave.asl} runs as {@code interleave}. */
     public static String agentNameFor(Path asl) {
         String base = asl.getFileName().toString().replaceFirst("\\.asl$", "");
@@ -74,7 +84,7 @@ public final class MasLauncher {
                 }
                 var sourcePath = new ArrayList<Path>(project.aslSourcePath());
                 sourcePath.add(project.directory());
-                var parser = new AslParser(sourcePath);
+                var parser = new AslParser(sourcePath, includes.apply(sourcePath));
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath);
                     AgentProgram program = withOptions(parser.parseFile(asl), spec, parser);
