@@ -188,7 +188,7 @@ public final class MasLauncher {
             }
             return type.cast(c.getConstructor().newInstance());
         } catch (ClassNotFoundException e) {
-            throw new UserError("class " + className + " not found");
+            throw new UserError("class " + className + " not found" + MovedClasses.hint(className));
         } catch (ReflectiveOperationException e) {
             throw new UserError("cannot create " + className + ": " + e);
         }
@@ -210,7 +210,7 @@ public final class MasLauncher {
                 }
             };
         } catch (ClassNotFoundException e) {
-            throw new UserError("agent architecture class " + className + " not found");
+            throw new UserError("agent architecture class " + className + " not found" + MovedClasses.hint(className));
         } catch (NoSuchMethodException e) {
             throw new UserError("agent architecture class " + className + " needs a constructor (LocalArch)");
         }
