@@ -68,10 +68,11 @@ public final class MasLauncher {
         String name = file.getFileName().toString();
         try {
             var mas = new LocalMAS(Clock.wall(), out, seed);
-            if (name.endsWith(".mas2j")) {
+            ProjectReader reader = name.endsWith(".mas2j") || name.endsWith(".asl") ? null : ProjectReader.forFile(file);
+            if (name.endsWith(".mas2j") || reader != null) {
                 MasProject project;
                 try {
-                    project = Mas2jReader.read(file);
+                    project = reader != null ? reader.read(file) : Mas2jReader.read(file);
                 } catch (AslSyntaxException e) {
                     // Jason's console line for a project it cannot read; our located errors follow on stderr
                     out.println("[RunLocalMAS] Error parsing file file:" + file + "!");
@@ -82,18 +83,22 @@ public final class MasLauncher {
                 } else {
                     mas.setEnvironment(new DefaultEnvironment(), List.of());
                 }
+                if (reader != null) {
+                    reader.prepare(mas);
+                }
                 var sourcePath = new ArrayList<Path>(project.aslSourcePath());
                 sourcePath.add(project.directory());
-                var parser = new AslParser(sourcePath, includes.apply(sourcePath));
+                SourceResolver resolver = includes.apply(sourcePath);
+                var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath);
-                    AgentProgram program = withOptions(parser.parseFile(asl), spec, parser);
+                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
-                            program = withOptions(parser.parseFile(asl), spec, parser);
+                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
                         }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
@@ -143,6 +148,11 @@ public final class MasLauncher {
         }
         gs.addAll(p.goals());
         return new AgentProgram(p.file(), bs, gs, p.plans(), p.functions());
+    }
+
+    private static AgentProgram adapted(ProjectReader reader, MasProject.AgentSpec spec, AgentProgram p, AslParser parser)
+            throws UserError {
+        return reader == null ? p : reader.adapt(spec, p, parser);
     }
 
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {
