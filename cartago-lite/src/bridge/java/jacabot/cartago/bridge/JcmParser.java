@@ -58,13 +58,8 @@ final class JcmParser {
         var classPath = new ArrayList<String>();
         var aslPath = new ArrayList<String>();
         while (true) {
-            skip();
-            if (peek() == '}') {
-                pos++;
+            if (blockEnds()) {
                 break;
-            }
-            if (pos >= text.length()) {
-                throw error(pos, "expected '}' before the end of the file");
             }
             int at = pos;
             String word = name("an entry (agent, workspace, class-path, asl-path)");
@@ -109,13 +104,8 @@ final class JcmParser {
         if (peek() == '{') {
             pos++;
             while (true) {
-                skip();
-                if (peek() == '}') {
-                    pos++;
+                if (blockEnds()) {
                     break;
-                }
-                if (pos >= text.length()) {
-                    throw error(pos, "expected '}' before the end of the file");
                 }
                 int at = pos;
                 String key = name("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)");
@@ -144,13 +134,8 @@ final class JcmParser {
         if (peek() == '{') {
             pos++;
             while (true) {
-                skip();
-                if (peek() == '}') {
-                    pos++;
+                if (blockEnds()) {
                     break;
-                }
-                if (pos >= text.length()) {
-                    throw error(pos, "expected '}' before the end of the file");
                 }
                 int at = pos;
                 String word = name("artifact or agents:");
@@ -175,6 +160,19 @@ final class JcmParser {
     }
 
     // ---- lexical helpers ------------------------------------------------------------------------
+
+    /** {@return true (past it) at the '}' closing a block; an error at the end of the file} */
+    private boolean blockEnds() throws JcmError {
+        skip();
+        if (peek() == '}') {
+            pos++;
+            return true;
+        }
+        if (pos >= text.length()) {
+            throw error(pos, "expected '}' before the end of the file");
+        }
+        return false;
+    }
 
     /** Skips blanks, new lines and comments. */
     private void skip() throws JcmError {
