@@ -6,7 +6,6 @@ import jacabot.agent.testing.JUnitXmlReport;
 import jacabot.cartago.bridge.ProjectClasses;
 import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -53,7 +52,7 @@ final class TestCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
-        PrintStream out = System.out;
+        PrintWriter out = spec.commandLine().getOut();
         if (timeoutSeconds <= 0) {
             throw new UserError("--timeout must be positive, got " + timeoutSeconds);
         }
@@ -69,7 +68,7 @@ final class TestCommand implements Callable<Integer> {
         }
         var entries = new ArrayList<Path>();
         classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty()).map(Path::of).forEach(entries::add));
-        var runner = new AslTestRunner(verbose ? out : null, Duration.ofSeconds(timeoutSeconds), seed, mas2j -> {
+        var runner = new AslTestRunner(verbose ? out::println : null, Duration.ofSeconds(timeoutSeconds), seed, mas2j -> {
             var classes = ProjectClasses.prepare(mas2j, entries);
             classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());

@@ -18,6 +18,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
@@ -68,13 +69,13 @@ public final class AslTestRunner {
     private static final Pattern TEST_LABEL = Pattern.compile("@[\\w]*\\[[^\\]]*\\btest\\b");
     private static final Set<String> SKIPPED_DIRS = Set.of("build", "bin", "out", "target", "node_modules");
 
-    private final PrintStream echo;
+    private final Consumer<String> echo;
     private final Duration timeout;
     private final long seed;
     private final ProjectSetup setup;
 
-    /** @param echo where the agents' console goes as well (null: nowhere) */
-    public AslTestRunner(PrintStream echo, Duration timeout, long seed, ProjectSetup setup) {
+    /** @param echo where the agents' console lines go as well (null: nowhere) */
+    public AslTestRunner(Consumer<String> echo, Duration timeout, long seed, ProjectSetup setup) {
         this.echo = echo;
         this.timeout = timeout;
         this.seed = seed;
@@ -213,10 +214,10 @@ public final class AslTestRunner {
     /** Splits the console into lines for the parser, and echoes them. */
     private static final class LineTap extends OutputStream {
         private final TestConsoleParser parser;
-        private final PrintStream echo;
+        private final Consumer<String> echo;
         private final ByteArrayOutputStream line = new ByteArrayOutputStream();
 
-        LineTap(TestConsoleParser parser, PrintStream echo) {
+        LineTap(TestConsoleParser parser, Consumer<String> echo) {
             this.parser = parser;
             this.echo = echo;
         }
@@ -228,7 +229,7 @@ public final class AslTestRunner {
                 line.reset();
                 parser.line(text.endsWith("\r") ? text.substring(0, text.length() - 1) : text);
                 if (echo != null) {
-                    echo.println(text);
+                    echo.accept(text);
                 }
             } else {
                 line.write(b);
