@@ -113,7 +113,14 @@ final class JcmParser {
                 switch (key) {
                     case "beliefs" -> beliefs = joined(beliefs, restOfEntry());
                     case "goals" -> goals = joined(goals, restOfEntry());
-                    case "focus" -> focus.addAll(names());
+                    case "focus" -> {
+                        for (String f : names()) {
+                            if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
+                                throw error(at, "focus '" + f + "' is not workspace.artifact");
+                            }
+                            focus.add(f);
+                        }
+                    }
                     case "join" -> join.addAll(names());
                     case "instances" -> instances = number(at);
                     case "ag-arch" -> arch = name("an architecture class");

@@ -115,14 +115,7 @@ public final class JcmReader implements ProjectReader {
         project.workspaces().stream().filter(w -> w.agents().contains(decl.name())).forEach(w -> joins.add(w.name()));
         var steps = new ArrayList<String>();
         int n = 0;
-        for (String f : decl.focus()) {
-            int dot = f.lastIndexOf('.');
-            if (dot <= 0) {
-                throw new UserError(project.file() + ": error: agent " + decl.name() + ": focus '" + f
-                        + "' is not workspace.artifact");
-            }
-            joins.add(f.substring(0, dot));
-        }
+        decl.focus().forEach(f -> joins.add(f.substring(0, f.lastIndexOf('.')))); // workspace.artifact, checked when read
         joins.forEach(w -> steps.add("joinWorkspace(\"" + w + "\", _)"));
         for (String f : decl.focus()) {
             int dot = f.lastIndexOf('.');

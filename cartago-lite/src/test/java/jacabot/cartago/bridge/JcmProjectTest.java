@@ -106,6 +106,8 @@ class JcmProjectTest {
                 + "(beliefs, goals, focus, join, instances, ag-arch)", loadError(dir, "r.jcm", "mas r {\n    agent a { roles: x }\n}\n"));
         assertEquals(dir.resolve("u.jcm") + ":2:5: error: 'platform' is not supported in a .jcm here (agent, workspace, "
                 + "class-path, asl-path)", loadError(dir, "u.jcm", "mas u {\n    platform: cartago()\n}\n"));
+        assertEquals(dir.resolve("f.jcm") + ":2:15: error: focus 'c' is not workspace.artifact",
+                loadError(dir, "f.jcm", "mas f {\n    agent a { focus: c }\n}\n"));
         assertEquals(dir.resolve("b.jcm") + ":2:1: error: expected '}' before the end of the file",
                 loadError(dir, "b.jcm", "mas b {\n"));
         String missing = loadError(dir, "m.jcm", "mas m {\n    workspace w {\n        artifact c: no.Such(1)\n    }\n}\n");
