@@ -23,7 +23,7 @@ public final class JacabotCommand implements Runnable {
      */
     private static final List<Class<?>> SUBCOMMANDS = List.of(RunCommand.class, ExperimentCommand.class,
             CompareCommand.class, BenchCommand.class, ControllerCommand.class, WorldCommand.class, SweepCommand.class,
-            ReplayCommand.class, PlotCommand.class, CommandLine.HelpCommand.class);
+            ReplayCommand.class, PlotCommand.class, TestCommand.class, CommandLine.HelpCommand.class);
 
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;

@@ -42,7 +42,7 @@ final class RunCommand implements Callable<Integer> {
     /** The belief the robot agents read their middleware's port from (their .asl holds the default). */
     static final String PORT_BELIEF = "middlewarePort";
 
-    @Parameters(index = "0", paramLabel = "FILE", description = "a .mas2j project or an .asl agent")
+    @Parameters(index = "0", paramLabel = "FILE", description = "a .mas2j project, a JaCaMo .jcm project or an .asl agent")
     private Path file;
 
     @Option(names = "--seed", description = "seed of the agents' random generators (default ${DEFAULT-VALUE})")
@@ -106,7 +106,7 @@ final class RunCommand implements Callable<Integer> {
             var entries = new ArrayList<Path>();
             classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty())
                     .map(Path::of).forEach(entries::add));
-            var classes = ProjectClasses.prepare(file.toString().endsWith(".mas2j") ? file : null, entries);
+            var classes = ProjectClasses.prepare(file.toString().endsWith(".asl") ? null : file, entries);
             classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(out, seed, stepping);

@@ -40,6 +40,12 @@ public final class AslParser {
         this.includes = includes;
     }
 
+    /** @param sourcePath directories of {@link #locate}; @param includes where included sources are read from */
+    public AslParser(List<Path> sourcePath, SourceResolver includes) {
+        this.sourcePath = List.copyOf(sourcePath);
+        this.includes = includes;
+    }
+
     public AslParser() {
         this(List.of());
     }

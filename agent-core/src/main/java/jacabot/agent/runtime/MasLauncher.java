@@ -3,6 +3,7 @@ package jacabot.agent.runtime;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
@@ -40,6 +41,15 @@ public final class MasLauncher {
         this.stepping = stepping;
     }
 
+    /** Where a project's included sources come from, given its source path (default: its files). */
+    private Function<List<Path>, SourceResolver> includes = SourceResolver::files;
+
+    /** Reads included sources with another resolver (e.g. {@code jacabot test}'s, which adds its test library). */
+    public MasLauncher includes(Function<List<Path>, SourceResolver> resolver) {
+        this.includes = resolver;
+        return this;
+    }
+
     /** The agent name for a lone {@code .asl} file: {@code 23_interleave.asl} runs as {@code interleave}. */
     public static String agentNameFor(Path asl) {
         String base = asl.getFileName().toString().replaceFirst("\\.asl$", "");
@@ -58,10 +68,11 @@ public final class MasLauncher {
         String name = file.getFileName().toString();
         try {
             var mas = new LocalMAS(Clock.wall(), out, seed);
-            if (name.endsWith(".mas2j")) {
+            ProjectReader reader = name.endsWith(".mas2j") || name.endsWith(".asl") ? null : ProjectReader.forFile(file);
+            if (name.endsWith(".mas2j") || reader != null) {
                 MasProject project;
                 try {
-                    project = Mas2jReader.read(file);
+                    project = reader != null ? reader.read(file) : Mas2jReader.read(file);
                 } catch (AslSyntaxException e) {
                     // Jason's console line for a project it cannot read; our located errors follow on stderr
                     out.println("[RunLocalMAS] Error parsing file file:" + file + "!");
@@ -72,18 +83,22 @@ public final class MasLauncher {
                 } else {
                     mas.setEnvironment(new DefaultEnvironment(), List.of());
                 }
+                if (reader != null) {
+                    reader.prepare(mas);
+                }
                 var sourcePath = new ArrayList<Path>(project.aslSourcePath());
                 sourcePath.add(project.directory());
-                var parser = new AslParser(sourcePath);
+                SourceResolver resolver = includes.apply(sourcePath);
+                var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath);
-                    AgentProgram program = withOptions(parser.parseFile(asl), spec, parser);
+                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
-                            program = withOptions(parser.parseFile(asl), spec, parser);
+                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
                         }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
@@ -135,6 +150,11 @@ public final class MasLauncher {
         return new AgentProgram(p.file(), bs, gs, p.plans(), p.functions());
     }
 
+    private static AgentProgram adapted(ProjectReader reader, MasProject.AgentSpec spec, AgentProgram p, AslParser parser)
+            throws UserError {
+        return reader == null ? p : reader.adapt(spec, p, parser);
+    }
+
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {
         Term list = parser.parseTerm("[" + text + "]");
         var out = new ArrayList<Term>();
@@ -178,7 +198,7 @@ public final class MasLauncher {
             }
             return type.cast(c.getConstructor().newInstance());
         } catch (ClassNotFoundException e) {
-            throw new UserError("class " + className + " not found");
+            throw new UserError("class " + className + " not found" + MovedClasses.hint(className));
         } catch (ReflectiveOperationException e) {
             throw new UserError("cannot create " + className + ": " + e);
         }
@@ -200,7 +220,7 @@ public final class MasLauncher {
                 }
             };
         } catch (ClassNotFoundException e) {
-            throw new UserError("agent architecture class " + className + " not found");
+            throw new UserError("agent architecture class " + className + " not found" + MovedClasses.hint(className));
         } catch (NoSuchMethodException e) {
             throw new UserError("agent architecture class " + className + " needs a constructor (LocalArch)");
         }

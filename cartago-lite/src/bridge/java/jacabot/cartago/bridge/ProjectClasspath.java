@@ -123,6 +123,13 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
      * launcher reports its syntax errors.
      */
     static List<String> classpathEntries(Path mas2j) throws Problem {
+        if (mas2j.getFileName().toString().endsWith(".jcm")) {
+            try {
+                return JcmReader.classPath(mas2j);
+            } catch (jacabot.agent.runtime.MasLauncher.UserError e) {
+                return List.of(); // the launcher reports it
+            }
+        }
         String text;
         try {
             text = Files.readString(mas2j, StandardCharsets.UTF_8);

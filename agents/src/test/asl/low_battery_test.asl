@@ -1,0 +1,50 @@
+// Skill tests of the experiment-4 robot (suspend-resume.asl): a low battery suspends the task,
+// sends the robot to the charger, and resumes once it is charged and back. No robot, world or
+// middleware: the artifact operations are mocked (mock_operation beliefs, see agents/README.md
+// "Testing skills"), the percepts are added as beliefs. Run: jacabot test agents/src/test/asl
+{ include("tester_agent.asl") }
+{ include("../../main/asl/suspend-resume.asl") }
+
+// the world's landmarks, as the launcher gives them
+arena(1.0, 1.0).
+storagePoint(0.41, -0.41).
+charger(-0.38, 0.38).
+
+// the middleware exists (the initial phase finds it) but never connects; the heading computed
+// towards any target is 90 degrees; every other operation succeeds
+mock_operation(lookupArtifact(_, middleware), ok).
+mock_operation(computeAngle(_, _, _, _, 90), ok).
+mock_operation(_, ok).
+
+@[test]
++!test_low_battery_suspends_the_move_and_heads_for_the_charger
+    <- +location(0.1, 0, 0.2); +orientation(90); +battery(470);
+       !!perceive(lowBattery);
+       ?charger(Cx, Cz);
+       !until(mock_called(setUpTargetPoint(Cx, 0, Cz)), 3000);
+       !assert_true(charging);
+       !assert_true(mock_called(mark));                              // the point to come back to
+       !assert_true(mock_called(setUpTargetPoint(Cx, 0, Cz)));       // the charger is the target
+       !!move(0.5);                                                  // a random move, while charging
+       .wait(200);
+       !assert_true(.intend(move(_))).                               // waits for the end of the recharge
+
+@[test]
++!test_charged_robot_returns_to_the_marked_point_and_resumes
+    <- !!perceive(targetReached);              // at the charger
+       !until(atCharger, 3000);
+       !assert_true(mock_called(stopAcquireDistance));
+       -+battery(950); !!perceive(charged);
+       !until(mock_called(setUpTargetPoint(0.1, 0, 0.2)), 3000);
+       !assert_true(mock_called(setUpTargetPoint(0.1, 0, 0.2)));   // back to where the battery went low
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 5000);
+       !assert_false(charging).
+
+// a percept, in an intention of its own (as the architecture would add it)
++!perceive(B) <- +B.
+
+// waits (polling, at most T ms) until the condition holds
++!until(C, _) : C.
++!until(C, T) : T > 0 <- .wait(20); !until(C, T - 20).
++!until(_, _).

@@ -1,0 +1,352 @@
+package jacabot.cartago.bridge;
+
+import jacabot.cartago.bridge.JcmProject.AgentDecl;
+import jacabot.cartago.bridge.JcmProject.ArtifactDecl;
+import jacabot.cartago.bridge.JcmProject.WorkspaceDecl;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * A recursive-descent reader of JaCaMo's project format, for the part jacabot runs:
+ *
+ * <pre>
+ * project   := "mas" NAME "{" entry* "}"
+ * entry     := "agent" NAME [":" SOURCE] ["{" param* "}"]
+ *            | "workspace" NAME ["{" (artifact | "agents" ":" names)* "}"]
+ *            | ("class-path" | "asl-path") ":" names
+ * param     := ("beliefs" | "goals") ":" TEXT-TO-END-OF-LINE (continued after a trailing comma)
+ *            | ("focus" | "join") ":" names | "instances" ":" NUMBER | "ag-arch" ":" CLASS
+ * artifact  := "artifact" NAME ":" CLASS ["(" ARGS ")"]
+ * </pre>
+ *
+ * Comments are {@code //} and {@code /* *}{@code /}. Anything else (an {@code organisation}, a
+ * {@code platform:}, an agent's {@code roles:}) is refused with {@code file:line:col: error: ...}.
+ */
+final class JcmParser {
+    /** A mistake in the file, located. */
+    static final class JcmError extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        JcmError(String message) {
+            super(message);
+        }
+    }
+
+    private static final Set<String> UNSUPPORTED_HINTS = Set.of("organisation", "organization");
+    private final Path file;
+    private final String text;
+    private int pos;
+
+    private JcmParser(Path file, String text) {
+        this.file = file;
+        this.text = text;
+    }
+
+    static JcmProject parse(Path file, String text) throws JcmError {
+        return new JcmParser(file, text).project();
+    }
+
+    private JcmProject project() throws JcmError {
+        skip();
+        keyword("mas");
+        String name = name("the project's name");
+        expect('{');
+        var agents = new ArrayList<AgentDecl>();
+        var workspaces = new ArrayList<WorkspaceDecl>();
+        var classPath = new ArrayList<String>();
+        var aslPath = new ArrayList<String>();
+        while (true) {
+            if (blockEnds()) {
+                break;
+            }
+            int at = pos;
+            String word = name("an entry (agent, workspace, class-path, asl-path)");
+            switch (word) {
+                case "agent" -> agents.add(agent());
+                case "workspace" -> workspaces.add(workspace());
+                case "class-path" -> {
+                    expect(':');
+                    classPath.addAll(names());
+                }
+                case "asl-path" -> {
+                    expect(':');
+                    aslPath.addAll(names());
+                }
+                default -> throw error(at, UNSUPPORTED_HINTS.contains(word)
+                        ? "organisations (Moise) are not supported: jacabot runs the agents and the environment of a .jcm"
+                        : "'" + word + "' is not supported in a .jcm here (agent, workspace, class-path, asl-path)");
+            }
+        }
+        skip();
+        if (pos < text.length()) {
+            throw error(pos, "unexpected text after the project's closing '}'");
+        }
+        return new JcmProject(file, name, agents, workspaces, classPath, aslPath);
+    }
+
+    private AgentDecl agent() throws JcmError {
+        String name = name("the agent's name");
+        skip();
+        String source = name + ".asl";
+        if (peek() == ':') {
+            pos++;
+            source = name("the agent's source file");
+        }
+        String beliefs = null;
+        String goals = null;
+        var focus = new ArrayList<String>();
+        var join = new ArrayList<String>();
+        int instances = 1;
+        String arch = null;
+        skip();
+        if (peek() == '{') {
+            pos++;
+            while (true) {
+                if (blockEnds()) {
+                    break;
+                }
+                int at = pos;
+                String key = name("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)");
+                expect(':');
+                switch (key) {
+                    case "beliefs" -> beliefs = joined(beliefs, restOfEntry());
+                    case "goals" -> goals = joined(goals, restOfEntry());
+                    case "focus" -> {
+                        for (String f : names()) {
+                            if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
+                                throw error(at, "focus '" + f + "' is not workspace.artifact");
+                            }
+                            focus.add(f);
+                        }
+                    }
+                    case "join" -> join.addAll(names());
+                    case "instances" -> instances = number(at);
+                    case "ag-arch" -> arch = name("an architecture class");
+                    default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
+                            : "the agent parameter '" + key + "' is not supported")
+                            + " (beliefs, goals, focus, join, instances, ag-arch)");
+                }
+            }
+        }
+        return new AgentDecl(name, source, beliefs, goals, focus, join, instances, arch);
+    }
+
+    private WorkspaceDecl workspace() throws JcmError {
+        String name = name("the workspace's name");
+        var artifacts = new ArrayList<ArtifactDecl>();
+        var agents = new ArrayList<String>();
+        skip();
+        if (peek() == '{') {
+            pos++;
+            while (true) {
+                if (blockEnds()) {
+                    break;
+                }
+                int at = pos;
+                String word = name("artifact or agents:");
+                if (word.equals("artifact")) {
+                    String art = name("the artifact's name");
+                    expect(':');
+                    String cls = name("the artifact's class");
+                    String args = "";
+                    if (peek() == '(') {
+                        args = parenthesised();
+                    }
+                    artifacts.add(new ArtifactDecl(art, cls, args, where(at)));
+                } else if (word.equals("agents")) {
+                    expect(':');
+                    agents.addAll(names());
+                } else {
+                    throw error(at, "'" + word + "' is not supported in a workspace (artifact, agents)");
+                }
+            }
+        }
+        return new WorkspaceDecl(name, artifacts, agents);
+    }
+
+    // ---- lexical helpers ------------------------------------------------------------------------
+
+    /** {@return true (past it) at the '}' closing a block; an error at the end of the file} */
+    private boolean blockEnds() throws JcmError {
+        skip();
+        if (peek() == '}') {
+            pos++;
+            return true;
+        }
+        if (pos >= text.length()) {
+            throw error(pos, "expected '}' before the end of the file");
+        }
+        return false;
+    }
+
+    /** Skips blanks, new lines and comments. */
+    private void skip() throws JcmError {
+        while (pos < text.length()) {
+            char c = text.charAt(pos);
+            if (Character.isWhitespace(c)) {
+                pos++;
+            } else if (text.startsWith("//", pos)) {
+                while (pos < text.length() && text.charAt(pos) != '\n') {
+                    pos++;
+                }
+            } else if (text.startsWith("/*", pos)) {
+                int end = text.indexOf("*/", pos + 2);
+                if (end < 0) {
+                    throw error(pos, "comment not closed");
+                }
+                pos = end + 2;
+            } else {
+                return;
+            }
+        }
+    }
+
+    private char peek() {
+        return pos < text.length() ? text.charAt(pos) : '\0';
+    }
+
+    private void expect(char c) throws JcmError {
+        skip();
+        if (peek() != c) {
+            throw error(pos, "expected '" + c + "'" + (pos < text.length() ? " here" : " before the end of the file"));
+        }
+        pos++;
+    }
+
+    private void keyword(String word) throws JcmError {
+        int at = pos;
+        String got = name("'" + word + "'");
+        if (!got.equals(word)) {
+            throw error(at, "expected '" + word + "', found '" + got + "'");
+        }
+    }
+
+    /** A name, class, path or file: letters, digits and {@code _ - . / $}, or a quoted string. */
+    private String name(String what) throws JcmError {
+        skip();
+        int start = pos;
+        if (peek() == '"') {
+            int end = text.indexOf('"', pos + 1);
+            if (end < 0) {
+                throw error(pos, "string not closed");
+            }
+            pos = end + 1;
+            return text.substring(start + 1, end);
+        }
+        while (pos < text.length()) {
+            char c = text.charAt(pos);
+            if (Character.isLetterOrDigit(c) || c == '_' || c == '-' || c == '.' || c == '/' || c == '$' || c == '*') {
+                pos++;
+            } else {
+                break;
+            }
+        }
+        if (pos == start) {
+            throw error(start, "expected " + what);
+        }
+        return text.substring(start, pos);
+    }
+
+    /** Names separated by commas, on one line (or continued after a comma). */
+    private List<String> names() throws JcmError {
+        var out = new ArrayList<String>();
+        out.add(name("a name"));
+        while (true) {
+            int save = pos;
+            skipSpacesOnLine();
+            if (peek() != ',') {
+                pos = save;
+                return out;
+            }
+            pos++;
+            out.add(name("a name after ','"));
+        }
+    }
+
+    private void skipSpacesOnLine() {
+        while (pos < text.length() && (text.charAt(pos) == ' ' || text.charAt(pos) == '\t')) {
+            pos++;
+        }
+    }
+
+    private int number(int at) throws JcmError {
+        String n = name("a number");
+        try {
+            return Integer.parseInt(n);
+        } catch (NumberFormatException e) {
+            throw error(at, "instances must be a whole number, got '" + n + "'");
+        }
+    }
+
+    /** The text up to the end of the line, going on to the next lines while it ends with a comma. */
+    private String restOfEntry() {
+        var sb = new StringBuilder();
+        while (true) {
+            skipSpacesOnLine();
+            int start = pos;
+            boolean quoted = false;
+            while (pos < text.length() && text.charAt(pos) != '\n') {
+                char c = text.charAt(pos);
+                if (c == '"') {
+                    quoted = !quoted;
+                } else if (!quoted && text.startsWith("//", pos)) {
+                    break;
+                }
+                pos++;
+            }
+            String line = text.substring(start, pos).trim();
+            while (pos < text.length() && text.charAt(pos) != '\n') {
+                pos++; // a comment
+            }
+            sb.append(line);
+            if (!line.endsWith(",") || pos >= text.length()) {
+                return sb.toString();
+            }
+            sb.append(' ');
+            pos++;
+        }
+    }
+
+    /** The text between balanced parentheses (quotes respected); the cursor is on '('. */
+    private String parenthesised() throws JcmError {
+        int open = pos;
+        int depth = 0;
+        boolean quoted = false;
+        for (; pos < text.length(); pos++) {
+            char c = text.charAt(pos);
+            if (c == '"') {
+                quoted = !quoted;
+            } else if (!quoted && c == '(') {
+                depth++;
+            } else if (!quoted && c == ')' && --depth == 0) {
+                pos++;
+                return text.substring(open + 1, pos - 1).trim();
+            }
+        }
+        throw error(open, "'(' not closed");
+    }
+
+    private static String joined(String a, String b) {
+        return a == null ? b : a + ", " + b;
+    }
+
+    String where(int at) {
+        int line = 1;
+        int col = 1;
+        for (int i = 0; i < at && i < text.length(); i++) {
+            if (text.charAt(i) == '\n') {
+                line++;
+                col = 1;
+            } else {
+                col++;
+            }
+        }
+        return file + ":" + line + ":" + col;
+    }
+
+    private JcmError error(int at, String message) {
+        return new JcmError(where(at) + ": error: " + message);
+    }
+}

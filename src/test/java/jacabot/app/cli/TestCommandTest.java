@@ -1,0 +1,45 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code jacabot test}: a line per test, the closing count, the exit code, the JUnit report, bad input. */
+class TestCommandTest {
+    @Test
+    void theExampleTestsPass() {
+        Path examples = Path.of(System.getProperty("jacabot.rootDir", "."), "examples", "asl-tests");
+        String[] r = CliRun.run("test", examples.toString());
+        assertEquals("0", r[0], r[1] + r[2]);
+        var lines = r[1].lines().toList();
+        assertEquals(3, lines.stream().filter(l -> l.startsWith("  passed  counter_test ")).count(), r[1]);
+        assertEquals("3 passed, 0 failed", lines.get(lines.size() - 1));
+    }
+
+    @Test
+    void aFailedAssertionFailsTheRunAndIsReported(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("t.asl"), """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_one <- !assert_equals(1, 1); !assert_true(false).
+                """);
+        String[] r = CliRun.run("test", dir.toString(), "--junit", dir.resolve("reports").toString());
+        assertEquals("1", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains("  FAILED  t test_one assert_true: assert_true on event 'test_one' starting at line 2 FAILED! "
+                + "Expected 'false'"), r[1]);
+        assertTrue(r[1].endsWith("1 passed, 1 failed\n"), r[1]);
+        assertTrue(Files.readString(dir.resolve("reports/TEST-" + dir.resolve("t").toString().replace('/', '.') + ".xml"))
+                .contains("failures=\"1\""));
+    }
+
+    @Test
+    void noTestsIsAUserError(@TempDir Path dir) {
+        String[] r = CliRun.run("test", dir.toString());
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("no AgentSpeak test under"), r[2]);
+    }
+}
