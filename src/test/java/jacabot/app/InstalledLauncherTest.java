@@ -29,14 +29,43 @@ class InstalledLauncherTest {
     }
 
     private static String run(Path cwd, String... args) throws IOException, InterruptedException {
-        var cmd = new ArrayList<String>(List.of(launcher().toString()));
+        return run(launcher(), null, cwd, args);
+    }
+
+    /** Runs a launcher with JAVA_OPTS set (unless null) and returns its output, checking it exits with 0. */
+    private static String run(Path launcher, String javaOptions, Path cwd, String... args) throws IOException, InterruptedException {
+        var cmd = new ArrayList<String>(List.of(launcher.toString()));
         cmd.addAll(List.of(args));
-        Process p = new ProcessBuilder(cmd).directory(cwd.toFile()).redirectErrorStream(true).start();
+        var builder = new ProcessBuilder(cmd).directory(cwd.toFile()).redirectErrorStream(true);
+        if (javaOptions != null) {
+            builder.environment().put("JAVA_OPTS", javaOptions);
+        }
+        Process p = builder.start();
         p.getOutputStream().close();
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the launcher did not end:\n" + out);
         assertEquals(0, p.exitValue(), out);
         return out;
+    }
+
+    @Test
+    void theLauncherMapsItsClassDataSharingArchiveAndRunsQuietlyWhenItCannot(@TempDir Path dir) throws Exception {
+        Path home = launcher().getParent().getParent();
+        assertTrue(Files.isRegularFile(home.resolve("lib/jacabot.jsa")), "installDist made no archive (see build/tmp/cds/training.log)");
+        Files.writeString(dir.resolve("hello.asl"), "!start.\n+!start <- .print(\"hello world\"); .stopMAS.\n");
+        // -Xshare:on: a JVM that cannot map the archive stops instead of running on without it
+        assertEquals("[hello] hello world\n", run(launcher(), "-Xshare:on", dir, "run", "hello.asl"));
+        // a moved installation: the archive names other jars, so the JVM runs without it, and says nothing
+        Path moved = dir.resolve("moved");
+        for (String sub : List.of("bin", "lib")) {
+            Files.createDirectories(moved.resolve(sub));
+            try (var files = Files.list(home.resolve(sub))) {
+                for (Path f : files.toList()) {
+                    Files.copy(f, moved.resolve(sub).resolve(f.getFileName()), java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            }
+        }
+        assertEquals("[hello] hello world\n", run(moved.resolve("bin/jacabot"), null, dir, "run", "hello.asl"));
     }
 
     @Test

@@ -21,15 +21,22 @@ final class OpResolver {
             throw new OpFailedException("agent " + agent + " has not joined workspace " + ws.getName(),
                     "unknown_agent", agent.name());
         }
-        String signature = operation + "/" + args.length;
-        List<ArtifactCore> candidates = target.isAny() ? candidates(ws, agent)
-                : List.of(ws.resolve(target.id() != null ? target.id() : target.name()));
-        for (ArtifactCore core : candidates) {
-            List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
-            if (!methods.isEmpty()) {
-                return bind(core, methods, args, agent, callback);
+        if (target.isAny()) {
+            OpExecution first = firstOffering(ws, agent, operation, args, callback);
+            if (first != null) {
+                return first;
+            }
+        } else {
+            ArtifactCore core = ws.resolve(target.id() != null ? target.id() : target.name());
+            OpExecution found = offeredBy(core, operation, args, agent, callback);
+            if (found != null) {
+                return found;
             }
         }
+        // no artifact has it: the message names every candidate's operations of that name
+        List<ArtifactCore> candidates = target.isAny() ? candidates(ws, agent)
+                : List.of(ws.resolve(target.id() != null ? target.id() : target.name()));
+        String signature = operation + "/" + args.length;
         List<String> others = new ArrayList<>();
         for (ArtifactCore core : candidates) {
             for (OpMethod m : core.type().operations(operation, OpMethod.Kind.OPERATION)) {
@@ -43,6 +50,48 @@ final class OpResolver {
                     "wrong_arity", operation, args.length);
         }
         throw new OpFailedException(where + " operation " + signature, "unknown_operation", operation, args.length);
+    }
+
+    /**
+     * The operation on the first of the agent's {@link #candidates} that has it, or null; looked
+     * for in the same order without building the ordered set, since an agent's every operation
+     * comes here (a core met twice had no such operation the first time, and has none the second).
+     */
+    private static OpExecution firstOffering(Workspace ws, AgentId agent, String operation, Object[] args, OpCallback callback) {
+        List<ArtifactCore> live = ws.cores();
+        for (ArtifactCore core : live) {
+            if (agent.equals(core.id().creator())) {
+                OpExecution found = offeredBy(core, operation, args, agent, callback);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        for (ArtifactId focused : ws.focusedBy(agent)) {
+            for (ArtifactCore core : live) {
+                if (core.id().equals(focused)) {
+                    OpExecution found = offeredBy(core, operation, args, agent, callback);
+                    if (found != null) {
+                        return found;
+                    }
+                }
+            }
+        }
+        for (ArtifactCore core : live) {
+            if (!(core.artifact() instanceof AgentBodyArtifact)) {
+                OpExecution found = offeredBy(core, operation, args, agent, callback);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
+    }
+
+    /** {@return the operation bound on {@code core}, or null when it has no operation of that name and arity} */
+    private static OpExecution offeredBy(ArtifactCore core, String operation, Object[] args, AgentId agent, OpCallback callback) {
+        List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
+        return methods.isEmpty() ? null : bind(core, methods, args, agent, callback);
     }
 
     /**

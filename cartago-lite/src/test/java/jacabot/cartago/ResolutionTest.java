@@ -46,6 +46,24 @@ class ResolutionTest {
     }
 
     @Test
+    void anArtifactCreatedAndFocusedWithoutTheOperationIsPassedOverForTheNextThatHasIt() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            RecordingObserver bobSees = new RecordingObserver();
+            AgentId bob = ws.join("bob", bobSees);
+            ws.createArtifact("older", Counter.class);
+            ArtifactId desk = Calls.makeArtifact(ws, bob, "desk", Desk.class);
+            ArtifactId counter = ws.createArtifact("counter", Counter.class);
+            ok(ws, bob, "focus", desk);
+            ok(ws, bob, "focus", counter);
+            bobSees.drain();
+            // desk comes first (created, then focused) and has no inc: the next is counter, focused, before the older one
+            ok(ws, bob, "inc");
+            bobSees.expect("counter count(0)->count(1)", "counter !tick");
+            assertEquals("bob", ok(ws, bob, "whoAmI", new OpFeedbackParam<>()).outputs().get(0));
+        }
+    }
+
+    @Test
     void theCallerIsKnownAndCanBeSignalledAlone() throws CartagoException {
         try (Workspace ws = Calls.quiet("main").build()) {
             RecordingObserver aliceSees = new RecordingObserver();

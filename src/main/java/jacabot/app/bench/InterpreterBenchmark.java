@@ -16,8 +16,10 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * Our interpreter against Jason 3.2.0 on the same AgentSpeak programs. Each run is a fresh JVM with
- * the same options; a run's time is from the program's {@code start} line to its {@code end} line
- * (JVM start-up and Jason's shutdown are not counted). Runs alternate between the two
+ * the same options, and ours also maps the class-data sharing archive its launcher passes (when
+ * the class path's folder has one that this JVM can use). A run has two times: from the program's
+ * {@code start} line to its {@code end} line (JVM start-up and shutdown not counted), and the
+ * whole process, from its start to its exit. Runs alternate between the two
  * interpreters, after one discarded warm-up run each. Peak memory is the process' maximum
  * resident set (GNU time), reasoning cycles are counted by our interpreter. The deep recursion
  * programs ({@link #DEEP}) are timed the same way, with a time limit per run, and a second table
@@ -57,12 +59,14 @@ public final class InterpreterBenchmark {
             "java.util.logging.ConsoleHandler.formatter = jason.runtime.MASConsoleLogFormatter", "java.level=OFF",
             "javax.level=OFF", "sun.level=OFF", "");
 
-    /** One measured run; a run cut at the time limit has {@code timedOut}. */
-    record Run(double seconds, long peakKb, long cycles, boolean timedOut) {
-        static final Run NONE = new Run(Double.NaN, 0, 0, true);
+    /** One measured run: {@code seconds} from start to end line, {@code wholeSeconds} the process; cut at the time limit: {@code timedOut}. */
+    record Run(double seconds, double wholeSeconds, long peakKb, long cycles, boolean timedOut) {
+        static final Run NONE = new Run(Double.NaN, Double.NaN, 0, 0, true);
     }
 
     private final String ourClasspath;
+    /** The JVM options our runs add: the launcher's class-data sharing archive, when usable. */
+    private final List<String> ourJavaOptions;
     private final String jasonClasspath;
     private final int runs;
     private final PrintStream out;
@@ -87,6 +91,7 @@ public final class InterpreterBenchmark {
             java.util.Set<String> programs, double limitSeconds, List<Path> projects) throws IOException {
         this.projects = List.copyOf(projects);
         this.ourClasspath = ourClasspath;
+        this.ourJavaOptions = SharedArchive.optionsFor(ourClasspath);
         this.jasonClasspath = jasonClasspath;
         this.runs = runs;
         this.out = out;
@@ -140,8 +145,12 @@ public final class InterpreterBenchmark {
 
 
     private void programs() throws IOException, InterruptedException {
-        out.println("| program | ours (s) | Jason (s) | Jason / ours | our cycles/s | Jason cycles/s | our peak memory (MB) | Jason peak memory (MB) |");
-        out.println("|---|---|---|---|---|---|---|---|");
+        out.println(ourJavaOptions.isEmpty() ? "Our runs without a class-data sharing archive."
+                : "Our runs with the launcher's class-data sharing archive (" + ourJavaOptions.get(0) + ").");
+        out.println();
+        out.println("| program | ours (s) | Jason (s) | Jason / ours | our cycles/s | Jason cycles/s | our peak memory (MB) | Jason peak memory (MB)"
+                + " | ours, whole process (s) | Jason, whole process (s) | Jason / ours, whole process |");
+        out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         for (String[] p : PROGRAMS) {
             if (!wanted(p[0])) {
                 continue;
@@ -155,7 +164,7 @@ public final class InterpreterBenchmark {
             } catch (IOException e) {
                 // the other projects are still measured; the run ends in this error
                 failedProjects.add(e.getMessage());
-                out.printf("| %s | – | – | – | – | – | – | – |%n", name);
+                out.printf("| %s | – | – | – | – | – | – | – | – | – | – |%n", name);
             }
         }
     }
@@ -172,9 +181,12 @@ public final class InterpreterBenchmark {
         }
         Run o = median(ours);
         Run j = median(jason);
+        double oWhole = medianWhole(ours);
+        double jWhole = medianWhole(jason);
         long cycles = o.cycles;
-        out.printf(Locale.ROOT, "| %s | %.3f | %.3f | %.2f | %,.0f | %,.0f | %d | %d |%n", name, o.seconds,
-                j.seconds, j.seconds / o.seconds, cycles / o.seconds, cycles / j.seconds, o.peakKb / 1024, j.peakKb / 1024);
+        out.printf(Locale.ROOT, "| %s | %.3f | %.3f | %.2f | %,.0f | %,.0f | %d | %d | %.3f | %.3f | %.2f |%n", name, o.seconds,
+                j.seconds, j.seconds / o.seconds, cycles / o.seconds, cycles / j.seconds, o.peakKb / 1024, j.peakKb / 1024,
+                oWhole, jWhole, jWhole / oWhole);
     }
 
     /**
@@ -248,13 +260,19 @@ public final class InterpreterBenchmark {
 
     /** Runs a project (a {@code .mas2j}) in its directory, as its user would. */
     private Run ours(Path project) throws IOException, InterruptedException {
-        return measure("our interpreter", project, List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats",
-                project.getFileName().toString()));
+        var args = new ArrayList<>(ourJavaOptions);
+        args.addAll(List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats", project.getFileName().toString()));
+        return measure("our interpreter", project, args);
     }
 
     private Run jason(Path project) throws IOException, InterruptedException {
         return measure("Jason", project, List.of("-cp", jasonClasspath, "jason.infra.local.RunLocalMAS",
                 project.getFileName().toString(), "--log-conf", dir.resolve("jason-logging.properties").toString()));
+    }
+
+    private static double medianWhole(List<Run> rs) {
+        double[] a = rs.stream().mapToDouble(Run::wholeSeconds).sorted().toArray();
+        return a[a.length / 2];
     }
 
     private static Run median(List<Run> rs) {
@@ -294,6 +312,7 @@ public final class InterpreterBenchmark {
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.add("-Djava.awt.headless=true");
         cmd.addAll(javaArgs);
+        long began = System.nanoTime();
         Process p = new ProcessBuilder(cmd).directory(project.getParent().toFile()).redirectErrorStream(true).start();
         var cut = new java.util.concurrent.atomic.AtomicBoolean();
         var limit = new Thread(() -> {
@@ -328,15 +347,16 @@ public final class InterpreterBenchmark {
         if (!p.waitFor(10, TimeUnit.MINUTES)) {
             p.destroyForcibly();
         }
+        double whole = (System.nanoTime() - began) / 1e9;
         limit.interrupt();
         if (cut.get()) {
-            return new Run(limitSeconds, 0, cycles, true);
+            return new Run(limitSeconds, whole, 0, cycles, true);
         }
         if (start < 0 || end < 0) {
             throw new IOException(project + ": on " + who + ", no agent printed its `start` and `end` lines"
                     + " (.print(start) and .print(end) around what is measured)");
         }
         long peak = gnuTime ? Long.parseLong(Files.readString(timeFile).trim().lines().reduce((a, b) -> b).orElse("0")) : 0;
-        return new Run((end - start) / 1e9, peak, cycles, false);
+        return new Run((end - start) / 1e9, whole, peak, cycles, false);
     }
 }
