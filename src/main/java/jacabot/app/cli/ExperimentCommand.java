@@ -335,6 +335,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
                     ConsoleLog.lines(log::result));
+            tap.inspect(inspector);
             var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
             for (String name : run.mas().agentNames()) {
                 boolean robot = name.equals("robot");

@@ -47,6 +47,15 @@ final class ReplayCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
         err = ConsoleStreams.of(commandSpec.commandLine().getErr());
+        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
+        if (!window && inspectorOptions.asked()) {
+            try {
+                return serve(); // reads the step log on demand, not all of it into memory
+            } catch (IOException e) {
+                err.println("error: " + e.getMessage());
+                return 2;
+            }
+        }
         Replay replay;
         try {
             replay = Replay.open(dir);
@@ -58,7 +67,6 @@ final class ReplayCommand implements Callable<Integer> {
             err.println("error: " + dir + ": the step log has no step");
             return 2;
         }
-        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
         if (!window) {
             return headlessReplay(replay);
         }
@@ -84,6 +92,25 @@ final class ReplayCommand implements Callable<Integer> {
         });
         closed.await();
         if (inspector != null) {
+            inspector.close();
+        }
+        return 0;
+    }
+
+    /** Headless with {@code --inspector}: the recorded run in the inspector's page, read on demand, until Enter or Ctrl-C. */
+    private int serve() throws Exception {
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        try {
+            var archive = jacabot.app.replay.StepArchive.show(inspector, dir);
+            out.printf("The recorded run, %.1f s to %.1f s, is served at %s ; %s%n", archive.firstTimeMs() / 1000.0,
+                    archive.lastTimeMs() / 1000.0, inspector.address(),
+                    System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
+            if (System.console() != null) {
+                System.in.read();
+            } else {
+                new CountDownLatch(1).await();
+            }
+        } finally {
             inspector.close();
         }
         return 0;

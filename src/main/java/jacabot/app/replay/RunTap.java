@@ -46,13 +46,27 @@ public final class RunTap implements Closeable {
     public static RunTap attach(LockstepRun run, Inspector inspector, Path outDir, Experiment experiment, String agentFile)
             throws IOException {
         StepLog.Writer log = null;
+        SimWorld w = run.world();
+        WorldSnapshot start = w.snapshot();
         if (outDir != null) {
-            SimWorld w = run.world();
-            WorldSnapshot start = w.snapshot();
-            log = new StepLog.Writer(outDir.resolve(StepLog.FILE), new StepLog.Header(StepLog.FORMAT, experiment.id(),
-                    w.name(), w.seed(), w.controlStep(), w.robots().get(0).name(), agentFile, start));
+            var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), w.name(), w.seed(), w.controlStep(),
+                    w.robots().get(0).name(), agentFile, start);
+            log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
+            if (inspector != null) {
+                archive(inspector, log, outDir.resolve(StepLog.FILE), header);
+            }
+        }
+        if (inspector != null) {
+            inspector.world(start);
         }
         return new RunTap(run, inspector, log);
+    }
+
+    /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */
+    static void archive(Inspector inspector, StepLog.Writer log, Path file, StepLog.Header header) {
+        var archive = StepArchive.live(file, header);
+        log.onChunk(archive::add);
+        inspector.add("robot").archive(archive);
     }
 
     private void afterStep(jacabot.experiments.link.StepData data, List<Command> commands) {
@@ -90,9 +104,16 @@ public final class RunTap implements Closeable {
     private static RobotView view(SimWorld world, Robot robot, List<String> commands) {
         synchronized (world) {
             var p = robot.pose();
+            var placed = new ArrayList<RobotView.Placed>();
+            for (jacabot.sim.engine.ObjectState o : world.supervisor().objects()) {
+                if (o.movable()) {
+                    placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
+                            StepLog.round(o.pose().heading()), o.carriedBy()));
+                }
+            }
             return new RobotView(world.timeMs(), p.x(), p.z(), p.heading(),
                     robot.hasBattery() ? robot.getBattery().energy() : null, robot.getWheels().getLeftSpeed(),
-                    robot.getWheels().getRightSpeed(), commands);
+                    robot.getWheels().getRightSpeed(), commands, placed);
         }
     }
 
