@@ -16,12 +16,9 @@ import org.junit.jupiter.api.io.TempDir;
 class StepArchiveTest {
     @Test
     void anyInstantOfATenMinuteRunFromItsMember(@TempDir Path dir) throws Exception {
-        long t0 = System.nanoTime();
         SyntheticRun.write(dir, 600);
-        long t1 = System.nanoTime();
         var history = new MindHistory("robot", 10);
         StepArchive a = StepArchive.open(dir, history::addToPath);
-        System.out.printf("write %.2f s, index %.2f s%n", (t1 - t0) / 1e9, (System.nanoTime() - t1) / 1e9);
         assertEquals(40, a.firstTimeMs());
         assertEquals(600_000, a.lastTimeMs());
         for (long t : new long[] {40, 41, 3_999, 4_000, 4_040, 123_440, 599_960, 600_000, 700_000}) {
@@ -41,9 +38,7 @@ class StepArchiveTest {
         assertTrue(path.size() >= 4_900, "path points: " + path.size());
         assertEquals(-0.4, path.get(0)[0], 0.01);
         // the chain of members is still one gzip stream: the replay reads it whole
-        long t2 = System.nanoTime();
         Replay r = Replay.open(dir);
-        System.out.printf("replay %.2f s%n", (System.nanoTime() - t2) / 1e9);
         assertEquals(15_000, r.frames().size());
         assertEquals("second(300)", r.frames().get(7_499).mind().beliefs().get(0).literal());
         assertNotNull(r.world(7_499));
