@@ -27,6 +27,7 @@ public final class RunTap implements Closeable {
     private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
+    private volatile jacabot.app.inspector.Debugger debugger;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.world = run.world();
@@ -89,6 +90,16 @@ public final class RunTap implements Closeable {
             }
             log.step(data.simTimeMs(), body, commands, data.readings(), mind, objects);
         }
+        var d = debugger;
+        if (d != null && mind != null) {
+            d.afterStep(mind); // may halt here, the world waiting with the agent
+        }
+    }
+
+    /** Halts the run on {@code d}'s breakpoints, after the step is logged and shown. {@return this} */
+    public RunTap debugger(jacabot.app.inspector.Debugger d) {
+        this.debugger = d;
+        return this;
     }
 
     private RobotView robotView() {
