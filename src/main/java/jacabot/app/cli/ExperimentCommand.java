@@ -81,6 +81,10 @@ final class ExperimentCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
+    @Option(names = "--break", paramLabel = "SPEC", description = "lockstep: halt after the control step where SPEC "
+            + "holds, print the mind and read commands (label:NAME, +!goal, -belief(_), belief:PATTERN, failure, t=60s)")
+    private List<String> breaks = new java.util.ArrayList<>();
+
     @picocli.CommandLine.Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -176,6 +180,14 @@ final class ExperimentCommand implements Callable<Integer> {
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
         var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
+        if (!breaks.isEmpty() || inspector != null) {
+            try { // the page can halt the run too
+                tap.debugger(inspector, breaks.isEmpty() ? new jacabot.app.inspector.Debugger()
+                        : jacabot.app.inspector.DebugConsole.start(breaks, System.in, System.out));
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--break: " + e.getMessage());
+            }
+        }
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
         long[] nextReport = {10_000};

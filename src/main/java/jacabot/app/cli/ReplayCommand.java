@@ -168,16 +168,7 @@ final class ReplayCommand implements Callable<Integer> {
     }
 
     private void printMind(Replay replay, int i) {
-        var f = replay.frames().get(i);
-        var m = f.mind();
-        out.printf("%nMind at t=%.2f s (cycle %d):%n  beliefs:%n", f.timeMs() / 1000.0, m.cycle());
-        m.beliefs().forEach(b -> out.println("    " + b.text()));
-        out.println("  intentions:");
-        for (MindState.IntentionView iv : m.intentions()) {
-            out.println("    intention " + iv.id() + " (" + iv.state() + ")");
-            iv.stack().forEach(im -> out.println("      " + im.plan() + "   <- " + im.current()
-                    + (im.rest().isEmpty() ? "" : "; " + im.rest())));
-        }
-        out.println("  events: " + (m.events().isEmpty() ? "none" : String.join(", ", m.events())));
+        out.println();
+        jacabot.app.inspector.MindText.print(replay.frames().get(i).mind(), out);
     }
 }

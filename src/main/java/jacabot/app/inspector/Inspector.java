@@ -53,6 +53,7 @@ public final class Inspector implements AutoCloseable {
     private final String token = newToken();
     private volatile java.util.function.Consumer<String> refusals = System.err::println;
     private volatile Object world;
+    private volatile Debugger debugger;
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
     private volatile Path plotDir;
     private volatile String title = "jacabot";
@@ -67,6 +68,7 @@ public final class Inspector implements AutoCloseable {
         });
         server.setExecutor(threads);
         context("/", this::page);
+        context("/help.html", ex -> send(ex, 200, "text/html; charset=utf-8", resource("help.html")));
         context("/api/agents", ex -> sendJson(ex, agentNames()));
         context("/api/state", this::state);
         context("/api/history", this::history);
@@ -74,6 +76,7 @@ public final class Inspector implements AutoCloseable {
         context("/api/world", ex -> sendJson(ex, world));
         context("/api/path", ex -> withHistory(ex, (h, t) -> h.pathUpTo(t)));
         context("/api/selections", ex -> withHistory(ex, (h, t) -> h.selectionsUpTo(t, SELECTIONS)));
+        context("/api/debug", this::debug);
         context("/api/stream", this::stream);
         context("/plots/", this::plot);
         server.start();
@@ -127,6 +130,48 @@ public final class Inspector implements AutoCloseable {
     /** Where refused requests are logged (default: stderr). */
     public void logRefusals(java.util.function.Consumer<String> log) {
         this.refusals = log;
+    }
+
+    /** Lets the page halt, step and continue the run, and set breakpoints. */
+    public void debugger(Debugger d) {
+        this.debugger = d;
+    }
+
+    /** The debugger's state: where the run is halted (or null) and the breakpoints. */
+    private Map<String, Object> debugState() {
+        Debugger d = debugger;
+        var out = new LinkedHashMap<String, Object>();
+        out.put("available", d != null);
+        Debugger.Halt h = d == null ? null : d.halted();
+        out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason()));
+        out.put("breakpoints", d == null ? List.of() : d.breakpoints().stream().map(Breakpoint::text).toList());
+        return out;
+    }
+
+    /** {@code GET /api/debug}: the state; {@code POST /api/debug?cmd=continue|step|pause|break|delete[&spec=S]}: a command. */
+    private void debug(HttpExchange ex) throws IOException {
+        Debugger d = debugger;
+        if (ex.getRequestMethod().equals("POST")) {
+            if (d == null) {
+                send(ex, 409, "text/plain", "this run cannot halt (lockstep runs only)".getBytes(StandardCharsets.UTF_8));
+                return;
+            }
+            String cmd = query(ex).getOrDefault("cmd", ""), spec = query(ex).getOrDefault("spec", "");
+            try {
+                switch (cmd) {
+                    case "continue" -> d.resume();
+                    case "step" -> d.step();
+                    case "pause" -> d.pause();
+                    case "break" -> d.add(spec);
+                    case "delete" -> d.remove(spec);
+                    default -> throw new IllegalArgumentException("unknown command '" + cmd + "'");
+                }
+            } catch (IllegalArgumentException e) {
+                send(ex, 400, "text/plain", e.getMessage().getBytes(StandardCharsets.UTF_8));
+                return;
+            }
+        }
+        sendJson(ex, debugState());
     }
 
     /** The world the page draws under the robot: its geometry at the start (any JSON-writable value). */
@@ -315,8 +360,15 @@ public final class Inspector implements AutoCloseable {
         ex.sendResponseHeaders(200, 0);
         try (OutputStream out = ex.getResponseBody()) {
             Map<String, Long> seen = new HashMap<>();
+            String debugSeen = "";
             while (!closed) {
                 boolean sent = false;
+                String debugNow = JSON.writeValueAsString(debugState());
+                if (!debugNow.equals(debugSeen)) {
+                    debugSeen = debugNow;
+                    out.write(("event: debug\ndata: " + debugNow + "\n\n").getBytes(StandardCharsets.UTF_8));
+                    sent = true;
+                }
                 for (String name : agentNames()) {
                     MindHistory h;
                     synchronized (this) {
@@ -345,7 +397,7 @@ public final class Inspector implements AutoCloseable {
                         first = names.isEmpty() ? null : agents.get(names.get(0));
                     }
                     if (first != null) {
-                        first.awaitChange(seen.getOrDefault(names.get(0), -1L), 1000);
+                        first.awaitChange(seen.getOrDefault(names.get(0), -1L), 250);
                     } else {
                         Thread.sleep(200);
                     }
@@ -381,6 +433,12 @@ public final class Inspector implements AutoCloseable {
             }
         }
         return out;
+    }
+
+    private static byte[] resource(String name) throws IOException {
+        try (InputStream in = Inspector.class.getResourceAsStream(name)) {
+            return in.readAllBytes();
+        }
     }
 
     private static void sendJson(HttpExchange ex, Object value) throws IOException {

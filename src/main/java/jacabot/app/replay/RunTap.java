@@ -102,6 +102,14 @@ public final class RunTap implements Closeable {
         return this;
     }
 
+    /** As {@link #debugger(jacabot.app.inspector.Debugger)}, also driven from {@code inspector}'s page (if not null). */
+    public RunTap debugger(Inspector inspector, jacabot.app.inspector.Debugger d) {
+        if (inspector != null) {
+            inspector.debugger(d);
+        }
+        return debugger(d);
+    }
+
     private RobotView robotView() {
         return view(world, robot, lastCommands);
     }
