@@ -40,6 +40,22 @@ final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--frames", paramLabel = "N", description = "headless: render N frames evenly over the run into DIR/frames/")
     private int frames;
 
+    @Option(names = "--what-if", paramLabel = "T", description = "a new run, the same as this one up to T (90s, 2m), "
+            + "then with --agent's plans instead of the agent's; written into --out")
+    private String whatIf;
+
+    @Option(names = "--agent", paramLabel = "FILE", description = "with --what-if: the edited agent")
+    private Path agent;
+
+    @Option(names = "--world", paramLabel = "FILE", description = "with --what-if: the run's world file (default: the experiment's)")
+    private Path world;
+
+    @Option(names = "--duration", paramLabel = "D", description = "with --what-if: how long the new run goes (default: as long as this one)")
+    private String duration;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "with --what-if: where it goes (default DIR-whatif-T)")
+    private Path outDir;
+
     @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
@@ -47,6 +63,9 @@ final class ReplayCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
         err = ConsoleStreams.of(commandSpec.commandLine().getErr());
+        if (whatIf != null) {
+            return WhatIfRun.run(dir, whatIf, agent, world, duration, outDir, out, err);
+        }
         boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
         if (!window && inspectorOptions.asked()) {
             try {

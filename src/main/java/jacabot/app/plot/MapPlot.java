@@ -56,7 +56,7 @@ public final class MapPlot {
 
     /** Draws the tracks and spots over {@code start}'s geometry. */
     public static BufferedImage draw(WorldSnapshot start, List<Track> tracks, List<Spot> spots, String title, int size) {
-        BufferedImage img = new BufferedImage(size, size + 56, BufferedImage.TYPE_INT_RGB);
+        BufferedImage img = new BufferedImage(size, size + 80, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         try {
             WorldSnapshot world = background(start);
@@ -90,28 +90,28 @@ public final class MapPlot {
                 g.draw(new Ellipse2D.Double(p[0] - 5, p[1] - 5, 10, 10));
                 legend.putIfAbsent("\u25cf " + s.kind(), c);
             }
-            legend(g, legend, img.getWidth());
+            legend(g, legend, img.getWidth(), img.getHeight());
         } finally {
             g.dispose();
         }
         return img;
     }
 
-    private static void legend(Graphics2D g, Map<String, Color> entries, int width) {
+    /** The legend in one row under the arena, above the status line: it never hides a corner of the world. */
+    private static void legend(Graphics2D g, Map<String, Color> entries, int width, int height) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        int w = 0;
-        for (String s : entries.keySet()) {
-            w = Math.max(w, g.getFontMetrics().stringWidth(s));
-        }
-        int x = width - w - 34, y = 30;
-        g.setColor(new Color(0, 0, 0, 170));
-        g.fillRect(x - 4, y - 2, w + 30, entries.size() * 15 + 4);
+        int x = 26, y = height - 40;
         for (var e : entries.entrySet()) {
+            int w = g.getFontMetrics().stringWidth(e.getKey());
+            if (x + w + 24 > width) {
+                x = 26;
+                y += 14;
+            }
             g.setColor(e.getValue());
-            g.fillRect(x, y + 3, 14, 8);
+            g.fillRect(x, y - 8, 14, 8);
             g.setColor(Color.WHITE);
-            g.drawString(e.getKey(), x + 20, y + 11);
-            y += 15;
+            g.drawString(e.getKey(), x + 18, y);
+            x += w + 32;
         }
     }
 }

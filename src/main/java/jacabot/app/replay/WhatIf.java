@@ -83,9 +83,9 @@ public final class WhatIf {
         if (Files.isRegularFile(file)) {
             return AgentSource.file(file);
         }
-        AgentSource packaged = AgentSource.packaged(experiment);
-        if (packaged.name().equals(header.agentFile())) {
-            return packaged;
+        // `jacabot experiment` names its packaged agent by its place in the repository
+        if (header.agentFile().equals("agents/src/main/asl/" + experiment.id() + ".asl")) {
+            return AgentSource.packaged(experiment, header.agentFile());
         }
         throw new IOException("the recorded run's agent '" + header.agentFile() + "' is not here (run from the folder "
                 + "the run was started in)");

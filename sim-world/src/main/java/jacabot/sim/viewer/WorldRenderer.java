@@ -108,12 +108,8 @@ public final class WorldRenderer {
             g.drawString(label, -g.getFontMetrics().stringWidth(label) / 2f, 0);
             g.setTransform(saved);
         }
-        g.drawString("x (m) \u2192", 2, 11);
-        AffineTransform saved = g.getTransform();
-        g.translate(11, 24);
-        g.rotate(Math.PI / 2);
-        g.drawString("z (m) \u2192", 0, 0);
-        g.setTransform(saved);
+        double[] bottom = v.toScreen(-hw, hd);
+        g.drawString("x (m) \u2192 right,  z (m) \u2193 down", (float) bottom[0], (float) bottom[1] + 18);
     }
 
     private static double tickStep(double side) {
