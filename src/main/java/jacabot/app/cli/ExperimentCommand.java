@@ -154,8 +154,17 @@ final class ExperimentCommand implements Callable<Integer> {
             log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
-            var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
-            report(log, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            // as BaselineRunner.execute, with the step log an agent's run writes: replayed and plotted alike
+            SimWorld baselineWorld = jacabot.robot.baseline.BaselineRunner.load(worldFile, runSeed);
+            var recorder = jacabot.robot.run.RunRecorder.attach(baselineWorld, experiment.robot());
+            var controller = jacabot.robot.baseline.BaselineRunner.create(experiment, baselineWorld, runSeed, recorder::note);
+            try (var steps = jacabot.app.replay.BaselineTap.attach(baselineWorld, outDir, experiment,
+                    jacabot.robot.baseline.BaselineRunner.CONTROLLER)) {
+                controller.runFor(seconds);
+            }
+            report(log, recorder.summary(jacabot.robot.baseline.BaselineRunner.CONTROLLER), recorder, outDir,
+                    (System.nanoTime() - t0) / 1e9, -1);
+            jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();

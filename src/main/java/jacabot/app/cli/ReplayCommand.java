@@ -124,6 +124,8 @@ final class ReplayCommand implements Callable<Integer> {
             out.printf("The recorded run, %.1f s to %.1f s, is served at %s ; %s%n", archive.firstTimeMs() / 1000.0,
                     archive.lastTimeMs() / 1000.0, inspector.address(),
                     System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
+            out.flush();
+            commandSpec.commandLine().getOut().flush(); // the address now, not when the process ends
             if (System.console() != null) {
                 System.in.read();
             } else {
