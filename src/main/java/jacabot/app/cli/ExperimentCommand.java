@@ -81,6 +81,10 @@ final class ExperimentCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
+    @Option(names = "--break", paramLabel = "SPEC", description = "lockstep: halt after the control step where SPEC "
+            + "holds, print the mind and read commands (label:NAME, +!goal, -belief(_), belief:PATTERN, failure, t=60s)")
+    private List<String> breaks = new java.util.ArrayList<>();
+
     @picocli.CommandLine.Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -153,8 +157,17 @@ final class ExperimentCommand implements Callable<Integer> {
             log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
-            var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
-            report(log, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            // as BaselineRunner.execute, with the step log an agent's run writes: replayed and plotted alike
+            SimWorld baselineWorld = jacabot.robot.baseline.BaselineRunner.load(worldFile, runSeed);
+            var recorder = jacabot.robot.run.RunRecorder.attach(baselineWorld, experiment.robot());
+            var controller = jacabot.robot.baseline.BaselineRunner.create(experiment, baselineWorld, runSeed, recorder::note);
+            try (var steps = jacabot.app.replay.BaselineTap.attach(baselineWorld, outDir, experiment,
+                    jacabot.robot.baseline.BaselineRunner.CONTROLLER)) {
+                controller.runFor(seconds);
+            }
+            report(log, recorder.summary(jacabot.robot.baseline.BaselineRunner.CONTROLLER), recorder, outDir,
+                    (System.nanoTime() - t0) / 1e9, -1);
+            jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
@@ -179,6 +192,14 @@ final class ExperimentCommand implements Callable<Integer> {
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
         var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
+        if (!breaks.isEmpty() || inspector != null) {
+            try { // the page can halt the run too
+                tap.debugger(inspector, breaks.isEmpty() ? new jacabot.app.inspector.Debugger()
+                        : jacabot.app.inspector.DebugConsole.start(breaks, System.in, System.out));
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--break: " + e.getMessage());
+            }
+        }
         var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
         long[] nextReport = {10_000};
@@ -338,6 +359,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
                     ConsoleLog.lines(log::result));
+            tap.inspect(inspector);
             var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
             for (String name : run.mas().agentNames()) {
                 boolean robot = name.equals("robot");

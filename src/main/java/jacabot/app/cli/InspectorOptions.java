@@ -20,6 +20,10 @@ final class InspectorOptions {
             description = "the inspector's port (default " + Inspector.DEFAULT_PORT + ", or any free port when taken)")
     int port;
 
+    @Option(names = "--inspector-address", paramLabel = "HOST",
+            description = "the address the inspector listens on (default 127.0.0.1, loopback only; its token guards it anywhere)")
+    String address;
+
     /** {@return whether to run the inspector, given the command's default} */
     boolean wanted(boolean byDefault) {
         return inspector != null ? inspector : byDefault;
@@ -35,9 +39,9 @@ final class InspectorOptions {
         if (!wanted(byDefault)) {
             return null;
         }
-        Inspector i = Inspector.start(port);
+        Inspector i = Inspector.start(address, port);
         i.title(title);
-        out.println("Mind inspector: " + i.uri());
+        out.println("Mind inspector: " + i.address());
         return i;
     }
 
@@ -47,7 +51,7 @@ final class InspectorOptions {
      */
     void linger(Inspector i, PrintStream out) throws IOException {
         if (i != null && asked() && System.console() != null) {
-            out.println("The inspector keeps the run's history at " + i.uri() + " ; press Enter to quit.");
+            out.println("The inspector keeps the run's history at " + i.address() + " ; press Enter to quit.");
             System.in.read();
         }
     }

@@ -7,9 +7,10 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
-/** {@code jacabot plot runs/X}: (re)draws a recorded run's plots next to its trajectory.png. */
+/** {@code jacabot plot runs/X}: (re)draws a recorded run's plots next to its trajectory.png; with several runs, overlays them. */
 @Command(name = "plot", mixinStandardHelpOptions = true,
-        description = "Draws a recorded run's plots (battery, speed, events, latency) as PNG in its folder.")
+        description = {"Draws a recorded run's plots (battery, speed, events, latency) as PNG in its folder.",
+                "With several runs (an agent's and a baseline's, two seeds...): their trajectories overlaid in one PNG (--out)."})
 final class PlotCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec commandSpec;
@@ -17,20 +18,30 @@ final class PlotCommand implements Callable<Integer> {
     private java.io.PrintStream out;
     private java.io.PrintStream err;
 
-    @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED)")
-    private Path dir;
+    @Parameters(arity = "1..*", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED); several to overlay them")
+    private java.util.List<Path> dirs;
+
+    @picocli.CommandLine.Option(names = "--out", paramLabel = "PNG", description = "several runs: the overlay's file (default overlay.png)")
+    private Path overlay = Path.of("overlay.png");
 
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
         err = ConsoleStreams.of(commandSpec.commandLine().getErr());
-        if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
-            err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
-                    + " (written by every headless `jacabot experiment` run)");
-            return 2;
+        for (Path dir : dirs) {
+            if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
+                err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
+                        + " (written by every `jacabot experiment` run, --baseline included)");
+                return 2;
+            }
         }
         try {
-            RunPlots.writeAll(dir, out);
+            if (dirs.size() > 1) {
+                RunPlots.overlay(dirs, overlay);
+                out.println("Overlay of " + dirs.size() + " runs: " + overlay);
+                return 0;
+            }
+            RunPlots.writeAll(dirs.get(0), out);
         } catch (java.io.IOException e) {
             err.println("error: " + e.getMessage());
             return 1;

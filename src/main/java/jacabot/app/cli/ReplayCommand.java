@@ -40,6 +40,22 @@ final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--frames", paramLabel = "N", description = "headless: render N frames evenly over the run into DIR/frames/")
     private int frames;
 
+    @Option(names = "--what-if", paramLabel = "T", description = "a new run, the same as this one up to T (90s, 2m), "
+            + "then with --agent's plans instead of the agent's; written into --out")
+    private String whatIf;
+
+    @Option(names = "--agent", paramLabel = "FILE", description = "with --what-if: the edited agent")
+    private Path agent;
+
+    @Option(names = "--world", paramLabel = "FILE", description = "with --what-if: the run's world file (default: the experiment's)")
+    private Path world;
+
+    @Option(names = "--duration", paramLabel = "D", description = "with --what-if: how long the new run goes (default: as long as this one)")
+    private String duration;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "with --what-if: where it goes (default DIR-whatif-T)")
+    private Path outDir;
+
     @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
@@ -47,6 +63,18 @@ final class ReplayCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
         err = ConsoleStreams.of(commandSpec.commandLine().getErr());
+        if (whatIf != null) {
+            return WhatIfRun.run(dir, whatIf, agent, world, duration, outDir, out, err);
+        }
+        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
+        if (!window && inspectorOptions.asked()) {
+            try {
+                return serve(); // reads the step log on demand, not all of it into memory
+            } catch (IOException e) {
+                err.println("error: " + e.getMessage());
+                return 2;
+            }
+        }
         Replay replay;
         try {
             replay = Replay.open(dir);
@@ -58,7 +86,6 @@ final class ReplayCommand implements Callable<Integer> {
             err.println("error: " + dir + ": the step log has no step");
             return 2;
         }
-        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
         if (!window) {
             return headlessReplay(replay);
         }
@@ -84,6 +111,27 @@ final class ReplayCommand implements Callable<Integer> {
         });
         closed.await();
         if (inspector != null) {
+            inspector.close();
+        }
+        return 0;
+    }
+
+    /** Headless with {@code --inspector}: the recorded run in the inspector's page, read on demand, until Enter or Ctrl-C. */
+    private int serve() throws Exception {
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        try {
+            var archive = jacabot.app.replay.StepArchive.show(inspector, dir);
+            out.printf("The recorded run, %.1f s to %.1f s, is served at %s ; %s%n", archive.firstTimeMs() / 1000.0,
+                    archive.lastTimeMs() / 1000.0, inspector.address(),
+                    System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
+            out.flush();
+            commandSpec.commandLine().getOut().flush(); // the address now, not when the process ends
+            if (System.console() != null) {
+                System.in.read();
+            } else {
+                new CountDownLatch(1).await();
+            }
+        } finally {
             inspector.close();
         }
         return 0;
@@ -141,16 +189,7 @@ final class ReplayCommand implements Callable<Integer> {
     }
 
     private void printMind(Replay replay, int i) {
-        var f = replay.frames().get(i);
-        var m = f.mind();
-        out.printf("%nMind at t=%.2f s (cycle %d):%n  beliefs:%n", f.timeMs() / 1000.0, m.cycle());
-        m.beliefs().forEach(b -> out.println("    " + b.text()));
-        out.println("  intentions:");
-        for (MindState.IntentionView iv : m.intentions()) {
-            out.println("    intention " + iv.id() + " (" + iv.state() + ")");
-            iv.stack().forEach(im -> out.println("      " + im.plan() + "   <- " + im.current()
-                    + (im.rest().isEmpty() ? "" : "; " + im.rest())));
-        }
-        out.println("  events: " + (m.events().isEmpty() ? "none" : String.join(", ", m.events())));
+        out.println();
+        jacabot.app.inspector.MindText.print(replay.frames().get(i).mind(), out);
     }
 }

@@ -24,17 +24,25 @@ import java.util.concurrent.Executors;
 
 /**
  * The mind inspector: a web page on loopback showing each agent's beliefs, events, intentions,
- * plan library and deliberation trace, and for a robot its body and the middleware's commands,
- * as Jason's web mind inspector does. Served by the JDK's {@code com.sun.net.httpserver}; the page
- * follows the run through server-sent events ({@code /api/stream}) and reads the past through
- * {@code /api/state?agent=A&frame=K}. The agents' threads only put immutable frames into each
- * {@link MindHistory}; the server's threads only read them.
+ * plan library and deliberation trace, and for a robot its body, the middleware's commands and a
+ * drawing of the arena at the same instant, as Jason's web mind inspector does. Served by the
+ * JDK's {@code com.sun.net.httpserver}; the page follows the run through server-sent events
+ * ({@code /api/stream}: every kept frame with the deliberation up to it, nothing polled) and reads
+ * the past through {@code /api/state?agent=A&t=MS}. The agents' threads only put immutable frames
+ * into each {@link MindHistory}; the server's threads only read them.
+ *
+ * <p>Guarded as Jupyter is: every request must carry the run's secret token (the address printed
+ * at the start holds it: {@code ?token=...}; the page then keeps it in a cookie), come from no
+ * other web page (its {@code Origin}, when sent, is the page's own) and name the inspector's own
+ * address as its {@code Host} (no DNS rebinding). Anything else is refused with 403 and logged.
  */
 public final class Inspector implements AutoCloseable {
     /** The port tried first (Jason's inspector uses 3272); when taken, any free port. */
     public static final int DEFAULT_PORT = 3273;
-    /** Frames kept per agent. */
-    public static final int HISTORY = 2000;
+    /** Frames kept in memory per agent (older ones are read from the step log when there is one). */
+    public static final int HISTORY = 500;
+    /** Selections shown in the deliberation table. */
+    static final int SELECTIONS = 60;
     /** At most this many pushes per second per page (the run may be much faster than real time). */
     static final int PUSHES_PER_SECOND = 5;
 
@@ -42,6 +50,10 @@ public final class Inspector implements AutoCloseable {
 
     private final HttpServer server;
     private final ExecutorService threads;
+    private final String token = newToken();
+    private volatile java.util.function.Consumer<String> refusals = System.err::println;
+    private volatile Object world;
+    private volatile Debugger debugger;
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
     private volatile Path plotDir;
     private volatile String title = "jacabot";
@@ -55,13 +67,18 @@ public final class Inspector implements AutoCloseable {
             return t;
         });
         server.setExecutor(threads);
-        server.createContext("/", this::page);
-        server.createContext("/api/agents", ex -> sendJson(ex, agentNames()));
-        server.createContext("/api/state", this::state);
-        server.createContext("/api/history", this::history);
-        server.createContext("/api/plans", ex -> sendJson(ex, historyOf(ex).map(MindHistory::plans).orElse(List.of())));
-        server.createContext("/api/stream", this::stream);
-        server.createContext("/plots/", this::plot);
+        context("/", this::page);
+        context("/help.html", ex -> send(ex, 200, "text/html; charset=utf-8", resource("help.html")));
+        context("/api/agents", ex -> sendJson(ex, agentNames()));
+        context("/api/state", this::state);
+        context("/api/history", this::history);
+        context("/api/plans", ex -> sendJson(ex, historyOf(ex).map(MindHistory::plans).orElse(List.of())));
+        context("/api/world", ex -> sendJson(ex, world));
+        context("/api/path", ex -> withHistory(ex, (h, t) -> h.pathUpTo(t)));
+        context("/api/selections", ex -> withHistory(ex, (h, t) -> h.selectionsUpTo(t, SELECTIONS)));
+        context("/api/debug", this::debug);
+        context("/api/stream", this::stream);
+        context("/plots/", this::plot);
         server.start();
     }
 
@@ -71,7 +88,15 @@ public final class Inspector implements AutoCloseable {
      * @param port the port, or 0 for {@link #DEFAULT_PORT} if free and any free port otherwise
      */
     public static Inspector start(int port) throws IOException {
-        InetAddress loopback = InetAddress.getLoopbackAddress();
+        return start(null, port);
+    }
+
+    /**
+     * Starts an inspector on {@code host} (null: loopback; another address only when the user
+     * asks for it, e.g. to look from another machine: the token still guards it).
+     */
+    public static Inspector start(String host, int port) throws IOException {
+        InetAddress loopback = host == null ? InetAddress.getLoopbackAddress() : InetAddress.getByName(host);
         if (port == 0) {
             try {
                 return new Inspector(HttpServer.create(new InetSocketAddress(loopback, DEFAULT_PORT), 0));
@@ -87,9 +112,82 @@ public final class Inspector implements AutoCloseable {
         return new Inspector(HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 0));
     }
 
-    /** {@return the page's address} */
+    /** {@return the page's base address, without the token: requests to it alone are refused} */
     public URI uri() {
-        return URI.create("http://127.0.0.1:" + server.getAddress().getPort() + "/");
+        return URI.create("http://" + hostName() + ":" + server.getAddress().getPort() + "/");
+    }
+
+    /** {@return the page's address with its secret token, to print for the user} */
+    public URI address() {
+        return URI.create(uri() + "?token=" + token);
+    }
+
+    /** {@return {@code path} (no leading slash, may have a query) on this inspector, with the token} */
+    public String url(String path) {
+        return uri() + path + (path.contains("?") ? "&" : "?") + "token=" + token;
+    }
+
+    /** Where refused requests are logged (default: stderr). */
+    public void logRefusals(java.util.function.Consumer<String> log) {
+        this.refusals = log;
+    }
+
+    /** Lets the page halt, step and continue the run, and set breakpoints. */
+    public void debugger(Debugger d) {
+        this.debugger = d;
+    }
+
+    /** The debugger's state: where the run is halted (or null) and the breakpoints. */
+    private Map<String, Object> debugState() {
+        Debugger d = debugger;
+        var out = new LinkedHashMap<String, Object>();
+        out.put("available", d != null);
+        Debugger.Halt h = d == null ? null : d.halted();
+        out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason()));
+        out.put("breakpoints", d == null ? List.of() : d.breakpoints().stream().map(Breakpoint::text).toList());
+        return out;
+    }
+
+    /** {@code GET /api/debug}: the state; {@code POST /api/debug?cmd=continue|step|pause|break|delete[&spec=S]}: a command. */
+    private void debug(HttpExchange ex) throws IOException {
+        Debugger d = debugger;
+        if (ex.getRequestMethod().equals("POST")) {
+            if (d == null) {
+                send(ex, 409, "text/plain", "this run cannot halt (lockstep runs only)".getBytes(StandardCharsets.UTF_8));
+                return;
+            }
+            String cmd = query(ex).getOrDefault("cmd", ""), spec = query(ex).getOrDefault("spec", "");
+            try {
+                switch (cmd) {
+                    case "continue" -> d.resume();
+                    case "step" -> d.step();
+                    case "pause" -> d.pause();
+                    case "break" -> d.add(spec);
+                    case "delete" -> d.remove(spec);
+                    default -> throw new IllegalArgumentException("unknown command '" + cmd + "'");
+                }
+            } catch (IllegalArgumentException e) {
+                send(ex, 400, "text/plain", e.getMessage().getBytes(StandardCharsets.UTF_8));
+                return;
+            }
+        }
+        sendJson(ex, debugState());
+    }
+
+    /** The world the page draws under the robot: its geometry at the start (any JSON-writable value). */
+    public void world(Object start) {
+        this.world = start;
+    }
+
+    private String hostName() {
+        InetAddress a = server.getAddress().getAddress();
+        return a.isLoopbackAddress() || a.isAnyLocalAddress() ? "127.0.0.1" : a.getHostAddress();
+    }
+
+    private static String newToken() {
+        byte[] b = new byte[24];
+        new java.security.SecureRandom().nextBytes(b);
+        return java.util.HexFormat.of().formatHex(b);
     }
 
     /** Adds an agent; its frames go into the returned history. */
@@ -121,6 +219,65 @@ public final class Inspector implements AutoCloseable {
         threads.shutdownNow();
     }
 
+    // ---- the guard -------------------------------------------------------------------------------------
+
+    private void context(String path, com.sun.net.httpserver.HttpHandler handler) {
+        server.createContext(path, ex -> {
+            String why = refusal(ex);
+            if (why != null) {
+                refusals.accept("inspector: refused " + ex.getRequestMethod() + " " + ex.getRequestURI().getPath() + " from "
+                        + ex.getRemoteAddress().getAddress().getHostAddress() + ": " + why);
+                send(ex, 403, "text/plain", ("403 forbidden: " + why + "\n").getBytes(StandardCharsets.UTF_8));
+                return;
+            }
+            if (token.equals(query(ex).get("token"))) {
+                // the page's own later requests (images, fetches) carry it as a cookie
+                ex.getResponseHeaders().add("Set-Cookie", cookieName() + "=" + token + "; Path=/; HttpOnly; SameSite=Strict");
+            }
+            handler.handle(ex);
+        });
+    }
+
+    /** {@return why a request is refused, or null: no token or another one, a foreign Origin, a foreign Host} */
+    private String refusal(HttpExchange ex) {
+        int port = server.getAddress().getPort();
+        String origin = ex.getRequestHeaders().getFirst("Origin");
+        if (origin != null && !origin.equals("http://" + hostName() + ":" + port) && !origin.equals("http://localhost:" + port)) {
+            return "request from another origin (" + origin + ")";
+        }
+        String host = ex.getRequestHeaders().getFirst("Host");
+        if (host != null && !host.equals(hostName() + ":" + port) && !host.equals("localhost:" + port)) {
+            return "request for another host (" + host + ")";
+        }
+        String given = query(ex).get("token");
+        if (given == null) {
+            given = cookie(ex);
+        }
+        if (given == null) {
+            return "no token (open the address printed at the start, with its ?token=...)";
+        }
+        if (!java.security.MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8), token.getBytes(StandardCharsets.UTF_8))) {
+            return "wrong token (another run's?)";
+        }
+        return null;
+    }
+
+    private String cookieName() {
+        return "jacabot-inspector-" + server.getAddress().getPort();
+    }
+
+    private String cookie(HttpExchange ex) {
+        for (String header : ex.getRequestHeaders().getOrDefault("Cookie", List.of())) {
+            for (String c : header.split(";")) {
+                String[] kv = c.trim().split("=", 2);
+                if (kv.length == 2 && kv[0].equals(cookieName())) {
+                    return kv[1];
+                }
+            }
+        }
+        return null;
+    }
+
     // ---- handlers ---------------------------------------------------------------------------------
 
     private synchronized List<String> agentNames() {
@@ -141,7 +298,8 @@ public final class Inspector implements AutoCloseable {
             return;
         }
         try (InputStream in = Inspector.class.getResourceAsStream("inspector.html")) {
-            String html = new String(in.readAllBytes(), StandardCharsets.UTF_8).replace("{{title}}", escapeHtml(title));
+            String html = new String(in.readAllBytes(), StandardCharsets.UTF_8).replace("{{title}}", escapeHtml(title))
+                    .replace("{{token}}", token);
             send(ex, 200, "text/html; charset=utf-8", html.getBytes(StandardCharsets.UTF_8));
         }
     }
@@ -153,14 +311,33 @@ public final class Inspector implements AutoCloseable {
             return;
         }
         String at = query(ex).get("frame");
+        String t = query(ex).get("t");
         MindHistory.Frame f;
         try {
-            f = at == null ? h.get().latest() : h.get().frame(Long.parseLong(at));
+            f = t != null ? h.get().at(Long.parseLong(t)) : at == null ? h.get().latest() : h.get().frame(Long.parseLong(at));
         } catch (NumberFormatException e) {
-            send(ex, 400, "text/plain", ("bad frame '" + at + "'").getBytes(StandardCharsets.UTF_8));
+            send(ex, 400, "text/plain", ("bad frame or time '" + (t != null ? t : at) + "'").getBytes(StandardCharsets.UTF_8));
             return;
         }
         sendJson(ex, f);
+    }
+
+    /** Answers {@code what(history, t)} for the agent and time ({@code t}, ms; default the latest) of the query. */
+    private void withHistory(HttpExchange ex, java.util.function.BiFunction<MindHistory, Long, Object> what) throws IOException {
+        var h = historyOf(ex);
+        if (h.isEmpty()) {
+            send(ex, 404, "text/plain", "no such agent".getBytes(StandardCharsets.UTF_8));
+            return;
+        }
+        String t = query(ex).get("t");
+        long time;
+        try {
+            time = t == null ? Long.MAX_VALUE : Long.parseLong(t);
+        } catch (NumberFormatException e) {
+            send(ex, 400, "text/plain", ("bad time '" + t + "'").getBytes(StandardCharsets.UTF_8));
+            return;
+        }
+        sendJson(ex, what.apply(h.get(), time));
     }
 
     private void history(HttpExchange ex) throws IOException {
@@ -171,6 +348,7 @@ public final class Inspector implements AutoCloseable {
         }
         var out = new HashMap<String, Object>();
         out.put("timeline", h.get().timeline());
+        out.put("range", h.get().range());
         out.put("selections", h.get().selections());
         sendJson(ex, out);
     }
@@ -182,18 +360,28 @@ public final class Inspector implements AutoCloseable {
         ex.sendResponseHeaders(200, 0);
         try (OutputStream out = ex.getResponseBody()) {
             Map<String, Long> seen = new HashMap<>();
+            String debugSeen = "";
             while (!closed) {
                 boolean sent = false;
+                String debugNow = JSON.writeValueAsString(debugState());
+                if (!debugNow.equals(debugSeen)) {
+                    debugSeen = debugNow;
+                    out.write(("event: debug\ndata: " + debugNow + "\n\n").getBytes(StandardCharsets.UTF_8));
+                    sent = true;
+                }
                 for (String name : agentNames()) {
                     MindHistory h;
                     synchronized (this) {
                         h = agents.get(name);
                     }
                     long v = h.version();
-                    if (seen.getOrDefault(name, -1L) != v && h.latest() != null) {
+                    MindHistory.Frame latest = h.latest();
+                    if (seen.getOrDefault(name, -1L) != v && latest != null) {
                         seen.put(name, v);
-                        out.write(("event: frame\ndata: " + JSON.writeValueAsString(Map.of("agent", name, "frame", h.latest()))
-                                + "\n\n").getBytes(StandardCharsets.UTF_8));
+                        long t = latest.mind().timeMs();
+                        var push = Map.of("agent", name, "frame", latest, "range", h.range(), "selections",
+                                h.selectionsUpTo(t, SELECTIONS));
+                        out.write(("event: frame\ndata: " + JSON.writeValueAsString(push) + "\n\n").getBytes(StandardCharsets.UTF_8));
                         sent = true;
                     }
                 }
@@ -209,7 +397,7 @@ public final class Inspector implements AutoCloseable {
                         first = names.isEmpty() ? null : agents.get(names.get(0));
                     }
                     if (first != null) {
-                        first.awaitChange(seen.getOrDefault(names.get(0), -1L), 1000);
+                        first.awaitChange(seen.getOrDefault(names.get(0), -1L), 250);
                     } else {
                         Thread.sleep(200);
                     }
@@ -245,6 +433,12 @@ public final class Inspector implements AutoCloseable {
             }
         }
         return out;
+    }
+
+    private static byte[] resource(String name) throws IOException {
+        try (InputStream in = Inspector.class.getResourceAsStream(name)) {
+            return in.readAllBytes();
+        }
     }
 
     private static void sendJson(HttpExchange ex, Object value) throws IOException {

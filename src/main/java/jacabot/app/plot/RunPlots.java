@@ -38,6 +38,8 @@ public final class RunPlots {
     public static final List<String> FILES = List.of("battery.png", "speed.png", "events.png", "latency.png");
 
     private static final Pattern EVENT = Pattern.compile("t=([0-9.]+) (.*)");
+    /** The mark action, with or without arguments or a namespace ({@code mark}, {@code mark(P)}, {@code .mw::mark}). */
+    static final Pattern MARK_ACTION = Pattern.compile("(\\S*::)?mark(\\(.*\\))?");
 
     private RunPlots() {
     }
@@ -67,7 +69,9 @@ public final class RunPlots {
             var marks = marks(outDir, series);
             battery(series, marks).ifPresent(c -> save(c, outDir, "battery", written));
             save(speed(series), outDir, "speed", written);
-            save(events(series, marks), outDir, "events", written);
+            javax.imageio.ImageIO.write(events(series, marks, outDir.getFileName() + ""), "png",
+                    outDir.resolve("events.png").toFile());
+            written.add("events.png");
         }
         Path latency = outDir.resolve(LATENCY);
         if (Files.isRegularFile(latency)) {
@@ -97,12 +101,16 @@ public final class RunPlots {
         final List<Double> right = new ArrayList<>();
         final List<Double> speed = new ArrayList<>();
         final List<MindState.Selection> selections = new ArrayList<>();
+        /** Times (s) at which an intention was about to run the {@code mark} action. */
+        final List<Double> markActions = new ArrayList<>();
+        jacabot.sim.engine.WorldSnapshot start;
         double width = 1;
         double depth = 1;
 
         static Series read(Path file) throws IOException {
             var s = new Series();
             try (var in = new StepLog.Reader(file)) {
+                s.start = in.header().start();
                 s.width = in.header().start().arena().width();
                 s.depth = in.header().start().arena().depth();
                 StepLog.Step step;
@@ -123,9 +131,31 @@ public final class RunPlots {
                     if (step.mind() != null && step.mind().selections() != null) {
                         s.selections.addAll(step.mind().selections());
                     }
+                    if (step.mind() != null && step.mind().intentions() != null && aboutToMark(step.mind().intentions())) {
+                        s.markActions.add(t);
+                    }
                 }
             }
             return s;
+        }
+
+        /** The {@code mark} action about to run on top of an intention (the thesis' agent marks its position). */
+        private static boolean aboutToMark(List<MindState.IntentionView> intentions) {
+            for (MindState.IntentionView i : intentions) {
+                if (!i.stack().isEmpty() && MARK_ACTION.matcher(i.stack().get(0).current()).matches()) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /** The trajectory as {x, z} points. */
+        List<double[]> points() {
+            var out = new ArrayList<double[]>(x.size());
+            for (int i = 0; i < x.size(); i++) {
+                out.add(new double[] {x.get(i), z.get(i)});
+            }
+            return out;
         }
 
         int indexAt(double time) {
@@ -158,18 +188,22 @@ public final class RunPlots {
                         : what.contains("deliver") ? "delivery"
                         : what.startsWith("contact") ? "obstacle"
                         : what.startsWith("reached charger") ? "recharge"
-                        : what.startsWith("left charger") ? "charged" : null;
+                        : what.startsWith("left charger") ? "charged"
+                        : what.startsWith("world:") ? "world" : null;
                 if (kind != null) {
                     out.add(new Mark(t, kind, what));
                 }
             }
         }
+        for (double t : s.markActions) {
+            out.add(new Mark(t, "mark", "mark"));
+        }
         for (MindState.Selection sel : s.selections) {
             String e = sel.event().toLowerCase(Locale.ROOT);
             String head = e.replaceAll("[\\[(].*", "");
-            String kind = head.contains("battery") ? "low battery"
-                    : head.startsWith("-charg") || head.contains("resum") || head.contains("restor") ? "resume"
-                    : head.contains("mark") ? "mark" : null;
+            String kind = head.startsWith("-!") ? "failure"
+                    : head.contains("battery") ? "low battery"
+                    : head.startsWith("-charg") || head.contains("resum") || head.contains("restor") ? "resume" : null;
             if (kind != null) {
                 out.add(new Mark(sel.timeMs() / 1000.0, kind, sel.event()));
             }
@@ -210,29 +244,28 @@ public final class RunPlots {
         return c;
     }
 
-    static XYChart events(Series s, List<Mark> marks) {
-        XYChart c = new XYChartBuilder().width(700).height(700).title("Trajectory and events").xAxisTitle("x (m)")
-                .yAxisTitle("z (m)").build();
-        c.getStyler().setXAxisMin(-s.width / 2).setXAxisMax(s.width / 2).setYAxisMin(-s.depth / 2).setYAxisMax(s.depth / 2);
-        c.addSeries("trajectory", s.x, s.z).setMarker(SeriesMarkers.NONE).setLineColor(new Color(120, 120, 200));
-        Map<String, List<double[]>> byKind = new LinkedHashMap<>();
+    /** The trajectory and the marks over the world's geometry, in the renderer's orientation (x right, z down). */
+    static java.awt.image.BufferedImage events(Series s, List<Mark> marks, String name) {
+        var spots = new ArrayList<MapPlot.Spot>();
         for (Mark m : marks) {
             int i = s.indexAt(m.t());
             if (i < s.x.size()) {
-                byKind.computeIfAbsent(m.kind(), k -> new ArrayList<>()).add(new double[] {s.x.get(i), s.z.get(i)});
+                spots.add(new MapPlot.Spot(m.kind(), s.x.get(i), s.z.get(i)));
             }
         }
-        byKind.forEach((kind, points) -> {
-            var xs = new ArrayList<Double>();
-            var zs = new ArrayList<Double>();
-            points.forEach(p -> {
-                xs.add(p[0]);
-                zs.add(p[1]);
-            });
-            c.addSeries(kind, xs, zs).setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
-        });
-        c.getStyler().setMarkerSize(10);
-        return c;
+        return MapPlot.draw(s.start, List.of(new MapPlot.Track(name, s.points())), spots, "trajectory and events", 700);
+    }
+
+    /** Overlays several runs' trajectories over the first one's world: {@code jacabot plot RUN_A RUN_B}. */
+    public static void overlay(List<Path> runs, Path png) throws IOException {
+        var tracks = new ArrayList<MapPlot.Track>();
+        jacabot.sim.engine.WorldSnapshot start = null;
+        for (Path run : runs) {
+            Series s = Series.read(run.resolve(StepLog.FILE));
+            start = start == null ? s.start : start;
+            tracks.add(new MapPlot.Track(run.getFileName().toString(), s.points()));
+        }
+        javax.imageio.ImageIO.write(MapPlot.draw(start, tracks, List.of(), "trajectories", 700), "png", png.toFile());
     }
 
     static CategoryChart latency(Path csv) throws IOException {

@@ -35,18 +35,32 @@ public final class RealTimeTap implements Closeable {
     private IOException failure;
     private boolean closed;
 
-    private RealTimeTap(SimWorld world, StepLog.Writer log) {
+    private final Path file;
+    private final StepLog.Header header;
+
+    private RealTimeTap(SimWorld world, StepLog.Writer log, Path file, StepLog.Header header) {
         this.world = world;
         this.robot = world.robots().get(0);
         this.log = log;
+        this.file = file;
+        this.header = header;
+    }
+
+    /** Shows the run in {@code inspector} (if not null): its world, and its whole past from the step log. */
+    public void inspect(jacabot.app.inspector.Inspector inspector) {
+        if (inspector != null) {
+            inspector.world(header.start());
+            RunTap.archive(inspector, log, file, header);
+        }
     }
 
     /** Opens {@code outDir}/{@value StepLog#FILE} for a run of {@code world}; call before it starts. */
     public static RealTimeTap open(SimWorld world, Path outDir, Experiment experiment, String agentFile) throws IOException {
         WorldSnapshot start = world.snapshot();
-        var log = new StepLog.Writer(outDir.resolve(StepLog.FILE), new StepLog.Header(StepLog.FORMAT, experiment.id(),
-                world.name(), world.seed(), world.controlStep(), world.robots().get(0).name(), agentFile, start));
-        return new RealTimeTap(world, log);
+        var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), world.name(), world.seed(), world.controlStep(),
+                world.robots().get(0).name(), agentFile, start);
+        var log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
+        return new RealTimeTap(world, log, outDir.resolve(StepLog.FILE), header);
     }
 
     /** {@return where the agent's sampled minds go (on the agent's thread)} */

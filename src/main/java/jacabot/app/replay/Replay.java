@@ -52,48 +52,12 @@ public final class Replay {
         StepLog.Header header;
         try (var in = new StepLog.Reader(file)) {
             header = in.header();
-            var beliefs = new LinkedHashMap<String, MindState.Belief>();
-            List<MindState.IntentionView> intentions = List.of();
-            List<String> events = List.of();
-            long cycle = 0;
-            var objects = new LinkedHashMap<String, StepLog.Moved>();
-            for (ObjectState o : header.start().objects()) {
-                if (o.movable()) {
-                    objects.put(o.id(), new StepLog.Moved(o.pose().x(), o.pose().z(), o.pose().heading(), o.carriedBy()));
-                }
-            }
+            var state = StepState.from(header);
             StepLog.Step s;
-            long seq = 0;
             while ((s = in.next()) != null) {
-                List<MindState.Selection> selections = List.of();
-                var d = s.mind();
-                if (d != null) {
-                    cycle = d.cycle();
-                    if (d.removed() != null) {
-                        d.removed().forEach(beliefs::remove);
-                    }
-                    if (d.added() != null) {
-                        d.added().forEach(b -> beliefs.put(b.text(), b));
-                    }
-                    if (d.intentions() != null) {
-                        intentions = d.intentions();
-                    }
-                    if (d.events() != null) {
-                        events = d.events();
-                    }
-                    if (d.selections() != null) {
-                        selections = d.selections();
-                    }
-                }
-                Map<String, StepLog.Moved> objs = objects;
-                if (!s.moved().isEmpty()) {
-                    objects = new LinkedHashMap<>(objects);
-                    objects.putAll(s.moved());
-                    objs = objects;
-                }
+                MindState mind = state.apply(s);
+                Map<String, StepLog.Moved> objs = state.objects();
                 trajectory.add(new Pose(s.body().x(), s.body().z(), s.body().heading()));
-                var mind = new MindState("robot", ++seq, s.timeMs(), cycle, new ArrayList<>(beliefs.values()), events,
-                        intentions, selections);
                 frames.add(new Frame(s.timeMs(), s.body(), s.commands(), s.readings(), objs, mind, trajectory.size()));
             }
         } catch (com.fasterxml.jackson.core.JsonProcessingException e) {

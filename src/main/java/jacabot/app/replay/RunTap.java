@@ -27,6 +27,7 @@ public final class RunTap implements Closeable {
     private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
+    private volatile jacabot.app.inspector.Debugger debugger;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.world = run.world();
@@ -46,13 +47,27 @@ public final class RunTap implements Closeable {
     public static RunTap attach(LockstepRun run, Inspector inspector, Path outDir, Experiment experiment, String agentFile)
             throws IOException {
         StepLog.Writer log = null;
+        SimWorld w = run.world();
+        WorldSnapshot start = w.snapshot();
         if (outDir != null) {
-            SimWorld w = run.world();
-            WorldSnapshot start = w.snapshot();
-            log = new StepLog.Writer(outDir.resolve(StepLog.FILE), new StepLog.Header(StepLog.FORMAT, experiment.id(),
-                    w.name(), w.seed(), w.controlStep(), w.robots().get(0).name(), agentFile, start));
+            var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), w.name(), w.seed(), w.controlStep(),
+                    w.robots().get(0).name(), agentFile, start);
+            log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
+            if (inspector != null) {
+                archive(inspector, log, outDir.resolve(StepLog.FILE), header);
+            }
+        }
+        if (inspector != null) {
+            inspector.world(start);
         }
         return new RunTap(run, inspector, log);
+    }
+
+    /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */
+    static void archive(Inspector inspector, StepLog.Writer log, Path file, StepLog.Header header) {
+        var archive = StepArchive.live(file, header);
+        log.onChunk(archive::add);
+        inspector.add("robot").archive(archive);
     }
 
     private void afterStep(jacabot.experiments.link.StepData data, List<Command> commands) {
@@ -75,6 +90,24 @@ public final class RunTap implements Closeable {
             }
             log.step(data.simTimeMs(), body, commands, data.readings(), mind, objects);
         }
+        var d = debugger;
+        if (d != null && mind != null) {
+            d.afterStep(mind); // may halt here, the world waiting with the agent
+        }
+    }
+
+    /** Halts the run on {@code d}'s breakpoints, after the step is logged and shown. {@return this} */
+    public RunTap debugger(jacabot.app.inspector.Debugger d) {
+        this.debugger = d;
+        return this;
+    }
+
+    /** As {@link #debugger(jacabot.app.inspector.Debugger)}, also driven from {@code inspector}'s page (if not null). */
+    public RunTap debugger(Inspector inspector, jacabot.app.inspector.Debugger d) {
+        if (inspector != null) {
+            inspector.debugger(d);
+        }
+        return debugger(d);
     }
 
     private RobotView robotView() {
@@ -90,9 +123,16 @@ public final class RunTap implements Closeable {
     private static RobotView view(SimWorld world, Robot robot, List<String> commands) {
         synchronized (world) {
             var p = robot.pose();
+            var placed = new ArrayList<RobotView.Placed>();
+            for (jacabot.sim.engine.ObjectState o : world.supervisor().objects()) {
+                if (o.movable()) {
+                    placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
+                            StepLog.round(o.pose().heading()), o.carriedBy()));
+                }
+            }
             return new RobotView(world.timeMs(), p.x(), p.z(), p.heading(),
                     robot.hasBattery() ? robot.getBattery().energy() : null, robot.getWheels().getLeftSpeed(),
-                    robot.getWheels().getRightSpeed(), commands);
+                    robot.getWheels().getRightSpeed(), commands, placed);
         }
     }
 

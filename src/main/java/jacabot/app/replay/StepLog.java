@@ -11,11 +11,10 @@ import jacabot.robot.link.SensorInfo;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import java.io.BufferedReader;
-import java.io.BufferedWriter;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStreamReader;
-import java.io.OutputStreamWriter;
+import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -30,7 +29,11 @@ import java.util.zip.GZIPOutputStream;
 
 /**
  * A run's step log, {@code steps.jsonl.gz}: one JSON line per control step, gzipped and streamed
- * to disk as the run goes (nothing accumulates in memory). The first line is a header with the
+ * to disk as the run goes (nothing accumulates in memory). The file is a chain of gzip members
+ * (which any gzip reader reads as one stream): the header alone, then one member per
+ * {@value #CHUNK} steps whose first step is a key step ({@code "key": true}: the whole mind and
+ * every movable object, not only their changes), so that {@link StepArchive} can read any instant
+ * from the nearest key step without reading the run from its start. The first line is a header with the
  * world as it was at the start; each step then holds the robot's pose, battery and wheel speeds,
  * the commands sent, the readings received, the objects that moved, and the agent's mind as
  * changes: beliefs added and removed, plans selected, and the intentions and events whenever
@@ -39,6 +42,8 @@ import java.util.zip.GZIPOutputStream;
 public final class StepLog {
     public static final String FILE = "steps.jsonl.gz";
     public static final String FORMAT = "jacabot-steps/1";
+    /** Steps per gzip member; each member starts with a key step (4 s of a 40 ms control step). */
+    public static final int CHUNK = 100;
 
     static final ObjectMapper JSON = new ObjectMapper().configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false)
             .setSerializationInclusion(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL);
@@ -77,9 +82,16 @@ public final class StepLog {
         }
     }
 
-    /** One control step, as read back. {@code mind} holds only what changed; {@code lag} is null but where a lag episode starts or ends. */
+    /**
+     * One control step, as read back. {@code mind} holds only what changed, or all of it in a key
+     * step; {@code lag} is null but where a lag episode starts or ends.
+     */
     public record Step(long timeMs, Body body, List<String> commands, List<String> readings, Map<String, Moved> moved,
-            MindDelta mind, Lag lag) {
+            MindDelta mind, Lag lag, boolean key) {
+    }
+
+    /** A gzip member of steps: where it starts in the file, its first step's number (from 0) and time. */
+    public record Chunk(long offset, long firstStep, long firstTimeMs, long lastTimeMs) {
     }
 
     /**
@@ -102,7 +114,14 @@ public final class StepLog {
 
     /** Streams steps to a gzipped file. Not thread-safe: the run's step thread writes. */
     public static final class Writer implements Closeable {
-        private final BufferedWriter out;
+        private final OutputStream file;
+        private final java.io.ByteArrayOutputStream chunk = new java.io.ByteArrayOutputStream(1 << 16);
+        private long offset;
+        private long steps;
+        private long chunkFirstTime;
+        private long lastTime;
+        private java.util.function.Consumer<Chunk> onChunk = c -> {
+        };
         private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
         private List<MindState.IntentionView> intentions = List.of();
         private List<String> events = List.of();
@@ -110,12 +129,18 @@ public final class StepLog {
 
         public Writer(Path file, Header header) throws IOException {
             Files.createDirectories(file.toAbsolutePath().getParent());
-            out = new BufferedWriter(new OutputStreamWriter(new GZIPOutputStream(Files.newOutputStream(file), 1 << 16),
-                    StandardCharsets.UTF_8), 1 << 16);
+            this.file = Files.newOutputStream(file);
             for (ObjectState o : header.start().objects()) {
                 objects.put(o.id(), moved(o));
             }
             line(JSON.valueToTree(header));
+            flushChunk();
+        }
+
+        /** Hands every gzip member of steps, once it is on disk, to {@code sink} (the inspector's index). */
+        public Writer onChunk(java.util.function.Consumer<Chunk> sink) {
+            this.onChunk = sink;
+            return this;
         }
 
         /**
@@ -144,8 +169,20 @@ public final class StepLog {
         /** As {@link #stepText(long, Body, List, List, MindState, List)}, with a lag episode's start or end (or null). */
         public void stepText(long timeMs, Body body, List<String> commands, List<String> readings, MindState mind,
                 List<ObjectState> world, Lag lag) {
+            boolean key = steps % CHUNK == 0;
+            if (key) {
+                chunkFirstTime = timeMs;
+                beliefs.clear(); // a key step holds the whole mind, and every movable object
+                intentions = null;
+                events = null;
+                objects.clear();
+            }
+            lastTime = timeMs;
             ObjectNode n = JSON.createObjectNode();
             n.put("t", timeMs);
+            if (key) {
+                n.put("key", true);
+            }
             n.set("body", JSON.valueToTree(body));
             if (!commands.isEmpty()) {
                 ArrayNode c = n.putArray("cmd");
@@ -182,6 +219,34 @@ public final class StepLog {
                 n.set("lag", JSON.valueToTree(lag));
             }
             line(n);
+            steps++;
+            if (steps % CHUNK == 0) {
+                flushChunk();
+            }
+        }
+
+        /** Compresses the steps gathered into one gzip member, appends it to the file and announces it. */
+        private void flushChunk() {
+            if (chunk.size() == 0) {
+                return;
+            }
+            try {
+                var member = new java.io.ByteArrayOutputStream(chunk.size() / 4 + 64);
+                try (var gz = new GZIPOutputStream(member, 1 << 16)) {
+                    chunk.writeTo(gz);
+                }
+                file.write(member.toByteArray());
+                file.flush();
+                long first = steps == 0 ? -1 : (steps - 1) / CHUNK * CHUNK;
+                Chunk c = new Chunk(offset, first, first < 0 ? -1 : chunkFirstTime, lastTime);
+                offset += member.size();
+                chunk.reset();
+                if (first >= 0) {
+                    onChunk.accept(c);
+                }
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
         }
 
         private static Moved moved(ObjectState o) {
@@ -229,8 +294,8 @@ public final class StepLog {
 
         private void line(JsonNode n) {
             try {
-                out.write(JSON.writeValueAsString(n));
-                out.write('\n');
+                JSON.writeValue(chunk, n);
+                chunk.write('\n');
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             }
@@ -238,7 +303,13 @@ public final class StepLog {
 
         @Override
         public void close() throws IOException {
-            out.close();
+            try {
+                flushChunk();
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            } finally {
+                file.close();
+            }
         }
     }
 
@@ -278,29 +349,31 @@ public final class StepLog {
         /** {@return the next step, or null at the end} */
         public Step next() throws IOException {
             String line = in.readLine();
-            if (line == null) {
-                return null;
-            }
-            JsonNode n = JSON.readTree(line);
-            var commands = new ArrayList<String>();
-            n.path("cmd").forEach(c -> commands.add(c.asText()));
-            var readings = new ArrayList<String>();
-            n.path("in").forEach(c -> readings.add(c.asText()));
-            var moved = new LinkedHashMap<String, Moved>();
-            var it = n.path("moved").fields();
-            while (it.hasNext()) {
-                var e = it.next();
-                moved.put(e.getKey(), JSON.treeToValue(e.getValue(), Moved.class));
-            }
-            MindDelta mind = n.has("mind") ? JSON.treeToValue(n.get("mind"), MindDelta.class) : null;
-            Lag lag = n.has("lag") ? JSON.treeToValue(n.get("lag"), Lag.class) : null;
-            return new Step(n.get("t").asLong(), JSON.treeToValue(n.get("body"), Body.class), commands, readings, moved, mind,
-                    lag);
+            return line == null ? null : parse(line);
         }
 
         @Override
         public void close() throws IOException {
             in.close();
         }
+    }
+
+    /** {@return a step line read back} */
+    static Step parse(String line) throws IOException {
+        JsonNode n = JSON.readTree(line);
+        var commands = new ArrayList<String>();
+        n.path("cmd").forEach(c -> commands.add(c.asText()));
+        var readings = new ArrayList<String>();
+        n.path("in").forEach(c -> readings.add(c.asText()));
+        var moved = new LinkedHashMap<String, Moved>();
+        var it = n.path("moved").fields();
+        while (it.hasNext()) {
+            var e = it.next();
+            moved.put(e.getKey(), JSON.treeToValue(e.getValue(), Moved.class));
+        }
+        MindDelta mind = n.has("mind") ? JSON.treeToValue(n.get("mind"), MindDelta.class) : null;
+        Lag lag = n.has("lag") ? JSON.treeToValue(n.get("lag"), Lag.class) : null;
+        return new Step(n.get("t").asLong(), JSON.treeToValue(n.get("body"), Body.class), commands, readings, moved, mind,
+                lag, n.path("key").asBoolean(false));
     }
 }

@@ -1,5 +1,6 @@
 package jacabot.app.inspector;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -84,7 +85,7 @@ class InspectorBrowserTest {
 
             WebDriver browser = openBrowser(chromium, driverBinary);
             try {
-                browser.get(inspector.uri().toString());
+                browser.get(inspector.address().toString());
                 var wait = new WebDriverWait(browser, Duration.ofSeconds(40), Duration.ofMillis(100));
                 wait.ignoring(StaleElementReferenceException.class);
                 wait.until(b -> count(b, "#beliefs li.belief") > 0 && count(b, "#intentions .intention") > 0);
@@ -126,6 +127,59 @@ class InspectorBrowserTest {
                 runner.join(10_000);
             }
         }
+    }
+
+    /**
+     * A recorded 10-minute run served as {@code jacabot replay RUN --headless --inspector} serves it:
+     * the slider reaches t = 0, and the canvas draws the robot where the step log puts it, at the
+     * start and at 300 s.
+     */
+    @Test
+    @Timeout(240)
+    void recordedTenMinuteRunFromItsStartWithTheRobotDrawnWhereTheLogPutsIt(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        Path chromium = find("/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome");
+        Path driverBinary = find("/usr/bin/chromedriver", "/usr/lib/chromium/chromedriver");
+        Assumptions.assumeTrue(chromium != null && driverBinary != null,
+                "Chromium or chromedriver is missing (apt-get install -y chromium chromium-driver): "
+                        + "the inspector's browser test did not run");
+        jacabot.app.replay.SyntheticRun.write(dir, 600);
+        try (Inspector inspector = Inspector.startOnFreePort()) {
+            jacabot.app.replay.StepArchive.show(inspector, dir);
+            WebDriver browser = openBrowser(chromium, driverBinary);
+            try {
+                browser.get(inspector.address().toString());
+                var wait = new WebDriverWait(browser, Duration.ofSeconds(40), Duration.ofMillis(100));
+                wait.until(b -> script(b, "return window.drawnRobots && window.drawnRobots.length") != null
+                        && ((Number) script(b, "return Number(document.getElementById('slider').max)")).longValue() == 600_000);
+                assertEquals(40L, ((Number) script(browser, "return Number(document.getElementById('slider').min)")).longValue(),
+                        "the slider reaches the run's first step");
+                for (long t : new long[] {40, 300_000}) {
+                    script(browser, "const s = document.getElementById('slider'); s.value = arguments[0];"
+                            + " s.dispatchEvent(new Event('input'));", t);
+                    wait.until(b -> ((Number) script(b, "return window.shownTimeMs || -1")).longValue() == t);
+                    double x = ((Number) script(browser, "return window.drawnRobots[0].x")).doubleValue();
+                    double z = ((Number) script(browser, "return window.drawnRobots[0].z")).doubleValue();
+                    assertEquals(jacabot.app.replay.SyntheticRun.x(t, 600_000), x, 1e-9, "x at " + t);
+                    assertEquals(jacabot.app.replay.SyntheticRun.z(t), z, 1e-9, "z at " + t);
+                    // the canvas has the robot's colour there (behind its heading line), and the floor's far from it
+                    String robot = (String) script(browser, "const v = window.inspectorView, r = window.drawnRobots[0];"
+                            + " const s = v.toScreen(r.x - 0.015, r.z - 0.015);"
+                            + " const d = document.getElementById('world').getContext('2d').getImageData(Math.round(s[0]), Math.round(s[1]), 1, 1).data;"
+                            + " return d[0] + ',' + d[1] + ',' + d[2];");
+                    String expected = (String) script(browser, "const c = (world.robots[0] || {}).color;"
+                            + " return c.red + ',' + c.green + ',' + c.blue;");
+                    assertEquals(expected, robot, "the robot's colour on the canvas at t=" + t);
+                }
+                screenshot(browser, "inspector-replay.png");
+            } finally {
+                browser.quit();
+            }
+        }
+    }
+
+    private static Object script(WebDriver b, String js, Object... args) {
+        return ((JavascriptExecutor) b).executeScript(js, args);
     }
 
     private static WebDriver openBrowser(Path chromium, Path driverBinary) {

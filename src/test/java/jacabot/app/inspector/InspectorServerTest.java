@@ -36,29 +36,29 @@ class InspectorServerTest {
             h.record(mind(0, "at(1)", List.of(sel)), new RobotView(0, 0.1, 0.2, 90, null, 1, 2, List.of("stop")), List.of("+!go <- move."));
             h.record(mind(1000, "at(2)", List.of()), null, List.of("+!go <- move."));
 
-            String page = get(client, inspector.uri().toString());
+            String page = get(client, inspector.address().toString());
             assertTrue(page.contains("<title>") && page.contains("/api/stream"), page);
-            assertEquals("[\"robot\"]", get(client, inspector.uri() + "api/agents"));
-            String latest = get(client, inspector.uri() + "api/state?agent=robot");
+            assertEquals("[\"robot\"]", get(client, inspector.url("api/agents")));
+            String latest = get(client, inspector.url("api/state?agent=robot"));
             assertTrue(latest.contains("at(2)") && latest.contains("\"unifier\":\"{X=1}\""), latest);
-            String first = get(client, inspector.uri() + "api/state?agent=robot&frame=0");
+            String first = get(client, inspector.url("api/state?agent=robot&frame=0"));
             assertTrue(first.contains("at(1)") && first.contains("\"commands\":[\"stop\"]"), first);
-            String history = get(client, inspector.uri() + "api/history?agent=robot");
+            String history = get(client, inspector.url("api/history?agent=robot"));
             assertTrue(history.contains("\"plan\":\"@p1 +!go : at(X)\""), history);
-            assertTrue(get(client, inspector.uri() + "api/plans").contains("+!go <- move."));
-            assertEquals(404, status(client, inspector.uri() + "api/state?agent=nobody"));
-            assertEquals(400, status(client, inspector.uri() + "api/state?agent=robot&frame=x"));
+            assertTrue(get(client, inspector.url("api/plans")).contains("+!go <- move."));
+            assertEquals(404, status(client, inspector.url("api/state?agent=nobody")));
+            assertEquals(400, status(client, inspector.url("api/state?agent=robot&frame=x")));
 
             // plots: only PNG files of the run's folder, nothing else
             Files.write(plots.resolve("battery.png"), new byte[] {(byte) 0x89, 'P', 'N', 'G'});
             Files.writeString(plots.resolve("secret.txt"), "no");
             inspector.showPlots(plots);
-            assertEquals(200, status(client, inspector.uri() + "plots/battery.png"));
-            assertEquals(404, status(client, inspector.uri() + "plots/secret.txt"));
-            assertEquals(404, status(client, inspector.uri() + "plots/..%2Fsecret.txt"));
+            assertEquals(200, status(client, inspector.url("plots/battery.png")));
+            assertEquals(404, status(client, inspector.url("plots/secret.txt")));
+            assertEquals(404, status(client, inspector.url("plots/..%2Fsecret.txt")));
 
             // the stream sends the latest frame first
-            var conn = (java.net.HttpURLConnection) URI.create(inspector.uri() + "api/stream").toURL().openConnection();
+            var conn = (java.net.HttpURLConnection) URI.create(inspector.url("api/stream")).toURL().openConnection();
             conn.setReadTimeout(10_000);
             try (var in = new BufferedReader(new InputStreamReader(conn.getInputStream(), StandardCharsets.UTF_8))) {
                 assertEquals("event: frame", in.readLine());
@@ -67,6 +67,53 @@ class InspectorServerTest {
             } finally {
                 conn.disconnect();
             }
+        }
+    }
+
+    @Test
+    void refusesRequestsWithoutTheTokenFromAnotherOriginOrWithAnotherRunsToken() throws Exception {
+        var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
+        var refused = new java.util.concurrent.CopyOnWriteArrayList<String>();
+        try (Inspector inspector = Inspector.startOnFreePort(); Inspector other = Inspector.startOnFreePort()) {
+            inspector.logRefusals(refused::add);
+            inspector.add("robot").record(mind(0, "at(1)", List.of()), null, List.of());
+            assertTrue(inspector.address().getQuery().matches("token=[0-9a-f]{48}"), inspector.address().toString());
+            assertEquals(200, status(client, inspector.url("api/agents")));
+            // no token, on the page and on the API
+            assertEquals(403, status(client, inspector.uri().toString()));
+            assertEquals(403, status(client, inspector.uri() + "api/state?agent=robot"));
+            assertEquals(403, status(client, inspector.uri() + "api/stream"));
+            // another run's token
+            String foreign = other.url("api/agents").replaceAll(".*token=", "");
+            assertEquals(403, status(client, inspector.uri() + "api/agents?token=" + foreign));
+            // the right token, sent by another web page (its Origin) or for another host name (DNS rebinding)
+            var fromElsewhere = HttpRequest.newBuilder(URI.create(inspector.url("api/agents")))
+                    .header("Origin", "http://evil.example").build();
+            assertEquals(403, client.send(fromElsewhere, HttpResponse.BodyHandlers.discarding()).statusCode());
+            // the page's own origin is fine; so is the cookie the page gets with the token
+            var own = HttpRequest.newBuilder(URI.create(inspector.url("api/agents")))
+                    .header("Origin", "http://127.0.0.1:" + inspector.uri().getPort()).build();
+            var answer = client.send(own, HttpResponse.BodyHandlers.discarding());
+            assertEquals(200, answer.statusCode());
+            String cookie = answer.headers().firstValue("Set-Cookie").orElseThrow().split(";")[0];
+            var withCookie = HttpRequest.newBuilder(URI.create(inspector.uri() + "api/agents")).header("Cookie", cookie).build();
+            assertEquals(200, client.send(withCookie, HttpResponse.BodyHandlers.discarding()).statusCode());
+            assertEquals(5, refused.size(), "each refusal logged: " + refused);
+            assertTrue(refused.get(0).contains("no token") && refused.get(3).contains("wrong token")
+                    && refused.get(4).contains("another origin"), refused.toString());
+        }
+        try (Inspector inspector = Inspector.startOnFreePort()) {
+            // DNS rebinding: the right token, for a host name that is not the inspector's (a raw request: the
+            // JDK's client will not send a Host of our choosing)
+            inspector.logRefusals(refused::add);
+            String path = inspector.url("api/agents").replaceFirst("^http://[^/]+", "");
+            try (var socket = new java.net.Socket("127.0.0.1", inspector.uri().getPort())) {
+                socket.getOutputStream().write(("GET " + path + " HTTP/1.1\r\nHost: evil.example:" + inspector.uri().getPort()
+                        + "\r\nConnection: close\r\n\r\n").getBytes(StandardCharsets.US_ASCII));
+                var in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.US_ASCII));
+                assertEquals("HTTP/1.1 403 Forbidden", in.readLine());
+            }
+            assertTrue(refused.get(refused.size() - 1).contains("another host"), refused.toString());
         }
     }
 

@@ -21,7 +21,9 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Paints a {@link WorldSnapshot} top-down with Java2D, north (+x) up and east (+z) right: floor,
+ * Paints a {@link WorldSnapshot} top-down with Java2D in the project's one orientation: +x to the
+ * right and +z down, as seen from above (a heading, clockwise from +x, turns clockwise on the
+ * screen too); the inspector's canvas and every plot use the same. It draws the floor,
  * storage (green) and charger (yellow) areas, walls, boxes, cylinders, robots with their
  * trajectory and sensor rays (grey when disabled, green → red as the value rises), a camera strip
  * and a status line. Used by the Swing viewer and for headless PNGs; needs no display.
@@ -29,18 +31,19 @@ import java.util.Locale;
 public final class WorldRenderer {
     /** Pixels kept under the arena for the camera strip and the status line. */
     static final int FOOTER = 56;
-    private static final int MARGIN = 10;
+    /** Room around the arena for the axes' labels. */
+    private static final int MARGIN = 26;
 
     /** World ↔ screen mapping for one image size. */
     public record View(double scale, double originX, double originY) {
         /** {@return the screen point of a world point} */
         public double[] toScreen(double x, double z) {
-            return new double[] {originX + z * scale, originY - x * scale};
+            return new double[] {originX + x * scale, originY + z * scale};
         }
 
         /** {@return the world point under a screen point} */
         public Vec2 toWorld(double sx, double sy) {
-            return new Vec2((originY - sy) / scale, (sx - originX) / scale);
+            return new Vec2((sx - originX) / scale, (sy - originY) / scale);
         }
     }
 
@@ -50,9 +53,9 @@ public final class WorldRenderer {
     /** {@return the mapping that fits the arena (walls included) into width × height pixels, above the footer} */
     public static View view(WorldSnapshot s, int width, int height) {
         double t = s.arena().wallThickness();
-        double worldW = s.arena().depth() + 2 * t, worldH = s.arena().width() + 2 * t;
+        double worldW = s.arena().width() + 2 * t, worldH = s.arena().depth() + 2 * t;
         double scale = Math.min((width - 2.0 * MARGIN) / worldW, (height - 2.0 * MARGIN - FOOTER) / worldH);
-        return new View(scale, width / 2.0, MARGIN + (height - FOOTER - 2.0 * MARGIN) / 2.0 + MARGIN / 2.0);
+        return new View(scale, width / 2.0, MARGIN + (height - FOOTER - 2.0 * MARGIN) / 2.0);
     }
 
     /** Paints the snapshot; {@code status} is appended to the status line (e.g. the real-time factor), may be null. */
@@ -62,8 +65,8 @@ public final class WorldRenderer {
         g.fillRect(0, 0, width, height);
         View v = view(s, width, height);
         AffineTransform saved = g.getTransform();
-        // world (x, z) → screen: screenX = ox + z·k, screenY = oy − x·k
-        g.transform(new AffineTransform(0, -v.scale(), v.scale(), 0, v.originX(), v.originY()));
+        // world (x, z) → screen: screenX = ox + x·k, screenY = oy + z·k
+        g.transform(new AffineTransform(v.scale(), 0, 0, v.scale(), v.originX(), v.originY()));
         g.setStroke(new BasicStroke((float) (1.0 / v.scale())));
         g.setColor(color(s.arena().floorColor()));
         g.fill(new Rectangle2D.Double(-s.arena().halfWidth(), -s.arena().halfDepth(), s.arena().width(), s.arena().depth()));
@@ -78,7 +81,44 @@ public final class WorldRenderer {
             robot(g, r, v.scale());
         }
         g.setTransform(saved);
+        axes(g, s, v);
         footer(g, s, width, height, status);
+    }
+
+    /** Ticks and labels in metres along the arena's top (x) and left (z) edges, and which way each axis runs. */
+    private static void axes(Graphics2D g, WorldSnapshot s, View v) {
+        double hw = s.arena().halfWidth(), hd = s.arena().halfDepth();
+        double step = tickStep(Math.max(s.arena().width(), s.arena().depth()));
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
+        g.setColor(new Color(200, 200, 200));
+        double[] corner = v.toScreen(-hw, -hd);
+        for (double x = Math.ceil(-hw / step) * step; x <= hw + 1e-9; x += step) {
+            double[] p = v.toScreen(x, -hd);
+            g.draw(new Line2D.Double(p[0], corner[1] - 3, p[0], corner[1] - 8));
+            String label = String.format(Locale.ROOT, "%.2f", x + 0.0);
+            g.drawString(label, (float) (p[0] - g.getFontMetrics().stringWidth(label) / 2.0), (float) corner[1] - 10);
+        }
+        for (double z = Math.ceil(-hd / step) * step; z <= hd + 1e-9; z += step) {
+            double[] p = v.toScreen(-hw, z);
+            g.draw(new Line2D.Double(corner[0] - 3, p[1], corner[0] - 8, p[1]));
+            AffineTransform saved = g.getTransform();
+            g.translate(corner[0] - 10, p[1]);
+            g.rotate(-Math.PI / 2);
+            String label = String.format(Locale.ROOT, "%.2f", z + 0.0);
+            g.drawString(label, -g.getFontMetrics().stringWidth(label) / 2f, 0);
+            g.setTransform(saved);
+        }
+        double[] bottom = v.toScreen(-hw, hd);
+        g.drawString("x (m) \u2192 right,  z (m) \u2193 down", (float) bottom[0], (float) bottom[1] + 18);
+    }
+
+    private static double tickStep(double side) {
+        for (double step : new double[] {0.1, 0.25, 0.5, 1, 2, 5, 10}) {
+            if (side / step <= 8) {
+                return step;
+            }
+        }
+        return 20;
     }
 
     private static Color color(Rgb c) {

@@ -25,7 +25,7 @@ class WorldRendererTest {
     }
 
     @Test
-    void northIsUpEastIsRightAndObjectsHaveTheirColours() {
+    void xIsRightZIsDownAndObjectsHaveTheirColours() {
         SimWorld w = TestWorlds.world("\"cylinders\": [{\"id\": \"red1\", \"x\": 0.3, \"z\": 0.0, \"radius\": 0.03}],"
                 + "\"boxes\": [{\"id\": \"b\", \"x\": 0.0, \"z\": 0.3, \"size\": 0.1, \"color\": \"blue\"}],"
                 + "\"storage\": {\"x\": 0.41, \"z\": -0.41, \"radius\": 0.06}");
@@ -33,8 +33,8 @@ class WorldRendererTest {
         BufferedImage img = PngRenderer.render(s, 600, 660);
         WorldRenderer.View v = WorldRenderer.view(s, 600, 660);
         double[] cyl = v.toScreen(0.3, 0.0), box = v.toScreen(0.0, 0.3), floor = v.toScreen(-0.2, -0.2);
-        assertTrue(cyl[1] < v.toScreen(0, 0)[1], "north is up");
-        assertTrue(box[0] > v.toScreen(0, 0)[0], "east is right");
+        assertTrue(cyl[0] > v.toScreen(0, 0)[0], "+x is right");
+        assertTrue(box[1] > v.toScreen(0, 0)[1], "+z is down");
         assertEquals(255, rgb(img, cyl)[0]);
         assertEquals(32, rgb(img, cyl)[1]);
         assertEquals(230, rgb(img, box)[2]);

@@ -1,0 +1,97 @@
+package jacabot.app.replay;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.app.run.AgentSource;
+import jacabot.app.run.LockstepRun;
+import jacabot.robot.Experiment;
+import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileReader;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.zip.GZIPInputStream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A what-if run is the recorded run, byte for byte, up to its instant, and the edited agent's
+ * after it (the test's own small agent, {@code breaker.asl}, and its edit {@code breaker-edited.asl}).
+ */
+class WhatIfTest {
+    static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
+    static final Experiment EXPERIMENT = Experiment.parse("obstacle-avoidance").orElseThrow();
+    static final long AT = 3_000;
+
+    private static AgentSource agent(String name) throws Exception {
+        try (InputStream in = jacabot.app.inspector.Inspector.class.getResourceAsStream(name)) {
+            return AgentSource.text(name, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        }
+    }
+
+    private static SimWorld world() throws Exception {
+        return SimWorld.of(WorldFileReader.read(ROOT.resolve(EXPERIMENT.worldFile())));
+    }
+
+    @Test
+    @Timeout(180)
+    void sameRunUpToItsInstantThenTheEditedAgents(@TempDir Path recorded, @TempDir Path whatIf) throws Exception {
+        var quiet = new PrintStream(OutputStream.nullOutputStream());
+        var run = new LockstepRun(world(), null, EXPERIMENT, agent("breaker.asl"), 1, quiet);
+        String original;
+        try (RunTap tap = RunTap.attach(run, null, recorded, EXPERIMENT, "breaker.asl")) {
+            original = run.runFor(6).eventLog();
+        }
+        var r = WhatIf.run(world(), EXPERIMENT, 1, agent("breaker.asl"), agent("breaker-edited.asl"), AT, 6, whatIf, quiet);
+        assertEquals(AT, r.swappedAtMs());
+
+        List<String> a = steps(recorded), b = steps(whatIf);
+        int upTo = 0;
+        while (upTo < a.size() && time(a.get(upTo)) <= AT) {
+            upTo++;
+        }
+        assertEquals(a.subList(0, upTo), b.subList(0, upTo), "the step logs up to t=" + AT + " ms");
+        assertNotEquals(a.subList(upTo, a.size()), b.subList(upTo, b.size()), "the edited agent drives otherwise");
+        assertTrue(String.join("\n", b.subList(upTo, b.size())).contains("@driveSlow"), "the edited plan is chosen");
+        assertTrue(!String.join("\n", a).contains("@driveSlow"));
+
+        String head = prefix(original, AT / 40);
+        assertTrue(head.length() > 1000);
+        assertEquals(head, prefix(r.eventLog(), AT / 40), "the event logs up to the instant, byte for byte");
+        assertNotEquals(original, r.eventLog());
+    }
+
+    /** The event log's lines of steps 0..lastStep. */
+    private static String prefix(String log, long lastStep) {
+        var out = new StringBuilder();
+        for (String line : log.split("\n", -1)) {
+            String[] w = line.split(" ", 3);
+            if (w.length >= 2 && w[0].equals("step") && Long.parseLong(w[1]) > lastStep) {
+                break;
+            }
+            out.append(line).append('\n');
+        }
+        return out.toString();
+    }
+
+    private static long time(String stepLine) {
+        return Long.parseLong(stepLine.replaceFirst("^\\{\"t\":(\\d+).*", "$1"));
+    }
+
+    /** The step lines (without the header). */
+    private static List<String> steps(Path dir) throws Exception {
+        try (var in = new GZIPInputStream(Files.newInputStream(dir.resolve(StepLog.FILE)))) {
+            var lines = new ArrayList<>(List.of(new String(in.readAllBytes(), StandardCharsets.UTF_8).split("\n")));
+            lines.remove(0);
+            return lines;
+        }
+    }
+}
