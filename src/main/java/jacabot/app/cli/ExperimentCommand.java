@@ -230,6 +230,8 @@ final class ExperimentCommand implements Callable<Integer> {
             tap.close();
             if (terminated.get()) {
                 log.result(String.format("Stopped by a signal at t=%.2f s; writing what there is.", simWorld.timeMs() / 1000.0));
+            } else if (run.agentFailure().isPresent()) {
+                result.linkLog().forEach(l -> log.detail("[link] " + l));
             } else if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
                 log.result("The link ended early:");
                 result.linkLog().forEach(l -> log.result("  " + l));
@@ -244,6 +246,9 @@ final class ExperimentCommand implements Callable<Integer> {
                 inspector.showPlots(outDir);
                 inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
                 inspector.close();
+            }
+            if (run.agentFailure().isPresent()) { // what the run made is written: now say why it ended
+                throw new RunFailure(run.agentFailure().get());
             }
         } finally {
             done.countDown();

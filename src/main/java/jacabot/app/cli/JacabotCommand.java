@@ -104,10 +104,10 @@ public final class JacabotCommand implements Runnable {
         });
         cl.setExecutionExceptionHandler((ex, c, parseResult) -> {
             boolean debug = parseResult.expandedArgs().contains("--debug");
-            if (ex instanceof UserError) {
+            if (ex instanceof UserError || ex instanceof RunFailure) {
                 c.getErr().println("error: " + ex.getMessage());
                 c.getErr().flush();
-                return 2;
+                return ex instanceof UserError ? 2 : 1;
             }
             c.getErr().println("error: " + describe(ex) + (debug ? "" : " (--debug shows the stack trace)"));
             if (debug) {

@@ -27,6 +27,7 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
@@ -61,6 +62,9 @@ public final class LockstepRun implements AutoCloseable {
     private boolean remoteController;
     private boolean inMemory;
     private volatile LockstepCoordinator coordinator;
+    private final FailureWatch failures;
+    private final List<Literal> initialGoals;
+    private boolean reasoned;
     private Consumer<StepData> onStep = d -> {
     };
     private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
@@ -85,7 +89,10 @@ public final class LockstepRun implements AutoCloseable {
         AslParser parser = agent.parser();
         // the world's landmarks reach the agent as initial beliefs (issue 13)
         AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec());
+        initialGoals = program.goals();
+        failures = new FailureWatch(initialGoals);
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+            failures.planSelected(event, clock.nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
                 reactive.record((System.nanoTime() - deliveredNanos) / 1000);
@@ -178,6 +185,14 @@ public final class LockstepRun implements AutoCloseable {
         return c != null ? c.listeningPort() : 0;
     }
 
+    /**
+     * {@return why the agent failed at its job, if it has} (no plan for its initial goal, a
+     * {@code .stopMAS} before the end, a failure storm: {@link FailureWatch}); the run ended at that step
+     */
+    public Optional<String> agentFailure() {
+        return failures.verdict();
+    }
+
     /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
     public void stop() {
         LockstepCoordinator c = coordinator;
@@ -221,6 +236,17 @@ public final class LockstepRun implements AutoCloseable {
             });
             inlineNanos += System.nanoTime() - t0;
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
+            if (!reasoned) {
+                reasoned = true;
+                failures.firstReasoningDone(mas.agent("robot").planLibrary(), initialGoals);
+            }
+            if (mas.isStopped()) {
+                failures.systemStopped(clock.nowMillis());
+            }
+            LockstepCoordinator c = coordinator;
+            if (failures.verdict().isPresent() && c != null) {
+                c.endAfterThisStep(); // a failed agent does not run out its duration
+            }
         }
         onStep.accept(data);
         List<Command> commands = new ArrayList<>(middleware.takeCommands());

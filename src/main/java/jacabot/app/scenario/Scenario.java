@@ -142,6 +142,6 @@ public final class Scenario {
             recorder.writePng(out.resolve("trajectory.png"), 800, 800);
             RunPlots.writeAll(out, new PrintStream(java.io.OutputStream.nullOutputStream()));
         }
-        return new ScenarioResult(summary, List.of(console.toString(StandardCharsets.UTF_8).split("\\R")));
+        return new ScenarioResult(summary, List.of(console.toString(StandardCharsets.UTF_8).split("\\R")), run.agentFailure());
     }
 }

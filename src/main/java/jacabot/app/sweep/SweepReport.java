@@ -132,7 +132,7 @@ public final class SweepReport {
             }
             b.append("\n## ").append(e.id()).append("\n\n");
             b.append("| controller | runs | successes | median contact (s) | median coverage | median picks | median deliveries "
-                    + "| empty storage entries | low-battery episodes completed | crashes / hangs / early ends |\n");
+                    + "| empty storage entries | low-battery episodes completed | crashes / hangs / early ends / agent failures |\n");
             b.append("|---|---|---|---|---|---|---|---|---|---|\n");
             for (String controller : List.of(SweepJob.AGENT, SweepJob.BASELINE)) {
                 List<RunOutcome> c = mine.stream().filter(o -> o.controller().equals(controller)).toList();
@@ -142,13 +142,14 @@ public final class SweepReport {
                 long ok = c.stream().filter(RunOutcome::success).count();
                 int episodes = c.stream().mapToInt(o -> o.figures().lowBatteryEpisodes()).sum();
                 int completed = c.stream().mapToInt(o -> o.figures().episodesCompleted()).sum();
-                b.append(String.format(Locale.ROOT, "| %s | %d | %d (%.0f%%) | %.1f | %.0f%% | %s | %s | %d | %s | %d / %d / %d |%n",
+                b.append(String.format(Locale.ROOT, "| %s | %d | %d (%.0f%%) | %.1f | %.0f%% | %s | %s | %d | %s | %d / %d / %d / %d |%n",
                         controller, c.size(), ok, 100.0 * ok / c.size(), median(c, o -> o.figures().contactTime()),
                         100 * median(c, o -> o.figures().coverage()), n(median(c, o -> o.figures().picks()), 1),
                         n(median(c, o -> o.figures().deliveries()), 1),
                         c.stream().mapToInt(o -> o.figures().storageEntriesEmpty()).sum(),
                         episodes == 0 ? "-" : completed + " of " + episodes,
-                        status(c, RunOutcome.CRASH), status(c, RunOutcome.HANG), status(c, RunOutcome.EARLY_END)));
+                        status(c, RunOutcome.CRASH), status(c, RunOutcome.HANG), status(c, RunOutcome.EARLY_END),
+                        status(c, RunOutcome.AGENT_FAILURE)));
             }
             List<RunOutcome> failed = mine.stream().filter(o -> !o.success()).toList();
             if (!failed.isEmpty()) {

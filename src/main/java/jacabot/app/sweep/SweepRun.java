@@ -107,6 +107,10 @@ public final class SweepRun {
                 try (var run = new LockstepRun(world, null, e, agent, job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket)) {
                     run.runFor(seconds);
+                    if (run.agentFailure().isPresent()) {
+                        status = RunOutcome.AGENT_FAILURE;
+                        message = run.agentFailure().get();
+                    }
                 }
             } else {
                 BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
