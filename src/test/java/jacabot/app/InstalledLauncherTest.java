@@ -53,7 +53,7 @@ class InstalledLauncherTest {
     void worldAndAgentPathsAreRelativeToTheCurrentFolder(@TempDir Path dir) throws Exception {
         Path home = launcher().getParent().getParent();
         Files.copy(home.resolve("worlds/navigation.json"), dir.resolve("my-world.json"));
-        Files.copy(home.resolve("agents/navigation.asl"), dir.resolve("my-agent.asl"));
+        Files.copy(home.resolve("agents/src/main/asl/navigation.asl"), dir.resolve("my-agent.asl"));
         String out = run(dir, "experiment", "navigation", "--headless", "--duration", "1s", "--world", "my-world.json",
                 "--agent", "my-agent.asl", "--out", "out");
         assertTrue(Files.isRegularFile(dir.resolve("out/summary.json")), out);

@@ -107,7 +107,7 @@ final class ControllerCommand implements Callable<Integer> {
         }
         SimWorld simWorld;
         try {
-            simWorld = SimWorld.load(world);
+            simWorld = SimWorld.load(jacabot.app.Installation.locate(world));
         } catch (WorldFileException e) {
             throw new UserError(e.getMessage());
         } catch (RuntimeException e) {

@@ -103,7 +103,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
-        Path worldFile = world != null ? world : jacabot.app.Installation.resolve(experiment.worldFile());
+        Path worldFile = world != null ? jacabot.app.Installation.locate(world) : jacabot.app.Installation.resolve(experiment.worldFile());
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
@@ -117,13 +117,12 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         var missing = jacabot.app.world.Landmarks.missing(experiment, spec, worldFile.toString());
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
-            commandSpec.commandLine().getErr().println(missing.get());
-            return 2;
+            throw UserError.located(missing.get());
         }
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),
                 spec.walls(), spec.boxes(), spec.cylinders(), spec.storage(), spec.charger(), spec.robots(), spec.events());
-        AgentSource source = agent != null ? readAgent(agent)
+        AgentSource source = agent != null ? readAgent(jacabot.app.Installation.locate(agent))
                 : AgentSource.packaged(experiment, "agents/src/main/asl/" + experiment.id() + ".asl");
         String sourceName = source.name();
         var mixUps = new java.util.ArrayList<String>();
@@ -165,7 +164,7 @@ final class ExperimentCommand implements Callable<Integer> {
         try {
             run = new LockstepRun(simWorld, null, experiment, source, runSeed, console);
         } catch (AslSyntaxException e) {
-            throw new UserError(e.getMessage());
+            throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
@@ -382,7 +381,7 @@ final class ExperimentCommand implements Callable<Integer> {
             }
         } catch (AslSyntaxException e) {
             tap.close();
-            throw new UserError(e.getMessage());
+            throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             tap.close();
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage()

@@ -98,14 +98,20 @@ public final class JacabotCommand implements Runnable {
     private static CommandLine withHandlers(CommandLine cl) {
         cl.setParameterExceptionHandler((ex, args) -> {
             CommandLine c = ex.getCommandLine();
-            c.getErr().println("error: " + ex.getMessage() + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");
+            String guess = "";
+            if (ex instanceof CommandLine.UnmatchedArgumentException u && !u.getSuggestions().isEmpty()) {
+                // picocli's own suggestions: the options and subcommands nearest to what was typed
+                List<String> near = u.getSuggestions();
+                guess = "; did you mean " + String.join(" or ", near.subList(0, Math.min(3, near.size()))) + "?";
+            }
+            c.getErr().println("error: " + ex.getMessage() + guess + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");
             c.getErr().flush();
             return 2;
         });
         cl.setExecutionExceptionHandler((ex, c, parseResult) -> {
             boolean debug = parseResult.expandedArgs().contains("--debug");
             if (ex instanceof UserError || ex instanceof RunFailure) {
-                c.getErr().println("error: " + ex.getMessage());
+                c.getErr().println(ex instanceof UserError u ? u.line() : "error: " + ex.getMessage());
                 c.getErr().flush();
                 return ex instanceof UserError ? 2 : 1;
             }

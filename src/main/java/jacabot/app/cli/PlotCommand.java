@@ -15,7 +15,6 @@ final class PlotCommand implements Callable<Integer> {
     private picocli.CommandLine.Model.CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
     private java.io.PrintStream out;
-    private java.io.PrintStream err;
 
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED)")
     private Path dir;
@@ -23,17 +22,14 @@ final class PlotCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
-        err = ConsoleStreams.of(commandSpec.commandLine().getErr());
         if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
-            err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
+            throw new UserError(dir + ": no " + jacabot.app.replay.StepLog.FILE
                     + " (written by every headless `jacabot experiment` run)");
-            return 2;
         }
         try {
             RunPlots.writeAll(dir, out);
         } catch (java.io.IOException e) {
-            err.println("error: " + e.getMessage());
-            return 1;
+            throw new RunFailure(e.getMessage());
         }
         return 0;
     }

@@ -26,7 +26,6 @@ final class ReplayCommand implements Callable<Integer> {
     private picocli.CommandLine.Model.CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
     private java.io.PrintStream out;
-    private java.io.PrintStream err;
 
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (or its steps.jsonl.gz)")
     private Path dir;
@@ -46,17 +45,14 @@ final class ReplayCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
-        err = ConsoleStreams.of(commandSpec.commandLine().getErr());
         Replay replay;
         try {
             replay = Replay.open(dir);
         } catch (IOException e) {
-            err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
         }
         if (replay.frames().isEmpty()) {
-            err.println("error: " + dir + ": the step log has no step");
-            return 2;
+            throw new UserError(dir + ": the step log has no step");
         }
         boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
         if (!window) {
@@ -122,8 +118,7 @@ final class ReplayCommand implements Callable<Integer> {
             try {
                 seconds = ExperimentCommand.parseDuration(at);
             } catch (IllegalArgumentException e) {
-                err.println("error: --at: " + e.getMessage());
-                return 2;
+                throw new UserError("--at: " + e.getMessage());
             }
             printMind(replay, replay.indexAt(Math.round(seconds * 1000)));
         }

@@ -102,17 +102,16 @@ final class RunCommand implements Callable<Integer> {
             var entries = new ArrayList<Path>();
             classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty())
                     .map(Path::of).forEach(entries::add));
+            file = jacabot.app.Installation.locate(file);
             var classes = ProjectClasses.prepare(file.toString().endsWith(".mas2j") ? file : null, entries);
             classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(out, seed, stepping);
             mas = launcher.load(file);
         } catch (ProjectClasspath.Problem e) {
-            err.println(e.getMessage());
-            return 2;
+            throw UserError.located(e.getMessage());
         } catch (SourceCompiler.CompileError e) {
-            e.lines().forEach(err::println); // file:line: message, one per error
-            return 2;
+            throw UserError.located(String.join(System.lineSeparator(), e.lines())); // file:line: message, one per error
         } catch (MasLauncher.UserError e) {
             throw new UserError(e.getMessage());
         }

@@ -86,7 +86,6 @@ final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        PrintWriter err = spec.commandLine().getErr();
         PrintWriter o = spec.commandLine().getOut();
         var log = verbosity.console(spec);
         List<Experiment> experiments;
@@ -132,8 +131,8 @@ final class SweepCommand implements Callable<Integer> {
             if (worlds != null && generate != null) {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
             }
-            if (worlds != null && !Files.isDirectory(worlds) && !worlds.isAbsolute()) {
-                worlds = jacabot.app.Installation.resolve(worlds.toString()); // --worlds worlds: the bundled ones, from anywhere
+            if (worlds != null) {
+                worlds = jacabot.app.Installation.locate(worlds); // --worlds worlds: the bundled ones, from anywhere
             }
             if (worlds != null && !Files.isDirectory(worlds)) {
                 throw new IllegalArgumentException(worlds + ": no such directory");
@@ -145,21 +144,17 @@ final class SweepCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--max-side must be at least 1 (metres), got " + maxSide);
             }
         } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.flush();
-            return 2;
+            throw new UserError(e.getMessage());
         }
         jacabot.app.run.AgentSource agentSource = null;
         if (agent != null) {
             try {
-                Path file = Files.isRegularFile(agent) || agent.isAbsolute() ? agent : jacabot.app.Installation.resolve(agent.toString());
+                Path file = jacabot.app.Installation.locate(agent);
                 agentSource = ExperimentCommand.readAgent(file);
                 agentSource.parse(agentSource.parser()); // a syntax error before, not in every run
                 agent = file;
-            } catch (UserError | jacabot.agent.parser.AslSyntaxException e) {
-                err.println(e instanceof UserError ? "error: " + e.getMessage() : e.getMessage()); // file:line:col: error: ...
-                err.flush();
-                return 2;
+            } catch (jacabot.agent.parser.AslSyntaxException e) {
+                throw UserError.located(e.getMessage()); // file:line:col: error: ...
             }
         }
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
@@ -167,9 +162,7 @@ final class SweepCommand implements Callable<Integer> {
         List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
                 : SweepPlan.generated(experiments, generate == null ? 10 : generate, maxSide, dir.resolve("worlds"));
         if (list.isEmpty()) {
-            err.println("error: " + worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
-            err.flush();
-            return 2;
+            throw new UserError(worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
         }
         List<SweepJob> jobList = SweepPlan.jobs(list, runSeeds, controllers, shardIndex, shards);
         log.info(String.format(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s",
@@ -238,24 +231,19 @@ final class SweepCommand implements Callable<Integer> {
 
         @Override
         public Integer call() throws IOException {
-            PrintWriter err = spec.commandLine().getErr();
             List<List<RunOutcome>> parts = new ArrayList<>();
             double rate = 0;
             boolean allRates = true;
             for (Path d : dirs) {
                 Path csv = d.resolve("runs.csv");
                 if (!Files.isRegularFile(csv)) {
-                    err.println("error: " + csv + ": no such file");
-                    err.flush();
-                    return 2;
+                    throw new UserError(csv + ": no such file");
                 }
                 List<RunOutcome> runs;
                 try {
                     runs = SweepReport.readCsv(csv);
                 } catch (IllegalArgumentException e) {
-                    err.println("error: " + e.getMessage());
-                    err.flush();
-                    return 2;
+                    throw new UserError(e.getMessage());
                 }
                 parts.add(runs);
                 Path metaFile = d.resolve("sweep.properties");

@@ -23,14 +23,12 @@ final class WorldViewCommands {
     private WorldViewCommands() {
     }
 
-    /** Loads a world or prints the loader's one line; null on failure. */
-    private static SimWorld load(Path file, PrintWriter err) {
+    /** Loads a world (the current folder's file, else the installation's) or says why not. */
+    private static SimWorld load(Path file) {
         try {
-            return SimWorld.load(file);
+            return SimWorld.load(jacabot.app.Installation.locate(file));
         } catch (WorldFileException e) {
-            err.println(e.getMessage());
-            err.flush();
-            return null;
+            throw new UserError(e.getMessage());
         }
     }
 
@@ -49,15 +47,9 @@ final class WorldViewCommands {
 
         @Override
         public Integer call() throws InterruptedException {
-            PrintWriter err = spec.commandLine().getErr();
-            SimWorld world = load(file, err);
-            if (world == null) {
-                return 2;
-            }
+            SimWorld world = load(file);
             if (java.awt.GraphicsEnvironment.isHeadless()) {
-                err.println("error: no display; `jacabot world render " + file + " --out world.png` draws the world headless");
-                err.flush();
-                return 2;
+                throw new UserError("no display; `jacabot world render " + file + " --out world.png` draws the world headless");
             }
             SimRunner runner = new SimRunner(world, wander ? new Wander() : null);
             var closed = new CountDownLatch(1);
@@ -101,17 +93,11 @@ final class WorldViewCommands {
 
         @Override
         public Integer call() {
-            PrintWriter err = spec.commandLine().getErr();
             if (!(seconds >= 0) || size < 50 || size > 10_000) {
-                err.println("error: --seconds must be >= 0 and --size in 50..10000");
-                err.flush();
-                return 2;
+                throw new UserError("--seconds must be >= 0 and --size in 50..10000");
             }
             System.setProperty("java.awt.headless", "true");
-            SimWorld world = load(file, err);
-            if (world == null) {
-                return 2;
-            }
+            SimWorld world = load(file);
             Wander wander = new Wander();
             while (world.time() < seconds) {
                 wander.accept(world);
@@ -123,9 +109,7 @@ final class WorldViewCommands {
                 }
                 PngRenderer.write(world, out, size, size + 60);
             } catch (IOException e) {
-                err.println("error: cannot write " + out + ": " + e.getMessage());
-                err.flush();
-                return 1;
+                throw new UserError("cannot write " + out + ": " + e.getMessage());
             }
             PrintWriter o = spec.commandLine().getOut();
             o.printf("wrote %s after %.1f s of simulated time%n", out, world.time());

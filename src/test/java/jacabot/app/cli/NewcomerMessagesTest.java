@@ -1,0 +1,41 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** What a new user meets first: a mistyped option or subcommand gets picocli's suggestion; every error is one "error:" line. */
+class NewcomerMessagesTest {
+    private static void assertError(String[] r, String code, String text) {
+        assertEquals(code, r[0], r[1] + r[2]);
+        assertTrue(r[2].startsWith("error: ") && r[2].contains(text), r[2]);
+        assertEquals(1, r[2].strip().lines().count(), r[2]);
+    }
+
+    @Test
+    void aMistypedOptionOrSubcommandGetsADidYouMean() {
+        assertError(CliRun.run("experiment", "navigation", "--headles"), "2", "did you mean --headless");
+        assertError(CliRun.run("experimnt", "navigation"), "2", "did you mean experiment");
+        assertError(CliRun.run("sweep", "navigation", "--seed", "3"), "2", "did you mean --seeds?");
+    }
+
+    @Test
+    void worldRenderErrorsSayError(@TempDir Path dir) {
+        assertError(CliRun.run("world", "render", dir.resolve("none.json").toString(), "--out", dir.resolve("x.png").toString()),
+                "2", "none.json: $: cannot read the world file");
+        assertError(CliRun.run("world", "render", "worlds/navigation.json", "--out", "x.png", "--size", "3"), "2",
+                "--size in 50..10000");
+    }
+
+    @Test
+    void aSyntaxErrorIsItsOwnLocatedLine(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.asl");
+        java.nio.file.Files.writeString(bad, "!start.\n+!start <- foo(.\n");
+        String[] r = CliRun.run("experiment", "navigation", "--headless", "--agent", bad.toString(), "--out", dir.resolve("o").toString());
+        assertEquals("2", r[0], r[2]);
+        assertTrue(r[2].strip().startsWith(bad + ":2:"), "file:line:col first, no 'error: ' before it: " + r[2]);
+    }
+}
