@@ -80,7 +80,7 @@ class InstalledLauncherTest {
         assertTrue(bench.startsWith("Experiment 4 with the agent, lockstep, seed 13, "), "the experiment's seed:\n" + bench);
         String sweep = run(empty, "sweep", "navigation", "--worlds", "worlds", "--seeds", "1", "--duration", "2s",
                 "--controllers", "agent", "--jobs", "1", "--no-progress");
-        assertTrue(sweep.startsWith("Sweep: 1 runs (1 worlds x 1 seeds x 1 controllers)"), sweep);
+        assertTrue(sweep.startsWith("Sweep: 1 run (1 world x 1 seed x 1 controller)"), sweep);
         assertTrue(Files.isRegularFile(empty.resolve("runs/sweep/report.md")), sweep);
     }
 }

@@ -13,6 +13,8 @@ import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.WorldSpec;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -59,7 +61,8 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--baseline", description = "run the procedural baseline controller (the thesis' C program) instead of the agent")
     private boolean baseline;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED)")
+    @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED; "
+            + "with another world, agent or the baseline: runs/NAME-WORLD-AGENT-baseline-SEED, each part when not the default)")
     private Path out;
 
     @Option(names = "--port", paramLabel = "PORT",
@@ -132,7 +135,7 @@ final class ExperimentCommand implements Callable<Integer> {
             ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
         }
-        Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
+        Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agent, baseline, runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
         SimWorld simWorld;
         try {
@@ -150,7 +153,7 @@ final class ExperimentCommand implements Callable<Integer> {
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
             var run = jacabot.robot.baseline.BaselineRunner.execute(worldFile, experiment, runSeed, seconds);
-            report(log, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1);
+            report(log, run.summary(), run.recorder(), outDir, (System.nanoTime() - t0) / 1e9, -1, files(worldFile, null));
             return 0;
         }
         boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
@@ -183,9 +186,9 @@ final class ExperimentCommand implements Callable<Integer> {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
                 var now = recorder.summary("agent");
-                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s",
+                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d%s",
                         data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
-                        now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy())));
+                        now.deliveries(), !robot.hasBattery() ? "" : String.format("  battery %.0f J", robot.getBattery().energy())));
             }
         });
         var done = new java.util.concurrent.CountDownLatch(1);
@@ -238,7 +241,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles());
+            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles(), files(worldFile, sourceName));
             jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
             jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             if (inspector != null) {
@@ -297,6 +300,39 @@ final class ExperimentCommand implements Callable<Integer> {
         }
     }
 
+    /**
+     * {@return the run's folder}: {@code runs/NAME-SEED} for the experiment's own world and agent,
+     * and with the world file's name, the agent file's name or {@code baseline} before the seed when
+     * they are not the defaults ({@code runs/navigation-nav7-3}, {@code runs/navigation-as-published-navigation-3}),
+     * so that a run on another world or with another agent does not overwrite the default run's folder
+     */
+    static Path runFolder(Experiment experiment, Path world, Path agent, boolean baseline, long seed) {
+        var name = new StringBuilder(experiment.id());
+        if (world != null && !world.getFileName().toString().equals(experiment.id() + ".json")) {
+            name.append('-').append(stem(world));
+        }
+        if (agent != null && !baseline) {
+            String a = stem(agent);
+            Path parent = agent.toAbsolutePath().normalize().getParent();
+            boolean packagedDefault = a.equals(experiment.id()) && parent != null && parent.endsWith("agents/src/main/asl");
+            if (!packagedDefault) {
+                // a copy named like the experiment's (as-published/navigation.asl) takes its folder's name too
+                name.append('-').append(a.equals(experiment.id()) && parent != null && parent.getFileName() != null
+                        ? parent.getFileName() + "-" + a : a);
+            }
+        }
+        if (baseline) {
+            name.append("-baseline");
+        }
+        return Path.of("runs", name.append('-').append(seed).toString());
+    }
+
+    private static String stem(Path file) {
+        String n = file.getFileName().toString();
+        int dot = n.lastIndexOf('.');
+        return (dot > 0 ? n.substring(0, dot) : n).replaceAll("[^A-Za-z0-9._-]", "_");
+    }
+
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
     private static void prepareOut(Path dir) {
         try {
@@ -312,19 +348,36 @@ final class ExperimentCommand implements Callable<Integer> {
         }
     }
 
-    /** Writes the summary (JSON and text), the event log and the trajectory, and prints them. */
+    /** The world and agent files a run used, as the summary names them (agent null: the baseline). */
+    private record RunFiles(String world, String agent) {
+    }
+
+    private static RunFiles files(Object world, String agent) {
+        return new RunFiles(world.toString(), agent);
+    }
+
+    /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
     private static void report(ConsoleLog log, jacabot.robot.run.RunSummary summary,
-            jacabot.robot.run.RunRecorder recorder, Path outDir, double wallSeconds, long cycles) throws IOException {
+            jacabot.robot.run.RunRecorder recorder, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
         Files.createDirectories(outDir);
-        summary.writeJson(outDir.resolve("summary.json"));
-        Files.writeString(outDir.resolve("summary.txt"), summary.toText());
+        var mapper = new ObjectMapper();
+        ObjectNode json = mapper.createObjectNode().put("worldFile", files.world());
+        json.put("agentFile", files.agent());
+        json.setAll((ObjectNode) mapper.readTree(summary.toJson()));
+        Files.writeString(outDir.resolve("summary.json"), mapper.writerWithDefaultPrettyPrinter().writeValueAsString(json) + "\n");
+        String text = summary.toText();
+        int first = text.indexOf('\n') + 1;
+        text = text.substring(0, first) + "files: world " + files.world() + (files.agent() == null ? ", procedural baseline"
+                : ", agent " + files.agent()) + "\n" + text.substring(first);
+        Files.writeString(outDir.resolve("summary.txt"), text);
         Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
         recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
         log.info("");
-        summary.toText().lines().forEach(log::result);
+        text.lines().forEach(log::result);
         log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
                 summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : ""));
-        log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
+        log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
+                + (Files.exists(outDir.resolve(jacabot.app.replay.StepLog.FILE)) ? ", " + jacabot.app.replay.StepLog.FILE : ""));
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
@@ -389,7 +442,8 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
         recorder.detach();
-        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1);
+        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1,
+                files(simWorld.spec().name(), source.name()));
         if (!lags.isEmpty()) {
             var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
             lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));

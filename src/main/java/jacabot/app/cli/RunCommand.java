@@ -152,6 +152,12 @@ final class RunCommand implements Callable<Integer> {
             } catch (java.io.UncheckedIOException e) {
                 throw new UserError(e.getMessage() + " (or pass --secret-file FILE)");
             }
+            // the middleware waits for the robot controller: a run that seems to hang says what it waits for
+            String stem = file.getFileName().toString().replaceFirst("\\.(mas2j|asl)$", "");
+            String worldFile = jacabot.robot.Experiment.parse(stem).map(e -> e.worldFile()).orElse("FILE");
+            log.info("Waiting for the robot controller on " + (tls != null ? tlsAddress : "127.0.0.1") + ":" + listen
+                    + "; start it in another terminal: jacabot controller --world " + worldFile
+                    + (port != null ? " --port " + listen : "") + (tls != null ? " --host " + tlsAddress + " --tls-store ..." : ""));
         }
         // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);

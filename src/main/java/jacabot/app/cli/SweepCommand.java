@@ -4,6 +4,7 @@ import jacabot.app.sweep.RunOutcome;
 import jacabot.app.sweep.Sweep;
 import jacabot.app.sweep.SweepJob;
 import jacabot.app.sweep.SweepPlan;
+import jacabot.app.sweep.SuccessCriteria;
 import jacabot.app.sweep.SweepReport;
 import jacabot.app.sweep.SweepRun;
 import jacabot.robot.Experiment;
@@ -165,9 +166,11 @@ final class SweepCommand implements Callable<Integer> {
             throw new UserError(worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
         }
         List<SweepJob> jobList = SweepPlan.jobs(list, runSeeds, controllers, shardIndex, shards);
-        log.info(String.format(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s",
-                jobList.size(), list.size(), runSeeds.size(), controllers.size(),
+        log.info(String.format(Locale.ROOT, "Sweep: %s (%s x %s x %s%s), %s simulated each, %d at once; %s",
+                count(jobList.size(), "run"), count(list.size(), "world"), count(runSeeds.size(), "seed"),
+                count(controllers.size(), "controller"),
                 shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
+        SuccessCriteria.caveat(seconds).ifPresent(c -> log.warn(c + "; report.md says so too"));
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
                 .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
         if (agentSource != null) {
@@ -214,6 +217,11 @@ final class SweepCommand implements Callable<Integer> {
         } catch (IOException e) {
             log.warn("cannot write the logs of " + base + ": " + e.getMessage());
         }
+    }
+
+    /** {@return "1 run", "2 runs"} */
+    static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
     }
 
     /** {@code jacabot sweep merge DIR...}: joins the CSVs of shards into one CSV and one report. */

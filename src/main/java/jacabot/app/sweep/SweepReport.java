@@ -125,6 +125,9 @@ public final class SweepReport {
             b.append(' ').append(throughput);
         }
         b.append("\n");
+        double shortest = runs.stream().mapToDouble(o -> o.status().equals(RunOutcome.OK) ? o.simulated() : Double.MAX_VALUE)
+                .min().orElse(Double.MAX_VALUE);
+        SuccessCriteria.caveat(shortest).ifPresent(c -> b.append("\n**Note:** ").append(c).append(".\n"));
         for (Experiment e : Experiment.values()) {
             List<RunOutcome> mine = runs.stream().filter(o -> o.experiment() == e).toList();
             if (mine.isEmpty()) {

@@ -38,4 +38,34 @@ class NewcomerMessagesTest {
         assertEquals("2", r[0], r[2]);
         assertTrue(r[2].strip().startsWith(bad + ":2:"), "file:line:col first, no 'error: ' before it: " + r[2]);
     }
+
+    @Test
+    void aRunOnAnotherWorldOrWithAnotherAgentHasItsOwnFolder() {
+        var nav = jacabot.robot.Experiment.NAVIGATION;
+        assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, null, null, false, 3));
+        assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, Path.of("worlds/navigation.json"),
+                Path.of("agents/src/main/asl/navigation.asl"), false, 3));
+        assertEquals(Path.of("runs/navigation-nav7-1"), ExperimentCommand.runFolder(nav, Path.of("/tmp/nav7.json"), null, false, 1));
+        assertEquals(Path.of("runs/navigation-nav7-my-agent-1"),
+                ExperimentCommand.runFolder(nav, Path.of("nav7.json"), Path.of("my-agent.asl"), false, 1));
+        assertEquals(Path.of("runs/navigation-as-published-navigation-3"),
+                ExperimentCommand.runFolder(nav, null, Path.of("agents/src/main/asl/as-published/navigation.asl"), false, 3));
+        assertEquals(Path.of("runs/navigation-baseline-3"), ExperimentCommand.runFolder(nav, null, null, true, 3));
+    }
+
+    @Test
+    void theSummaryNamesTheWorldAndTheAgentAndTheProgressLineHasNoEmptyBattery(@TempDir Path dir) throws Exception {
+        Path out = dir.resolve("o");
+        String[] r = CliRun.run("experiment", "obstacle-avoidance", "--headless", "--duration", "11s", "--out", out.toString());
+        assertEquals("0", r[0], r[2]);
+        String json = java.nio.file.Files.readString(out.resolve("summary.json"));
+        assertTrue(json.contains("\"worldFile\" : ") && json.contains("worlds/obstacle-avoidance.json"), json);
+        assertTrue(json.contains("\"agentFile\" : \"agents/src/main/asl/obstacle-avoidance.asl\""), json);
+        assertTrue(java.nio.file.Files.readString(out.resolve("summary.txt")).lines().skip(1).findFirst().orElseThrow()
+                .matches("files: world .*worlds/obstacle-avoidance.json, agent agents/src/main/asl/obstacle-avoidance.asl"));
+        assertTrue(r[1].contains("delivered 0\n") && !r[1].contains("battery"), "no battery in experiment 1:\n" + r[1]);
+        assertTrue(r[1].contains(", trajectory.png, steps.jsonl.gz"), r[1]);
+        // a summary that names its files still reads back
+        jacabot.robot.run.RunSummary.fromJson(json);
+    }
 }
