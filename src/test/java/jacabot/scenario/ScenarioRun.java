@@ -78,7 +78,7 @@ final class ScenarioRun {
         return run(experiment, experiment.agentResource(), seed, noise, seconds, edit, eachStep);
     }
 
-    /** Runs the agent as the thesis published it ({@code agents/src/main/asl/as-published/}, issue 13). */
+    /** Runs the agent as the thesis published it ({@code agents/src/main/asl/as-published/}, without our recovery plans). */
     static ScenarioRun runPublished(Experiment experiment, long seed, boolean noise, double seconds) throws Exception {
         return runPublished(experiment, seed, noise, seconds, UnaryOperator.identity(), (t, r) -> {
         });

@@ -52,7 +52,7 @@ class ExperimentAgentsTest {
         }
     }
 
-    /** Issue 19: the shared -!init makes the experiment's own middleware, named by the agent's middlewareClass. */
+    /** The shared -!init makes the experiment's own middleware, named by the agent's middlewareClass. */
     @Test
     void withoutARunnerTheAgentMakesItsOwnMiddleware() {
         for (String name : List.of("obstacle-avoidance", "object-picking")) {
@@ -94,7 +94,7 @@ class ExperimentAgentsTest {
         robot.percept("delta(-150)").percept("obstacle(true)");
         robot.cycles(50);
         robot.advance(50, 100);
-        // (issue 13) no console line per avoidance any more: the behaviour is what is checked
+        // no console line per avoidance any more: the behaviour is what is checked
         assertTrue(robot.actionNames().contains("setSpeeds(-100,100)"), "turns left, away from the right... " + robot.actionNames());
         assertTrue(robot.believes("avoiding"));
         robot.unpercept("obstacle(true)").percept("obstacle(false)");
@@ -102,7 +102,7 @@ class ExperimentAgentsTest {
         assertTrue(!robot.believes("avoiding"));
     }
 
-    /** Issue 13: an obstacle that does not clear ends, after avoidTimeout, in an escape (back off, turn). */
+    /** Recovery, not in the thesis: an obstacle that does not clear ends, after avoidTimeout, in an escape (back off, turn). */
     @Test
     void anObstacleThatDoesNotClearEndsInAnEscape() {
         var robot = connected("obstacle-avoidance");
@@ -147,7 +147,7 @@ class ExperimentAgentsTest {
         assertTrue(!robot.believes("picking"), "random motion resumes");
     }
 
-    /** The thesis' behaviour, kept in the agent as published (issue 13 made the default agent recover). */
+    /** The thesis' behaviour, kept in the agent as published (the default agent adds recovery, not in the thesis). */
     @Test
     void aFallenCylinderStopsEverything() {
         var robot = connected(ASL.resolve("as-published/object-picking.asl"));
@@ -162,7 +162,7 @@ class ExperimentAgentsTest {
         assertEquals(before, robot.actions.size(), "nothing runs after the fall");
     }
 
-    /** Issue 13: after a fall the default agent lets the cylinder go and wanders on. */
+    /** Recovery, not in the thesis: after a fall the default agent lets the cylinder go and wanders on. */
     @Test
     void aFallenCylinderIsLeftAndTheSearchGoesOn() {
         var robot = connected("object-picking");

@@ -87,7 +87,7 @@ public final class LockstepRun implements AutoCloseable {
         middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
-        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec());
         initialGoals = program.goals();
         failures = new FailureWatch(initialGoals);

@@ -66,7 +66,7 @@ public final class RealTimeRun implements AutoCloseable {
         int boundPort = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
-        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         var program = WorldBeliefs.inject(agent.parse(parser), world.spec());
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {

@@ -10,7 +10,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Issue 17's calmer console: --quiet, the default and --verbose; repeated agent lines folded; warnings on mix-ups. */
+/** The console's levels: --quiet, the default and --verbose; repeated agent lines folded; warnings on mix-ups. */
 class ConsoleLevelsTest {
     private static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
     /** The thesis' agent as published: near a wall it prints "Obstacle: N", "Wait avoiding", "high left" in a loop. */

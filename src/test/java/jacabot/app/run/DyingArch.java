@@ -6,7 +6,7 @@ import jacabot.cartago.bridge.CAgentArch;
 
 /**
  * An agent architecture whose thread dies a while after the robot connected, as a runaway rule's
- * StackOverflowError kills it (issue 16, fault 3): for {@link ProcessFaultsTest}.
+ * StackOverflowError kills it (docs/reliability.md, fault 3): for {@link ProcessFaultsTest}.
  */
 public final class DyingArch extends CAgentArch {
     private int forwards;

@@ -19,7 +19,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * Issue 18: sweeps run lockstep over an in-process link ({@link LockstepRun#inMemory}) only because
+ * Sweeps run lockstep over an in-process link ({@link LockstepRun#inMemory}) only because
  * it is the same run as over the socket: the controller's and the agent side's event logs, and the
  * run's summary and recorded event log, equal the socket run's to the byte.
  */

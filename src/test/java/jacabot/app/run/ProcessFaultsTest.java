@@ -25,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The thesis' two-process set-up with real processes: the agent platform is {@code jacabot run
- * obstacle-avoidance.mas2j} in a JVM of its own, the controller runs here. Its faults (issue 16):
+ * obstacle-avoidance.mas2j} in a JVM of its own, the controller runs here. Its faults (docs/reliability.md):
  * the agent JVM killed, the agent's thread dead; and the lockstep mode that used to deadlock at step 0.
  */
 class ProcessFaultsTest {
@@ -136,7 +136,7 @@ class ProcessFaultsTest {
             long delay = stopDelay(events, killedAt);
             System.out.println("ProcessFaultsTest: agent JVM killed at t=" + killedAt + " ms, wheels stopped " + delay
                     + " ms of simulated time later");
-            // issue 16: within 200 ms of simulated time; the socket's end stops it at the next control
+            // docs/reliability.md: within 200 ms of simulated time; the socket's end stops it at the next control
             // step, and failing that the fail-safe, which holds the world rather than overrun
             assertTrue(delay < 200, "wheels stopped " + delay + " ms of simulated time after the kill");
             Thread.sleep(200);

@@ -17,7 +17,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * Issue 16: the two-process lockstep set-up is the same run as the in-process one. The agent side
+ * Reliability (docs/reliability.md): the two-process lockstep set-up is the same run as the in-process one. The agent side
  * waits for a controller of its own world file ({@link LockstepRun#remoteController}), which the
  * test runs on its own {@code SimWorld}, as {@code jacabot controller --lockstep} does; both event
  * logs, the controller's and the agent side's, must equal the in-process run's line for line.
