@@ -57,7 +57,7 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
     private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
 
-    @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/as-published/navigation.asl (default: the packaged one)")
+    @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/src/main/asl/as-published/navigation.asl, found from any folder (default: the packaged one)")
     private Path agent;
 
     @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default: one per core, here ${DEFAULT-VALUE})")
