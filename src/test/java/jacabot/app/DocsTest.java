@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -239,11 +240,11 @@ class DocsTest {
      * comment, a pipe or a redirection. A synopsis ({@code [--seed N]}, {@code a|b}, {@code NAME}) is
      * read with its options taken, its first alternatives and sample values for its placeholders.
      */
-    static java.util.Optional<List<String>> command(String line, boolean span) {
+    static Optional<List<String>> command(String line, boolean span) {
         String text = line.replace("\\|", "|");
         Matcher m = Pattern.compile("(?:^|\\s)(?:[\\w./-]*/bin/)?jacabot((?:\\s.*)?)$").matcher(text);
         if (!m.find() || (span && m.start() != 0) || text.startsWith("jacabot.")) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
         String rest = m.group(1).replaceFirst("\\s#.*", "").replaceFirst("\\s(\\||&&|>|2>|;|:::).*", "");
         rest = rest.replace("[no-]", "no-").replaceAll("<[^>]*>", "NAME").replaceAll("\\|[^\\s\\]]*", "").replace("[", " ").replace("]", " ").replace("{}", "1")
@@ -256,7 +257,7 @@ class DocsTest {
             String u = t.replaceAll("^\"|\"$", "");
             args.add(SAMPLE.getOrDefault(u, u.matches("[A-Z]{1,2}") ? "1" : u));
         }
-        return java.util.Optional.of(args);
+        return Optional.of(args);
     }
 
     /** A span may name a command without all it needs (`jacabot run`, `jacabot run --tls-store`); a code line may not. */

@@ -1,12 +1,13 @@
 package jacabot.scenario;
 
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepCoordinator;
-import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
+import jacabot.robot.Experiment;
+import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;
-import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.AreaSpec;
@@ -97,7 +98,7 @@ final class ScenarioRun {
                 s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
         s = edit.apply(s);
         ScenarioRun run = new ScenarioRun(experiment, seed, SimWorld.of(s));
-        var source = jacabot.app.run.AgentSource.resource(agentResource, experiment.id() + ".asl");
+        var source = AgentSource.resource(agentResource, experiment.id() + ".asl");
         var lockstep = new LockstepRun(run.world, null, experiment, source, seed,
                 new PrintStream(run.new LineSink(), true, StandardCharsets.UTF_8));
         AreaSpec storage = s.storage();

@@ -1,12 +1,13 @@
 package jacabot.app.cli;
 
+import jacabot.experiments.link.MiddlewareLink;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.util.List;
 import java.util.Properties;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine;
 
 /** The {@code jacabot} launcher: one entry point with a subcommand per job. */
 @Command(name = "jacabot",
@@ -40,7 +41,7 @@ public final class JacabotCommand implements Runnable {
             if (List.of(args).contains("--debug")) {
                 e.printStackTrace();
             }
-            jacabot.experiments.link.MiddlewareLink.closeAll(); // the robots stop now, not when the JVM is gone
+            MiddlewareLink.closeAll(); // the robots stop now, not when the JVM is gone
             new Thread(() -> System.exit(1), "exit-after-thread-death").start();
         });
         System.exit(execute(args));

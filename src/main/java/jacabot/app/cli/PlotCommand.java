@@ -1,6 +1,9 @@
 package jacabot.app.cli;
 
 import jacabot.app.plot.RunPlots;
+import jacabot.app.replay.StepLog;
+import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
@@ -14,7 +17,7 @@ final class PlotCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
-    private java.io.PrintStream out;
+    private PrintStream out;
 
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED)")
     private Path dir;
@@ -22,13 +25,13 @@ final class PlotCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
-        if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
-            throw new UserError(dir + ": no " + jacabot.app.replay.StepLog.FILE
+        if (!Files.isRegularFile(dir.resolve(StepLog.FILE))) {
+            throw new UserError(dir + ": no " + StepLog.FILE
                     + " (written by every headless `jacabot experiment` run)");
         }
         try {
             RunPlots.writeAll(dir, out);
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             throw new RunFailure(e.getMessage());
         }
         return 0;

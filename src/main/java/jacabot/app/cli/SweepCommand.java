@@ -1,10 +1,14 @@
 package jacabot.app.cli;
 
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.app.Installation;
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
 import jacabot.app.sweep.RunOutcome;
+import jacabot.app.sweep.SuccessCriteria;
 import jacabot.app.sweep.Sweep;
 import jacabot.app.sweep.SweepJob;
 import jacabot.app.sweep.SweepPlan;
-import jacabot.app.sweep.SuccessCriteria;
 import jacabot.app.sweep.SweepReport;
 import jacabot.app.sweep.SweepRun;
 import jacabot.robot.Experiment;
@@ -18,10 +22,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 /**
  * {@code jacabot sweep EXPERIMENT|all}: agent and baseline, headless in lockstep, over every world x
@@ -118,7 +123,7 @@ final class SweepCommand implements Callable<Integer> {
                 }
             }
             if (shard != null) {
-                var m = java.util.regex.Pattern.compile("(\\d+)/(\\d+)").matcher(shard.trim());
+                var m = Pattern.compile("(\\d+)/(\\d+)").matcher(shard.trim());
                 if (!m.matches() || Integer.parseInt(m.group(2)) < 1 || Integer.parseInt(m.group(1)) < 1
                         || Integer.parseInt(m.group(1)) > Integer.parseInt(m.group(2))) {
                     throw new IllegalArgumentException("bad --shard '" + shard + "' (expected I/N with 1 <= I <= N, e.g. 2/8)");
@@ -133,7 +138,7 @@ final class SweepCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
             }
             if (worlds != null) {
-                worlds = jacabot.app.Installation.locate(worlds); // --worlds worlds: the bundled ones, from anywhere
+                worlds = Installation.locate(worlds); // --worlds worlds: the bundled ones, from anywhere
             }
             if (worlds != null && !Files.isDirectory(worlds)) {
                 throw new IllegalArgumentException(worlds + ": no such directory");
@@ -147,14 +152,14 @@ final class SweepCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
-        jacabot.app.run.AgentSource agentSource = null;
+        AgentSource agentSource = null;
         if (agent != null) {
             try {
-                Path file = jacabot.app.Installation.locate(agent);
+                Path file = Installation.locate(agent);
                 agentSource = ExperimentCommand.readAgent(file);
                 agentSource.parse(agentSource.parser()); // a syntax error before, not in every run
                 agent = file;
-            } catch (jacabot.agent.parser.AslSyntaxException e) {
+            } catch (AslSyntaxException e) {
                 throw UserError.located(e.getMessage()); // file:line:col: error: ...
             }
         }
@@ -205,7 +210,7 @@ final class SweepCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void writeLogs(Path logs, SweepRun.Result r, jacabot.app.console.ConsoleLog log) {
+    private static void writeLogs(Path logs, SweepRun.Result r, ConsoleLog log) {
         RunOutcome o = r.outcome();
         String base = o.experiment().id() + "_" + o.world() + "_" + o.controller() + "_seed" + o.seed();
         try {

@@ -1,11 +1,15 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.demo.Wander;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.viewer.PngRenderer;
 import jacabot.sim.viewer.WorldViewer;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -13,10 +17,13 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import picocli.CommandLine;
+import javax.swing.JFrame;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 /** {@code jacabot world view} and {@code jacabot world render}: sim-world's viewer and renderer on a world file. */
 final class WorldViewCommands {
@@ -26,7 +33,7 @@ final class WorldViewCommands {
     /** Loads a world (the current folder's file, else the installation's) or says why not. */
     private static SimWorld load(Path file) {
         try {
-            return SimWorld.load(jacabot.app.Installation.locate(file));
+            return SimWorld.load(Installation.locate(file));
         } catch (WorldFileException e) {
             throw new UserError(e.getMessage());
         }
@@ -48,17 +55,17 @@ final class WorldViewCommands {
         @Override
         public Integer call() throws InterruptedException {
             SimWorld world = load(file);
-            if (java.awt.GraphicsEnvironment.isHeadless()) {
+            if (GraphicsEnvironment.isHeadless()) {
                 throw new UserError("no display; `jacabot world render " + file + " --out world.png` draws the world headless");
             }
             SimRunner runner = new SimRunner(world, wander ? new Wander() : null);
             var closed = new CountDownLatch(1);
-            javax.swing.SwingUtilities.invokeLater(() -> {
-                javax.swing.JFrame frame = WorldViewer.open(runner);
-                frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+            SwingUtilities.invokeLater(() -> {
+                JFrame frame = WorldViewer.open(runner);
+                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+                frame.addWindowListener(new WindowAdapter() {
                     @Override
-                    public void windowClosed(java.awt.event.WindowEvent e) {
+                    public void windowClosed(WindowEvent e) {
                         closed.countDown();
                     }
                 });

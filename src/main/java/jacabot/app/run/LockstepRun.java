@@ -1,26 +1,27 @@
 package jacabot.app.run;
-import jacabot.robot.Experiment;
-import jacabot.experiments.link.LatencyStats;
-import jacabot.experiments.link.LatencyRecorder;
-
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
-import jacabot.cartago.SimulatedClock;
+import jacabot.agent.semantics.Event;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.cartago.AgentId;
 import jacabot.cartago.ArtifactId;
 import jacabot.cartago.ArtifactObserverAdapter;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.CartagoLogger;
+import jacabot.cartago.OpTarget;
+import jacabot.cartago.SimulatedClock;
+import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.CAgentArch;
 import jacabot.cartago.bridge.CartagoEnvironment;
-import jacabot.cartago.CartagoException;
-import jacabot.cartago.OpTarget;
-import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
+import jacabot.experiments.link.LatencyRecorder;
+import jacabot.experiments.link.LatencyStats;
 import jacabot.experiments.link.StepData;
+import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
@@ -28,6 +29,7 @@ import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -52,7 +54,7 @@ public final class LockstepRun implements AutoCloseable {
     private final MiddlewareArtifact middleware;
     private long cycles;
     /** Reactive time: from a step's readings reaching the middleware to the first plan they trigger. */
-    private final jacabot.experiments.link.LatencyRecorder reactive = new jacabot.experiments.link.LatencyRecorder(1_000_000);
+    private final LatencyRecorder reactive = new LatencyRecorder(1_000_000);
     private long deliveredNanos;
     private long inlineNanos;
     private boolean reactedThisStep = true;
@@ -67,7 +69,7 @@ public final class LockstepRun implements AutoCloseable {
     private boolean reasoned;
     private Consumer<StepData> onStep = d -> {
     };
-    private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
+    private BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
     };
 
     /**
@@ -78,7 +80,7 @@ public final class LockstepRun implements AutoCloseable {
         this.world = world;
         this.robotName = robotName;
         workspace = Workspace.builder("main").stepped().clock(clock).console(console)
-                .logger(jacabot.cartago.CartagoLogger.console(console)).build();
+                .logger(CartagoLogger.console(console)).build();
         mas = new LocalMAS(clock::nowMillis, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
         stepper = new JacaStepper(mas, workspace);
@@ -100,7 +102,7 @@ public final class LockstepRun implements AutoCloseable {
         });
     }
 
-    private static boolean isPercept(jacabot.agent.semantics.Event e) {
+    private static boolean isPercept(Event e) {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
@@ -115,7 +117,7 @@ public final class LockstepRun implements AutoCloseable {
     }
 
     /** {@return the reactive times measured so far (wall clock, microseconds)} */
-    public jacabot.experiments.link.LatencyStats reactiveTimes() {
+    public LatencyStats reactiveTimes() {
         return reactive.stats();
     }
 
@@ -130,7 +132,7 @@ public final class LockstepRun implements AutoCloseable {
     }
 
     /** Called after each control step with its readings and the commands going to the robot (inspector, step log). */
-    public void onCommands(java.util.function.BiConsumer<StepData, List<Command>> listener) {
+    public void onCommands(BiConsumer<StepData, List<Command>> listener) {
         this.onCommands = listener;
     }
 

@@ -1,23 +1,26 @@
 package jacabot.app.run;
-import jacabot.robot.Experiment;
-import jacabot.experiments.link.LinkTimings;
-
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
-import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
-import jacabot.cartago.bridge.CAgentArch;
-import jacabot.cartago.bridge.CartagoEnvironment;
+import jacabot.agent.semantics.Clock;
+import jacabot.agent.semantics.Event;
+import jacabot.agent.syntax.Literal;
 import jacabot.cartago.CartagoException;
 import jacabot.cartago.CartagoLogger;
 import jacabot.cartago.Workspace;
+import jacabot.cartago.bridge.CAgentArch;
+import jacabot.cartago.bridge.CartagoEnvironment;
 import jacabot.experiments.MiddlewareArtifact;
+import jacabot.experiments.link.LinkTimings;
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
+import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import java.io.PrintStream;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * An experiment in real time (× a speed factor), as the thesis ran it: the simulator paces the
@@ -52,11 +55,11 @@ public final class RealTimeRun implements AutoCloseable {
      *                         and pose, on the simulation thread; e.g. for the step log), or null
      */
     public RealTimeRun(SimWorld world, Experiment experiment, AgentSource agent, long seed,
-            double speed, PrintStream console, int port, java.util.function.Consumer<String> controllerEvents)
+            double speed, PrintStream console, int port, Consumer<String> controllerEvents)
             throws AslSyntaxException, CartagoException {
         this.world = world;
         // both ends are in this process: a fresh secret of this run's, no file needed
-        jacabot.robot.link.LinkSecret.useInThisProcess(jacabot.robot.link.LinkSecret.random());
+        LinkSecret.useInThisProcess(LinkSecret.random());
         workspace = Workspace.builder("main").console(console).logger(CartagoLogger.console(console)).build();
         Clock simTime = world::timeMs;
         mas = new LocalMAS(simTime, console, seed);
@@ -71,7 +74,7 @@ public final class RealTimeRun implements AutoCloseable {
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
             timeReaction(event);
-            if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l
+            if (event.isExternal() && event.trigger().literal() instanceof Literal l
                     && l.getAnnot("percept_type") != null) {
                 var reading = middleware.takeTrigger();
                 if (reading != null) {
@@ -91,7 +94,7 @@ public final class RealTimeRun implements AutoCloseable {
     }
 
     /** On the agent's thread: a plan was chosen for {@code event} (the meter is made before the agent runs). */
-    private void timeReaction(jacabot.agent.semantics.Event event) {
+    private void timeReaction(Event event) {
         lag.planSelected(event);
     }
 
@@ -114,7 +117,7 @@ public final class RealTimeRun implements AutoCloseable {
     }
 
     /** {@return the link's timings (transport, delivery, reactive, response)} */
-    public jacabot.experiments.link.LinkTimings timings() {
+    public LinkTimings timings() {
         return middleware.link().timings();
     }
 

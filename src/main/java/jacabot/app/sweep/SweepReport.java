@@ -7,8 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.function.ToDoubleFunction;
 
 /**
@@ -189,7 +191,7 @@ public final class SweepReport {
     /** {@return the outcomes of several CSVs joined, in report order, without repeated runs} */
     public static List<RunOutcome> merge(List<List<RunOutcome>> parts) {
         List<RunOutcome> all = new ArrayList<>();
-        java.util.Set<String> seen = new java.util.HashSet<>();
+        Set<String> seen = new HashSet<>();
         for (List<RunOutcome> p : parts) {
             for (RunOutcome o : p) {
                 if (seen.add(String.join("\u0000", Arrays.asList(o.experiment().id(), o.world(), o.controller(),

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -17,7 +18,7 @@ class ConsoleLevelsTest {
     private static final String PUBLISHED = ROOT.resolve("agents/src/main/asl/as-published/suspend-resume.asl").toString();
 
     private static String[] published(Path out, String... level) {
-        var args = new java.util.ArrayList<>(List.of("experiment", "suspend-resume", "--headless", "--duration", "40s",
+        var args = new ArrayList<>(List.of("experiment", "suspend-resume", "--headless", "--duration", "40s",
                 "--agent", PUBLISHED, "--out", out.toString()));
         args.addAll(List.of(level));
         String[] r = CliRun.run(args.toArray(new String[0]));

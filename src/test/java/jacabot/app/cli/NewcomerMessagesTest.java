@@ -3,6 +3,9 @@ package jacabot.app.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.robot.Experiment;
+import jacabot.robot.run.RunSummary;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -33,7 +36,7 @@ class NewcomerMessagesTest {
     @Test
     void aSyntaxErrorIsItsOwnLocatedLine(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.asl");
-        java.nio.file.Files.writeString(bad, "!start.\n+!start <- foo(.\n");
+        Files.writeString(bad, "!start.\n+!start <- foo(.\n");
         String[] r = CliRun.run("experiment", "navigation", "--headless", "--agent", bad.toString(), "--out", dir.resolve("o").toString());
         assertEquals("2", r[0], r[2]);
         assertTrue(r[2].strip().startsWith(bad + ":2:"), "file:line:col first, no 'error: ' before it: " + r[2]);
@@ -41,7 +44,7 @@ class NewcomerMessagesTest {
 
     @Test
     void aRunOnAnotherWorldOrWithAnotherAgentHasItsOwnFolder() {
-        var nav = jacabot.robot.Experiment.NAVIGATION;
+        var nav = Experiment.NAVIGATION;
         assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, null, null, false, 3));
         assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, Path.of("worlds/navigation.json"),
                 Path.of("agents/src/main/asl/navigation.asl"), false, 3));
@@ -58,14 +61,14 @@ class NewcomerMessagesTest {
         Path out = dir.resolve("o");
         String[] r = CliRun.run("experiment", "obstacle-avoidance", "--headless", "--duration", "11s", "--out", out.toString());
         assertEquals("0", r[0], r[2]);
-        String json = java.nio.file.Files.readString(out.resolve("summary.json"));
+        String json = Files.readString(out.resolve("summary.json"));
         assertTrue(json.contains("\"worldFile\" : ") && json.contains("worlds/obstacle-avoidance.json"), json);
         assertTrue(json.contains("\"agentFile\" : \"agents/src/main/asl/obstacle-avoidance.asl\""), json);
-        assertTrue(java.nio.file.Files.readString(out.resolve("summary.txt")).lines().skip(1).findFirst().orElseThrow()
+        assertTrue(Files.readString(out.resolve("summary.txt")).lines().skip(1).findFirst().orElseThrow()
                 .matches("files: world .*worlds/obstacle-avoidance.json, agent agents/src/main/asl/obstacle-avoidance.asl"));
         assertTrue(r[1].contains("delivered 0\n") && !r[1].contains("battery"), "no battery in experiment 1:\n" + r[1]);
         assertTrue(r[1].contains(", trajectory.png, steps.jsonl.gz"), r[1]);
         // a summary that names its files still reads back
-        jacabot.robot.run.RunSummary.fromJson(json);
+        RunSummary.fromJson(json);
     }
 }

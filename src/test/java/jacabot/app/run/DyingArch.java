@@ -1,6 +1,7 @@
 package jacabot.app.run;
 
 import jacabot.agent.runtime.LocalArch;
+import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.cartago.bridge.CAgentArch;
 
@@ -18,7 +19,7 @@ public final class DyingArch extends CAgentArch {
 
     /** The robot's {@code forward} or {@code setSpeeds} goes out, and at the N-th the agent's next cycle dies: the robot is moving then. */
     @Override
-    public void act(jacabot.agent.semantics.ActionExec action, Agent agent) {
+    public void act(ActionExec action, Agent agent) {
         super.act(action, agent);
         String act = action.action().toString();
         if ((act.startsWith("forward") || act.startsWith("setSpeeds"))

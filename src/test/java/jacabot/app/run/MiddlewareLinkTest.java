@@ -1,17 +1,12 @@
 package jacabot.app.run;
-import jacabot.experiments.link.MiddlewareLink;
-import jacabot.experiments.link.LinkEvent;
 import jacabot.experiments.link.LinkConfig;
-
-import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
-import static org.junit.jupiter.api.Assertions.assertTrue;
-
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.Handshake;
+import jacabot.robot.link.LinkClock;
 import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfo;
@@ -24,14 +19,22 @@ import java.io.DataOutputStream;
 import java.io.ObjectOutputStream;
 import java.net.InetAddress;
 import java.net.Socket;
+import java.net.SocketException;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.Date;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
 import org.junit.jupiter.api.Test;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The middleware's end of the link, against the real controller and against hostile clients. */
 class MiddlewareLinkTest {
@@ -119,7 +122,7 @@ class MiddlewareLinkTest {
     void failSafeStopsTheRobotWhenTheAgentSideIsSilentAndReconnectionRestoresConnected() throws Exception {
         AtomicLong nanos = new AtomicLong();
         var cc = ControllerConfig.defaults().withSpeedFactor(20).withFailSafeMs(1000).withBackoff(20, 100)
-                .withClocks(jacabot.robot.link.LinkClock.system(), nanos::get).withLog(log::add);
+                .withClocks(LinkClock.system(), nanos::get).withLog(log::add);
         try (var link = InProcessLink.start(world("navigation"), cc, linkConfig().withHeartbeatMs(0))) {
             link.controller().runner().start();
             MiddlewareLink m = link.middleware();
@@ -182,14 +185,14 @@ class MiddlewareLinkTest {
         try (var m = MiddlewareLink.open(linkConfig())) {
             try (Socket s = handshake(m, Protocol.VERSION)) {
                 await(m, e -> e instanceof LinkEvent.Connected);
-                writeBatchWith(s, new java.util.Date(0));
+                writeBatchWith(s, new Date(0));
                 expectClosedWith(m, "rejected by the deserialization filter: class java.util.Date is not allowed");
             }
             try (Socket s = handshake(m, Protocol.VERSION)) {
                 await(m, e -> e instanceof LinkEvent.Connected);
                 try {
                     writeBatchWith(s, new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[10_000_000]));
-                } catch (java.net.SocketException e) {
+                } catch (SocketException e) {
                     // the middleware hung up in the middle of the 40 MB: as it should
                 }
                 expectClosedWith(m, "array of 10000000 elements exceeds the limit");
@@ -230,7 +233,7 @@ class MiddlewareLinkTest {
             }
             // still serving: a real controller gets through
             var cc = ControllerConfig.defaults().withAddress("127.0.0.1", m.port()).withLog(log::add).withSecret(SECRET);
-            try (var controller = new jacabot.robot.RobotController(world("obstacle-avoidance"), cc)) {
+            try (var controller = new RobotController(world("obstacle-avoidance"), cc)) {
                 controller.start();
                 var c = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
                 assertEquals("mybot", c.robotName());
@@ -239,7 +242,7 @@ class MiddlewareLinkTest {
         }
     }
 
-    static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
+    static void waitFor(BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (!condition.getAsBoolean() && System.nanoTime() < end) {
             Thread.sleep(10);

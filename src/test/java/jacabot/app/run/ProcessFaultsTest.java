@@ -5,10 +5,15 @@ import static jacabot.app.run.MiddlewareLinkTest.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.experiments.link.LinkConfig;
+import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
+import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkSecret;
 import java.io.File;
+import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
@@ -18,6 +23,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -85,7 +91,7 @@ class ProcessFaultsTest {
     }
 
     /** Waits up to 120 s: a JVM starting on a loaded machine is slow. */
-    private static void waitLong(java.util.function.BooleanSupplier condition) throws InterruptedException {
+    private static void waitLong(BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
         while (!condition.getAsBoolean() && System.nanoTime() < end) {
             Thread.sleep(20);
@@ -185,9 +191,9 @@ class ProcessFaultsTest {
     @Test
     void theControllerJvmKilledEndsTheRobotWithItsWorldAndTheAgentSideIsTold(@TempDir Path dir) throws Exception {
         Path secret = dir.resolve("secret");
-        var config = jacabot.experiments.link.LinkConfig.defaults().withPort(0).withSecret(LinkSecret.loadOrCreate(secret))
+        var config = LinkConfig.defaults().withPort(0).withSecret(LinkSecret.loadOrCreate(secret))
                 .withLog(line -> { });
-        try (var m = jacabot.experiments.link.MiddlewareLink.open(config)) {
+        try (var m = MiddlewareLink.open(config)) {
             String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
             Process controller = new ProcessBuilder(java, "-Xmx256m", "-cp", System.getProperty("java.class.path"),
                     "jacabot.app.cli.JacabotCommand", "controller", "--world", ROOT.resolve("worlds/navigation.json").toString(),
@@ -195,13 +201,13 @@ class ProcessFaultsTest {
                     .redirectErrorStream(true).redirectOutput(dir.resolve("controller.txt").toFile()).start();
             try {
                 waitLong(m::isConnected);
-                assertTrue(m.send(jacabot.robot.link.Command.forward()));
+                assertTrue(m.send(Command.forward()));
                 MiddlewareLinkTest.await(m, MiddlewareLinkTest.wheels(50, 50));
                 long lastSeen = m.simTimeMs();
                 controller.destroyForcibly(); // SIGKILL: the world, and the robot in it, end with the process
                 long t0 = System.nanoTime();
-                var gone = (jacabot.experiments.link.LinkEvent.Disconnected) MiddlewareLinkTest.await(m,
-                        e -> e instanceof jacabot.experiments.link.LinkEvent.Disconnected);
+                var gone = (LinkEvent.Disconnected) MiddlewareLinkTest.await(m,
+                        e -> e instanceof LinkEvent.Disconnected);
                 long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
                 System.out.println("ProcessFaultsTest: controller JVM killed after t=" + lastSeen + " ms: the agent side told "
                         + ms + " ms later (" + gone.reason() + ")");
@@ -225,7 +231,7 @@ class ProcessFaultsTest {
             waitLong(() -> {
                 try {
                     return Files.readString(console).contains("t=  10.0 s");
-                } catch (java.io.IOException e) {
+                } catch (IOException e) {
                     return false;
                 }
             });

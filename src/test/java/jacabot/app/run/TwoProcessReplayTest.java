@@ -8,6 +8,7 @@ import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimWorld;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
@@ -36,7 +37,7 @@ class TwoProcessReplayTest {
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "NAVIGATION"})
     void theTwoProcessLockstepRunIsTheInProcessRun(Experiment e) throws Exception {
-        PrintStream quiet = new PrintStream(java.io.OutputStream.nullOutputStream());
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         SimWorld w = world(e);
         var one = new LockstepRun(w, null, e, agent(e), w.seed(), quiet).runFor(SECONDS);
 
