@@ -47,6 +47,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -194,7 +195,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (viewer) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, source, runSeed, seconds, log, outDir);
+            return runWithViewer(simWorld, worldFile, source, runSeed, seconds, log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
@@ -415,13 +416,14 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, AgentSource source, long runSeed, double seconds,
+    private int runWithViewer(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
             ConsoleLog log, Path outDir) throws Exception {
         // the step log as in a headless run; its steps come from the controller's event log
         var tap = RealTimeTap.open(simWorld, outDir, experiment, source.name());
         var recorder = RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
         long start = System.nanoTime();
         List<LagMeter.Episode> lags = List.of();
+        Optional<String> agentFailure = Optional.empty();
         try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
@@ -450,10 +452,11 @@ final class ExperimentCommand implements Callable<Integer> {
                 });
             });
             while (!closed.await(200, TimeUnit.MILLISECONDS)) {
-                if (simWorld.time() >= seconds) {
+                if (simWorld.time() >= seconds || run.agentFailure().isPresent()) {
                     break;
                 }
             }
+            agentFailure = run.agentFailure();
             run.lag().close(); // an episode still open ends here, and is written with the next step
             tap.awaitLagNotes(1000);
             run.runner().stop();
@@ -477,7 +480,7 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
         recorder.detach();
         report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1,
-                files(simWorld.spec().name(), source.name()));
+                files(worldFile, source.name()));
         if (!lags.isEmpty()) {
             var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
             lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));
@@ -486,6 +489,9 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.result("Step log: " + outDir.resolve(StepLog.FILE) + " (jacabot replay " + outDir + ")");
         RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+        if (agentFailure.isPresent()) {
+            throw new RunFailure(agentFailure.get());
+        }
         return 0;
     }
 

@@ -20,6 +20,7 @@ import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import java.io.PrintStream;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
@@ -35,6 +36,7 @@ public final class RealTimeRun implements AutoCloseable {
     private final MiddlewareArtifact middleware;
     private Thread agents;
     private final LagMeter lag;
+    private final FailureWatch failures;
 
     /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
     public static final long STALL_MS = 100;
@@ -72,7 +74,9 @@ public final class RealTimeRun implements AutoCloseable {
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         var program = WorldBeliefs.inject(agent.parse(parser), world.spec());
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
+        failures = new FailureWatch(program.goals());
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+            failures.planSelected(event, world.timeMs());
             timeReaction(event);
             if (event.isExternal() && event.trigger().literal() instanceof Literal l
                     && l.getAnnot("percept_type") != null) {
@@ -96,6 +100,17 @@ public final class RealTimeRun implements AutoCloseable {
     /** On the agent's thread: a plan was chosen for {@code event} (the meter is made before the agent runs). */
     private void timeReaction(Event event) {
         lag.planSelected(event);
+    }
+
+    /**
+     * {@return why the agent failed at its job, if it has}: a {@code .stopMAS} or a failure storm
+     * ({@link FailureWatch}); the caller ends the run. Looked at by the caller every few hundred ms.
+     */
+    public Optional<String> agentFailure() {
+        if (mas.isStopped()) {
+            failures.systemStopped(world.timeMs());
+        }
+        return failures.verdict();
     }
 
     /** {@return how far the run falls behind real time (sampling from {@link #start()} on)} */
