@@ -7,8 +7,13 @@ import java.util.Optional;
 
 /**
  * Where jacabot is installed ({@code gradle installDist}: {@code bin/}, {@code lib/}, and the
- * bundled {@code worlds/}, {@code agents/} and {@code examples/}), so that experiment names
- * work from any folder. Paths the user types stay relative to the current folder.
+ * bundled {@code worlds/}, {@code agents/src/main/asl/} and {@code examples/}, at their paths in
+ * the repository), so that experiment names work from any folder.
+ *
+ * <p>The one rule for a file the user names ({@code --agent}, {@code --world}, {@code --worlds},
+ * {@code jacabot run FILE}, {@code jacabot world view FILE}, ...; {@link #locate}): relative to the
+ * current folder first, then to the installation. So {@code agents/src/main/asl/as-published/navigation.asl}
+ * works in a checkout and from any folder. Outputs ({@code --out}, {@code runs/}) go to the current folder.
  */
 public final class Installation {
     private Installation() {
@@ -35,6 +40,18 @@ public final class Installation {
             // not from a jar on the file system
         }
         return Optional.empty();
+    }
+
+    /**
+     * {@return a file the user named}: as given when it is absolute or exists from the current
+     * folder, else the installation's file of that path when there is one, else as given (so that
+     * a message names what the user typed)
+     */
+    public static Path locate(Path named) {
+        if (named.isAbsolute() || Files.exists(named)) {
+            return named;
+        }
+        return home().map(h -> h.resolve(named)).filter(Files::exists).orElse(named);
     }
 
     /**

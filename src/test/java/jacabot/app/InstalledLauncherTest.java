@@ -82,7 +82,7 @@ class InstalledLauncherTest {
     void worldAndAgentPathsAreRelativeToTheCurrentFolder(@TempDir Path dir) throws Exception {
         Path home = launcher().getParent().getParent();
         Files.copy(home.resolve("worlds/navigation.json"), dir.resolve("my-world.json"));
-        Files.copy(home.resolve("agents/navigation.asl"), dir.resolve("my-agent.asl"));
+        Files.copy(home.resolve("agents/src/main/asl/navigation.asl"), dir.resolve("my-agent.asl"));
         String out = run(dir, "experiment", "navigation", "--headless", "--duration", "1s", "--world", "my-world.json",
                 "--agent", "my-agent.asl", "--out", "out");
         assertTrue(Files.isRegularFile(dir.resolve("out/summary.json")), out);
@@ -109,7 +109,7 @@ class InstalledLauncherTest {
         assertTrue(bench.startsWith("Experiment 4 with the agent, lockstep, seed 13, "), "the experiment's seed:\n" + bench);
         String sweep = run(empty, "sweep", "navigation", "--worlds", "worlds", "--seeds", "1", "--duration", "2s",
                 "--controllers", "agent", "--jobs", "1", "--no-progress");
-        assertTrue(sweep.startsWith("Sweep: 1 runs (1 worlds x 1 seeds x 1 controllers)"), sweep);
+        assertTrue(sweep.startsWith("Sweep: 1 run (1 world x 1 seed x 1 controller)"), sweep);
         assertTrue(Files.isRegularFile(empty.resolve("runs/sweep/report.md")), sweep);
     }
 }

@@ -16,7 +16,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * The experiments on generated worlds nobody tuned them for (issue 13), through the sweep and the
+ * The experiments on generated worlds nobody tuned them for, through the sweep and the
  * shared {@link SuccessCriteria}. CI: three worlds per experiment, one seed, ten simulated minutes,
  * both controllers (about two minutes on two cores): every run must go the whole time (no crash,
  * hang or early end) and be judged, and the agent must succeed at least as often as the baseline.

@@ -49,13 +49,13 @@ class ObjectPickingScenarioTest {
         assertTrue(movedAt[0] > 0, run.summary());
         long notFound = run.firstLine("Cylinder not found", movedAt[0]);
         assertTrue(notFound > movedAt[0] && notFound - movedAt[0] <= 8000, "grip timeout at " + notFound + "; " + run.summary());
-        // nothing picked at the grip; (issue 13) far sight may find the moved cylinder again later
+        // nothing picked at the grip; far sight (not in the thesis) may find the moved cylinder again later
         long picked = run.firstLine("Cylinder picked up", 0);
         assertTrue(picked < 0 || picked > notFound + 3000, "picked at " + picked + "; " + run.summary());
         assertTrue(run.travelled(notFound + 3000, notFound + 23_000) > 0.3, "wanders on: " + run.summary());
     }
 
-    /** The thesis' behaviour, kept in the agent as published (issue 13: the default agent lets the cylinder go and wanders on). */
+    /** The thesis' behaviour, kept in the agent as published (recovery, not in the thesis: the default agent lets the cylinder go and wanders on). */
     @Test
     void aCylinderKnockedOutOfTheGripperStopsTheRobotWithAReport() throws Exception {
         long[] knockedAt = {-1};

@@ -44,7 +44,7 @@ class ObstacleAvoidanceScenarioTest {
             double metres = run.travelled(t, t + 60_000);
             assertTrue(metres >= MIN_METRES_PER_MINUTE, "minute from " + t / 1000 + " s: " + metres + " m; " + run.summary());
         }
-        // (issue 13: the agent no longer prints a line per obstacle; coverage, contact and travel
+        // (the agent no longer prints a line per obstacle; coverage, contact and travel
         // above are the behaviour, and reactsToABoxPutInFront... checks the reaction itself)
     }
 
@@ -73,7 +73,7 @@ class ObstacleAvoidanceScenarioTest {
                 return;
             }
             var wheels = r.robot.getWheels();
-            // straight ahead (the thesis' forward is 50; issue 13's straight legs run at cruiseSpeed)
+            // straight ahead (the thesis' forward is 50; our straight legs, not the thesis', run at cruiseSpeed)
             if (wheels.getLeftSpeed() != wheels.getRightSpeed() || wheels.getLeftSpeed() < 50) {
                 return;
             }
@@ -94,7 +94,7 @@ class ObstacleAvoidanceScenarioTest {
             contactBefore[0] = r.robot.contactTime();
         });
         assertTrue(placedAt[0] > 0, "a box was placed: " + run.summary());
-        // seen: the robot stops going straight (turns or stops); issue 13 removed the "obstacle:" line
+        // seen: the robot stops going straight (turns or stops); the agent no longer prints the "obstacle:" line
         long seen = run.firstTurn(placedAt[0]);
         assertTrue(seen >= 0 && seen - placedAt[0] <= 1500, "seen at " + seen + " ms, placed at " + placedAt[0] + "; " + run.summary());
         ScenarioRun.Sample after = run.at(placedAt[0] + 10_000);

@@ -1,12 +1,13 @@
 package jacabot.scenario;
 
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepCoordinator;
-import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
+import jacabot.robot.Experiment;
+import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;
-import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.AreaSpec;
@@ -78,7 +79,7 @@ final class ScenarioRun {
         return run(experiment, experiment.agentResource(), seed, noise, seconds, edit, eachStep);
     }
 
-    /** Runs the agent as the thesis published it ({@code agents/src/main/asl/as-published/}, issue 13). */
+    /** Runs the agent as the thesis published it ({@code agents/src/main/asl/as-published/}, without our recovery plans). */
     static ScenarioRun runPublished(Experiment experiment, long seed, boolean noise, double seconds) throws Exception {
         return runPublished(experiment, seed, noise, seconds, UnaryOperator.identity(), (t, r) -> {
         });
@@ -97,7 +98,7 @@ final class ScenarioRun {
                 s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
         s = edit.apply(s);
         ScenarioRun run = new ScenarioRun(experiment, seed, SimWorld.of(s));
-        var source = jacabot.app.run.AgentSource.resource(agentResource, experiment.id() + ".asl");
+        var source = AgentSource.resource(agentResource, experiment.id() + ".asl");
         var lockstep = new LockstepRun(run.world, null, experiment, source, seed,
                 new PrintStream(run.new LineSink(), true, StandardCharsets.UTF_8));
         AreaSpec storage = s.storage();

@@ -58,7 +58,7 @@ class SuspendResumeScenarioTest {
      * What {@code gradle run} shows, under the world file's own seed: the battery runs low during a
      * delivery (Appendix B's "Almost reached" path), the robot recharges, comes back to the marked
      * point, restores its state and completes the delivery. Measured (seed 13): picked at 42 s, low
-     * at 68 s, recharged at 151 s, delivered at 201 s. Issue 13: this timing is the agent as
+     * at 68 s, recharged at 151 s, delivered at 201 s. With the recovery plans (not in the thesis), this timing is the agent as
      * published (as-published/suspend-resume.asl); the default agent travels faster and delivers
      * before the battery runs low on this seed (completesTheDeliveryInterruptedByALowBattery checks
      * the suspended delivery for it).

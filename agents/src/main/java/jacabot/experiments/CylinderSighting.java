@@ -3,7 +3,7 @@ package jacabot.experiments;
 import java.util.Optional;
 
 /**
- * A red cylinder seen far off in the whole camera image (issue 13): the widest run of columns
+ * A red cylinder seen far off in the whole camera image (not in the thesis): the widest run of columns
  * holding a red pixel, by the thesis' red test ({@code r > 40}, red at least twice green and blue).
  * The three section means of Chapter 4 §2.2 see a cylinder only within about 15 cm, where it
  * fills a third of the image; one column of a 64-column image is under a degree, so a 2.5 cm

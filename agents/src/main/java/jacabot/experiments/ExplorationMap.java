@@ -4,7 +4,7 @@ import java.util.HashSet;
 import java.util.Set;
 
 /**
- * Where a robot without GPS has been (issue 13): its pose by dead reckoning from the wheel speeds
+ * Where a robot without GPS has been (not in the thesis): its pose by dead reckoning from the wheel speeds
  * in effect, the 10 cm cells its centre has crossed, and the cells where it met an obstacle. It
  * proposes the turn towards the most floor not yet crossed, so that a random walk spreads over a
  * large arena instead of going over the same ground. The frame is the robot's start pose; the

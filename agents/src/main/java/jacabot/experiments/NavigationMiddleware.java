@@ -12,7 +12,7 @@ import jacabot.robot.link.SensorKind;
  * robot is within the threshold of the target point, {@code noAccess} when it comes near the
  * storage area and {@code outOfStorageArea} when it has left it after {@code waitExit}.
  *
- * <p>Tuning (issue 7): {@code targetReached} is edge-triggered and re-armed when the robot is
+ * <p>Tuning (ours): {@code targetReached} is edge-triggered and re-armed when the robot is
  * farther than twice the threshold from the target; before, it was re-armed only by
  * {@code setUpTargetPoint}, so the second cylinder was carried through the storage point without
  * a signal.

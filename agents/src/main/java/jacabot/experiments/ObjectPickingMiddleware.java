@@ -12,11 +12,11 @@ import jacabot.robot.link.SensorKind;
  * section), {@code cylinderLeft}/{@code cylinderRight} (red on that side of the camera image, not
  * in its centre), {@code cylinderBeyond} (the lateral cylinder, turned towards, is now ahead: red
  * in the centre section), {@code fallen} (the
- * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}; and (issue 13) the
+ * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}; and (not in the thesis) the
  * derived percept {@code stuck}, from the GPS: no progress though the robot is meant to move.
  */
 public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
-    // Tuning (issue 7). The thesis (§2.1) checks the camera's lateral sections when a lateral
+    // Tuning (ours). The thesis (§2.1) checks the camera's lateral sections when a lateral
     // distance sensor sees something. On this Khepera no distance sensor and camera section look
     // the same way: the camera's 60° field ends at ±30°, the front-left/right sensors look at
     // ±45° (measured: a cylinder at 45° reads 860 and is out of the picture; at 20° it is red in
@@ -30,7 +30,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private boolean cylinderSignalled;
     private String lateralCylinder;
     /**
-     * A lateral cylinder not turned to within this time is forgotten (issue 13): the agent may not
+     * A lateral cylinder not turned to within this time is forgotten (not in the thesis): the agent may not
      * act on the signal (busy, or near the storage area), and until then neither lateral cylinders
      * nor far ones were signalled again: the robot drove past cylinders for the rest of the run.
      */
@@ -41,14 +41,14 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     /** Sides whose very-close lateral obstacle was signalled; re-armed when that side is safe. */
     private final java.util.Set<String> lateralSignalled = new java.util.HashSet<>();
 
-    // Progress (issue 13, a derived percept): "stuck" is signalled when the GPS position stayed
+    // Progress (not in the thesis, a derived percept): "stuck" is signalled when the GPS position stayed
     // within a radius for a time (pressed against something, dithering in front of a box, or
     // circling round an obstacle); the agent sets both windows (progressWindows) and decides
     // (it ignores the signal while it stays on purpose: picking, at the charger).
     private long[] windowMs = {6000, 30000};
     private double[] windowRadius = {0.04, 0.12};
     private final double[][] anchor = new double[2][];
-    // Far sight (issue 13): with scanForCylinders the whole camera image comes too, and a red run
+    // Far sight (not in the thesis): with scanForCylinders the whole camera image comes too, and a red run
     // in it is signalled as cylinderSighted(Offset, Distance) every sightingEvery ms at most,
     // unless it points into an area the agent excluded (a delivered cylinder in the storage area).
     private boolean scanning;
@@ -70,7 +70,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     }
 
     /**
-     * Sends the whole camera image too and signals far cylinders (issue 13), at most one signal per
+     * Sends the whole camera image too and signals far cylinders (not in the thesis), at most one signal per
      * {@code everyMs}; {@code fovDegrees} is the camera's field of view.
      */
     @OPERATION

@@ -33,7 +33,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     /** The front sensors' levels for obstacle(true) and for clear again (default {@value #WARNING}, {@value #SAFE}). */
     private double warning = WARNING, safe = SAFE, deltaLimit = DELTA_LIMIT;
 
-    /** Sets the levels (issue 13: the agent's beliefs, not Java constants); the warning must exceed the safe level. */
+    /** Sets the levels (the agent's beliefs, not Java constants; not in the thesis); the warning must exceed the safe level. */
     @jacabot.cartago.OPERATION
     void obstacleLevels(double warningLevel, double safeLevel) {
         if (!(warningLevel > safeLevel) || !(safeLevel > 0)) {
@@ -68,7 +68,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return SensorKind.RIGHT_DISTANCE;
     }
 
-    /** Dead reckoning and the floor crossed (issue 13), once the agent gave the wheel geometry. */
+    /** Dead reckoning and the floor crossed (not in the thesis), once the agent gave the wheel geometry. */
     private ExplorationMap map;
 
     /** Starts dead reckoning from the wheel speeds: metres per second of a speed unit, axle length in metres. */
@@ -91,7 +91,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * The turn on the spot towards the most floor not crossed yet (issue 13): {@code side} "left" or
+     * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */
     @jacabot.cartago.OPERATION
@@ -106,7 +106,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * How long the robot has gone over floor already crossed (issue 13), in ms: a straight leg over
+     * How long the robot has gone over floor already crossed (not in the thesis), in ms: a straight leg over
      * old ground is cut short. Fails before {@code odometry}.
      */
     @jacabot.cartago.OPERATION

@@ -15,7 +15,7 @@ public class SuspendResumeMiddleware extends NavigationMiddleware {
     static final double LOW_BATTERY = 480;
     /** The level at which {@code charged} is signalled (ours: the thesis waits 3 s at the charger). */
     static final double CHARGED = 900;
-    // (issue 13) the agent may set both levels from its beliefs (batteryLevels)
+    // (not in the thesis) the agent may set both levels from its beliefs (batteryLevels)
     private double low = LOW_BATTERY;
     private double charged = CHARGED;
     private boolean chargedSignalled = true;

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 /**
  * The Appendix B agent as published (our rewrite, agents/src/main/asl/as-published/suspend-resume.asl)
  * against a scripted middleware: its plans are selected as Chapter 4 describes. No simulator is
- * involved. (Issue 13: the default agent adds recovery plans and takes its landmarks from the world.)
+ * involved. (The default agent adds recovery plans, not in the thesis, and takes its landmarks from the world.)
  */
 class AppendixBAgentTest {
     private static final Path AGENT = Path.of(System.getProperty("jacabot.projectDir", "."))

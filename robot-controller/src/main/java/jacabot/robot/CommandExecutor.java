@@ -10,6 +10,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
@@ -160,7 +161,7 @@ final class CommandExecutor {
 
     private boolean applySensor(Command c) {
         int id = (int) c.arg(0);
-        var kind = id == c.arg(0) ? SensorKind.of(id) : java.util.Optional.<SensorKind>empty();
+        var kind = id == c.arg(0) ? SensorKind.of(id) : Optional.<SensorKind>empty();
         if (kind.isEmpty()) {
             log.accept(c + " ignored: no sensor kind has id " + c.arg(0));
             return false;

@@ -5,6 +5,7 @@ import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
+import javax.net.ssl.SSLContext;
 
 /**
  * How a {@link RobotController} runs: where the middleware listens, which robot, the mode, the
@@ -38,7 +39,7 @@ import java.util.function.LongSupplier;
 public record ControllerConfig(String host, int port, String robotName, boolean lockstep, double speedFactor,
                                long failSafeMs, long minBackoffMs, long maxBackoffMs, int resetEvery, int outboxCapacity,
                                boolean sendCameraImage, LinkClock clock, LongSupplier nanoTime, Consumer<String> log,
-                               Consumer<String> eventLog, LinkSecret secret, javax.net.ssl.SSLContext tls) {
+                               Consumer<String> eventLog, LinkSecret secret, SSLContext tls) {
     public ControllerConfig {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be in 0..65535, got " + port);
@@ -118,7 +119,7 @@ public record ControllerConfig(String host, int port, String robotName, boolean 
     }
 
     /** Connects with TLS, trusting what {@code context} trusts. */
-    public ControllerConfig withTls(javax.net.ssl.SSLContext context) {
+    public ControllerConfig withTls(SSLContext context) {
         return new ControllerConfig(host, port, robotName, lockstep, speedFactor, failSafeMs, minBackoffMs, maxBackoffMs,
                 resetEvery, outboxCapacity, sendCameraImage, clock, nanoTime, log, eventLog, secret, context);
     }

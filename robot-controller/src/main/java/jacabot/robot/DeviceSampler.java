@@ -36,8 +36,8 @@ final class DeviceSampler {
      * Enables every device the robot has, at one sampling period (Webots: first reading one period
      * later). {@return the ids of the kinds enabled: what the greeting declares}
      */
-    java.util.List<Integer> enableAll(int periodMs) {
-        var ids = new java.util.ArrayList<Integer>();
+    List<Integer> enableAll(int periodMs) {
+        var ids = new ArrayList<Integer>();
         for (SensorKind k : SensorKind.values()) {
             if (toggle(k, periodMs)) { // not enable(): whole images only when configured or asked for
                 ids.add(k.id());

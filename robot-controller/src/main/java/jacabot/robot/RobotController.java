@@ -101,7 +101,7 @@ public final class RobotController implements AutoCloseable {
             return;
         }
         started = true;
-        java.util.List<Integer> sensors;
+        List<Integer> sensors;
         synchronized (world) {
             sensors = sampler.enableAll(world.controlStep());
         }

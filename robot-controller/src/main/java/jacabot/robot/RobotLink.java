@@ -6,8 +6,8 @@ import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.LockstepSpin;
 import jacabot.robot.link.MemoryLink;
-import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.Protocol;
+import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorDataWriter;
 import jacabot.robot.link.Uplink;
@@ -23,6 +23,7 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import javax.net.ssl.SSLSocket;
 
 /**
  * The controller's end of the TCP link, with the thesis' two threads (§2.4): the <b>receiver</b>
@@ -202,7 +203,7 @@ final class RobotLink {
             try {
                 s.connect(new InetSocketAddress(config.host(), config.port()), HANDSHAKE_TIMEOUT_MS);
                 socket = s;
-                if (s instanceof javax.net.ssl.SSLSocket tlsSocket) {
+                if (s instanceof SSLSocket tlsSocket) {
                     var params = tlsSocket.getSSLParameters();
                     params.setEndpointIdentificationAlgorithm("HTTPS"); // the certificate must name the host
                     tlsSocket.setSSLParameters(params);

@@ -17,7 +17,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Issue 16: the robot stops within 200 ms of simulated time when the agent side falls silent, the
+ * Reliability (docs/reliability.md): the robot stops within 200 ms of simulated time when the agent side falls silent, the
  * link is cut, or one bad frame comes, on the real clocks and the default fail-safe. Each case
  * prints its figure (docs/reliability.md). Simulated time is what the bound is about, so the
  * machine's load cannot break it: a world faster than the wall clock is held while it waits.

@@ -18,6 +18,7 @@ import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.util.Arrays;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -137,7 +138,7 @@ final class FakeMiddleware implements AutoCloseable {
         Uplink.Batch awaitWheels(double left, double right) throws InterruptedException {
             return (Uplink.Batch) await(f -> f instanceof Uplink.Batch && ((Uplink.Batch) f).readings().stream()
                     .anyMatch(i -> i.getId() == SensorKind.WHEEL_SPEEDS.id()
-                            && java.util.Arrays.equals(i.getDoubleValues(), new double[] {left, right})));
+                            && Arrays.equals(i.getDoubleValues(), new double[] {left, right})));
         }
 
         static double value(Uplink.Batch b, SensorKind kind) {

@@ -9,6 +9,8 @@ import jacabot.robot.link.Uplink;
 import java.io.DataOutputStream;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -60,14 +62,14 @@ class LockstepControllerTest {
     void whileTheAgentReasonsTheWorldsLockIsFreeForAViewer() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
             marker(peer, 0);
-            var locked = new java.util.concurrent.CountDownLatch(1);
+            var locked = new CountDownLatch(1);
             Thread viewer = new Thread(() -> {
                 synchronized (controller.world()) {
                     locked.countDown();
                 }
             });
             viewer.start();
-            assertTrue(locked.await(5, java.util.concurrent.TimeUnit.SECONDS), "a viewer takes the world's lock during the agent's turn");
+            assertTrue(locked.await(5, TimeUnit.SECONDS), "a viewer takes the world's lock during the agent's turn");
             peer.send(Command.stepAck(0));
             marker(peer, 1);
         }

@@ -6,11 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.link.Command;
 import jacabot.robot.link.CommandCode;
+import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorKind;
 import jacabot.robot.link.Uplink;
 import jacabot.sim.SimWorld;
 import java.io.DataOutputStream;
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -151,8 +153,8 @@ class RobotControllerTest {
     void aMiddlewareThatCannotProveTheSecretIsRefused() throws Exception {
         // a stranger listening on the port: its proof is made with another key
         // the controller hangs up before sending its own proof
-        org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
-                () -> middleware.accept(Protocol.VERSION, jacabot.robot.link.LinkSecret.random()));
+        org.junit.jupiter.api.Assertions.assertThrows(IOException.class,
+                () -> middleware.accept(Protocol.VERSION, LinkSecret.random()));
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (controller.lastProblem() == null && System.nanoTime() < end) {
             Thread.sleep(10);

@@ -1,11 +1,12 @@
 package jacabot.sim;
+import jacabot.sim.engine.WorldListener;
 import jacabot.sim.geom.Pose;
-
+import jacabot.sim.robot.Robot;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-
-import jacabot.sim.robot.Robot;
-import org.junit.jupiter.api.Test;
 
 class KinematicsTest {
     @Test
@@ -68,8 +69,8 @@ class KinematicsTest {
     void aLongTrajectoryIsThinnedToEverySecondPoseAndKeepsTheLatest() {
         SimWorld w = TestWorlds.khepera(0, 0, 0, "");
         w.robot("k").setSpeeds(20, -10);
-        java.util.List<Pose> every = new java.util.ArrayList<>(java.util.List.of(w.robot("k").pose()));
-        w.addListener(new jacabot.sim.engine.WorldListener() {
+        List<Pose> every = new ArrayList<>(List.of(w.robot("k").pose()));
+        w.addListener(new WorldListener() {
             @Override
             public void controlStepEnded(long timeMs) {
                 every.add(w.robot("k").pose());

@@ -1,5 +1,6 @@
 package jacabot.sim;
 
+import jacabot.sim.io.WorldFileException;
 import java.nio.file.Path;
 
 /** Small worlds for tests: a 1 m × 1 m arena, no sensor noise unless asked, and the given parts. */
@@ -18,7 +19,7 @@ public final class TestWorlds {
                 + (members.isBlank() ? "" : ", " + members) + " }";
         try {
             return SimWorld.parse(json, "test");
-        } catch (jacabot.sim.io.WorldFileException e) {
+        } catch (WorldFileException e) {
             throw new AssertionError(e.getMessage(), e);
         }
     }

@@ -10,9 +10,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * Our interpreter against Jason 3.2.0 on the same AgentSpeak programs. Each run is a fresh JVM with
@@ -71,7 +74,7 @@ public final class InterpreterBenchmark {
     private final int runs;
     private final PrintStream out;
     private final Path dir;
-    private final java.util.Set<String> selected;
+    private final Set<String> selected;
     private final double limitSeconds;
     private final List<Path> projects;
     /** Why the user's projects that could not be measured were not: said once every row is printed. */
@@ -88,7 +91,7 @@ public final class InterpreterBenchmark {
      *        agent prints {@code start} and {@code end} around what is measured
      */
     public InterpreterBenchmark(String ourClasspath, String jasonClasspath, int runs, PrintStream out,
-            java.util.Set<String> programs, double limitSeconds, List<Path> projects) throws IOException {
+            Set<String> programs, double limitSeconds, List<Path> projects) throws IOException {
         this.projects = List.copyOf(projects);
         this.ourClasspath = ourClasspath;
         this.ourJavaOptions = SharedArchive.optionsFor(ourClasspath);
@@ -198,7 +201,7 @@ public final class InterpreterBenchmark {
         out.println();
         out.println("| deep recursion program | ours (s) | Jason (s) | Jason / ours | our peak memory (MB) | Jason peak memory (MB) |");
         out.println("|---|---|---|---|---|---|");
-        var series = new java.util.LinkedHashMap<Integer, Run[]>();
+        var series = new LinkedHashMap<Integer, Run[]>();
         boolean oursCut = false;
         boolean jasonCut = false;
         for (Deep d : DEEP) {
@@ -314,7 +317,7 @@ public final class InterpreterBenchmark {
         cmd.addAll(javaArgs);
         long began = System.nanoTime();
         Process p = new ProcessBuilder(cmd).directory(project.getParent().toFile()).redirectErrorStream(true).start();
-        var cut = new java.util.concurrent.atomic.AtomicBoolean();
+        var cut = new AtomicBoolean();
         var limit = new Thread(() -> {
             try {
                 Thread.sleep((long) (limitSeconds * 1000));

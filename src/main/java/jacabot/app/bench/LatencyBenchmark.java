@@ -1,14 +1,16 @@
 package jacabot.app.bench;
 
-import jacabot.experiments.link.LatencyStats;
-import jacabot.robot.Experiment;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.app.run.RealTimeRun;
+import jacabot.experiments.link.LatencyStats;
+import jacabot.experiments.link.LinkTimings;
+import jacabot.robot.Experiment;
 import jacabot.robot.baseline.BaselineRunner;
+import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;
-import jacabot.sim.SimWorld;
+import jacabot.sim.world.BoxSpec;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -98,7 +100,7 @@ public final class LatencyBenchmark {
             this.home = new Pose(-0.4, -0.4, 0);
             ObjectState any = world.supervisor().objects().stream()
                     .filter(o -> o.kind().name().equals("BOX")).findFirst().orElseThrow();
-            world.supervisor().addBox(new jacabot.sim.world.BoxSpec(box, home.x(), home.z(), any.sizeX(), any.sizeZ(), 0,
+            world.supervisor().addBox(new BoxSpec(box, home.x(), home.z(), any.sizeX(), any.sizeZ(), 0,
                     any.height(), true, 1, any.color()));
         }
 
@@ -114,7 +116,7 @@ public final class LatencyBenchmark {
         }
     }
 
-    private jacabot.experiments.link.LinkTimings realTime() throws Exception {
+    private LinkTimings realTime() throws Exception {
         SimWorld w = world();
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         try (var run = new RealTimeRun(w, Experiment.OBSTACLE_AVOIDANCE, AGENT, 1, speed, quiet)) {

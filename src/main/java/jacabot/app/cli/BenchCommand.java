@@ -1,8 +1,16 @@
 package jacabot.app.cli;
 
 import jacabot.app.bench.InterpreterBenchmark;
+import jacabot.app.bench.LatencyBenchmark;
+import jacabot.app.bench.SimulationBenchmark;
+import jacabot.robot.Experiment;
+import jacabot.sim.io.WorldFileException;
+import jacabot.sim.io.WorldFileReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -51,7 +59,7 @@ final class BenchCommand implements Runnable {
 
         @Option(names = "--programs", split = ",", paramLabel = "LIST",
                 description = "the programs to run, by name; `deep` stands for every deep recursion program (default: all)")
-        private java.util.List<String> programs;
+        private List<String> programs;
 
         @Option(names = "--limit", paramLabel = "S", description = "seconds a run may take before it is cut (default ${DEFAULT-VALUE})")
         private double limit = 300;
@@ -61,7 +69,7 @@ final class BenchCommand implements Runnable {
                         + "`start` and `end` (.print(start), .print(end)) around what is measured. Repeatable; given alone, "
                         + "only these projects run. One that cannot be measured gets a row of dashes, the others still "
                         + "run, and the command ends with its error (exit 1)")
-        private java.util.List<Path> projects = new java.util.ArrayList<>();
+        private List<Path> projects = new ArrayList<>();
 
         @Option(names = "--ours-classpath", paramLabel = "FILE",
                 description = "a file holding the class path of another build of ours to measure (default: this one)")
@@ -76,7 +84,7 @@ final class BenchCommand implements Runnable {
                 throw new UserError("--ours-classpath: " + oursClasspath + ": not found");
             }
             if (programs != null) {
-                var known = new java.util.ArrayList<>(InterpreterBenchmark.names());
+                var known = new ArrayList<>(InterpreterBenchmark.names());
                 known.add("deep");
                 for (String p : programs) {
                     if (!known.contains(p)) {
@@ -95,7 +103,7 @@ final class BenchCommand implements Runnable {
             String jason = Files.readString(jasonClasspath).trim();
             String ours = oursClasspath == null ? System.getProperty("java.class.path") : Files.readString(oursClasspath).trim();
             new InterpreterBenchmark(ours, jason, Math.max(1, runs), ConsoleStreams.of(spec.commandLine().getOut()),
-                    programs == null ? (projects.isEmpty() ? null : java.util.Set.of()) : java.util.Set.copyOf(programs), limit,
+                    programs == null ? (projects.isEmpty() ? null : Set.of()) : Set.copyOf(programs), limit,
                     projects).run();
             return 0;
         }
@@ -129,14 +137,14 @@ final class BenchCommand implements Runnable {
             if (warmups < 0 || runs < 1) {
                 throw new UserError("--warmup must be 0 or more and --runs 1 or more, got " + warmups + " and " + runs);
             }
-            Path world = CompareCommand.bundled(root, jacabot.robot.Experiment.SUSPEND_RESUME.worldFile());
+            Path world = CompareCommand.bundled(root, Experiment.SUSPEND_RESUME.worldFile());
             long runSeed;
             try {
-                runSeed = seed != null ? seed : jacabot.sim.io.WorldFileReader.read(world).seed();
-            } catch (jacabot.sim.io.WorldFileException e) {
+                runSeed = seed != null ? seed : WorldFileReader.read(world).seed();
+            } catch (WorldFileException e) {
                 throw new UserError(e.getMessage());
             }
-            new jacabot.app.bench.SimulationBenchmark(world, duration(duration), runSeed, warmups, runs,
+            new SimulationBenchmark(world, duration(duration), runSeed, warmups, runs,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
@@ -165,8 +173,8 @@ final class BenchCommand implements Runnable {
             if (!(speed > 0) || Double.isInfinite(speed)) {
                 throw new UserError("--speed must be a positive number, got " + speed);
             }
-            new jacabot.app.bench.LatencyBenchmark(CompareCommand.bundled(root,
-                    jacabot.robot.Experiment.OBSTACLE_AVOIDANCE.worldFile()), duration(duration), speed,
+            new LatencyBenchmark(CompareCommand.bundled(root,
+                    Experiment.OBSTACLE_AVOIDANCE.worldFile()), duration(duration), speed,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }

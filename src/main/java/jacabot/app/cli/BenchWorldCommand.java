@@ -1,8 +1,8 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.app.bench.WorldBenchmark;
 import jacabot.sim.io.WorldFileException;
-import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -25,16 +25,14 @@ final class BenchWorldCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        PrintWriter err = spec.commandLine().getErr();
         try {
-            new WorldBenchmark(worlds != null ? worlds : jacabot.app.Installation.resolve("worlds"), ExperimentCommand.parseDuration(duration), spec.commandLine().getOut()).run();
+            new WorldBenchmark(worlds != null ? Installation.locate(worlds) : Installation.resolve("worlds"),
+                    ExperimentCommand.parseDuration(duration), spec.commandLine().getOut()).run();
             return 0;
         } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
+            throw new UserError(e.getMessage());
         } catch (WorldFileException e) {
-            err.println(e.getMessage());
+            throw new UserError(e.getMessage());
         }
-        err.flush();
-        return 2;
     }
 }

@@ -1,9 +1,11 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.app.run.AgentMetrics;
 import jacabot.app.run.AgentSource;
-import jacabot.robot.Experiment;
 import jacabot.app.run.LockstepRun;
+import jacabot.experiments.link.LatencyStats;
+import jacabot.robot.Experiment;
 import jacabot.robot.baseline.BaselineRunner;
 import jacabot.robot.baseline.CodeMetrics;
 import jacabot.robot.run.RunRecorder;
@@ -80,7 +82,7 @@ final class CompareCommand implements Callable<Integer> {
         out.println("|---|---|---|---|---|---|---|---|---|---|");
         for (Experiment e : Experiment.thesis()) {
             CodeMetrics c = CodeMetrics.of(e, root != null ? CodeMetrics.sourceDir(root)
-                    : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
+                    : Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString()));
             AgentMetrics a = AgentMetrics.of(e, AgentSource.packaged(e));
             out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d: %s |%n", e, c.codeLines(), c.ifs(),
                     c.loops(), c.conditions(), a.codeLines(), a.plans(), a.contexts(), a.conditions(),
@@ -129,11 +131,11 @@ final class CompareCommand implements Callable<Integer> {
 
     /** {@return a file of the repository: under {@code --root} if given, else the installation's (from any folder)} */
     static Path bundled(Path root, String file) {
-        return root != null ? root.resolve(file) : jacabot.app.Installation.resolve(file);
+        return root != null ? root.resolve(file) : Installation.resolve(file);
     }
 
-    private record AgentRun(RunSummary summary, jacabot.experiments.link.LatencyStats reactive,
-            jacabot.experiments.link.LatencyStats response) {
+    private record AgentRun(RunSummary summary, LatencyStats reactive,
+            LatencyStats response) {
     }
 
     private static AgentRun runAgent(Experiment e, Path world, long seed, double seconds) throws Exception {
@@ -146,7 +148,7 @@ final class CompareCommand implements Callable<Integer> {
         }
     }
 
-    private static String ms(jacabot.experiments.link.LatencyStats s) {
+    private static String ms(LatencyStats s) {
         return s.count() == 0 ? "-" : String.format(Locale.ROOT, "%.3f / %.3f", s.medianMicros() / 1000.0, s.p99Micros() / 1000.0);
     }
 

@@ -1,12 +1,23 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
+import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.viewer.WorldViewer;
 import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -75,7 +86,7 @@ final class ControllerCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws InterruptedException {
-        java.io.PrintWriter stdout = spec.commandLine().getOut();
+        PrintWriter stdout = spec.commandLine().getOut();
         ControllerConfig config;
         try {
             config = ControllerConfig.defaults().withAddress(host, port).withRobot(robot).withLockstep(lockstep)
@@ -83,15 +94,15 @@ final class ControllerCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
-        java.io.PrintWriter err = spec.commandLine().getErr();
+        PrintWriter err = spec.commandLine().getErr();
         config = config.withLog(line -> {
             err.println("[controller] " + line);
             err.flush();
         });
         try {
-            config = config.withSecret(secretFile != null ? jacabot.robot.link.LinkSecret.loadOrCreate(secretFile)
-                    : jacabot.robot.link.LinkSecret.userDefault());
-        } catch (java.io.IOException | java.io.UncheckedIOException e) {
+            config = config.withSecret(secretFile != null ? LinkSecret.loadOrCreate(secretFile)
+                    : LinkSecret.userDefault());
+        } catch (IOException | UncheckedIOException e) {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
         if (tlsStore != null) {
@@ -107,26 +118,26 @@ final class ControllerCommand implements Callable<Integer> {
         }
         SimWorld simWorld;
         try {
-            simWorld = SimWorld.load(world);
+            simWorld = SimWorld.load(Installation.locate(world));
         } catch (WorldFileException e) {
             throw new UserError(e.getMessage());
         } catch (RuntimeException e) {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
-        java.io.BufferedWriter events = null;
+        BufferedWriter events = null;
         if (eventLog != null) {
             try {
-                events = java.nio.file.Files.newBufferedWriter(eventLog, java.nio.charset.StandardCharsets.UTF_8);
-            } catch (java.io.IOException e) {
+                events = Files.newBufferedWriter(eventLog, StandardCharsets.UTF_8);
+            } catch (IOException e) {
                 throw new UserError("--event-log " + eventLog + ": cannot write it (" + e.getMessage() + ")");
             }
-            java.io.BufferedWriter sink = events;
+            BufferedWriter sink = events;
             config = config.withEventLog(line -> {
                 try {
                     sink.write(line);
                     sink.write('\n');
-                } catch (java.io.IOException e) {
-                    throw new java.io.UncheckedIOException(e);
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
                 }
             });
         }
@@ -139,7 +150,7 @@ final class ControllerCommand implements Callable<Integer> {
         stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
                 lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
-        final java.io.BufferedWriter eventsFile = events;
+        final BufferedWriter eventsFile = events;
         Thread hook = new Thread(() -> {
             controller.close();
             closeQuietly(eventsFile);
@@ -164,11 +175,11 @@ final class ControllerCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void closeQuietly(java.io.Writer w) {
+    private static void closeQuietly(Writer w) {
         if (w != null) {
             try {
                 w.close();
-            } catch (java.io.IOException e) {
+            } catch (IOException e) {
                 // the run is over; nothing more to say
             }
         }
@@ -180,9 +191,9 @@ final class ControllerCommand implements Callable<Integer> {
             SwingUtilities.invokeLater(() -> {
                 JFrame frame = WorldViewer.open(runner);
                 frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+                frame.addWindowListener(new WindowAdapter() {
                     @Override
-                    public void windowClosed(java.awt.event.WindowEvent e) {
+                    public void windowClosed(WindowEvent e) {
                         closed.countDown();
                     }
                 });

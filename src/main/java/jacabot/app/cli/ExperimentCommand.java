@@ -1,24 +1,64 @@
 package jacabot.app.cli;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.agent.parser.AslSyntaxException;
-import jacabot.cartago.CartagoException;
-import jacabot.robot.Experiment;
-import jacabot.app.run.LockstepCoordinator;
+import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.DebugConsole;
+import jacabot.app.inspector.Debugger;
+import jacabot.app.inspector.MindWatch;
+import jacabot.app.plot.RunPlots;
+import jacabot.app.replay.BaselineTap;
+import jacabot.app.replay.RealTimeTap;
+import jacabot.app.replay.RunTap;
+import jacabot.app.replay.StepLog;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.ExperimentMatch;
+import jacabot.app.run.LagMeter;
+import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
+import jacabot.app.run.RealTimeRun;
+import jacabot.app.world.Landmarks;
+import jacabot.cartago.CartagoException;
+import jacabot.robot.Experiment;
+import jacabot.robot.baseline.BaselineRunner;
+import jacabot.robot.link.LinkSecret;
+import jacabot.robot.link.Protocol;
+import jacabot.robot.run.RunRecorder;
+import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
+import jacabot.sim.viewer.WorldViewer;
 import jacabot.sim.world.WorldSpec;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.regex.Pattern;
+import javax.swing.JFrame;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
@@ -59,7 +99,8 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--baseline", description = "run the procedural baseline controller (the thesis' C program) instead of the agent")
     private boolean baseline;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED)")
+    @Option(names = "--out", paramLabel = "DIR", description = "where the summary and the PNG go (default runs/NAME-SEED; "
+            + "with another world, agent or the baseline: runs/NAME-WORLD-AGENT-baseline-SEED, each part when not the default)")
     private Path out;
 
     @Option(names = "--port", paramLabel = "PORT",
@@ -94,7 +135,7 @@ final class ExperimentCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         ConsoleLog log = verbosity.console(commandSpec);
-        java.io.PrintStream console = log.agents();
+        PrintStream console = log.agents();
         double seconds;
         try {
             seconds = parseDuration(duration);
@@ -107,7 +148,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
-        Path worldFile = world != null ? world : jacabot.app.Installation.resolve(experiment.worldFile());
+        Path worldFile = world != null ? Installation.locate(world) : Installation.resolve(experiment.worldFile());
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
@@ -119,25 +160,24 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError(worldFile + ": $.controlStep must be a positive multiple of $.basicTimeStep ("
                     + spec.basicTimeStep() + " ms) below 2^31 ms, got " + spec.controlStep());
         }
-        var missing = jacabot.app.world.Landmarks.missing(experiment, spec, worldFile.toString());
+        var missing = Landmarks.missing(experiment, spec, worldFile.toString());
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
-            commandSpec.commandLine().getErr().println(missing.get());
-            return 2;
+            throw UserError.located(missing.get());
         }
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),
                 spec.walls(), spec.boxes(), spec.cylinders(), spec.storage(), spec.charger(), spec.robots(), spec.events());
-        AgentSource source = agent != null ? readAgent(agent)
+        AgentSource source = agent != null ? readAgent(Installation.locate(agent))
                 : AgentSource.packaged(experiment, "agents/src/main/asl/" + experiment.id() + ".asl");
         String sourceName = source.name();
-        var mixUps = new java.util.ArrayList<String>();
+        var mixUps = new ArrayList<String>();
         if (!baseline) {
             mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source.text(), sourceName));
         } else {
             ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
         }
-        Path outDir = out != null ? out : Path.of("runs", experiment.id() + "-" + runSeed);
+        Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agent, baseline, runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
         SimWorld simWorld;
         try {
@@ -158,30 +198,29 @@ final class ExperimentCommand implements Callable<Integer> {
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
             // as BaselineRunner.execute, with the step log an agent's run writes: replayed and plotted alike
-            SimWorld baselineWorld = jacabot.robot.baseline.BaselineRunner.load(worldFile, runSeed);
-            var recorder = jacabot.robot.run.RunRecorder.attach(baselineWorld, experiment.robot());
-            var controller = jacabot.robot.baseline.BaselineRunner.create(experiment, baselineWorld, runSeed, recorder::note);
-            try (var steps = jacabot.app.replay.BaselineTap.attach(baselineWorld, outDir, experiment,
-                    jacabot.robot.baseline.BaselineRunner.CONTROLLER)) {
+            SimWorld baselineWorld = BaselineRunner.load(worldFile, runSeed);
+            var recorder = RunRecorder.attach(baselineWorld, experiment.robot());
+            var controller = BaselineRunner.create(experiment, baselineWorld, runSeed, recorder::note);
+            try (var steps = BaselineTap.attach(baselineWorld, outDir, experiment, BaselineRunner.CONTROLLER)) {
                 controller.runFor(seconds);
             }
-            report(log, recorder.summary(jacabot.robot.baseline.BaselineRunner.CONTROLLER), recorder, outDir,
-                    (System.nanoTime() - t0) / 1e9, -1);
-            jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+            report(log, recorder.summary(BaselineRunner.CONTROLLER), recorder, outDir,
+                    (System.nanoTime() - t0) / 1e9, -1, files(worldFile, null));
+            RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
-        boolean viewer = !headless && !lockstep && !java.awt.GraphicsEnvironment.isHeadless();
+        boolean viewer = !headless && !lockstep && !GraphicsEnvironment.isHeadless();
         if (viewer) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, source, runSeed, seconds, log, outDir);
+            return runWithViewer(simWorld, worldFile, source, runSeed, seconds, log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         try {
             run = new LockstepRun(simWorld, null, experiment, source, runSeed, console);
         } catch (AslSyntaxException e) {
-            throw new UserError(e.getMessage());
+            throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
@@ -191,16 +230,16 @@ final class ExperimentCommand implements Callable<Integer> {
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
-        var tap = jacabot.app.replay.RunTap.attach(run, inspector, outDir, experiment, sourceName);
+        var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
         if (!breaks.isEmpty() || inspector != null) {
             try { // the page can halt the run too
-                tap.debugger(inspector, breaks.isEmpty() ? new jacabot.app.inspector.Debugger()
-                        : jacabot.app.inspector.DebugConsole.start(breaks, System.in, System.out));
+                tap.debugger(inspector, breaks.isEmpty() ? new Debugger()
+                        : DebugConsole.start(breaks, System.in, System.out));
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
             }
         }
-        var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, robot.name());
+        var recorder = RunRecorder.attach(simWorld, robot.name());
         long start = System.nanoTime();
         long[] nextReport = {10_000};
         run.onStep(data -> {
@@ -208,18 +247,18 @@ final class ExperimentCommand implements Callable<Integer> {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
                 var now = recorder.summary("agent");
-                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d  battery %s",
+                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d%s",
                         data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
-                        now.deliveries(), !robot.hasBattery() ? "-" : String.format("%.0f J", robot.getBattery().energy())));
+                        now.deliveries(), !robot.hasBattery() ? "" : String.format("  battery %.0f J", robot.getBattery().energy())));
             }
         });
-        var done = new java.util.concurrent.CountDownLatch(1);
-        var terminated = new java.util.concurrent.atomic.AtomicBoolean();
+        var done = new CountDownLatch(1);
+        var terminated = new AtomicBoolean();
         Thread hook = new Thread(() -> {
             terminated.set(true);
             run.stop(); // SIGTERM: end at this step, write what we have (summaries first, the PNG last)
             try {
-                done.await(900, java.util.concurrent.TimeUnit.MILLISECONDS);
+                done.await(900, TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -227,7 +266,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(hook);
         // the link log (off unless asked for) goes to disk as it is made: a long run keeps no copy of it in memory
         try (var linkFile = linkLog ? Files.newBufferedWriter(outDir.resolve("link-log.txt"), StandardCharsets.UTF_8)
-                : java.io.Writer.nullWriter()) {
+                : Writer.nullWriter()) {
             run.port(port);
             if (linkLog) {
                 log.info("Link log: " + outDir.resolve("link-log.txt") + " (the controller's readings, applied commands "
@@ -237,7 +276,7 @@ final class ExperimentCommand implements Callable<Integer> {
                         linkFile.write(line);
                         linkFile.write('\n');
                     } catch (IOException e) {
-                        throw new java.io.UncheckedIOException(e);
+                        throw new UncheckedIOException(e);
                     }
                 });
             } else {
@@ -254,6 +293,8 @@ final class ExperimentCommand implements Callable<Integer> {
             tap.close();
             if (terminated.get()) {
                 log.result(String.format("Stopped by a signal at t=%.2f s; writing what there is.", simWorld.timeMs() / 1000.0));
+            } else if (run.agentFailure().isPresent()) {
+                result.linkLog().forEach(l -> log.detail("[link] " + l));
             } else if (result.steps() * spec.controlStep() < seconds * 1000 - spec.controlStep()) {
                 log.result("The link ended early:");
                 result.linkLog().forEach(l -> log.result("  " + l));
@@ -261,13 +302,16 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles());
-            jacabot.app.plot.RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
-            jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles(), files(worldFile, sourceName));
+            RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
+            RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             if (inspector != null) {
                 inspector.showPlots(outDir);
                 inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
                 inspector.close();
+            }
+            if (run.agentFailure().isPresent()) { // what the run made is written: now say why it ended
+                throw new RunFailure(run.agentFailure().get());
             }
         } finally {
             done.countDown();
@@ -282,11 +326,11 @@ final class ExperimentCommand implements Callable<Integer> {
 
     /** The agent side of the two-process lockstep set-up: the world, its summary and its logs are the controller's. */
     private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log) throws Exception {
-        int listen = port != 0 ? port : jacabot.robot.link.Protocol.DEFAULT_PORT;
+        int listen = port != 0 ? port : Protocol.DEFAULT_PORT;
         try {
-            jacabot.robot.link.LinkSecret.useInThisProcess(secretFile != null ? jacabot.robot.link.LinkSecret.loadOrCreate(secretFile)
-                    : jacabot.robot.link.LinkSecret.userDefault());
-        } catch (IOException | java.io.UncheckedIOException e) {
+            LinkSecret.useInThisProcess(secretFile != null ? LinkSecret.loadOrCreate(secretFile)
+                    : LinkSecret.userDefault());
+        } catch (IOException | UncheckedIOException e) {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
         log.info("Waiting for `jacabot controller --lockstep --port " + listen + "` with the same world file.");
@@ -308,13 +352,46 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         try {
             return AgentSource.file(file);
-        } catch (java.nio.file.AccessDeniedException e) {
+        } catch (AccessDeniedException e) {
             throw new UserError("--agent " + file + ": permission denied; make it readable (chmod u+r)");
-        } catch (java.nio.charset.MalformedInputException e) {
+        } catch (MalformedInputException e) {
             throw new UserError("--agent " + file + ": not UTF-8 text");
         } catch (IOException e) {
             throw new UserError("--agent " + file + ": cannot read it (" + e.getMessage() + ")");
         }
+    }
+
+    /**
+     * {@return the run's folder}: {@code runs/NAME-SEED} for the experiment's own world and agent,
+     * and with the world file's name, the agent file's name or {@code baseline} before the seed when
+     * they are not the defaults ({@code runs/navigation-nav7-3}, {@code runs/navigation-as-published-navigation-3}),
+     * so that a run on another world or with another agent does not overwrite the default run's folder
+     */
+    static Path runFolder(Experiment experiment, Path world, Path agent, boolean baseline, long seed) {
+        var name = new StringBuilder(experiment.id());
+        if (world != null && !world.getFileName().toString().equals(experiment.id() + ".json")) {
+            name.append('-').append(stem(world));
+        }
+        if (agent != null && !baseline) {
+            String a = stem(agent);
+            Path parent = agent.toAbsolutePath().normalize().getParent();
+            boolean packagedDefault = a.equals(experiment.id()) && parent != null && parent.endsWith("agents/src/main/asl");
+            if (!packagedDefault) {
+                // a copy named like the experiment's (as-published/navigation.asl) takes its folder's name too
+                name.append('-').append(a.equals(experiment.id()) && parent != null && parent.getFileName() != null
+                        ? parent.getFileName() + "-" + a : a);
+            }
+        }
+        if (baseline) {
+            name.append("-baseline");
+        }
+        return Path.of("runs", name.append('-').append(seed).toString());
+    }
+
+    private static String stem(Path file) {
+        String n = file.getFileName().toString();
+        int dot = n.lastIndexOf('.');
+        return (dot > 0 ? n.substring(0, dot) : n).replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
@@ -322,8 +399,8 @@ final class ExperimentCommand implements Callable<Integer> {
         try {
             Files.createDirectories(dir);
         } catch (IOException e) {
-            String why = e instanceof java.nio.file.FileAlreadyExistsException ? "a file of that name exists"
-                    : e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+            String why = e instanceof FileAlreadyExistsException ? "a file of that name exists"
+                    : e instanceof AccessDeniedException ? "permission denied"
                     : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
             throw new UserError("--out " + dir + ": cannot make the directory (" + why + "); choose another with --out DIR");
         }
@@ -332,62 +409,81 @@ final class ExperimentCommand implements Callable<Integer> {
         }
     }
 
-    /** Writes the summary (JSON and text), the event log and the trajectory, and prints them. */
-    private static void report(ConsoleLog log, jacabot.robot.run.RunSummary summary,
-            jacabot.robot.run.RunRecorder recorder, Path outDir, double wallSeconds, long cycles) throws IOException {
+    /** The world and agent files a run used, as the summary names them (agent null: the baseline). */
+    private record RunFiles(String world, String agent) {
+    }
+
+    private static RunFiles files(Object world, String agent) {
+        return new RunFiles(world.toString(), agent);
+    }
+
+    /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
+    private static void report(ConsoleLog log, RunSummary summary,
+            RunRecorder recorder, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
         Files.createDirectories(outDir);
-        summary.writeJson(outDir.resolve("summary.json"));
-        Files.writeString(outDir.resolve("summary.txt"), summary.toText());
+        var mapper = new ObjectMapper();
+        ObjectNode json = mapper.createObjectNode().put("worldFile", files.world());
+        json.put("agentFile", files.agent());
+        json.setAll((ObjectNode) mapper.readTree(summary.toJson()));
+        Files.writeString(outDir.resolve("summary.json"), mapper.writerWithDefaultPrettyPrinter().writeValueAsString(json) + "\n");
+        String text = summary.toText();
+        int first = text.indexOf('\n') + 1;
+        text = text.substring(0, first) + "files: world " + files.world() + (files.agent() == null ? ", procedural baseline"
+                : ", agent " + files.agent()) + "\n" + text.substring(first);
+        Files.writeString(outDir.resolve("summary.txt"), text);
         Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
         recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
         log.info("");
-        summary.toText().lines().forEach(log::result);
+        text.lines().forEach(log::result);
         log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
                 summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : ""));
-        log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png");
+        log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
+                + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : ""));
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, AgentSource source, long runSeed, double seconds,
+    private int runWithViewer(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
             ConsoleLog log, Path outDir) throws Exception {
         // the step log as in a headless run; its steps come from the controller's event log
-        var tap = jacabot.app.replay.RealTimeTap.open(simWorld, outDir, experiment, source.name());
-        var recorder = jacabot.robot.run.RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
+        var tap = RealTimeTap.open(simWorld, outDir, experiment, source.name());
+        var recorder = RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
         long start = System.nanoTime();
-        List<jacabot.app.run.LagMeter.Episode> lags = List.of();
-        try (var run = new jacabot.app.run.RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
+        List<LagMeter.Episode> lags = List.of();
+        Optional<String> agentFailure = Optional.empty();
+        try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
                 port, tap.controllerEvents())) {
             var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
                     ConsoleLog.lines(log::result));
             tap.inspect(inspector);
-            var watches = new java.util.ArrayList<jacabot.app.inspector.MindWatch>();
+            var watches = new ArrayList<MindWatch>();
             for (String name : run.mas().agentNames()) {
                 boolean robot = name.equals("robot");
                 if (robot || inspector != null) { // the robot's mind also goes to the step log
-                    var watch = jacabot.app.inspector.MindWatch.attach(inspector, run.mas().agent(name),
-                            robot ? jacabot.app.replay.RunTap.robotView(simWorld) : null);
+                    var watch = MindWatch.attach(inspector, run.mas().agent(name),
+                            robot ? RunTap.robotView(simWorld) : null);
                     watches.add(robot ? watch.alsoTo(tap.minds()) : watch);
                 }
             }
-            AutoCloseable sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
-            run.lag().addListener(tap.lags()).addListener(jacabot.app.run.LagMeter.firstWarning(log::warn));
+            AutoCloseable sampling = MindWatch.sampleEvery(watches, 200);
+            run.lag().addListener(tap.lags()).addListener(LagMeter.firstWarning(log::warn));
             run.start();
-            var closed = new java.util.concurrent.CountDownLatch(1);
-            javax.swing.SwingUtilities.invokeLater(() -> {
-                javax.swing.JFrame frame = jacabot.sim.viewer.WorldViewer.open(run.runner(), run.lag()::status);
-                frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+            var closed = new CountDownLatch(1);
+            SwingUtilities.invokeLater(() -> {
+                JFrame frame = WorldViewer.open(run.runner(), run.lag()::status);
+                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+                frame.addWindowListener(new WindowAdapter() {
                     @Override
-                    public void windowClosed(java.awt.event.WindowEvent e) {
+                    public void windowClosed(WindowEvent e) {
                         closed.countDown();
                     }
                 });
             });
-            while (!closed.await(200, java.util.concurrent.TimeUnit.MILLISECONDS)) {
-                if (simWorld.time() >= seconds) {
+            while (!closed.await(200, TimeUnit.MILLISECONDS)) {
+                if (simWorld.time() >= seconds || run.agentFailure().isPresent()) {
                     break;
                 }
             }
+            agentFailure = run.agentFailure();
             run.lag().close(); // an episode still open ends here, and is written with the next step
             tap.awaitLagNotes(1000);
             run.runner().stop();
@@ -395,14 +491,14 @@ final class ExperimentCommand implements Callable<Integer> {
             lags = run.lag().episodes();
             var failure = tap.closeLog();
             if (failure != null) {
-                log.warn("the step log " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " stopped early: " + failure.getMessage());
+                log.warn("the step log " + outDir.resolve(StepLog.FILE) + " stopped early: " + failure.getMessage());
             }
             if (inspector != null) {
                 inspector.close();
             }
         } catch (AslSyntaxException e) {
             tap.close();
-            throw new UserError(e.getMessage());
+            throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             tap.close();
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
@@ -410,26 +506,30 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
         recorder.detach();
-        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1);
+        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1,
+                files(worldFile, source.name()));
         if (!lags.isEmpty()) {
             var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
             lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));
             text.toString().lines().forEach(log::result);
-            Files.writeString(outDir.resolve("summary.txt"), text, java.nio.file.StandardOpenOption.APPEND);
+            Files.writeString(outDir.resolve("summary.txt"), text, StandardOpenOption.APPEND);
         }
-        log.result("Step log: " + outDir.resolve(jacabot.app.replay.StepLog.FILE) + " (jacabot replay " + outDir + ")");
-        jacabot.app.plot.RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+        log.result("Step log: " + outDir.resolve(StepLog.FILE) + " (jacabot replay " + outDir + ")");
+        RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+        if (agentFailure.isPresent()) {
+            throw new RunFailure(agentFailure.get());
+        }
         return 0;
     }
 
-    static String lagSummary(List<jacabot.app.run.LagMeter.Episode> lags, double simulatedSeconds) {
+    static String lagSummary(List<LagMeter.Episode> lags, double simulatedSeconds) {
         long ms = lags.stream().mapToLong(e -> e.endMs() - e.startMs()).sum();
-        return String.format(java.util.Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
+        return String.format(Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
                 lags.size(), lags.size() == 1 ? "" : "s", ms / 1000.0, simulatedSeconds);
     }
 
     static double parseDuration(String text) {
-        var m = java.util.regex.Pattern.compile("(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|min|h)?").matcher(text.trim());
+        var m = Pattern.compile("(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|min|h)?").matcher(text.trim());
         if (!m.matches()) {
             throw new IllegalArgumentException("bad duration '" + text + "' (examples: 90s, 10m, 1h)");
         }

@@ -6,8 +6,8 @@ import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.util.List;
 import java.util.Properties;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine;
 
 /** The {@code jacabot} launcher: one entry point with a subcommand per job. */
 @Command(name = "jacabot",
@@ -99,16 +99,22 @@ public final class JacabotCommand implements Runnable {
     private static CommandLine withHandlers(CommandLine cl) {
         cl.setParameterExceptionHandler((ex, args) -> {
             CommandLine c = ex.getCommandLine();
-            c.getErr().println("error: " + ex.getMessage() + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");
+            String guess = "";
+            if (ex instanceof CommandLine.UnmatchedArgumentException u && !u.getSuggestions().isEmpty()) {
+                // picocli's own suggestions: the options and subcommands nearest to what was typed
+                List<String> near = u.getSuggestions();
+                guess = "; did you mean " + String.join(" or ", near.subList(0, Math.min(3, near.size()))) + "?";
+            }
+            c.getErr().println("error: " + ex.getMessage() + guess + " (see: " + c.getCommandSpec().qualifiedName() + " --help)");
             c.getErr().flush();
             return 2;
         });
         cl.setExecutionExceptionHandler((ex, c, parseResult) -> {
             boolean debug = parseResult.expandedArgs().contains("--debug");
-            if (ex instanceof UserError) {
-                c.getErr().println("error: " + ex.getMessage());
+            if (ex instanceof UserError || ex instanceof RunFailure) {
+                c.getErr().println(ex instanceof UserError u ? u.line() : "error: " + ex.getMessage());
                 c.getErr().flush();
-                return 2;
+                return ex instanceof UserError ? 2 : 1;
             }
             c.getErr().println("error: " + describe(ex) + (debug ? "" : " (--debug shows the stack trace)"));
             if (debug) {

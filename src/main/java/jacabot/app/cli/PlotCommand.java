@@ -1,38 +1,42 @@
 package jacabot.app.cli;
 
 import jacabot.app.plot.RunPlots;
+import jacabot.app.replay.StepLog;
+import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot plot runs/X}: (re)draws a recorded run's plots next to its trajectory.png; with several runs, overlays them. */
 @Command(name = "plot", mixinStandardHelpOptions = true,
         description = {"Draws a recorded run's plots (battery, speed, events, latency) as PNG in its folder.",
                 "With several runs (an agent's and a baseline's, two seeds...): their trajectories overlaid in one PNG (--out)."})
 final class PlotCommand implements Callable<Integer> {
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    @Spec
+    private CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
-    private java.io.PrintStream out;
-    private java.io.PrintStream err;
+    private PrintStream out;
 
     @Parameters(arity = "1..*", paramLabel = "DIR", description = "the run's folder (runs/NAME-SEED); several to overlay them")
-    private java.util.List<Path> dirs;
+    private List<Path> dirs;
 
-    @picocli.CommandLine.Option(names = "--out", paramLabel = "PNG", description = "several runs: the overlay's file (default overlay.png)")
+    @Option(names = "--out", paramLabel = "PNG", description = "several runs: the overlay's file (default overlay.png)")
     private Path overlay = Path.of("overlay.png");
 
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
-        err = ConsoleStreams.of(commandSpec.commandLine().getErr());
         for (Path dir : dirs) {
-            if (!Files.isRegularFile(dir.resolve(jacabot.app.replay.StepLog.FILE))) {
-                err.println("error: " + dir + ": no " + jacabot.app.replay.StepLog.FILE
+            if (!Files.isRegularFile(dir.resolve(StepLog.FILE))) {
+                throw new UserError(dir + ": no " + StepLog.FILE
                         + " (written by every `jacabot experiment` run, --baseline included)");
-                return 2;
             }
         }
         try {
@@ -42,9 +46,8 @@ final class PlotCommand implements Callable<Integer> {
                 return 0;
             }
             RunPlots.writeAll(dirs.get(0), out);
-        } catch (java.io.IOException e) {
-            err.println("error: " + e.getMessage());
-            return 1;
+        } catch (IOException e) {
+            throw new RunFailure(e.getMessage());
         }
         return 0;
     }

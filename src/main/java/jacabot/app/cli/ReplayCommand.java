@@ -4,13 +4,21 @@ import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
 import jacabot.app.replay.Replay;
 import jacabot.app.replay.ReplayViewer;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import javax.imageio.ImageIO;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -25,8 +33,8 @@ final class ReplayCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     private picocli.CommandLine.Model.CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
-    private java.io.PrintStream out;
-    private java.io.PrintStream err;
+    private PrintStream out;
+    private PrintStream err;
 
     @Parameters(index = "0", paramLabel = "DIR", description = "the run's folder (or its steps.jsonl.gz)")
     private Path dir;
@@ -66,25 +74,22 @@ final class ReplayCommand implements Callable<Integer> {
         if (whatIf != null) {
             return WhatIfRun.run(dir, whatIf, agent, world, duration, outDir, out, err);
         }
-        boolean window = !headless && !java.awt.GraphicsEnvironment.isHeadless();
+        boolean window = !headless && !GraphicsEnvironment.isHeadless();
         if (!window && inspectorOptions.asked()) {
             try {
                 return serve(); // reads the step log on demand, not all of it into memory
             } catch (IOException e) {
-                err.println("error: " + e.getMessage());
-                return 2;
+                throw new UserError(e.getMessage());
             }
         }
         Replay replay;
         try {
             replay = Replay.open(dir);
         } catch (IOException e) {
-            err.println("error: " + e.getMessage());
-            return 2;
+            throw new UserError(e.getMessage());
         }
         if (replay.frames().isEmpty()) {
-            err.println("error: " + dir + ": the step log has no step");
-            return 2;
+            throw new UserError(dir + ": the step log has no step");
         }
         if (!window) {
             return headlessReplay(replay);
@@ -95,16 +100,16 @@ final class ReplayCommand implements Callable<Integer> {
             inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
         }
         var closed = new CountDownLatch(1);
-        javax.swing.SwingUtilities.invokeLater(() -> {
+        SwingUtilities.invokeLater(() -> {
             var frame = ReplayViewer.open(replay, i -> {
                 if (history != null) {
-                    history.record(replay.frames().get(i).mind(), replay.robotView(i), java.util.List.of());
+                    history.record(replay.frames().get(i).mind(), replay.robotView(i), List.of());
                 }
             });
-            frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
-            frame.addWindowListener(new java.awt.event.WindowAdapter() {
+            frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+            frame.addWindowListener(new WindowAdapter() {
                 @Override
-                public void windowClosed(java.awt.event.WindowEvent e) {
+                public void windowClosed(WindowEvent e) {
                     closed.countDown();
                 }
             });
@@ -170,8 +175,7 @@ final class ReplayCommand implements Callable<Integer> {
             try {
                 seconds = ExperimentCommand.parseDuration(at);
             } catch (IllegalArgumentException e) {
-                err.println("error: --at: " + e.getMessage());
-                return 2;
+                throw new UserError("--at: " + e.getMessage());
             }
             printMind(replay, replay.indexAt(Math.round(seconds * 1000)));
         }
@@ -180,7 +184,7 @@ final class ReplayCommand implements Callable<Integer> {
             Files.createDirectories(frameDir);
             for (int k = 0; k < frames; k++) {
                 int i = frames == 1 ? all.size() - 1 : (int) ((long) k * (all.size() - 1) / (frames - 1));
-                javax.imageio.ImageIO.write(ReplayViewer.render(replay, i, 640, 640), "png",
+                ImageIO.write(ReplayViewer.render(replay, i, 640, 640), "png",
                         frameDir.resolve(String.format("frame-%04d.png", k + 1)).toFile());
             }
             out.println("Frames: " + frames + " PNG in " + frameDir);

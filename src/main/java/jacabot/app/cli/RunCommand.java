@@ -5,25 +5,34 @@ import jacabot.agent.runtime.MasLauncher;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
+import jacabot.app.Installation;
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.MindWatch;
 import jacabot.app.run.AgentWatch;
+import jacabot.app.run.ExperimentMatch;
 import jacabot.app.run.RealTimeRun;
+import jacabot.app.run.TlsRelay;
 import jacabot.cartago.bridge.ProjectClasses;
 import jacabot.cartago.bridge.ProjectClasspath;
 import jacabot.cartago.bridge.SourceCompiler;
 import jacabot.experiments.link.LinkRegistry;
+import jacabot.robot.Experiment;
 import jacabot.robot.link.LinkSecret;
 import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
+import javax.net.ssl.SSLContext;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -106,17 +115,16 @@ final class RunCommand implements Callable<Integer> {
             var entries = new ArrayList<Path>();
             classpath.forEach(c -> Arrays.stream(c.split(File.pathSeparator)).filter(e -> !e.isEmpty())
                     .map(Path::of).forEach(entries::add));
+            file = Installation.locate(file);
             var classes = ProjectClasses.prepare(file.toString().endsWith(".asl") ? null : file, entries);
             classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
             var launcher = new MasLauncher(out, seed, stepping);
             mas = launcher.load(file);
         } catch (ProjectClasspath.Problem e) {
-            err.println(e.getMessage());
-            return 2;
+            throw UserError.located(e.getMessage());
         } catch (SourceCompiler.CompileError e) {
-            e.lines().forEach(err::println); // file:line: message, one per error
-            return 2;
+            throw UserError.located(String.join(System.lineSeparator(), e.lines())); // file:line: message, one per error
         } catch (MasLauncher.UserError e) {
             if (LOCATED.matcher(e.getMessage()).lookingAt()) {
                 err.println(e.getMessage()); // file:line:col: error: message, one line per error
@@ -131,7 +139,7 @@ final class RunCommand implements Callable<Integer> {
         if (tlsStore != null && listen <= 0) {
             throw new UserError("--tls-store: no agent of " + file + " has a robot middleware (" + PORT_BELIEF + "(P) belief)");
         }
-        javax.net.ssl.SSLContext tls = tlsStore != null ? TlsOptions.context(tlsStore, tlsPasswordFile) : null;
+        SSLContext tls = tlsStore != null ? TlsOptions.context(tlsStore, tlsPasswordFile) : null;
         if (tls == null && tlsPasswordFile != null) {
             throw new UserError("--tls-password-file goes with --tls-store FILE");
         }
@@ -141,10 +149,10 @@ final class RunCommand implements Callable<Integer> {
                 setPort(mas.agent(name), middlewarePort);
             }
         }
-        jacabot.app.run.TlsRelay relay = null;
+        TlsRelay relay = null;
         if (tls != null) {
             try {
-                relay = jacabot.app.run.TlsRelay.start(tls, InetAddress.getByName(tlsAddress), listen, middlewarePort,
+                relay = TlsRelay.start(tls, InetAddress.getByName(tlsAddress), listen, middlewarePort,
                         line -> err.println("[middleware] " + line));
             } catch (IOException e) {
                 throw new IllegalStateException("cannot listen with TLS on " + tlsAddress + ":" + listen + " (" + e.getMessage()
@@ -158,23 +166,29 @@ final class RunCommand implements Callable<Integer> {
             }
             try {
                 LinkSecret.userDefault(); // a secret file that cannot be read is told now, in one line
-            } catch (java.io.UncheckedIOException e) {
+            } catch (UncheckedIOException e) {
                 throw new UserError(e.getMessage() + " (or pass --secret-file FILE)");
             }
+            // the middleware waits for the robot controller: a run that seems to hang says what it waits for
+            String stem = file.getFileName().toString().replaceFirst("\\.(mas2j|asl)$", "");
+            String worldFile = Experiment.parse(stem).map(e -> e.worldFile()).orElse("FILE");
+            log.info("Waiting for the robot controller on " + (tls != null ? tlsAddress : "127.0.0.1") + ":" + listen
+                    + "; start it in another terminal: jacabot controller --world " + worldFile
+                    + (port != null ? " --port " + listen : "") + (tls != null ? " --host " + tlsAddress + " --tls-store ..." : ""));
         }
         // the middleware's heartbeats (the controller's fail-safe) follow the agents' reasoning
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
         // off by default: console programs end in moments; --inspector shows their minds
-        var results = jacabot.app.console.ConsoleLog.lines(log::result);
+        var results = ConsoleLog.lines(log::result);
         var inspector = inspectorOptions.start(false, "jacabot run " + file, results);
         AutoCloseable sampling = () -> {
         };
         if (inspector != null) {
-            var watches = new ArrayList<jacabot.app.inspector.MindWatch>();
+            var watches = new ArrayList<MindWatch>();
             for (String name : mas.agentNames()) {
-                watches.add(jacabot.app.inspector.MindWatch.attach(inspector, mas.agent(name), null));
+                watches.add(MindWatch.attach(inspector, mas.agent(name), null));
             }
-            sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
+            sampling = MindWatch.sampleEvery(watches, 200);
         }
         LinkRegistry.setDefaultLiveness(watch); // the agents make their middleware, and so its link, as they run
         LinkRegistry.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
@@ -212,20 +226,20 @@ final class RunCommand implements Callable<Integer> {
     /** {@return warnings when a robot project's agents make another experiment's middleware than it is named for} */
     static List<String> projectWarnings(Path mas2j) {
         try {
-            String text = java.nio.file.Files.readString(mas2j);
-            var name = java.util.regex.Pattern.compile("\\bMAS\\s+(\\w+)").matcher(text);
+            String text = Files.readString(mas2j);
+            var name = Pattern.compile("\\bMAS\\s+(\\w+)").matcher(text);
             if (!name.find()) {
                 return List.of();
             }
             var made = new ArrayList<String>();
-            var asl = java.util.regex.Pattern.compile("([\\w./-]+\\.asl)\\b").matcher(text);
+            var asl = Pattern.compile("([\\w./-]+\\.asl)\\b").matcher(text);
             while (asl.find()) {
                 Path agent = mas2j.toAbsolutePath().getParent().resolve(asl.group(1));
-                if (java.nio.file.Files.isRegularFile(agent)) {
-                    made.addAll(jacabot.app.run.ExperimentMatch.middlewaresMadeBy(java.nio.file.Files.readString(agent)));
+                if (Files.isRegularFile(agent)) {
+                    made.addAll(ExperimentMatch.middlewaresMadeBy(Files.readString(agent)));
                 }
             }
-            return jacabot.app.run.ExperimentMatch.checkProject(name.group(1), mas2j.toString(), made);
+            return ExperimentMatch.checkProject(name.group(1), mas2j.toString(), made);
         } catch (IOException | RuntimeException e) {
             return List.of(); // the launcher has loaded it already; a check that cannot read it stays silent
         }

@@ -1,6 +1,11 @@
 package jacabot.app.cli;
 
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.app.Installation;
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
 import jacabot.app.sweep.RunOutcome;
+import jacabot.app.sweep.SuccessCriteria;
 import jacabot.app.sweep.Sweep;
 import jacabot.app.sweep.SweepJob;
 import jacabot.app.sweep.SweepPlan;
@@ -17,10 +22,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 /**
  * {@code jacabot sweep EXPERIMENT|all}: agent and baseline, headless in lockstep, over every world x
@@ -60,7 +66,7 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
     private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
 
-    @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/as-published/navigation.asl (default: the packaged one)")
+    @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/src/main/asl/as-published/navigation.asl, found from any folder (default: the packaged one)")
     private Path agent;
 
     @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default: one per core, here ${DEFAULT-VALUE})")
@@ -90,7 +96,6 @@ final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        PrintWriter err = spec.commandLine().getErr();
         PrintWriter o = spec.commandLine().getOut();
         var log = verbosity.console(spec);
         List<Experiment> experiments;
@@ -123,7 +128,7 @@ final class SweepCommand implements Callable<Integer> {
                 }
             }
             if (shard != null) {
-                var m = java.util.regex.Pattern.compile("(\\d+)/(\\d+)").matcher(shard.trim());
+                var m = Pattern.compile("(\\d+)/(\\d+)").matcher(shard.trim());
                 if (!m.matches() || Integer.parseInt(m.group(2)) < 1 || Integer.parseInt(m.group(1)) < 1
                         || Integer.parseInt(m.group(1)) > Integer.parseInt(m.group(2))) {
                     throw new IllegalArgumentException("bad --shard '" + shard + "' (expected I/N with 1 <= I <= N, e.g. 2/8)");
@@ -143,8 +148,8 @@ final class SweepCommand implements Callable<Integer> {
             if (worldSeeds != null) {
                 generatorSeeds = SweepPlan.seeds(worldSeeds);
             }
-            if (worlds != null && !Files.isDirectory(worlds) && !worlds.isAbsolute()) {
-                worlds = jacabot.app.Installation.resolve(worlds.toString()); // --worlds worlds: the bundled ones, from anywhere
+            if (worlds != null) {
+                worlds = Installation.locate(worlds); // --worlds worlds: the bundled ones, from anywhere
             }
             if (worlds != null && !Files.isDirectory(worlds)) {
                 throw new IllegalArgumentException(worlds + ": no such directory");
@@ -156,21 +161,17 @@ final class SweepCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--max-side must be at least 1 (metres), got " + maxSide);
             }
         } catch (IllegalArgumentException e) {
-            err.println("error: " + e.getMessage());
-            err.flush();
-            return 2;
+            throw new UserError(e.getMessage());
         }
-        jacabot.app.run.AgentSource agentSource = null;
+        AgentSource agentSource = null;
         if (agent != null) {
             try {
-                Path file = Files.isRegularFile(agent) || agent.isAbsolute() ? agent : jacabot.app.Installation.resolve(agent.toString());
+                Path file = Installation.locate(agent);
                 agentSource = ExperimentCommand.readAgent(file);
                 agentSource.parse(agentSource.parser()); // a syntax error before, not in every run
                 agent = file;
-            } catch (UserError | jacabot.agent.parser.AslSyntaxException e) {
-                err.println(e instanceof UserError ? "error: " + e.getMessage() : e.getMessage()); // file:line:col: error: ...
-                err.flush();
-                return 2;
+            } catch (AslSyntaxException e) {
+                throw UserError.located(e.getMessage()); // file:line:col: error: ...
             }
         }
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
@@ -179,14 +180,14 @@ final class SweepCommand implements Callable<Integer> {
                 : generatorSeeds != null ? SweepPlan.generated(experiments, generatorSeeds, maxSide, dir.resolve("worlds"))
                 : SweepPlan.generated(experiments, generate == null ? 10 : generate, maxSide, dir.resolve("worlds"));
         if (list.isEmpty()) {
-            err.println("error: " + worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
-            err.flush();
-            return 2;
+            throw new UserError(worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
         }
         List<SweepJob> jobList = SweepPlan.jobs(list, runSeeds, controllers, shardIndex, shards);
-        log.info(String.format(Locale.ROOT, "Sweep: %d runs (%d worlds x %d seeds x %d controllers%s), %s simulated each, %d at once; %s",
-                jobList.size(), list.size(), runSeeds.size(), controllers.size(),
+        log.info(String.format(Locale.ROOT, "Sweep: %s (%s x %s x %s%s), %s simulated each, %d at once; %s",
+                count(jobList.size(), "run"), count(list.size(), "world"), count(runSeeds.size(), "seed"),
+                count(controllers.size(), "controller"),
                 shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
+        SuccessCriteria.caveat(seconds).ifPresent(c -> log.warn(c + "; report.md says so too"));
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
                 .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
         if (agentSource != null) {
@@ -221,7 +222,7 @@ final class SweepCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void writeLogs(Path logs, SweepRun.Result r, jacabot.app.console.ConsoleLog log) {
+    private static void writeLogs(Path logs, SweepRun.Result r, ConsoleLog log) {
         RunOutcome o = r.outcome();
         String base = o.experiment().id() + "_" + o.world() + "_" + o.controller() + "_seed" + o.seed();
         try {
@@ -233,6 +234,11 @@ final class SweepCommand implements Callable<Integer> {
         } catch (IOException e) {
             log.warn("cannot write the logs of " + base + ": " + e.getMessage());
         }
+    }
+
+    /** {@return "1 run", "2 runs"} */
+    static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
     }
 
     /** {@code jacabot sweep merge DIR...}: joins the CSVs of shards into one CSV and one report. */
@@ -250,24 +256,19 @@ final class SweepCommand implements Callable<Integer> {
 
         @Override
         public Integer call() throws IOException {
-            PrintWriter err = spec.commandLine().getErr();
             List<List<RunOutcome>> parts = new ArrayList<>();
             double rate = 0;
             boolean allRates = true;
             for (Path d : dirs) {
                 Path csv = d.resolve("runs.csv");
                 if (!Files.isRegularFile(csv)) {
-                    err.println("error: " + csv + ": no such file");
-                    err.flush();
-                    return 2;
+                    throw new UserError(csv + ": no such file");
                 }
                 List<RunOutcome> runs;
                 try {
                     runs = SweepReport.readCsv(csv);
                 } catch (IllegalArgumentException e) {
-                    err.println("error: " + e.getMessage());
-                    err.flush();
-                    return 2;
+                    throw new UserError(e.getMessage());
                 }
                 parts.add(runs);
                 Path metaFile = d.resolve("sweep.properties");

@@ -49,11 +49,8 @@ final class WorldCommand implements Runnable {
 
         @Override
         public Integer call() throws IOException {
-            PrintWriter err = spec.commandLine().getErr();
             if (!(maxSide >= 1)) {
-                err.println("error: --max-side must be at least 1 (metres), got " + maxSide);
-                err.flush();
-                return 2;
+                throw new UserError("--max-side must be at least 1 (metres), got " + maxSide);
             }
             String json = new WorldGenerator(experiment, seed).maxSide(maxSide).generate().json();
             if (out == null) {

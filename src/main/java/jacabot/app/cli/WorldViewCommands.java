@@ -1,11 +1,15 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.demo.Wander;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.viewer.PngRenderer;
 import jacabot.sim.viewer.WorldViewer;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -13,24 +17,25 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import picocli.CommandLine;
+import javax.swing.JFrame;
+import javax.swing.SwingUtilities;
+import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 /** {@code jacabot world view} and {@code jacabot world render}: sim-world's viewer and renderer on a world file. */
 final class WorldViewCommands {
     private WorldViewCommands() {
     }
 
-    /** Loads a world or prints the loader's one line; null on failure. */
-    private static SimWorld load(Path file, PrintWriter err) {
+    /** Loads a world (the current folder's file, else the installation's) or says why not. */
+    private static SimWorld load(Path file) {
         try {
-            return SimWorld.load(file);
+            return SimWorld.load(Installation.locate(file));
         } catch (WorldFileException e) {
-            err.println(e.getMessage());
-            err.flush();
-            return null;
+            throw new UserError(e.getMessage());
         }
     }
 
@@ -49,24 +54,18 @@ final class WorldViewCommands {
 
         @Override
         public Integer call() throws InterruptedException {
-            PrintWriter err = spec.commandLine().getErr();
-            SimWorld world = load(file, err);
-            if (world == null) {
-                return 2;
-            }
-            if (java.awt.GraphicsEnvironment.isHeadless()) {
-                err.println("error: no display; `jacabot world render " + file + " --out world.png` draws the world headless");
-                err.flush();
-                return 2;
+            SimWorld world = load(file);
+            if (GraphicsEnvironment.isHeadless()) {
+                throw new UserError("no display; `jacabot world render " + file + " --out world.png` draws the world headless");
             }
             SimRunner runner = new SimRunner(world, wander ? new Wander() : null);
             var closed = new CountDownLatch(1);
-            javax.swing.SwingUtilities.invokeLater(() -> {
-                javax.swing.JFrame frame = WorldViewer.open(runner);
-                frame.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new java.awt.event.WindowAdapter() {
+            SwingUtilities.invokeLater(() -> {
+                JFrame frame = WorldViewer.open(runner);
+                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
+                frame.addWindowListener(new WindowAdapter() {
                     @Override
-                    public void windowClosed(java.awt.event.WindowEvent e) {
+                    public void windowClosed(WindowEvent e) {
                         closed.countDown();
                     }
                 });
@@ -101,17 +100,11 @@ final class WorldViewCommands {
 
         @Override
         public Integer call() {
-            PrintWriter err = spec.commandLine().getErr();
             if (!(seconds >= 0) || size < 50 || size > 10_000) {
-                err.println("error: --seconds must be >= 0 and --size in 50..10000");
-                err.flush();
-                return 2;
+                throw new UserError("--seconds must be >= 0 and --size in 50..10000");
             }
             System.setProperty("java.awt.headless", "true");
-            SimWorld world = load(file, err);
-            if (world == null) {
-                return 2;
-            }
+            SimWorld world = load(file);
             Wander wander = new Wander();
             while (world.time() < seconds) {
                 wander.accept(world);
@@ -123,9 +116,7 @@ final class WorldViewCommands {
                 }
                 PngRenderer.write(world, out, size, size + 60);
             } catch (IOException e) {
-                err.println("error: cannot write " + out + ": " + e.getMessage());
-                err.flush();
-                return 1;
+                throw new UserError("cannot write " + out + ": " + e.getMessage());
             }
             PrintWriter o = spec.commandLine().getOut();
             o.printf("wrote %s after %.1f s of simulated time%n", out, world.time());

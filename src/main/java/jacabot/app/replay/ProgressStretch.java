@@ -8,7 +8,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * The longest stretch of a recorded run in which the robot made no progress (issue 13: "no stretch
+ * The longest stretch of a recorded run in which the robot made no progress (the success criteria's "no stretch
  * of more than 30 s in which the robot neither gains coverage nor progresses towards its current
  * target"). Progress is entering a coverage cell not entered before, or coming {@link #CLOSER} m
  * nearer than ever to the current target. The target is what the agent last came to believe as

@@ -62,7 +62,7 @@ public final class ExperimentMatch {
                 + "(jacabot experiment " + w + " runs it)"));
         for (String made : middlewaresMadeBy(agentSource)) {
             ofMiddleware(made).filter(a -> a != experiment).ifPresent(a -> warnings.add(agentFile + " is written for "
-                    + "experiment " + a.number() + " (" + a + ": it makes a " + made + "), but runs here with the "
+                    + "experiment " + a.number() + " (" + a + ": it makes the " + made + "), but runs here with the "
                     + Middlewares.of(experiment).getSimpleName() + " of " + experiment
                     + "; its percepts and actions may not match"));
         }

@@ -1,13 +1,13 @@
 package jacabot.app.run;
-import jacabot.experiments.link.MiddlewareLink;
 import jacabot.experiments.link.LinkConfig;
-
+import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.MemoryLink;
-import jacabot.robot.RobotController;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
+import java.net.InetAddress;
 
 /**
  * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
@@ -38,11 +38,11 @@ public final class InProcessLink implements AutoCloseable {
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port)
             throws IOException {
         LinkSecret secret = LinkSecret.random();
-        MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(java.net.InetAddress.getLoopbackAddress())
+        MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(InetAddress.getLoopbackAddress())
                 .withPort(port).withSecret(secret));
         try {
             RobotController controller = new RobotController(world,
-                    controllerConfig.withAddress(java.net.InetAddress.getLoopbackAddress().getHostAddress(), link.port())
+                    controllerConfig.withAddress(InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
             controller.start();
             return new InProcessLink(link, controller);

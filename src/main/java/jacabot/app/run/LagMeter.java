@@ -10,6 +10,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
@@ -104,7 +107,7 @@ public final class LagMeter implements AutoCloseable {
     private boolean moving;
     private volatile Reading last;
     private Episode open;
-    private java.util.concurrent.ScheduledExecutorService timer;
+    private ScheduledExecutorService timer;
 
     public LagMeter(SimRunner runner) {
         this(runner, System::nanoTime);
@@ -163,12 +166,12 @@ public final class LagMeter implements AutoCloseable {
     /** Samples every {@value #PERIOD_MS} ms on a daemon thread until {@link #close()}. */
     public synchronized LagMeter start() {
         if (timer == null) {
-            timer = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(r -> {
+            timer = Executors.newSingleThreadScheduledExecutor(r -> {
                 Thread t = new Thread(r, "lag-meter");
                 t.setDaemon(true);
                 return t;
             });
-            timer.scheduleAtFixedRate(this::sample, PERIOD_MS, PERIOD_MS, java.util.concurrent.TimeUnit.MILLISECONDS);
+            timer.scheduleAtFixedRate(this::sample, PERIOD_MS, PERIOD_MS, TimeUnit.MILLISECONDS);
         }
         return this;
     }

@@ -128,6 +128,18 @@ public final class LockstepCoordinator {
         return m != null ? m.port() : 0;
     }
 
+    /**
+     * Ends the run after the step in progress, from the agent side's own step (a failed agent): the
+     * world stops advancing and the controller says goodbye; a remote controller's link is closed.
+     */
+    public void endAfterThisStep() {
+        stopRequested = true;
+        MiddlewareLink m = remoteLink;
+        if (m != null) {
+            new Thread(m::close, "lockstep-end").start();
+        }
+    }
+
     /** Ends the run at the current step (e.g. on SIGTERM): {@link #runFor} returns what it has. */
     public void stop() {
         stopRequested = true;

@@ -1,32 +1,35 @@
 package jacabot.app.run;
-import jacabot.robot.Experiment;
-import jacabot.experiments.link.LatencyStats;
-import jacabot.experiments.link.LatencyRecorder;
-
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
-import jacabot.cartago.SimulatedClock;
+import jacabot.agent.semantics.Event;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.cartago.AgentId;
 import jacabot.cartago.ArtifactId;
 import jacabot.cartago.ArtifactObserverAdapter;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.CartagoLogger;
+import jacabot.cartago.OpTarget;
+import jacabot.cartago.SimulatedClock;
+import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.CAgentArch;
 import jacabot.cartago.bridge.CartagoEnvironment;
-import jacabot.cartago.CartagoException;
-import jacabot.cartago.OpTarget;
-import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
+import jacabot.experiments.link.LatencyRecorder;
+import jacabot.experiments.link.LatencyStats;
 import jacabot.experiments.link.StepData;
+import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
 /**
@@ -51,7 +54,7 @@ public final class LockstepRun implements AutoCloseable {
     private final MiddlewareArtifact middleware;
     private long cycles;
     /** Reactive time: from a step's readings reaching the middleware to the first plan they trigger. */
-    private final jacabot.experiments.link.LatencyRecorder reactive = new jacabot.experiments.link.LatencyRecorder(1_000_000);
+    private final LatencyRecorder reactive = new LatencyRecorder(1_000_000);
     private long deliveredNanos;
     private long inlineNanos;
     private boolean reactedThisStep = true;
@@ -61,9 +64,12 @@ public final class LockstepRun implements AutoCloseable {
     private boolean remoteController;
     private boolean inMemory;
     private volatile LockstepCoordinator coordinator;
+    private final FailureWatch failures;
+    private final List<Literal> initialGoals;
+    private boolean reasoned;
     private Consumer<StepData> onStep = d -> {
     };
-    private java.util.function.BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
+    private BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
     };
 
     /**
@@ -74,7 +80,7 @@ public final class LockstepRun implements AutoCloseable {
         this.world = world;
         this.robotName = robotName;
         workspace = Workspace.builder("main").stepped().clock(clock).console(console)
-                .logger(jacabot.cartago.CartagoLogger.console(console)).build();
+                .logger(CartagoLogger.console(console)).build();
         mas = new LocalMAS(clock::nowMillis, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
         stepper = new JacaStepper(mas, workspace);
@@ -83,9 +89,12 @@ public final class LockstepRun implements AutoCloseable {
         middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
-        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
+        initialGoals = program.goals();
+        failures = new FailureWatch(initialGoals);
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+            failures.planSelected(event, clock.nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
                 reactive.record((System.nanoTime() - deliveredNanos) / 1000);
@@ -93,7 +102,7 @@ public final class LockstepRun implements AutoCloseable {
         });
     }
 
-    private static boolean isPercept(jacabot.agent.semantics.Event e) {
+    private static boolean isPercept(Event e) {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
@@ -108,7 +117,7 @@ public final class LockstepRun implements AutoCloseable {
     }
 
     /** {@return the reactive times measured so far (wall clock, microseconds)} */
-    public jacabot.experiments.link.LatencyStats reactiveTimes() {
+    public LatencyStats reactiveTimes() {
         return reactive.stats();
     }
 
@@ -123,7 +132,7 @@ public final class LockstepRun implements AutoCloseable {
     }
 
     /** Called after each control step with its readings and the commands going to the robot (inspector, step log). */
-    public void onCommands(java.util.function.BiConsumer<StepData, List<Command>> listener) {
+    public void onCommands(BiConsumer<StepData, List<Command>> listener) {
         this.onCommands = listener;
     }
 
@@ -178,6 +187,14 @@ public final class LockstepRun implements AutoCloseable {
         return c != null ? c.listeningPort() : 0;
     }
 
+    /**
+     * {@return why the agent failed at its job, if it has} (no plan for its initial goal, a
+     * {@code .stopMAS} before the end, a failure storm: {@link FailureWatch}); the run ended at that step
+     */
+    public Optional<String> agentFailure() {
+        return failures.verdict();
+    }
+
     /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
     public void stop() {
         LockstepCoordinator c = coordinator;
@@ -221,6 +238,17 @@ public final class LockstepRun implements AutoCloseable {
             });
             inlineNanos += System.nanoTime() - t0;
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
+            if (!reasoned) {
+                reasoned = true;
+                failures.firstReasoningDone(mas.agent("robot").planLibrary(), initialGoals);
+            }
+            if (mas.isStopped()) {
+                failures.systemStopped(clock.nowMillis());
+            }
+            LockstepCoordinator c = coordinator;
+            if (failures.verdict().isPresent() && c != null) {
+                c.endAfterThisStep(); // a failed agent does not run out its duration
+            }
         }
         onStep.accept(data);
         List<Command> commands = new ArrayList<>(middleware.takeCommands());

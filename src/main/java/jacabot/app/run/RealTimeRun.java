@@ -1,23 +1,27 @@
 package jacabot.app.run;
-import jacabot.robot.Experiment;
-import jacabot.experiments.link.LinkTimings;
-
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
-import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
-import jacabot.cartago.bridge.CAgentArch;
-import jacabot.cartago.bridge.CartagoEnvironment;
+import jacabot.agent.semantics.Clock;
+import jacabot.agent.semantics.Event;
+import jacabot.agent.syntax.Literal;
 import jacabot.cartago.CartagoException;
 import jacabot.cartago.CartagoLogger;
 import jacabot.cartago.Workspace;
+import jacabot.cartago.bridge.CAgentArch;
+import jacabot.cartago.bridge.CartagoEnvironment;
 import jacabot.experiments.MiddlewareArtifact;
+import jacabot.experiments.link.LinkTimings;
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
+import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import java.io.PrintStream;
 import java.util.List;
+import java.util.Optional;
+import java.util.function.Consumer;
 
 /**
  * An experiment in real time (× a speed factor), as the thesis ran it: the simulator paces the
@@ -32,6 +36,7 @@ public final class RealTimeRun implements AutoCloseable {
     private final MiddlewareArtifact middleware;
     private Thread agents;
     private final LagMeter lag;
+    private final FailureWatch failures;
 
     /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
     public static final long STALL_MS = 100;
@@ -52,11 +57,11 @@ public final class RealTimeRun implements AutoCloseable {
      *                         and pose, on the simulation thread; e.g. for the step log), or null
      */
     public RealTimeRun(SimWorld world, Experiment experiment, AgentSource agent, long seed,
-            double speed, PrintStream console, int port, java.util.function.Consumer<String> controllerEvents)
+            double speed, PrintStream console, int port, Consumer<String> controllerEvents)
             throws AslSyntaxException, CartagoException {
         this.world = world;
         // both ends are in this process: a fresh secret of this run's, no file needed
-        jacabot.robot.link.LinkSecret.useInThisProcess(jacabot.robot.link.LinkSecret.random());
+        LinkSecret.useInThisProcess(LinkSecret.random());
         workspace = Workspace.builder("main").console(console).logger(CartagoLogger.console(console)).build();
         Clock simTime = world::timeMs;
         mas = new LocalMAS(simTime, console, seed);
@@ -66,12 +71,14 @@ public final class RealTimeRun implements AutoCloseable {
         int boundPort = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow().link().port();
         middleware = workspace.artifactObject(id, MiddlewareArtifact.class).orElseThrow();
         AslParser parser = agent.parser();
-        // the world's landmarks reach the agent as initial beliefs (issue 13)
+        // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         var program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
+        failures = new FailureWatch(program.goals());
         mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+            failures.planSelected(event, world.timeMs());
             timeReaction(event);
-            if (event.isExternal() && event.trigger().literal() instanceof jacabot.agent.syntax.Literal l
+            if (event.isExternal() && event.trigger().literal() instanceof Literal l
                     && l.getAnnot("percept_type") != null) {
                 var reading = middleware.takeTrigger();
                 if (reading != null) {
@@ -91,8 +98,19 @@ public final class RealTimeRun implements AutoCloseable {
     }
 
     /** On the agent's thread: a plan was chosen for {@code event} (the meter is made before the agent runs). */
-    private void timeReaction(jacabot.agent.semantics.Event event) {
+    private void timeReaction(Event event) {
         lag.planSelected(event);
+    }
+
+    /**
+     * {@return why the agent failed at its job, if it has}: a {@code .stopMAS} or a failure storm
+     * ({@link FailureWatch}); the caller ends the run. Looked at by the caller every few hundred ms.
+     */
+    public Optional<String> agentFailure() {
+        if (mas.isStopped()) {
+            failures.systemStopped(world.timeMs());
+        }
+        return failures.verdict();
     }
 
     /** {@return how far the run falls behind real time (sampling from {@link #start()} on)} */
@@ -114,7 +132,7 @@ public final class RealTimeRun implements AutoCloseable {
     }
 
     /** {@return the link's timings (transport, delivery, reactive, response)} */
-    public jacabot.experiments.link.LinkTimings timings() {
+    public LinkTimings timings() {
         return middleware.link().timings();
     }
 

@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * What the robot is told about its world when it starts: the landmarks of the world
+ * What the robot is told about its world when it starts (not in the thesis: the agents take their landmarks from the world, so other worlds work): the landmarks of the world
  * file become initial beliefs, so no coordinate is written in an agent. {@code arena(Width, Depth)}
  * (centred on the origin), {@code storagePoint(X, Z)} with {@code storageRadius(R)}, and
  * {@code charger(X, Z)} when the world has them, in the GPS coordinates of {@code location(X, Y, Z)}. A belief of the same name and arity

@@ -15,6 +15,7 @@ import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.world.WorldSpec;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -140,8 +141,8 @@ public final class Scenario {
             Files.writeString(out.resolve("summary.txt"), summary.toText());
             Files.writeString(out.resolve("event-log.txt"), summary.eventLog());
             recorder.writePng(out.resolve("trajectory.png"), 800, 800);
-            RunPlots.writeAll(out, new PrintStream(java.io.OutputStream.nullOutputStream()));
+            RunPlots.writeAll(out, new PrintStream(OutputStream.nullOutputStream()));
         }
-        return new ScenarioResult(summary, List.of(console.toString(StandardCharsets.UTF_8).split("\\R")));
+        return new ScenarioResult(summary, List.of(console.toString(StandardCharsets.UTF_8).split("\\R")), run.agentFailure());
     }
 }

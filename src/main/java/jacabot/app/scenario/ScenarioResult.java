@@ -2,12 +2,14 @@ package jacabot.app.scenario;
 
 import jacabot.robot.run.RunSummary;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * What a {@link Scenario} run leaves: the run's summary (picks, deliveries, battery, contacts,
- * coverage, ...), its event log, and the agents' console lines.
+ * coverage, ...), its event log, the agents' console lines, and why the agent failed at its job
+ * when it did (the run then ended at that step: {@link jacabot.app.run.FailureWatch}).
  */
-public record ScenarioResult(RunSummary summary, List<String> console) {
+public record ScenarioResult(RunSummary summary, List<String> console, Optional<String> agentFailure) {
     public ScenarioResult {
         console = List.copyOf(console);
     }

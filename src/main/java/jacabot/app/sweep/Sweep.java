@@ -1,13 +1,19 @@
 package jacabot.app.sweep;
 
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
+import jacabot.robot.Experiment;
+import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CompletionService;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorCompletionService;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -33,7 +39,7 @@ public final class Sweep {
     private boolean socket;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
-    private final Map<jacabot.robot.Experiment, jacabot.app.run.AgentSource> agents = new java.util.EnumMap<>(jacabot.robot.Experiment.class);
+    private final Map<Experiment, AgentSource> agents = new EnumMap<>(Experiment.class);
 
     /**
      * What a sweep leaves: every outcome (in job order), the wall-clock time it took, the CPU time
@@ -61,7 +67,7 @@ public final class Sweep {
 
     /** {@return the CPU time of this JVM so far in seconds, NaN when it cannot be read} */
     static double processCpuSeconds() {
-        var os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        var os = ManagementFactory.getOperatingSystemMXBean();
         if (os instanceof com.sun.management.OperatingSystemMXBean sun) {
             long ns = sun.getProcessCpuTime();
             return ns < 0 ? Double.NaN : ns / 1e9;
@@ -102,7 +108,7 @@ public final class Sweep {
     }
 
     /** Runs {@code agent} as the agent of experiment {@code e}, not the packaged one. */
-    public Sweep agent(jacabot.robot.Experiment e, jacabot.app.run.AgentSource agent) {
+    public Sweep agent(Experiment e, AgentSource agent) {
         agents.put(e, agent);
         return this;
     }
@@ -111,7 +117,7 @@ public final class Sweep {
     public Outcomes run(List<SweepJob> list) throws InterruptedException {
         long start = System.nanoTime();
         double cpuStart = processCpuSeconds();
-        double load = java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
+        double load = ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
         AtomicInteger threadNo = new AtomicInteger();
         ExecutorService pool = Executors.newFixedThreadPool(jobs, r -> {
             Thread t = new Thread(r, "sweep-" + threadNo.incrementAndGet());
@@ -119,7 +125,7 @@ public final class Sweep {
             return t;
         });
         CompletionService<Integer> done = new ExecutorCompletionService<>(pool);
-        Map<Integer, Long> started = new java.util.concurrent.ConcurrentHashMap<>();
+        Map<Integer, Long> started = new ConcurrentHashMap<>();
         RunOutcome[] outcomes = new RunOutcome[list.size()];
         Map<Future<Integer>, Integer> futures = new HashMap<>();
         for (int i = 0; i < list.size(); i++) {
@@ -127,7 +133,7 @@ public final class Sweep {
             futures.put(done.submit(() -> {
                 started.put(index, System.nanoTime());
                 SweepJob job = list.get(index);
-                jacabot.app.run.AgentSource given = agents.get(job.experiment()); // read only once the jobs run
+                AgentSource given = agents.get(job.experiment()); // read only once the jobs run
                 SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS,
                         given != null ? given : SweepRun.packaged(job.experiment()), socket);
                 synchronized (outcomes) {
@@ -149,7 +155,7 @@ public final class Sweep {
                     int index;
                     try {
                         index = f.get();
-                    } catch (java.util.concurrent.ExecutionException e) {
+                    } catch (ExecutionException e) {
                         // SweepRun reports every failure in its outcome; this is a bug in the sweep itself
                         index = futures.get(f);
                         synchronized (outcomes) {

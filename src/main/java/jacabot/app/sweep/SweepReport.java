@@ -7,8 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.function.ToDoubleFunction;
 
 /**
@@ -125,6 +127,9 @@ public final class SweepReport {
             b.append(' ').append(throughput);
         }
         b.append("\n");
+        double shortest = runs.stream().mapToDouble(o -> o.status().equals(RunOutcome.OK) ? o.simulated() : Double.MAX_VALUE)
+                .min().orElse(Double.MAX_VALUE);
+        SuccessCriteria.caveat(shortest).ifPresent(c -> b.append("\n**Note:** ").append(c).append(".\n"));
         for (Experiment e : Experiment.values()) {
             List<RunOutcome> mine = runs.stream().filter(o -> o.experiment() == e).toList();
             if (mine.isEmpty()) {
@@ -132,7 +137,7 @@ public final class SweepReport {
             }
             b.append("\n## ").append(e.id()).append("\n\n");
             b.append("| controller | runs | successes | median contact (s) | median coverage | median picks | median deliveries "
-                    + "| empty storage entries | low-battery episodes completed | crashes / hangs / early ends |\n");
+                    + "| empty storage entries | low-battery episodes completed | crashes / hangs / early ends / agent failures |\n");
             b.append("|---|---|---|---|---|---|---|---|---|---|\n");
             for (String controller : List.of(SweepJob.AGENT, SweepJob.BASELINE)) {
                 List<RunOutcome> c = mine.stream().filter(o -> o.controller().equals(controller)).toList();
@@ -142,13 +147,14 @@ public final class SweepReport {
                 long ok = c.stream().filter(RunOutcome::success).count();
                 int episodes = c.stream().mapToInt(o -> o.figures().lowBatteryEpisodes()).sum();
                 int completed = c.stream().mapToInt(o -> o.figures().episodesCompleted()).sum();
-                b.append(String.format(Locale.ROOT, "| %s | %d | %d (%.0f%%) | %.1f | %.0f%% | %s | %s | %d | %s | %d / %d / %d |%n",
+                b.append(String.format(Locale.ROOT, "| %s | %d | %d (%.0f%%) | %.1f | %.0f%% | %s | %s | %d | %s | %d / %d / %d / %d |%n",
                         controller, c.size(), ok, 100.0 * ok / c.size(), median(c, o -> o.figures().contactTime()),
                         100 * median(c, o -> o.figures().coverage()), n(median(c, o -> o.figures().picks()), 1),
                         n(median(c, o -> o.figures().deliveries()), 1),
                         c.stream().mapToInt(o -> o.figures().storageEntriesEmpty()).sum(),
                         episodes == 0 ? "-" : completed + " of " + episodes,
-                        status(c, RunOutcome.CRASH), status(c, RunOutcome.HANG), status(c, RunOutcome.EARLY_END)));
+                        status(c, RunOutcome.CRASH), status(c, RunOutcome.HANG), status(c, RunOutcome.EARLY_END),
+                        status(c, RunOutcome.AGENT_FAILURE)));
             }
             List<RunOutcome> failed = mine.stream().filter(o -> !o.success()).toList();
             if (!failed.isEmpty()) {
@@ -185,7 +191,7 @@ public final class SweepReport {
     /** {@return the outcomes of several CSVs joined, in report order, without repeated runs} */
     public static List<RunOutcome> merge(List<List<RunOutcome>> parts) {
         List<RunOutcome> all = new ArrayList<>();
-        java.util.Set<String> seen = new java.util.HashSet<>();
+        Set<String> seen = new HashSet<>();
         for (List<RunOutcome> p : parts) {
             for (RunOutcome o : p) {
                 if (seen.add(String.join("\u0000", Arrays.asList(o.experiment().id(), o.world(), o.controller(),

@@ -11,6 +11,7 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.WorldListener;
 import jacabot.sim.world.WorldSpec;
+import java.io.ByteArrayOutputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -18,6 +19,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 
@@ -94,7 +96,7 @@ public final class SweepRun {
             @Override
             public void controlStepEnded(long timeMs) {
                 if (System.nanoTime() > deadline) {
-                    throw new Stopped(String.format(java.util.Locale.ROOT, "no end after %.0f s of wall-clock time (at t=%.1f s)",
+                    throw new Stopped(String.format(Locale.ROOT, "no end after %.0f s of wall-clock time (at t=%.1f s)",
                             wallLimitS, timeMs / 1000.0));
                 }
             }
@@ -107,6 +109,10 @@ public final class SweepRun {
                 try (var run = new LockstepRun(world, null, e, agent, job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket)) {
                     run.runFor(seconds);
+                    if (run.agentFailure().isPresent()) {
+                        status = RunOutcome.AGENT_FAILURE;
+                        message = run.agentFailure().get();
+                    }
                 }
             } else {
                 BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
@@ -140,7 +146,7 @@ public final class SweepRun {
         }
         if (status.equals(RunOutcome.OK) && summary.duration() < seconds - world.controlStep() / 1000.0) {
             status = RunOutcome.EARLY_END;
-            message = String.format(java.util.Locale.ROOT, "ended at t=%.1f s of %.0f s", summary.duration(), seconds);
+            message = String.format(Locale.ROOT, "ended at t=%.1f s of %.0f s", summary.duration(), seconds);
         }
         return new Result(outcome(job, status, message, summary, end, battery.episodes(), seconds, wall),
                 summary.eventLog(), console.lines());
@@ -194,7 +200,7 @@ public final class SweepRun {
     /** The agent's console, keeping the last lines only (for failure reports). */
     private static final class ConsoleTail extends OutputStream {
         private final Deque<String> lines = new ArrayDeque<>();
-        private final java.io.ByteArrayOutputStream buf = new java.io.ByteArrayOutputStream();
+        private final ByteArrayOutputStream buf = new ByteArrayOutputStream();
 
         @Override
         public synchronized void write(int b) {

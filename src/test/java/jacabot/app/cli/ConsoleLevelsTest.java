@@ -6,18 +6,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Issue 17's calmer console: --quiet, the default and --verbose; repeated agent lines folded; warnings on mix-ups. */
+/** The console's levels: --quiet, the default and --verbose; repeated agent lines folded; warnings on mix-ups. */
 class ConsoleLevelsTest {
     private static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
     /** The thesis' agent as published: near a wall it prints "Obstacle: N", "Wait avoiding", "high left" in a loop. */
     private static final String PUBLISHED = ROOT.resolve("agents/src/main/asl/as-published/suspend-resume.asl").toString();
 
     private static String[] published(Path out, String... level) {
-        var args = new java.util.ArrayList<>(List.of("experiment", "suspend-resume", "--headless", "--duration", "40s",
+        var args = new ArrayList<>(List.of("experiment", "suspend-resume", "--headless", "--duration", "40s",
                 "--agent", PUBLISHED, "--out", out.toString()));
         args.addAll(List.of(level));
         String[] r = CliRun.run(args.toArray(new String[0]));

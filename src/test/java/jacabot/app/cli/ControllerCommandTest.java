@@ -7,8 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.experiments.link.LinkConfig;
 import jacabot.experiments.link.LinkEvent;
 import jacabot.experiments.link.MiddlewareLink;
+import jacabot.robot.link.LinkSecret;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -47,8 +49,8 @@ class ControllerCommandTest {
     @Test
     void theControllerConnectsToARunningMiddleware(@TempDir Path dir) throws Exception {
         Path secretFile = dir.resolve("secret");
-        var secret = jacabot.robot.link.LinkSecret.loadOrCreate(secretFile); // made 0600, as the launchers do
-        assertFalse(Files.getPosixFilePermissions(secretFile).contains(java.nio.file.attribute.PosixFilePermission.OTHERS_READ));
+        var secret = LinkSecret.loadOrCreate(secretFile); // made 0600, as the launchers do
+        assertFalse(Files.getPosixFilePermissions(secretFile).contains(PosixFilePermission.OTHERS_READ));
         try (var link = MiddlewareLink.open(LinkConfig.defaults().withPort(0).withLog(line -> { }).withSecret(secret))) {
             var result = run("controller", "--world", NAVIGATION, "--port", String.valueOf(link.port()), "--speed", "10",
                     "--seconds", "5", "--secret-file", secretFile.toString());

@@ -3,6 +3,7 @@ package jacabot.app.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Set;
 import org.junit.jupiter.api.Test;
 
 class JacabotCommandTest {
@@ -28,8 +29,8 @@ class JacabotCommandTest {
 
     @Test
     void aCommandLineNamingASubcommandBuildsThatOneAlone() {
-        assertEquals(java.util.Set.of("run"), JacabotCommand.commandLine("run", "x.mas2j").getSubcommands().keySet());
-        assertEquals(java.util.Set.of("sweep"), JacabotCommand.commandLine("--debug", "sweep", "all").getSubcommands().keySet());
+        assertEquals(Set.of("run"), JacabotCommand.commandLine("run", "x.mas2j").getSubcommands().keySet());
+        assertEquals(Set.of("sweep"), JacabotCommand.commandLine("--debug", "sweep", "all").getSubcommands().keySet());
         assertEquals(10, JacabotCommand.commandLine("help", "run").getSubcommands().size());
         assertEquals(10, JacabotCommand.commandLine("--help").getSubcommands().size());
     }

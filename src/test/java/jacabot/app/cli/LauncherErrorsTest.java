@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 16's launcher failures: each gives one line saying what was wrong and what to do, exit 2
+ * The launcher's failures (docs/reliability.md): each gives one line saying what was wrong and what to do, exit 2
  * for a user error and 1 for a run failure, no stack trace (docs/reliability.md).
  */
 class LauncherErrorsTest {

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 16: {@code jacabot experiment NAME --remote-controller} in one JVM and {@code jacabot
+ * Reliability (docs/reliability.md): {@code jacabot experiment NAME --remote-controller} in one JVM and {@code jacabot
  * controller --lockstep --event-log FILE} in another give the run of {@code jacabot experiment NAME
  * --headless}: the controller's event log equals the one-process run's link-log.txt byte for byte.
  */

@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.ArrayList;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class ConsoleLogTest {
@@ -81,7 +83,7 @@ class ConsoleLogTest {
 
     @Test
     void aLineStreamHandsOverWholeLinesHoweverTheyAreWritten() {
-        var got = new java.util.ArrayList<String>();
+        var got = new ArrayList<String>();
         var stream = ConsoleLog.lines(got::add);
         stream.print("[a] par");
         stream.print("tial ");
@@ -92,6 +94,6 @@ class ConsoleLogTest {
         stream.write('x');
         stream.write('\n');
         stream.print("unfinished");
-        assertEquals(java.util.List.of("[a] partial line", "two", "lines in one", "windows", "café ✓", "x"), got);
+        assertEquals(List.of("[a] partial line", "two", "lines in one", "windows", "café ✓", "x"), got);
     }
 }

@@ -1,12 +1,13 @@
 package jacabot.app.run;
 
 import jacabot.agent.runtime.LocalArch;
+import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.cartago.bridge.CAgentArch;
 
 /**
  * An agent architecture whose thread dies a while after the robot connected, as a runaway rule's
- * StackOverflowError kills it (issue 16, fault 3): for {@link ProcessFaultsTest}.
+ * StackOverflowError kills it (docs/reliability.md, fault 3): for {@link ProcessFaultsTest}.
  */
 public final class DyingArch extends CAgentArch {
     private int forwards;
@@ -18,7 +19,7 @@ public final class DyingArch extends CAgentArch {
 
     /** The robot's {@code forward} or {@code setSpeeds} goes out, and at the N-th the agent's next cycle dies: the robot is moving then. */
     @Override
-    public void act(jacabot.agent.semantics.ActionExec action, Agent agent) {
+    public void act(ActionExec action, Agent agent) {
         super.act(action, agent);
         String act = action.action().toString();
         if ((act.startsWith("forward") || act.startsWith("setSpeeds"))

@@ -4,22 +4,25 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.sweep.SweepJob;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.run.RunRecorder;
 import jacabot.sim.SimWorld;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * Issue 18: sweeps run lockstep over an in-process link ({@link LockstepRun#inMemory}) only because
+ * Sweeps run lockstep over an in-process link ({@link LockstepRun#inMemory}) only because
  * it is the same run as over the socket: the controller's and the agent side's event logs, and the
  * run's summary and recorded event log, equal the socket run's to the byte.
  */
@@ -42,8 +45,8 @@ class InMemoryLinkTest {
         SimWorld w = world(e);
         RunRecorder recorder = RunRecorder.attach(w, e.robot());
         var result = new LockstepRun(w, null, e, agent(e), w.seed(),
-                new PrintStream(java.io.OutputStream.nullOutputStream())).inMemory(inMemory).runFor(SECONDS);
-        var summary = recorder.summary(jacabot.app.sweep.SweepJob.AGENT);
+                new PrintStream(OutputStream.nullOutputStream())).inMemory(inMemory).runFor(SECONDS);
+        var summary = recorder.summary(SweepJob.AGENT);
         return new Run(result.eventLog(), result.steps(), summary.toJson(), summary.eventLog(), result.linkLog());
     }
 
@@ -71,8 +74,8 @@ class InMemoryLinkTest {
         Experiment e = Experiment.NAVIGATION;
         SimWorld w = world(e);
         var run = new LockstepRun(w, null, e, agent(e), w.seed(),
-                new PrintStream(java.io.OutputStream.nullOutputStream())).inMemory(true);
-        var fiveSeconds = new java.util.concurrent.CountDownLatch(1);
+                new PrintStream(OutputStream.nullOutputStream())).inMemory(true);
+        var fiveSeconds = new CountDownLatch(1);
         run.onStep(d -> {
             if (d.simTimeMs() >= 5000) {
                 fiveSeconds.countDown();

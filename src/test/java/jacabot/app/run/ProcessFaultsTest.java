@@ -6,10 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.experiments.link.LinkTestSupport;
+import jacabot.experiments.link.LinkEvent;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
+import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkSecret;
 import java.io.File;
+import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
@@ -19,6 +22,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -26,7 +30,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The thesis' two-process set-up with real processes: the agent platform is {@code jacabot run
- * obstacle-avoidance.mas2j} in a JVM of its own, the controller runs here. Its faults (issue 16):
+ * obstacle-avoidance.mas2j} in a JVM of its own, the controller runs here. Its faults (docs/reliability.md):
  * the agent JVM killed, the agent's thread dead; and the lockstep mode that used to deadlock at step 0.
  */
 class ProcessFaultsTest {
@@ -90,7 +94,7 @@ class ProcessFaultsTest {
     }
 
     /** Waits up to 120 s: a JVM starting on a loaded machine is slow. */
-    private static void waitLong(java.util.function.BooleanSupplier condition) throws InterruptedException {
+    private static void waitLong(BooleanSupplier condition) throws InterruptedException {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
         while (!condition.getAsBoolean() && System.nanoTime() < end) {
             Thread.sleep(20);
@@ -141,7 +145,7 @@ class ProcessFaultsTest {
             long delay = stopDelay(events, killedAt);
             System.out.println("ProcessFaultsTest: agent JVM killed at t=" + killedAt + " ms, wheels stopped " + delay
                     + " ms of simulated time later");
-            // issue 16: within 200 ms of simulated time; the socket's end stops it at the next control
+            // docs/reliability.md: within 200 ms of simulated time; the socket's end stops it at the next control
             // step, and failing that the fail-safe, which holds the world rather than overrun
             assertTrue(delay < 200, "wheels stopped " + delay + " ms of simulated time after the kill");
             Thread.sleep(200);
@@ -190,9 +194,9 @@ class ProcessFaultsTest {
     @Test
     void theControllerJvmKilledEndsTheRobotWithItsWorldAndTheAgentSideIsTold(@TempDir Path dir) throws Exception {
         Path secret = dir.resolve("secret");
-        var config = jacabot.experiments.link.LinkConfig.defaults().withPort(0).withSecret(LinkSecret.loadOrCreate(secret))
+        var config = LinkConfig.defaults().withPort(0).withSecret(LinkSecret.loadOrCreate(secret))
                 .withLog(line -> { });
-        try (var m = jacabot.experiments.link.MiddlewareLink.open(config)) {
+        try (var m = MiddlewareLink.open(config)) {
             String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
             Process controller = new ProcessBuilder(java, "-Xmx256m", "-cp", System.getProperty("java.class.path"),
                     "jacabot.app.cli.JacabotCommand", "controller", "--world", ROOT.resolve("worlds/navigation.json").toString(),
@@ -205,8 +209,8 @@ class ProcessFaultsTest {
                 long lastSeen = m.simTimeMs();
                 controller.destroyForcibly(); // SIGKILL: the world, and the robot in it, end with the process
                 long t0 = System.nanoTime();
-                var gone = (jacabot.experiments.link.LinkEvent.Disconnected) LinkTestSupport.await(m,
-                        e -> e instanceof jacabot.experiments.link.LinkEvent.Disconnected);
+                var gone = (LinkEvent.Disconnected) LinkTestSupport.await(m,
+                        e -> e instanceof LinkEvent.Disconnected);
                 long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
                 System.out.println("ProcessFaultsTest: controller JVM killed after t=" + lastSeen + " ms: the agent side told "
                         + ms + " ms later (" + gone.reason() + ")");
@@ -230,7 +234,7 @@ class ProcessFaultsTest {
             waitLong(() -> {
                 try {
                     return Files.readString(console).contains("t=  10.0 s");
-                } catch (java.io.IOException e) {
+                } catch (IOException e) {
                     return false;
                 }
             });

@@ -8,6 +8,7 @@ import jacabot.robot.Experiment;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimWorld;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
@@ -17,7 +18,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * Issue 16: the two-process lockstep set-up is the same run as the in-process one. The agent side
+ * Reliability (docs/reliability.md): the two-process lockstep set-up is the same run as the in-process one. The agent side
  * waits for a controller of its own world file ({@link LockstepRun#remoteController}), which the
  * test runs on its own {@code SimWorld}, as {@code jacabot controller --lockstep} does; both event
  * logs, the controller's and the agent side's, must equal the in-process run's line for line.
@@ -36,7 +37,7 @@ class TwoProcessReplayTest {
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "NAVIGATION"})
     void theTwoProcessLockstepRunIsTheInProcessRun(Experiment e) throws Exception {
-        PrintStream quiet = new PrintStream(java.io.OutputStream.nullOutputStream());
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         SimWorld w = world(e);
         var one = new LockstepRun(w, null, e, agent(e), w.seed(), quiet).runFor(SECONDS);
 

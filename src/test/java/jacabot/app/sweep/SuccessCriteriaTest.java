@@ -54,6 +54,25 @@ class SuccessCriteriaTest {
     }
 
     @Test
+    void otherDurationsScaleWhatIsARateAndShortRunsCarryACaveat() {
+        // deliveries: 2 per 10 minutes, at least 1; contact: 2 s per 10 minutes, never under 2 s
+        assertEquals(1, SuccessCriteria.minDeliveries(60));
+        assertEquals(2, SuccessCriteria.minDeliveries(600));
+        assertEquals(12, SuccessCriteria.minDeliveries(3600));
+        assertEquals(2.0, SuccessCriteria.maxContact(60));
+        assertEquals(12.0, SuccessCriteria.maxContact(3600));
+        var oneMinute = new SuccessCriteria.Figures(60, 0, 0, 1, 1, 0, false, 0, 0);
+        assertTrue(SuccessCriteria.judge(Experiment.NAVIGATION, oneMinute).success(), "one delivery in one minute");
+        var hour = new SuccessCriteria.Figures(3600, 0, 0, 3, 3, 0, false, 0, 0);
+        assertEquals("3 deliveries (< 12)", SuccessCriteria.judge(Experiment.NAVIGATION, hour).reason());
+        assertTrue(SuccessCriteria.caveat(60).orElseThrow().startsWith("runs of 60 s are judged by criteria made for 10 simulated minutes"));
+        assertTrue(SuccessCriteria.caveat(600).isEmpty());
+        // the report of a short sweep says so
+        var run = new RunOutcome(Experiment.NAVIGATION, "w", "agent", 1, RunOutcome.OK, true, "", 60, 1, oneMinute, 0, 0);
+        assertTrue(SweepReport.markdown(List.of(run), null).contains("**Note:** runs of 60 s are judged by criteria made for 10"));
+    }
+
+    @Test
     void anEpisodeBegunLateIsNotYetDue() {
         var done = new BatteryEpisodes.Episode(100, new Vec2(0, 0), 150, 170);
         var open = new BatteryEpisodes.Episode(300, new Vec2(0, 0), Double.NaN, Double.NaN);

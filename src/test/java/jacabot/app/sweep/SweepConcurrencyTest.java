@@ -7,6 +7,7 @@ import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.world.WorldSpec;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -31,7 +32,7 @@ class SweepConcurrencyTest {
         assertTrue(alone.eventLog().contains("world: "), "the log holds the scripted events: " + alone.eventLog());
 
         List<SweepJob> jobs = List.of(other, agent, baseline, agent);
-        var results = new java.util.ArrayList<SweepRun.Result>();
+        var results = new ArrayList<SweepRun.Result>();
         Sweep.Outcomes outcomes = new Sweep(3, SECONDS, 600).onResult(results::add).run(jobs);
         assertEquals(4, outcomes.runs().size());
         int same = 0;

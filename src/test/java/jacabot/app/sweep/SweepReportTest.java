@@ -39,7 +39,7 @@ class SweepReportTest {
     void theReportCountsSuccessesAndListsFailures() {
         String md = SweepReport.markdown(List.of(run("agent", 1, true, "", 0.5), run("agent", 2, true, "", 1.5),
                 run("baseline", 1, false, "crash: boom", 3)), null);
-        assertTrue(md.contains("| agent | 2 | 2 (100%) | 1.0 | 61% | 2 | 1 | 0 | 2 of 2 | 0 / 0 / 0 |"), md);
+        assertTrue(md.contains("| agent | 2 | 2 (100%) | 1.0 | 61% | 2 | 1 | 0 | 2 of 2 | 0 / 0 / 0 / 0 |"), md);
         assertTrue(md.contains("| baseline | 1 | 0 (0%) | 3.0 |"), md);
         assertTrue(md.contains("- baseline, w1, seed 1: crash: boom"), md);
     }

@@ -10,6 +10,7 @@ import jacabot.robot.Experiment;
 import jacabot.sim.world.AreaSpec;
 import jacabot.sim.world.BoxSpec;
 import jacabot.sim.world.CylinderSpec;
+import jacabot.sim.world.EventSpec;
 import jacabot.sim.world.RobotSpec;
 import jacabot.sim.world.WorldSpec;
 import org.junit.jupiter.api.Test;
@@ -76,7 +77,7 @@ class WorldGeneratorTest {
             fewest = Math.min(fewest, (int) perSquareMetre);
             most = Math.max(most, (int) perSquareMetre);
             faults += w.events().size();
-            nearFaults += (int) w.events().stream().filter(ev -> ev.trigger() instanceof jacabot.sim.world.EventSpec.Near).count();
+            nearFaults += (int) w.events().stream().filter(ev -> ev.trigger() instanceof EventSpec.Near).count();
         }
         assertTrue(most >= 2 * Math.max(1, fewest), "sparse to dense: " + fewest + ".." + most + " boxes per m²");
         assertTrue(faults > 10 && nearFaults > 0, faults + " faults, " + nearFaults + " during a grip");

@@ -29,6 +29,8 @@ import java.io.ObjectOutputStream;
 import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.Socket;
+import java.net.SocketException;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
@@ -195,14 +197,14 @@ class LinkGuardsTest {
                 var out = frames(s);
                 SensorInfo big = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[902]); // 30x30 image, 3.6 kB
                 SensorInfo[] many = new SensorInfo[10];
-                java.util.Arrays.fill(many, 0, 10, null);
+                Arrays.fill(many, 0, 10, null);
                 for (int i = 0; i < 10; i++) {
                     many[i] = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[902 + i]); // distinct objects
                 }
                 try {
                     RawFrames.batch(out, 0, big);
                     RawFrames.batch(out, 1, many); // each object is allowed, the batch is not
-                } catch (java.net.SocketException e) {
+                } catch (SocketException e) {
                     // the middleware hung up first
                 }
                 var gone = (LinkEvent.Disconnected) await(m, e -> e instanceof LinkEvent.Disconnected);

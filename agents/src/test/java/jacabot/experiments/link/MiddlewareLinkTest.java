@@ -11,8 +11,10 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.ControllerConfig;
+import jacabot.robot.RobotController;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.Handshake;
+import jacabot.robot.link.LinkClock;
 import jacabot.robot.link.LinkSecret;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfo;
@@ -29,6 +31,11 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Test;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The middleware's end of the link, against the real controller and against hostile clients. */
 class MiddlewareLinkTest {
@@ -158,14 +165,14 @@ class MiddlewareLinkTest {
         try (var m = MiddlewareLink.open(linkConfig())) {
             try (Socket s = handshake(m, Protocol.VERSION)) {
                 await(m, e -> e instanceof LinkEvent.Connected);
-                writeBatchWith(s, new java.util.Date(0));
+                writeBatchWith(s, new Date(0));
                 expectClosedWith(m, "rejected by the deserialization filter: class java.util.Date is not allowed");
             }
             try (Socket s = handshake(m, Protocol.VERSION)) {
                 await(m, e -> e instanceof LinkEvent.Connected);
                 try {
                     writeBatchWith(s, new SensorInfo(SensorKind.CAMERA_IMAGE.id(), new int[10_000_000]));
-                } catch (java.net.SocketException e) {
+                } catch (SocketException e) {
                     // the middleware hung up in the middle of the 40 MB: as it should
                 }
                 expectClosedWith(m, "array of 10000000 elements exceeds the limit");
@@ -206,7 +213,7 @@ class MiddlewareLinkTest {
             }
             // still serving: a real controller gets through
             var cc = ControllerConfig.defaults().withAddress("127.0.0.1", m.port()).withLog(log::add).withSecret(SECRET);
-            try (var controller = new jacabot.robot.RobotController(world("obstacle-avoidance"), cc)) {
+            try (var controller = new RobotController(world("obstacle-avoidance"), cc)) {
                 controller.start();
                 var c = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
                 assertEquals("mybot", c.robotName());

@@ -17,7 +17,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 16, attack 1: from a second local process without the secret, 10,000 attempts to take the
+ * Reliability, attack 1 (docs/reliability.md): from a second local process without the secret, 10,000 attempts to take the
  * session over; none succeeds and the legitimate run is not disturbed. Bounded: the intruder stops
  * after 120 s whatever it has done (the figure it prints goes into docs/reliability.md).
  */

@@ -1,12 +1,13 @@
 package jacabot.robot.baseline;
 
-import jacabot.sim.geom.Pose;
-import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.Camera;
+import jacabot.sim.device.Compass;
 import jacabot.sim.device.DistanceSensor;
 import jacabot.sim.device.Gps;
 import jacabot.sim.device.Gripper;
 import jacabot.sim.device.Section;
+import jacabot.sim.geom.Pose;
+import jacabot.sim.geom.Rgb;
 import jacabot.sim.robot.Robot;
 
 /**
@@ -21,7 +22,7 @@ final class KheperaIo {
     final DistanceSensor left, frontLeft, front, frontRight, right;
     final Camera camera;
     final Gps gps;
-    final jacabot.sim.device.Compass compass;
+    final Compass compass;
     final Gripper gripper;
     final Robot robot;
 

@@ -1,5 +1,6 @@
 package jacabot.robot.run;
 
+import com.fasterxml.jackson.annotation.JsonIgnoreProperties;
 import com.fasterxml.jackson.annotation.JsonPropertyOrder;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -43,6 +44,7 @@ import java.util.Locale;
  * @param recharged                  energy gained over the run (charger, or a supervisor's top-up)
  * @param events                     the event log, one line per event (see {@link RunRecorder})
  */
+@JsonIgnoreProperties(ignoreUnknown = true) // a run's summary.json also names its world and agent files
 @JsonPropertyOrder({"world", "robot", "controller", "seed", "duration", "distance", "coverage", "cellSize",
         "cellsVisited", "cells", "contactTime", "longestContact", "picks", "pickTimes", "deliveries", "deliveryTimes",
         "lost", "storageEntriesWithCylinder", "storageEntriesEmpty", "batteryMin", "batteryEmptied", "chargerVisits",
@@ -103,7 +105,8 @@ public record RunSummary(String world, String robot, String controller, long see
         b.append(f("contact: %.2f s in all, longest %.2f s%n", contactTime, longestContact));
         b.append(f("cylinders: %d picked%s, %d delivered%s, %d lost%n", picks, times(pickTimes), deliveries,
                 times(deliveryTimes), lost));
-        b.append(f("storage area: %d entries with a cylinder, %d without%n", storageEntriesWithCylinder, storageEntriesEmpty));
+        b.append(f("storage area: %d entr%s with a cylinder, %d without%n", storageEntriesWithCylinder,
+                storageEntriesWithCylinder == 1 ? "y" : "ies", storageEntriesEmpty));
         if (batteryMin != null) {
             b.append(f("battery: lowest %.1f J, %s; %d charger visit%s, %.1f J gained%n", batteryMin,
                     batteryEmptied ? "EMPTIED" : "never empty", chargerVisits, chargerVisits == 1 ? "" : "s", recharged));

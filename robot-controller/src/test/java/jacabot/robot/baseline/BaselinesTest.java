@@ -1,21 +1,20 @@
 package jacabot.robot.baseline;
 import jacabot.robot.Experiment;
-
-import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertTrue;
-
 import jacabot.robot.baseline.BaselineRunner.BaselineRun;
 import jacabot.robot.run.RunRecorder;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.WorldListener;
+import jacabot.sim.geom.Pose;
 import jacabot.sim.io.WorldFileException;
 import java.nio.file.Path;
 import java.util.List;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.junit.jupiter.api.Test;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Each baseline achieves its experiment's task in its world file, with fixed seeds, in bounded simulated time. */
 class BaselinesTest {
@@ -70,7 +69,7 @@ class BaselinesTest {
         RunSummary s = rec.summary(BaselineRunner.CONTROLLER);
         assertEquals(1, s.lost(), s.eventLog());
         assertTrue(s.eventLog().contains("controller: Cylinder has fallen. Anybody retrieve it."), s.eventLog());
-        List<jacabot.sim.geom.Pose> path = rec.trajectory();
+        List<Pose> path = rec.trajectory();
         assertEquals(path.get(path.size() - 1), path.get(path.size() - 10), "it stopped");
     }
 

@@ -9,7 +9,7 @@ import java.util.function.LongSupplier;
  *
  * <p>Why: in lockstep the two ends take turns, each waiting some tens of microseconds for the
  * other. A thread blocked in {@code read} lets its core go idle, and on a virtual machine waking an
- * idle core costs about as much as the turn itself ({@code docs/performance.md} §3c). A thread
+ * idle core costs about as much as the turn itself ({@code docs/performance-history.md} §3c). A thread
  * that spins keeps its core awake and sees the bytes at once.
  *
  * <p>Why adaptive: spinning only pays while the other end has a core of its own. On a loaded

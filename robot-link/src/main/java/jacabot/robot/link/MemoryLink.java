@@ -5,7 +5,7 @@ import java.io.InputStream;
 import java.io.OutputStream;
 
 /**
- * The link between a controller and a middleware of one JVM without a socket (issue 18: sweeps).
+ * The link between a controller and a middleware of one JVM without a socket (sweeps).
  * The frames and their codecs stay the protocol's: the controller writes its sensor data stream
  * with {@link SensorDataWriter} and the middleware reads it back with {@link SensorDataReader} and
  * its filter; commands go through {@link CommandWriter} and {@link CommandReader}. Only the bytes'

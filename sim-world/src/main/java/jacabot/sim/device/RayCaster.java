@@ -1,6 +1,7 @@
 package jacabot.sim.device;
 
 import jacabot.sim.geom.Vec2;
+import java.util.ArrayList;
 import java.util.List;
 
 /** Casts rays on the floor plane for one robot's sensors, ignoring the robot and what it carries. */
@@ -14,7 +15,7 @@ public interface RayCaster {
      * once which objects each ray can reach), never change the result.
      */
     default List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange) {
-        var all = new java.util.ArrayList<List<RayHit>>(bearingsDeg.length);
+        var all = new ArrayList<List<RayHit>>(bearingsDeg.length);
         for (double b : bearingsDeg) {
             all.add(castAll(origin, b, maxRange));
         }

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Set;
+import java.util.TreeSet;
 
 /** A JSON value and its path, with typed accessors that fail with the path. Internal. */
 final class JsonCursor {
@@ -59,7 +60,7 @@ final class JsonCursor {
         for (Iterator<String> it = json.fieldNames(); it.hasNext(); ) {
             String f = it.next();
             if (!known.contains(f)) {
-                throw new Failure(path + "." + f, "unknown field (known: " + String.join(", ", new java.util.TreeSet<>(known)) + ")");
+                throw new Failure(path + "." + f, "unknown field (known: " + String.join(", ", new TreeSet<>(known)) + ")");
             }
         }
         return this;

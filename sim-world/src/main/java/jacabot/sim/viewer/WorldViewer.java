@@ -1,18 +1,21 @@
 package jacabot.sim.viewer;
 
-import jacabot.sim.engine.ObjectKind;
-import jacabot.sim.engine.ObjectState;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
-import jacabot.sim.geom.Vec2;
+import jacabot.sim.engine.ObjectKind;
+import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
+import jacabot.sim.geom.Vec2;
 import java.awt.BorderLayout;
+import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Graphics;
+import java.awt.Font;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.util.Locale;
+import java.util.function.Supplier;
 import javax.swing.JButton;
 import javax.swing.JFrame;
 import javax.swing.JPanel;
@@ -29,7 +32,7 @@ public final class WorldViewer extends JPanel {
     private static final long serialVersionUID = 1L;
 
     private final transient SimRunner runner;
-    private final transient java.util.function.Supplier<String> note;
+    private final transient Supplier<String> note;
     private transient WorldSnapshot snapshot;
     private String dragged;
 
@@ -38,7 +41,7 @@ public final class WorldViewer extends JPanel {
     }
 
     /** @param note more words for the status line, e.g. how far the run lags ("" for none) */
-    public WorldViewer(SimRunner runner, java.util.function.Supplier<String> note) {
+    public WorldViewer(SimRunner runner, Supplier<String> note) {
         this.runner = runner;
         this.note = note;
         this.snapshot = runner.world().snapshot();
@@ -104,8 +107,8 @@ public final class WorldViewer extends JPanel {
         if (more != null && !more.isEmpty()) {
             // in red on the footer's first row, right of the camera strip: seen, and never cut off the status line
             Graphics2D g2 = (Graphics2D) g;
-            g2.setColor(new java.awt.Color(255, 90, 80));
-            var font = new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.BOLD, 12);
+            g2.setColor(new Color(255, 90, 80));
+            var font = new Font(Font.SANS_SERIF, Font.BOLD, 12);
             int room = getWidth() - 290;
             if (g2.getFontMetrics(font).stringWidth(more) > room) {
                 font = font.deriveFont(10f);
@@ -122,7 +125,7 @@ public final class WorldViewer extends JPanel {
     }
 
     /** Opens a window on the runner's world, {@code note} added to its status line, and starts the runner. */
-    public static JFrame open(SimRunner runner, java.util.function.Supplier<String> note) {
+    public static JFrame open(SimRunner runner, Supplier<String> note) {
         WorldViewer viewer = new WorldViewer(runner, note);
         JFrame frame = new JFrame("jacabot · " + runner.world().name());
         JPanel buttons = new JPanel();

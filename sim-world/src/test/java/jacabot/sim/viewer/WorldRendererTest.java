@@ -5,11 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.sim.SimWorld;
 import jacabot.sim.TestWorlds;
-import jacabot.sim.geom.Vec2;
 import jacabot.sim.engine.WorldSnapshot;
+import jacabot.sim.geom.Vec2;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -63,7 +64,7 @@ class WorldRendererTest {
         Path png = dir.resolve("world.png");
         PngRenderer.write(w, png, 400, 460);
         assertTrue(Files.size(png) > 1000);
-        BufferedImage img = javax.imageio.ImageIO.read(png.toFile());
+        BufferedImage img = ImageIO.read(png.toFile());
         WorldRenderer.View v = WorldRenderer.view(w.snapshot(), 400, 460);
         int[] trail = rgb(img, v.toScreen(-0.19, 0)); // behind the robot, on its way
         assertEquals(255, trail[0]);

@@ -1,0 +1,79 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * An agent that fails at its job ends its experiment at once with exit 1 and one line saying why,
+ * at every console level (FailureWatch): an action that does not exist, no plan for its first
+ * goal, a failure storm. The run's folder is still written.
+ */
+class FailingAgentExitTest {
+    /** The initial phase's own recovery: an unknown action fails !start, whose failure plan stops the system. */
+    static final String UNKNOWN_ACTION = """
+            !start.
+            +!start <- setSpeed(1, 2).
+            -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
+            """;
+    static final String NO_PLAN = """
+            !start.
+            +!other <- stop.
+            """;
+    /** The failure plan re-posts the goal at once: it fails every reasoning cycle. */
+    static final String STORM = """
+            !start.
+            +!start <- !go.
+            +!go <- ?missing(X); !go.
+            -!go[error_msg(M)] <- .print(M); !go.
+            """;
+
+    private static void assertFailsWith(Path dir, String agent, String why) throws Exception {
+        Path file = dir.resolve("agent.asl");
+        Files.writeString(file, agent);
+        for (String level : List.of("--quiet", "")) {
+            Path out = dir.resolve("out" + level);
+            var args = new ArrayList<>(List.of("experiment", "obstacle-avoidance", "--headless", "--duration", "5m",
+                    "--agent", file.toString(), "--out", out.toString()));
+            if (!level.isEmpty()) {
+                args.add(level);
+            }
+            String[] r = CliRun.run(args.toArray(new String[0]));
+            assertEquals("1", r[0], level + ": " + r[1] + r[2]);
+            List<String> errors = r[2].lines().filter(l -> l.startsWith("error: ")).toList();
+            assertEquals(1, errors.size(), level + ": one line saying why:\n" + r[2]);
+            assertTrue(errors.get(0).contains(why), errors.get(0));
+            assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
+            // ended at once, not after its five minutes, and what it made is written
+            String summary = Files.readString(out.resolve("summary.txt"));
+            var simulated = Pattern.compile(", ([0-9.]+) s simulated").matcher(summary);
+            assertTrue(simulated.find() && Double.parseDouble(simulated.group(1)) < 2, summary);
+        }
+    }
+
+    @Test
+    void anActionThatDoesNotExist(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, UNKNOWN_ACTION, "the agent stopped the system (.stopMAS) at t=0.0 s, before the run's end, "
+                + "after goal !start failed (error action_failed, error_msg \"no artifact in workspace main has operation setSpeed/2\", "
+                + "at agent.asl:2)");
+    }
+
+    @Test
+    void noPlanForTheFirstGoal(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, NO_PLAN, "no relevant plan for the agent's initial goal !start");
+    }
+
+    @Test
+    void aFailureStorm(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, STORM, "failure storm at t=0.0 s: goal !go failed 1000 times within one simulated second "
+                + "(error test_goal_failed, error_msg \"Failed to test 'missing(X)'\", at agent.asl:3)");
+    }
+}
