@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.experiments.link.LinkTestSupport;
+import jacabot.experiments.link.LinkConfig;
 import jacabot.experiments.link.LinkEvent;
+import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.Command;
