@@ -21,7 +21,7 @@ mock_operation(_, ok).
     <- +location(0.1, 0, 0.2); +orientation(90); +battery(470);
        !!perceive(lowBattery);
        ?charger(Cx, Cz);
-       !until(mock_called(setUpTargetPoint(Cx, 0, Cz)), 3000);
+       !until(mock_called(setUpTargetPoint(Cx, 0, Cz)), 10000);
        !assert_true(charging);
        !assert_true(mock_called(mark));                              // the point to come back to
        !assert_true(mock_called(setUpTargetPoint(Cx, 0, Cz)));       // the charger is the target
@@ -31,14 +31,15 @@ mock_operation(_, ok).
 
 @[test]
 +!test_charged_robot_returns_to_the_marked_point_and_resumes
-    <- !!perceive(targetReached);              // at the charger
-       !until(atCharger, 3000);
+    <- !until(.intend(reachCharger), 10000);
+       !!perceive(targetReached);                                    // at the charger
+       !until(.intend(waitCharged), 10000);
        !assert_true(mock_called(stopAcquireDistance));
        -+battery(950); !!perceive(charged);
-       !until(mock_called(setUpTargetPoint(0.1, 0, 0.2)), 3000);
-       !assert_true(mock_called(setUpTargetPoint(0.1, 0, 0.2)));   // back to where the battery went low
+       !until(.intend(reachMarked), 10000);
+       !assert_true(mock_called(setUpTargetPoint(0.1, 0, 0.2)));     // back to where the battery went low
        -targetReached; !!perceive(targetReached);
-       !until(not charging, 5000);
+       !until(not charging, 10000);
        !assert_false(charging).
 
 // a percept, in an intention of its own (as the architecture would add it)

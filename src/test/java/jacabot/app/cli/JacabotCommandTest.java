@@ -22,7 +22,7 @@ class JacabotCommandTest {
     void helpListsTheSubcommands() {
         var result = run("--help");
         assertEquals("0", result[0]);
-        for (String sub : new String[] {"run", "experiment", "compare", "bench", "controller", "world", "sweep", "replay", "plot", "help"}) {
+        for (String sub : new String[] {"run", "experiment", "compare", "bench", "controller", "world", "sweep", "replay", "plot", "test", "help"}) {
             assertTrue(result[1].contains("\n  " + sub + " "), sub + " missing from:\n" + result[1]);
         }
     }
@@ -31,8 +31,8 @@ class JacabotCommandTest {
     void aCommandLineNamingASubcommandBuildsThatOneAlone() {
         assertEquals(Set.of("run"), JacabotCommand.commandLine("run", "x.mas2j").getSubcommands().keySet());
         assertEquals(Set.of("sweep"), JacabotCommand.commandLine("--debug", "sweep", "all").getSubcommands().keySet());
-        assertEquals(10, JacabotCommand.commandLine("help", "run").getSubcommands().size());
-        assertEquals(10, JacabotCommand.commandLine("--help").getSubcommands().size());
+        assertEquals(11, JacabotCommand.commandLine("help", "run").getSubcommands().size());
+        assertEquals(11, JacabotCommand.commandLine("--help").getSubcommands().size());
     }
 
     @Test
