@@ -68,8 +68,11 @@ class ExperimentAgentsTest {
         return connected(ASL.resolve(experiment + ".asl"));
     }
 
-    private static TestAgent connected(Path agent) {
+    private static TestAgent connected(Path agent, String... world) {
         var robot = TestAgent.fromFile("robot", agent);
+        for (String landmark : world) { // what the launcher adds from the world file
+            robot.percept(landmark);
+        }
         robot.outputs = (ActionExec a, Unifier u) -> {
             if (a.action().functor().equals("makeArtifact") && a.action().arg(3) instanceof Var id) {
                 u.bind(id, new ObjectTerm("cobj_1"));
@@ -174,5 +177,30 @@ class ExperimentAgentsTest {
         int before = robot.actions.size();
         robot.advance(20_000, 500);
         assertTrue(robot.actions.size() > before, "random motion resumes: " + robot.actionNames());
+    }
+
+    /**
+     * Tidy-up, composed of suspend-resume's skills: once every cylinder is stored (delivery's
+     * stored(N) reaching the world's cylinders(N)) the robot parks on the charger with the task
+     * suspended for good (recharge's !goToCharger, "charging" kept); before that it does not.
+     */
+    @Test
+    void tidyUpParksOnTheChargerOnceEveryCylinderIsStored() {
+        var robot = connected(ASL.resolve("tidy-up.asl"), "storagePoint(0.4,-0.4)", "storageRadius(0.06)", "arena(1,1)",
+                "charger(-0.4,0.4)", "cylinders(2)");
+        robot.percept("location(0.1,0,0.1)").percept("orientation(0)");
+        robot.percept("~delivered").cycles(20);
+        robot.unpercept("~delivered").cycles(50);
+        assertTrue(!robot.printed().toString().contains("parking"), "one of two stored: no parking yet " + robot.printed());
+        robot.percept("stored(2)").percept("~delivered").cycles(20);
+        robot.unpercept("~delivered").cycles(50);
+        robot.advance(100, 200);
+        assertTrue(robot.printed().toString().contains("All 2 cylinders stored: parking on the charger"), robot.printed().toString());
+        assertTrue(robot.believes("charging"));
+        assertTrue(robot.actionNames().contains("setUpTargetPoint(-0.4,0,0.4)"), "heads for the charger: " + robot.actionNames());
+        robot.signal("targetReached");
+        robot.advance(100, 200);
+        assertTrue(robot.printed().toString().contains("Parked on the charger"), robot.printed().toString());
+        assertTrue(robot.believes("atCharger") && robot.believes("charging"), "stays there, the task suspended");
     }
 }

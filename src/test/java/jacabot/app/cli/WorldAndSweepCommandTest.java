@@ -91,6 +91,21 @@ class WorldAndSweepCommandTest {
         assertTrue(report.contains("no cylinder picked"), "3 s is too short to pick: " + report);
     }
 
+    /** Tidy-up: generated worlds of chosen generator seeds (--world-seeds), the agent only (it has no baseline). */
+    @Test
+    void sweepTidyUpOnChosenGeneratorSeeds(@TempDir Path dir) throws Exception {
+        var r = CliRun.run("sweep", "tidy-up", "--world-seeds", "51,52", "--seeds", "1", "--duration", "2s",
+                "--out", dir.toString(), "--no-progress");
+        assertEquals("0", r[0], r[2]);
+        var rows = Files.readAllLines(dir.resolve("runs.csv"));
+        assertEquals(3, rows.size(), rows.toString()); // the header, the agent on each world; no baseline
+        assertTrue(rows.get(1).startsWith("tidy-up,tidy-up-gen-51,agent,") && rows.get(2).startsWith("tidy-up,tidy-up-gen-52,agent,"),
+                rows.toString());
+        assertTrue(rows.get(1).contains("cylinders in the storage area") && rows.get(1).contains("not parked on the charger"), rows.get(1));
+        assertEquals("2", CliRun.run("sweep", "tidy-up", "--world-seeds", "51", "--generate", "3")[0]);
+        assertEquals("2", CliRun.run("experiment", "tidy-up", "--baseline", "--duration", "1s")[0]);
+    }
+
     @Test
     void sweepRunsTheAgentGivenWithAgent(@TempDir Path dir) throws Exception {
         Path worlds = dir.resolve("worlds");
