@@ -44,11 +44,15 @@ public final class DebugConsole {
     private static void read(Debugger d, InputStream in, PrintStream out) {
         var lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8));
         try {
-            String line;
-            while ((line = lines.readLine()) != null) {
+            while (true) {
+                d.awaitHalt(); // a command is read at a halt only: typed (or piped) ahead, it waits for one
+                String line = lines.readLine();
+                if (line == null) {
+                    break;
+                }
                 command(d, line.trim(), out);
             }
-        } catch (IOException e) {
+        } catch (IOException | InterruptedException e) {
             // the console went away: as at its end
         }
         d.detach();

@@ -54,6 +54,14 @@ public final class Debugger {
         return halted;
     }
 
+    /** Waits until the run halts. {@return where} */
+    public synchronized Halt awaitHalt() throws InterruptedException {
+        while (halted == null) {
+            wait();
+        }
+        return halted;
+    }
+
     /** Continues a halted run. */
     public synchronized void resume() {
         stepping = false;
@@ -125,11 +133,12 @@ public final class Debugger {
         }
         Halt h = new Halt(mind.timeMs(), reason, mind);
         synchronized (this) {
-            halted = h;
             stepping = false;
         }
-        listeners.forEach(l -> l.accept(h));
+        listeners.forEach(l -> l.accept(h)); // before the halt is seen: what they print comes first
         synchronized (this) {
+            halted = h;
+            notifyAll();
             while (halted == h && !stopped) {
                 try {
                     wait();
