@@ -77,6 +77,7 @@ public final class Inspector implements AutoCloseable {
         context("/api/path", ex -> withHistory(ex, (h, t) -> h.pathUpTo(t)));
         context("/api/selections", ex -> withHistory(ex, (h, t) -> h.selectionsUpTo(t, SELECTIONS)));
         context("/api/debug", this::debug);
+        context("/api/failures", ex -> sendJson(ex, historyOf(ex).map(MindHistory::failures).orElse(Map.of())));
         context("/api/stream", this::stream);
         context("/plots/", this::plot);
         server.start();
@@ -380,7 +381,7 @@ public final class Inspector implements AutoCloseable {
                         seen.put(name, v);
                         long t = latest.mind().timeMs();
                         var push = Map.of("agent", name, "frame", latest, "range", h.range(), "selections",
-                                h.selectionsUpTo(t, SELECTIONS));
+                                h.selectionsUpTo(t, SELECTIONS), "failures", h.failures().get("count"));
                         out.write(("event: frame\ndata: " + JSON.writeValueAsString(push) + "\n\n").getBytes(StandardCharsets.UTF_8));
                         sent = true;
                     }

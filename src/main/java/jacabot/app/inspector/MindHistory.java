@@ -41,6 +41,9 @@ public final class MindHistory {
     private long version;
     private float[] path = new float[3 * 1024]; // t (s), x, z
     private int pathSize;
+    /** Failed goals seen: the plans selected for {@code -!goal} events (with error, error_msg, code), the last ones kept. */
+    private final ArrayDeque<MindState.Selection> failures = new ArrayDeque<>();
+    private long failureCount;
 
     public MindHistory(String agent, int capacity) {
         this.agent = agent;
@@ -64,6 +67,7 @@ public final class MindHistory {
                 selections.removeFirst();
             }
             selections.addLast(s);
+            noteFailure(s);
         }
         if (robot != null) {
             addToPath(mind.timeMs(), robot.x(), robot.z());
@@ -79,6 +83,23 @@ public final class MindHistory {
             version++;
             notifyAll();
         }
+    }
+
+    /** Counts a selection for a failed goal ({@code -!goal} event), keeping the last ones. */
+    public synchronized void noteFailure(MindState.Selection s) {
+        if (!s.event().startsWith("-!")) {
+            return;
+        }
+        failureCount++;
+        if (failures.size() >= capacity) {
+            failures.removeFirst();
+        }
+        failures.addLast(s);
+    }
+
+    /** {@return the failures counted and the last ones, for the failures panel} */
+    public synchronized java.util.Map<String, Object> failures() {
+        return java.util.Map.of("count", failureCount, "recent", new ArrayList<>(failures));
     }
 
     /** Adds a point to the robot's path, at most one per {@link #PATH_EVERY_MS}. */

@@ -92,6 +92,10 @@ public final class StepArchive implements MindArchive {
                 first = first < 0 ? t : first;
                 last = t;
                 path.point(t, number(line, "\"x\":", body), number(line, "\"z\":", body));
+                if (line.contains("\"event\":\"-!")) { // a failed goal: read the line whole for its selections
+                    var mind = StepLog.parse(line).mind();
+                    mind.selections().forEach(path::failure);
+                }
                 step++;
             }
             if (first >= 0) {
@@ -108,7 +112,17 @@ public final class StepArchive implements MindArchive {
      */
     public static StepArchive show(jacabot.app.inspector.Inspector inspector, Path dirOrFile) throws IOException {
         MindHistory h = inspector.add("robot");
-        StepArchive archive = open(dirOrFile, h::addToPath);
+        StepArchive archive = open(dirOrFile, new PathSink() {
+            @Override
+            public void point(long timeMs, double x, double z) {
+                h.addToPath(timeMs, x, z);
+            }
+
+            @Override
+            public void failure(MindState.Selection s) {
+                h.noteFailure(s);
+            }
+        });
         h.archive(archive);
         inspector.world(archive.header().start());
         inspector.showPlots(Files.isDirectory(dirOrFile) ? dirOrFile : dirOrFile.toAbsolutePath().getParent());
@@ -128,9 +142,13 @@ public final class StepArchive implements MindArchive {
         return Double.parseDouble(line.substring(start, end));
     }
 
-    /** Receives a run's path, point by point. */
+    /** Receives a run's path, point by point, and its failed goals. */
     public interface PathSink {
         void point(long timeMs, double x, double z);
+
+        /** A plan selected for a {@code -!goal} event (and others of its step, which it may ignore). */
+        default void failure(MindState.Selection s) {
+        }
     }
 
     /** Adds a member of steps now on disk (the writer's {@link StepLog.Writer#onChunk}). */

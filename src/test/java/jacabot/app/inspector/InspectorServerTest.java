@@ -46,6 +46,10 @@ class InspectorServerTest {
             String history = get(client, inspector.url("api/history?agent=robot"));
             assertTrue(history.contains("\"plan\":\"@p1 +!go : at(X)\""), history);
             assertTrue(get(client, inspector.url("api/plans")).contains("+!go <- move."));
+            h.record(mind(2000, "at(3)", List.of(new MindState.Selection(2000, 200, 1,
+                    "-!go[code(move),error(action_failed),error_msg(\"blocked\")]", "@p2 -!go", "{}"))), null, List.of());
+            String failures = get(client, inspector.url("api/failures?agent=robot"));
+            assertTrue(failures.contains("\"count\":1") && failures.contains("error_msg"), failures);
             assertEquals(404, status(client, inspector.url("api/state?agent=nobody")));
             assertEquals(400, status(client, inspector.url("api/state?agent=robot&frame=x")));
 
@@ -61,9 +65,12 @@ class InspectorServerTest {
             var conn = (java.net.HttpURLConnection) URI.create(inspector.url("api/stream")).toURL().openConnection();
             conn.setReadTimeout(10_000);
             try (var in = new BufferedReader(new InputStreamReader(conn.getInputStream(), StandardCharsets.UTF_8))) {
+                assertEquals("event: debug", in.readLine(), "first the debugger's state (none here)");
+                assertTrue(in.readLine().contains("\"available\":false"));
+                assertEquals("", in.readLine());
                 assertEquals("event: frame", in.readLine());
                 String data = in.readLine();
-                assertTrue(data.startsWith("data: ") && data.contains("at(2)"), data);
+                assertTrue(data.startsWith("data: ") && data.contains("at(3)") && data.contains("\"failures\":1"), data);
             } finally {
                 conn.disconnect();
             }

@@ -18,7 +18,19 @@ class StepArchiveTest {
     void anyInstantOfATenMinuteRunFromItsMember(@TempDir Path dir) throws Exception {
         SyntheticRun.write(dir, 600);
         var history = new MindHistory("robot", 10);
-        StepArchive a = StepArchive.open(dir, history::addToPath);
+        StepArchive a = StepArchive.open(dir, new StepArchive.PathSink() {
+            @Override
+            public void point(long timeMs, double x, double z) {
+                history.addToPath(timeMs, x, z);
+            }
+
+            @Override
+            public void failure(jacabot.app.inspector.MindState.Selection s) {
+                history.noteFailure(s);
+            }
+        });
+        assertEquals(10L, history.failures().get("count"), "a failed goal a minute, counted");
+        assertTrue(history.failures().toString().contains("error_msg(\"no plan\")"), history.failures().toString());
         assertEquals(40, a.firstTimeMs());
         assertEquals(600_000, a.lastTimeMs());
         for (long t : new long[] {40, 41, 3_999, 4_000, 4_040, 123_440, 599_960, 600_000, 700_000}) {
@@ -32,7 +44,7 @@ class StepArchiveTest {
             assertTrue(f.robot().objects().size() > 0, "the movable objects are placed");
         }
         var sel = a.selectionsUpTo(123_440, 60);
-        assertEquals("+!tick(24)", sel.get(sel.size() - 1).event(), sel.toString());
+        assertTrue(sel.get(sel.size() - 1).event().startsWith("-!tick(24)["), sel.toString());
         // the path: one point per 100 ms of the whole run
         var path = history.pathUpTo(600_000);
         assertTrue(path.size() >= 4_900, "path points: " + path.size());

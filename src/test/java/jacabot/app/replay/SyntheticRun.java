@@ -9,7 +9,7 @@ import java.util.List;
 /**
  * A recorded run made up for tests, long and cheap: a step log of {@code seconds} of 40 ms steps
  * in the navigation world, the robot on a known path ({@link #x}, {@link #z}), a belief
- * {@code second(S)} changing every second and a plan selected every 5 s.
+ * {@code second(S)} changing every second, a plan selected every 5 s and a failed goal every minute.
  */
 public final class SyntheticRun {
     static final Path ROOT = Path.of(System.getProperty("jacabot.rootDir", "."));
@@ -36,7 +36,10 @@ public final class SyntheticRun {
         try (var log = new StepLog.Writer(dir.resolve(StepLog.FILE), header)) {
             for (long t = 40; t <= total; t += 40) {
                 var beliefs = List.of(new MindState.Belief("second(" + t / 1000 + ")", List.of("self"), List.of()));
-                List<MindState.Selection> sel = t % 5000 == 0
+                List<MindState.Selection> sel = t % 60_000 == 0
+                        ? List.of(new MindState.Selection(t, t / 40, 1, "-!tick(" + t / 5000
+                                + ")[code(go),error(no_applicable),error_msg(\"no plan\")]", "@giveUp -!tick(N)", "{N=1}"))
+                        : t % 5000 == 0
                         ? List.of(new MindState.Selection(t, t / 40, 1, "+!tick(" + t / 5000 + ")", "@tick +!tick(N)", "{N=" + t / 5000 + "}"))
                         : List.of();
                 var mind = new MindState("robot", t / 40, t, t / 40, beliefs, List.of(), List.of(), sel);
