@@ -90,7 +90,7 @@ class ConsoleLevelsTest {
         String[] mixed = CliRun.run("experiment", "navigation", "--headless", "--duration", "1s", "--out", dir.toString(),
                 "--agent", agent);
         assertEquals("0", mixed[0], mixed[2]);
-        assertTrue(mixed[2].contains("warning: " + agent + " is written for experiment 1 (obstacle-avoidance: it makes a "
+        assertTrue(mixed[2].contains("warning: " + agent + " is written for experiment 1 (obstacle-avoidance: it makes the "
                 + "ObstacleAvoidanceMiddleware), but runs here with the NavigationMiddleware of navigation"), mixed[2]);
         String[] fine = CliRun.run("experiment", "navigation", "--headless", "--duration", "1s", "--out", dir.toString());
         assertFalse(fine[2].contains("warning"), fine[2]);
