@@ -31,9 +31,7 @@ class ChargerQueueTest {
         try (Workspace ws = Ops.workspace()) {
             ws.createArtifact("charger", ChargerQueue.class);
             AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher());
-            Ops.Watcher sees = new Ops.Watcher();
-            AgentId w = ws.join("w", sees);
-            ok(ws, w, "body_w", "focus", "charger");
+            Ops.Watcher sees = Ops.watch(ws, "w", "charger");
 
             ok(ws, a, "charger", "requestCharger");
             ok(ws, b, "charger", "requestCharger");

@@ -59,6 +59,13 @@ final class Ops {
         assertEquals(args, f.reasonArgs(), f::toString);
     }
 
+    /** Joins an agent called {@code agent} that focuses {@code artifact}; {@return what it perceives} */
+    static Watcher watch(Workspace ws, String agent, String artifact) {
+        Watcher sees = new Watcher();
+        ok(ws, ws.join(agent, sees), "body_" + agent, "focus", artifact);
+        return sees;
+    }
+
     /** What an agent focusing an artifact perceives: its properties now, and the signals so far. */
     static class Watcher extends ArtifactObserverAdapter {
         final List<PropertySnapshot> properties = new ArrayList<>();

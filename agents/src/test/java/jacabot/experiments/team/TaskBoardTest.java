@@ -31,9 +31,7 @@ class TaskBoardTest {
         try (Workspace ws = Ops.workspace()) {
             ws.createArtifact("board", TaskBoard.class);
             AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
-            Ops.Watcher sees = new Ops.Watcher();
-            AgentId watcher = ws.join("watcher", sees);
-            ok(ws, watcher, "body_watcher", "focus", "board");
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
 
             assertEquals(1, claim(ws, a, 0.30, 0.20));
             fails("claimed_by", List.of(a, 1), ws, b, "board", "claim", 0.35, 0.20, new OpFeedbackParam<Integer>());
@@ -49,9 +47,7 @@ class TaskBoardTest {
         try (Workspace ws = Ops.workspace()) {
             ws.createArtifact("board", TaskBoard.class, 0.2);
             AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
-            Ops.Watcher sees = new Ops.Watcher();
-            AgentId watcher = ws.join("watcher", sees);
-            ok(ws, watcher, "body_watcher", "focus", "board");
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
 
             int id = claim(ws, a, 0, 0);
             fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.15, 0.0);
@@ -72,20 +68,19 @@ class TaskBoardTest {
         try (Workspace ws = Ops.workspace()) {
             ws.createArtifact("board", TaskBoard.class);
             AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
-            Ops.Watcher bSees = new Ops.Watcher();
-            AgentId c = ws.join("c", bSees);
-            ok(ws, c, "body_c", "focus", "board");
+            Ops.Watcher cSees = Ops.watch(ws, "c", "board");
+            AgentId c = new AgentId("c");
             claim(ws, a, 0, 0);
             claim(ws, a, 1, 1);
             int bs = claim(ws, b, 0.5, 0.5);
             ok(ws, a, "board", "releaseAll");
-            assertEquals(List.of(List.of(bs, b, 0.5, 0.5)), bSees.values("claimed"));
+            assertEquals(List.of(List.of(bs, b, 0.5, 0.5)), cSees.values("claimed"));
             claim(ws, a, 0, 0);
 
             ws.leave(a);
             ws.leave(b);
-            assertEquals(List.of(), bSees.values("claimed"));
-            assertEquals(List.of("claimsFreed[a, 1]", "claimsFreed[b, 1]"), bSees.signals);
+            assertEquals(List.of(), cSees.values("claimed"));
+            assertEquals(List.of("claimsFreed[a, 1]", "claimsFreed[b, 1]"), cSees.signals);
             claim(ws, c, 0, 0);
         }
     }
