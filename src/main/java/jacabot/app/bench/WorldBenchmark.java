@@ -45,7 +45,7 @@ public final class WorldBenchmark {
                     double cost = measure("team-delivery x" + n, SimWorld.of(TeamWorld.firstRobots(spec, n)));
                     one = n == 1 ? cost : one;
                     if (n > 1) {
-                        out.printf(Locale.ROOT, "%-20s %s%n", "", String.format(Locale.ROOT, "%d robots: %.2fx one robot's step", n, cost / one));
+                        out.printf(Locale.ROOT, "%-20s %d robots: %.2fx one robot's step%n", "", n, cost / one);
                     }
                 }
             }
