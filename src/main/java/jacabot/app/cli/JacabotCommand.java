@@ -1,5 +1,6 @@
 package jacabot.app.cli;
 
+import jacabot.experiments.link.LinkRegistry;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
@@ -40,7 +41,7 @@ public final class JacabotCommand implements Runnable {
             if (List.of(args).contains("--debug")) {
                 e.printStackTrace();
             }
-            jacabot.experiments.link.MiddlewareLink.closeAll(); // the robots stop now, not when the JVM is gone
+            LinkRegistry.closeAll(); // the robots stop now, not when the JVM is gone
             new Thread(() -> System.exit(1), "exit-after-thread-death").start();
         });
         System.exit(execute(args));

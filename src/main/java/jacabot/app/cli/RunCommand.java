@@ -10,7 +10,7 @@ import jacabot.app.run.RealTimeRun;
 import jacabot.cartago.bridge.ProjectClasses;
 import jacabot.cartago.bridge.ProjectClasspath;
 import jacabot.cartago.bridge.SourceCompiler;
-import jacabot.experiments.link.MiddlewareLink;
+import jacabot.experiments.link.LinkRegistry;
 import jacabot.robot.link.LinkSecret;
 import java.io.File;
 import java.io.IOException;
@@ -168,8 +168,8 @@ final class RunCommand implements Callable<Integer> {
             }
             sampling = jacabot.app.inspector.MindWatch.sampleEvery(watches, 200);
         }
-        MiddlewareLink.setDefaultLiveness(watch); // the agents make their middleware, and so its link, as they run
-        MiddlewareLink.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
+        LinkRegistry.setDefaultLiveness(watch); // the agents make their middleware, and so its link, as they run
+        LinkRegistry.setDefaultQuiescence(watch::idle); // a lockstep controller's step waits for the agents' answer
         try {
             if (stepping) {
                 mas.runStepping();
@@ -179,8 +179,8 @@ final class RunCommand implements Callable<Integer> {
         } finally {
             // the defaults are the process's: links opened after this run (the next in-process
             // command, a test) must not ask agents that have stopped
-            MiddlewareLink.setDefaultLiveness(() -> true);
-            MiddlewareLink.setDefaultQuiescence(() -> true);
+            LinkRegistry.setDefaultLiveness(() -> true);
+            LinkRegistry.setDefaultQuiescence(() -> true);
         }
         sampling.close();
         if (relay != null) {

@@ -1,4 +1,5 @@
 package jacabot.app.run;
+import jacabot.experiments.link.LinkTestSupport;
 import jacabot.experiments.link.StepData;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
@@ -34,7 +35,7 @@ class LockstepCoordinatorTest {
     }
 
     private static LockstepCoordinator.Result run(StopAtObstacle agent) throws Exception {
-        SimWorld world = MiddlewareLinkTest.world("navigation");
+        SimWorld world = LinkTestSupport.world("navigation");
         return new LockstepCoordinator(world, "khepera", agent).runFor(10);
     }
 
@@ -49,7 +50,7 @@ class LockstepCoordinatorTest {
 
     @Test
     void anAgentSideThatFailsEndsTheRunWithItsFailure() throws Exception {
-        SimWorld world = MiddlewareLinkTest.world("navigation");
+        SimWorld world = LinkTestSupport.world("navigation");
         var run = new LockstepCoordinator(world, "khepera", data -> {
             if (data.step() == 3) {
                 throw new AssertionError("the agent side broke");

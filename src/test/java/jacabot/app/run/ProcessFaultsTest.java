@@ -1,10 +1,11 @@
 package jacabot.app.run;
 
-import static jacabot.app.run.MiddlewareLinkTest.waitFor;
-import static jacabot.app.run.MiddlewareLinkTest.world;
+import static jacabot.experiments.link.LinkTestSupport.waitFor;
+import static jacabot.experiments.link.LinkTestSupport.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.experiments.link.LinkTestSupport;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
@@ -196,11 +197,11 @@ class ProcessFaultsTest {
             try {
                 waitLong(m::isConnected);
                 assertTrue(m.send(jacabot.robot.link.Command.forward()));
-                MiddlewareLinkTest.await(m, MiddlewareLinkTest.wheels(50, 50));
+                LinkTestSupport.await(m, LinkTestSupport.wheels(50, 50));
                 long lastSeen = m.simTimeMs();
                 controller.destroyForcibly(); // SIGKILL: the world, and the robot in it, end with the process
                 long t0 = System.nanoTime();
-                var gone = (jacabot.experiments.link.LinkEvent.Disconnected) MiddlewareLinkTest.await(m,
+                var gone = (jacabot.experiments.link.LinkEvent.Disconnected) LinkTestSupport.await(m,
                         e -> e instanceof jacabot.experiments.link.LinkEvent.Disconnected);
                 long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
                 System.out.println("ProcessFaultsTest: controller JVM killed after t=" + lastSeen + " ms: the agent side told "

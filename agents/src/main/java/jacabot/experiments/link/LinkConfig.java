@@ -84,10 +84,6 @@ public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, in
         return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, newLimits, clock, log, secret, guards, tls);
     }
 
-    public LinkConfig withClock(LinkClock newClock) {
-        return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, newClock, log, secret, guards, tls);
-    }
-
     public LinkConfig withLog(Consumer<String> newLog) {
         return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, newLog, secret, guards, tls);
     }

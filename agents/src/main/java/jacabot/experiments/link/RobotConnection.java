@@ -12,7 +12,6 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.ReadingCheck;
 import jacabot.robot.link.SensorDataReader;
-import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorInfoFilter;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
@@ -265,7 +264,7 @@ final class RobotConnection {
         if (frame == null) {
             return "the controller closed the connection";
         }
-        String bad = frame instanceof Uplink.Batch ? problem((Uplink.Batch) frame, check) : null;
+        String bad = frame instanceof Uplink.Batch ? check.problem((Uplink.Batch) frame) : null;
         if (bad == null) {
             try {
                 owner.frame(this, frame);
@@ -281,19 +280,6 @@ final class RobotConnection {
         }
         if (frame instanceof Uplink.Bye) {
             return "the controller said goodbye: " + ((Uplink.Bye) frame).reason();
-        }
-        return null;
-    }
-
-    private static String problem(Uplink.Batch b, ReadingCheck check) {
-        if (b.step() < 0 || b.simTimeMs() < 0) {
-            return "batch " + b.step() + " at t=" + b.simTimeMs() + " ms: negative step or time";
-        }
-        for (SensorInfo info : b.readings()) {
-            String p = check.problem(info);
-            if (p != null) {
-                return "batch of step " + b.step() + " dropped: " + p;
-            }
         }
         return null;
     }

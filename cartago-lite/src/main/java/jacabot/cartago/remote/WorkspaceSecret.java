@@ -3,8 +3,10 @@ package jacabot.cartago.remote;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -51,7 +53,9 @@ public final class WorkspaceSecret {
     }
 
     /**
-     * {@return the secret in {@code file}, which is made (0600) with a fresh one when absent}
+     * {@return the secret in {@code file}, which is made (0600) with a fresh one when absent}; two
+     * processes starting together end with the same one: the file appears whole or not at all
+     * ({@link #publish}), and the one that loses reads the other's.
      *
      * @throws IOException when it cannot be read or made, holds no secret, or others may read it
      */
@@ -59,22 +63,41 @@ public final class WorkspaceSecret {
         if (!Files.exists(file)) {
             Path dir = file.toAbsolutePath().getParent();
             Files.createDirectories(dir);
-            boolean posix = Files.getFileStore(dir).supportsFileAttributeView(PosixFileAttributeView.class);
-            try {
-                if (posix) {
-                    Files.createFile(file, PosixFilePermissions.asFileAttribute(
-                            Set.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)));
-                } else {
-                    Files.createFile(file);
-                }
-                byte[] fresh = nonce(32);
-                Files.writeString(file, HexFormat.of().formatHex(fresh) + "\n", StandardCharsets.US_ASCII);
+            byte[] fresh = nonce(32);
+            if (publish(file, HexFormat.of().formatHex(fresh) + "\n")) {
                 return new WorkspaceSecret(fresh);
-            } catch (FileAlreadyExistsException madeMeanwhile) {
-                // another process made it: read it below
             }
+            // another process published its secret first: read that one
         }
         return load(file);
+    }
+
+    /**
+     * Writes {@code text} to a temporary file beside {@code file} (0600 from the start) and gives it
+     * {@code file}'s name in one step unless the name exists by then; {@return whether it was published}.
+     * A hard link, as {@code LinkSecret} publishes its file: a rename would replace a secret published
+     * meanwhile; without hard links, an atomic move after a last look.
+     */
+    private static boolean publish(Path file, String text) throws IOException {
+        Path dir = file.toAbsolutePath().getParent();
+        Path tmp = Files.getFileStore(dir).supportsFileAttributeView(PosixFileAttributeView.class)
+                ? Files.createTempFile(dir, "." + file.getFileName(), ".tmp", PosixFilePermissions.asFileAttribute(
+                        Set.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)))
+                : Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+        try {
+            Files.writeString(tmp, text, StandardCharsets.US_ASCII);
+            try {
+                Files.createLink(file, tmp);
+            } catch (UnsupportedOperationException | FileSystemException noLinks) {
+                if (noLinks instanceof FileAlreadyExistsException || Files.exists(file)) {
+                    return false;
+                }
+                Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE);
+            }
+            return true;
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
     }
 
     private static WorkspaceSecret load(Path file) throws IOException {
@@ -84,21 +107,11 @@ public final class WorkspaceSecret {
                 throw new IOException("the workspace secret " + file + " may be read by other users; run: chmod 600 " + file);
             }
         }
-        for (int attempt = 0; ; attempt++) {
-            String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
-            if (!text.isEmpty() || attempt == 20) {
-                try {
-                    return new WorkspaceSecret(HexFormat.of().parseHex(text));
-                } catch (IllegalArgumentException e) {
-                    throw new IOException(file + ": not a workspace secret (" + e.getMessage() + ")");
-                }
-            }
-            try {
-                Thread.sleep(25);   // being written by the process that made it
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IOException("interrupted while reading " + file);
-            }
+        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
+        try {
+            return new WorkspaceSecret(HexFormat.of().parseHex(text));
+        } catch (IllegalArgumentException e) {
+            throw new IOException(file + ": not a workspace secret (" + e.getMessage() + ")");
         }
     }
 

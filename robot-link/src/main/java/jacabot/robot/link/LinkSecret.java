@@ -4,8 +4,10 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -107,7 +109,8 @@ public final class LinkSecret {
 
     /**
      * Reads the secret in {@code file}, or makes the file (mode 0600, its directory 0700) with a fresh
-     * secret when it does not exist.
+     * secret when it does not exist. Two processes starting together end with the same secret: the
+     * file appears whole or not at all ({@link #publish}), and the one that loses reads the other's.
      *
      * @throws IOException when it cannot be read or made, holds no secret, or group or others may read it
      */
@@ -126,20 +129,40 @@ public final class LinkSecret {
                     Files.createDirectories(dir);
                 }
             }
-            try {
-                if (posix) {
-                    Files.createFile(file, PosixFilePermissions.asFileAttribute(
-                            EnumSet.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)));
-                } else {
-                    Files.createFile(file);
-                }
-                Files.writeString(file, fresh.toHex() + "\n", StandardCharsets.US_ASCII);
+            if (publish(file, fresh.toHex() + "\n", posix)) {
                 return fresh;
-            } catch (FileAlreadyExistsException e) {
-                // made by the other process meanwhile: read it
             }
+            // the other process published its secret first: read that one
         }
         return load(file);
+    }
+
+    /**
+     * Writes {@code text} to a temporary file beside {@code file} (0600 from the start) and gives it
+     * {@code file}'s name in one step, unless the name exists by then; {@return whether it was published}.
+     * A hard link, not {@code Files.move}: a rename replaces a secret that the other process published
+     * meanwhile, and the two would hold different keys; a link fails instead. Where the file system
+     * has no hard links, an atomic move after a last look (a narrower race).
+     */
+    private static boolean publish(Path file, String text, boolean posix) throws IOException {
+        Path dir = file.toAbsolutePath().getParent();
+        Path tmp = posix ? Files.createTempFile(dir, "." + file.getFileName(), ".tmp", PosixFilePermissions.asFileAttribute(
+                EnumSet.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)))
+                : Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+        try {
+            Files.writeString(tmp, text, StandardCharsets.US_ASCII);
+            try {
+                Files.createLink(file, tmp);
+            } catch (UnsupportedOperationException | FileSystemException noLinks) {
+                if (noLinks instanceof FileAlreadyExistsException || Files.exists(file)) {
+                    return false;
+                }
+                Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE);
+            }
+            return true;
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
     }
 
     /** Reads a secret file, refusing one that group or others may read. */
@@ -150,21 +173,11 @@ public final class LinkSecret {
                 throw new IOException("the link secret " + file + " may be read by other users; run: chmod 600 " + file);
             }
         }
-        for (int attempt = 0; ; attempt++) {
-            String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
-            if (!text.isEmpty() || attempt == 20) {
-                try {
-                    return fromHex(text);
-                } catch (IllegalArgumentException e) {
-                    throw new IOException(file + ": not a link secret (" + e.getMessage() + ")");
-                }
-            }
-            try {
-                Thread.sleep(25); // made by the other process, which is writing it (loadOrCreate)
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IOException("interrupted while reading " + file);
-            }
+        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
+        try {
+            return fromHex(text);
+        } catch (IllegalArgumentException e) {
+            throw new IOException(file + ": not a link secret (" + e.getMessage() + ")");
         }
     }
 

@@ -24,6 +24,20 @@ public final class ReadingCheck {
         this.declared = new HashSet<>(declaredIds);
     }
 
+    /** {@return why a batch is dropped (a negative step or time, or its first bad reading), or null} */
+    public String problem(Uplink.Batch b) {
+        if (b.step() < 0 || b.simTimeMs() < 0) {
+            return "batch " + b.step() + " at t=" + b.simTimeMs() + " ms: negative step or time";
+        }
+        for (SensorInfo info : b.readings()) {
+            String p = problem(info);
+            if (p != null) {
+                return "batch of step " + b.step() + " dropped: " + p;
+            }
+        }
+        return null;
+    }
+
     /** {@return why the reading is refused, or null when it is well-formed} */
     public String problem(SensorInfo info) {
         if (!declared.contains(info.getId())) {

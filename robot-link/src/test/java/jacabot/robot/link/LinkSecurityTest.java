@@ -18,8 +18,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -106,23 +110,39 @@ class LinkSecurityTest {
                 .contains("not a link secret"));
     }
 
-    /** The other process has made the file but not yet written it: the reader waits for the secret. */
+    /**
+     * The agent platform and the controller start together and both find no secret file: each makes
+     * one, and both must end with the same secret, never reading a file made but not yet written
+     * (readers do not wait: the file appears whole or not at all). Four makers at once, 40 times.
+     */
     @Test
     void aSecretFileReadWhileItIsWrittenGivesTheSecret(@TempDir Path dir) throws Exception {
-        Path file = dir.resolve("link-secret");
-        Files.createFile(file, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
-        String hex = "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef";
-        Thread writer = new Thread(() -> {
-            try {
-                Thread.sleep(100);
-                Files.writeString(file, hex + "\n");
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
+        var pool = Executors.newFixedThreadPool(4);
+        try {
+            for (int round = 0; round < 40; round++) {
+                Path file = dir.resolve("round-" + round).resolve("link-secret");
+                var start = new CountDownLatch(1);
+                List<Future<String>> sides = new ArrayList<>();
+                for (int side = 0; side < 4; side++) {
+                    sides.add(pool.submit(() -> {
+                        start.await();
+                        return LinkSecret.loadOrCreate(file).toHex();
+                    }));
+                }
+                start.countDown();
+                String first = sides.get(0).get(10, TimeUnit.SECONDS); // a partial file would throw "not a link secret"
+                for (var side : sides) {
+                    assertEquals(first, side.get(10, TimeUnit.SECONDS), "round " + round + ": every side has the same secret");
+                }
+                assertEquals(first, Files.readString(file).trim(), "the file holds that secret");
+                assertEquals(PosixFilePermissions.fromString("rw-------"), Files.getPosixFilePermissions(file));
+                try (var left = Files.list(file.getParent())) {
+                    assertEquals(List.of(file), left.toList(), "no temporary file left beside it");
+                }
             }
-        });
-        writer.start();
-        assertEquals(hex, LinkSecret.loadOrCreate(file).toHex());
-        writer.join();
+        } finally {
+            pool.shutdownNow();
+        }
     }
 
     @Test

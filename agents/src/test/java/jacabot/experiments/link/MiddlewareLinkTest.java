@@ -1,8 +1,9 @@
-package jacabot.app.run;
-import jacabot.experiments.link.MiddlewareLink;
-import jacabot.experiments.link.LinkEvent;
-import jacabot.experiments.link.LinkConfig;
+package jacabot.experiments.link;
 
+import static jacabot.experiments.link.LinkTestSupport.await;
+import static jacabot.experiments.link.LinkTestSupport.waitFor;
+import static jacabot.experiments.link.LinkTestSupport.wheels;
+import static jacabot.experiments.link.LinkTestSupport.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -17,51 +18,26 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
 import jacabot.robot.link.Uplink;
-import jacabot.sim.SimWorld;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.ObjectOutputStream;
 import java.net.InetAddress;
 import java.net.Socket;
-import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Predicate;
 import org.junit.jupiter.api.Test;
 
 /** The middleware's end of the link, against the real controller and against hostile clients. */
 class MiddlewareLinkTest {
     private final List<String> log = new CopyOnWriteArrayList<>();
-    /** The key of the links these tests open themselves (InProcessLink makes its own). */
+    /** The key of the links these tests open themselves ({@link BothEnds} makes its own). */
     static final LinkSecret SECRET = LinkSecret.random();
-
-    static SimWorld world(String name) throws Exception {
-        return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", name + ".json"));
-    }
 
     private LinkConfig linkConfig() {
         return LinkConfig.defaults().withPort(0).withLog(log::add).withSecret(SECRET);
-    }
-
-    /** Safety net only: the first event matching within 10 s. */
-    static LinkEvent await(MiddlewareLink link, Predicate<LinkEvent> p) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (System.nanoTime() < end) {
-            LinkEvent e = link.poll(100, TimeUnit.MILLISECONDS);
-            if (e != null && p.test(e)) {
-                return e;
-            }
-        }
-        throw new AssertionError("no matching event within 10 s");
-    }
-
-    static Predicate<LinkEvent> wheels(double left, double right) {
-        return e -> e instanceof LinkEvent.Reading && ((LinkEvent.Reading) e).info().getId() == SensorKind.WHEEL_SPEEDS.id()
-                && Arrays.equals(((LinkEvent.Reading) e).info().getDoubleValues(), new double[] {left, right});
     }
 
     @Test
@@ -69,7 +45,7 @@ class MiddlewareLinkTest {
         // real time: at 20x a loaded machine let the 4096-event queue overflow (oldest readings and
         // markers dropped, by design) before this thread handed over, and step 0 was gone
         var cc = ControllerConfig.defaults().withSpeedFactor(1).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+        try (var link = BothEnds.start(world("navigation"), cc, linkConfig())) {
             MiddlewareLink m = link.middleware();
             assertTrue(m.awaitConnected(10, TimeUnit.SECONDS));
             link.controller().runner().start();
@@ -93,7 +69,7 @@ class MiddlewareLinkTest {
     @Test
     void aControllerConnectsSendsReadingsWithSimulatedTimeAndObeysCommands() throws Exception {
         var cc = ControllerConfig.defaults().withSpeedFactor(20).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+        try (var link = BothEnds.start(world("navigation"), cc, linkConfig())) {
             link.controller().runner().start();
             MiddlewareLink m = link.middleware();
             var connected = (LinkEvent.Connected) await(m, e -> e instanceof LinkEvent.Connected);
@@ -120,7 +96,7 @@ class MiddlewareLinkTest {
         AtomicLong nanos = new AtomicLong();
         var cc = ControllerConfig.defaults().withSpeedFactor(20).withFailSafeMs(1000).withBackoff(20, 100)
                 .withClocks(jacabot.robot.link.LinkClock.system(), nanos::get).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig().withHeartbeatMs(0))) {
+        try (var link = BothEnds.start(world("navigation"), cc, linkConfig().withHeartbeatMs(0))) {
             link.controller().runner().start();
             MiddlewareLink m = link.middleware();
             await(m, e -> e instanceof LinkEvent.Connected);
@@ -239,14 +215,6 @@ class MiddlewareLinkTest {
         }
     }
 
-    static void waitFor(java.util.function.BooleanSupplier condition) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!condition.getAsBoolean() && System.nanoTime() < end) {
-            Thread.sleep(10);
-        }
-        assertTrue(condition.getAsBoolean(), "condition not met within 10 s");
-    }
-
     /**
      * Real time never runs ahead of the wall clock x the factor (a load on the machine can only slow it
      * down, so this bound does not flake; how close it keeps to the factor is a benchmark's figure).
@@ -254,7 +222,7 @@ class MiddlewareLinkTest {
     @Test
     void realTimeModeNeverRunsAheadOfTheFactor() throws Exception {
         var cc = ControllerConfig.defaults().withSpeedFactor(4).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, linkConfig())) {
+        try (var link = BothEnds.start(world("navigation"), cc, linkConfig())) {
             var runner = link.controller().runner();
             long wall0 = System.nanoTime(), sim0 = link.controller().world().timeMs();
             runner.start();

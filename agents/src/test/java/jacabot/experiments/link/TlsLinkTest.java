@@ -1,15 +1,12 @@
-package jacabot.app.run;
+package jacabot.experiments.link;
 
-import static jacabot.app.run.MiddlewareLinkTest.await;
-import static jacabot.app.run.MiddlewareLinkTest.waitFor;
-import static jacabot.app.run.MiddlewareLinkTest.world;
+import static jacabot.experiments.link.LinkTestSupport.await;
+import static jacabot.experiments.link.LinkTestSupport.waitFor;
+import static jacabot.experiments.link.LinkTestSupport.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.experiments.link.LinkConfig;
-import jacabot.experiments.link.LinkEvent;
-import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.Command;
@@ -86,7 +83,7 @@ class TlsLinkTest {
                 c.runner().start();
                 await(m, e -> e instanceof LinkEvent.Connected);
                 assertTrue(m.send(Command.forward()));
-                await(m, MiddlewareLinkTest.wheels(50, 50));
+                await(m, LinkTestSupport.wheels(50, 50));
                 c.runner().stop();
             }
             // a controller that trusts another certificate (a stranger's middleware, as it sees it)

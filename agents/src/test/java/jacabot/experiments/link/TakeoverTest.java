@@ -1,13 +1,11 @@
-package jacabot.app.run;
+package jacabot.experiments.link;
 
-import static jacabot.app.run.MiddlewareLinkTest.await;
-import static jacabot.app.run.MiddlewareLinkTest.world;
+import static jacabot.experiments.link.LinkTestSupport.await;
+import static jacabot.experiments.link.LinkTestSupport.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.experiments.link.LinkConfig;
-import jacabot.experiments.link.LinkEvent;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorKind;
@@ -29,7 +27,7 @@ class TakeoverTest {
         List<String> log = new CopyOnWriteArrayList<>();
         // a fail-safe of 1 s: the machine itself (load 30 on 2 cores seen) must not trip it during the test
         var cc = ControllerConfig.defaults().withSpeedFactor(1).withFailSafeMs(1000).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, LinkConfig.defaults().withLog(log::add))) {
+        try (var link = BothEnds.start(world("navigation"), cc, LinkConfig.defaults().withLog(log::add))) {
             var m = link.middleware();
             await(m, e -> e instanceof LinkEvent.Connected);
             link.controller().runner().start();
@@ -58,7 +56,7 @@ class TakeoverTest {
             // not the intruder: a figure (printed above), not an assertion
             assertTrue(readingsDuring > 0, "the agent side kept perceiving");
             assertTrue(m.send(Command.setSpeeds(30, 30)));
-            await(m, MiddlewareLinkTest.wheels(30, 30)); // still obeying the legitimate agent
+            await(m, LinkTestSupport.wheels(30, 30)); // still obeying the legitimate agent
             link.controller().runner().stop();
         }
     }

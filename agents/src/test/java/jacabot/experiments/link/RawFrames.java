@@ -1,4 +1,4 @@
-package jacabot.app.run;
+package jacabot.experiments.link;
 
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.Uplink;
@@ -6,12 +6,12 @@ import java.io.IOException;
 import java.io.ObjectOutputStream;
 
 /** Hand-written uplink frames for the link's guard tests (readings the real writer would never send). */
-final class RawFrames {
+public final class RawFrames {
     private RawFrames() {
     }
 
     /** Writes one batch frame of {@code readings} at control step {@code step} (40 ms steps). */
-    static void batch(ObjectOutputStream out, long step, SensorInfo... readings) throws IOException {
+    public static void batch(ObjectOutputStream out, long step, SensorInfo... readings) throws IOException {
         out.writeByte(Uplink.BATCH);
         out.writeLong(step);
         out.writeLong(40 * step);

@@ -1,18 +1,15 @@
-package jacabot.app.run;
+package jacabot.experiments.link;
 
-import static jacabot.app.run.MiddlewareLinkTest.await;
-import static jacabot.app.run.MiddlewareLinkTest.handshake;
-import static jacabot.app.run.MiddlewareLinkTest.waitFor;
-import static jacabot.app.run.MiddlewareLinkTest.world;
+import static jacabot.experiments.link.LinkTestSupport.await;
+import static jacabot.experiments.link.MiddlewareLinkTest.handshake;
+import static jacabot.experiments.link.LinkTestSupport.waitFor;
+import static jacabot.experiments.link.LinkTestSupport.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import jacabot.experiments.link.LinkConfig;
-import jacabot.experiments.link.LinkEvent;
-import jacabot.experiments.link.MiddlewareLink;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.AuthenticationException;
@@ -99,7 +96,7 @@ class LinkGuardsTest {
     @Test
     void withoutTheSecretNobodyTakesTheSessionOver() throws Exception {
         var cc = ControllerConfig.defaults().withSpeedFactor(10).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, config().withHeartbeatMs(50))) {
+        try (var link = BothEnds.start(world("navigation"), cc, config().withHeartbeatMs(50))) {
             MiddlewareLink m = link.middleware();
             await(m, e -> e instanceof LinkEvent.Connected);
             link.controller().runner().start();
@@ -256,20 +253,20 @@ class LinkGuardsTest {
     void anAgentThatStopsReasoningLetsTheFailSafeStopTheRobotAndIsToldSo() throws Exception {
         AtomicBoolean reasoning = new AtomicBoolean(true);
         var cc = ControllerConfig.defaults().withSpeedFactor(5).withFailSafeMs(200).withLog(log::add);
-        try (var link = InProcessLink.start(world("navigation"), cc, config().withHeartbeatMs(40))) {
+        try (var link = BothEnds.start(world("navigation"), cc, config().withHeartbeatMs(40))) {
             MiddlewareLink m = link.middleware();
             m.setLiveness(reasoning::get);
             link.controller().runner().start();
             await(m, e -> e instanceof LinkEvent.Connected);
             m.send(Command.forward());
-            await(m, MiddlewareLinkTest.wheels(50, 50));
+            await(m, LinkTestSupport.wheels(50, 50));
             Thread.sleep(300);
             assertTrue(log.stream().noneMatch(l -> l.startsWith("the agent does not reason")), "heartbeats flow meanwhile");
             reasoning.set(false); // a cycle that never ends, a dead agent thread
             waitFor(() -> link.controller().failSafeTrips() > 0);
             var f = (LinkEvent.FailSafe) await(m, e -> e instanceof LinkEvent.FailSafe);
             assertTrue(f.reason().startsWith("no command or heartbeat"), f.reason());
-            await(m, MiddlewareLinkTest.wheels(0, 0));
+            await(m, LinkTestSupport.wheels(0, 0));
             waitFor(() -> log.stream().anyMatch(l -> l.startsWith("the agent does not reason")));
             link.controller().runner().stop();
         }

@@ -1,6 +1,6 @@
-package jacabot.app.run;
+package jacabot.experiments;
 
-import static jacabot.app.run.MiddlewareLinkTest.waitFor;
+import static jacabot.experiments.link.LinkTestSupport.waitFor;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,8 +10,7 @@ import jacabot.cartago.ArtifactObserverAdapter;
 import jacabot.cartago.OpTarget;
 import jacabot.cartago.PropertySnapshot;
 import jacabot.cartago.Workspace;
-import jacabot.experiments.MiddlewareArtifact;
-import jacabot.experiments.ObjectPickingMiddleware;
+import jacabot.experiments.link.RawFrames;
 import jacabot.robot.link.CommandCode;
 import jacabot.robot.link.CommandReader;
 import jacabot.robot.link.Handshake;

@@ -1,4 +1,4 @@
-package jacabot.app.run;
+package jacabot.experiments.link;
 
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkSecret;
@@ -15,7 +15,7 @@ import java.net.Socket;
  * middleware as a controller would, with a key of its own, again and again (the audit's attack:
  * 146 takeovers in 15 s before sessions were authenticated). Prints {@code attempts N takeovers M}.
  *
- * <p>{@code java -cp ... jacabot.app.run.Intruder PORT ATTEMPTS SECONDS}
+ * <p>{@code java -cp ... jacabot.experiments.link.Intruder PORT ATTEMPTS SECONDS}
  */
 public final class Intruder {
     private Intruder() {
