@@ -305,6 +305,16 @@ public abstract class Artifact {
     protected void dispose() {
     }
 
+    /**
+     * Called when {@code agent} leaves the workspace ({@link Workspace#leave}: its process ended or it
+     * was stopped), after its focuses ended, holding the artifact as an operation does: let go of what
+     * the agent held here (a claim, a place in a queue), so that no other agent waits for it for ever.
+     * Changes are committed when it returns and rolled back if it throws. Does nothing by default.
+     * Not in CArtAgO, where an artifact never learns that an agent has gone.
+     */
+    protected void agentLeft(AgentId agent) {
+    }
+
     @Override
     public String toString() {
         return core == null ? getClass().getSimpleName() : core.id().name();

@@ -33,7 +33,8 @@ public final class Workspace implements AutoCloseable {
 
     /** The workspace's own artifacts, which agents cannot dispose. */
     private static final Set<String> RESERVED = Set.of("workspace", "console");
-    private static final Method DISPOSE_HOOK = disposeHook();
+    private static final Method DISPOSE_HOOK = hook("dispose");
+    private static final Method AGENT_LEFT_HOOK = hook("agentLeft", AgentId.class);
 
     private final String name;
     private final Mode mode;
@@ -96,7 +97,10 @@ public final class Workspace implements AutoCloseable {
         return agent;
     }
 
-    /** Ends an agent's work: it stops focusing everything and its body is disposed. */
+    /**
+     * Ends an agent's work: it stops focusing everything, its body is disposed, and every artifact
+     * that overrides {@link Artifact#agentLeft} is told, oldest first.
+     */
     public void leave(AgentId agent) {
         FocusBook.Entry entry = agents.get(agent);
         if (entry == null) {
@@ -117,6 +121,36 @@ public final class Workspace implements AutoCloseable {
             dispose(body);
         }
         agents.remove(agent);
+        for (ArtifactCore core : byId.values()) {
+            if (overridesAgentLeft(core.artifact().getClass())) {
+                tellAgentLeft(core, agent);
+            }
+        }
+    }
+
+    private void tellAgentLeft(ArtifactCore core, AgentId agent) {
+        core.lock().lock();
+        try {
+            if (!core.isDisposed()) {
+                OpExecution.hook(core, null).runHook(AGENT_LEFT_HOOK, new Object[] {agent});
+            }
+        } catch (RuntimeException | Error e) {
+            logger.warning(core.id().name(), "agentLeft(" + agent.name() + ") failed", e);
+        } finally {
+            core.lock().unlock();
+        }
+    }
+
+    private static boolean overridesAgentLeft(Class<?> type) {
+        for (Class<?> c = type; c != Artifact.class && c != null; c = c.getSuperclass()) {
+            try {
+                c.getDeclaredMethod("agentLeft", AgentId.class);
+                return true;
+            } catch (NoSuchMethodException e) {
+                // look further up
+            }
+        }
+        return false;
     }
 
     /** {@return the agents that have joined} */
@@ -474,9 +508,9 @@ public final class Workspace implements AutoCloseable {
         scheduler.close();
     }
 
-    private static Method disposeHook() {
+    private static Method hook(String name, Class<?>... parameters) {
         try {
-            return Artifact.class.getDeclaredMethod("dispose");
+            return Artifact.class.getDeclaredMethod(name, parameters);
         } catch (NoSuchMethodException e) {
             throw new ExceptionInInitializerError(e);
         }

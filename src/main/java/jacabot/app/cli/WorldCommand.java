@@ -25,18 +25,24 @@ final class WorldCommand implements Runnable {
         spec.commandLine().usage(spec.commandLine().getOut());
     }
 
-    /** {@code jacabot world generate EXPERIMENT --seed N}: a random valid world, the same for the same seed. */
+    /** {@code jacabot world generate EXPERIMENT [--robots N] --seed S}: a random valid world, the same for the same seed. */
     @Command(name = "generate", mixinStandardHelpOptions = true,
             description = {"Makes a random world for an experiment: arena 1-3 m a side, sparse to dense obstacles, storage "
                     + "point and charger in a corner or along a wall, red cylinders, scripted faults at random times.",
+                    "team-delivery: N Kheperas (khepera1..N) placed apart, 10-14 cylinders, one storage point, one charger, "
+                    + "arena 1.5-3 m, no faults; one seed gives teams of 1 to 4 the same layout.",
                     "The same experiment and seed give the same file. The world is checked with the loader."})
     static final class Generate implements Callable<Integer> {
         @CommandLine.Spec
         private CommandLine.Model.CommandSpec spec;
 
-        @Parameters(index = "0", paramLabel = "EXPERIMENT", converter = ExperimentCommand.ExperimentConverter.class,
-                description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up (or 1-5)")
-        private Experiment experiment;
+        @Parameters(index = "0", paramLabel = "EXPERIMENT",
+                description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up (or 1-5) | team-delivery")
+        private String experiment;
+
+        @Option(names = "--robots", paramLabel = "N", description = "team-delivery only: the team's size, 1-"
+                + WorldGenerator.MAX_TEAM + " (default ${DEFAULT-VALUE})")
+        private int robots = 2;
 
         @Option(names = "--seed", paramLabel = "N", required = true, description = "the generator's seed (also the world's seed)")
         private long seed;
@@ -52,7 +58,22 @@ final class WorldCommand implements Runnable {
             if (!(maxSide >= 1)) {
                 throw new UserError("--max-side must be at least 1 (metres), got " + maxSide);
             }
-            String json = new WorldGenerator(experiment, seed).maxSide(maxSide).generate().json();
+            WorldGenerator generator;
+            if (experiment.equals(WorldGenerator.TEAM_DELIVERY)) {
+                if (robots < 1 || robots > WorldGenerator.MAX_TEAM) {
+                    throw new UserError("--robots must be 1 to " + WorldGenerator.MAX_TEAM + ", got " + robots);
+                }
+                generator = WorldGenerator.team(robots, seed);
+            } else {
+                Experiment e = Experiment.parse(experiment).orElseThrow(() -> new UserError("unknown experiment '"
+                        + experiment + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, "
+                        + "tidy-up, " + WorldGenerator.TEAM_DELIVERY + ")"));
+                if (spec.commandLine().getParseResult().hasMatchedOption("--robots")) {
+                    throw new UserError("--robots is for " + WorldGenerator.TEAM_DELIVERY + " only; " + e.id() + " has one robot");
+                }
+                generator = new WorldGenerator(e, seed);
+            }
+            String json = generator.maxSide(maxSide).generate().json();
             if (out == null) {
                 PrintWriter o = spec.commandLine().getOut();
                 o.print(json);

@@ -28,6 +28,13 @@ import java.util.Optional;
  * the contact allowed, never below 2 s); coverage, a first pick or delivery and a recharge do not
  * grow in proportion to time, so a run shorter than 10 minutes is judged by them as they are, and
  * {@link #caveat} says so (the sweep warns and marks its report).
+ *
+ * <p>A team's run (team-delivery, thesis Chapter 6), {@link #judgeTeam}: deliveries counted for the
+ * team, at least {@link #MIN_DELIVERIES} per robot (no more than the world's cylinders); every
+ * robot's contact under {@link #MAX_CONTACT_S} s and its battery never empty; no cylinder ever
+ * claimed by two robots at once; no robot waiting for the charger longer than
+ * {@link #MAX_CHARGER_WAIT_S} s. Across runs, a team of N should deliver {@link #scalingTarget}
+ * times what one robot delivers on the same worlds and seeds.
  */
 public final class SuccessCriteria {
     public static final double MAX_CONTACT_S = 2.0;
@@ -36,6 +43,8 @@ public final class SuccessCriteria {
     public static final double EPISODE_GRACE_S = 180;
     /** The duration the criteria are made for, simulated seconds. */
     public static final double NOMINAL_S = 600;
+    /** The longest a robot of a team may wait for the charger, seconds (from asking to holding it). */
+    public static final double MAX_CHARGER_WAIT_S = 60;
 
     private SuccessCriteria() {
     }
@@ -53,6 +62,26 @@ public final class SuccessCriteria {
                 int storageEntriesEmpty, boolean batteryEmptied, int lowBatteryEpisodes, int episodesCompleted) {
             this(duration, contactTime, coverage, picks, deliveries, storageEntriesEmpty, batteryEmptied, lowBatteryEpisodes,
                     episodesCompleted, 0, 0, false);
+        }
+    }
+
+    /**
+     * What the team criteria read from a run.
+     *
+     * @param contactTimes        each robot's contact time, seconds, in the world file's order
+     * @param batteriesEmptied    how many robots' batteries ran empty
+     * @param doubleClaims        how many times a cylinder was claimed by a second robot while claimed
+     * @param longestChargerWait  the longest a robot waited for the charger, seconds
+     */
+    public record TeamFigures(double duration, int cylinders, int deliveries, List<Double> contactTimes, int batteriesEmptied,
+                              int doubleClaims, double longestChargerWait) {
+        public TeamFigures {
+            contactTimes = List.copyOf(contactTimes);
+        }
+
+        /** {@return the team's size} */
+        public int robots() {
+            return contactTimes.size();
         }
     }
 
@@ -153,6 +182,46 @@ public final class SuccessCriteria {
             default -> throw new IllegalArgumentException("no criteria for " + experiment);
         }
         return new Verdict(why.isEmpty(), why);
+    }
+
+    /** {@return the verdict on a team's run} */
+    public static Verdict judgeTeam(TeamFigures f) {
+        List<String> why = new ArrayList<>();
+        int due = Math.min(MIN_DELIVERIES * f.robots(), f.cylinders());
+        if (f.deliveries() < due) {
+            why.add(f.deliveries() + " team deliver" + (f.deliveries() == 1 ? "y" : "ies") + " (< " + due + ")");
+        }
+        for (int i = 0; i < f.robots(); i++) {
+            if (!(f.contactTimes().get(i) < MAX_CONTACT_S)) {
+                why.add(fmt("robot %d: contact %.1f s (>= %.0f s)", i + 1, f.contactTimes().get(i), MAX_CONTACT_S));
+            }
+        }
+        if (f.batteriesEmptied() > 0) {
+            why.add(f.batteriesEmptied() + (f.batteriesEmptied() == 1 ? " battery" : " batteries") + " empty");
+        }
+        if (f.doubleClaims() > 0) {
+            why.add(f.doubleClaims() + " double claim" + (f.doubleClaims() == 1 ? "" : "s"));
+        }
+        if (f.longestChargerWait() > MAX_CHARGER_WAIT_S) {
+            why.add(fmt("waited %.0f s for the charger (> %.0f s)", f.longestChargerWait(), MAX_CHARGER_WAIT_S));
+        }
+        return new Verdict(why.isEmpty(), why);
+    }
+
+    /**
+     * {@return how many times one robot's deliveries a team of {@code robots} should deliver, on the
+     * same worlds and seeds: 1.7 for two, 3 for four (0.85 and 0.75 of linear: robots get in each
+     * other's way and share one charger); other sizes interpolate 0.85 to 0.75 of linear}
+     */
+    public static double scalingTarget(int robots) {
+        if (robots < 1) {
+            throw new IllegalArgumentException("a team has at least one robot, got " + robots);
+        }
+        if (robots == 1) {
+            return 1;
+        }
+        double efficiency = robots >= 4 ? 0.75 : 0.85 - (robots - 2) * 0.05;
+        return robots * efficiency;
     }
 
     private static String fmt(String format, Object... args) {

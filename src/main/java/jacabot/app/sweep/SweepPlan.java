@@ -60,7 +60,7 @@ public final class SweepPlan {
     /**
      * {@return the world files of a directory (and its subdirectories) for each experiment: those whose
      * name starts with the experiment's id; when only one experiment is swept, also those that start
-     * with no experiment's id}. A file the loader rejects stays in the list with its message.
+     * with no experiment's id nor the team experiment's}. A file the loader rejects stays in the list with its message.
      */
     public static List<World> directory(List<Experiment> experiments, Path dir) throws IOException {
         List<Path> files;
@@ -72,7 +72,8 @@ public final class SweepPlan {
             for (Path f : files) {
                 String name = f.getFileName().toString();
                 boolean mine = name.startsWith(e.id());
-                boolean nobody = Stream.of(Experiment.values()).noneMatch(x -> name.startsWith(x.id()));
+                boolean nobody = Stream.of(Experiment.values()).noneMatch(x -> name.startsWith(x.id()))
+                        && !name.startsWith(WorldGenerator.TEAM_DELIVERY); // a team's world is no single robot's
                 if (mine || nobody && experiments.size() == 1) {
                     String label = name.substring(0, name.length() - 5);
                     try {

@@ -12,11 +12,19 @@ import java.util.Locale;
 import java.util.SplittableRandom;
 
 /**
- * Makes a random world file for an experiment, the same text for the same seed: an arena of 1 to
- * {@link #maxSide} metres a side, sparse to dense cubic obstacles, the storage point and the charger
- * in a corner or along a wall, red cylinders, and scripted faults at random times (obstacles moved,
- * a cylinder moved while the robot grips it, a carried cylinder knocked out, the battery drained).
- * Robot model and battery are those of the experiment's default world.
+ * Makes a random world file for an experiment, or for a team's ({@link #team}), the same text for
+ * the same seed: an arena of 1 to {@link #maxSide} metres a side, sparse to dense cubic obstacles,
+ * the storage point and the charger in a corner or along a wall, red cylinders, and scripted faults
+ * at random times (obstacles moved, a cylinder moved while the robot grips it, a carried cylinder
+ * knocked out, the battery drained). Robot model and battery are those of the experiment's default
+ * world.
+ *
+ * <p>A team's world (thesis Chapter 6: {@code team-delivery}, several Kheperas bringing about a dozen
+ * cylinders to one storage point and recharging at one charger) is made by the same steps with
+ * several robots, placed apart, more cylinders, an arena of at least 1.5 m and no scripted faults
+ * yet. Its robots' places are drawn for {@link #TEAM_SLOTS} robots whatever the team's size (more
+ * for a larger team), so that one seed gives teams of 1 to 4 robots the same arena, obstacles and
+ * cylinders: their runs compare.
  *
  * <p>Reachability by construction: every obstacle keeps more than a robot's diameter
  * ({@link #gap}) from every other obstacle, from the walls and from the areas, so the floor the
@@ -35,6 +43,22 @@ public final class WorldGenerator {
     /** The narrowest passage between two obstacles or an obstacle and a wall, metres. */
     static final double MIN_GAP = 0.12;
 
+    /** Robots' places drawn for a team world whatever its size, so that teams of 1 to this many share a layout. */
+    public static final int TEAM_SLOTS = 4;
+    /** The largest team a world is generated for. */
+    public static final int MAX_TEAM = 8;
+    /** The team experiment's name in files and on the command line. */
+    public static final String TEAM_DELIVERY = "team-delivery";
+
+    /** Mixed into a team world's seed after the experiments' 1 to 4: a constant, so that no new experiment changes team worlds. */
+    private static final long TEAM_SALT = 5;
+
+    /** What varies between the experiments' worlds; {@code experiment} is null for a team's. */
+    private record Recipe(Experiment experiment, String id, String command, String purpose, long salt, int robots,
+                          boolean storage, boolean charger, double minSide) {
+    }
+
+    private final Recipe recipe;
     private final Experiment experiment;
     private final long seed;
     private double maxSide = 3.0;
@@ -46,8 +70,32 @@ public final class WorldGenerator {
     private final List<double[]> free = new ArrayList<>(); // circles (x, z, r) kept clear of obstacles
 
     public WorldGenerator(Experiment experiment, long seed) {
-        this.experiment = experiment;
+        this(new Recipe(experiment, experiment.id(), experiment.id(), "experiment " + experiment.number(), experiment.ordinal() + 1L, 1,
+                experiment.needsStorage(), experiment.needsCharger(), 1.0), seed);
+    }
+
+    private WorldGenerator(Recipe recipe, long seed) {
+        this.recipe = recipe;
+        this.experiment = recipe.experiment();
         this.seed = seed;
+    }
+
+    /**
+     * {@return a generator of team-delivery worlds for {@code robots} Kheperas, named khepera1 to
+     * kheperaN} @throws IllegalArgumentException for fewer than 1 or more than {@link #MAX_TEAM} robots
+     */
+    public static WorldGenerator team(int robots, long seed) {
+        if (robots < 1 || robots > MAX_TEAM) {
+            throw new IllegalArgumentException("a team has 1 to " + MAX_TEAM + " robots, got " + robots);
+        }
+        return new WorldGenerator(new Recipe(null, TEAM_DELIVERY + "-" + robots, TEAM_DELIVERY + " --robots " + robots,
+                "the team-delivery experiment (" + robots + " Khepera" + (robots == 1 ? "" : "s") + ")",
+                TEAM_SALT, robots, true, true, 1.5), seed);
+    }
+
+    /** {@return the name of robot {@code i} (0-based) of a team} */
+    public static String teamRobot(int i) {
+        return "khepera" + (i + 1);
     }
 
     /** The largest arena side, metres (at least 1; default 3). */
@@ -62,28 +110,28 @@ public final class WorldGenerator {
     /** {@return the world text, checked by the loader} */
     public Generated generate() {
         // one draw mixes the seed: SplittableRandom(seed * gamma) made seed k's second draw seed k+1's first
-        random = new SplittableRandom(new SplittableRandom(seed ^ (experiment.ordinal() + 1L) * 0xD1B54A32D192ED03L).nextLong());
+        random = new SplittableRandom(new SplittableRandom(seed ^ recipe.salt() * 0xD1B54A32D192ED03L).nextLong());
         placed.clear();
         free.clear();
         model = experiment == Experiment.OBSTACLE_AVOIDANCE ? RobotModel.MYBOT : RobotModel.KHEPERA;
         // passages at least twice the Khepera's width: a gap the robot's own sensors read as a wall on
         // both sides is a dead end, not a passage
         gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
-        double width = round2(uniform(1.0, maxSide));
-        double depth = round2(uniform(1.0, maxSide));
+        double width = round2(uniform(recipe.minSide(), maxSide));
+        double depth = round2(uniform(recipe.minSide(), maxSide));
         halfW = width / 2;
         halfD = depth / 2;
-        String name = experiment.id() + "-gen-" + seed;
+        String name = recipe.id() + "-gen-" + seed;
         Json j = new Json();
         j.open().field("name", name)
-                .field("description", "Generated by `jacabot world generate " + experiment.id() + " --seed " + seed
-                        + "`: a random world for experiment " + experiment.number() + ".")
+                .field("description", "Generated by `jacabot world generate " + recipe.command() + " --seed " + seed
+                        + "`: a random world for " + recipe.purpose() + ".")
                 .raw("arena", "{ \"width\": " + num(width) + ", \"depth\": " + num(depth)
                         + ", \"wallThickness\": 0.02, \"wallHeight\": 0.1 }")
                 .raw("basicTimeStep", "8").raw("controlStep", "40").raw("seed", Long.toString(seed));
 
-        boolean needsStorage = experiment.needsStorage();
-        boolean needsCharger = experiment.needsCharger();
+        boolean needsStorage = recipe.storage();
+        boolean needsCharger = recipe.charger();
         double areaRadius = 0.06;
         double[] storage = null, charger = null;
         if (needsStorage) {
@@ -94,16 +142,30 @@ public final class WorldGenerator {
             charger = landmark(areaRadius, storage);
             free.add(new double[] {charger[0], charger[1], areaRadius + gap});
         }
-        // the robot first, with room around it
-        double[] robot = spot(model.radius(), model.radius() + 0.02, 0.05);
-        double heading = Math.round(random.nextDouble(0, 360));
-        placed.add(Footprint.circle(robot[0], robot[1], model.radius()));
-        free.add(new double[] {robot[0], robot[1], model.radius() + gap});
+        // the robots first, with room around each
+        List<String> robots = new ArrayList<>();
+        int slots = experiment != null ? 1 : Math.max(recipe.robots(), TEAM_SLOTS);
+        for (int i = 0; i < slots; i++) {
+            double[] robot = spot(model.radius(), model.radius() + 0.02, 0.05);
+            if (robot == null) {
+                throw new IllegalStateException("no room for robot " + (i + 1) + " (a bug: arenas hold " + MAX_TEAM + ")");
+            }
+            double heading = Math.round(random.nextDouble(0, 360));
+            placed.add(Footprint.circle(robot[0], robot[1], model.radius()));
+            free.add(new double[] {robot[0], robot[1], model.radius() + gap});
+            String battery = experiment != null && needsCharger ? ", \"battery\": 560"
+                    : experiment == null ? ", \"battery\": " + num(10 * Math.round(random.nextDouble(45, 70))) : "";
+            if (i < recipe.robots()) {
+                robots.add("{ \"name\": \"" + (experiment != null ? experiment.robot() : teamRobot(i)) + "\", \"model\": \""
+                        + model.name() + "\", \"x\": " + num(robot[0]) + ", \"z\": " + num(robot[1]) + ", \"heading\": "
+                        + num(heading) + battery + " }");
+            }
+        }
 
         // cylinders before the boxes, so that boxes keep clear of them
         List<String> cylinders = new ArrayList<>();
         List<String> cylinderIds = new ArrayList<>();
-        int nCylinders = switch (experiment) {
+        int nCylinders = experiment == null ? 10 + random.nextInt(5) : switch (experiment) {
             case OBSTACLE_AVOIDANCE -> 0;
             case OBJECT_PICKING -> 1 + random.nextInt(3);
             default -> 2 + random.nextInt(3);
@@ -149,7 +211,7 @@ public final class WorldGenerator {
             covered += sx * sz;
         }
 
-        List<String> events = faults(boxSpots, cylinderIds);
+        List<String> events = experiment == null ? List.of() : faults(boxSpots, cylinderIds);
 
         j.array("boxes", boxes);
         if (!cylinders.isEmpty()) {
@@ -162,9 +224,7 @@ public final class WorldGenerator {
             j.raw("charger", "{ \"x\": " + num(charger[0]) + ", \"z\": " + num(charger[1]) + ", \"radius\": "
                     + num(areaRadius) + ", \"power\": 20 }");
         }
-        String battery = needsCharger ? ", \"battery\": 560" : "";
-        j.array("robots", List.of("{ \"name\": \"" + experiment.robot() + "\", \"model\": \"" + model.name() + "\", \"x\": "
-                + num(robot[0]) + ", \"z\": " + num(robot[1]) + ", \"heading\": " + num(heading) + battery + " }"));
+        j.array("robots", robots);
         if (!events.isEmpty()) {
             j.array("events", events);
         }

@@ -27,6 +27,22 @@ class WorldAndSweepCommandTest {
     }
 
     @Test
+    void generateMakesTeamWorlds(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("team.json");
+        var r = CliRun.run("world", "generate", "team-delivery", "--robots", "3", "--seed", "4", "--out", file.toString());
+        assertEquals("0", r[0], r[2]);
+        assertEquals(3, WorldFileReader.read(file).robots().size());
+        var tooMany = CliRun.run("world", "generate", "team-delivery", "--robots", "9", "--seed", "4");
+        assertEquals("2", tooMany[0]);
+        assertEquals("error: --robots must be 1 to 8, got 9", tooMany[2].strip());
+        var notATeam = CliRun.run("world", "generate", "navigation", "--robots", "2", "--seed", "4");
+        assertEquals("2", notATeam[0]);
+        assertEquals("error: --robots is for team-delivery only; navigation has one robot", notATeam[2].strip());
+        assertEquals("error: unknown experiment 'flying' (expected one of obstacle-avoidance, object-picking, navigation, "
+                + "suspend-resume, team-delivery)", CliRun.run("world", "generate", "flying", "--seed", "1")[2].strip());
+    }
+
+    @Test
     void renderDrawsAPng(@TempDir Path dir) {
         Path png = dir.resolve("w.png");
         var r = CliRun.run("world", "render", ROOT.resolve("worlds/navigation.json").toString(), "--out", png.toString(),

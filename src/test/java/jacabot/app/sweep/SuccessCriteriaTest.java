@@ -80,4 +80,32 @@ class SuccessCriteriaTest {
         assertEquals(2, SuccessCriteria.episodesDue(List.of(done, open, late), 600));
         assertEquals(3, SuccessCriteria.episodesDue(List.of(done, open, late), 700));
     }
+
+    private static SuccessCriteria.TeamFigures team(int deliveries, List<Double> contacts, int emptied, int doubleClaims, double wait) {
+        return new SuccessCriteria.TeamFigures(600, 12, deliveries, contacts, emptied, doubleClaims, wait);
+    }
+
+    @Test
+    void aTeamNeedsTwoDeliveriesPerRobotCountedTogether() {
+        assertTrue(SuccessCriteria.judgeTeam(team(4, List.of(0.5, 1.9), 0, 0, 60)).success(), "4 for two robots, whoever made them");
+        assertEquals("3 team deliveries (< 4)", SuccessCriteria.judgeTeam(team(3, List.of(0.0, 0.0), 0, 0, 0)).reason());
+        var eight = new SuccessCriteria.TeamFigures(600, 12, 12, List.of(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0, 0, 0);
+        assertTrue(SuccessCriteria.judgeTeam(eight).success(), "never more than the world's cylinders");
+    }
+
+    @Test
+    void aTeamFailsOnContactEmptyBatteriesDoubleClaimsAndStarvation() {
+        var v = SuccessCriteria.judgeTeam(team(8, List.of(0.1, 2.0, 0.3), 1, 2, 61));
+        assertFalse(v.success());
+        assertEquals("robot 2: contact 2.0 s (>= 2 s); 1 battery empty; 2 double claims; waited 61 s for the charger (> 60 s)", v.reason());
+    }
+
+    @Test
+    void teamsShouldScaleAlmostLinearly() {
+        assertEquals(1.0, SuccessCriteria.scalingTarget(1));
+        assertEquals(1.7, SuccessCriteria.scalingTarget(2), 1e-12);
+        assertEquals(3.0, SuccessCriteria.scalingTarget(4), 1e-12);
+        assertEquals(2.4, SuccessCriteria.scalingTarget(3), 1e-12);
+        assertEquals(6.0, SuccessCriteria.scalingTarget(8), 1e-12);
+    }
 }

@@ -99,4 +99,48 @@ class WorldGeneratorTest {
         }
         assertTrue(shifted <= 2, shifted + " of 29 worlds have the previous seed's depth as width");
     }
+
+    /** A team's world: N Kheperas apart, about a dozen cylinders, a storage point and a charger; teams of 1 to 4 share a layout. */
+    @Test
+    void teamWorldsHoldTheTeamApartAndShareALayout() {
+        double apart = 2 * jacabot.sim.robot.RobotModel.KHEPERA.radius() + WorldGenerator.MIN_GAP;
+        for (long seed = 1; seed <= 30; seed++) {
+            WorldSpec one = WorldGenerator.team(1, seed).generate().spec();
+            for (int n : new int[] {1, 2, 3, 4, 8}) {
+                WorldSpec w = WorldGenerator.team(n, seed).generate().spec();
+                String where = "team of " + n + ", seed " + seed;
+                assertEquals(n, w.robots().size(), where);
+                for (int i = 0; i < n; i++) {
+                    RobotSpec r = w.robots().get(i);
+                    assertEquals("khepera" + (i + 1), r.name(), where);
+                    assertEquals("khepera", r.model(), where);
+                    for (int j = 0; j < i; j++) {
+                        RobotSpec q = w.robots().get(j);
+                        assertTrue(Math.hypot(r.x() - q.x(), r.z() - q.z()) > apart - 1e-9, where + ": robots " + j + " and " + i + " apart");
+                    }
+                }
+                assertTrue(w.cylinders().size() >= 10 && w.cylinders().size() <= 14, where + ": " + w.cylinders().size() + " cylinders");
+                assertNotNull(w.storage(), where);
+                assertNotNull(w.charger(), where);
+                assertTrue(w.arena().width() >= 1.5 && w.arena().depth() >= 1.5, where);
+                assertTrue(w.events().isEmpty(), where + ": no scripted faults yet");
+                if (n <= WorldGenerator.TEAM_SLOTS) {
+                    assertEquals(one.cylinders(), w.cylinders(), where);
+                    assertEquals(one.boxes(), w.boxes(), where);
+                    assertEquals(one.storage(), w.storage(), where);
+                    assertEquals(one.robots().get(0), w.robots().get(0), where);
+                }
+            }
+        }
+        assertEquals(WorldGenerator.team(2, 5).generate().json(), WorldGenerator.team(2, 5).generate().json());
+        assertNotEquals(WorldGenerator.team(2, 5).generate().json(), WorldGenerator.team(2, 6).generate().json());
+        assertEquals("team-delivery-2-gen-5", WorldGenerator.team(2, 5).generate().spec().name());
+    }
+
+    @Test
+    void aTeamHasOneToEightRobots() {
+        assertEquals("a team has 1 to 8 robots, got 0",
+                org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(0, 1)).getMessage());
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(9, 1));
+    }
 }

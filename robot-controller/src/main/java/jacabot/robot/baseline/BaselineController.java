@@ -30,6 +30,8 @@ public abstract class BaselineController {
     protected final double maxSpeed;
     private final Consumer<String> console;
     private long endMs = Long.MAX_VALUE;
+    /** What {@link #step()} does once the run is not over: the world's step, or a team's turn ({@link TeamBaseline}). */
+    private Runnable stepper;
 
     /** @param console where {@link #print} lines go (the C programs' printf), e.g. a run recorder's note */
     protected BaselineController(SimWorld world, String robotName, long seed, Consumer<String> console) {
@@ -38,6 +40,12 @@ public abstract class BaselineController {
         this.random = new Random(seed);
         this.maxSpeed = robot.getWheels().getMaxSpeed();
         this.console = console;
+        this.stepper = world::step;
+    }
+
+    /** Steps by {@code next} instead of stepping the world: a team's controllers step it together. */
+    final void stepWith(Runnable next) {
+        this.stepper = next;
     }
 
     /** Enables the devices the controller reads (first readings one control step later). */
@@ -65,7 +73,7 @@ public abstract class BaselineController {
         if (world.timeMs() >= endMs) {
             throw new RunOver();
         }
-        world.step();
+        stepper.run();
     }
 
     /** Steps for {@code seconds} of simulated time, keeping the current commands. */

@@ -10,8 +10,9 @@ import java.util.function.Supplier;
  * An infra-red distance sensor, after Webots' {@code DistanceSensor}. It casts {@code rays} rays
  * spread evenly over its aperture (one ray along the axis when {@code rays == 1}). Each ray that
  * meets an object at distance d gives {@code reflectance × table.output(d)}, where the
- * reflectance is the red channel of the object's colour / 255 (infra-red light is reflected like red
- * light: white and red objects fully, dark ones little); a ray that meets nothing gives
+ * reflectance of walls, boxes and cylinders is the red channel of their colour / 255 (infra-red light
+ * is reflected like red light: white and red objects fully, dark ones little) and that of a robot
+ * its model's shell reflectance ({@code RobotModel.shellReflectance}); a ray that meets nothing gives
  * {@code table.output(range)}. The reading is the average of the rays weighted by
  * {@code exp(-(angle / aperture)^2)}, plus a Gaussian noise of standard deviation
  * {@code noise(d) × value} from the sensor's own seeded generator.
@@ -111,7 +112,7 @@ public final class DistanceSensor extends Sensor {
             double w = rays == 1 ? 1 : Math.exp(-(angle / aperture) * (angle / aperture));
             RayHit hit = fan.get(i).isEmpty() ? null : fan.get(i).get(0);
             double d = hit == null ? range : hit.distance();
-            double reflectance = hit == null ? 1.0 : hit.color().red() / 255.0;
+            double reflectance = hit == null ? 1.0 : hit.reflectance();
             sum += w * reflectance * table.output(d);
             noiseSum += w * table.noise(d);
             weights += w;

@@ -110,7 +110,7 @@ final class Physics {
      * A robot body: a disc whose rotation only the wheels change (infinite inertia), heavy enough
      * that pushing boxes and cylinders does not slow it, frictionless against walls.
      */
-    SimObject addRobot(String name, double radius, double height, Rgb color, double x, double z, double heading) {
+    SimObject addRobot(String name, double radius, double height, Rgb color, double reflectance, double x, double z, double heading) {
         Body body = new Body();
         BodyFixture f = body.addFixture(Geometry.createCircle(radius));
         f.setFriction(0);
@@ -118,7 +118,7 @@ final class Physics {
         body.setMass(MassType.FIXED_ANGULAR_VELOCITY);
         body.setLinearDamping(0);
         body.setAngularDamping(0); // dyn4j's default is not 0: the wheels alone set the velocities
-        return register(new SimObject(name, ObjectKind.ROBOT, body, color, height, 2 * radius, 2 * radius, false), x, z, heading);
+        return register(new SimObject(name, ObjectKind.ROBOT, body, color, reflectance, height, 2 * radius, 2 * radius, false), x, z, heading);
     }
 
     private SimObject register(SimObject o, double x, double z, double heading) {
@@ -239,7 +239,7 @@ final class Physics {
                 while (at > 0 && hits.get(at - 1).distance() > best) {
                     at--; // nearest first; a tie goes after the hits already there, in the world's order
                 }
-                hits.add(at, new RayHit(best, o.color, o.height, o.id));
+                hits.add(at, new RayHit(best, o.color, o.height, o.id, o.reflectance));
             }
         }
     }

@@ -1,5 +1,6 @@
 package jacabot.sim.engine;
 
+import jacabot.sim.device.RayHit;
 import jacabot.sim.geom.Pose;
 import jacabot.sim.geom.Rgb;
 import org.dyn4j.dynamics.Body;
@@ -12,6 +13,8 @@ final class SimObject {
     final ObjectKind kind;
     final Body body;
     final Rgb color;
+    /** The share of infra-red light the surface returns, what the distance sensors read it by. */
+    final double reflectance;
     final double height;
     final double sizeX, sizeZ; // full sizes; a cylinder's diameter twice
     final boolean movable;
@@ -21,11 +24,18 @@ final class SimObject {
     /** The radius of the circle around the body's centre that holds the shape, for the rays' broad phase. */
     final double boundingRadius;
 
+    /** A painted object: its infra-red reflectance follows its colour ({@link RayHit#reflectanceOf}). */
     SimObject(String id, ObjectKind kind, Body body, Rgb color, double height, double sizeX, double sizeZ, boolean movable) {
+        this(id, kind, body, color, RayHit.reflectanceOf(color), height, sizeX, sizeZ, movable);
+    }
+
+    SimObject(String id, ObjectKind kind, Body body, Rgb color, double reflectance, double height, double sizeX, double sizeZ,
+              boolean movable) {
         this.id = id;
         this.kind = kind;
         this.body = body;
         this.color = color;
+        this.reflectance = reflectance;
         this.height = height;
         this.sizeX = sizeX;
         this.sizeZ = sizeZ;

@@ -11,10 +11,14 @@ import java.util.Optional;
  * (relative bearings: positive = towards the robot's right), times in seconds, energy in joules.
  *
  * @param radius    the body is a disc of this radius
+ * @param shellReflectance the share of infra-red light the body returns to another robot's distance
+ *                  sensors (0..1); a painted object's is its colour's red channel / 255, but a shell
+ *                  is rated on its own so that robots of any colour see each other (thesis Chapter 6:
+ *                  several robots in one world), as real Kheperas' proximity sensors see each other
  * @param speedUnit metres per second of one wheel speed unit
  * @param camera    null when the model has none (likewise gripper and battery)
  */
-public record RobotModel(String name, double radius, double height, Rgb color, double mass, double axleLength,
+public record RobotModel(String name, double radius, double height, Rgb color, double shellReflectance, double mass, double axleLength,
                          double speedUnit, double maxSpeed, List<DistanceSensorDef> distanceSensors,
                          CameraDef camera, GripperDef gripper, boolean gps, boolean compass, BatteryDef battery) {
 
@@ -61,8 +65,11 @@ public record RobotModel(String name, double radius, double height, Rgb color, d
             new double[] {0.12, 200, 0.01},
             new double[] {0.20, 0, 0.0});
 
+    /** How much infra-red light a robot's shell returns: almost a white wall's (1), whatever its colour. */
+    static final double SHELL_REFLECTANCE = 0.9;
+
     /** Webots' MyBot: a disc of 4.5 cm radius with two front infra-red sensors, "left" and "right". */
-    public static final RobotModel MYBOT = new RobotModel("mybot", 0.045, 0.08, new Rgb(60, 90, 200), 1.0, 0.09,
+    public static final RobotModel MYBOT = new RobotModel("mybot", 0.045, 0.08, new Rgb(60, 90, 200), SHELL_REFLECTANCE, 1.0, 0.09,
             0.001, 100,
             List.of(new DistanceSensorDef("left", -20, -20, 30, 3, MYBOT_TABLE),
                     new DistanceSensorDef("right", 20, 20, 30, 3, MYBOT_TABLE)),
@@ -73,7 +80,7 @@ public record RobotModel(String name, double radius, double height, Rgb color, d
      * "front-left", "front", "front-right", "right" at -90, -45, 0, 45, 90 degrees; a 64×8 camera
      * "camera" with a 60° field of view; gripper "gripper"; "gps"; "compass"; "battery".
      */
-    public static final RobotModel KHEPERA = new RobotModel("khepera", 0.0285, 0.03, new Rgb(40, 140, 60), 0.08, 0.053,
+    public static final RobotModel KHEPERA = new RobotModel("khepera", 0.0285, 0.03, new Rgb(40, 140, 60), SHELL_REFLECTANCE, 0.08, 0.053,
             0.0005, 100,
             List.of(new DistanceSensorDef("left", -90, -90, 20, 3, KHEPERA_TABLE),
                     new DistanceSensorDef("front-left", -45, -45, 20, 3, KHEPERA_TABLE),

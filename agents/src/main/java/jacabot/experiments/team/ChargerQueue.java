@@ -1,0 +1,83 @@
+package jacabot.experiments.team;
+
+import jacabot.cartago.AgentId;
+import jacabot.cartago.Artifact;
+import jacabot.cartago.GUARD;
+import jacabot.cartago.OPERATION;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The queue for a team's one charger (thesis Chapter 6, coordination among robots): a robot whose
+ * battery runs low asks for the charger and waits its turn, so that two robots never push each
+ * other off the charging area. The queue is first come, first served; its head holds the charger
+ * until it leaves the queue.
+ *
+ * <p>Observable property: {@code chargerQueue(List)}, the agents in order (atoms), the holder
+ * first. Operations: {@code requestCharger} (joins the tail; already queued, keeps its place),
+ * {@code awaitCharger} (waits, without holding the artifact, until the caller is the head; joins
+ * first if need be; fails if the caller leaves meanwhile), {@code leaveCharger} (leaves the queue wherever the caller stands, the charger
+ * if it held it; not queued is fine). An agent that leaves the workspace leaves the queue too
+ * ({@link #agentLeft}), so a robot whose agent died never keeps the others from the charger.
+ */
+public class ChargerQueue extends Artifact {
+    private final List<AgentId> queue = new ArrayList<>();
+
+    void init() {
+        defineObsProperty("chargerQueue", List.of());
+    }
+
+    /** Joins the tail of the queue, unless the caller is queued already. */
+    @OPERATION
+    void requestCharger() {
+        join(getCurrentOpAgentId());
+    }
+
+    /**
+     * Waits until the caller holds the charger (the queue's head), joining the queue if it has not.
+     * Fails with {@code not_queued} if the caller leaves the queue meanwhile (a {@code leaveCharger}
+     * from another of its intentions), so that no wait outlives its place.
+     */
+    @OPERATION
+    void awaitCharger() {
+        AgentId me = getCurrentOpAgentId();
+        join(me);
+        await("headOrGone", me);
+        if (!queue.contains(me)) {
+            failed(me.name() + " left the charger's queue while waiting", "not_queued");
+        }
+    }
+
+    @GUARD
+    boolean headOrGone(AgentId agent) {
+        return queue.isEmpty() || queue.get(0).equals(agent) || !queue.contains(agent);
+    }
+
+    /** Leaves the queue (and the charger, if the caller held it). */
+    @OPERATION
+    void leaveCharger() {
+        leave(getCurrentOpAgentId());
+    }
+
+    @Override
+    protected void agentLeft(AgentId agent) {
+        leave(agent);
+    }
+
+    private void join(AgentId agent) {
+        if (!queue.contains(agent)) {
+            queue.add(agent);
+            publish();
+        }
+    }
+
+    private void leave(AgentId agent) {
+        if (queue.remove(agent)) {
+            publish();
+        }
+    }
+
+    private void publish() {
+        getObsProperty("chargerQueue").updateValue(List.copyOf(queue));
+    }
+}

@@ -1,0 +1,67 @@
+package jacabot.experiments.team;
+
+import static jacabot.experiments.team.Ops.ok;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.cartago.AgentId;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.OpOutcome;
+import jacabot.cartago.Workspace;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+
+/** The charger's queue: first come, first served; the head holds the charger until it leaves. */
+class ChargerQueueTest {
+    /** {@return whether the call completes within 200 ms} (used only where it must not: a wait that does not end) */
+    private static boolean completesSoon(CompletableFuture<OpOutcome> call) {
+        try {
+            call.get(200, TimeUnit.MILLISECONDS);
+            return true;
+        } catch (Exception e) {
+            return false;
+        }
+    }
+
+    @Test
+    void theHeadHoldsTheChargerAndTheNextWaitsUntilItLeaves() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("charger", ChargerQueue.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "w", "charger");
+
+            ok(ws, a, "charger", "requestCharger");
+            ok(ws, b, "charger", "requestCharger");
+            ok(ws, a, "charger", "requestCharger"); // already queued: keeps its place
+            ok(ws, a, "charger", "awaitCharger");   // the head: at once
+            CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "charger", "awaitCharger");
+            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger");
+            assertFalse(completesSoon(bWaits), "b waits while a holds the charger");
+            assertEquals(List.of(List.of(List.of(a, b, c))), sees.values("chargerQueue"));
+
+            ok(ws, a, "charger", "leaveCharger");
+            assertTrue(bWaits.join().succeeded(), "b's turn");
+            assertFalse(cWaits.isDone(), "c still waits");
+            ok(ws, c, "charger", "leaveCharger"); // c gives up its place: its wait ends, failed
+            assertEquals("not_queued", ((OpOutcome.Failure) cWaits.join()).reasonFunctor());
+            assertEquals(List.of(List.of(List.of(b))), sees.values("chargerQueue"));
+            ok(ws, a, "charger", "leaveCharger"); // not queued: fine
+        }
+    }
+
+    @Test
+    void anAgentThatLeavesTheWorkspaceLeavesTheQueue() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("charger", ChargerQueue.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            ok(ws, a, "charger", "awaitCharger");
+            CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "charger", "awaitCharger");
+            assertFalse(completesSoon(bWaits));
+            ws.leave(a); // a's process ended while it held the charger
+            assertTrue(bWaits.join().succeeded(), "b holds the charger");
+        }
+    }
+}

@@ -1,0 +1,148 @@
+package jacabot.experiments.team;
+
+import static jacabot.experiments.team.Ops.fails;
+import static jacabot.experiments.team.Ops.ok;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.cartago.AgentId;
+import jacabot.cartago.CartagoException;
+import jacabot.cartago.OpFeedbackParam;
+import jacabot.cartago.OpOutcome;
+import jacabot.cartago.Workspace;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.CompletableFuture;
+import org.junit.jupiter.api.Test;
+
+/** The team's task board: one claim per cylinder, released, completed, freed when its agent leaves. */
+class TaskBoardTest {
+    private static int claim(Workspace ws, AgentId agent, double x, double z) {
+        OpOutcome.Success s = ok(ws, agent, "board", "claim", x, z, new OpFeedbackParam<Integer>());
+        return ((Number) s.outputs().get(2)).intValue();
+    }
+
+    @Test
+    void aPlaceClaimedByOneAgentCannotBeClaimedByAnotherWithinTheRadius() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            assertEquals(1, claim(ws, a, 0.30, 0.20));
+            fails("claimed_by", List.of(a, 1), ws, b, "board", "claim", 0.35, 0.20, new OpFeedbackParam<Integer>());
+            assertEquals(2, claim(ws, b, 0.45, 0.20), "15 cm away: another cylinder");
+            assertEquals(1, claim(ws, a, 0.31, 0.21), "a's own claim again: the same id, a newer place");
+            assertEquals(List.of(List.of(1, a, 0.31, 0.21), List.of(2, b, 0.45, 0.20)), sees.values("claimed"));
+            assertEquals(List.of(List.of(0)), sees.values("completed"));
+        }
+    }
+
+    @Test
+    void releaseAndCompleteBelongToTheClaimer() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            int id = claim(ws, a, 0, 0);
+            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.15, 0.0);
+            fails("not_yours", List.of(a, id), ws, b, "board", "release", id);
+            fails("not_yours", List.of(a, id), ws, b, "board", "complete", id);
+            fails("no_claim", List.of(99), ws, a, "board", "release", 99);
+            ok(ws, a, "board", "release", id);
+            int theirs = claim(ws, b, 0.15, 0);
+            ok(ws, b, "board", "complete", theirs);
+            fails("no_claim", List.of(theirs), ws, b, "board", "complete", theirs);
+            assertEquals(List.of(), sees.values("claimed"));
+            assertEquals(List.of(List.of(1)), sees.values("completed"));
+        }
+    }
+
+    @Test
+    void anAgentThatLeavesLosesItsClaims() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher cSees = Ops.watch(ws, "c", "board");
+            AgentId c = new AgentId("c");
+            claim(ws, a, 0, 0);
+            claim(ws, a, 1, 1);
+            int bs = claim(ws, b, 0.5, 0.5);
+            ok(ws, a, "board", "releaseAll");
+            assertEquals(List.of(List.of(bs, b, 0.5, 0.5)), cSees.values("claimed"));
+            claim(ws, a, 0, 0);
+
+            ws.leave(a);
+            ws.leave(b);
+            assertEquals(List.of(), cSees.values("claimed"));
+            assertEquals(List.of("claimsFreed[a, 1]", "claimsFreed[b, 1]"), cSees.signals);
+            claim(ws, c, 0, 0);
+        }
+    }
+
+    /**
+     * Eight agents claim the same twelve cylinders at once, each from its own rough estimate of
+     * their places and in its own order: every cylinder ends with exactly one claimer, and what an
+     * agent focusing the board perceives never shows two agents' claims on one cylinder.
+     */
+    @Test
+    void noTwoAgentsEverHoldAClaimOnTheSameCylinder() throws CartagoException {
+        int agents = 8, cylinders = 12;
+        double radius = TaskBoard.DEFAULT_RADIUS;
+        List<String> violations = Collections.synchronizedList(new ArrayList<>());
+        Ops.Watcher watcher = new Ops.Watcher() {
+            @Override
+            void changed() {
+                List<List<Object>> held = values("claimed");
+                for (int i = 0; i < held.size(); i++) {
+                    for (int j = i + 1; j < held.size(); j++) {
+                        List<Object> p = held.get(i), q = held.get(j);
+                        double d = Math.hypot((Double) p.get(2) - (Double) q.get(2), (Double) p.get(3) - (Double) q.get(3));
+                        if (d < radius && !p.get(1).equals(q.get(1))) {
+                            violations.add(p + " and " + q);
+                        }
+                    }
+                }
+            }
+        };
+        for (int round = 0; round < 5; round++) {
+            try (Workspace ws = Ops.workspace()) {
+                ws.createArtifact("board", TaskBoard.class);
+                AgentId w = ws.join("watcher", watcher);
+                ok(ws, w, "body_watcher", "focus", "board");
+                Random random = new Random(round);
+                Map<CompletableFuture<OpOutcome>, Integer> calls = new HashMap<>();
+                for (int k = 0; k < agents; k++) {
+                    AgentId agent = ws.join("r" + k, new Ops.Watcher());
+                    List<Integer> order = new ArrayList<>();
+                    for (int c = 0; c < cylinders; c++) {
+                        order.add(c);
+                    }
+                    Collections.shuffle(order, random);
+                    for (int c : order) {
+                        double x = 0.3 * (c % 4) + random.nextDouble(-0.03, 0.03), z = 0.3 * (c / 4) + random.nextDouble(-0.03, 0.03);
+                        calls.put(Ops.start(ws, agent, "board", "claim", x, z), c);
+                    }
+                }
+                Map<Integer, List<OpOutcome>> byCylinder = new HashMap<>();
+                calls.forEach((call, c) -> byCylinder.computeIfAbsent(c, x -> new ArrayList<>()).add(call.join()));
+                List<List<Object>> held = watcher.values("claimed");
+                assertEquals(cylinders, held.size(), "one claim per cylinder: " + held);
+                for (int c = 0; c < cylinders; c++) {
+                    List<OpOutcome> outcomes = byCylinder.get(c);
+                    assertEquals(1, outcomes.stream().filter(OpOutcome::succeeded).count(), "cylinder " + c + ": one claimer");
+                    assertTrue(outcomes.stream().filter(o -> !o.succeeded())
+                            .allMatch(o -> ((OpOutcome.Failure) o).reasonFunctor().equals("claimed_by")), outcomes::toString);
+                }
+                ws.leave(w);
+                watcher.properties.clear();
+            }
+        }
+        assertEquals(List.of(), violations);
+    }
+}
