@@ -7,7 +7,7 @@
 //  - "--b" and "+-b" stand for "-+b";
 //  - the balance window compares the orientation O: "O > D-0.6 & O < D+0.6";
 //  - "?orientation(0)" binds the orientation, and the robot turns to the opposite heading.
-// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// Tuning (not in the thesis): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
 // "avoiding" only suspends the next move, so a move plan in its .wait would later send
 // "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 // cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of

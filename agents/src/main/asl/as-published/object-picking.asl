@@ -9,7 +9,7 @@
 // Our own agent to the thesis' strategy. Fixed from the listings: "+reachCylinder(b)" that
 // added a second reachCylinder belief is "-+reachCylinder(b)"; the obstacle plan ignores
 // obstacles while reaching a cylinder ("not reachCylinder(true)", as the text says).
-// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// Tuning (not in the thesis): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
 // "avoiding" only suspends the next move, so a move plan in its .wait would later send
 // "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 // cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of

@@ -10,7 +10,7 @@
 //  - "?orientation(0)" / "orientation(0)" bind the orientation: "orientation(O)";
 //  - "!restoreOrientation(0)" restores the orientation marked when the battery went low;
 //  - after putting a cylinder down the robot turns to the opposite heading, modulo 360.
-// Tuning (issue 7): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
+// Tuning (not in the thesis): the obstacle, lateral-cylinder and cylinderDetected plans end the random motion that runs (.succeed_goal(move(_)));
 // "avoiding" only suspends the next move, so a move plan in its .wait would later send
 // "forward" in the middle of the avoiding turn (Chapter 4 §1.2; see obstacle-avoidance.asl).
 // cylinderBeyond is signalled when the lateral cylinder, turned towards, reaches the centre of
