@@ -39,7 +39,7 @@ class WorldAndSweepCommandTest {
         assertEquals("2", notATeam[0]);
         assertEquals("error: --robots is for team-delivery only; navigation has one robot", notATeam[2].strip());
         assertEquals("error: unknown experiment 'flying' (expected one of obstacle-avoidance, object-picking, navigation, "
-                + "suspend-resume, team-delivery)", CliRun.run("world", "generate", "flying", "--seed", "1")[2].strip());
+                + "suspend-resume, tidy-up, team-delivery)", CliRun.run("world", "generate", "flying", "--seed", "1")[2].strip());
     }
 
     @Test
