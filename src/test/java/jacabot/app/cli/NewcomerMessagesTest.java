@@ -48,7 +48,7 @@ class NewcomerMessagesTest {
         assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, null, null, false, 3));
         assertEquals(Path.of("runs/navigation-3"), ExperimentCommand.runFolder(nav, Path.of("worlds/navigation.json"),
                 Path.of("agents/src/main/asl/navigation.asl"), false, 3));
-        assertEquals(Path.of("runs/navigation-nav7-1"), ExperimentCommand.runFolder(nav, Path.of("/tmp/nav7.json"), null, false, 1));
+        assertEquals(Path.of("runs/navigation-nav7-1"), ExperimentCommand.runFolder(nav, Path.of("generated/nav7.json"), null, false, 1));
         assertEquals(Path.of("runs/navigation-nav7-my-agent-1"),
                 ExperimentCommand.runFolder(nav, Path.of("nav7.json"), Path.of("my-agent.asl"), false, 1));
         assertEquals(Path.of("runs/navigation-as-published-navigation-3"),
