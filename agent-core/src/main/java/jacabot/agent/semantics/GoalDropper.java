@@ -96,13 +96,12 @@ public final class GoalDropper {
                             ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
                 notifyEvent(e.trigger());
-                if (i == null && mode == Mode.FAIL) {
-                    // as Jason: a goal of its own intention, not yet handled, becomes its failure
-                    // event (no error annotation) when a -!g plan is relevant; else it is gone
-                    Trigger failTrigger = new Trigger(Trigger.Op.DEL, Trigger.Type.ACHIEVE, e.trigger().literal());
-                    if (ag.planLibrary().hasCandidate(failTrigger)) {
-                        c.addEvent(new Event(failTrigger, null));
-                    }
+                // as Jason: a goal not yet handled becomes its failure event (no error
+                // annotation), in the same intention, when a -!g plan is relevant
+                Trigger failTrigger = mode == Mode.FAIL
+                        ? new Trigger(Trigger.Op.DEL, Trigger.Type.ACHIEVE, e.trigger().literal()) : null;
+                if (failTrigger != null && (i == null || !i.isFinished()) && ag.planLibrary().hasCandidate(failTrigger)) {
+                    c.addEvent(new Event(failTrigger, i));
                 } else if (i != null && !i.isFinished()) {
                     if (mode == Mode.SUCCEED) {
                         ag.cycle().removeActionReQueue(i);
