@@ -85,7 +85,7 @@ public final class SimulationBenchmark {
         row("physics (dyn4j)", sim[0], wall, steps);
         row("devices (sensors, camera, gripper, battery)", sim[1], wall, steps);
         row("sampling the devices into SensorInfo", c.samplingNanos(), wall, steps);
-        row("serialization (ObjectOutputStream, ObjectInputStream)", serialization, wall, steps);
+        row("serialization (the frames' encoding and decoding)", serialization, wall, steps);
         row("socket writes (the step's frame)", c.writingNanos(), wall, steps);
         row("artifact (middleware steps, operation threads)", agent[0], wall, steps);
         row("reasoning (agent cycles)", agent[1], wall, steps);

@@ -58,6 +58,36 @@ public final class SensorInfo implements Serializable {
         this(id, 0, NO_INTS, 0, 0, 0, values.clone());
     }
 
+    /** A reading as the compact codec read it (null arrays: empty); the arrays are not copied. */
+    static SensorInfo decoded(int id, double value, int[] ints, double x, double y, double z, double[] doubles) {
+        return new SensorInfo(id, value, ints == null ? NO_INTS : ints, x, y, z, doubles == null ? NO_DOUBLES : doubles);
+    }
+
+    // the fields as they are, for the codec (no copies)
+    double value() {
+        return value;
+    }
+
+    double x() {
+        return x;
+    }
+
+    double y() {
+        return y;
+    }
+
+    double z() {
+        return z;
+    }
+
+    int[] ints() {
+        return intValues;
+    }
+
+    double[] doubles() {
+        return doubleValues;
+    }
+
     public int getId() {
         return id;
     }

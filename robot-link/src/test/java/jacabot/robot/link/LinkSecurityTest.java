@@ -191,7 +191,7 @@ class LinkSecurityTest {
             out.writeLong(0);
             out.writeLong(0);
             out.writeInt(1);
-            out.writeObject(new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
+            SensorInfoCodec.write(out, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
         }
         out.flush();
         var never = new SensorDataReader(new ByteArrayInputStream(raw.toByteArray()), limits);
