@@ -18,7 +18,7 @@ import javax.net.ssl.SSLContext;
  *                      ({@link MiddlewareLink#setLiveness})
  * @param queueCapacity events kept for {@link MiddlewareLink#receive()}; when nobody reads, the oldest
  *                      readings go (a connection event is never dropped)
- * @param limits        the deserialization filter's limits
+ * @param limits        the sensor data stream's limits (array lengths, bytes per reading and batch)
  * @param clock         the timestamp clock shared with the controller
  * @param log           where connections, refusals and closing reasons are reported
  * @param secret        the key shared with the controller; null: the user's secret file

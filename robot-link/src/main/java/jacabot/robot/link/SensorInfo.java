@@ -13,7 +13,8 @@ import java.util.Optional;
  * triple, an int array (image sections or RGB) or a double array.
  *
  * <p>Unlike the thesis' class, the double-array constructor keeps the id, and the value fields are
- * primitive so that the deserialization filter only has to allow this class and primitive arrays.
+ * primitive. It stays {@code Serializable}, as in the thesis, but the link writes it with
+ * {@link SensorInfoCodec} (protocol version 3).
  */
 public final class SensorInfo implements Serializable {
     private static final long serialVersionUID = 1L;
