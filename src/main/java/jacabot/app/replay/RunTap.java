@@ -1,13 +1,16 @@
 package jacabot.app.replay;
 
-import jacabot.app.inspector.MindWatch;
+import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.Inspector;
+import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
 import jacabot.app.run.LockstepRun;
+import jacabot.experiments.link.StepData;
 import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
 import jacabot.sim.SimWorld;
+import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.robot.Robot;
 import java.io.Closeable;
@@ -15,6 +18,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Supplier;
 
 /**
  * Taps a lockstep run after each control step, while the agent is idle: captures the robot
@@ -27,9 +31,11 @@ public final class RunTap implements Closeable {
     private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
-    private volatile jacabot.app.inspector.Debugger debugger;
+    private volatile Debugger debugger;
+    private final LockstepRun run;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
+        this.run = run;
         this.world = run.world();
         this.robot = world.robots().get(0);
         this.log = log;
@@ -70,7 +76,7 @@ public final class RunTap implements Closeable {
         inspector.add("robot").archive(archive);
     }
 
-    private void afterStep(jacabot.experiments.link.StepData data, List<Command> commands) {
+    private void afterStep(StepData data, List<Command> commands) {
         var text = new ArrayList<String>(commands.size());
         commands.forEach(c -> text.add(c.toString()));
         if (!commands.isEmpty()) {
@@ -78,7 +84,7 @@ public final class RunTap implements Closeable {
         }
         MindState mind = watch == null ? null : watch.capture();
         if (log != null) {
-            List<jacabot.sim.engine.ObjectState> objects;
+            List<ObjectState> objects;
             StepLog.Body body;
             synchronized (world) {
                 // not world.snapshot(): it copies the whole trajectory, every step
@@ -96,14 +102,24 @@ public final class RunTap implements Closeable {
         }
     }
 
-    /** Halts the run on {@code d}'s breakpoints, after the step is logged and shown. {@return this} */
-    public RunTap debugger(jacabot.app.inspector.Debugger d) {
+    /**
+     * Halts the run on {@code d}'s breakpoints, after the step is logged and shown, and before a
+     * reasoning cycle when {@code d} steps one cycle. {@return this}
+     */
+    public RunTap debugger(Debugger d) {
         this.debugger = d;
+        if (d != null && watch != null) {
+            run.beforeCycle(a -> {
+                if (watch.watches(a)) {
+                    d.beforeCycle(watch::peekBeforeCycle);
+                }
+            });
+        }
         return this;
     }
 
-    /** As {@link #debugger(jacabot.app.inspector.Debugger)}, also driven from {@code inspector}'s page (if not null). */
-    public RunTap debugger(Inspector inspector, jacabot.app.inspector.Debugger d) {
+    /** As {@link #debugger(Debugger)}, also driven from {@code inspector}'s page (if not null). */
+    public RunTap debugger(Inspector inspector, Debugger d) {
         if (inspector != null) {
             inspector.debugger(d);
         }
@@ -115,7 +131,7 @@ public final class RunTap implements Closeable {
     }
 
     /** {@return the first robot's body now, without commands (a real-time run sends them over its socket)} */
-    public static java.util.function.Supplier<RobotView> robotView(SimWorld world) {
+    public static Supplier<RobotView> robotView(SimWorld world) {
         Robot r = world.robots().get(0);
         return () -> view(world, r, List.of());
     }
@@ -124,7 +140,7 @@ public final class RunTap implements Closeable {
         synchronized (world) {
             var p = robot.pose();
             var placed = new ArrayList<RobotView.Placed>();
-            for (jacabot.sim.engine.ObjectState o : world.supervisor().objects()) {
+            for (ObjectState o : world.supervisor().objects()) {
                 if (o.movable()) {
                     placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
                             StepLog.round(o.pose().heading()), o.carriedBy()));

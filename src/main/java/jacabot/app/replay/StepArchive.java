@@ -16,6 +16,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import java.util.zip.DataFormatException;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.Inflater;
@@ -246,6 +247,22 @@ public final class StepArchive implements MindArchive {
             return s.timeMs() < end;
         });
         return out.size() > max ? new ArrayList<>(out.subList(out.size() - max, out.size())) : out;
+    }
+
+    @Override
+    public void forEachMind(Consumer<MindState> each) throws IOException {
+        if (chunkAt(0) < 0) {
+            return;
+        }
+        long end = lastTimeMs(); // a member being written is never read
+        var state = StepState.from(header);
+        read(0, (n, s) -> {
+            if (s.timeMs() > end) {
+                return false;
+            }
+            each.accept(state.apply(s));
+            return s.timeMs() < end;
+        });
     }
 
     static RobotView view(StepLog.Step s, Map<String, StepLog.Moved> objects) {
