@@ -11,6 +11,7 @@ import jacabot.app.inspector.MindWatch;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.replay.BaselineTap;
 import jacabot.app.replay.RealTimeTap;
+import jacabot.app.replay.PageEdits;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepLog;
 import jacabot.app.run.AgentSource;
@@ -232,11 +233,16 @@ final class ExperimentCommand implements Callable<Integer> {
                 ConsoleLog.lines(log::result));
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
         if (!breaks.isEmpty() || inspector != null) {
+            Debugger debugger;
             try { // the page can halt the run too
-                tap.debugger(inspector, breaks.isEmpty() ? new Debugger()
-                        : DebugConsole.start(breaks, System.in, System.out));
+                debugger = breaks.isEmpty() ? new Debugger() : DebugConsole.start(breaks, System.in, System.out);
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
+            }
+            tap.debugger(inspector, debugger);
+            if (inspector != null && tap.header() != null) { // what-ifs from the page, plans reloaded at a halt
+                inspector.edits(PageEdits.live(inspector, outDir, tap.header(), experiment, source,
+                        () -> SimWorld.of(WorldFileReader.read(worldFile)), run.mas().agent("robot"), debugger));
             }
         }
         var recorder = RunRecorder.attach(simWorld, robot.name());

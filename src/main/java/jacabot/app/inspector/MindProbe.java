@@ -37,6 +37,7 @@ public final class MindProbe {
     private long seq;
     private int planCount = -1;
     private List<String> plans = List.of();
+    private List<Plan> planObjects = List.of();
 
     private MindProbe(Agent agent) {
         this.agent = agent;
@@ -124,16 +125,36 @@ public final class MindProbe {
     /** {@return the plan library as text, re-read only when its size changes (.add_plan, .remove_plan)} */
     public List<String> plans() {
         List<Plan> now = agent.planLibrary().plans();
-        if (now.size() != planCount) {
-            var out = new ArrayList<String>();
-            for (Plan p : now) {
-                String where = p.source() == null || p.source().line() == 0 ? "" : "   // " + p.source();
-                out.add(withoutSourceAnnots(p) + where);
-            }
-            plans = List.copyOf(out);
+        if (now.size() != planCount || !samePlans(now)) {
+            plans = planTexts(now);
+            planObjects = List.copyOf(now);
             planCount = now.size();
         }
         return plans;
+    }
+
+    /** {@return whether the library holds the same plans as when last read (a reload may keep their number)} */
+    private boolean samePlans(List<Plan> now) {
+        for (int i = 0; i < now.size(); i++) {
+            if (now.get(i) != planObjects.get(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** {@return an agent's plan library as the page shows it: each plan, and where it was written} */
+    public static List<String> planTexts(Agent agent) {
+        return planTexts(agent.planLibrary().plans());
+    }
+
+    private static List<String> planTexts(List<Plan> library) {
+        var out = new ArrayList<String>();
+        for (Plan p : library) {
+            String where = p.source() == null || p.source().line() == 0 ? "" : "   // " + p.source();
+            out.add(withoutSourceAnnots(p) + where);
+        }
+        return List.copyOf(out);
     }
 
     private static String withoutSourceAnnots(Plan p) {

@@ -2,6 +2,7 @@ package jacabot.app.replay;
 
 import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.Inspector;
+import jacabot.app.inspector.MindProbe;
 import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
@@ -9,6 +10,7 @@ import jacabot.app.run.LockstepRun;
 import jacabot.experiments.link.StepData;
 import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
@@ -31,8 +33,10 @@ public final class RunTap implements Closeable {
     private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
+    private volatile List<SensorInfo> lastReadings = List.of();
     private volatile Debugger debugger;
     private final LockstepRun run;
+    private StepLog.Header header;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.run = run;
@@ -57,7 +61,8 @@ public final class RunTap implements Closeable {
         WorldSnapshot start = w.snapshot();
         if (outDir != null) {
             var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), w.name(), w.seed(), w.controlStep(),
-                    w.robots().get(0).name(), agentFile, start);
+                    w.robots().get(0).name(), agentFile, start,
+                    run.mas().agent("robot") == null ? null : MindProbe.planTexts(run.mas().agent("robot")));
             log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
             if (inspector != null) {
                 archive(inspector, log, outDir.resolve(StepLog.FILE), header);
@@ -66,7 +71,14 @@ public final class RunTap implements Closeable {
         if (inspector != null) {
             inspector.world(start);
         }
-        return new RunTap(run, inspector, log);
+        var tap = new RunTap(run, inspector, log);
+        tap.header = log == null ? null : log.header();
+        return tap;
+    }
+
+    /** {@return the step log's header, or null without a step log} */
+    public StepLog.Header header() {
+        return header;
     }
 
     /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */
@@ -82,6 +94,7 @@ public final class RunTap implements Closeable {
         if (!commands.isEmpty()) {
             lastCommands = text;
         }
+        lastReadings = data.readings();
         MindState mind = watch == null ? null : watch.capture();
         if (log != null) {
             List<ObjectState> objects;
@@ -127,16 +140,18 @@ public final class RunTap implements Closeable {
     }
 
     private RobotView robotView() {
-        return view(world, robot, lastCommands);
+        var readings = new ArrayList<String>();
+        lastReadings.forEach(r -> readings.add(StepLog.reading(r)));
+        return view(world, robot, lastCommands, readings);
     }
 
     /** {@return the first robot's body now, without commands (a real-time run sends them over its socket)} */
     public static Supplier<RobotView> robotView(SimWorld world) {
         Robot r = world.robots().get(0);
-        return () -> view(world, r, List.of());
+        return () -> view(world, r, List.of(), List.of());
     }
 
-    private static RobotView view(SimWorld world, Robot robot, List<String> commands) {
+    private static RobotView view(SimWorld world, Robot robot, List<String> commands, List<String> readings) {
         synchronized (world) {
             var p = robot.pose();
             var placed = new ArrayList<RobotView.Placed>();
@@ -148,7 +163,7 @@ public final class RunTap implements Closeable {
             }
             return new RobotView(world.timeMs(), p.x(), p.z(), p.heading(),
                     robot.hasBattery() ? robot.getBattery().energy() : null, robot.getWheels().getLeftSpeed(),
-                    robot.getWheels().getRightSpeed(), commands, placed);
+                    robot.getWheels().getRightSpeed(), commands, placed, readings);
         }
     }
 

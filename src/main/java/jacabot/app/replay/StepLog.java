@@ -56,9 +56,12 @@ public final class StepLog {
     private StepLog() {
     }
 
-    /** Run facts for the header. */
+    /**
+     * Run facts for the header; {@code plans}: the agent's plan library at the start, as the
+     * inspector shows it (null: no agent, or not known when the log opened).
+     */
     public record Header(String format, String experiment, String world, long seed, int controlStep, String robot,
-            String agentFile, WorldSnapshot start) {
+            String agentFile, WorldSnapshot start, List<String> plans) {
     }
 
     /** A robot's body in one step. {@code battery} is null without a battery. */
@@ -127,7 +130,10 @@ public final class StepLog {
         private List<String> events = List.of();
         private final Map<String, Moved> objects = new HashMap<>();
 
+        private final Header header;
+
         public Writer(Path file, Header header) throws IOException {
+            this.header = header;
             Files.createDirectories(file.toAbsolutePath().getParent());
             this.file = Files.newOutputStream(file);
             for (ObjectState o : header.start().objects()) {
@@ -135,6 +141,10 @@ public final class StepLog {
             }
             line(JSON.valueToTree(header));
             flushChunk();
+        }
+
+        public Header header() {
+            return header;
         }
 
         /** Hands every gzip member of steps, once it is on disk, to {@code sink} (the inspector's index). */
@@ -279,19 +289,6 @@ public final class StepLog {
                     mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
         }
 
-        private static String reading(SensorInfo s) {
-            var sb = new StringBuilder().append(s.kind().map(Enum::name).orElse("#" + s.getId())).append(' ');
-            if (s.getIntValues().length > 0) {
-                sb.append(java.util.Arrays.toString(s.getIntValues()));
-            } else if (s.getCoord()[0] != 0 || s.getCoord()[1] != 0 || s.getCoord()[2] != 0) {
-                double[] c = s.getCoord();
-                sb.append('[').append(round(c[0])).append(", ").append(round(c[1])).append(", ").append(round(c[2])).append(']');
-            } else {
-                sb.append(round(s.getVal()));
-            }
-            return sb.toString();
-        }
-
         private void line(JsonNode n) {
             try {
                 JSON.writeValue(chunk, n);
@@ -311,6 +308,20 @@ public final class StepLog {
                 file.close();
             }
         }
+    }
+
+    /** {@return a reading as the step log writes it: {@code KIND value}} */
+    static String reading(SensorInfo s) {
+        var sb = new StringBuilder().append(s.kind().map(Enum::name).orElse("#" + s.getId())).append(' ');
+        if (s.getIntValues().length > 0) {
+            sb.append(java.util.Arrays.toString(s.getIntValues()));
+        } else if (s.getCoord()[0] != 0 || s.getCoord()[1] != 0 || s.getCoord()[2] != 0) {
+            double[] c = s.getCoord();
+            sb.append('[').append(round(c[0])).append(", ").append(round(c[1])).append(", ").append(round(c[2])).append(']');
+        } else {
+            sb.append(round(s.getVal()));
+        }
+        return sb.toString();
     }
 
     // ---- reading ---------------------------------------------------------------------------------------

@@ -31,7 +31,7 @@ public final class SyntheticRun {
     public static void write(Path dir, int seconds) throws IOException, jacabot.sim.io.WorldFileException {
         SimWorld w = SimWorld.load(ROOT.resolve("worlds/navigation.json"));
         var header = new StepLog.Header(StepLog.FORMAT, "navigation", w.name(), 1, 40, w.robots().get(0).name(),
-                "synthetic.asl", w.snapshot());
+                "synthetic.asl", w.snapshot(), null);
         long total = seconds * 1000L;
         try (var log = new StepLog.Writer(dir.resolve(StepLog.FILE), header)) {
             for (long t = 40; t <= total; t += 40) {
