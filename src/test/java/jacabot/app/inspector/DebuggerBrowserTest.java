@@ -165,7 +165,9 @@ class DebuggerBrowserTest {
                         "every distance sensor's ray is drawn");
                 assertTrue((Boolean) script(browser, "return window.drawnRays.every(r => r.value != null)"),
                         "each with its reading");
+                script(browser, "document.getElementById('timeline').scrollIntoView();");
                 Browser.screenshot(browser, "inspector-time-views.png");
+                script(browser, "window.scrollTo(0, 0);");
 
                 // a what-if from 3 s with the edited agent
                 script(browser, "document.getElementById('program').value = arguments[0];"
@@ -192,6 +194,7 @@ class DebuggerBrowserTest {
                 wait.until(b -> text(b, "agents").contains("what-if 1"));
                 wait.until(b -> ((String) script(b, "const o = document.querySelector('#agents button.on'); return o ? o.textContent : ''"))
                         .startsWith("what-if 1"));
+                wait.until(b -> (Boolean) script(b, "return Object.keys(others).includes('robot') && others.robot.length > 1"));
                 Browser.screenshot(browser, "inspector-what-if.png");
             } finally {
                 browser.quit();
