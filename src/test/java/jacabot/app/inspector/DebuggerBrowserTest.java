@@ -97,6 +97,8 @@ class DebuggerBrowserTest {
             try {
                 browser.get(inspector.address().toString());
                 var wait = new WebDriverWait(browser, Duration.ofSeconds(60), Duration.ofMillis(100));
+                wait.withMessage(() -> "the run: " + (debugger.halted() == null ? "running" : debugger.halted().reason())
+                        + "; the page: " + script(browser, "return JSON.stringify(window.debugState || null).slice(0, 300)"));
                 wait.until(b -> text(b, "halted").contains("paused"));
                 script(browser, "document.getElementById('break').value = 'label:drive';");
                 click(browser, "add-break");

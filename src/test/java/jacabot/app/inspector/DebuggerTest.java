@@ -20,6 +20,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.TreeSet;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.zip.GZIPInputStream;
 import org.junit.jupiter.api.Test;
@@ -62,7 +63,7 @@ class DebuggerTest {
                 break;
             }
         }
-        var seen = new java.util.TreeSet<String>();
+        var seen = new TreeSet<String>();
         Replay.open(plain).frames().forEach(f -> f.mind().selections().forEach(x -> seen.add(x.plan())));
         assertTrue(predicted >= 1500, "the plain run selects @drive after its first wait: " + seen + "\n" + expected);
 
