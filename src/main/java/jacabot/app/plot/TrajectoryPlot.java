@@ -7,7 +7,6 @@ import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.geom.Rgb;
 import jacabot.sim.viewer.PngRenderer;
 import java.awt.Color;
-import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
@@ -43,7 +42,7 @@ public final class TrajectoryPlot {
             g.setColor(new Color(30, 30, 36));
             g.fillRect(0, size, size, LEGEND);
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            legend(g, entries(s), size, size + 16);
+            MapPlot.legend(g, entries(s), size, 10, size + 16);
         } finally {
             g.dispose();
         }
@@ -77,22 +76,5 @@ public final class TrajectoryPlot {
 
     private static Color color(Rgb c) {
         return new Color(c.red(), c.green(), c.blue());
-    }
-
-    private static void legend(Graphics2D g, Map<String, Color> entries, int width, int y0) {
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        int x = 10, y = y0;
-        for (var e : entries.entrySet()) {
-            int w = g.getFontMetrics().stringWidth(e.getKey());
-            if (x + w + 24 > width) {
-                x = 10;
-                y += 15;
-            }
-            g.setColor(e.getValue());
-            g.fillRect(x, y - 8, 14, 8);
-            g.setColor(Color.WHITE);
-            g.drawString(e.getKey(), x + 18, y);
-            x += w + 30;
-        }
     }
 }

@@ -152,6 +152,8 @@ class DebuggerBrowserTest {
                 var wait = new WebDriverWait(browser, Duration.ofSeconds(120), Duration.ofMillis(200));
                 wait.until(b -> ((String) script(b, "return document.getElementById('program').value")).contains("@drive"));
 
+                wait.until(b -> text(b, "plans").contains("@drive +!drive(N)")); // the plan library of a recorded run
+
                 // the time views of the recorded run
                 click(browser, "timeline-load");
                 wait.until(b -> ((Number) script(b, "return (window.timelineSpans || []).length")).intValue() > 0);

@@ -102,6 +102,9 @@ class WhatIfTest {
             reloader.join(10_000);
         }
         assertEquals(null, failed[0]);
+        List<String> plans = StepArchive.open(dir, (t, x, z) -> {
+        }).header().plans();
+        assertTrue(plans.stream().anyMatch(p -> p.startsWith("@drive +!drive(N)")), "the plan library at the start, in the header: " + plans);
         List<String> steps = steps(dir);
         int at = 0;
         while (time(steps.get(at)) < AT) {
