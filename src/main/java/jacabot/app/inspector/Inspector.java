@@ -22,6 +22,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -269,10 +270,20 @@ public final class Inspector implements AutoCloseable {
         }
     }
 
-    private static List<TimeViews.Span> timeline(MindHistory h) {
+    /** The timeline read last, per agent, and up to when: a recorded run's is read once. */
+    private final Map<MindHistory, Map.Entry<Long, List<TimeViews.Span>>> timelines = new ConcurrentHashMap<>();
+
+    private List<TimeViews.Span> timeline(MindHistory h) {
+        long upTo = h.range()[1];
+        var known = timelines.get(h);
+        if (known != null && known.getKey() == upTo) {
+            return known.getValue();
+        }
         var t = new TimeViews.Timeline();
         h.forEachMind(t::add);
-        return t.spans();
+        List<TimeViews.Span> spans = t.spans();
+        timelines.put(h, Map.entry(upTo, spans));
+        return spans;
     }
 
     private static List<TimeViews.Change> beliefHistory(MindHistory h, String name) {
