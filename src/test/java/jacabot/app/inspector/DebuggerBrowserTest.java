@@ -169,9 +169,12 @@ class DebuggerBrowserTest {
                         "every distance sensor's ray is drawn");
                 assertTrue((Boolean) script(browser, "return window.drawnRays.every(r => r.value != null)"),
                         "each with its reading");
-                script(browser, "document.getElementById('timeline').scrollIntoView();");
+                // (the plan library names the test's temporary folder: out of the picture, which goes to the docs)
+                script(browser, "document.getElementById('plans').parentElement.style.display = 'none';"
+                        + " document.getElementById('timeline').scrollIntoView();");
                 Browser.screenshot(browser, "inspector-time-views.png");
-                script(browser, "window.scrollTo(0, 0);");
+                script(browser, "document.getElementById('plans').parentElement.style.display = '';"
+                        + " window.scrollTo(0, 0);");
 
                 // a what-if from 3 s with the edited agent
                 script(browser, "document.getElementById('program').value = arguments[0];"
@@ -199,6 +202,8 @@ class DebuggerBrowserTest {
                 wait.until(b -> ((String) script(b, "const o = document.querySelector('#agents button.on'); return o ? o.textContent : ''"))
                         .startsWith("what-if 1"));
                 wait.until(b -> (Boolean) script(b, "return Object.keys(others).includes('robot') && others.robot.length > 1"));
+                // the other agent's robot drawn at the same instant (a team's run draws every robot)
+                wait.until(b -> (Boolean) script(b, "return window.drawnRobots.length === 2 && window.drawnRobots[1].name === 'robot'"));
                 Browser.screenshot(browser, "inspector-what-if.png");
             } finally {
                 browser.quit();
