@@ -36,7 +36,12 @@ import java.util.function.Consumer;
  * JDK's {@code com.sun.net.httpserver}; the page follows the run through server-sent events
  * ({@code /api/stream}: every kept frame with the deliberation up to it, nothing polled) and reads
  * the past through {@code /api/state?agent=A&t=MS}. The agents' threads only put immutable frames
- * into each {@link MindHistory}; the server's threads only read them.
+ * into each {@link MindHistory}; the server's threads only read them. Beside the frames: the
+ * {@link Debugger}'s controls ({@code /api/debug}), the time views over the whole run
+ * ({@code /api/timeline}, {@code /api/belief}, {@code /api/artifacts}: {@link TimeViews}) and, when
+ * the run allows it ({@link RunEdits}), what-ifs and plan reloads ({@code /api/whatif},
+ * {@code /api/reload}). Every agent added is a history of its own: a team's robots, or a what-if
+ * beside the run it came from.
  *
  * <p>Guarded as Jupyter is: every request must carry the run's secret token (the address printed
  * at the start holds it: {@code ?token=...}; the page then keeps it in a cookie), come from no
