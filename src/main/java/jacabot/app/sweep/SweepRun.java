@@ -165,7 +165,7 @@ public final class SweepRun {
                     s.storageEntriesEmpty(), s.batteryEmptied(), counted ? SuccessCriteria.episodesDue(episodes, s.duration()) : 0,
                     completed, end == null ? 0 : end.cylinders(), end == null ? 0 : end.stored(), end != null && end.parked());
         }
-        SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f);
+        SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f, PhysicalBounds.of(job.experiment(), job.spec()));
         List<String> reasons = new ArrayList<>();
         if (!status.equals(RunOutcome.OK)) {
             reasons.add(status + ": " + message);
