@@ -68,7 +68,8 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--seeds", paramLabel = "SEEDS", description = "run seeds: 1..N, N or a list (default ${DEFAULT-VALUE})")
     private String seeds = "1..2";
 
-    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
+    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline (the thesis' C programs) and/or equal (the equal-capability baseline: "
+            + "the same programs with the agents' strategies) (default agent,baseline)")
     private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
 
     @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/src/main/asl/as-published/navigation.asl, found from any folder (default: the packaged one)")
@@ -129,8 +130,8 @@ final class SweepCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--jobs must be at least 1, got " + jobs);
             }
             for (String c : controllers) {
-                if (!c.equals(SweepJob.AGENT) && !c.equals(SweepJob.BASELINE)) {
-                    throw new IllegalArgumentException("unknown controller '" + c + "' (expected agent, baseline)");
+                if (!SweepJob.CONTROLLERS.contains(c)) {
+                    throw new IllegalArgumentException("unknown controller '" + c + "' (expected agent, baseline, equal)");
                 }
             }
             if (shard != null) {

@@ -110,7 +110,7 @@ public final class SweepPlan {
         for (World w : worlds) {
             for (long seed : seeds) {
                 for (String c : controllers) {
-                    if (c.equals(SweepJob.BASELINE) && !w.experiment().hasBaseline()) {
+                    if (!c.equals(SweepJob.AGENT) && !w.experiment().hasBaseline()) {
                         continue; // tidy-up: composed of the agents' skills, no C program to compare with
                     }
                     all.add(new SweepJob(w.experiment(), c, w.name(), w.file(), w.spec(), w.problem(), seed));

@@ -22,6 +22,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 
 /**
  * Makes one {@link SweepJob}: loads nothing (the job holds the checked world), builds a fresh world
@@ -115,10 +116,12 @@ public final class SweepRun {
                     }
                 }
             } else {
-                BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
+                Consumer<String> note = line -> {
                     recorder.note(line);
                     console.line(line);
-                });
+                };
+                BaselineController c = job.controller().equals(SweepJob.EQUAL) ? BaselineRunner.createEqual(e, world, job.seed(), note)
+                        : BaselineRunner.create(e, world, job.seed(), note);
                 c.runFor(seconds);
             }
         } catch (Throwable t) {

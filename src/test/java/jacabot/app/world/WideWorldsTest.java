@@ -51,7 +51,7 @@ class WideWorldsTest {
         int walls = 0, corridors = 0, closed = 0, sliding = 0, open = 0, inside = 0;
         double narrowest = 1, smallest = 9, largest = 0;
         for (Experiment e : Experiment.values()) {
-            for (long seed = 1; seed <= 25; seed++) {
+            for (long seed = 1; seed <= 12; seed++) {
                 WorldSpec w = new WorldGenerator(e, seed).profile(Profile.WIDE).generate().spec();
                 String where = e.id() + " wide seed " + seed;
                 assertEquals(e.id() + "-wide-" + seed, w.name());
@@ -95,10 +95,10 @@ class WideWorldsTest {
             }
         }
         assertTrue(smallest < 0.9 && largest > 3.5, "arenas " + smallest + ".." + largest + " m");
-        assertTrue(open > 10 && walls > 50 && corridors > 10 && closed >= 2, open + " open, " + walls + " with an inner wall ("
+        assertTrue(open > 5 && walls > 25 && corridors > 5 && closed >= 1, open + " open, " + walls + " with an inner wall ("
                 + corridors + " corridors, " + closed + " closed rooms)");
         assertTrue(narrowest <= 0.13, "narrowest passage " + narrowest);
-        assertTrue(sliding > 20 && inside > 10, sliding + " sliding boxes, " + inside + " areas away from the walls");
+        assertTrue(sliding > 10 && inside > 5, sliding + " sliding boxes, " + inside + " areas away from the walls");
     }
 
     @Test
