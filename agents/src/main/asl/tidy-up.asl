@@ -5,9 +5,6 @@
 // storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
-// every cylinder must be found: the sweep of the remaining floor starts 5 s after a delivery, not
-// after the 45 s of random walk the other tasks begin with
-searchAfter(5000).
 
 !start.
 

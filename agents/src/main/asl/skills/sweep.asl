@@ -3,9 +3,7 @@
 // never into the storage area, with a look around (a full turn on the spot) at each waypoint and
 // every lookEvery ms. A waypoint not reached in time is skipped.
 // Parameters:
-// ms without a cylinder before the sweep: 45 s, or an agent's own searchAfter(Ms)
-searchDelay(S) :- searchAfter(S).
-searchDelay(45000) :- not searchAfter(_).
+searchAfter(45000).   // ms without a cylinder before the sweep
 // lanes this far apart (m): the camera sees a cylinder up to about 1.5 m ahead within 30 degrees
 // either side, so wider lanes leave no floor unseen, and the battery (1000 J, about 17 m of travel
 // at full speed) no longer runs out on a third of a big arena (generated worlds: navigation
@@ -41,7 +39,7 @@ setUpGoal(setUpSweep).
 @found +!found <- .system_time(T); -+lastFound(T); -searching; .abolish(waypoint(_, _, _)).
 
 @searchClock
-+!searchClock : searchDelay(S) & lastFound(T0)
++!searchClock : searchAfter(S) & lastFound(T0)
     <- .wait(5000); .system_time(T);
        if (T - T0 > S & not searching & not travelling) { println("No cylinder for a while: sweeping the arena"); +searching; !planSweep };
        !searchClock.
