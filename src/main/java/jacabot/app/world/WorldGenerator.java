@@ -405,8 +405,8 @@ public final class WorldGenerator {
             double sx = acrossX ? thickness : length, sz = acrossX ? length : thickness;
             placed.add(Footprint.rectangle(x, z, sx, sz, 0));
             blocks.add(new Reachability.Block(x, z, sx, sz, 0));
-            walls.add("{ \"id\": \"wall" + (walls.size() + 1) + "\", \"x\": " + num4(x) + ", \"z\": " + num4(z)
-                    + ", \"size\": [" + num4(sx) + ", " + num4(sz) + "], \"height\": 0.1 }");
+            walls.add("{ \"id\": \"wall" + (walls.size() + 1) + "\", \"x\": " + Json.num4(x) + ", \"z\": " + Json.num4(z)
+                    + ", \"size\": [" + Json.num4(sx) + ", " + Json.num4(sz) + "], \"height\": 0.1 }");
         }
     }
 
@@ -590,61 +590,10 @@ public final class WorldGenerator {
         return Math.round(v * 1000) / 1000.0;
     }
 
-    /** Four decimals: an inner wall's centre lies halfway between two millimetre marks. */
-    private static String num4(double v) {
-        return String.format(Locale.ROOT, "%.4f", v).replaceAll("0+$", "").replaceAll("\\.$", "");
-    }
-
     private static String num(double v) {
         if (v == Math.rint(v) && Math.abs(v) < 1e9) {
             return Long.toString((long) v);
         }
         return String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
-    }
-
-    /** A small JSON writer: one member per line, arrays one element per line. */
-    private static final class Json {
-        private final StringBuilder b = new StringBuilder();
-        private boolean first = true;
-
-        Json open() {
-            b.append("{\n");
-            return this;
-        }
-
-        private void key(String k) {
-            b.append(first ? "" : ",\n").append("  \"").append(k).append("\": ");
-            first = false;
-        }
-
-        Json field(String k, String text) {
-            key(k);
-            b.append('"').append(text.replace("\\", "\\\\").replace("\"", "\\\"")).append('"');
-            return this;
-        }
-
-        Json raw(String k, String json) {
-            key(k);
-            b.append(json);
-            return this;
-        }
-
-        Json array(String k, List<String> items) {
-            key(k);
-            if (items.isEmpty()) {
-                b.append("[]");
-                return this;
-            }
-            b.append("[\n");
-            for (int i = 0; i < items.size(); i++) {
-                b.append("    ").append(items.get(i)).append(i + 1 < items.size() ? ",\n" : "\n");
-            }
-            b.append("  ]");
-            return this;
-        }
-
-        String close() {
-            return b.append("\n}\n").toString();
-        }
     }
 }
