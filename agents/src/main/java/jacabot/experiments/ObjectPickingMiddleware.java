@@ -2,8 +2,13 @@ package jacabot.experiments;
 
 import jacabot.cartago.OPERATION;
 import jacabot.robot.link.Command;
+import jacabot.robot.link.CommandCode;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
 
 /**
  * Experiment 2's middleware (thesis Chapter 4 §2.2), for the Khepera: on top of obstacle
@@ -39,7 +44,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private boolean holding;
     private double armPosition = 0;
     /** Sides whose very-close lateral obstacle was signalled; re-armed when that side is safe. */
-    private final java.util.Set<String> lateralSignalled = new java.util.HashSet<>();
+    private final Set<String> lateralSignalled = new HashSet<>();
 
     // Progress (not in the thesis, a derived percept): "stuck" is signalled when the GPS position stayed
     // within a radius for a time (pressed against something, dithering in front of a box, or
@@ -55,7 +60,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private long sightingEvery = 400;
     private long lastSightingMs = Long.MIN_VALUE / 2;
     private double fov = 60;
-    private final java.util.List<double[]> excluded = new java.util.ArrayList<>();
+    private final List<double[]> excluded = new ArrayList<>();
     /** The last GPS position (x, z) and compass heading (the thesis' orientation, degrees), when known. */
     private double[] position;
     private double heading = Double.NaN;
@@ -304,6 +309,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     /** Lowers the arm, opens the gripper and raises the arm again. */
     @OPERATION
     void putDown() {
-        send(Command.of(jacabot.robot.link.CommandCode.PUT_DOWN));
+        send(Command.of(CommandCode.PUT_DOWN));
     }
 }

@@ -1,5 +1,7 @@
 package jacabot.experiments;
 
+import jacabot.cartago.OPERATION;
+import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
 
@@ -34,7 +36,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     private double warning = WARNING, safe = SAFE, deltaLimit = DELTA_LIMIT;
 
     /** Sets the levels (the agent's beliefs, not Java constants; not in the thesis); the warning must exceed the safe level. */
-    @jacabot.cartago.OPERATION
+    @OPERATION
     void obstacleLevels(double warningLevel, double safeLevel) {
         if (!(warningLevel > safeLevel) || !(safeLevel > 0)) {
             failed("obstacleLevels(Warning, Safe) needs Warning > Safe > 0, got " + warningLevel + ", " + safeLevel);
@@ -45,7 +47,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /** Sets the left-right difference that signals an obstacle (default {@value #DELTA_LIMIT}); it must be positive. */
-    @jacabot.cartago.OPERATION
+    @OPERATION
     void deltaLimit(double limit) {
         if (!(limit > 0)) {
             failed("deltaLimit(Limit) needs Limit > 0, got " + limit);
@@ -54,7 +56,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         deltaLimit = limit;
     }
 
-    @jacabot.cartago.OPERATION
+    @OPERATION
     void deltaBased(boolean on) {
         deltaBased = on;
     }
@@ -72,7 +74,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     private ExplorationMap map;
 
     /** Starts dead reckoning from the wheel speeds: metres per second of a speed unit, axle length in metres. */
-    @jacabot.cartago.OPERATION
+    @OPERATION
     void odometry(double speedUnit, double axleLength) {
         map = new ExplorationMap(speedUnit, axleLength);
     }
@@ -81,7 +83,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * How far ahead, in metres, {@code exploreTurn} counts the floor not crossed yet (default 3 m).
      * Fails before {@code odometry} or under 0.1 m.
      */
-    @jacabot.cartago.OPERATION
+    @OPERATION
     void exploreHorizon(double metres) {
         if (map == null || !(metres >= ExplorationMap.CELL)) {
             failed("exploreHorizon needs odometry(SpeedUnit, AxleLength) first and at least " + ExplorationMap.CELL + " m, got " + metres);
@@ -94,8 +96,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */
-    @jacabot.cartago.OPERATION
-    void exploreTurn(double speed, jacabot.cartago.OpFeedbackParam<String> side, jacabot.cartago.OpFeedbackParam<Double> ms) {
+    @OPERATION
+    void exploreTurn(double speed, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms) {
         if (map == null || !(speed > 0)) {
             failed("exploreTurn needs odometry(SpeedUnit, AxleLength) first and a positive speed");
             return;
@@ -109,8 +111,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * How long the robot has gone over floor already crossed (not in the thesis), in ms: a straight leg over
      * old ground is cut short. Fails before {@code odometry}.
      */
-    @jacabot.cartago.OPERATION
-    void staleTime(jacabot.cartago.OpFeedbackParam<Double> ms) {
+    @OPERATION
+    void staleTime(OpFeedbackParam<Double> ms) {
         if (map == null) {
             failed("staleTime needs odometry(SpeedUnit, AxleLength) first");
             return;

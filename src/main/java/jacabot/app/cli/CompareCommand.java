@@ -18,7 +18,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -44,8 +46,8 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--code-only", description = "only the code tables (no runs): the metrics and what each experiment adds to the previous one")
     private boolean codeOnly;
 
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec spec;
+    @CommandLine.Spec
+    private CommandLine.Model.CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
@@ -102,7 +104,7 @@ final class CompareCommand implements Callable<Integer> {
             AgentMetrics a = AgentMetrics.of(e, source);
             List<String> skills = source.sources().stream().skip(1).map(x -> Path.of(x.name()).getFileName().toString()).toList();
             CodeMetrics c = e.hasBaseline() ? CodeMetrics.of(e, baselineDir()) : null;
-            var newBeliefs = new java.util.TreeSet<>(a.coordinationBeliefs());
+            var newBeliefs = new TreeSet<>(a.coordinationBeliefs());
             if (before != null) {
                 newBeliefs.removeAll(before.coordinationBeliefs());
             }
@@ -119,10 +121,32 @@ final class CompareCommand implements Callable<Integer> {
                 cBefore = c;
             }
         }
+        fourWayCode(out);
+    }
+
+    /**
+     * Chapter 5 like for like: the code of the thesis' agent as published and of its C-style baseline,
+     * of our agent and of the equal-capability baseline (the same program with the agents' strategies).
+     */
+    private void fourWayCode(PrintStream out) throws Exception {
+        out.println();
+        out.println("Four ways (code): the thesis' agent as published, the thesis-style baseline, our agent, the "
+                + "equal-capability baseline. Their success on generated worlds: `jacabot sweep` (docs/comparison.md).");
+        out.println();
+        out.println("| experiment | thesis agent: code lines | plans | thesis baseline: code lines | conditions "
+                + "| our agent: code lines | plans | equal baseline: code lines | conditions |");
+        out.println("|---|---|---|---|---|---|---|---|---|");
+        for (Experiment e : Experiment.thesis()) {
+            AgentMetrics thesis = AgentMetrics.of(e, AgentSource.resource("asl/as-published/" + e.id() + ".asl", e.id() + ".asl"));
+            AgentMetrics ours = AgentMetrics.of(e, AgentSource.packaged(e));
+            CodeMetrics c = CodeMetrics.of(e, baselineDir()), q = CodeMetrics.ofEqual(e, baselineDir());
+            out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %d | %d | %d |%n", e, thesis.codeLines(), thesis.plans(),
+                    c.codeLines(), c.conditions(), ours.codeLines(), ours.plans(), q.codeLines(), q.conditions());
+        }
     }
 
     private Path baselineDir() {
-        return root != null ? CodeMetrics.sourceDir(root) : jacabot.app.Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString());
+        return root != null ? CodeMetrics.sourceDir(root) : Installation.resolve(CodeMetrics.sourceDir(Path.of("")).toString());
     }
 
     private static String delta(int now, Integer before) {

@@ -11,6 +11,7 @@ import jacabot.app.sweep.SweepJob;
 import jacabot.app.sweep.SweepPlan;
 import jacabot.app.sweep.SweepReport;
 import jacabot.app.sweep.SweepRun;
+import jacabot.app.world.WorldGenerator.Profile;
 import jacabot.robot.Experiment;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -57,13 +58,18 @@ final class SweepCommand implements Callable<Integer> {
             description = "generated worlds of these generator seeds (1..N, N or a list), e.g. 51..100 for worlds kept out of tuning")
     private String worldSeeds;
 
-    @Option(names = "--max-side", paramLabel = "M", description = "with --generate: largest arena side in metres (default ${DEFAULT-VALUE})")
-    private double maxSide = 3.0;
+    @Option(names = "--max-side", paramLabel = "M", description = "with generated worlds: largest arena side in metres (default 3, wide profile 4)")
+    private Double maxSide;
+
+    @Option(names = "--profile", paramLabel = "P", description = "with generated worlds: classic (1-3 m, open, the range first measured) "
+            + "or wide (0.7-4 m, a doorway or corridor, areas anywhere, sliding boxes) (default ${DEFAULT-VALUE})")
+    private String profile = "classic";
 
     @Option(names = "--seeds", paramLabel = "SEEDS", description = "run seeds: 1..N, N or a list (default ${DEFAULT-VALUE})")
     private String seeds = "1..2";
 
-    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline or both (default agent,baseline)")
+    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agent, baseline (the thesis' C programs) and/or equal (the equal-capability baseline: "
+            + "the same programs with the agents' strategies) (default agent,baseline)")
     private List<String> controllers = List.of(SweepJob.AGENT, SweepJob.BASELINE);
 
     @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/src/main/asl/as-published/navigation.asl, found from any folder (default: the packaged one)")
@@ -102,6 +108,7 @@ final class SweepCommand implements Callable<Integer> {
         double seconds, wallLimit;
         List<Long> runSeeds;
         List<Long> generatorSeeds = null;
+        Profile worldProfile;
         int shardIndex = 1, shards = 1;
         try {
             if (experiment == null) {
@@ -123,8 +130,8 @@ final class SweepCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--jobs must be at least 1, got " + jobs);
             }
             for (String c : controllers) {
-                if (!c.equals(SweepJob.AGENT) && !c.equals(SweepJob.BASELINE)) {
-                    throw new IllegalArgumentException("unknown controller '" + c + "' (expected agent, baseline)");
+                if (!SweepJob.CONTROLLERS.contains(c)) {
+                    throw new IllegalArgumentException("unknown controller '" + c + "' (expected agent, baseline, equal)");
                 }
             }
             if (shard != null) {
@@ -157,9 +164,10 @@ final class SweepCommand implements Callable<Integer> {
             if (generate != null && generate < 1) {
                 throw new IllegalArgumentException("--generate must be at least 1, got " + generate);
             }
-            if (!(maxSide >= 1)) {
+            if (maxSide != null && !(maxSide >= 1)) {
                 throw new IllegalArgumentException("--max-side must be at least 1 (metres), got " + maxSide);
             }
+            worldProfile = Profile.parse(profile);
         } catch (IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
@@ -177,8 +185,8 @@ final class SweepCommand implements Callable<Integer> {
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
         Files.createDirectories(dir.resolve("logs"));
         List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
-                : generatorSeeds != null ? SweepPlan.generated(experiments, generatorSeeds, maxSide, dir.resolve("worlds"))
-                : SweepPlan.generated(experiments, generate == null ? 10 : generate, maxSide, dir.resolve("worlds"));
+                : SweepPlan.generated(experiments, generatorSeeds != null ? generatorSeeds
+                        : SweepPlan.firstSeeds(generate == null ? 10 : generate), worldProfile, maxSide, dir.resolve("worlds"));
         if (list.isEmpty()) {
             throw new UserError(worlds + ": no world files for " + experiment + " (*.json whose name starts with the experiment)");
         }

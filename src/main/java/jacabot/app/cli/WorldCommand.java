@@ -1,6 +1,7 @@
 package jacabot.app.cli;
 
 import jacabot.app.world.WorldGenerator;
+import jacabot.app.world.WorldGenerator.Profile;
 import jacabot.robot.Experiment;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -50,13 +51,23 @@ final class WorldCommand implements Runnable {
         @Option(names = "--out", paramLabel = "FILE", description = "where to write the world (default: standard output)")
         private Path out;
 
-        @Option(names = "--max-side", paramLabel = "M", description = "largest arena side in metres, >= 1 (default ${DEFAULT-VALUE})")
-        private double maxSide = 3.0;
+        @Option(names = "--max-side", paramLabel = "M", description = "largest arena side in metres, >= 1 (default 3, wide profile 4)")
+        private Double maxSide;
+
+        @Option(names = "--profile", paramLabel = "P", description = "classic (1-3 m, open, the range first measured) or wide "
+                + "(0.7-4 m, an inner wall with a doorway or a corridor, areas anywhere, sliding boxes) (default ${DEFAULT-VALUE})")
+        private String profile = "classic";
 
         @Override
         public Integer call() throws IOException {
-            if (!(maxSide >= 1)) {
+            if (maxSide != null && !(maxSide >= 1)) {
                 throw new UserError("--max-side must be at least 1 (metres), got " + maxSide);
+            }
+            Profile worldProfile;
+            try {
+                worldProfile = Profile.parse(profile);
+            } catch (IllegalArgumentException e) {
+                throw new UserError(e.getMessage());
             }
             WorldGenerator generator;
             if (experiment.equals(WorldGenerator.TEAM_DELIVERY)) {
@@ -73,7 +84,8 @@ final class WorldCommand implements Runnable {
                 }
                 generator = new WorldGenerator(e, seed);
             }
-            String json = generator.maxSide(maxSide).generate().json();
+            generator.profile(worldProfile);
+            String json = (maxSide == null ? generator : generator.maxSide(maxSide)).generate().json();
             if (out == null) {
                 PrintWriter o = spec.commandLine().getOut();
                 o.print(json);

@@ -22,7 +22,10 @@ import java.util.Optional;
  *     lies in the storage area (its centre within the area's radius) and the robot is parked on the
  *     charger (its centre within the charger's radius).</li>
  * </ul>
- * A run that crashed, hung or ended early fails whatever its figures.
+ * A run that crashed, hung or ended early fails whatever its figures. The sweep judges every run
+ * against its world's {@link PhysicalBounds} (what a robot could do there at all): nothing changes
+ * in arenas of up to 3 m a side with every cylinder reachable; in larger ones the coverage required
+ * falls to what the robot can drive over, and a delivery tour longer than the run asks for fewer.
  *
  * <p>Other durations: what is a rate scales with the run's duration (the deliveries, at least one;
  * the contact allowed, never below 2 s); coverage, a first pick or delivery and a recharge do not
@@ -129,16 +132,27 @@ public final class SuccessCriteria {
                 seconds));
     }
 
-    /** {@return the verdict on a run's figures} */
+    /** {@return the verdict on a run's figures, by the criteria as written} */
     public static Verdict judge(Experiment experiment, Figures f) {
+        return judge(experiment, f, PhysicalBounds.NONE);
+    }
+
+    /**
+     * {@return the verdict on a run's figures, asking no more than the world physically allows}: the
+     * coverage required is the bound's when lower, the deliveries and the cylinders stored at most the
+     * bound's, and parking only when the tour leaves time for it ({@link PhysicalBounds})
+     */
+    public static Verdict judge(Experiment experiment, Figures f, PhysicalBounds b) {
         List<String> why = new ArrayList<>();
         switch (experiment) {
             case OBSTACLE_AVOIDANCE -> {
                 if (!(f.contactTime() < maxContact(f.duration()))) {
                     why.add(fmt("contact %.1f s (>= %.0f s)", f.contactTime(), maxContact(f.duration())));
                 }
-                if (!(f.coverage() >= MIN_COVERAGE)) {
-                    why.add(fmt("coverage %.0f%% (< %.0f%%)", 100 * f.coverage(), 100 * MIN_COVERAGE));
+                double required = Math.min(MIN_COVERAGE, b.coverage());
+                if (!(f.coverage() >= required - 1e-9)) {
+                    why.add(fmt("coverage %.0f%% (< %.0f%%%s)", 100 * f.coverage(), 100 * required,
+                            required < MIN_COVERAGE ? ", the physical bound" : ""));
                 }
             }
             case OBJECT_PICKING -> {
@@ -147,7 +161,7 @@ public final class SuccessCriteria {
                 }
             }
             case NAVIGATION -> {
-                int due = minDeliveries(f.duration());
+                int due = Math.min(minDeliveries(f.duration()), b.deliveries());
                 if (f.deliveries() < due) {
                     why.add(f.deliveries() + " deliver" + (f.deliveries() == 1 ? "y" : "ies") + " (< " + due + ")");
                 }
@@ -160,7 +174,7 @@ public final class SuccessCriteria {
                 if (f.batteryEmptied()) {
                     why.add("battery empty");
                 }
-                if (f.deliveries() < 1) {
+                if (f.deliveries() < Math.min(1, b.deliveries())) {
                     why.add("no delivery");
                 }
                 if (f.episodesCompleted() < f.lowBatteryEpisodes()) {
@@ -172,10 +186,12 @@ public final class SuccessCriteria {
                 if (f.batteryEmptied()) {
                     why.add("battery empty");
                 }
-                if (f.stored() < f.cylinders()) {
-                    why.add(f.stored() + " of " + f.cylinders() + " cylinders in the storage area");
+                int due = Math.min(f.cylinders(), b.storable());
+                if (f.stored() < due) {
+                    why.add(f.stored() + " of " + f.cylinders() + " cylinders in the storage area"
+                            + (due < f.cylinders() ? " (< " + due + ", the physical bound)" : ""));
                 }
-                if (!f.parked()) {
+                if (!f.parked() && b.parkable()) {
                     why.add("not parked on the charger");
                 }
             }

@@ -1,6 +1,7 @@
 package jacabot.app.sweep;
 
 import jacabot.app.world.WorldGenerator;
+import jacabot.app.world.WorldGenerator.Profile;
 import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
@@ -31,20 +32,36 @@ public final class SweepPlan {
      * @param writeTo a directory to write them to (for replays), or null
      */
     public static List<World> generated(List<Experiment> experiments, int k, double maxSide, Path writeTo) throws IOException {
+        return generated(experiments, firstSeeds(k), Profile.CLASSIC, maxSide, writeTo);
+    }
+
+    /** {@return generator seeds 1..k} */
+    public static List<Long> firstSeeds(int k) {
         List<Long> worldSeeds = new ArrayList<>();
         for (long seed = 1; seed <= k; seed++) {
             worldSeeds.add(seed);
         }
-        return generated(experiments, worldSeeds, maxSide, writeTo);
+        return worldSeeds;
     }
 
     /** {@return generated worlds of these generator seeds for each experiment (e.g. 51..100: worlds kept out of tuning)} */
     public static List<World> generated(List<Experiment> experiments, List<Long> worldSeeds, double maxSide, Path writeTo)
             throws IOException {
+        return generated(experiments, worldSeeds, Profile.CLASSIC, maxSide, writeTo);
+    }
+
+    /**
+     * {@return generated worlds of a profile and these generator seeds for each experiment}
+     *
+     * @param maxSide the largest arena side in metres, or null for the profile's own
+     */
+    public static List<World> generated(List<Experiment> experiments, List<Long> worldSeeds, Profile profile, Double maxSide,
+            Path writeTo) throws IOException {
         List<World> out = new ArrayList<>();
         for (Experiment e : experiments) {
             for (long seed : worldSeeds) {
-                var g = new WorldGenerator(e, seed).maxSide(maxSide).generate();
+                WorldGenerator generator = new WorldGenerator(e, seed).profile(profile);
+                var g = (maxSide == null ? generator : generator.maxSide(maxSide)).generate();
                 Path file = null;
                 if (writeTo != null) {
                     Files.createDirectories(writeTo);
@@ -93,7 +110,7 @@ public final class SweepPlan {
         for (World w : worlds) {
             for (long seed : seeds) {
                 for (String c : controllers) {
-                    if (c.equals(SweepJob.BASELINE) && !w.experiment().hasBaseline()) {
+                    if (!c.equals(SweepJob.AGENT) && !w.experiment().hasBaseline()) {
                         continue; // tidy-up: composed of the agents' skills, no C program to compare with
                     }
                     all.add(new SweepJob(w.experiment(), c, w.name(), w.file(), w.spec(), w.problem(), seed));

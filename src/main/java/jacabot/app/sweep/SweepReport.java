@@ -139,7 +139,7 @@ public final class SweepReport {
             b.append("| controller | runs | successes | median contact (s) | median coverage | median picks | median deliveries "
                     + "| empty storage entries | low-battery episodes completed | crashes / hangs / early ends / agent failures |\n");
             b.append("|---|---|---|---|---|---|---|---|---|---|\n");
-            for (String controller : List.of(SweepJob.AGENT, SweepJob.BASELINE)) {
+            for (String controller : SweepJob.CONTROLLERS) {
                 List<RunOutcome> c = mine.stream().filter(o -> o.controller().equals(controller)).toList();
                 if (c.isEmpty()) {
                     continue;

@@ -22,6 +22,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 
 /**
  * Makes one {@link SweepJob}: loads nothing (the job holds the checked world), builds a fresh world
@@ -115,10 +116,12 @@ public final class SweepRun {
                     }
                 }
             } else {
-                BaselineController c = BaselineRunner.create(e, world, job.seed(), line -> {
+                Consumer<String> note = line -> {
                     recorder.note(line);
                     console.line(line);
-                });
+                };
+                BaselineController c = job.controller().equals(SweepJob.EQUAL) ? BaselineRunner.createEqual(e, world, job.seed(), note)
+                        : BaselineRunner.create(e, world, job.seed(), note);
                 c.runFor(seconds);
             }
         } catch (Throwable t) {
@@ -165,7 +168,7 @@ public final class SweepRun {
                     s.storageEntriesEmpty(), s.batteryEmptied(), counted ? SuccessCriteria.episodesDue(episodes, s.duration()) : 0,
                     completed, end == null ? 0 : end.cylinders(), end == null ? 0 : end.stored(), end != null && end.parked());
         }
-        SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f);
+        SuccessCriteria.Verdict v = SuccessCriteria.judge(job.experiment(), f, PhysicalBounds.of(job.experiment(), job.spec()));
         List<String> reasons = new ArrayList<>();
         if (!status.equals(RunOutcome.OK)) {
             reasons.add(status + ": " + message);

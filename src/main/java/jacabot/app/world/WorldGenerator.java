@@ -4,6 +4,9 @@ import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.RobotModel;
+import jacabot.sim.world.AreaSpec;
+import jacabot.sim.world.CylinderSpec;
+import jacabot.sim.world.RobotSpec;
 import jacabot.sim.world.Footprint;
 import jacabot.sim.world.WorldSpec;
 import java.util.ArrayList;
@@ -32,8 +35,46 @@ import java.util.SplittableRandom;
  * the charger. Nothing starts on the robot or on another object; moved obstacles go to places that
  * were free at start (the robot may stand there by then: physics pushes, as in Webots). The text is
  * checked with the world loader before it is returned.
+ *
+ * <p>Two profiles ({@link Profile}). {@code classic} is the range the agents were first measured on
+ * (above; the same text for the same seed as before the profiles existed). {@code wide} is what users'
+ * arenas look like: 0.7 to 4 m a side; in seven worlds of ten an inner wall across the arena, thin with a
+ * single doorway or thick with a corridor through it, 12 to 40 cm wide, and in a tenth of those
+ * narrower than the robot (a room it cannot enter); the storage point and the charger anywhere on the
+ * floor; up to two boxes that slide back and forth during the run. There, reachability is not by
+ * construction but checked ({@link Reachability}): cylinders, the storage area and the charger are put
+ * only where the robot's centre can get from its start, so nothing behind a too-narrow doorway is
+ * ever asked of it; a draw that cannot be completed is drawn again from the same random stream.
  */
 public final class WorldGenerator {
+    /** Which range of worlds to draw from. */
+    public enum Profile {
+        /** Arenas of 1 to 3 m, open, areas at the walls: the range the agents were first measured on. */
+        CLASSIC,
+        /** Arenas of 0.7 to 4 m, inner walls with a doorway or a corridor, areas anywhere, sliding boxes. */
+        WIDE;
+
+        /** {@return the profile's name on the command line} */
+        public String id() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+
+        /** {@return the profile of that name} @throws IllegalArgumentException for another name */
+        public static Profile parse(String name) {
+            for (Profile p : values()) {
+                if (p.id().equals(name)) {
+                    return p;
+                }
+            }
+            throw new IllegalArgumentException("unknown world profile '" + name + "' (expected classic or wide)");
+        }
+
+        /** {@return the largest arena side when none is given, metres} */
+        public double defaultMaxSide() {
+            return this == WIDE ? 4.0 : 3.0;
+        }
+    }
+
     /** The result: the JSON text and the loaded world. */
     public record Generated(String json, WorldSpec spec) {
     }
@@ -42,6 +83,16 @@ public final class WorldGenerator {
     static final double MIN_DENSITY = 0.01, MAX_DENSITY = 0.06;
     /** The narrowest passage between two obstacles or an obstacle and a wall, metres. */
     static final double MIN_GAP = 0.12;
+
+    /** The wide profile's smallest arena side, metres. */
+    static final double WIDE_MIN_SIDE = 0.7;
+    /** The wide profile's doorways and corridors: 12 to 40 cm; a tenth narrower than the robot. */
+    static final double MIN_DOOR = 0.12, MAX_DOOR = 0.40;
+    /** A sliding box's speed (m/s) and the interval of its moves (s). */
+    static final double SLIDE_SPEED = 0.01, SLIDE_EVERY = 4;
+    /** How long a sliding box keeps moving, simulated seconds (the criteria's nominal run). */
+    static final double SLIDE_UNTIL = 600;
+    private static final int WIDE_ATTEMPTS = 60;
 
     /** Robots' places drawn for a team world whatever its size, so that teams of 1 to this many share a layout. */
     public static final int TEAM_SLOTS = 4;
@@ -61,7 +112,8 @@ public final class WorldGenerator {
     private final Recipe recipe;
     private final Experiment experiment;
     private final long seed;
-    private double maxSide = 3.0;
+    private Double maxSide;
+    private Profile profile = Profile.CLASSIC;
 
     private SplittableRandom random;
     private RobotModel model;
@@ -98,7 +150,13 @@ public final class WorldGenerator {
         return "khepera" + (i + 1);
     }
 
-    /** The largest arena side, metres (at least 1; default 3). */
+    /** The range of worlds (default classic). */
+    public WorldGenerator profile(Profile p) {
+        this.profile = p;
+        return this;
+    }
+
+    /** The largest arena side, metres (at least 1; default 3, or 4 in the wide profile). */
     public WorldGenerator maxSide(double metres) {
         if (!(metres >= 1)) {
             throw new IllegalArgumentException("the largest arena side must be at least 1 m, got " + metres);
@@ -111,46 +169,80 @@ public final class WorldGenerator {
     public Generated generate() {
         // one draw mixes the seed: SplittableRandom(seed * gamma) made seed k's second draw seed k+1's first
         random = new SplittableRandom(new SplittableRandom(seed ^ recipe.salt() * 0xD1B54A32D192ED03L).nextLong());
+        if (profile == Profile.CLASSIC) {
+            return build();
+        }
+        for (int attempt = 0; attempt < WIDE_ATTEMPTS; attempt++) {
+            Generated g = build();
+            if (g != null) {
+                return g;
+            }
+        }
+        throw new IllegalStateException("no complete " + recipe.id() + " world for seed " + seed + " in " + WIDE_ATTEMPTS
+                + " draws (a bug)");
+    }
+
+    /** One draw of the world; in the wide profile null when something could not be placed reachably. */
+    private Generated build() {
+        boolean wide = profile == Profile.WIDE;
         placed.clear();
         free.clear();
         model = experiment == Experiment.OBSTACLE_AVOIDANCE ? RobotModel.MYBOT : RobotModel.KHEPERA;
         // passages at least twice the Khepera's width: a gap the robot's own sensors read as a wall on
         // both sides is a dead end, not a passage
         gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
-        double width = round2(uniform(recipe.minSide(), maxSide));
-        double depth = round2(uniform(recipe.minSide(), maxSide));
+        double minSide = wide && experiment != null ? WIDE_MIN_SIDE : recipe.minSide();
+        double largest = maxSide != null ? maxSide : profile.defaultMaxSide();
+        double width = round2(uniform(minSide, largest));
+        double depth = round2(uniform(minSide, largest));
         halfW = width / 2;
         halfD = depth / 2;
-        String name = recipe.id() + "-gen-" + seed;
+        String name = recipe.id() + (wide ? "-wide-" : "-gen-") + seed;
         Json j = new Json();
         j.open().field("name", name)
                 .field("description", "Generated by `jacabot world generate " + recipe.command() + " --seed " + seed
-                        + "`: a random world for " + recipe.purpose() + ".")
+                        + (wide ? " --profile wide" : "") + "`: a random world for " + recipe.purpose() + ".")
                 .raw("arena", "{ \"width\": " + num(width) + ", \"depth\": " + num(depth)
                         + ", \"wallThickness\": 0.02, \"wallHeight\": 0.1 }")
                 .raw("basicTimeStep", "8").raw("controlStep", "40").raw("seed", Long.toString(seed));
 
+        List<String> walls = new ArrayList<>();
+        List<Reachability.Block> blocks = new ArrayList<>();
+        if (wide) {
+            partition(walls, blocks);
+        }
         boolean needsStorage = recipe.storage();
         boolean needsCharger = recipe.charger();
         double areaRadius = 0.06;
         double[] storage = null, charger = null;
         if (needsStorage) {
-            storage = landmark(areaRadius, null);
+            storage = wide ? anywhere(areaRadius, null) : landmark(areaRadius, null);
+            if (storage == null) {
+                return null;
+            }
             free.add(new double[] {storage[0], storage[1], areaRadius + gap});
         }
         if (needsCharger) {
-            charger = landmark(areaRadius, storage);
+            charger = wide ? anywhere(areaRadius, storage) : landmark(areaRadius, storage);
+            if (charger == null) {
+                return null;
+            }
             free.add(new double[] {charger[0], charger[1], areaRadius + gap});
         }
         // the robots first, with room around each
         List<String> robots = new ArrayList<>();
+        double[] first = null;
         int slots = experiment != null ? 1 : Math.max(recipe.robots(), TEAM_SLOTS);
         for (int i = 0; i < slots; i++) {
             double[] robot = spot(model.radius(), model.radius() + 0.02, 0.05);
+            if (robot == null && wide) {
+                return null;
+            }
             if (robot == null) {
                 throw new IllegalStateException("no room for robot " + (i + 1) + " (a bug: arenas hold " + MAX_TEAM + ")");
             }
             double heading = Math.round(random.nextDouble(0, 360));
+            first = first == null ? robot : first;
             placed.add(Footprint.circle(robot[0], robot[1], model.radius()));
             free.add(new double[] {robot[0], robot[1], model.radius() + gap});
             String battery = experiment != null && needsCharger ? ", \"battery\": 560"
@@ -162,6 +254,12 @@ public final class WorldGenerator {
             }
         }
 
+        // in the wide profile, what the robot must get to is where it can get (inner walls only so far:
+        // the boxes below keep a passage of `gap` around themselves)
+        Reachability reach = wide ? Reachability.of(halfW, halfD, blocks, model.radius(), first[0], first[1]) : null;
+        if (wide && !(reachable(reach, storage, areaRadius) && reachable(reach, charger, areaRadius))) {
+            return null;
+        }
         // cylinders before the boxes, so that boxes keep clear of them
         List<String> cylinders = new ArrayList<>();
         List<String> cylinderIds = new ArrayList<>();
@@ -173,6 +271,12 @@ public final class WorldGenerator {
         for (int i = 0; i < nCylinders; i++) {
             double r = 0.0125;
             double[] p = spot(r, gap, 0.0);
+            for (int again = 0; wide && p != null && !reach.canReach(p[0], p[1], reachOf()) && again < 50; again++) {
+                p = spot(r, gap, 0.0);
+            }
+            if (wide && (p == null || !reach.canReach(p[0], p[1], reachOf()))) {
+                return null;
+            }
             if (p == null) {
                 break;
             }
@@ -211,8 +315,11 @@ public final class WorldGenerator {
             covered += sx * sz;
         }
 
-        List<String> events = experiment == null ? List.of() : faults(boxSpots, cylinderIds);
-
+        List<String> events = new ArrayList<>(experiment == null ? List.of() : faults(boxSpots, cylinderIds));
+        if (wide) {
+            slidingBoxes(boxes, events);
+            j.array("walls", walls);
+        }
         j.array("boxes", boxes);
         if (!cylinders.isEmpty()) {
             j.array("cylinders", cylinders);
@@ -229,10 +336,124 @@ public final class WorldGenerator {
             j.array("events", events);
         }
         String json = j.close();
+        WorldSpec spec;
         try {
-            return new Generated(json, WorldFileReader.parse(json, name + ".json"));
+            spec = WorldFileReader.parse(json, name + ".json");
         } catch (WorldFileException e) {
             throw new IllegalStateException("the generator made an invalid world (a bug): " + e.getMessage(), e);
+        }
+        return !wide || everythingReachable(spec) ? new Generated(json, spec) : null;
+    }
+
+    /** The distance from a cylinder's centre within which the robot's centre must get to take it. */
+    private double reachOf() {
+        return model.radius() + 0.03;
+    }
+
+    /** Whether the robot's centre can get into the area (null: no area). */
+    private static boolean reachable(Reachability reach, double[] area, double radius) {
+        return area == null || reach.canReach(area[0], area[1], radius / 2);
+    }
+
+    /** The wide profile's last check, on the loaded world with its boxes: every robot, cylinder and area reachable. */
+    private boolean everythingReachable(WorldSpec spec) {
+        RobotSpec r0 = spec.robots().get(0);
+        Reachability reach = Reachability.of(spec, model.radius(), r0.x(), r0.z());
+        for (RobotSpec r : spec.robots()) {
+            if (!reach.canReach(r.x(), r.z(), 0.02)) {
+                return false;
+            }
+        }
+        for (CylinderSpec c : spec.cylinders()) {
+            if (!reach.canReach(c.x(), c.z(), reachOf())) {
+                return false;
+            }
+        }
+        for (AreaSpec a : new AreaSpec[] {spec.storage(), spec.charger()}) {
+            if (a != null && !reach.canReach(a.x(), a.z(), a.radius() / 2)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The wide profile's inner wall, in seven arenas of ten (of at least 1 m): across the longer side,
+     * thin with one doorway or 20 to 60 cm thick with a corridor through it, 12 to 40 cm wide; in a
+     * tenth of them the passage is narrower than the robot, closing a room it cannot enter.
+     */
+    private void partition(List<String> walls, List<Reachability.Block> blocks) {
+        double kind = random.nextDouble();
+        if (kind < 0.3 || experiment == null || Math.max(halfW, halfD) < 0.5) {
+            return;
+        }
+        boolean acrossX = halfW >= halfD; // the wall stands at x = at and spans z
+        double along = acrossX ? halfW : halfD, span = acrossX ? halfD : halfW;
+        double thickness = kind < 0.65 ? 0.02 : round3(uniform(0.2, Math.min(0.6, along * 0.5)));
+        double at = round3(uniform(-along * 0.4, along * 0.4));
+        // even millimetres, so that a segment's centre and length are exact in the file's four decimals
+        double door = 2 * round3((kind < 0.93 ? uniform(MIN_DOOR, MAX_DOOR) : uniform(0.03, 2 * model.radius() - 0.01)) / 2);
+        double centre = round3(uniform(-span + door / 2 + 0.05, span - door / 2 - 0.05));
+        double[][] parts = {{-span, centre - door / 2}, {centre + door / 2, span}};
+        for (double[] part : parts) {
+            double length = part[1] - part[0];
+            if (length < 0.01) {
+                continue;
+            }
+            double mid = (part[0] + part[1]) / 2;
+            double x = acrossX ? at : mid, z = acrossX ? mid : at;
+            double sx = acrossX ? thickness : length, sz = acrossX ? length : thickness;
+            placed.add(Footprint.rectangle(x, z, sx, sz, 0));
+            blocks.add(new Reachability.Block(x, z, sx, sz, 0));
+            walls.add("{ \"id\": \"wall" + (walls.size() + 1) + "\", \"x\": " + Json.num4(x) + ", \"z\": " + Json.num4(z)
+                    + ", \"size\": [" + Json.num4(sx) + ", " + Json.num4(sz) + "], \"height\": 0.1 }");
+        }
+    }
+
+    /** A free place for an area anywhere on the floor (half the time at a wall or in a corner), far from {@code other}. */
+    private double[] anywhere(double r, double[] other) {
+        for (int attempt = 0; attempt < 200; attempt++) {
+            double[] p = random.nextBoolean() ? landmark(r, other) : spot(r, gap, 0.0);
+            if (p != null && clear(Footprint.circle(p[0], p[1], r + gap), Footprint.circle(p[0], p[1], r))
+                    && (other == null || Math.hypot(p[0] - other[0], p[1] - other[1]) >= 0.5)) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * Up to two boxes that slide back and forth at {@link #SLIDE_SPEED} along a lane of 20 to 60 cm
+     * whose whole sweep keeps the generator's passage from everything, so no passage ever closes;
+     * scripted as a move every {@link #SLIDE_EVERY} s (physics pushes what stands in the way).
+     */
+    private void slidingBoxes(List<String> boxes, List<String> events) {
+        int n = random.nextInt(3);
+        for (int m = 0; m < n; m++) {
+            for (int attempt = 0; attempt < 100; attempt++) {
+                double size = round3(uniform(0.04, 0.08));
+                boolean alongX = random.nextBoolean();
+                double travel = round3(uniform(0.2, 0.6));
+                double x = round3(uniform(-halfW + gap, halfW - gap));
+                double z = round3(uniform(-halfD + gap, halfD - gap));
+                double mx = alongX ? x + travel / 2 : x, mz = alongX ? z : z + travel / 2;
+                double lx = alongX ? travel + size : size, lz = alongX ? size : travel + size;
+                Footprint lane = Footprint.rectangle(mx, mz, lx, lz, 0);
+                Footprint grown = Footprint.rectangle(mx, mz, lx + 2 * gap, lz + 2 * gap, 0);
+                if (!grown.inside(halfW, halfD) || !clear(grown, lane)) {
+                    continue;
+                }
+                placed.add(lane);
+                String id = "box" + (boxes.size() + 1);
+                boxes.add("{ \"id\": \"" + id + "\", \"x\": " + num(x) + ", \"z\": " + num(z) + ", \"size\": " + num(size) + " }");
+                for (double t = SLIDE_EVERY; t <= SLIDE_UNTIL; t += SLIDE_EVERY) {
+                    double phase = (t * SLIDE_SPEED) % (2 * travel);
+                    double offset = round3(phase <= travel ? phase : 2 * travel - phase);
+                    events.add("{ \"at\": " + num(t) + ", \"do\": \"move\", \"object\": \"" + id + "\", \"x\": "
+                            + num(round3(alongX ? x + offset : x)) + ", \"z\": " + num(round3(alongX ? z : z + offset)) + " }");
+                }
+                break;
+            }
         }
     }
 
@@ -374,51 +595,5 @@ public final class WorldGenerator {
             return Long.toString((long) v);
         }
         return String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
-    }
-
-    /** A small JSON writer: one member per line, arrays one element per line. */
-    private static final class Json {
-        private final StringBuilder b = new StringBuilder();
-        private boolean first = true;
-
-        Json open() {
-            b.append("{\n");
-            return this;
-        }
-
-        private void key(String k) {
-            b.append(first ? "" : ",\n").append("  \"").append(k).append("\": ");
-            first = false;
-        }
-
-        Json field(String k, String text) {
-            key(k);
-            b.append('"').append(text.replace("\\", "\\\\").replace("\"", "\\\"")).append('"');
-            return this;
-        }
-
-        Json raw(String k, String json) {
-            key(k);
-            b.append(json);
-            return this;
-        }
-
-        Json array(String k, List<String> items) {
-            key(k);
-            if (items.isEmpty()) {
-                b.append("[]");
-                return this;
-            }
-            b.append("[\n");
-            for (int i = 0; i < items.size(); i++) {
-                b.append("    ").append(items.get(i)).append(i + 1 < items.size() ? ",\n" : "\n");
-            }
-            b.append("  ]");
-            return this;
-        }
-
-        String close() {
-            return b.append("\n}\n").toString();
-        }
     }
 }

@@ -49,6 +49,17 @@ public final class BaselineRunner {
                 s.walls(), s.boxes(), s.cylinders(), s.storage(), s.charger(), s.robots(), s.events()));
     }
 
+    /**
+     * {@return the equal-capability baseline of an experiment: the thesis-style program with the
+     * default agent's strategies ({@link EqualCapabilities}, {@link EqualObstacleAvoidanceBaseline})}
+     */
+    public static BaselineController createEqual(Experiment experiment, SimWorld world, long seed, Consumer<String> console) {
+        if (experiment == Experiment.OBSTACLE_AVOIDANCE) {
+            return new EqualObstacleAvoidanceBaseline(world, experiment.robot(), seed, console);
+        }
+        return ((ObjectPickingBaseline) create(experiment, world, seed, console)).withEqualCapabilities();
+    }
+
     /** {@return the baseline controller of an experiment, driving the experiment's robot in {@code world}} */
     public static BaselineController create(Experiment experiment, SimWorld world, long seed, Consumer<String> console) {
         String robot = experiment.robot();

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -54,6 +55,19 @@ public record CodeMetrics(Experiment experiment, List<String> files, int lines, 
         }
     }
 
+    /**
+     * {@return the source files of an experiment's equal-capability baseline}: the thesis-style
+     * program and the agents' strategies it calls, or for obstacle avoidance its own program
+     */
+    public static List<String> equalSources(Experiment e) {
+        if (e == Experiment.OBSTACLE_AVOIDANCE) {
+            return List.of("BaselineController.java", "EqualObstacleAvoidanceBaseline.java");
+        }
+        List<String> files = new ArrayList<>(sources(e));
+        files.add("EqualCapabilities.java");
+        return files;
+    }
+
     /** {@return the baseline package's source directory under the repository root} */
     public static Path sourceDir(Path repositoryRoot) {
         return repositoryRoot.resolve("robot-controller/src/main/java/jacabot/robot/baseline");
@@ -61,8 +75,17 @@ public record CodeMetrics(Experiment experiment, List<String> files, int lines, 
 
     /** {@return the metrics of an experiment's baseline, read from its source directory} */
     public static CodeMetrics of(Experiment e, Path sourceDir) throws IOException {
+        return of(e, sources(e), sourceDir);
+    }
+
+    /** {@return the metrics of an experiment's equal-capability baseline} */
+    public static CodeMetrics ofEqual(Experiment e, Path sourceDir) throws IOException {
+        return of(e, equalSources(e), sourceDir);
+    }
+
+    private static CodeMetrics of(Experiment e, List<String> sources, Path sourceDir) throws IOException {
         int lines = 0, code = 0, ifs = 0, loops = 0, conditions = 0;
-        for (String file : sources(e)) {
+        for (String file : sources) {
             String text = Files.readString(sourceDir.resolve(file), StandardCharsets.UTF_8);
             CodeMetrics m = count(e, file, text);
             lines += m.lines;
@@ -71,7 +94,7 @@ public record CodeMetrics(Experiment experiment, List<String> files, int lines, 
             loops += m.loops;
             conditions += m.conditions;
         }
-        return new CodeMetrics(e, sources(e), lines, code, ifs, loops, conditions);
+        return new CodeMetrics(e, sources, lines, code, ifs, loops, conditions);
     }
 
     /** {@return the metrics of one source text} */

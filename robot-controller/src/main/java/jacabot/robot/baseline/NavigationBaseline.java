@@ -139,7 +139,7 @@ public class NavigationBaseline extends ObjectPickingBaseline {
         if (!align(io.bearingTo(tx, tz))) {
             return false;
         }
-        robot.setSpeeds(maxSpeed / 2, maxSpeed / 2);
+        robot.setSpeeds(travelSpeed(), travelSpeed());
         long legEnds = 0;
         while (true) {
             step();
@@ -152,27 +152,49 @@ public class NavigationBaseline extends ObjectPickingBaseline {
                 robot.setSpeeds(0, 0);
                 return true;
             }
-            if (obstacleAhead()) {
+            if (progressLost()) {
+                escape();
+                robot.setSpeeds(travelSpeed(), travelSpeed());
+                legEnds = now() + Math.round(LEG * 1000);
+            } else if (obstacleAhead()) {
                 double delta = io.frontLeft.getValue() - io.frontRight.getValue();
                 if (!avoidSideways(delta)) {
                     return false;
                 }
-                robot.setSpeeds(maxSpeed / 2, maxSpeed / 2);
+                robot.setSpeeds(travelSpeed(), travelSpeed());
                 legEnds = now() + Math.round(LEG * 1000);
             } else if (now() >= legEnds && Math.abs(KheperaIo.gap(io.bearingTo(tx, tz), io.bearing())) > DRIFT) {
                 if (!align(io.bearingTo(tx, tz))) {
                     return false;
                 }
-                robot.setSpeeds(maxSpeed / 2, maxSpeed / 2);
+                robot.setSpeeds(travelSpeed(), travelSpeed());
             }
         }
+    }
+
+    /** {@return the wheel speed of a drive to a point: the C programs' half speed, or the agents' travel speed} */
+    private double travelSpeed() {
+        return equal != null ? EqualCapabilities.TRAVEL : maxSpeed / 2;
+    }
+
+    /** {@return whether a drive to a point has stopped getting anywhere (never, for the thesis' programs)} */
+    private boolean progressLost() {
+        return equal != null && equal.progressLost();
+    }
+
+    /** A knocked-out cylinder: the delivery is over (then stop, or look around for it). */
+    @Override
+    protected void fallen() {
+        delivering = false;
+        super.fallen();
     }
 
     /** Spins away from an obstacle on the way (right when central: turning around would undo the way). */
     private boolean avoidSideways(double delta) {
         print(String.format(Locale.ROOT, "obstacle on the way: %.0f", delta));
         spinAway(delta >= -DELTA && delta <= DELTA ? 1 : delta);
-        while (!safe()) {
+        long since = now();
+        while (!safe() && !clearTimedOut(since)) {
             step();
             if (urgent()) {
                 return false;

@@ -2,6 +2,7 @@ package jacabot.robot.baseline;
 import jacabot.robot.Experiment;
 
 import jacabot.sim.SimWorld;
+import jacabot.sim.world.AreaSpec;
 import jacabot.sim.device.Section;
 import java.util.Locale;
 import java.util.function.BooleanSupplier;
@@ -36,6 +37,8 @@ public class ObjectPickingBaseline extends BaselineController {
     protected final RandomMotion motion;
     /** Whether a cylinder is held and lifted (the middleware's {@code picked}). */
     protected boolean picked;
+    /** The default agent's strategies, for the equal-capability baseline; null in the thesis' programs. */
+    protected EqualCapabilities equal;
 
     public ObjectPickingBaseline(SimWorld world, String robotName, long seed, Consumer<String> console) {
         super(world, robotName, seed, console);
@@ -66,8 +69,54 @@ public class ObjectPickingBaseline extends BaselineController {
         } else if (obstacleAhead()) {
             avoid(delta);
         } else {
+            wander();
+        }
+    }
+
+    /**
+     * Gives this program the default agent's capabilities ({@link EqualCapabilities}): the
+     * equal-capability baseline of the experiment. {@return this}
+     */
+    public final ObjectPickingBaseline withEqualCapabilities() {
+        AreaSpec storage = world.spec().storage();
+        equal = new EqualCapabilities(this, storage, storage == null ? EqualCapabilities.SEARCH_LEGS_AFTER
+                : EqualCapabilities.SWEEP_AFTER);
+        return this;
+    }
+
+    /** {@return whether this is the equal-capability baseline} */
+    public final boolean hasEqualCapabilities() {
+        return equal != null;
+    }
+
+    /** What the robot does when nothing else applies: the C programs' random motion, or far sight and search. */
+    protected final void wander() {
+        if (equal != null) {
+            equal.wander();
+        } else {
             motion.poll(now());
         }
+    }
+
+    /** {@return how long a wait for an obstacle to clear may last, seconds}: the thesis' programs wait for ever */
+    private double clearPatience() {
+        return equal != null ? EqualCapabilities.CLEAR_PATIENCE : Double.POSITIVE_INFINITY;
+    }
+
+    /** The escape from a wait that did not end (equal capabilities only). */
+    protected final void escape() {
+        if (equal != null) {
+            equal.escape();
+        }
+    }
+
+    /** {@return whether a wait for the front to clear that began at {@code since} ms has run out (then escaped)} */
+    protected final boolean clearTimedOut(long since) {
+        if (now() - since > clearPatience() * 1000) {
+            escape();
+            return true;
+        }
+        return false;
     }
 
     /** While carrying, a grip force out of range means the cylinder fell: stop for good (§2.2). */
@@ -75,8 +124,17 @@ public class ObjectPickingBaseline extends BaselineController {
         if (picked && !io.gripping()) {
             picked = false;
             print("Cylinder has fallen. Anybody retrieve it.");
+            fallen();
+        }
+    }
+
+    /** After a fall: the thesis' programs stop for good; with equal capabilities, look around for it. */
+    protected void fallen() {
+        if (equal == null) {
             halt();
         }
+        abandonPick();
+        equal.lookAround();
     }
 
     /** {@return whether a routine must give up at once for a more important task} */
@@ -125,7 +183,8 @@ public class ObjectPickingBaseline extends BaselineController {
         } else {
             spinAway(delta);
         }
-        while (!safe()) {
+        long since = now();
+        while (!safe() && !clearTimedOut(since)) {
             step();
             if (urgent()) {
                 return false;
@@ -183,6 +242,9 @@ public class ObjectPickingBaseline extends BaselineController {
         }
         picked = true;
         print("Picking ok");
+        if (equal != null) {
+            equal.found();
+        }
         afterPicked();
     }
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class CodeMetricsTest {
@@ -41,5 +42,18 @@ class CodeMetricsTest {
         assertTrue(two.codeLines() < three.codeLines() && three.codeLines() < four.codeLines());
         assertTrue(two.conditions() < three.conditions() && three.conditions() < four.conditions());
         assertEquals(6, four.files().size());
+    }
+
+    /** The equal-capability baseline is counted as the thesis-style program plus the routines it calls. */
+    @Test
+    void theEqualBaselineCountsTheProgramAndItsStrategies() throws Exception {
+        Path root = Path.of(System.getProperty("jacabot.rootDir", ".."));
+        for (Experiment e : new Experiment[] {Experiment.OBJECT_PICKING, Experiment.NAVIGATION, Experiment.SUSPEND_RESUME}) {
+            CodeMetrics thesis = CodeMetrics.of(e, CodeMetrics.sourceDir(root)), equal = CodeMetrics.ofEqual(e, CodeMetrics.sourceDir(root));
+            assertTrue(equal.files().containsAll(thesis.files()) && equal.files().contains("EqualCapabilities.java"), e.id());
+            assertTrue(equal.codeLines() > thesis.codeLines() + 100 && equal.conditions() > thesis.conditions(), e.id());
+        }
+        assertEquals(List.of("BaselineController.java", "EqualObstacleAvoidanceBaseline.java"),
+                CodeMetrics.ofEqual(Experiment.OBSTACLE_AVOIDANCE, CodeMetrics.sourceDir(root)).files());
     }
 }
