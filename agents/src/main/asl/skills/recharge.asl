@@ -58,12 +58,17 @@ forgetOnFall(atCharger).
 @rechargeSuspend
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- mark; +charging; ?battery(B); .print("Battery low! Level: ", B);
-       !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+       !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+       !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
        !reachMarked; stop; .print("Previous pt reached");
        ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz); ?ray(R); setThreshold(R);
        !restoreOrientation(O); -charging.
+
+// hooks for a robot that shares the charger (a team's skill: team-claims): its turn, then leave it
+@chargerFree +!awaitChargerTurn.
+@chargerLeft +!chargerDone.
 
 // the trip to the charger, "charging" believed (the task stays suspended): also a robot's way to park
 @goToCharger

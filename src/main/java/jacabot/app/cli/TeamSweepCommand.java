@@ -1,0 +1,4 @@
+package jacabot.app.cli;
+
+final class TeamSweepCommand {
+}
