@@ -55,9 +55,11 @@ forgetOnFall(atCharger).
 
 // Recovery, not in the thesis: the waits for the charger, the charge and the marked point are
 // bounded (!reachCharger, !waitCharged, !reachMarked); the robot steers on the way (!!steer).
+// "charging" first: lowBattery comes every control step while the battery is low, and those queued
+// behind an atomic plan must find the robot charging already (else each one started a recharge)
 @rechargeSuspend
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
-    <- mark; +charging; ?battery(B); .print("Battery low! Level: ", B);
+    <- +charging; mark; ?battery(B); .print("Battery low! Level: ", B);
        !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
