@@ -2,6 +2,7 @@ package jacabot.app.cli;
 
 import jacabot.app.console.ConsoleLog;
 import jacabot.app.run.AgentSource;
+import jacabot.app.sweep.SweepPlan;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
 import jacabot.app.world.WorldGenerator;
@@ -12,7 +13,6 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -82,9 +82,14 @@ final class TeamSweepCommand implements Callable<Integer> {
             throw new UserError("unknown team experiment '" + experiment + "' (expected team-delivery)");
         }
         ConsoleLog log = verbosity.console(commandSpec);
-        double seconds = ExperimentCommand.parseDuration(duration);
-        List<Long> runSeeds = parseSeeds(seeds);
-        List<Long> worlds = parseSeeds(worldSeeds);
+        double seconds;
+        try {
+            seconds = ExperimentCommand.parseDuration(duration);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--duration: " + e.getMessage());
+        }
+        List<Long> runSeeds = seedsOf("--seeds", seeds);
+        List<Long> worlds = seedsOf("--world-seeds", worldSeeds);
         if (jobs < 1 || robots.stream().anyMatch(n -> n < 1 || n > WorldGenerator.MAX_TEAM)) {
             throw new UserError("--jobs must be at least 1, --robots 1.." + WorldGenerator.MAX_TEAM);
         }
@@ -130,19 +135,11 @@ final class TeamSweepCommand implements Callable<Integer> {
         return 0;
     }
 
-    static List<Long> parseSeeds(String text) {
+    private static List<Long> seedsOf(String option, String text) {
         try {
-            if (text.contains("..")) {
-                String[] p = text.split("\\.\\.");
-                List<Long> out = new ArrayList<>();
-                for (long s = Long.parseLong(p[0].trim()); s <= Long.parseLong(p[1].trim()); s++) {
-                    out.add(s);
-                }
-                return out;
-            }
-            return Arrays.stream(text.split(",")).map(String::trim).map(Long::parseLong).toList();
-        } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
-            throw new UserError("--seeds: '" + text + "' (examples: 1..3, 5, 1,4,9)");
+            return SweepPlan.seeds(text);
+        } catch (IllegalArgumentException e) {
+            throw new UserError(option + ": " + e.getMessage());
         }
     }
 

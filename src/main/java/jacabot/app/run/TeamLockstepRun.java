@@ -25,8 +25,6 @@ import jacabot.experiments.team.ChargerQueue;
 import jacabot.experiments.team.TaskBoard;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Experiment;
-import jacabot.robot.link.Command;
-import jacabot.robot.link.Readings;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
@@ -236,15 +234,6 @@ public final class TeamLockstepRun implements AutoCloseable {
         } catch (RuntimeException e) {
             failure = e;
         }
-    }
-
-    /** A robot's line for its event log: the step's readings and its agent's commands. */
-    static String describe(StepData data, List<Command> commands) {
-        StringBuilder sb = new StringBuilder("step ").append(data.step()).append(" t=").append(data.simTimeMs());
-        for (SensorInfo info : data.readings()) {
-            sb.append(' ').append(Readings.format(info));
-        }
-        return sb.append(" -> ").append(commands).toString();
     }
 
     /** The middleware end of a robot's link: collects a step's readings until its marker. */

@@ -82,7 +82,7 @@ final class TeamMember {
         }
         List<Command> commands = new ArrayList<>(middleware.takeCommands());
         if (log) {
-            eventLog.add(TeamLockstepRun.describe(d, commands));
+            eventLog.add(LockstepCoordinator.describe(d.step(), d.simTimeMs(), d.readings(), commands));
         }
         link.middleware().answerStep(commands, d.step());
     }
