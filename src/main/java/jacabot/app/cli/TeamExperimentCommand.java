@@ -95,7 +95,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
                 : AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
         Path outDir = out != null ? out : runFolder(world == null ? null : worldFile, baseline, n, runSeed);
         Files.createDirectories(outDir);
-        log.info("Team delivery: " + n + " Kheperas, world " + worldFile + ", seed " + runSeed + ", " + duration
+        log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + worldFile + ", seed " + runSeed + ", " + duration
                 + " of simulated time, " + (baseline ? "procedural baseline (no coordination)" : "agent " + source.name())
                 + ", lockstep.");
         long t0 = System.nanoTime();
