@@ -50,3 +50,7 @@ setUpGoal(setUpTeam).
 @awaitChargerTurn
 +!awaitChargerTurn <- stop; requestCharger; .print("Waiting for the charger"); awaitCharger; .print("The charger is mine").
 @leaveChargerQueue +!chargerDone <- leaveCharger.
+// a recharge given up (a fallen cylinder drops every desire and forgets "charging") leaves the
+// queue too, else its robot held the charger for the rest of the run; with a cylinder being
+// delivered, recharge's own plan for -charging resumes the delivery (the queue is left already)
+@leaveChargerOnGiveUp -charging : not delivering <- leaveCharger.
