@@ -27,7 +27,10 @@ setUpGoal(setUpFarSight).
 @homeOnSighting
 +cylinderSighted(Off, Dist) : not picking & not picked(true) & not avoiding & reachCylinder(false) & not ignoring
                            & not goingRound & not pickingOff
-    <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); !home(Off).
+    <- !sighted(Off, Dist).
+// what a sighting leads to: homing on it (a team's skill first claims the cylinder: team-claims)
+@sightedHome +!sighted(Off, Dist) <- !homeOn(Off, Dist).
+@homeOn +!homeOn(Off, Dist) <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); !home(Off).
 
 @homeStart +!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
 @homeGiveUp

@@ -55,15 +55,22 @@ forgetOnFall(atCharger).
 
 // Recovery, not in the thesis: the waits for the charger, the charge and the marked point are
 // bounded (!reachCharger, !waitCharged, !reachMarked); the robot steers on the way (!!steer).
+// "charging" first: lowBattery comes every control step while the battery is low, and those queued
+// behind an atomic plan must find the robot charging already (else each one started a recharge)
 @rechargeSuspend
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
-    <- mark; +charging; ?battery(B); .print("Battery low! Level: ", B);
-       !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+    <- +charging; mark; ?battery(B); .print("Battery low! Level: ", B);
+       !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+       !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
        !reachMarked; stop; .print("Previous pt reached");
        ?storagePoint(Tx, Tz); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz); ?ray(R); setThreshold(R);
        !restoreOrientation(O); -charging.
+
+// hooks for a robot that shares the charger (a team's skill: team-claims): its turn, then leave it
+@chargerFree +!awaitChargerTurn.
+@chargerLeft +!chargerDone.
 
 // the trip to the charger, "charging" believed (the task stays suspended): also a robot's way to park
 @goToCharger

@@ -118,7 +118,6 @@ class DocsTest {
     static List<String> problems(Path root) throws IOException {
         Map<String, Boolean> classes = new HashMap<>();
         List<Path> files = index(root);
-        CommandLine launcher = JacabotCommand.commandLine();
         List<String> out = new ArrayList<>();
         for (Path doc : documents(root)) {
             String name = root.relativize(doc).toString();
@@ -138,13 +137,13 @@ class DocsTest {
                         cmd = cmd.substring(0, cmd.length() - 1) + " " + lines.get(++k).strip();
                     }
                     code.add(cmd);
-                    command(cmd.strip().replaceFirst("^\\$ ", ""), false).ifPresent(c -> parse(launcher, c, false, where, out));
+                    command(cmd.strip().replaceFirst("^\\$ ", ""), false).ifPresent(c -> parse(launcherFor(c), c, false, where, out));
                 } else {
                     // a span that is the text of a link to another site names that site's file, not ours
                     Matcher m = SPAN.matcher(line.replaceAll("\\[`[^`]*`\\]\\((https?|mailto):[^)]*\\)", ""));
                     while (m.find()) {
                         code.add(m.group(1));
-                        command(m.group(1), true).ifPresent(c -> parse(launcher, c, true, where, out));
+                        command(m.group(1), true).ifPresent(c -> parse(launcherFor(c), c, true, where, out));
                     }
                     Matcher l = LINK.matcher(line);
                     while (l.find()) {
@@ -258,6 +257,11 @@ class DocsTest {
             args.add(SAMPLE.getOrDefault(u, u.matches("[A-Z]{1,2}") ? "1" : u));
         }
         return Optional.of(args);
+    }
+
+    /** {@return the launcher as it parses these arguments (the team's experiment and sweep are commands of their own)} */
+    private static CommandLine launcherFor(List<String> args) {
+        return JacabotCommand.commandLine(args.toArray(new String[0]));
     }
 
     /** A span may name a command without all it needs (`jacabot run`, `jacabot run --tls-store`); a code line may not. */

@@ -50,6 +50,8 @@ public final class RobotController implements AutoCloseable {
     private volatile long step;
     /** Lockstep: the step sensed under the world's lock, to be sent and answered without it. */
     private Sensed sensed;
+    /** A team's lockstep: the step sent by {@link #sendStep}, answered in {@link #finishStep}. */
+    private Sensed sent;
     private boolean failSafeTripped;
     private volatile long failSafeTrips;
     private volatile boolean started, closed;
@@ -207,6 +209,43 @@ public final class RobotController implements AutoCloseable {
         }
         synchronized (world) {
             act(s.now(), received);
+        }
+    }
+
+    /**
+     * Several robots of one world in lockstep (a team), first half of {@link #answerStep}: sends the
+     * step {@link #controlStep} sensed, without waiting for the answer, so that every robot's step is
+     * delivered before any agent reasons. {@return false when there was no step to send or no link}
+     */
+    public boolean sendStep() {
+        Sensed s = sensed;
+        sensed = null;
+        if (s == null || closed || !inbox.isConnected()) {
+            return false;
+        }
+        link.send(out -> out.writeStep(s.batch(), s.marker()));
+        sent = s;
+        return true;
+    }
+
+    /**
+     * Second half: waits for the answer to the step {@link #sendStep} sent and applies it under the
+     * world's lock (a dropped link trips the fail-safe instead). The caller steps the world after.
+     */
+    public void finishStep() throws InterruptedException {
+        Sensed s = sent;
+        sent = null;
+        if (s == null) {
+            return;
+        }
+        link.readAnswer(s.batch().step());
+        CommandInbox.AckResult ack = inbox.awaitAck(s.batch().step());
+        synchronized (world) {
+            if (ack == CommandInbox.AckResult.ACKED) {
+                act(s.now(), inbox.takeCommands());
+            } else if (ack == CommandInbox.AckResult.DROPPED) {
+                failSafe("the link to the middleware dropped");
+            }
         }
     }
 

@@ -70,7 +70,8 @@ import picocli.CommandLine.TypeConversionException;
 /** {@code jacabot experiment NAME}: runs one of the four experiments of the thesis' Chapter 4, or tidy-up (composed of their skills). */
 @Command(name = "experiment", mixinStandardHelpOptions = true,
         description = {"Runs an experiment of Chapter 4 with the agent in the loop: obstacle-avoidance, "
-                + "object-picking, navigation, suspend-resume (or 1-4); or tidy-up (5), a task composed of their skills.",
+                + "object-picking, navigation, suspend-resume (or 1-4); or tidy-up (5), a task composed of their skills; "
+                + "or team-delivery, a team of robots (its own options: jacabot experiment team-delivery --help).",
                 "Headless runs go in lockstep as fast as possible and end with a summary and a PNG of the trajectory."})
 final class ExperimentCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "NAME", converter = ExperimentConverter.class,

@@ -1,10 +1,12 @@
 package jacabot.app.cli;
 
+import jacabot.app.world.WorldGenerator;
 import jacabot.experiments.link.LinkRegistry;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.util.List;
+import java.util.Map;
 import java.util.Properties;
 import picocli.CommandLine.Command;
 import picocli.CommandLine;
@@ -75,8 +77,23 @@ public final class JacabotCommand implements Runnable {
             return commandLine();
         }
         CommandLine cl = new CommandLine(new JacabotCommand());
-        cl.addSubcommand(named);
+        cl.addSubcommand(isTeam(args) ? TEAM_COMMANDS.getOrDefault(named, named) : named);
         return withHandlers(cl);
+    }
+
+    /** The team's own commands, of the same names: {@code experiment team-delivery}, {@code sweep team-delivery}. */
+    private static final Map<Class<?>, Class<?>> TEAM_COMMANDS = Map.of(ExperimentCommand.class, TeamExperimentCommand.class,
+            SweepCommand.class, TeamSweepCommand.class);
+
+    /** {@return whether the subcommand's first argument that is not an option is team-delivery} */
+    private static boolean isTeam(String[] args) {
+        int words = 0;
+        for (String a : args) {
+            if (!a.startsWith("-") && ++words == 2) {
+                return a.equals(WorldGenerator.TEAM_DELIVERY);
+            }
+        }
+        return false;
     }
 
     /** {@return the subcommand the first argument that is not an option names, or null} */

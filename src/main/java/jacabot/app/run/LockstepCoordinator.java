@@ -318,7 +318,12 @@ public final class LockstepCoordinator {
     }
 
     private static String describe(LinkEvent.StepMarker m, List<SensorInfo> readings, List<Command> commands) {
-        StringBuilder sb = new StringBuilder("step ").append(m.step()).append(" t=").append(m.simTimeMs());
+        return describe(m.step(), m.simTimeMs(), readings, commands);
+    }
+
+    /** {@return the agent side's line of a step in the event log: its readings and the commands answered} */
+    static String describe(long step, long simTimeMs, List<SensorInfo> readings, List<Command> commands) {
+        StringBuilder sb = new StringBuilder("step ").append(step).append(" t=").append(simTimeMs);
         for (SensorInfo info : readings) {
             sb.append(' ').append(Readings.format(info));
         }

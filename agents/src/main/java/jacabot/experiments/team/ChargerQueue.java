@@ -59,6 +59,11 @@ public class ChargerQueue extends Artifact {
         leave(getCurrentOpAgentId());
     }
 
+    /** {@return the queued agents' names, the holder first; read it between two artifact steps} */
+    public List<String> queued() {
+        return queue.stream().map(AgentId::name).toList();
+    }
+
     @Override
     protected void agentLeft(AgentId agent) {
         leave(agent);

@@ -46,6 +46,10 @@ public class TaskBoard extends Artifact {
     private double radius;
     private int lastId;
 
+    /** A claim as a run's checks read it (no two claimers on one cylinder): the agent's name and the place. */
+    public record Held(int id, String agent, double x, double z) {
+    }
+
     void init() {
         init(DEFAULT_RADIUS);
     }
@@ -111,6 +115,15 @@ public class TaskBoard extends Artifact {
     @OPERATION
     void releaseAll() {
         freeAll(getCurrentOpAgentId());
+    }
+
+    /** {@return the claims now, oldest first; read it between two artifact steps (a lockstep run's)} */
+    public List<Held> claims() {
+        List<Held> out = new ArrayList<>();
+        for (Claim c : claims.values()) {
+            out.add(new Held(c.id(), c.agent().name(), c.x(), c.z()));
+        }
+        return out;
     }
 
     @Override

@@ -1,0 +1,198 @@
+package jacabot.app.cli;
+
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.app.Installation;
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
+import jacabot.app.sweep.TeamDeliveryRun;
+import jacabot.app.world.TeamWorld;
+import jacabot.app.world.WorldGenerator;
+import jacabot.cartago.CartagoException;
+import jacabot.robot.run.RunSummary;
+import jacabot.sim.io.WorldFileException;
+import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.world.WorldSpec;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jacabot experiment team-delivery}: a team of Kheperas and their agents in one world, in
+ * lockstep in one process (thesis Chapter 6), or {@code --baseline} the procedural team without
+ * coordination. The launcher picks this command instead of {@link ExperimentCommand} when the
+ * experiment named is team-delivery ({@link JacabotCommand#commandLine(String...)}).
+ */
+@Command(name = "experiment", mixinStandardHelpOptions = true,
+        description = {"Runs team-delivery: N Kheperas collect the arena's red cylinders into the storage area and "
+                + "share one charger, one agent per robot coordinating through a task board and a charger queue, "
+                + "in lockstep in one process, headless.",
+                "The console's lines are prefixed by the robot ([khepera2] ...); the run ends with a summary per robot and one for the team."})
+final class TeamExperimentCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "NAME", description = "team-delivery")
+    private String name;
+
+    @Option(names = "--robots", paramLabel = "N", description = "the team's size: the world's first N robots "
+            + "(default: every robot of the world; the packaged world has 4)")
+    private Integer robots;
+
+    @Option(names = "--seed", paramLabel = "N", description = "seed of the world and the agents (default: the world file's)")
+    private Long seed;
+
+    @Option(names = "--duration", paramLabel = "T", description = "simulated time: 90s, 10m, ... (default ${DEFAULT-VALUE})")
+    private String duration = "10m";
+
+    @Option(names = "--world", paramLabel = "FILE", description = "the world file (default worlds/team-delivery.json)")
+    private Path world;
+
+    @Option(names = "--agent", paramLabel = "FILE", description = "every robot's agent (default: the packaged "
+            + "agents/src/main/asl/team-delivery.asl)")
+    private Path agent;
+
+    @Option(names = "--baseline", description = "run N copies of experiment 4's procedural baseline, without coordination")
+    private boolean baseline;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "where the summaries and event logs go "
+            + "(default runs/team-delivery[-WORLD][-baseline]-NROBOTS-SEED)")
+    private Path out;
+
+    @Option(names = "--headless", description = "accepted for symmetry with the other experiments: a team always runs headless")
+    private boolean headless;
+
+    @Mixin
+    private VerbosityOptions verbosity = new VerbosityOptions();
+
+    @Spec
+    private CommandSpec commandSpec;
+
+    @Override
+    public Integer call() throws Exception {
+        if (!WorldGenerator.TEAM_DELIVERY.equals(name)) {
+            throw new UserError("unknown team experiment '" + name + "' (expected team-delivery)");
+        }
+        ConsoleLog log = verbosity.console(commandSpec);
+        double seconds;
+        try {
+            seconds = ExperimentCommand.parseDuration(duration);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--duration: " + e.getMessage());
+        }
+        Path worldFile = world != null ? Installation.locate(world) : Installation.resolve("worlds/team-delivery.json");
+        WorldSpec spec = teamWorld(worldFile, robots);
+        long runSeed = seed != null ? seed : spec.seed();
+        int n = spec.robots().size();
+        AgentSource source = agent != null ? ExperimentCommand.readAgent(Installation.locate(agent))
+                : AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
+        Path outDir = out != null ? out : runFolder(world == null ? null : worldFile, baseline, n, runSeed);
+        Files.createDirectories(outDir);
+        log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + worldFile + ", seed " + runSeed + ", " + duration
+                + " of simulated time, " + (baseline ? "procedural baseline (no coordination)" : "agent " + source.name())
+                + ", lockstep.");
+        long t0 = System.nanoTime();
+        TeamDeliveryRun.Outcome outcome;
+        if (baseline) {
+            outcome = TeamDeliveryRun.baseline(spec, runSeed, seconds);
+        } else {
+            PrintStream console = log.agents();
+            long every = 60_000;
+            try {
+                outcome = TeamDeliveryRun.agents(spec, source, runSeed, seconds, console, false, t -> {
+                    if (t > 0 && t % every == 0) {
+                        log.info(String.format(Locale.ROOT, "t=%d s", t / 1000));
+                    }
+                });
+            } catch (AslSyntaxException e) {
+                throw UserError.located(e.getMessage());
+            } catch (CartagoException e) {
+                throw new IllegalStateException("cannot make the team's artifacts: " + e.getMessage(), e);
+            }
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        List<String> text = summary(outcome, worldFile, baseline ? null : source.name(), wall);
+        write(outDir, outcome, text);
+        log.info("");
+        text.forEach(log::result);
+        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt");
+        if (outcome.agentFailure().isPresent()) {
+            throw new RunFailure(outcome.agentFailure().get());
+        }
+        return 0;
+    }
+
+    /** {@return the world's spec with its first {@code robots} robots} @throws UserError when it cannot serve a team */
+    static WorldSpec teamWorld(Path worldFile, Integer robots) {
+        WorldSpec spec;
+        try {
+            spec = WorldFileReader.read(worldFile);
+        } catch (WorldFileException e) {
+            throw new UserError(e.getMessage());
+        }
+        int n = robots != null ? robots : spec.robots().size();
+        if (n < 1) {
+            throw new UserError("--robots must be at least 1, got " + n);
+        }
+        var missing = TeamWorld.missing(spec, n, worldFile.toString());
+        if (missing.isPresent()) {
+            throw UserError.located(missing.get());
+        }
+        try {
+            return TeamWorld.firstRobots(spec, n);
+        } catch (IllegalArgumentException e) {
+            throw new UserError(worldFile + ": " + e.getMessage());
+        }
+    }
+
+    static Path runFolder(Path world, boolean baseline, int robots, long seed) {
+        var name = new StringBuilder(WorldGenerator.TEAM_DELIVERY);
+        if (world != null && !world.getFileName().toString().equals(WorldGenerator.TEAM_DELIVERY + ".json")) {
+            String n = world.getFileName().toString();
+            name.append('-').append(n.endsWith(".json") ? n.substring(0, n.length() - 5) : n);
+        }
+        if (baseline) {
+            name.append("-baseline");
+        }
+        return Path.of("runs", name.append('-').append(robots).append("robots-").append(seed).toString());
+    }
+
+    /** {@return the summary's lines: one per robot, then the team's and the verdict} */
+    static List<String> summary(TeamDeliveryRun.Outcome o, Path worldFile, String agentName, double wallSeconds) {
+        List<String> lines = new ArrayList<>();
+        lines.add("team-delivery, " + o.robots().size() + " robots, seed " + o.seed() + ", world " + worldFile + ", "
+                + (agentName == null ? "procedural baseline" : "agent " + agentName));
+        for (RunSummary r : o.robots()) {
+            lines.add(String.format(Locale.ROOT, "[%s] picks %d, deliveries %d, contact %.1f s, battery min %s J%s, "
+                            + "charger visits %d, distance %.1f m", r.robot(), r.picks(), r.deliveries(), r.contactTime(),
+                    r.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", r.batteryMin()),
+                    r.batteryEmptied() ? " (emptied)" : "", r.chargerVisits(), r.distance()));
+        }
+        var f = o.figures();
+        lines.add(String.format(Locale.ROOT, "team: %d deliveries of %d cylinders in %.0f s; %s", f.deliveries(), f.cylinders(),
+                f.duration(), o.baseline() ? "no coordination (no claims, no charger queue)"
+                        : String.format(Locale.ROOT, "%d claims, %d double claims, %d charger waits (longest %.1f s)",
+                        o.claims(), f.doubleClaims(), o.chargerWaits(), f.longestChargerWait())));
+        lines.add("criteria: " + (o.verdict().success() ? "met" : "not met: " + o.verdict().reason()));
+        lines.add(String.format(Locale.ROOT, "%.0f s simulated in %.1f s%s", f.duration(), wallSeconds,
+                o.baseline() ? "" : ", " + o.cycles() + " reasoning cycles"));
+        o.agentFailure().ifPresent(why -> lines.add("agent failure: " + why));
+        return lines;
+    }
+
+    private static void write(Path outDir, TeamDeliveryRun.Outcome o, List<String> text) throws IOException {
+        Files.writeString(outDir.resolve("summary.txt"), String.join("\n", text) + "\n");
+        for (RunSummary r : o.robots()) {
+            Path dir = Files.createDirectories(outDir.resolve(r.robot()));
+            r.writeJson(dir.resolve("summary.json"));
+            Files.writeString(dir.resolve("event-log.txt"), r.eventLog());
+        }
+    }
+}

@@ -1,0 +1,185 @@
+package jacabot.app.cli;
+
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.run.AgentSource;
+import jacabot.app.sweep.SweepPlan;
+import jacabot.app.sweep.TeamDeliveryRun;
+import jacabot.app.world.TeamWorld;
+import jacabot.app.world.WorldGenerator;
+import jacabot.robot.run.RunSummary;
+import jacabot.sim.world.WorldSpec;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.stream.Collectors;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code jacabot sweep team-delivery}: teams of 1, 2, 4 ... robots, coordinated (agents) and not
+ * (the procedural baseline), on generated team worlds x seeds. Each generator seed gives one arena
+ * for every team size (the first robots keep their places), so the sizes compare. Writes
+ * OUT/runs.csv (a row per run) and OUT/report.md (deliveries per team size and controller, and
+ * each size's ratio to one robot on the same worlds and seeds).
+ */
+@Command(name = "sweep", mixinStandardHelpOptions = true,
+        description = {"Runs team-delivery over generated team worlds x seeds for each team size, agents and the "
+                + "procedural baseline, and judges each run by the team criteria (docs/teams.md).",
+                "Writes OUT/runs.csv and OUT/report.md. Exit 0 when every run was made (failed runs included), 2 on bad usage."})
+final class TeamSweepCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "EXPERIMENT", description = "team-delivery")
+    private String experiment;
+
+    @Option(names = "--robots", split = ",", paramLabel = "N", description = "team sizes (default ${DEFAULT-VALUE})")
+    private List<Integer> robots = List.of(1, 2, 4);
+
+    @Option(names = "--world-seeds", paramLabel = "SEEDS", description = "generated team worlds of these generator seeds: "
+            + "1..K or a list (default ${DEFAULT-VALUE})")
+    private String worldSeeds = "1..5";
+
+    @Option(names = "--seeds", paramLabel = "SEEDS", description = "run seeds: 1..N or a list (default ${DEFAULT-VALUE})")
+    private String seeds = "1";
+
+    @Option(names = "--controllers", split = ",", paramLabel = "C", description = "agents, baseline or both (default agents,baseline)")
+    private List<String> controllers = List.of("agents", "baseline");
+
+    @Option(names = "--duration", paramLabel = "T", description = "simulated time per run (default ${DEFAULT-VALUE})")
+    private String duration = "10m";
+
+    @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default ${DEFAULT-VALUE})")
+    private int jobs = 1;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "where runs.csv and report.md go (default ${DEFAULT-VALUE})")
+    private Path out = Path.of("runs", "sweep-team-delivery");
+
+    @Mixin
+    private VerbosityOptions verbosity = new VerbosityOptions();
+
+    @Spec
+    private CommandSpec commandSpec;
+
+    /** One run of the sweep and what it gave. */
+    private record Row(long world, int robots, String controller, long seed, TeamDeliveryRun.Outcome outcome) {
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (!WorldGenerator.TEAM_DELIVERY.equals(experiment)) {
+            throw new UserError("unknown team experiment '" + experiment + "' (expected team-delivery)");
+        }
+        ConsoleLog log = verbosity.console(commandSpec);
+        double seconds;
+        try {
+            seconds = ExperimentCommand.parseDuration(duration);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--duration: " + e.getMessage());
+        }
+        List<Long> runSeeds = seedsOf("--seeds", seeds);
+        List<Long> worlds = seedsOf("--world-seeds", worldSeeds);
+        if (jobs < 1 || robots.stream().anyMatch(n -> n < 1 || n > WorldGenerator.MAX_TEAM)) {
+            throw new UserError("--jobs must be at least 1, --robots 1.." + WorldGenerator.MAX_TEAM);
+        }
+        for (String c : controllers) {
+            if (!c.equals("agents") && !c.equals("baseline")) {
+                throw new UserError("--controllers: '" + c + "' (expected agents, baseline or both)");
+            }
+        }
+        Files.createDirectories(out);
+        int largest = robots.stream().mapToInt(Integer::intValue).max().orElse(1);
+        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        ExecutorService pool = Executors.newFixedThreadPool(jobs);
+        List<Future<Row>> futures = new ArrayList<>();
+        for (long w : worlds) {
+            WorldSpec spec = WorldGenerator.team(largest, w).generate().spec();
+            for (long seed : runSeeds) {
+                for (int n : robots) {
+                    WorldSpec team = TeamWorld.firstRobots(spec, n);
+                    for (String c : controllers) {
+                        long world = w;
+                        futures.add(pool.submit(() -> {
+                            var o = c.equals("baseline") ? TeamDeliveryRun.baseline(team, seed, seconds)
+                                    : TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
+                            log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %d deliveries%s", world, seed,
+                                    n, n == 1 ? "" : "s", c, o.deliveries(), o.verdict().success() ? "" : " (" + o.verdict().reason() + ")"));
+                            return new Row(world, n, c, seed, o);
+                        }));
+                    }
+                }
+            }
+        }
+        pool.shutdown();
+        List<Row> rows = new ArrayList<>();
+        for (Future<Row> f : futures) {
+            rows.add(f.get());
+        }
+        Files.writeString(out.resolve("runs.csv"), csv(rows));
+        String report = report(rows, seconds);
+        Files.writeString(out.resolve("report.md"), report);
+        report.lines().forEach(log::result);
+        log.result("Written: " + out.resolve("runs.csv") + ", " + out.resolve("report.md"));
+        return 0;
+    }
+
+    private static List<Long> seedsOf(String option, String text) {
+        try {
+            return SweepPlan.seeds(text);
+        } catch (IllegalArgumentException e) {
+            throw new UserError(option + ": " + e.getMessage());
+        }
+    }
+
+    private static String csv(List<Row> rows) {
+        var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,claims,double_claims,"
+                + "charger_waits,longest_charger_wait_s,success,reason\n");
+        for (Row r : rows) {
+            var o = r.outcome();
+            String per = o.robots().stream().map(s -> Integer.toString(s.deliveries())).collect(Collectors.joining(" "));
+            double contact = o.robots().stream().mapToDouble(RunSummary::contactTime).max().orElse(0);
+            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%d,%d,%d,%.1f,%s,\"%s\"%n", r.world(),
+                    r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.claims(), o.figures().doubleClaims(),
+                    o.chargerWaits(), o.figures().longestChargerWait(), o.verdict().success(), o.verdict().reason()));
+        }
+        return sb.toString();
+    }
+
+    /** A table: per controller and team size, the deliveries, the ratio to one robot, the criteria met. */
+    private static String report(List<Row> rows, double seconds) {
+        var sb = new StringBuilder("# team-delivery sweep\n\n");
+        sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds.%n%n", rows.size(), seconds));
+        sb.append("| controller | robots | runs | deliveries | per run | vs one robot | contact < 2 s (all robots) | criteria met |\n");
+        sb.append("|---|---|---|---|---|---|---|---|\n");
+        Map<String, Map<Integer, List<Row>>> by = new LinkedHashMap<>();
+        for (Row r : rows) {
+            by.computeIfAbsent(r.controller(), k -> new LinkedHashMap<>()).computeIfAbsent(r.robots(), k -> new ArrayList<>()).add(r);
+        }
+        for (var c : by.entrySet()) {
+            List<Row> single = c.getValue().get(1);
+            int singleTotal = single == null ? 0 : single.stream().mapToInt(r -> r.outcome().deliveries()).sum();
+            for (var n : c.getValue().entrySet()) {
+                List<Row> rs = n.getValue();
+                int total = rs.stream().mapToInt(r -> r.outcome().deliveries()).sum();
+                long lowContact = rs.stream().filter(r -> r.outcome().robots().stream().allMatch(s -> s.contactTime() < 2)).count();
+                long met = rs.stream().filter(r -> r.outcome().verdict().success()).count();
+                String ratio = single == null || singleTotal == 0 ? "-" : String.format(Locale.ROOT, "%.2f×", (double) total / singleTotal);
+                sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %.2f | %s | %d of %d | %d of %d |%n", c.getKey(),
+                        n.getKey(), rs.size(), total, (double) total / rs.size(), ratio, lowContact, rs.size(), met, rs.size()));
+            }
+        }
+        return sb.toString();
+    }
+}

@@ -1,0 +1,132 @@
+package jacabot.app.run;
+
+import jacabot.experiments.team.ChargerQueue;
+import jacabot.experiments.team.TaskBoard;
+import jacabot.sim.SimWorld;
+import jacabot.sim.engine.ObjectKind;
+import jacabot.sim.engine.ObjectState;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * What a team run's shared artifacts show, read after every control step against the world's
+ * ground truth: how many claims were made, whether two robots ever held claims on one cylinder
+ * (each claim is the cylinder nearest its place), and how long each robot waited in the charger's
+ * queue behind another (from joining it to holding the charger).
+ */
+public final class TeamWatch {
+    /** A claim farther than this from every cylinder names none, metres. */
+    static final double CLAIM_REACH = 0.3;
+
+    private final SimWorld world;
+    private final TaskBoard board;
+    private final ChargerQueue charger;
+    private final List<String> robots;
+    private final Map<String, Long> waitingSince = new HashMap<>();
+    private final Map<String, Double> longestWait = new HashMap<>();
+    private final Set<String> doubled = new HashSet<>();
+    private int claims;
+    private int doubleClaims;
+    private int chargerWaits;
+
+    TeamWatch(SimWorld world, TaskBoard board, ChargerQueue charger, List<String> robots) {
+        this.world = world;
+        this.board = board;
+        this.charger = charger;
+        this.robots = List.copyOf(robots);
+    }
+
+    void afterStep(long nowMs) {
+        List<TaskBoard.Held> held = board.claims();
+        for (TaskBoard.Held h : held) {
+            claims = Math.max(claims, h.id());
+        }
+        if (held.size() > 1) {
+            checkDoubleClaims(held);
+        }
+        List<String> queue = charger.queued();
+        for (int i = 0; i < queue.size(); i++) {
+            String r = queue.get(i);
+            if (i > 0 && !waitingSince.containsKey(r)) {
+                waitingSince.put(r, nowMs);
+                chargerWaits++;
+            }
+            if (i == 0) {
+                stopWaiting(r, nowMs);
+            }
+        }
+        for (String r : List.copyOf(waitingSince.keySet())) {
+            if (!queue.contains(r)) {
+                stopWaiting(r, nowMs);
+            }
+        }
+    }
+
+    private void stopWaiting(String robot, long nowMs) {
+        Long since = waitingSince.remove(robot);
+        if (since != null) {
+            longestWait.merge(robot, (nowMs - since) / 1000.0, Math::max);
+        }
+    }
+
+    /** Two agents' claims naming one cylinder: counted once per pair of claims. */
+    private void checkDoubleClaims(List<TaskBoard.Held> held) {
+        List<ObjectState> cylinders = world.supervisor().objects().stream().filter(o -> o.kind() == ObjectKind.CYLINDER).toList();
+        Map<String, TaskBoard.Held> byCylinder = new HashMap<>();
+        for (TaskBoard.Held h : held) {
+            // a claim's cylinder is the one its robot carries, else the one nearest its place
+            String carried = world.supervisor().carried(h.agent());
+            String c = carried != null ? carried : nearest(cylinders, h.x(), h.z());
+            if (c == null) {
+                continue;
+            }
+            TaskBoard.Held other = byCylinder.putIfAbsent(c, h);
+            if (other != null && !other.agent().equals(h.agent()) && doubled.add(other.id() + "/" + h.id())) {
+                doubleClaims++;
+            }
+        }
+    }
+
+    private static String nearest(List<ObjectState> cylinders, double x, double z) {
+        String best = null;
+        double bestD = CLAIM_REACH;
+        for (ObjectState o : cylinders) {
+            double d = Math.hypot(o.pose().x() - x, o.pose().z() - z);
+            if (d < bestD) {
+                bestD = d;
+                best = o.id();
+            }
+        }
+        return best;
+    }
+
+    /** {@return the claims made on the board (its last claim's id)} */
+    public int claims() {
+        return claims;
+    }
+
+    /** {@return how many times two robots held claims naming one cylinder} */
+    public int doubleClaims() {
+        return doubleClaims;
+    }
+
+    /** {@return how many times a robot queued behind another for the charger} */
+    public int chargerWaits() {
+        return chargerWaits;
+    }
+
+    /** {@return the longest a robot waited for the charger, seconds (0 when it never waited)} */
+    public double longestChargerWait(String robot) {
+        Long since = waitingSince.get(robot);
+        double open = since == null ? 0 : (world.timeMs() - since) / 1000.0;
+        return Math.max(open, longestWait.getOrDefault(robot, 0.0));
+    }
+
+    /** {@return the longest any robot of the team waited for the charger, seconds} */
+    public double longestChargerWait() {
+        return robots.stream().mapToDouble(this::longestChargerWait).max().orElse(0);
+    }
+}

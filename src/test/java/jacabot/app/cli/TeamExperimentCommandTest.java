@@ -1,0 +1,42 @@
+package jacabot.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code jacabot experiment team-delivery}: the team's own command behind the experiment's name. */
+class TeamExperimentCommandTest {
+    @Test
+    void aShortTeamRunPrintsAndWritesASummaryPerRobotAndForTheTeam(@TempDir Path dir) throws Exception {
+        String[] r = CliRun.run("experiment", "team-delivery", "--robots", "2", "--duration", "3s", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        String out = r[1];
+        assertTrue(out.contains("[khepera1] picks ") && out.contains("[khepera2] picks "), out);
+        assertTrue(out.contains("team: 0 deliveries of 12 cylinders in 3 s"), out);
+        assertTrue(out.contains("criteria: not met"), out);
+        for (String robot : new String[] {"khepera1", "khepera2"}) {
+            assertTrue(Files.readString(dir.resolve(robot).resolve("summary.json")).contains("\"robot\" : \"" + robot + "\""));
+            assertTrue(Files.exists(dir.resolve(robot).resolve("event-log.txt")));
+        }
+        assertTrue(Files.readString(dir.resolve("summary.txt")).startsWith("team-delivery, 2 robots, seed 21"));
+    }
+
+    @Test
+    void aWorldWithoutEnoughRobotsIsOneLineAndExitTwo() {
+        String[] r = CliRun.run("experiment", "team-delivery", "--robots", "5", "--duration", "1s");
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].strip().endsWith("$.robots: the team-delivery experiment with 5 robots needs as many; the world has 4"), r[2]);
+        assertEquals(1, r[2].strip().lines().count(), r[2]);
+    }
+
+    @Test
+    void theOtherExperimentsKeepTheirCommand() {
+        String[] r = CliRun.run("experiment", "navigation", "--robots", "2");
+        assertEquals("2", r[0]);
+        assertTrue(r[2].contains("Unknown options: '--robots'"), r[2]);
+    }
+}
