@@ -3,8 +3,10 @@ package jacabot.experiments;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.TreeMap;
 
 /**
  * Who may command a robot's wheels when several agents share its middleware artifact (not in the
@@ -25,6 +27,8 @@ public final class WheelLease {
     private final Set<String> drivers = new LinkedHashSet<>();
     private boolean stepped;
     private long refusals;
+    private final Map<String, Long> stepsDriven = new TreeMap<>();
+    private long twoDrivers;
 
     /** {@return the agent holding the wheels; empty while nobody does} */
     public synchronized Optional<String> holder() {
@@ -88,7 +92,21 @@ public final class WheelLease {
         stepped = true;
         var out = new ArrayList<>(drivers);
         drivers.clear();
+        out.forEach(a -> stepsDriven.merge(a, 1L, Long::sum));
+        if (out.size() > 1) {
+            twoDrivers++; // a check of the rule: command() refuses a second driver, so this stays 0
+        }
         return out;
+    }
+
+    /** {@return for each agent, the control steps in which its wheel commands went through} */
+    public synchronized Map<String, Long> stepsDriven() {
+        return new TreeMap<>(stepsDriven);
+    }
+
+    /** {@return the control steps in which two or more agents' wheel commands went through} */
+    public synchronized long stepsWithTwoDrivers() {
+        return twoDrivers;
     }
 
     /** {@return the wheel commands refused so far} */
