@@ -2,6 +2,7 @@ package jacabot.experiments;
 
 import jacabot.cartago.AgentId;
 import jacabot.cartago.Artifact;
+import jacabot.cartago.FollowingClock;
 import jacabot.cartago.GUARD;
 import jacabot.cartago.IBlockingCmd;
 import jacabot.cartago.INTERNAL_OPERATION;
@@ -17,6 +18,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.TimeUnit;
 
 /**
  * The thesis' executive layer (Chapter 3 §2, Chapter 4 "Introduction"): the artifact between the
@@ -129,7 +131,7 @@ public abstract class MiddlewareArtifact extends Artifact {
         if (!link.isConnected()) {
             await((IBlockingCmd) () -> {
                 try {
-                    while (!link.awaitConnected(1, java.util.concurrent.TimeUnit.SECONDS)) {
+                    while (!link.awaitConnected(1, TimeUnit.SECONDS)) {
                         if (Thread.currentThread().isInterrupted()) {
                             return;
                         }
@@ -196,7 +198,7 @@ public abstract class MiddlewareArtifact extends Artifact {
             }
         } else if (e instanceof LinkEvent.Reading r) {
             simTimeMs = r.simTimeMs();
-            if (getClock() instanceof jacabot.cartago.FollowingClock following) {
+            if (getClock() instanceof FollowingClock following) {
                 following.follow(simTimeMs); // .wait and await_time count simulated time
             }
             Optional<SensorKind> kind = SensorKind.of(r.info().getId());

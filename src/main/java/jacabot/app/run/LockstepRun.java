@@ -88,7 +88,7 @@ public final class LockstepRun implements AutoCloseable {
     /**
      * The robot programmed by several agents sharing its middleware artifact (the thesis' Chapter 6
      * wish): each step, all of them reason until the system is idle; the middleware lends the wheels
-     * to one at a time ({@link jacabot.experiments.WheelLease}).
+     * to one at a time ({@link MiddlewareArtifact#wheelLease}).
      *
      * @param agents the robot's agents, at least one, names unique
      */
