@@ -48,6 +48,21 @@ class TwoAgentRobotScenarioTest {
         check(seed, seconds);
     }
 
+    /** Two agents, one lockstep run: still a pure function of world file and seed, to every pose and console line. */
+    @Tag("long")
+    @Test
+    void theSameWorldAndSeedGiveTheSameRun() throws Exception {
+        ScenarioRun one = ScenarioRun.run(Experiment.SUSPEND_RESUME, taskAndEnergy(), 13, false, 120, UnaryOperator.identity(),
+                (t, r) -> {
+                });
+        ScenarioRun two = ScenarioRun.run(Experiment.SUSPEND_RESUME, taskAndEnergy(), 13, false, 120, UnaryOperator.identity(),
+                (t, r) -> {
+                });
+        assertTrue(one.firstLine("Task suspended", 0) > 0, one.summary());
+        assertEquals(one.samples, two.samples);
+        assertEquals(one.lines, two.lines);
+    }
+
     private static void check(long seed, int seconds) throws Exception {
         var drivers = new Drivers(new ArrayList<>(), new ArrayList<>(), new ArrayList<>());
         ScenarioRun run = ScenarioRun.run(Experiment.SUSPEND_RESUME, taskAndEnergy(), seed, false, seconds,

@@ -36,7 +36,9 @@ import java.util.function.Consumer;
  * An experiment with the agent in the loop, in lockstep: each control step the world's readings
  * reach the middleware artifact, the agent reasons until it is idle, its commands go back, and
  * only then does the world advance. Agents, artifacts and the world all run in simulated time,
- * so a run is as fast as the machine allows and replays exactly under a seed.
+ * so a run is as fast as the machine allows and replays exactly under a seed. A robot may be
+ * programmed by several agents sharing its middleware artifact ({@link RobotAgent}): all of them
+ * reason every step until the system is idle.
  */
 public final class LockstepRun implements AutoCloseable {
     /** At most this many reasoning cycles per control step (a busy agent cannot stall the world). */
