@@ -2,6 +2,7 @@
 // no middleware exists yet (lookupArtifact fails) the agent makes one of its experiment's class on
 // its port and focuses it. The operations are mocked (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
 { include("../../main/asl/obstacle-avoidance.asl") }
 
 mock_operation(lookupArtifact(_, _), fail("no artifact named middleware", unknown_artifact("middleware"))).
@@ -15,7 +16,3 @@ mock_operation(_, ok).
        ?middlewareClass(C); ?middlewarePort(P);
        !assert_true(mock_called(makeArtifact("middleware", C, [P], mw)));
        !assert_true(mock_called(focus(mw))).
-
-+!until(C, _) : C.
-+!until(C, T) : T > 0 <- .wait(20); !until(C, T - 20).
-+!until(_, _).

@@ -3,6 +3,7 @@
 // middleware: the artifact operations are mocked (mock_operation beliefs, see agents/README.md
 // "Testing skills"), the percepts are added as beliefs. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
 { include("../../main/asl/suspend-resume.asl") }
 
 // the world's landmarks, as the launcher gives them
@@ -41,11 +42,3 @@ mock_operation(_, ok).
        -targetReached; !!perceive(targetReached);
        !until(not charging, 10000);
        !assert_false(charging).
-
-// a percept, in an intention of its own (as the architecture would add it)
-+!perceive(B) <- +B.
-
-// waits (polling, at most T ms) until the condition holds
-+!until(C, _) : C.
-+!until(C, T) : T > 0 <- .wait(20); !until(C, T - 20).
-+!until(_, _).

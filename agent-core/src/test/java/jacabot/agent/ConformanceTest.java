@@ -41,12 +41,12 @@ class ConformanceTest {
     /** More programs, whose expected lines were printed by Jason 3.2.0 itself (see its README). */
     @TestFactory
     Stream<DynamicTest> jasonOracleWithAgentThreads() throws Exception {
-        return tests("jason-oracle", 62, false);
+        return tests("jason-oracle", 66, false);
     }
 
     @TestFactory
     Stream<DynamicTest> jasonOracleInSteppingMode() throws Exception {
-        return tests("jason-oracle", 62, true);
+        return tests("jason-oracle", 66, true);
     }
 
     private Stream<DynamicTest> tests(String corpus, int size, boolean stepping) throws Exception {

@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
@@ -24,7 +26,7 @@ final class ArtifactCore {
     private final Map<AgentId, ArtifactObserver> observers = new LinkedHashMap<>();
     private OpExecution current;
     /** Declared out ports and the artifacts linked to each, in link order. */
-    private final Map<String, List<ArtifactId>> ports = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, List<ArtifactId>> ports = new ConcurrentHashMap<>();
     private volatile boolean disposed;
 
     ArtifactCore(Artifact artifact, ArtifactId id, ArtifactType type, Workspace workspace) {
@@ -35,7 +37,7 @@ final class ArtifactCore {
         ARTIFACT_INFO info = artifact.getClass().getAnnotation(ARTIFACT_INFO.class);
         if (info != null) {
             for (OUTPORT port : info.outports()) {
-                ports.put(port.name(), new java.util.concurrent.CopyOnWriteArrayList<>());
+                ports.put(port.name(), new CopyOnWriteArrayList<>());
             }
         }
     }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.lang.reflect.Method;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Deque;
 import java.util.HashMap;
@@ -40,7 +41,7 @@ final class AwaitAnalysis {
 
     private AwaitAnalysis(Class<? extends Artifact> type, ClassLoader loader) {
         this.loader = loader;
-        List<String> names = new java.util.ArrayList<>();
+        List<String> names = new ArrayList<>();
         for (Class<?> c = type; c != null && c != Artifact.class && c != Object.class; c = c.getSuperclass()) {
             String name = c.getName().replace('.', '/');
             names.add(name);

@@ -1,5 +1,7 @@
 package jacabot.cartago;
 
+import java.io.PrintStream;
+
 /**
  * Where the runtime and {@link Artifact#log(String)} write: pluggable, so that tests and the
  * launcher decide; the default goes to the JDK's platform logger.
@@ -31,7 +33,7 @@ public interface CartagoLogger {
      * {@return a logger writing console lines {@code [source] message}, as Jason's console shows
      * agents' lines (warnings with their cause's message, no stack trace)}
      */
-    static CartagoLogger console(java.io.PrintStream out) {
+    static CartagoLogger console(PrintStream out) {
         return new CartagoLogger() {
             @Override
             public void info(String source, String message) {

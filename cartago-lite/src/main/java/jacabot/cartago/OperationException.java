@@ -1,5 +1,7 @@
 package jacabot.cartago;
 
+import java.util.List;
+
 /**
  * CArtAgO's failure of an artifact-to-artifact primitive ({@code makeArtifact},
  * {@code lookupArtifact}, {@code dispose}, {@code execLinkedOp} from inside an artifact). Unchecked
@@ -10,7 +12,7 @@ public class OperationException extends OpFailedException {
     private static final long serialVersionUID = 1L;
 
     public OperationException(String message) {
-        super(new OpOutcome.Failure(message, null, java.util.List.of()));
+        super(new OpOutcome.Failure(message, null, List.of()));
     }
 
     OperationException(OpOutcome.Failure failure) {

@@ -2,6 +2,7 @@ package jacabot.robot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.link.Command;
@@ -153,7 +154,7 @@ class RobotControllerTest {
     void aMiddlewareThatCannotProveTheSecretIsRefused() throws Exception {
         // a stranger listening on the port: its proof is made with another key
         // the controller hangs up before sending its own proof
-        org.junit.jupiter.api.Assertions.assertThrows(IOException.class,
+        assertThrows(IOException.class,
                 () -> middleware.accept(Protocol.VERSION, LinkSecret.random()));
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (controller.lastProblem() == null && System.nanoTime() < end) {

@@ -85,7 +85,7 @@ public final class SimulationBenchmark {
         row("physics (dyn4j)", sim[0], wall, steps);
         row("devices (sensors, camera, gripper, battery)", sim[1], wall, steps);
         row("sampling the devices into SensorInfo", c.samplingNanos(), wall, steps);
-        row("serialization (ObjectOutputStream, ObjectInputStream)", serialization, wall, steps);
+        row("serialization (the frames' encoding and decoding)", serialization, wall, steps);
         row("socket writes (the step's frame)", c.writingNanos(), wall, steps);
         row("artifact (middleware steps, operation threads)", agent[0], wall, steps);
         row("reasoning (agent cycles)", agent[1], wall, steps);
@@ -97,11 +97,13 @@ public final class SimulationBenchmark {
             out.println("The rows add up to more than the whole: each socket write wakes the other side's thread,"
                     + " whose work overlaps the end of the write.");
         }
-        baseline(e);
+        long baselineWall = baseline(e);
+        out.printf(Locale.ROOT, "The agent's run at %.2f of the baseline's speed (median runs of this invocation).%n",
+                (double) baselineWall / wall);
     }
 
-    /** The procedural baseline, warmed up and measured the same way; its median run. */
-    private void baseline(Experiment e) throws Exception {
+    /** The procedural baseline, warmed up and measured the same way; {@return its median run's wall time} */
+    private long baseline(Experiment e) throws Exception {
         for (int i = 0; i < warmups; i++) {
             BaselineRunner.execute(world, e, seed, seconds);
         }
@@ -117,6 +119,7 @@ public final class SimulationBenchmark {
         out.printf(Locale.ROOT, "%nThe procedural baseline on the same world, %d measured runs (%s): the median %.2f s, %.0fx real time "
                 + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", measuredRuns, each, b[0] / 1e9, seconds / (b[0] / 1e9),
                 100.0 * b[1] / b[0], 100.0 * b[2] / b[0], 100.0 * (b[0] - b[1] - b[2]) / b[0]);
+        return b[0];
     }
 
     /** {@return the run of median wall time} */

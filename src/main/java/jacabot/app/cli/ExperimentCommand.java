@@ -9,8 +9,10 @@ import jacabot.app.inspector.DebugConsole;
 import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.MindWatch;
 import jacabot.app.plot.RunPlots;
+import jacabot.app.plot.TrajectoryPlot;
 import jacabot.app.replay.BaselineTap;
 import jacabot.app.replay.RealTimeTap;
+import jacabot.app.replay.PageEdits;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepLog;
 import jacabot.app.run.AgentSource;
@@ -218,7 +220,7 @@ final class ExperimentCommand implements Callable<Integer> {
             try (var steps = BaselineTap.attach(baselineWorld, outDir, experiment, BaselineRunner.CONTROLLER)) {
                 controller.runFor(seconds);
             }
-            report(log, recorder.summary(BaselineRunner.CONTROLLER), recorder, outDir,
+            report(log, recorder.summary(BaselineRunner.CONTROLLER), baselineWorld, outDir,
                     (System.nanoTime() - t0) / 1e9, -1, files(worldFile, null));
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
@@ -247,11 +249,16 @@ final class ExperimentCommand implements Callable<Integer> {
                 ConsoleLog.lines(log::result));
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
         if (!breaks.isEmpty() || inspector != null) {
+            Debugger debugger;
             try { // the page can halt the run too
-                tap.debugger(inspector, breaks.isEmpty() ? new Debugger()
-                        : DebugConsole.start(breaks, System.in, System.out));
+                debugger = breaks.isEmpty() ? new Debugger() : DebugConsole.start(breaks, System.in, System.out);
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
+            }
+            tap.debugger(inspector, debugger);
+            if (inspector != null && tap.header() != null) { // what-ifs from the page, plans reloaded at a halt
+                inspector.edits(PageEdits.live(inspector, outDir, tap.header(), experiment, source,
+                        () -> SimWorld.of(WorldFileReader.read(worldFile)), run.mas().agent("robot"), debugger));
             }
         }
         var recorder = RunRecorder.attach(simWorld, robot.name());
@@ -317,7 +324,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), recorder, outDir, wall, run.cycles(), files(worldFile, sourceName));
+            report(log, recorder.summary("agent"), simWorld, outDir, wall, run.cycles(), files(worldFile, sourceName));
             if (robotAgents.size() > 1) {
                 log.result(RobotAgents.wheelSummary(run.middleware().wheelLease()));
             }
@@ -437,7 +444,7 @@ final class ExperimentCommand implements Callable<Integer> {
 
     /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
     private static void report(ConsoleLog log, RunSummary summary,
-            RunRecorder recorder, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
+            SimWorld world, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
         Files.createDirectories(outDir);
         var mapper = new ObjectMapper();
         ObjectNode json = mapper.createObjectNode().put("worldFile", files.world());
@@ -450,7 +457,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 : ", agent " + files.agent()) + "\n" + text.substring(first);
         Files.writeString(outDir.resolve("summary.txt"), text);
         Files.writeString(outDir.resolve("event-log.txt"), summary.eventLog());
-        recorder.writePng(outDir.resolve("trajectory.png"), 800, 800);
+        TrajectoryPlot.write(world, outDir.resolve("trajectory.png"), 800);
         log.info("");
         text.lines().forEach(log::result);
         log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
@@ -524,7 +531,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
         recorder.detach();
-        report(log, recorder.summary("agent"), recorder, outDir, (System.nanoTime() - start) / 1e9, -1,
+        report(log, recorder.summary("agent"), simWorld, outDir, (System.nanoTime() - start) / 1e9, -1,
                 files(worldFile, source.name()));
         if (!lags.isEmpty()) {
             var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');

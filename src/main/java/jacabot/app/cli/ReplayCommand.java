@@ -1,9 +1,17 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
+import jacabot.app.inspector.MindText;
+import jacabot.app.replay.PageEdits;
 import jacabot.app.replay.Replay;
 import jacabot.app.replay.ReplayViewer;
+import jacabot.app.replay.StepArchive;
+import jacabot.app.replay.StepLog;
+import jacabot.robot.Experiment;
+import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileReader;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -125,7 +133,16 @@ final class ReplayCommand implements Callable<Integer> {
     private int serve() throws Exception {
         Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
         try {
-            var archive = jacabot.app.replay.StepArchive.show(inspector, dir);
+            var archive = StepArchive.show(inspector, dir);
+            try { // what-ifs from the page
+                StepLog.Header h = archive.header();
+                Experiment experiment = Experiment.parse(h.experiment()).orElse(null);
+                Path worldFile = world != null ? world
+                        : experiment == null ? null : Installation.resolve(experiment.worldFile());
+                inspector.edits(PageEdits.recorded(inspector, dir, h, () -> SimWorld.of(WorldFileReader.read(worldFile))));
+            } catch (IOException e) {
+                out.println("No what-if from the page: " + e.getMessage());
+            }
             out.printf("The recorded run, %.1f s to %.1f s, is served at %s ; %s%n", archive.firstTimeMs() / 1000.0,
                     archive.lastTimeMs() / 1000.0, inspector.address(),
                     System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
@@ -194,6 +211,6 @@ final class ReplayCommand implements Callable<Integer> {
 
     private void printMind(Replay replay, int i) {
         out.println();
-        jacabot.app.inspector.MindText.print(replay.frames().get(i).mind(), out);
+        MindText.print(replay.frames().get(i).mind(), out);
     }
 }

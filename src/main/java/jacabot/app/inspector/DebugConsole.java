@@ -14,7 +14,7 @@ import java.util.List;
  * the input lets the run go without further halts (a batch job never hangs).
  */
 public final class DebugConsole {
-    static final String HELP = "  Enter or c: continue   s: one control step   b SPEC: add a breakpoint   "
+    static final String HELP = "  Enter or c: continue   s: one control step   n: one reasoning cycle   b SPEC: add a breakpoint   "
             + "d SPEC: delete one   l: list   p: print the mind   q: no more halts";
 
     private DebugConsole() {
@@ -65,6 +65,8 @@ public final class DebugConsole {
                 d.resume();
             } else if (c.equals("s")) {
                 d.step();
+            } else if (c.equals("n")) {
+                d.stepCycle();
             } else if (c.startsWith("b ")) {
                 out.println("  breakpoint " + d.add(c.substring(2)).text());
             } else if (c.startsWith("d ")) {

@@ -1,19 +1,25 @@
 package jacabot.app.inspector;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Queue;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * Breakpoints and stepping for a lockstep run. The run's thread calls {@link #afterStep} after
  * each control step, once the agent is idle and its mind captured; on a breakpoint (or after a
  * step asked for) that call blocks until {@link #resume} or {@link #step}, from the console or
  * the inspector's page. Nothing in the simulated world moves while it blocks, so a run paused and
- * continued is the same, byte for byte, as a run never paused. Granularity: one control step (the
- * reasoning cycles of a step run together, in lockstep, before the world moves again).
+ * continued is the same, byte for byte, as a run never paused. Breakpoints are checked once per
+ * control step (the reasoning cycles of a step run together, in lockstep, before the world moves
+ * again); {@link #stepCycle} goes one reasoning cycle on: the run calls {@link #beforeCycle} at
+ * the start of each cycle, between two cycles, and halts there once a cycle has run.
  */
 public final class Debugger {
     /** Where a halted run stands: its time, why it halted, and the agent's mind then. */
@@ -24,7 +30,11 @@ public final class Debugger {
     private final List<Consumer<Halt>> listeners = new CopyOnWriteArrayList<>();
     private Set<String> beliefs = new HashSet<>();
     private Halt halted;
+    private final Queue<Runnable> tasks = new ArrayDeque<>();
     private boolean stepping;
+    /** A one-cycle step was asked for; {@code cycleRan}: its cycle has started. */
+    private boolean cycleStepping;
+    private boolean cycleRan;
     private boolean pauseAsked;
     private boolean stopped;
 
@@ -65,6 +75,7 @@ public final class Debugger {
     /** Continues a halted run. */
     public synchronized void resume() {
         stepping = false;
+        cycleStepping = false;
         halted = null;
         notifyAll();
     }
@@ -72,6 +83,19 @@ public final class Debugger {
     /** Runs one more control step, then halts again. */
     public synchronized void step() {
         stepping = true;
+        cycleStepping = false;
+        halted = null;
+        notifyAll();
+    }
+
+    /**
+     * Runs one more reasoning cycle, then halts again: before the next cycle, or at the end of the
+     * control step when the agent is idle after it (an idle agent's next cycle may be steps away).
+     */
+    public synchronized void stepCycle() {
+        stepping = false;
+        cycleStepping = true;
+        cycleRan = false;
         halted = null;
         notifyAll();
     }
@@ -115,6 +139,8 @@ public final class Debugger {
                 reason = "one step";
             } else if (pauseAsked) {
                 reason = "paused";
+            } else if (cycleStepping && cycleRan) {
+                reason = "one reasoning cycle (cycle " + mind.cycle() + ", the last of this control step)";
             }
             pauseAsked = false;
         }
@@ -128,25 +154,82 @@ public final class Debugger {
                 break;
             }
         }
-        if (reason == null) {
-            return;
+        if (reason != null) {
+            halt(new Halt(mind.timeMs(), reason, mind));
         }
-        Halt h = new Halt(mind.timeMs(), reason, mind);
+    }
+
+    /**
+     * On the run's thread, at the start of a reasoning cycle: halts there when a one-cycle step
+     * has had its cycle.
+     *
+     * @param mind the agent's mind then (asked for only when the run halts)
+     */
+    public void beforeCycle(Supplier<MindState> mind) {
         synchronized (this) {
-            stepping = false;
-        }
-        listeners.forEach(l -> l.accept(h)); // before the halt is seen: what they print comes first
-        synchronized (this) {
-            halted = h;
-            notifyAll();
-            while (halted == h && !stopped) {
-                try {
-                    wait();
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    return;
-                }
+            if (stopped || !cycleStepping) {
+                return;
+            }
+            if (!cycleRan) {
+                cycleRan = true;
+                return;
             }
         }
+        MindState m = mind.get();
+        halt(new Halt(m.timeMs(), "one reasoning cycle (cycle " + m.cycle() + ")", m));
+    }
+
+    /** Tells the listeners, then blocks the run's thread until a command lets it go on. */
+    private void halt(Halt h) {
+        synchronized (this) {
+            stepping = false;
+            cycleStepping = false;
+        }
+        listeners.forEach(l -> l.accept(h)); // before the halt is seen: what they print comes first
+        while (true) {
+            Runnable task;
+            synchronized (this) {
+                halted = h;
+                notifyAll();
+                while (halted == h && !stopped && tasks.isEmpty()) {
+                    try {
+                        wait();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return;
+                    }
+                }
+                if (halted != h || stopped) {
+                    return;
+                }
+                task = tasks.poll();
+            }
+            task.run(); // on the run's thread, the agent between two cycles
+        }
+    }
+
+    /**
+     * Runs {@code task} on the halted run's thread (the agent between two cycles: e.g. a reload of
+     * its plans). {@return when it has run}
+     *
+     * @throws IllegalStateException when the run is not halted
+     */
+    public CompletableFuture<Void> atHalt(Runnable task) {
+        var done = new CompletableFuture<Void>();
+        synchronized (this) {
+            if (halted == null || stopped) {
+                throw new IllegalStateException("the run is not halted: halt it first (pause or a breakpoint)");
+            }
+            tasks.add(() -> {
+                try {
+                    task.run();
+                    done.complete(null);
+                } catch (RuntimeException e) {
+                    done.completeExceptionally(e);
+                }
+            });
+            notifyAll();
+        }
+        return done;
     }
 }

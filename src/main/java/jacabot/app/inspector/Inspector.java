@@ -2,6 +2,7 @@ package jacabot.app.inspector;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.sun.net.httpserver.HttpExchange;
+import com.sun.net.httpserver.HttpHandler;
 import com.sun.net.httpserver.HttpServer;
 import java.io.IOException;
 import java.io.InputStream;
@@ -19,8 +20,14 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
+import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.function.BiFunction;
+import java.util.function.Consumer;
 
 /**
  * The mind inspector: a web page on loopback showing each agent's beliefs, events, intentions,
@@ -29,7 +36,12 @@ import java.util.concurrent.Executors;
  * JDK's {@code com.sun.net.httpserver}; the page follows the run through server-sent events
  * ({@code /api/stream}: every kept frame with the deliberation up to it, nothing polled) and reads
  * the past through {@code /api/state?agent=A&t=MS}. The agents' threads only put immutable frames
- * into each {@link MindHistory}; the server's threads only read them.
+ * into each {@link MindHistory}; the server's threads only read them. Beside the frames: the
+ * {@link Debugger}'s controls ({@code /api/debug}), the time views over the whole run
+ * ({@code /api/timeline}, {@code /api/belief}, {@code /api/artifacts}: {@link TimeViews}) and, when
+ * the run allows it ({@link RunEdits}), what-ifs and plan reloads ({@code /api/whatif},
+ * {@code /api/reload}). Every agent added is a history of its own: a team's robots, or a what-if
+ * beside the run it came from.
  *
  * <p>Guarded as Jupyter is: every request must carry the run's secret token (the address printed
  * at the start holds it: {@code ?token=...}; the page then keeps it in a cookie), come from no
@@ -50,10 +62,12 @@ public final class Inspector implements AutoCloseable {
 
     private final HttpServer server;
     private final ExecutorService threads;
-    private final String token = newToken();
-    private volatile java.util.function.Consumer<String> refusals = System.err::println;
+    private final PageGuard guard;
+    private volatile Consumer<String> refusals = System.err::println;
     private volatile Object world;
     private volatile Debugger debugger;
+    private volatile RunEdits edits;
+    private final List<WhatIfJob> whatIfs = new CopyOnWriteArrayList<>();
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
     private volatile Path plotDir;
     private volatile String title = "jacabot";
@@ -61,6 +75,7 @@ public final class Inspector implements AutoCloseable {
 
     private Inspector(HttpServer server) {
         this.server = server;
+        this.guard = new PageGuard(server.getAddress());
         this.threads = Executors.newCachedThreadPool(r -> {
             Thread t = new Thread(r, "inspector-http");
             t.setDaemon(true);
@@ -79,6 +94,12 @@ public final class Inspector implements AutoCloseable {
         context("/api/debug", this::debug);
         context("/api/failures", ex -> sendJson(ex, historyOf(ex).map(MindHistory::failures).orElse(Map.of())));
         context("/api/stream", this::stream);
+        context("/api/timeline", ex -> withHistory(ex, (h, t) -> timeline(h)));
+        context("/api/belief", ex -> withHistory(ex, (h, t) -> beliefHistory(h, query(ex).getOrDefault("name", ""))));
+        context("/api/artifacts", ex -> sendJson(ex, artifacts(time(query(ex).get("t")))));
+        context("/api/source", ex -> sendJson(ex, Map.of("text", edits == null ? "" : edits.source())));
+        context("/api/whatif", this::whatIf);
+        context("/api/reload", this::reload);
         context("/plots/", this::plot);
         server.start();
     }
@@ -115,21 +136,21 @@ public final class Inspector implements AutoCloseable {
 
     /** {@return the page's base address, without the token: requests to it alone are refused} */
     public URI uri() {
-        return URI.create("http://" + hostName() + ":" + server.getAddress().getPort() + "/");
+        return URI.create("http://" + guard.hostName() + ":" + server.getAddress().getPort() + "/");
     }
 
     /** {@return the page's address with its secret token, to print for the user} */
     public URI address() {
-        return URI.create(uri() + "?token=" + token);
+        return URI.create(uri() + "?token=" + guard.token());
     }
 
     /** {@return {@code path} (no leading slash, may have a query) on this inspector, with the token} */
     public String url(String path) {
-        return uri() + path + (path.contains("?") ? "&" : "?") + "token=" + token;
+        return uri() + path + (path.contains("?") ? "&" : "?") + "token=" + guard.token();
     }
 
     /** Where refused requests are logged (default: stderr). */
-    public void logRefusals(java.util.function.Consumer<String> log) {
+    public void logRefusals(Consumer<String> log) {
         this.refusals = log;
     }
 
@@ -144,8 +165,10 @@ public final class Inspector implements AutoCloseable {
         var out = new LinkedHashMap<String, Object>();
         out.put("available", d != null);
         Debugger.Halt h = d == null ? null : d.halted();
-        out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason()));
+        out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason(), "mind", h.mind()));
         out.put("breakpoints", d == null ? List.of() : d.breakpoints().stream().map(Breakpoint::text).toList());
+        out.put("editable", edits != null);
+        out.put("whatIfs", List.copyOf(whatIfs));
         return out;
     }
 
@@ -162,6 +185,7 @@ public final class Inspector implements AutoCloseable {
                 switch (cmd) {
                     case "continue" -> d.resume();
                     case "step" -> d.step();
+                    case "cycle" -> d.stepCycle();
                     case "pause" -> d.pause();
                     case "break" -> d.add(spec);
                     case "delete" -> d.remove(spec);
@@ -175,20 +199,125 @@ public final class Inspector implements AutoCloseable {
         sendJson(ex, debugState());
     }
 
+    /** Lets the page start what-ifs from any instant (and reload plans into a halted live run). */
+    public void edits(RunEdits e) {
+        this.edits = e;
+    }
+
+    /** {@return the what-ifs started from the page} */
+    public List<WhatIfJob> whatIfs() {
+        return List.copyOf(whatIfs);
+    }
+
+    /**
+     * {@code POST /api/whatif?t=MS&seconds=S} with the edited program as the body: starts a
+     * what-if on a thread of its own; its history appears as another agent once it has run.
+     */
+    private void whatIf(HttpExchange ex) throws IOException {
+        if (!ex.getRequestMethod().equals("POST")) {
+            sendJson(ex, whatIfs());
+            return;
+        }
+        RunEdits e = edits;
+        if (e == null) {
+            sendText(ex, 409, "this run has no step log to start a what-if from");
+            return;
+        }
+        long at = time(query(ex).get("t")), seconds = time(query(ex).get("seconds"));
+        if (at < 0 || seconds <= 0) {
+            sendText(ex, 400, "a what-if needs t (ms, at least 0) and seconds (more than 0)");
+            return;
+        }
+        String program = body(ex);
+        var job = new WhatIfJob("what-if " + (whatIfs.size() + 1) + " from " + at / 1000.0 + " s", at, seconds);
+        whatIfs.add(job);
+        threads.execute(() -> {
+            try {
+                e.whatIf(job, program);
+            } catch (IllegalArgumentException x) {
+                job.failed(x.getMessage());
+            } catch (Exception x) {
+                job.failed(x.toString());
+            }
+        });
+        sendJson(ex, job);
+    }
+
+    /** {@code POST /api/reload} with a program as the body: its plans replace the halted live run's. */
+    private void reload(HttpExchange ex) throws IOException {
+        RunEdits e = edits;
+        if (!ex.getRequestMethod().equals("POST") || e == null) {
+            sendText(ex, 409, "POST a program to a live run's inspector");
+            return;
+        }
+        try {
+            e.reload(body(ex));
+            sendJson(ex, debugState());
+        } catch (IllegalStateException | IllegalArgumentException x) {
+            sendText(ex, 409, x.getMessage());
+        } catch (Exception x) {
+            sendText(ex, 500, x.toString());
+        }
+    }
+
+    /** {@return the request's body as text (at most 1 MB: an agent program)} */
+    private static String body(HttpExchange ex) throws IOException {
+        byte[] b = ex.getRequestBody().readNBytes(1 << 20);
+        return new String(b, StandardCharsets.UTF_8);
+    }
+
+    /** {@return a time given in a query (ms), -1 when missing or not a number} */
+    private static long time(String text) {
+        try {
+            return text == null ? -1 : Long.parseLong(text);
+        } catch (NumberFormatException e) {
+            return -1;
+        }
+    }
+
+    /** The timeline read last, per agent, and up to when: a recorded run's is read once. */
+    private final Map<MindHistory, Map.Entry<Long, List<TimeViews.Span>>> timelines = new ConcurrentHashMap<>();
+
+    private List<TimeViews.Span> timeline(MindHistory h) {
+        long upTo = h.range()[1];
+        var known = timelines.get(h);
+        if (known != null && known.getKey() == upTo) {
+            return known.getValue();
+        }
+        var t = new TimeViews.Timeline();
+        h.forEachMind(t::add);
+        List<TimeViews.Span> spans = t.spans();
+        timelines.put(h, Map.entry(upTo, spans));
+        return spans;
+    }
+
+    private static List<TimeViews.Change> beliefHistory(MindHistory h, String name) {
+        var b = new TimeViews.BeliefHistory(name);
+        if (!name.isBlank()) {
+            h.forEachMind(b::add);
+        }
+        return b.changes();
+    }
+
+    /** {@return every artifact perceived at {@code t} (ms; -1 the latest): by artifact, each agent's view of its properties} */
+    private Map<String, Map<String, List<String>>> artifacts(long t) {
+        var out = new TreeMap<String, Map<String, List<String>>>();
+        for (String name : agentNames()) {
+            MindHistory h;
+            synchronized (this) {
+                h = agents.get(name);
+            }
+            MindHistory.Frame f = t < 0 ? h.latest() : h.at(t);
+            if (f != null) {
+                TimeViews.artifacts(f.mind()).forEach((a, props) -> out.computeIfAbsent(a, k -> new LinkedHashMap<>()).put(name, props));
+            }
+        }
+        return out;
+    }
+
     /** The world the page draws under the robot: its geometry at the start (any JSON-writable value). */
     public void world(Object start) {
         this.world = start;
-    }
-
-    private String hostName() {
-        InetAddress a = server.getAddress().getAddress();
-        return a.isLoopbackAddress() || a.isAnyLocalAddress() ? "127.0.0.1" : a.getHostAddress();
-    }
-
-    private static String newToken() {
-        byte[] b = new byte[24];
-        new java.security.SecureRandom().nextBytes(b);
-        return java.util.HexFormat.of().formatHex(b);
     }
 
     /** Adds an agent; its frames go into the returned history. */
@@ -222,61 +351,21 @@ public final class Inspector implements AutoCloseable {
 
     // ---- the guard -------------------------------------------------------------------------------------
 
-    private void context(String path, com.sun.net.httpserver.HttpHandler handler) {
+    private void context(String path, HttpHandler handler) {
         server.createContext(path, ex -> {
-            String why = refusal(ex);
+            String why = guard.refusal(ex, query(ex).get("token"));
             if (why != null) {
                 refusals.accept("inspector: refused " + ex.getRequestMethod() + " " + ex.getRequestURI().getPath() + " from "
                         + ex.getRemoteAddress().getAddress().getHostAddress() + ": " + why);
                 send(ex, 403, "text/plain", ("403 forbidden: " + why + "\n").getBytes(StandardCharsets.UTF_8));
                 return;
             }
-            if (token.equals(query(ex).get("token"))) {
+            if (guard.token().equals(query(ex).get("token"))) {
                 // the page's own later requests (images, fetches) carry it as a cookie
-                ex.getResponseHeaders().add("Set-Cookie", cookieName() + "=" + token + "; Path=/; HttpOnly; SameSite=Strict");
+                ex.getResponseHeaders().add("Set-Cookie", guard.cookie());
             }
             handler.handle(ex);
         });
-    }
-
-    /** {@return why a request is refused, or null: no token or another one, a foreign Origin, a foreign Host} */
-    private String refusal(HttpExchange ex) {
-        int port = server.getAddress().getPort();
-        String origin = ex.getRequestHeaders().getFirst("Origin");
-        if (origin != null && !origin.equals("http://" + hostName() + ":" + port) && !origin.equals("http://localhost:" + port)) {
-            return "request from another origin (" + origin + ")";
-        }
-        String host = ex.getRequestHeaders().getFirst("Host");
-        if (host != null && !host.equals(hostName() + ":" + port) && !host.equals("localhost:" + port)) {
-            return "request for another host (" + host + ")";
-        }
-        String given = query(ex).get("token");
-        if (given == null) {
-            given = cookie(ex);
-        }
-        if (given == null) {
-            return "no token (open the address printed at the start, with its ?token=...)";
-        }
-        if (!java.security.MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8), token.getBytes(StandardCharsets.UTF_8))) {
-            return "wrong token (another run's?)";
-        }
-        return null;
-    }
-
-    private String cookieName() {
-        return "jacabot-inspector-" + server.getAddress().getPort();
-    }
-
-    private String cookie(HttpExchange ex) {
-        for (String header : ex.getRequestHeaders().getOrDefault("Cookie", List.of())) {
-            for (String c : header.split(";")) {
-                String[] kv = c.trim().split("=", 2);
-                if (kv.length == 2 && kv[0].equals(cookieName())) {
-                    return kv[1];
-                }
-            }
-        }
-        return null;
     }
 
     // ---- handlers ---------------------------------------------------------------------------------
@@ -285,12 +374,12 @@ public final class Inspector implements AutoCloseable {
         return new ArrayList<>(agents.keySet());
     }
 
-    private synchronized java.util.Optional<MindHistory> historyOf(HttpExchange ex) {
+    private synchronized Optional<MindHistory> historyOf(HttpExchange ex) {
         String name = query(ex).get("agent");
         if (name == null && !agents.isEmpty()) {
             name = agents.keySet().iterator().next();
         }
-        return java.util.Optional.ofNullable(name == null ? null : agents.get(name));
+        return Optional.ofNullable(name == null ? null : agents.get(name));
     }
 
     private void page(HttpExchange ex) throws IOException {
@@ -300,7 +389,7 @@ public final class Inspector implements AutoCloseable {
         }
         try (InputStream in = Inspector.class.getResourceAsStream("inspector.html")) {
             String html = new String(in.readAllBytes(), StandardCharsets.UTF_8).replace("{{title}}", escapeHtml(title))
-                    .replace("{{token}}", token);
+                    .replace("{{token}}", guard.token());
             send(ex, 200, "text/html; charset=utf-8", html.getBytes(StandardCharsets.UTF_8));
         }
     }
@@ -324,7 +413,7 @@ public final class Inspector implements AutoCloseable {
     }
 
     /** Answers {@code what(history, t)} for the agent and time ({@code t}, ms; default the latest) of the query. */
-    private void withHistory(HttpExchange ex, java.util.function.BiFunction<MindHistory, Long, Object> what) throws IOException {
+    private void withHistory(HttpExchange ex, BiFunction<MindHistory, Long, Object> what) throws IOException {
         var h = historyOf(ex);
         if (h.isEmpty()) {
             send(ex, 404, "text/plain", "no such agent".getBytes(StandardCharsets.UTF_8));
@@ -440,6 +529,10 @@ public final class Inspector implements AutoCloseable {
         try (InputStream in = Inspector.class.getResourceAsStream(name)) {
             return in.readAllBytes();
         }
+    }
+
+    private static void sendText(HttpExchange ex, int status, String text) throws IOException {
+        send(ex, status, "text/plain; charset=utf-8", text.getBytes(StandardCharsets.UTF_8));
     }
 
     private static void sendJson(HttpExchange ex, Object value) throws IOException {

@@ -2,6 +2,7 @@ package jacabot.app.inspector;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * An agent's whole past on disk (the run's step log), read on demand, so that the inspector's
@@ -19,4 +20,7 @@ public interface MindArchive {
 
     /** {@return up to {@code max} plan selections at or before {@code timeMs}, oldest first} */
     List<MindState.Selection> selectionsUpTo(long timeMs, int max) throws IOException;
+
+    /** Hands every step's mind, from the first to the last on disk, to {@code each} (the time views) */
+    void forEachMind(Consumer<MindState> each) throws IOException;
 }

@@ -6,6 +6,8 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * One agent's past for the inspector's time slider. The recent frames (a mind state and, for a
@@ -98,8 +100,8 @@ public final class MindHistory {
     }
 
     /** {@return the failures counted and the last ones, for the failures panel} */
-    public synchronized java.util.Map<String, Object> failures() {
-        return java.util.Map.of("count", failureCount, "recent", new ArrayList<>(failures));
+    public synchronized Map<String, Object> failures() {
+        return Map.of("count", failureCount, "recent", new ArrayList<>(failures));
     }
 
     /** Adds a point to the robot's path, at most one per {@link #PATH_EVERY_MS}. */
@@ -225,6 +227,31 @@ public final class MindHistory {
             }
         }
         return read(() -> a.selectionsUpTo(timeMs, max));
+    }
+
+    /**
+     * Hands every mind of the run so far to {@code each}, in time order: those on disk (every
+     * step), then the kept frames after them (for the time views).
+     */
+    public void forEachMind(Consumer<MindState> each) {
+        MindArchive a = archive;
+        long after = -1;
+        if (a != null && a.lastTimeMs() >= 0) {
+            after = a.lastTimeMs();
+            read(() -> {
+                a.forEachMind(each);
+                return null;
+            });
+        }
+        List<Frame> recent;
+        synchronized (this) {
+            recent = new ArrayList<>(frames);
+        }
+        for (Frame f : recent) {
+            if (f.mind().timeMs() > after) {
+                each.accept(f.mind());
+            }
+        }
     }
 
     public synchronized List<String> plans() {

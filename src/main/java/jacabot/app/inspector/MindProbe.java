@@ -12,6 +12,8 @@ import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Term;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -35,6 +37,7 @@ public final class MindProbe {
     private long seq;
     private int planCount = -1;
     private List<String> plans = List.of();
+    private List<Plan> planObjects = List.of();
 
     private MindProbe(Agent agent) {
         this.agent = agent;
@@ -74,6 +77,23 @@ public final class MindProbe {
 
     /** {@return the mind now; call between two reasoning cycles, on the agent's thread} */
     public MindState capture() {
+        var chosen = List.copyOf(selections);
+        selections.clear();
+        return state(++seq, agent.cycles(), chosen);
+    }
+
+    /**
+     * {@return the mind now, without taking the selections since the last capture (they stay for
+     * it: a step log written with peeks between is the same)}; at the start of a reasoning cycle,
+     * on the agent's thread
+     *
+     * @param cyclesDone the cycles run so far (the agent counts the one starting)
+     */
+    public MindState peek(long cyclesDone) {
+        return state(seq, cyclesDone, List.copyOf(selections));
+    }
+
+    private MindState state(long number, long cyclesDone, List<MindState.Selection> chosen) {
         var beliefs = new ArrayList<MindState.Belief>();
         for (BeliefBase.Entry e : agent.beliefBase().all()) {
             // rules too, as Jason's inspector lists them with the facts
@@ -84,7 +104,7 @@ public final class MindProbe {
         for (Event e : c.eventList()) {
             events.add(e.trigger().toString() + (e.isExternal() ? "" : "  (intention " + e.intention().id() + ")"));
         }
-        var pendingReason = new java.util.HashMap<Intention, String>();
+        var pendingReason = new HashMap<Intention, String>();
         for (Map.Entry<String, Circumstance.Pending> p : c.pendingIntentions().entrySet()) {
             pendingReason.put(p.getValue().intention(), "waiting: " + p.getValue().reason());
         }
@@ -98,25 +118,43 @@ public final class MindProbe {
                     i.isSuspended() ? "suspended" : c.hasRunningIntention(i) ? "running" : "waiting");
             intentions.add(new MindState.IntentionView(i.id(), state, stack));
         }
-        intentions.sort(java.util.Comparator.comparingInt(MindState.IntentionView::id));
-        var chosen = List.copyOf(selections);
-        selections.clear();
-        return new MindState(agent.name(), ++seq, agent.clock().millis(), agent.cycles(), beliefs, events, intentions, chosen);
+        intentions.sort(Comparator.comparingInt(MindState.IntentionView::id));
+        return new MindState(agent.name(), number, agent.clock().millis(), cyclesDone, beliefs, events, intentions, chosen);
     }
 
     /** {@return the plan library as text, re-read only when its size changes (.add_plan, .remove_plan)} */
     public List<String> plans() {
         List<Plan> now = agent.planLibrary().plans();
-        if (now.size() != planCount) {
-            var out = new ArrayList<String>();
-            for (Plan p : now) {
-                String where = p.source() == null || p.source().line() == 0 ? "" : "   // " + p.source();
-                out.add(withoutSourceAnnots(p) + where);
-            }
-            plans = List.copyOf(out);
+        if (now.size() != planCount || !samePlans(now)) {
+            plans = planTexts(now);
+            planObjects = List.copyOf(now);
             planCount = now.size();
         }
         return plans;
+    }
+
+    /** {@return whether the library holds the same plans as when last read (a reload may keep their number)} */
+    private boolean samePlans(List<Plan> now) {
+        for (int i = 0; i < now.size(); i++) {
+            if (now.get(i) != planObjects.get(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** {@return an agent's plan library as the page shows it: each plan, and where it was written} */
+    public static List<String> planTexts(Agent agent) {
+        return planTexts(agent.planLibrary().plans());
+    }
+
+    private static List<String> planTexts(List<Plan> library) {
+        var out = new ArrayList<String>();
+        for (Plan p : library) {
+            String where = p.source() == null || p.source().line() == 0 ? "" : "   // " + p.source();
+            out.add(withoutSourceAnnots(p) + where);
+        }
+        return List.copyOf(out);
     }
 
     private static String withoutSourceAnnots(Plan p) {

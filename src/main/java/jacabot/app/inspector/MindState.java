@@ -1,5 +1,6 @@
 package jacabot.app.inspector;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -30,7 +31,7 @@ public record MindState(String agent, long seq, long timeMs, long cycle, List<Be
 
         /** {@return the belief as Jason prints it} */
         public String text() {
-            var all = new java.util.ArrayList<String>();
+            var all = new ArrayList<String>();
             sources.forEach(s -> all.add("source(" + s + ")"));
             all.addAll(annots);
             return all.isEmpty() ? literal : literal + all;

@@ -56,6 +56,16 @@ public final class MindWatch {
         return m;
     }
 
+    /** {@return the mind at the start of a reasoning cycle (on the agent's thread), the step log's selections left alone} */
+    public MindState peekBeforeCycle() {
+        return probe.peek(agent.cycles() - 1);
+    }
+
+    /** {@return whether this watches {@code a}} */
+    public boolean watches(Agent a) {
+        return agent == a;
+    }
+
     /**
      * Samples agents running on their own threads: every {@code periodMs} each agent captures its
      * mind at the start of its next cycle. {@return a handle that stops the sampling}

@@ -90,21 +90,24 @@ public final class MapPlot {
                 g.draw(new Ellipse2D.Double(p[0] - 5, p[1] - 5, 10, 10));
                 legend.putIfAbsent("\u25cf " + s.kind(), c);
             }
-            legend(g, legend, img.getWidth(), img.getHeight());
+            legend(g, legend, img.getWidth(), 26, img.getHeight() - 40);
         } finally {
             g.dispose();
         }
         return img;
     }
 
-    /** The legend in one row under the arena, above the status line: it never hides a corner of the world. */
-    private static void legend(Graphics2D g, Map<String, Color> entries, int width, int height) {
+    /**
+     * A legend in rows from ({@code x0}, {@code y0}) (the first row's baseline), under the arena:
+     * it never hides a corner of the world.
+     */
+    static void legend(Graphics2D g, Map<String, Color> entries, int width, int x0, int y0) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        int x = 26, y = height - 40;
+        int x = x0, y = y0;
         for (var e : entries.entrySet()) {
             int w = g.getFontMetrics().stringWidth(e.getKey());
             if (x + w + 24 > width) {
-                x = 26;
+                x = x0;
                 y += 14;
             }
             g.setColor(e.getValue());

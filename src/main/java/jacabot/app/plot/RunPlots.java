@@ -2,9 +2,12 @@ package jacabot.app.plot;
 
 import jacabot.app.inspector.MindState;
 import jacabot.app.replay.StepLog;
+import jacabot.sim.engine.WorldSnapshot;
 import java.awt.Color;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -12,14 +15,17 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.internal.chartpart.Chart;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
@@ -69,7 +75,7 @@ public final class RunPlots {
             var marks = marks(outDir, series);
             battery(series, marks).ifPresent(c -> save(c, outDir, "battery", written));
             save(speed(series), outDir, "speed", written);
-            javax.imageio.ImageIO.write(events(series, marks, outDir.getFileName() + ""), "png",
+            ImageIO.write(events(series, marks, outDir.getFileName() + ""), "png",
                     outDir.resolve("events.png").toFile());
             written.add("events.png");
         }
@@ -82,12 +88,12 @@ public final class RunPlots {
         }
     }
 
-    private static void save(org.knowm.xchart.internal.chartpart.Chart<?, ?> chart, Path dir, String name, List<String> written) {
+    private static void save(Chart<?, ?> chart, Path dir, String name, List<String> written) {
         try {
             BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
             written.add(name + ".png");
         } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
+            throw new UncheckedIOException(e);
         }
     }
 
@@ -103,7 +109,7 @@ public final class RunPlots {
         final List<MindState.Selection> selections = new ArrayList<>();
         /** Times (s) at which an intention was about to run the {@code mark} action. */
         final List<Double> markActions = new ArrayList<>();
-        jacabot.sim.engine.WorldSnapshot start;
+        WorldSnapshot start;
         double width = 1;
         double depth = 1;
 
@@ -211,9 +217,9 @@ public final class RunPlots {
         return out;
     }
 
-    static java.util.Optional<XYChart> battery(Series s, List<Mark> marks) {
+    static Optional<XYChart> battery(Series s, List<Mark> marks) {
         if (s.battery.stream().allMatch(v -> v.isNaN())) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
         XYChart c = new XYChartBuilder().width(900).height(420).title("Battery").xAxisTitle("simulated time (s)")
                 .yAxisTitle("energy (J)").build();
@@ -232,7 +238,7 @@ public final class RunPlots {
             }
         }
         c.getStyler().setMarkerSize(10);
-        return java.util.Optional.of(c);
+        return Optional.of(c);
     }
 
     static XYChart speed(Series s) {
@@ -245,7 +251,7 @@ public final class RunPlots {
     }
 
     /** The trajectory and the marks over the world's geometry, in the renderer's orientation (x right, z down). */
-    static java.awt.image.BufferedImage events(Series s, List<Mark> marks, String name) {
+    static BufferedImage events(Series s, List<Mark> marks, String name) {
         var spots = new ArrayList<MapPlot.Spot>();
         for (Mark m : marks) {
             int i = s.indexAt(m.t());
@@ -259,13 +265,13 @@ public final class RunPlots {
     /** Overlays several runs' trajectories over the first one's world: {@code jacabot plot RUN_A RUN_B}. */
     public static void overlay(List<Path> runs, Path png) throws IOException {
         var tracks = new ArrayList<MapPlot.Track>();
-        jacabot.sim.engine.WorldSnapshot start = null;
+        WorldSnapshot start = null;
         for (Path run : runs) {
             Series s = Series.read(run.resolve(StepLog.FILE));
             start = start == null ? s.start : start;
             tracks.add(new MapPlot.Track(run.getFileName().toString(), s.points()));
         }
-        javax.imageio.ImageIO.write(MapPlot.draw(start, tracks, List.of(), "trajectories", 700), "png", png.toFile());
+        ImageIO.write(MapPlot.draw(start, tracks, List.of(), "trajectories", 700), "png", png.toFile());
     }
 
     static CategoryChart latency(Path csv) throws IOException {

@@ -28,7 +28,7 @@ public final class BaselineTap implements Closeable, WorldListener {
     /** Opens {@code outDir}/{@value StepLog#FILE} and listens to {@code world}'s control steps; call before it runs. */
     public static BaselineTap attach(SimWorld world, Path outDir, Experiment experiment, String controller) throws IOException {
         var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), world.name(), world.seed(), world.controlStep(),
-                world.robots().get(0).name(), controller, world.snapshot());
+                world.robots().get(0).name(), controller, world.snapshot(), null);
         var tap = new BaselineTap(world, new StepLog.Writer(outDir.resolve(StepLog.FILE), header));
         world.addListener(tap);
         return tap;

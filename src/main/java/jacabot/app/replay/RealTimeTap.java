@@ -1,6 +1,9 @@
 package jacabot.app.replay;
 
+import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
+import jacabot.app.inspector.MindWatch;
+import jacabot.app.run.LagMeter;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.WorldSnapshot;
@@ -12,6 +15,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 
@@ -20,7 +25,7 @@ import java.util.function.Consumer;
  * threads, so the step is taken from the controller's event log: its readings line and its pose
  * line (which ends the step, on the simulation thread, world lock held), with the commands applied
  * since the step before (in real time on the controller's receiving thread, as they arrive),
- * and the mind from the agent's latest sample ({@link jacabot.app.inspector.MindWatch#sampleEvery}):
+ * and the mind from the agent's latest sample ({@link MindWatch#sampleEvery}):
  * a step carries a mind change only when a new sample came.
  */
 public final class RealTimeTap implements Closeable {
@@ -31,7 +36,7 @@ public final class RealTimeTap implements Closeable {
     private long timeMs = -1;
     private List<String> readings = List.of();
     private final List<String> applied = new ArrayList<>();
-    private final java.util.Queue<StepLog.Lag> lags = new java.util.concurrent.ConcurrentLinkedQueue<>();
+    private final Queue<StepLog.Lag> lags = new ConcurrentLinkedQueue<>();
     private IOException failure;
     private boolean closed;
 
@@ -47,7 +52,7 @@ public final class RealTimeTap implements Closeable {
     }
 
     /** Shows the run in {@code inspector} (if not null): its world, and its whole past from the step log. */
-    public void inspect(jacabot.app.inspector.Inspector inspector) {
+    public void inspect(Inspector inspector) {
         if (inspector != null) {
             inspector.world(header.start());
             RunTap.archive(inspector, log, file, header);
@@ -58,7 +63,7 @@ public final class RealTimeTap implements Closeable {
     public static RealTimeTap open(SimWorld world, Path outDir, Experiment experiment, String agentFile) throws IOException {
         WorldSnapshot start = world.snapshot();
         var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), world.name(), world.seed(), world.controlStep(),
-                world.robots().get(0).name(), agentFile, start);
+                world.robots().get(0).name(), agentFile, start, null);
         var log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
         return new RealTimeTap(world, log, outDir.resolve(StepLog.FILE), header);
     }
@@ -69,15 +74,15 @@ public final class RealTimeTap implements Closeable {
     }
 
     /** {@return where the run's lag episodes go: each start and end is written with the next step (any thread)} */
-    public jacabot.app.run.LagMeter.Listener lags() {
-        return new jacabot.app.run.LagMeter.Listener() {
+    public LagMeter.Listener lags() {
+        return new LagMeter.Listener() {
             @Override
-            public void started(jacabot.app.run.LagMeter.Reading r) {
+            public void started(LagMeter.Reading r) {
                 lags.add(new StepLog.Lag("start", r.worldBehindMs(), r.agentLateMs(), r.requested(), r.achieved()));
             }
 
             @Override
-            public void ended(jacabot.app.run.LagMeter.Episode e) {
+            public void ended(LagMeter.Episode e) {
                 lags.add(new StepLog.Lag("end", e.worstWorldBehindMs(), e.worstAgentLateMs(), e.requested(), e.lowestAchieved()));
             }
         };
@@ -133,7 +138,7 @@ public final class RealTimeTap implements Closeable {
 
     /**
      * Waits (at most {@code timeoutMs}) until the lag notes given so far are written with a step:
-     * call after closing the {@link jacabot.app.run.LagMeter} and before stopping the world, so that
+     * call after closing the {@link LagMeter} and before stopping the world, so that
      * an episode open at the end is recorded with its end. {@return whether they were}
      */
     public boolean awaitLagNotes(long timeoutMs) throws InterruptedException {

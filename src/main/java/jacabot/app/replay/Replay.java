@@ -1,5 +1,6 @@
 package jacabot.app.replay;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
 import jacabot.sim.engine.ObjectKind;
@@ -60,7 +61,7 @@ public final class Replay {
                 trajectory.add(new Pose(s.body().x(), s.body().z(), s.body().heading()));
                 frames.add(new Frame(s.timeMs(), s.body(), s.commands(), s.readings(), objs, mind, trajectory.size()));
             }
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+        } catch (JsonProcessingException e) {
             throw new IOException(file + ": not a jacabot step log: " + e.getOriginalMessage());
         }
         return new Replay(dirOrFile, header, List.copyOf(frames), trajectory);

@@ -1,13 +1,18 @@
 package jacabot.app.replay;
 
-import jacabot.app.inspector.MindWatch;
+import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.Inspector;
+import jacabot.app.inspector.MindProbe;
+import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
 import jacabot.app.run.LockstepRun;
+import jacabot.experiments.link.StepData;
 import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
+import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
+import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.robot.Robot;
 import java.io.Closeable;
@@ -15,6 +20,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Supplier;
 
 /**
  * Taps a lockstep run after each control step, while the agent is idle: captures the robot
@@ -27,9 +33,13 @@ public final class RunTap implements Closeable {
     private final MindWatch watch;
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
-    private volatile jacabot.app.inspector.Debugger debugger;
+    private volatile List<SensorInfo> lastReadings = List.of();
+    private volatile Debugger debugger;
+    private final LockstepRun run;
+    private StepLog.Header header;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
+        this.run = run;
         this.world = run.world();
         this.robot = world.robots().get(0);
         this.log = log;
@@ -52,7 +62,8 @@ public final class RunTap implements Closeable {
         WorldSnapshot start = w.snapshot();
         if (outDir != null) {
             var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), w.name(), w.seed(), w.controlStep(),
-                    w.robots().get(0).name(), agentFile, start);
+                    w.robots().get(0).name(), agentFile, start,
+                    run.mas().agent("robot") == null ? null : MindProbe.planTexts(run.mas().agent("robot")));
             log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
             if (inspector != null) {
                 archive(inspector, log, outDir.resolve(StepLog.FILE), header);
@@ -61,7 +72,14 @@ public final class RunTap implements Closeable {
         if (inspector != null) {
             inspector.world(start);
         }
-        return new RunTap(run, inspector, log);
+        var tap = new RunTap(run, inspector, log);
+        tap.header = log == null ? null : log.header();
+        return tap;
+    }
+
+    /** {@return the step log's header, or null without a step log} */
+    public StepLog.Header header() {
+        return header;
     }
 
     /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */
@@ -71,15 +89,16 @@ public final class RunTap implements Closeable {
         inspector.add("robot").archive(archive);
     }
 
-    private void afterStep(jacabot.experiments.link.StepData data, List<Command> commands) {
+    private void afterStep(StepData data, List<Command> commands) {
         var text = new ArrayList<String>(commands.size());
         commands.forEach(c -> text.add(c.toString()));
         if (!commands.isEmpty()) {
             lastCommands = text;
         }
+        lastReadings = data.readings();
         MindState mind = watch == null ? null : watch.capture();
         if (log != null) {
-            List<jacabot.sim.engine.ObjectState> objects;
+            List<ObjectState> objects;
             StepLog.Body body;
             synchronized (world) {
                 // not world.snapshot(): it copies the whole trajectory, every step
@@ -97,14 +116,24 @@ public final class RunTap implements Closeable {
         }
     }
 
-    /** Halts the run on {@code d}'s breakpoints, after the step is logged and shown. {@return this} */
-    public RunTap debugger(jacabot.app.inspector.Debugger d) {
+    /**
+     * Halts the run on {@code d}'s breakpoints, after the step is logged and shown, and before a
+     * reasoning cycle when {@code d} steps one cycle. {@return this}
+     */
+    public RunTap debugger(Debugger d) {
         this.debugger = d;
+        if (d != null && watch != null) {
+            run.beforeCycle(a -> {
+                if (watch.watches(a)) {
+                    d.beforeCycle(watch::peekBeforeCycle);
+                }
+            });
+        }
         return this;
     }
 
-    /** As {@link #debugger(jacabot.app.inspector.Debugger)}, also driven from {@code inspector}'s page (if not null). */
-    public RunTap debugger(Inspector inspector, jacabot.app.inspector.Debugger d) {
+    /** As {@link #debugger(Debugger)}, also driven from {@code inspector}'s page (if not null). */
+    public RunTap debugger(Inspector inspector, Debugger d) {
         if (inspector != null) {
             inspector.debugger(d);
         }
@@ -112,20 +141,22 @@ public final class RunTap implements Closeable {
     }
 
     private RobotView robotView() {
-        return view(world, robot, lastCommands);
+        var readings = new ArrayList<String>();
+        lastReadings.forEach(r -> readings.add(StepLog.reading(r)));
+        return view(world, robot, lastCommands, readings);
     }
 
     /** {@return the first robot's body now, without commands (a real-time run sends them over its socket)} */
-    public static java.util.function.Supplier<RobotView> robotView(SimWorld world) {
+    public static Supplier<RobotView> robotView(SimWorld world) {
         Robot r = world.robots().get(0);
-        return () -> view(world, r, List.of());
+        return () -> view(world, r, List.of(), List.of());
     }
 
-    private static RobotView view(SimWorld world, Robot robot, List<String> commands) {
+    private static RobotView view(SimWorld world, Robot robot, List<String> commands, List<String> readings) {
         synchronized (world) {
             var p = robot.pose();
             var placed = new ArrayList<RobotView.Placed>();
-            for (jacabot.sim.engine.ObjectState o : world.supervisor().objects()) {
+            for (ObjectState o : world.supervisor().objects()) {
                 if (o.movable()) {
                     placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
                             StepLog.round(o.pose().heading()), o.carriedBy()));
@@ -133,7 +164,7 @@ public final class RunTap implements Closeable {
             }
             return new RobotView(world.timeMs(), p.x(), p.z(), p.heading(),
                     robot.hasBattery() ? robot.getBattery().energy() : null, robot.getWheels().getLeftSpeed(),
-                    robot.getWheels().getRightSpeed(), commands, placed);
+                    robot.getWheels().getRightSpeed(), commands, placed, readings);
         }
     }
 

@@ -1,10 +1,12 @@
 package jacabot.app.replay;
 
+import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindArchive;
 import jacabot.app.inspector.MindHistory;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.RobotView;
 import java.io.BufferedReader;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.nio.channels.Channels;
@@ -16,6 +18,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import java.util.zip.DataFormatException;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.Inflater;
@@ -66,7 +69,7 @@ public final class StepArchive implements MindArchive {
             }
             var inflater = new Inflater(true);
             inflater.setInput(all, pos + 10, all.length - pos - 10);
-            var text = new java.io.ByteArrayOutputStream();
+            var text = new ByteArrayOutputStream();
             byte[] buf = new byte[1 << 16];
             try {
                 while (!inflater.finished()) {
@@ -110,8 +113,19 @@ public final class StepArchive implements MindArchive {
      * Shows a recorded run in {@code inspector}, as its page shows a live one: the robot agent's
      * whole history read on demand, its world and its plots. {@return the archive}
      */
-    public static StepArchive show(jacabot.app.inspector.Inspector inspector, Path dirOrFile) throws IOException {
-        MindHistory h = inspector.add("robot");
+    public static StepArchive show(Inspector inspector, Path dirOrFile) throws IOException {
+        StepArchive archive = history(inspector, dirOrFile, "robot");
+        inspector.world(archive.header().start());
+        inspector.showPlots(Files.isDirectory(dirOrFile) ? dirOrFile : dirOrFile.toAbsolutePath().getParent());
+        return archive;
+    }
+
+    /**
+     * Adds a recorded run's agent to {@code inspector} as {@code name} (e.g. a what-if beside its
+     * run): its history read on demand, its path and failures. {@return the archive}
+     */
+    public static StepArchive history(Inspector inspector, Path dirOrFile, String name) throws IOException {
+        MindHistory h = inspector.add(name);
         StepArchive archive = open(dirOrFile, new PathSink() {
             @Override
             public void point(long timeMs, double x, double z) {
@@ -124,8 +138,9 @@ public final class StepArchive implements MindArchive {
             }
         });
         h.archive(archive);
-        inspector.world(archive.header().start());
-        inspector.showPlots(Files.isDirectory(dirOrFile) ? dirOrFile : dirOrFile.toAbsolutePath().getParent());
+        if (archive.header().plans() != null) {
+            h.plans(archive.header().plans());
+        }
         return archive;
     }
 
@@ -248,10 +263,26 @@ public final class StepArchive implements MindArchive {
         return out.size() > max ? new ArrayList<>(out.subList(out.size() - max, out.size())) : out;
     }
 
+    @Override
+    public void forEachMind(Consumer<MindState> each) throws IOException {
+        if (chunkAt(0) < 0) {
+            return;
+        }
+        long end = lastTimeMs(); // a member being written is never read
+        var state = StepState.from(header);
+        read(0, (n, s) -> {
+            if (s.timeMs() > end) {
+                return false;
+            }
+            each.accept(state.apply(s));
+            return s.timeMs() < end;
+        });
+    }
+
     static RobotView view(StepLog.Step s, Map<String, StepLog.Moved> objects) {
         var placed = new ArrayList<RobotView.Placed>(objects.size());
         objects.forEach((id, m) -> placed.add(new RobotView.Placed(id, m.x(), m.z(), m.heading(), m.carriedBy())));
         var b = s.body();
-        return new RobotView(s.timeMs(), b.x(), b.z(), b.heading(), b.battery(), b.left(), b.right(), s.commands(), placed);
+        return new RobotView(s.timeMs(), b.x(), b.z(), b.heading(), b.battery(), b.left(), b.right(), s.commands(), placed, s.readings());
     }
 }

@@ -1,16 +1,20 @@
 package jacabot.app.replay;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.app.inspector.MindState;
+import jacabot.app.run.LagMeter;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import java.io.BufferedReader;
+import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -20,12 +24,16 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
+import java.util.stream.Collectors;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.GZIPOutputStream;
+import java.util.zip.ZipException;
 
 /**
  * A run's step log, {@code steps.jsonl.gz}: one JSON line per control step, gzipped and streamed
@@ -46,7 +54,7 @@ public final class StepLog {
     public static final int CHUNK = 100;
 
     static final ObjectMapper JSON = new ObjectMapper().configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false)
-            .setSerializationInclusion(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL);
+            .setSerializationInclusion(JsonInclude.Include.NON_NULL);
 
     /** Rounds to 0.1 mm, 0.01 degree, 0.01 J: what the plots and the replay need, in a third of the bytes. */
     static double round(double v) {
@@ -56,9 +64,12 @@ public final class StepLog {
     private StepLog() {
     }
 
-    /** Run facts for the header. */
+    /**
+     * Run facts for the header; {@code plans}: the agent's plan library at the start, as the
+     * inspector shows it (null: no agent, or not known when the log opened).
+     */
     public record Header(String format, String experiment, String world, long seed, int controlStep, String robot,
-            String agentFile, WorldSnapshot start) {
+            String agentFile, WorldSnapshot start, List<String> plans) {
     }
 
     /** A robot's body in one step. {@code battery} is null without a battery. */
@@ -97,7 +108,7 @@ public final class StepLog {
     /**
      * A real-time run's lag episode starting ({@code "start"}) or ending ({@code "end"}) at a step, in
      * simulated ms: how far the world was behind real time, how late the agent was, the speed factor
-     * asked for and the one achieved ({@link jacabot.app.run.LagMeter}). Lockstep runs never lag.
+     * asked for and the one achieved ({@link LagMeter}). Lockstep runs never lag.
      */
     public record Lag(String state, long worldBehindMs, long agentLateMs, double requested, double achieved) {
         public Lag {
@@ -115,19 +126,22 @@ public final class StepLog {
     /** Streams steps to a gzipped file. Not thread-safe: the run's step thread writes. */
     public static final class Writer implements Closeable {
         private final OutputStream file;
-        private final java.io.ByteArrayOutputStream chunk = new java.io.ByteArrayOutputStream(1 << 16);
+        private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
         private long offset;
         private long steps;
         private long chunkFirstTime;
         private long lastTime;
-        private java.util.function.Consumer<Chunk> onChunk = c -> {
+        private Consumer<Chunk> onChunk = c -> {
         };
         private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
         private List<MindState.IntentionView> intentions = List.of();
         private List<String> events = List.of();
         private final Map<String, Moved> objects = new HashMap<>();
 
+        private final Header header;
+
         public Writer(Path file, Header header) throws IOException {
+            this.header = header;
             Files.createDirectories(file.toAbsolutePath().getParent());
             this.file = Files.newOutputStream(file);
             for (ObjectState o : header.start().objects()) {
@@ -137,8 +151,12 @@ public final class StepLog {
             flushChunk();
         }
 
+        public Header header() {
+            return header;
+        }
+
         /** Hands every gzip member of steps, once it is on disk, to {@code sink} (the inspector's index). */
-        public Writer onChunk(java.util.function.Consumer<Chunk> sink) {
+        public Writer onChunk(Consumer<Chunk> sink) {
             this.onChunk = sink;
             return this;
         }
@@ -153,7 +171,7 @@ public final class StepLog {
                 List<ObjectState> world) {
             var text = new ArrayList<String>(readings.size());
             readings.forEach(x -> text.add(reading(x)));
-            stepText(timeMs, body, commands.stream().map(Command::toString).collect(java.util.stream.Collectors.toList()),
+            stepText(timeMs, body, commands.stream().map(Command::toString).collect(Collectors.toList()),
                     text, mind, world);
         }
 
@@ -231,7 +249,7 @@ public final class StepLog {
                 return;
             }
             try {
-                var member = new java.io.ByteArrayOutputStream(chunk.size() / 4 + 64);
+                var member = new ByteArrayOutputStream(chunk.size() / 4 + 64);
                 try (var gz = new GZIPOutputStream(member, 1 << 16)) {
                     chunk.writeTo(gz);
                 }
@@ -279,19 +297,6 @@ public final class StepLog {
                     mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
         }
 
-        private static String reading(SensorInfo s) {
-            var sb = new StringBuilder().append(s.kind().map(Enum::name).orElse("#" + s.getId())).append(' ');
-            if (s.getIntValues().length > 0) {
-                sb.append(java.util.Arrays.toString(s.getIntValues()));
-            } else if (s.getCoord()[0] != 0 || s.getCoord()[1] != 0 || s.getCoord()[2] != 0) {
-                double[] c = s.getCoord();
-                sb.append('[').append(round(c[0])).append(", ").append(round(c[1])).append(", ").append(round(c[2])).append(']');
-            } else {
-                sb.append(round(s.getVal()));
-            }
-            return sb.toString();
-        }
-
         private void line(JsonNode n) {
             try {
                 JSON.writeValue(chunk, n);
@@ -313,6 +318,20 @@ public final class StepLog {
         }
     }
 
+    /** {@return a reading as the step log writes it: {@code KIND value}} */
+    static String reading(SensorInfo s) {
+        var sb = new StringBuilder().append(s.kind().map(Enum::name).orElse("#" + s.getId())).append(' ');
+        if (s.getIntValues().length > 0) {
+            sb.append(Arrays.toString(s.getIntValues()));
+        } else if (s.getCoord()[0] != 0 || s.getCoord()[1] != 0 || s.getCoord()[2] != 0) {
+            double[] c = s.getCoord();
+            sb.append('[').append(round(c[0])).append(", ").append(round(c[1])).append(", ").append(round(c[2])).append(']');
+        } else {
+            sb.append(round(s.getVal()));
+        }
+        return sb.toString();
+    }
+
     // ---- reading ---------------------------------------------------------------------------------------
 
     /** Reads a step log back, one step at a time. */
@@ -324,7 +343,7 @@ public final class StepLog {
             try {
                 in = new BufferedReader(new InputStreamReader(new GZIPInputStream(Files.newInputStream(file), 1 << 16),
                         StandardCharsets.UTF_8));
-            } catch (java.util.zip.ZipException e) {
+            } catch (ZipException e) {
                 throw new IOException(file + ": not a jacabot step log (" + e.getMessage() + ")");
             }
             String first = in.readLine();
@@ -333,7 +352,7 @@ public final class StepLog {
             }
             try {
                 header = JSON.readValue(first, Header.class);
-            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            } catch (JsonProcessingException e) {
                 in.close();
                 throw new IOException(file + ":1: not a jacabot step log: " + e.getOriginalMessage());
             }

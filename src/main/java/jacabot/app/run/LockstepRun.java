@@ -2,6 +2,7 @@ package jacabot.app.run;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
+import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Event;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
@@ -73,6 +74,7 @@ public final class LockstepRun implements AutoCloseable {
     };
     private BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
     };
+    private volatile Consumer<Agent> beforeCycle;
 
     /** One agent of the robot and what watches it for failures. */
     private record Member(String name, FailureWatch failures, List<Literal> initialGoals) {
@@ -120,7 +122,16 @@ public final class LockstepRun implements AutoCloseable {
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world.spec(), experiment);
         var member = new Member(agent.name(), new FailureWatch(program.goals()), program.goals());
-        mas.createAgent(agent.name(), program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+        mas.createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
+            @Override
+            public void sense(Agent a) { // the start of each reasoning cycle, on the run's thread
+                Consumer<Agent> hook = beforeCycle;
+                if (hook != null) {
+                    hook.accept(a);
+                }
+                super.sense(a);
+            }
+        }).setPlanListener((event, plan) -> {
             member.failures().planSelected(event, clock.nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
@@ -162,6 +173,14 @@ public final class LockstepRun implements AutoCloseable {
     /** Called after each control step with its readings and the commands going to the robot (inspector, step log). */
     public void onCommands(BiConsumer<StepData, List<Command>> listener) {
         this.onCommands = listener;
+    }
+
+    /**
+     * Called at the start of each reasoning cycle of an agent, on the run's thread, between two
+     * cycles (the debugger's one-cycle step). It must not change the agent.
+     */
+    public void beforeCycle(Consumer<Agent> hook) {
+        this.beforeCycle = hook;
     }
 
     public SimWorld world() {

@@ -3,6 +3,7 @@ package jacabot.app.scenario;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.plot.RunPlots;
+import jacabot.app.plot.TrajectoryPlot;
 import jacabot.app.replay.RunTap;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
@@ -140,7 +141,7 @@ public final class Scenario {
             summary.writeJson(out.resolve("summary.json"));
             Files.writeString(out.resolve("summary.txt"), summary.toText());
             Files.writeString(out.resolve("event-log.txt"), summary.eventLog());
-            recorder.writePng(out.resolve("trajectory.png"), 800, 800);
+            TrajectoryPlot.write(simWorld, out.resolve("trajectory.png"), 800);
             RunPlots.writeAll(out, new PrintStream(OutputStream.nullOutputStream()));
         }
         return new ScenarioResult(summary, List.of(console.toString(StandardCharsets.UTF_8).split("\\R")), run.agentFailure());

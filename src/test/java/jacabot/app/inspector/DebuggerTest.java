@@ -20,6 +20,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.TreeSet;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.zip.GZIPInputStream;
 import org.junit.jupiter.api.Test;
@@ -28,7 +29,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Breakpoints in a lockstep run: a breakpoint on a plan label halts at the step the step log of
- * an unpaused run predicts, one step goes one control step on, and the run continued writes the
+ * an unpaused run predicts, one step goes one control step on, a cycle step one reasoning cycle
+ * (halting between two cycles of a control step), and the run continued writes the
  * same event log and step log, byte for byte, as the run never paused. The agent is the test's
  * own ({@code breaker.asl}), so its labels are known.
  */
@@ -61,7 +63,7 @@ class DebuggerTest {
                 break;
             }
         }
-        var seen = new java.util.TreeSet<String>();
+        var seen = new TreeSet<String>();
         Replay.open(plain).frames().forEach(f -> f.mind().selections().forEach(x -> seen.add(x.plan())));
         assertTrue(predicted >= 1500, "the plain run selects @drive after its first wait: " + seen + "\n" + expected);
 
@@ -85,10 +87,19 @@ class DebuggerTest {
         debugger.step();
         Debugger.Halt next = awaitAfter(debugger, first);
         assertEquals(predicted + 40, next.timeMs(), "one control step on");
+        // one reasoning cycle, twice: the mind one cycle on each time, the world at most one step on
+        Debugger.Halt before = next;
+        for (int k = 0; k < 2; k++) {
+            debugger.stepCycle();
+            Debugger.Halt cycle = awaitAfter(debugger, before);
+            assertEquals(before.mind().cycle() + 1, cycle.mind().cycle(), "one cycle on: " + cycle.reason());
+            assertTrue(cycle.reason().startsWith("one reasoning cycle"), cycle.reason());
+            before = cycle;
+        }
         debugger.remove("label:drive");
         debugger.resume();
         runner.join(120_000);
-        assertEquals(2, halts.size());
+        assertEquals(4, halts.size());
         assertEquals(expected, log[0], "the event log of the paused run");
         assertEquals(unzip(plain), unzip(paused), "the step log of the paused run");
     }

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
+import java.net.HttpURLConnection;
+import java.net.Socket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -14,6 +16,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -62,7 +66,7 @@ class InspectorServerTest {
             assertEquals(404, status(client, inspector.url("plots/..%2Fsecret.txt")));
 
             // the stream sends the latest frame first
-            var conn = (java.net.HttpURLConnection) URI.create(inspector.url("api/stream")).toURL().openConnection();
+            var conn = (HttpURLConnection) URI.create(inspector.url("api/stream")).toURL().openConnection();
             conn.setReadTimeout(10_000);
             try (var in = new BufferedReader(new InputStreamReader(conn.getInputStream(), StandardCharsets.UTF_8))) {
                 assertEquals("event: debug", in.readLine(), "first the debugger's state (none here)");
@@ -80,7 +84,7 @@ class InspectorServerTest {
     @Test
     void refusesRequestsWithoutTheTokenFromAnotherOriginOrWithAnotherRunsToken() throws Exception {
         var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
-        var refused = new java.util.concurrent.CopyOnWriteArrayList<String>();
+        var refused = new CopyOnWriteArrayList<String>();
         try (Inspector inspector = Inspector.startOnFreePort(); Inspector other = Inspector.startOnFreePort()) {
             inspector.logRefusals(refused::add);
             inspector.add("robot").record(mind(0, "at(1)", List.of()), null, List.of());
@@ -114,7 +118,7 @@ class InspectorServerTest {
             // JDK's client will not send a Host of our choosing)
             inspector.logRefusals(refused::add);
             String path = inspector.url("api/agents").replaceFirst("^http://[^/]+", "");
-            try (var socket = new java.net.Socket("127.0.0.1", inspector.uri().getPort())) {
+            try (var socket = new Socket("127.0.0.1", inspector.uri().getPort())) {
                 socket.getOutputStream().write(("GET " + path + " HTTP/1.1\r\nHost: evil.example:" + inspector.uri().getPort()
                         + "\r\nConnection: close\r\n\r\n").getBytes(StandardCharsets.US_ASCII));
                 var in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.US_ASCII));
@@ -122,6 +126,84 @@ class InspectorServerTest {
             }
             assertTrue(refused.get(refused.size() - 1).contains("another host"), refused.toString());
         }
+    }
+
+    /** A page's edits of the run (what-if, reload) are refused as any request is, without the token or from elsewhere. */
+    @Test
+    void editsOfTheRunAreGuardedToo() throws Exception {
+        var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
+        var received = new CopyOnWriteArrayList<String>();
+        var refused = new CopyOnWriteArrayList<String>();
+        try (Inspector inspector = Inspector.startOnFreePort(); Inspector other = Inspector.startOnFreePort()) {
+            inspector.logRefusals(refused::add);
+            inspector.edits(new RunEdits() {
+                @Override
+                public String source() {
+                    return "!start.";
+                }
+
+                @Override
+                public void whatIf(WhatIfJob job, String program) {
+                    received.add("what-if at " + job.getAtMs() + ": " + program);
+                    job.done("there", job.getAtMs(), job.getAtMs() + 40);
+                }
+
+                @Override
+                public void reload(String program) {
+                    received.add("reload: " + program);
+                }
+            });
+            String foreign = other.url("x").replaceAll(".*token=", "");
+            for (String path : List.of("api/whatif?t=1000&seconds=5", "api/reload")) {
+                String bare = inspector.uri() + path;
+                assertEquals(403, post(client, bare, null), "no token: " + path);
+                assertEquals(403, post(client, bare + (path.contains("?") ? "&" : "?") + "token=" + foreign, null), "another run's token");
+                assertEquals(403, post(client, inspector.url(path), "http://evil.example"), "another origin");
+            }
+            assertEquals(List.of(), received, "nothing refused reached the run");
+            assertEquals(6, refused.size(), refused.toString());
+            String own = "http://127.0.0.1:" + inspector.uri().getPort();
+            assertEquals(200, post(client, inspector.url("api/whatif?t=1000&seconds=5"), own));
+            assertEquals(200, post(client, inspector.url("api/reload"), own));
+            assertEquals(400, post(client, inspector.url("api/whatif?t=x&seconds=5"), own), "a bad instant");
+            for (int i = 0; i < 100 && received.size() < 2; i++) {
+                Thread.sleep(50);
+            }
+            assertEquals(List.of("reload: +!go <- move.", "what-if at 1000: +!go <- move."), received.stream().sorted().toList());
+            assertEquals("done", inspector.whatIfs().get(0).getState());
+            assertTrue(get(client, inspector.url("api/debug")).contains("\"divergesAtMs\":1040"), "the page is told where it differs");
+        }
+    }
+
+    @Test
+    void timeViewsOverTheWholeHistory() throws Exception {
+        var h = new MindHistory("robot", 2);
+        var t = new TimeViews.Timeline();
+        var b = new TimeViews.BeliefHistory("battery");
+        String[] tops = {"@a +!go", "@a +!go", "@b +!charge", "@a +!go"};
+        for (int i = 0; i < tops.length; i++) {
+            var means = new MindState.Means("+!x", tops[i], "{}", ".wait(1)", "");
+            var m = new MindState("robot", i, i * 1000L, i, List.of(new MindState.Belief("battery(" + (i < 2 ? "ok" : "low") + ")",
+                    List.of("percept"), List.of("artifact_name(\"body\")"))), List.of(),
+                    List.of(new MindState.IntentionView(1, "running", List.of(means))), List.of());
+            t.add(m);
+            b.add(m);
+            h.record(m, null, List.of());
+        }
+        assertEquals(List.of(new TimeViews.Span(1, "@a +!go", 0, 2000), new TimeViews.Span(1, "@b +!charge", 2000, 3000),
+                new TimeViews.Span(1, "@a +!go", 3000, 3000)), t.spans());
+        assertEquals(List.of(new TimeViews.Change(0, '+', "battery(ok)"), new TimeViews.Change(2000, '-', "battery(ok)"),
+                new TimeViews.Change(2000, '+', "battery(low)")), b.changes());
+        assertEquals(Map.of("body", List.of("battery(low)")), TimeViews.artifacts(h.latest().mind()));
+    }
+
+    private static int post(HttpClient c, String url, String origin) throws Exception {
+        var r = HttpRequest.newBuilder(URI.create(url)).timeout(Duration.ofSeconds(10))
+                .POST(HttpRequest.BodyPublishers.ofString("+!go <- move."));
+        if (origin != null) {
+            r.header("Origin", origin);
+        }
+        return c.send(r.build(), HttpResponse.BodyHandlers.discarding()).statusCode();
     }
 
     @Test

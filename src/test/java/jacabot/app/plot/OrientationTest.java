@@ -13,6 +13,7 @@ import java.awt.image.BufferedImage;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
+import java.util.Arrays;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -60,8 +61,8 @@ class OrientationTest {
             }
         }
         assertEquals(1, argmax(green), what + ": the storage area top-right, green pixels per quadrant "
-                + java.util.Arrays.toString(green));
-        assertEquals(2, argmax(red), what + ": red2 bottom-left, red pixels per quadrant " + java.util.Arrays.toString(red));
+                + Arrays.toString(green));
+        assertEquals(2, argmax(red), what + ": red2 bottom-left, red pixels per quadrant " + Arrays.toString(red));
     }
 
     private static int argmax(int[] v) {

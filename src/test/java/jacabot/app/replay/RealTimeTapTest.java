@@ -4,14 +4,21 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.console.Verbosity;
 import jacabot.app.inspector.MindWatch;
+import jacabot.app.run.AgentSource;
+import jacabot.app.run.LagMeter;
 import jacabot.app.run.RealTimeRun;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
+import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -45,9 +52,9 @@ class RealTimeTapTest {
     void aRealTimeRunWritesAStepPerControlStep(@TempDir Path out) throws Exception {
         var spec = WorldFileReader.read(RunTapTest.ROOT.resolve(RunTapTest.NAVIGATION.worldFile()));
         SimWorld world = SimWorld.of(spec);
-        var source = jacabot.app.run.AgentSource.packaged(RunTapTest.NAVIGATION);
+        var source = AgentSource.packaged(RunTapTest.NAVIGATION);
         var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
-        var console = new java.io.ByteArrayOutputStream();
+        var console = new ByteArrayOutputStream();
         try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, 3, 2,
                 new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
             var watch = MindWatch.attach(null, run.mas().agent("robot"), null).alsoTo(tap.minds());
@@ -92,26 +99,26 @@ class RealTimeTapTest {
     @Test
     void aRunThatCannotKeepUpSaysSoAndRecordsItsLag(@TempDir Path out) throws Exception {
         SimWorld world = SimWorld.of(WorldFileReader.read(RunTapTest.ROOT.resolve(RunTapTest.NAVIGATION.worldFile())));
-        var source = jacabot.app.run.AgentSource.packaged(RunTapTest.NAVIGATION);
+        var source = AgentSource.packaged(RunTapTest.NAVIGATION);
         var tap = RealTimeTap.open(world, out, RunTapTest.NAVIGATION, "navigation.asl");
-        var statuses = new java.util.concurrent.CopyOnWriteArrayList<String>();
-        var console = new java.io.ByteArrayOutputStream();
-        var warnings = new java.io.ByteArrayOutputStream();
+        var statuses = new CopyOnWriteArrayList<String>();
+        var console = new ByteArrayOutputStream();
+        var warnings = new ByteArrayOutputStream();
         // x100000: a simulated hour per 36 wall-clock ms, more than any machine steps a world over a socket
         try (var run = new RealTimeRun(world, RunTapTest.NAVIGATION, source, 3, 100_000,
                 new PrintStream(console, true, StandardCharsets.UTF_8), 0, tap.controllerEvents())) {
-            run.lag().addListener(tap.lags()).addListener(new jacabot.app.run.LagMeter.Listener() {
+            run.lag().addListener(tap.lags()).addListener(new LagMeter.Listener() {
                 @Override
-                public void started(jacabot.app.run.LagMeter.Reading r) {
-                    statuses.add(jacabot.app.run.LagMeter.status(r));
+                public void started(LagMeter.Reading r) {
+                    statuses.add(LagMeter.status(r));
                 }
 
                 @Override
-                public void ended(jacabot.app.run.LagMeter.Episode e) {
+                public void ended(LagMeter.Episode e) {
                 }
             });
-            run.lag().addListener(jacabot.app.run.LagMeter.firstWarning(jacabot.app.console.ConsoleLog.to(
-                    new PrintStream(warnings, true, StandardCharsets.UTF_8), jacabot.app.console.Verbosity.NORMAL)::warn));
+            run.lag().addListener(LagMeter.firstWarning(ConsoleLog.to(
+                    new PrintStream(warnings, true, StandardCharsets.UTF_8), Verbosity.NORMAL)::warn));
             run.start();
             run.runner().start();
             long deadline = System.nanoTime() + 60_000_000_000L;
@@ -132,7 +139,7 @@ class RealTimeTapTest {
         assertEquals(1, warned.lines().count(), "one warning, not a flood: " + warned);
         assertTrue(warned.startsWith("warning: at t=") && (warned.contains("s behind real time (x100000 requested")
                 || warned.contains("s behind the world")), warned);
-        var lags = new java.util.ArrayList<StepLog.Lag>();
+        var lags = new ArrayList<StepLog.Lag>();
         try (var reader = new StepLog.Reader(out.resolve(StepLog.FILE))) {
             for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
                 if (s.lag() != null) {
@@ -146,6 +153,6 @@ class RealTimeTapTest {
             assertEquals(k % 2 == 0 ? "start" : "end", lags.get(k).state(), lags.toString());
         }
         StepLog.Lag last = lags.get(lags.size() - 1);
-        assertTrue(last.worldBehindMs() > jacabot.app.run.LagMeter.THRESHOLD_MS && last.requested() == 100_000, lags.toString());
+        assertTrue(last.worldBehindMs() > LagMeter.THRESHOLD_MS && last.requested() == 100_000, lags.toString());
     }
 }

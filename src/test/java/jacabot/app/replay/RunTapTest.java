@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
+import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
@@ -27,7 +28,7 @@ class RunTapTest {
 
     private static LockstepRun run() throws Exception {
         var spec = WorldFileReader.read(ROOT.resolve(NAVIGATION.worldFile()));
-        return new LockstepRun(SimWorld.of(spec), null, NAVIGATION, jacabot.app.run.AgentSource.packaged(NAVIGATION), 4,
+        return new LockstepRun(SimWorld.of(spec), null, NAVIGATION, AgentSource.packaged(NAVIGATION), 4,
                 new PrintStream(OutputStream.nullOutputStream()));
     }
 

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.inspector.MindHistory;
+import jacabot.app.inspector.MindState;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -25,7 +26,7 @@ class StepArchiveTest {
             }
 
             @Override
-            public void failure(jacabot.app.inspector.MindState.Selection s) {
+            public void failure(MindState.Selection s) {
                 history.noteFailure(s);
             }
         });

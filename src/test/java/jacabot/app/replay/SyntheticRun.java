@@ -2,6 +2,7 @@ package jacabot.app.replay;
 
 import jacabot.app.inspector.MindState;
 import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileException;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -28,10 +29,10 @@ public final class SyntheticRun {
     }
 
     /** Writes {@code dir}/steps.jsonl.gz. */
-    public static void write(Path dir, int seconds) throws IOException, jacabot.sim.io.WorldFileException {
+    public static void write(Path dir, int seconds) throws IOException, WorldFileException {
         SimWorld w = SimWorld.load(ROOT.resolve("worlds/navigation.json"));
         var header = new StepLog.Header(StepLog.FORMAT, "navigation", w.name(), 1, 40, w.robots().get(0).name(),
-                "synthetic.asl", w.snapshot());
+                "synthetic.asl", w.snapshot(), null);
         long total = seconds * 1000L;
         try (var log = new StepLog.Writer(dir.resolve(StepLog.FILE), header)) {
             for (long t = 40; t <= total; t += 40) {

@@ -2,8 +2,11 @@ package jacabot.app.replay;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.inspector.Debugger;
+import jacabot.app.inspector.Inspector;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.Experiment;
@@ -32,7 +35,7 @@ class WhatIfTest {
     static final long AT = 3_000;
 
     private static AgentSource agent(String name) throws Exception {
-        try (InputStream in = jacabot.app.inspector.Inspector.class.getResourceAsStream(name)) {
+        try (InputStream in = Inspector.class.getResourceAsStream(name)) {
             return AgentSource.text(name, new String(in.readAllBytes(), StandardCharsets.UTF_8));
         }
     }
@@ -67,6 +70,48 @@ class WhatIfTest {
         assertTrue(head.length() > 1000);
         assertEquals(head, prefix(r.eventLog(), AT / 40), "the event logs up to the instant, byte for byte");
         assertNotEquals(original, r.eventLog());
+    }
+
+    /** The page's reload of plans into a live run halted at an instant: the run goes on with the edited plans. */
+    @Test
+    @Timeout(180)
+    void plansReloadedIntoAHaltedLiveRun(@TempDir Path dir) throws Exception {
+        var quiet = new PrintStream(OutputStream.nullOutputStream());
+        AgentSource original = agent("breaker.asl");
+        var run = new LockstepRun(world(), null, EXPERIMENT, original, 1, quiet);
+        var debugger = new Debugger();
+        debugger.add("t=3s");
+        String[] failed = {null};
+        try (Inspector inspector = Inspector.startOnFreePort(); RunTap tap = RunTap.attach(run, inspector, dir, EXPERIMENT, "breaker.asl")) {
+            tap.debugger(inspector, debugger);
+            var edits = PageEdits.live(inspector, dir, tap.header(), EXPERIMENT, original, WhatIfTest::world,
+                    run.mas().agent("robot"), debugger);
+            assertThrows(IllegalStateException.class, () -> edits.reload(agent("breaker-edited.asl").text()), "not halted yet");
+            Thread reloader = new Thread(() -> {
+                try {
+                    debugger.awaitHalt();
+                    edits.reload(agent("breaker-edited.asl").text());
+                    debugger.resume();
+                } catch (Exception e) {
+                    failed[0] = e.toString();
+                    debugger.detach();
+                }
+            });
+            reloader.start();
+            run.runFor(6);
+            reloader.join(10_000);
+        }
+        assertEquals(null, failed[0]);
+        List<String> plans = StepArchive.open(dir, (t, x, z) -> {
+        }).header().plans();
+        assertTrue(plans.stream().anyMatch(p -> p.startsWith("@drive +!drive(N)")), "the plan library at the start, in the header: " + plans);
+        List<String> steps = steps(dir);
+        int at = 0;
+        while (time(steps.get(at)) < AT) {
+            at++;
+        }
+        assertTrue(!String.join("\n", steps.subList(0, at + 1)).contains("@driveSlow"), "the old plans up to the halt");
+        assertTrue(String.join("\n", steps.subList(at + 1, steps.size())).contains("@driveSlow"), "the edited plan after it");
     }
 
     /** The event log's lines of steps 0..lastStep. */

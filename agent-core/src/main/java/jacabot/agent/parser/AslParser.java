@@ -3,17 +3,22 @@ package jacabot.agent.parser;
 import jacabot.agent.parser.AgentSpeakParser.ComponentContext;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.SourceInfo;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
 
@@ -84,15 +89,15 @@ public final class AslParser {
      * and, through {@link #varCounter()}, those the agents of its multi-agent system make (renaming
      * apart), so that they get the numbers Jason's would.
      */
-    private final java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
+    private final AtomicLong varCounter = new AtomicLong();
 
     /** {@return the counter that numbers fresh variables, shared by the agents this parser reads programs for} */
-    public java.util.concurrent.atomic.AtomicLong varCounter() {
+    public AtomicLong varCounter() {
         return varCounter;
     }
 
     /** Numbers the local namespaces and the anonymous includes of the files this parser reads. */
-    private final java.util.concurrent.atomic.AtomicInteger nsCounter = new java.util.concurrent.atomic.AtomicInteger();
+    private final AtomicInteger nsCounter = new AtomicInteger();
 
     /** {@return a new namespace name, as Jason gives to {@code include(F, Var)}} */
     public Literal freshNamespace() {
@@ -117,7 +122,7 @@ public final class AslParser {
             return parse(text, file, new SourceResolver.Source(file, text, null), new HashSet<>(), null);
         } catch (IOException e) {
             throw new AslSyntaxException(List.of(new SyntaxError(
-                    new jacabot.agent.syntax.SourceInfo(file, 0, 0), e.getMessage())));
+                    new SourceInfo(file, 0, 0), e.getMessage())));
         }
     }
 
@@ -133,7 +138,7 @@ public final class AslParser {
         var goals = new ArrayList<Literal>();
         var plans = new ArrayList<Plan>();
         // plans inside { begin P } ... { end }, innermost last, each with its pattern and position
-        var blocks = new java.util.ArrayDeque<Block>();
+        var blocks = new ArrayDeque<Block>();
         if (errors.errors().isEmpty()) {
             for (ComponentContext c : tree.component()) {
                 if (c.directive() != null && c.directive().begin != null) {
@@ -221,7 +226,7 @@ public final class AslParser {
     /** {@code register_function("f", N, "p")} (Jason's rule-defined function; its default predicate is f's name). */
     private static AgentProgram.UserFunction userFunction(Literal l) {
         if (l.arity() < 2 || !(l.arg(0) instanceof StringTerm name)
-                || !(l.arg(1) instanceof jacabot.agent.syntax.NumberTerm n)) {
+                || !(l.arg(1) instanceof NumberTerm n)) {
             return null;
         }
         String predicate = l.arity() > 2 && l.arg(2) instanceof StringTerm p ? p.value() : name.value();
@@ -229,7 +234,7 @@ public final class AslParser {
     }
 
     /** An open {@code { begin P }}: its pattern, the plans before it, and where it was opened. */
-    private record Block(Literal pattern, ArrayList<Plan> outer, jacabot.agent.syntax.SourceInfo where) {
+    private record Block(Literal pattern, ArrayList<Plan> outer, SourceInfo where) {
     }
 
     private static boolean isNamespace(Term d) {

@@ -23,7 +23,11 @@ import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Set;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
 
@@ -35,10 +39,10 @@ final class AstBuilder {
      * Numbers unnamed variables: each {@code _} or {@code _X} read takes a number, as each makes a
      * new variable of Jason's one counter (see {@link AslParser#varCounter()}).
      */
-    private java.util.concurrent.atomic.AtomicLong varCounter = new java.util.concurrent.atomic.AtomicLong();
+    private AtomicLong varCounter = new AtomicLong();
 
     /** The namespaces of the file being read (Jason's modules). */
-    private Namespaces namespaces = new Namespaces(null, new java.util.concurrent.atomic.AtomicInteger());
+    private Namespaces namespaces = new Namespaces(null, new AtomicInteger());
     /**
      * Whether an argument or a list element is being read: its literals are in the default
      * namespace unless prefixed, as Jason reads them.
@@ -46,13 +50,13 @@ final class AstBuilder {
     private boolean inTerm;
 
     /** Functions registered by {@code register_function} so far, as {@code name/arity}. */
-    private java.util.Set<String> userFunctions = java.util.Set.of();
+    private Set<String> userFunctions = Set.of();
 
-    void setUserFunctions(java.util.Set<String> names) {
+    void setUserFunctions(Set<String> names) {
         userFunctions = names;
     }
 
-    void setVarCounter(java.util.concurrent.atomic.AtomicLong counter) {
+    void setVarCounter(AtomicLong counter) {
         varCounter = counter;
     }
 
@@ -67,7 +71,7 @@ final class AstBuilder {
      * a unifier finds a variable bound by the same object (say, a plan's N in its trigger and
      * body) at the first comparison. Names are interned, as functors are.
      */
-    private final java.util.HashMap<String, Var> named = new java.util.HashMap<>();
+    private final HashMap<String, Var> named = new HashMap<>();
 
     private Var named(String name) {
         Var v = named.get(name);
@@ -83,7 +87,7 @@ final class AstBuilder {
     }
 
     /** Reads the file in namespace ns (null: the default one), as an included module. */
-    void setNamespace(Term ns, java.util.concurrent.atomic.AtomicInteger counter) {
+    void setNamespace(Term ns, AtomicInteger counter) {
         namespaces = new Namespaces(ns, counter);
     }
 

@@ -2,6 +2,7 @@ package jacabot.agent.runtime;
 
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
+import jacabot.agent.syntax.Literal;
 import java.util.List;
 
 /**
@@ -11,7 +12,7 @@ import java.util.List;
 public final class DefaultEnvironment implements Environment {
     @Override
     public void execute(String agent, ActionExec action, Agent ag) {
-        action.fail("no environment configured!", List.of(jacabot.agent.syntax.Literal.atom("noenv")));
+        action.fail("no environment configured!", List.of(Literal.atom("noenv")));
         ag.actionExecuted(action);
     }
 }

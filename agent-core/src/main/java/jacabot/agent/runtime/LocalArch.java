@@ -1,11 +1,14 @@
 package jacabot.agent.runtime;
 
+import jacabot.agent.parser.AslParser;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.semantics.Message;
+import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
+import java.util.Collection;
 import java.util.List;
 
 /** The architecture of an agent in a {@link LocalMAS}: environment, mail, console and clock. */
@@ -79,7 +82,7 @@ public class LocalArch implements AgentArch {
     }
 
     @Override
-    public java.util.Collection<String> dfSearch(String service) {
+    public Collection<String> dfSearch(String service) {
         return mas.df().search(service);
     }
 
@@ -95,12 +98,12 @@ public class LocalArch implements AgentArch {
     }
 
     @Override
-    public String createAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+    public String createAgent(String agentName, AgentProgram program, AslParser parser) {
         return mas.spawn(agentName, program, parser);
     }
 
     @Override
-    public String cloneAgent(String agentName, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+    public String cloneAgent(String agentName, AgentProgram program, AslParser parser) {
         return mas.spawnCopy(agentName, program, parser);
     }
 

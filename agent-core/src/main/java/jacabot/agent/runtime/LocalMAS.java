@@ -4,10 +4,14 @@ import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
+import jacabot.agent.semantics.Event;
 import jacabot.agent.semantics.InternalAction;
 import jacabot.agent.semantics.Message;
 import jacabot.agent.stdlib.Stdlib;
 import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.Trigger;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -16,7 +20,9 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 
@@ -98,7 +104,7 @@ public final class LocalMAS {
     }
 
     /** The p__N numbers of unnamed plans go on from agent to agent in load order, as in Jason. */
-    private final java.util.concurrent.atomic.AtomicInteger planLabels = new java.util.concurrent.atomic.AtomicInteger();
+    private final AtomicInteger planLabels = new AtomicInteger();
 
     /**
      * Creates an agent running a program. {@code archFactory} may wrap the local architecture
@@ -189,9 +195,9 @@ public final class LocalMAS {
     /** Stops every agent ({@code .stopMAS}); the run methods return. */
     /** Jason's {@code .stopMAS(T)}: every agent gets {@code +jag_shutting_down(T)}, and the system stops T ms later. */
     public void stopIn(long deadlineMs) {
-        var event = new jacabot.agent.semantics.Event(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
-                jacabot.agent.syntax.Trigger.Type.BELIEF, jacabot.agent.syntax.Literal.of("jag_shutting_down",
-                        new jacabot.agent.syntax.NumberTerm(deadlineMs))), null);
+        var event = new Event(new Trigger(Trigger.Op.ADD,
+                Trigger.Type.BELIEF, Literal.of("jag_shutting_down",
+                        new NumberTerm(deadlineMs))), null);
         for (Agent a : agentList()) {
             a.postExternalEvent(event);
         }
@@ -229,7 +235,7 @@ public final class LocalMAS {
                 w.woken = true;
             }
             if (w.asleep) {
-                java.util.concurrent.locks.LockSupport.unpark(w.thread);
+                LockSupport.unpark(w.thread);
             }
         }
         wakeStepping();
@@ -390,7 +396,7 @@ public final class LocalMAS {
                     continue;
                 }
                 if (linger && !w.woken) {
-                    java.util.concurrent.locks.LockSupport.parkNanos(this, LINGER_NANOS);
+                    LockSupport.parkNanos(this, LINGER_NANOS);
                     if (Thread.interrupted()) {
                         throw new InterruptedException();
                     }
@@ -410,7 +416,7 @@ public final class LocalMAS {
                         long due = a.nextTimerDue();
                         // capped: a simulated clock may run faster than the wall clock
                         long wait = due == Long.MAX_VALUE ? 1000 : Math.max(1, Math.min(50, due - clock.millis()));
-                        java.util.concurrent.locks.LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(wait));
+                        LockSupport.parkNanos(this, TimeUnit.MILLISECONDS.toNanos(wait));
                         if (Thread.interrupted()) {
                             throw new InterruptedException();
                         }

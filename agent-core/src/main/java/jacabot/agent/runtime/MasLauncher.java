@@ -1,5 +1,6 @@
 package jacabot.agent.runtime;
 
+import jacabot.agent.parser.SyntaxError;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
@@ -7,6 +8,9 @@ import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
 import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.SourceInfo;
 import jacabot.agent.syntax.Term;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -134,7 +138,7 @@ public final class MasLauncher {
             return p;
         }
         var bs = new ArrayList<Object>();
-        var gs = new ArrayList<jacabot.agent.syntax.Literal>();
+        var gs = new ArrayList<Literal>();
         if (beliefs != null && !beliefs.isBlank()) {
             for (Term t : termsOf(parser, beliefs)) {
                 bs.add(t);
@@ -143,7 +147,7 @@ public final class MasLauncher {
         bs.addAll(p.beliefs());
         if (goals != null && !goals.isBlank()) {
             for (Term t : termsOf(parser, goals)) {
-                gs.add((jacabot.agent.syntax.Literal) t);
+                gs.add((Literal) t);
             }
         }
         gs.addAll(p.goals());
@@ -158,11 +162,11 @@ public final class MasLauncher {
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {
         Term list = parser.parseTerm("[" + text + "]");
         var out = new ArrayList<Term>();
-        if (list instanceof jacabot.agent.syntax.ListTerm l) {
+        if (list instanceof ListTerm l) {
             for (Term t : l.elements()) {
-                if (!(t instanceof jacabot.agent.syntax.Literal)) {
-                    throw new AslSyntaxException(List.of(new jacabot.agent.parser.SyntaxError(
-                            jacabot.agent.syntax.SourceInfo.NONE, "'" + t + "' is not a literal in the option '" + text + "'")));
+                if (!(t instanceof Literal)) {
+                    throw new AslSyntaxException(List.of(new SyntaxError(
+                            SourceInfo.NONE, "'" + t + "' is not a literal in the option '" + text + "'")));
                 }
                 out.add(t);
             }

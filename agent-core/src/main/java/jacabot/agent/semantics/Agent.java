@@ -5,6 +5,7 @@ import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
@@ -134,7 +135,7 @@ public final class Agent {
         if (label.getAnnot("url") != null) {
             return p;
         }
-        return p.withLabel(label.addAnnot(Literal.of("url", new jacabot.agent.syntax.StringTerm(p.source().jasonFile()))));
+        return p.withLabel(label.addAnnot(Literal.of("url", new StringTerm(p.source().jasonFile()))));
     }
 
     // ---- the reasoning cycle ------------------------------------------------------------------

@@ -1,6 +1,9 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
+import java.util.Collection;
 import java.util.List;
 
 /**
@@ -74,12 +77,12 @@ public interface AgentArch {
      * Creates an agent running {@code program} while the system runs (Jason's {@code .create_agent}).
      * {@return the name given, or null when this infrastructure cannot}
      */
-    default String createAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+    default String createAgent(String name, AgentProgram program, AslParser parser) {
         return null;
     }
 
     /** As {@link #createAgent}, for a copy of a running agent: its beliefs produce no events (Jason's {@code .clone}). */
-    default String cloneAgent(String name, jacabot.agent.syntax.AgentProgram program, jacabot.agent.parser.AslParser parser) {
+    default String cloneAgent(String name, AgentProgram program, AslParser parser) {
         return null;
     }
 
@@ -100,7 +103,7 @@ public interface AgentArch {
     }
 
     /** {@return the providers of a service, or null when there is no DF} */
-    default java.util.Collection<String> dfSearch(String service) {
+    default Collection<String> dfSearch(String service) {
         return null;
     }
 

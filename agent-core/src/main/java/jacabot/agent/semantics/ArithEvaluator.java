@@ -1,20 +1,27 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 
 /** Jason's arithmetic functions: {@code math.*}, {@code .count} and {@code .length}. */
 final class ArithEvaluator implements Unifier.Evaluator {
     private final Agent agent;
 
     /** Functions defined by rules ({@code register_function}), by {@code name/arity}. */
-    private final java.util.Map<String, jacabot.agent.syntax.AgentProgram.UserFunction> userFunctions =
-            new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, AgentProgram.UserFunction> userFunctions =
+            new ConcurrentHashMap<>();
 
     /** system.time minus the agent's clock, fixed when system.time is first asked for. */
     private volatile long epochOffset = Long.MIN_VALUE;
@@ -29,13 +36,13 @@ final class ArithEvaluator implements Unifier.Evaluator {
         return u;
     }
 
-    void register(jacabot.agent.syntax.AgentProgram.UserFunction f) {
+    void register(AgentProgram.UserFunction f) {
         userFunctions.put(f.name() + "/" + f.arity(), f);
     }
 
     /** A rule-defined function: the last argument of the first solution of {@code p(Args..., R)}. */
-    private Term userFunction(jacabot.agent.syntax.AgentProgram.UserFunction f, List<Term> args, Unifier u) {
-        var all = new java.util.ArrayList<Term>();
+    private Term userFunction(AgentProgram.UserFunction f, List<Term> args, Unifier u) {
+        var all = new ArrayList<Term>();
         for (Term a : args) {
             Term v = u.apply(a);
             if (!v.isGround()) {
@@ -43,10 +50,10 @@ final class ArithEvaluator implements Unifier.Evaluator {
             }
             all.add(v);
         }
-        var result = new jacabot.agent.syntax.Var("FunctionResult__");
+        var result = new Var("FunctionResult__");
         all.add(result);
         // a proof of its own: the caller may be inside a proof whose bindings must stay as they are
-        Iterator<Unifier> it = agent.solver().solve(jacabot.agent.syntax.Literal.of(f.predicate(), all), newUnifier());
+        Iterator<Unifier> it = agent.solver().solve(Literal.of(f.predicate(), all), newUnifier());
         if (!it.hasNext()) {
             return null;
         }
@@ -161,7 +168,7 @@ final class ArithEvaluator implements Unifier.Evaluator {
                     return null;
                 }
                 double[] s = x.clone();
-                java.util.Arrays.sort(s);
+                Arrays.sort(s);
                 return new NumberTerm(s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2);
             }
             case "math.std_dev": {

@@ -1,14 +1,18 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Rule;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 
 /**
@@ -52,14 +56,14 @@ public final class BeliefBase {
         }
 
         /** The rule's distinct variables, head first, in order of first occurrence (computed once). */
-        private jacabot.agent.syntax.Var[] ruleVars;
+        private Var[] ruleVars;
 
-        jacabot.agent.syntax.Var[] ruleVars() {
+        Var[] ruleVars() {
             if (ruleVars == null) {
-                var vars = new java.util.LinkedHashSet<jacabot.agent.syntax.Var>();
+                var vars = new LinkedHashSet<Var>();
                 rule.head().collectVars(vars::add);
                 rule.body().collectVars(vars::add);
-                ruleVars = vars.toArray(new jacabot.agent.syntax.Var[0]);
+                ruleVars = vars.toArray(new Var[0]);
             }
             return ruleVars;
         }
@@ -205,7 +209,7 @@ public final class BeliefBase {
      * The namespaces the belief base has had, in order of arrival: the default one, and
      * {@code kqml}, which every Jason agent has for the rules of its message plans.
      */
-    private final java.util.LinkedHashSet<Term> knownNs = new java.util.LinkedHashSet<>(
+    private final LinkedHashSet<Term> knownNs = new LinkedHashSet<>(
             List.of(Literal.DEFAULT_NS, Literal.atom("kqml")));
     /** The last group emptied, reused for the next new predicate (a belief added and removed in a loop). */
     private Group spare;
@@ -309,10 +313,10 @@ public final class BeliefBase {
         if (arg instanceof Literal a) {
             return a.isAtom() ? a : null;
         }
-        if (arg instanceof jacabot.agent.syntax.NumberTerm n) {
+        if (arg instanceof NumberTerm n) {
             return probe == null ? new NumberKey(n.value()) : probe.set(n.value());
         }
-        return arg instanceof jacabot.agent.syntax.StringTerm ? arg : null;
+        return arg instanceof StringTerm ? arg : null;
     }
 
     /** The number key of lookups (one mutable probe, as {@link #probe}). */
@@ -561,7 +565,7 @@ public final class BeliefBase {
         int mask = table - 1;
         var out = new ArrayList<Term>(knownNs);
         // a stable sort: namespaces in one bin stay in order of arrival
-        out.sort(java.util.Comparator.comparingInt(n -> jasonHash(n) & mask));
+        out.sort(Comparator.comparingInt(n -> jasonHash(n) & mask));
         return out;
     }
 

@@ -1,14 +1,17 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
 import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
 
 /** ExecInt: runs the current step of the selected intention, one handler per kind of formula. */
@@ -36,9 +39,9 @@ final class BodyExecutor {
         BodyStep step = im.currentStep();
         Term term = step.term();
         BodyStep.Kind kind = step.kind();
-        if (term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar && kind == BodyStep.Kind.ACTION) {
+        if (term instanceof Var || term instanceof AnnotatedVar && kind == BodyStep.Kind.ACTION) {
             term = im.unifier().apply(term);
-            if (term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar) {
+            if (term instanceof Var || term instanceof AnnotatedVar) {
                 rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_without_value",
                         step.source() + ": Variable '" + step.term() + "' must be ground."));
                 return;
@@ -159,7 +162,7 @@ final class BodyExecutor {
             rc.removeActionReQueue(i);
             return;
         }
-        if (term instanceof Literal || term instanceof Var || term instanceof jacabot.agent.syntax.AnnotatedVar) {
+        if (term instanceof Literal || term instanceof Var || term instanceof AnnotatedVar) {
             Term applied = im.unifier().apply(term);
             if (applied instanceof Literal) {
                 Literal body = prepareForEvent(term, im, im);
@@ -180,9 +183,9 @@ final class BodyExecutor {
         if (bound instanceof Literal r && r.functor().equals(Literal.RULE_TERM) && r.arity() == 2 && r.args().get(0) instanceof Literal head) {
             // +{ head :- body } adds a rule (renamed apart: its variables are its own)
             // (+R[source(A)] with R a rule: the annotations go to its head, source(self) when it has none)
-            var rule = (Literal) jacabot.agent.semantics.Renamer.renameApart(r, ag);
+            var rule = (Literal) Renamer.renameApart(r, ag);
             Literal ruleHead = ((Literal) rule.args().get(0)).addAnnots(rule.annots());
-            ag.beliefBase().addRule(new jacabot.agent.syntax.Rule(ruleHead.hasSource() ? ruleHead : ruleHead.addAnnot(Literal.SOURCE_SELF),
+            ag.beliefBase().addRule(new Rule(ruleHead.hasSource() ? ruleHead : ruleHead.addAnnot(Literal.SOURCE_SELF),
                     rule.args().get(1)), kind == BodyStep.Kind.ADD_BEL_END);
             rc.removeActionReQueue(i);
             return;
@@ -333,7 +336,7 @@ final class BodyExecutor {
                 caller.clearRenamedVars();
             }
         } else {
-            var renamed = new java.util.LinkedHashMap<Var, Var>();
+            var renamed = new LinkedHashMap<Var, Var>();
             body = (Literal) Renamer.renameApart(applied, ag::freshVar, renamed);
             if (caller != null) {
                 caller.setRenamedVars(renamed);

@@ -2,14 +2,19 @@ package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.BiPredicate;
+import java.util.function.Predicate;
 
 /**
  * The agent's circumstance, with Jason's formal components: events {@code E}, running intentions
@@ -44,7 +49,7 @@ public final class Circumstance {
      */
     private volatile CircumstanceListener[] listeners = new CircumstanceListener[0];
     private GoalStates goalStates;
-    private java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant;
+    private Predicate<Trigger> relevant;
 
     private Event selectedEvent;
     private Intention selectedIntention;
@@ -57,33 +62,33 @@ public final class Circumstance {
      * The agent's own: its goal states hear of every event (not a listener in Jason's sense), and
      * its plan library tells whether a plan is relevant for an event.
      */
-    void own(GoalStates goalStates, java.util.function.Predicate<jacabot.agent.syntax.Trigger> relevant,
-            java.util.function.BiPredicate<jacabot.agent.syntax.Trigger.Op, Literal> relevantBelief) {
+    void own(GoalStates goalStates, Predicate<Trigger> relevant,
+            BiPredicate<Trigger.Op, Literal> relevantBelief) {
         this.goalStates = goalStates;
         this.relevant = relevant;
         this.relevantBelief = relevantBelief;
     }
 
     /** {@link #relevant} for a belief event's parts. */
-    private java.util.function.BiPredicate<jacabot.agent.syntax.Trigger.Op, Literal> relevantBelief;
+    private BiPredicate<Trigger.Op, Literal> relevantBelief;
 
     /**
      * Adds the external event {@code +b} or {@code -b} (op and b), as {@link #addEvent}; the event
      * and its trigger are made only when the event is kept (a told receiver's beliefs that no plan
      * is for are not).
      */
-    public void addBeliefEvent(jacabot.agent.syntax.Trigger.Op op, Literal b) {
+    public void addBeliefEvent(Trigger.Op op, Literal b) {
         if (relevantBelief != null && listeners.length == 0 && !relevantBelief.test(op, b)) {
             return;
         }
-        addEvent(new Event(new jacabot.agent.syntax.Trigger(op, jacabot.agent.syntax.Trigger.Type.BELIEF, b), null));
+        addEvent(new Event(new Trigger(op, Trigger.Type.BELIEF, b), null));
     }
 
     public void addEvent(Event e) {
         // as Jason's updateEvents: an external belief event no plan is relevant for is not kept,
         // unless something listens to events (a .wait, an inspector); a message told or a -+b
         // then costs no event to select and discard
-        if (e.intention() == null && e.trigger().type() == jacabot.agent.syntax.Trigger.Type.BELIEF
+        if (e.intention() == null && e.trigger().type() == Trigger.Type.BELIEF
                 && relevant != null && listeners.length == 0 && !relevant.test(e.trigger())) {
             return;
         }
@@ -103,7 +108,7 @@ public final class Circumstance {
     /** Adds a meta-event ahead of the other events, after the meta-events already there (Jason's rule). */
     void insertMetaEvent(Event e) {
         var rest = new ArrayList<Event>();
-        while (!events.isEmpty() && events.peekFirst().trigger().op() == jacabot.agent.syntax.Trigger.Op.GOAL_STATE) {
+        while (!events.isEmpty() && events.peekFirst().trigger().op() == Trigger.Op.GOAL_STATE) {
             rest.add(events.pollFirst());
         }
         rest.add(e);
@@ -339,11 +344,11 @@ public final class Circumstance {
     }
 
     public Map<String, Event> pendingEvents() {
-        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pendingEvents));
+        return Collections.unmodifiableMap(new LinkedHashMap<>(pendingEvents));
     }
 
     public Map<String, Pending> pendingIntentions() {
-        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pending));
+        return Collections.unmodifiableMap(new LinkedHashMap<>(pending));
     }
 
     /** Removes every pending entry of an intention. {@return whether there was one} */
@@ -422,7 +427,7 @@ public final class Circumstance {
     // ---- listeners ----------------------------------------------------------------------------------
 
     public void addListener(CircumstanceListener l) {
-        listeners = java.util.Arrays.copyOf(listeners, listeners.length + 1);
+        listeners = Arrays.copyOf(listeners, listeners.length + 1);
         listeners[listeners.length - 1] = l;
     }
 

@@ -1,13 +1,15 @@
 package jacabot.agent.semantics;
 
+import java.time.LocalTime;
+
 /** Time as the agents see it ({@code .wait}, {@code .time}): the wall clock or simulated time. */
 public interface Clock {
     /** {@return milliseconds since an arbitrary origin; never decreases} */
     long millis();
 
     /** {@return the time of day for {@code .time}: simulated time starts at midnight} */
-    default java.time.LocalTime timeOfDay() {
-        return java.time.LocalTime.ofNanoOfDay((millis() % 86_400_000L) * 1_000_000L);
+    default LocalTime timeOfDay() {
+        return LocalTime.ofNanoOfDay((millis() % 86_400_000L) * 1_000_000L);
     }
 
     /** The wall clock (milliseconds since the clock was made; {@code .time} gives the real time). */
@@ -20,8 +22,8 @@ public interface Clock {
             }
 
             @Override
-            public java.time.LocalTime timeOfDay() {
-                return java.time.LocalTime.now();
+            public LocalTime timeOfDay() {
+                return LocalTime.now();
             }
         };
     }

@@ -96,7 +96,13 @@ public final class GoalDropper {
                             ? e.trigger().literal() : i.peek().unifier().apply(e.trigger().literal()))) {
                 c.removeEvent(e);
                 notifyEvent(e.trigger());
-                if (i != null && !i.isFinished()) {
+                // as Jason: a goal not yet handled becomes its failure event (no error
+                // annotation), in the same intention, when a -!g plan is relevant
+                Trigger failTrigger = mode == Mode.FAIL
+                        ? new Trigger(Trigger.Op.DEL, Trigger.Type.ACHIEVE, e.trigger().literal()) : null;
+                if (failTrigger != null && (i == null || !i.isFinished()) && ag.planLibrary().hasCandidate(failTrigger)) {
+                    c.addEvent(new Event(failTrigger, i));
+                } else if (i != null && !i.isFinished()) {
                     if (mode == Mode.SUCCEED) {
                         ag.cycle().removeActionReQueue(i);
                     } else {

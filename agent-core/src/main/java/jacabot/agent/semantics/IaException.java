@@ -1,5 +1,9 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.List;
+
 /**
  * An internal action could not run (wrong arguments, unbound variable, ...). It fails the
  * intention with {@code error(errorId)} and {@code error_msg(message)}, as Jason does.
@@ -7,17 +11,17 @@ package jacabot.agent.semantics;
 public class IaException extends Exception {
     private static final long serialVersionUID = 1L;
     private final String errorId;
-    private final transient java.util.List<jacabot.agent.syntax.Term> annots;
+    private final transient List<Term> annots;
 
     public IaException(String errorId, String message) {
-        this(errorId, message, java.util.List.of());
+        this(errorId, message, List.of());
     }
 
     /** A failure with the given annotations for the {@code -!g} event (as {@code .fail(a1, ...)}). */
-    public IaException(String errorId, String message, java.util.List<jacabot.agent.syntax.Term> annots) {
+    public IaException(String errorId, String message, List<Term> annots) {
         super(message);
         this.errorId = errorId;
-        this.annots = java.util.List.copyOf(annots);
+        this.annots = List.copyOf(annots);
     }
 
     public String errorId() {
@@ -25,9 +29,9 @@ public class IaException extends Exception {
     }
 
     /** {@return the failure annotations: error and error_msg unless the action gave its own} */
-    public java.util.List<jacabot.agent.syntax.Term> failureAnnots() {
+    public List<Term> failureAnnots() {
         if (!annots.isEmpty()) {
-            return new java.util.ArrayList<>(annots);
+            return new ArrayList<>(annots);
         }
         return ReasoningCycle.errorAnnots(errorId, getMessage() == null ? "" : getMessage());
     }

@@ -4,6 +4,7 @@ import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -123,7 +124,7 @@ public final class IntendedMeans {
 
     /** {@return the steps still to run} */
     public List<BodyStep> remainingSteps() {
-        var out = new java.util.ArrayList<BodyStep>();
+        var out = new ArrayList<BodyStep>();
         for (StepList s = steps; s != null; s = s.next) {
             out.add(s.head);
         }

@@ -3,6 +3,7 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.function.Predicate;
 
@@ -24,7 +25,7 @@ public final class Intention implements Iterable<IntendedMeans> {
     /** {@return a copy of this intention's stack under another id (Jason's fork)} */
     Intention copyAs(int newId) {
         Intention c = new Intention(newId);
-        var ims = new java.util.ArrayList<IntendedMeans>(stack);
+        var ims = new ArrayList<IntendedMeans>(stack);
         for (int k = ims.size() - 1; k >= 0; k--) {
             c.push(ims.get(k).copy());
         }

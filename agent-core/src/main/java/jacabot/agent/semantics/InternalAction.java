@@ -1,6 +1,7 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Term;
+import java.util.Iterator;
 
 /**
  * An internal action such as {@code .print} or {@code .member}. {@link #execute} returns a
@@ -14,7 +15,7 @@ public interface InternalAction {
      * just cut back to the bindings the action was given: a {@code for} over {@code .range} then
      * makes no unifier per turn.
      */
-    interface Solutions extends java.util.Iterator<Unifier> {
+    interface Solutions extends Iterator<Unifier> {
         /** {@return whether there is another solution; its bindings are then added to {@code w}} */
         boolean nextInto(Unifier w);
     }

@@ -1,9 +1,14 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.PlanTerm;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.syntax.Trigger;
 import java.util.ArrayList;
@@ -39,13 +44,13 @@ final class MessageHandler {
     }
 
     private static List<Plan> parsePlans(String... texts) {
-        var parser = new jacabot.agent.parser.AslParser();
+        var parser = new AslParser();
         var out = new ArrayList<Plan>();
         for (String t : texts) {
             try {
                 Plan p = parser.parsePlan(t);
                 out.add(p.withLabel(p.label().addAnnot(Literal.of("source", Literal.atom("kqmlPlans")))));
-            } catch (jacabot.agent.parser.AslSyntaxException e) {
+            } catch (AslSyntaxException e) {
                 throw new IllegalStateException(e);
             }
         }
@@ -83,8 +88,8 @@ final class MessageHandler {
     }
 
     private static final Trigger KQML_RECEIVED = new Trigger(Trigger.Op.ADD, Trigger.Type.ACHIEVE,
-            Literal.of("kqml_received", new jacabot.agent.syntax.Var("S"), new jacabot.agent.syntax.Var("P"),
-                    new jacabot.agent.syntax.Var("C"), new jacabot.agent.syntax.Var("M")));
+            Literal.of("kqml_received", new Var("S"), new Var("P"),
+                    new Var("C"), new Var("M")));
 
     /** The plan library's version when {@link #ownKqmlPlans} was found (each message asks). */
     private int kqmlPlansChecked = -1;
@@ -165,8 +170,8 @@ final class MessageHandler {
                 // plans (as text or plan terms) told by the sender, with it as their source
                 for (Term t : content instanceof ListTerm list ? list.elements() : List.of(content)) {
                     try {
-                        jacabot.agent.syntax.Plan p = t instanceof jacabot.agent.syntax.StringTerm st ? ag.parser().parsePlan(st.value())
-                                : t instanceof jacabot.agent.syntax.PlanTerm pt ? pt.toPlan() : null;
+                        Plan p = t instanceof StringTerm st ? ag.parser().parsePlan(st.value())
+                                : t instanceof PlanTerm pt ? pt.toPlan() : null;
                         if (p != null) {
                             // the plan's own sources go (Jason's .remove_source_annot): the sender is its source
                             if (p.label() != null) {
@@ -174,7 +179,7 @@ final class MessageHandler {
                             }
                             ag.planLibrary().add(p, source.args().get(0), false);
                         }
-                    } catch (jacabot.agent.parser.AslSyntaxException | IllegalArgumentException e) {
+                    } catch (AslSyntaxException | IllegalArgumentException e) {
                         ag.warn("Error in the plan told by " + replyTo + ": " + e.getMessage());
                     }
                 }
@@ -291,14 +296,14 @@ final class MessageHandler {
     /** Answers askHow with the relevant plans, as plan terms without their source (Jason's {@code .remove_source_annot}). */
     private void answerHow(Message m, Term content) {
         Trigger te = null;
-        if (content instanceof jacabot.agent.syntax.TriggerTerm tt) {
+        if (content instanceof TriggerTerm tt) {
             te = tt.trigger();
-        } else if (content instanceof jacabot.agent.syntax.StringTerm st) {
+        } else if (content instanceof StringTerm st) {
             try {
-                if (ag.parser().parseTerm("{" + st.value() + "}") instanceof jacabot.agent.syntax.TriggerTerm tt) {
+                if (ag.parser().parseTerm("{" + st.value() + "}") instanceof TriggerTerm tt) {
                     te = tt.trigger();
                 }
-            } catch (jacabot.agent.parser.AslSyntaxException e) {
+            } catch (AslSyntaxException e) {
                 te = null;
             }
         }
@@ -314,7 +319,7 @@ final class MessageHandler {
         }
         for (Plan p : ag.planLibrary().candidates(te)) {
             if (!ag.planLibrary().isKqmlPlan(p) && ag.newUnifier().unifies(p.trigger().literal(), asked)) {
-                plans.add(Renamer.renameApart(new jacabot.agent.syntax.PlanTerm(p.withLabel(withoutSources(p.label()))), ag));
+                plans.add(Renamer.renameApart(new PlanTerm(p.withLabel(withoutSources(p.label()))), ag));
             }
         }
         ag.arch().sendMessage(new Message(ag.nextMessageId(), ag.name(), m.sender(), "tellHow", ListTerm.of(plans), m.id()));
@@ -334,8 +339,8 @@ final class MessageHandler {
             var items = new ArrayList<Term>();
             for (Term t : list.elements()) {
                 items.add(t instanceof Literal l ? nested(l, from)
-                        : t instanceof jacabot.agent.syntax.PlanTerm pt && pt.label() instanceof Literal pl
-                                ? new jacabot.agent.syntax.PlanTerm(pl.addAnnot(from), pt.trigger(), pt.context(), pt.body(), pt.source())
+                        : t instanceof PlanTerm pt && pt.label() instanceof Literal pl
+                                ? new PlanTerm(pl.addAnnot(from), pt.trigger(), pt.context(), pt.body(), pt.source())
                                 : t);
             }
             answer = ListTerm.of(items);

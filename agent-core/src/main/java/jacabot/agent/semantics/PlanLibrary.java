@@ -6,7 +6,10 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /** The plan library: plans in file order, each with a unique label ({@code p__N} when unnamed). */
 public final class PlanLibrary {
@@ -14,11 +17,11 @@ public final class PlanLibrary {
     /** Jason's kqmlPlans: how messages are handled by plans, after the agent's own plans, never listed. */
     private List<Plan> kqmlPlans = List.of();
     /** Numbers the unnamed plans; a MAS shares one among its agents, as Jason's labels are numbered JVM-wide. */
-    private java.util.concurrent.atomic.AtomicInteger lastLabel = new java.util.concurrent.atomic.AtomicInteger();
+    private AtomicInteger lastLabel = new AtomicInteger();
     private boolean goalStatePlans;
     private boolean jagPlans;
     /** Candidates by trigger kind and predicate, rebuilt lazily after the library changes. */
-    private final java.util.HashMap<CandidateKey, List<Plan>> candidateCache = new java.util.HashMap<>();
+    private final HashMap<CandidateKey, List<Plan>> candidateCache = new HashMap<>();
     private int version;
 
     /** A trigger's kind and predicate (equality written out: it is looked up for every event). */
@@ -43,13 +46,13 @@ public final class PlanLibrary {
         /** {@return whether this is the key of a trigger with this kind and literal} */
         boolean matches(Trigger.Op o, Trigger.Type t, Literal l) {
             return o == op && t == type && l.arity() == arity && l.negated() == negated && l.functor().equals(functor)
-                    && java.util.Objects.equals(l.ns(), ns);
+                    && Objects.equals(l.ns(), ns);
         }
 
         @Override
         public boolean equals(Object o) {
             return o instanceof CandidateKey k && k.op == op && k.type == type && k.arity == arity
-                    && k.negated == negated && k.functor.equals(functor) && java.util.Objects.equals(k.ns, ns);
+                    && k.negated == negated && k.functor.equals(functor) && Objects.equals(k.ns, ns);
         }
 
         @Override
@@ -62,7 +65,7 @@ public final class PlanLibrary {
      * Numbers this library's unnamed plans ({@code p__N}) from a counter shared with other
      * libraries: in Jason the plans of the second agent loaded go on from the first's.
      */
-    public void shareLabelCounter(java.util.concurrent.atomic.AtomicInteger counter) {
+    public void shareLabelCounter(AtomicInteger counter) {
         lastLabel = counter;
     }
 
@@ -94,7 +97,7 @@ public final class PlanLibrary {
      * already has the same plan (trigger, context and body; labels aside) it only gains the
      * source, as in Jason. {@return the plan in the library}
      */
-    public Plan add(Plan p, jacabot.agent.syntax.Term source, boolean atBeginning) {
+    public Plan add(Plan p, Term source, boolean atBeginning) {
         Literal s = Literal.of("source", source);
         for (int i = 0; i < plans.size(); i++) {
             Plan known = plans.get(i);
@@ -143,7 +146,7 @@ public final class PlanLibrary {
      * Takes {@code source} away from the sources of the plan labelled {@code label}; the plan goes
      * when none is left. {@return whether there is such a plan}
      */
-    public boolean removeSource(String label, jacabot.agent.syntax.Term source) {
+    public boolean removeSource(String label, Term source) {
         Plan p = get(label);
         if (p == null) {
             return false;
@@ -274,7 +277,7 @@ public final class PlanLibrary {
             return true;
         }
         // a variable namespace (+N::b, as a trigger or asked) stands for every namespace
-        return pl.sameName(el) && (pl.ns() instanceof Var || el.ns() instanceof Var || java.util.Objects.equals(pl.ns(), el.ns()));
+        return pl.sameName(el) && (pl.ns() instanceof Var || el.ns() instanceof Var || Objects.equals(pl.ns(), el.ns()));
     }
 
     /** {@return whether a plan for goal-state meta-events ({@code ^!g}) was ever added} */

@@ -11,6 +11,7 @@ import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
@@ -163,7 +164,7 @@ final class Proof {
             if (w.boundSince(v, base)) {
                 value = w.deref(b);
                 if (n == pairs.length) {
-                    pairs = java.util.Arrays.copyOf(pairs, 2 * n + 2);
+                    pairs = Arrays.copyOf(pairs, 2 * n + 2);
                     answerPairs = pairs;
                 }
                 pairs[n++] = v;
@@ -227,7 +228,7 @@ final class Proof {
 
     private void push(Choice c) {
         if (nChoices == choices.length) {
-            choices = java.util.Arrays.copyOf(choices, Math.max(8, 2 * nChoices));
+            choices = Arrays.copyOf(choices, Math.max(8, 2 * nChoices));
         }
         choices[nChoices++] = c;
     }

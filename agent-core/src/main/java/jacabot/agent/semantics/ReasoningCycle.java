@@ -3,15 +3,18 @@ package jacabot.agent.semantics;
 import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 
 /**
  * Jason's reasoning cycle: sense (ProcMsg), deliberate (SelEv, FindOp, AddIM) and act (ProcAct,
@@ -177,8 +180,8 @@ final class ReasoningCycle {
             return false;
         }
         Term x = la.arg(0);
-        if (x instanceof jacabot.agent.syntax.NumberTerm nx) {
-            return y instanceof jacabot.agent.syntax.NumberTerm ny && nx.value() != ny.value();
+        if (x instanceof NumberTerm nx) {
+            return y instanceof NumberTerm ny && nx.value() != ny.value();
         }
         return x instanceof Literal ax && y instanceof Literal ay && ax.isAtom() && ay.isAtom() && ax.ns() == null
                 && ay.ns() == null && !ax.functor().equals(ay.functor());
@@ -255,7 +258,7 @@ final class ReasoningCycle {
 
     private static boolean samePredicate(Trigger a, Trigger b) {
         return a.literal() instanceof Literal la && b.literal() instanceof Literal lb
-                && la.functor().equals(lb.functor()) && la.arity() == lb.arity() && java.util.Objects.equals(la.ns(), lb.ns());
+                && la.functor().equals(lb.functor()) && la.arity() == lb.arity() && Objects.equals(la.ns(), lb.ns());
     }
 
     // ---- act ----------------------------------------------------------------------------------
@@ -537,7 +540,7 @@ final class ReasoningCycle {
     }
 
     private Term anonymous(Term t) {
-        return Renamer.renameApart(t, x -> ag.freshVar(ANONYMOUS), new java.util.HashMap<>());
+        return Renamer.renameApart(t, x -> ag.freshVar(ANONYMOUS), new HashMap<>());
     }
 
     private static final Var ANONYMOUS = new Var("_");
@@ -550,7 +553,7 @@ final class ReasoningCycle {
         var all = new ArrayList<Term>(annots);
         if (step != null && step.source() != null) {
             all.add(Literal.of("code_src", new StringTerm(step.source().jasonFile())));
-            all.add(Literal.of("code_line", new jacabot.agent.syntax.NumberTerm(step.source().line())));
+            all.add(Literal.of("code_line", new NumberTerm(step.source().line())));
         }
         if (lit.getAnnot("code") == null && annots.stream().noneMatch(a -> a instanceof Literal l && l.functor().equals("code"))) {
             // the formula without its operator (?, +, !...), free variables made anonymous, as Jason

@@ -1,6 +1,9 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.ArithExpr;
 import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.LogExpr;
 import jacabot.agent.syntax.PlanTerm;
 import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Literal;
@@ -11,7 +14,9 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TermMapper;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.NoSuchElementException;
 
@@ -54,7 +59,7 @@ public final class Solver {
             return false;
         }
         Term first = context;
-        while (first instanceof jacabot.agent.syntax.LogExpr e && e.op() == jacabot.agent.syntax.LogExpr.Op.AND) {
+        while (first instanceof LogExpr e && e.op() == LogExpr.Op.AND) {
             first = e.left();
         }
         if (!(first instanceof RelExpr r) || r.op() == RelExpr.Op.UNIFY || r.op() == RelExpr.Op.UNIV
@@ -73,7 +78,7 @@ public final class Solver {
         if (t instanceof NumberTerm || t instanceof StringTerm) {
             return true;
         }
-        if (t instanceof jacabot.agent.syntax.ArithExpr e) {
+        if (t instanceof ArithExpr e) {
             return withoutCalls(e.left(), u) && (e.right() == null || withoutCalls(e.right(), u));
         }
         if (t instanceof Literal l) {
@@ -154,7 +159,7 @@ public final class Solver {
     List<Var> varsOf(Term formula) {
         FormulaVars last = lastVars;
         if (last.formula() != formula) {
-            var vars = new java.util.LinkedHashSet<Var>();
+            var vars = new LinkedHashSet<Var>();
             formula.collectVars(vars::add);
             last = new FormulaVars(formula, List.copyOf(vars));
             lastVars = last;
@@ -174,7 +179,7 @@ public final class Solver {
      * {@code _[source(a)]}: for every belief with these annotations, the bindings its unification
      * makes in {@code w} (which is left as it was).
      */
-    List<Object[]> annotated(jacabot.agent.syntax.AnnotatedVar av, Unifier w) {
+    List<Object[]> annotated(AnnotatedVar av, Unifier w) {
         var out = new ArrayList<Object[]>();
         int mark = w.size();
         for (BeliefBase.Entry e : agent.beliefBase().all()) {
@@ -252,7 +257,7 @@ public final class Solver {
      * without renaming it, so the renaming takes no number of the counter of fresh variables.
      */
     Literal renameApart(Literal fact) {
-        return (Literal) Renamer.renameApart(fact, agent::internalVar, new java.util.HashMap<>());
+        return (Literal) Renamer.renameApart(fact, agent::internalVar, new HashMap<>());
     }
 
     // ---- internal actions in formulas -----------------------------------------------------------

@@ -15,6 +15,7 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TriggerTerm;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 
@@ -116,7 +117,7 @@ public final class Unifier {
     }
 
     public Map<Var, Term> bindings() {
-        return java.util.Collections.unmodifiableMap(bindings.asMap());
+        return Collections.unmodifiableMap(bindings.asMap());
     }
 
     /** {@return the term at the end of the variable's chain of bindings (itself when unbound)} */

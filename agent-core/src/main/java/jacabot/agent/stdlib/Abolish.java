@@ -4,6 +4,7 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.BeliefBase;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
@@ -17,7 +18,7 @@ final class Abolish extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         Term b = args[0];
-        var entries = b instanceof jacabot.agent.syntax.AnnotatedVar ? ag.beliefBase().all() : ag.beliefBase().candidates(literal(b));
+        var entries = b instanceof AnnotatedVar ? ag.beliefBase().all() : ag.beliefBase().candidates(literal(b));
         for (BeliefBase.Entry e : entries) {
             if (e.rule() == null && un.copy().unifies(b, e.literal())) {
                 if (ag.beliefBase().removeEntry(e.literal())) {

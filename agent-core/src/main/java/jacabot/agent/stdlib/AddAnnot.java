@@ -6,6 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
 
 /** {@code .add_annot(L, A, R)}: R is L (or each literal of list L) with annotation A. */
 final class AddAnnot extends DefaultInternalAction {
@@ -16,7 +17,7 @@ final class AddAnnot extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         if (args[0] instanceof ListTerm l) {
-            var out = new java.util.ArrayList<Term>();
+            var out = new ArrayList<Term>();
             for (Term t : l.elements()) {
                 out.add(t instanceof Literal lit ? lit.addAnnot(args[1]) : t);
             }

@@ -1,5 +1,6 @@
 package jacabot.agent.stdlib;
 
+import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
@@ -32,7 +33,7 @@ final class AddPlan extends DefaultInternalAction {
             } else if (t instanceof StringTerm s) {
                 try {
                     p = ag.parser().parsePlan(s.value());
-                } catch (jacabot.agent.parser.AslSyntaxException e) {
+                } catch (AslSyntaxException e) {
                     throw IaException.wrongArguments(name(), e.getMessage());
                 }
             } else {

@@ -5,6 +5,7 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
 
 /** {@code .all_names(L)}: the names of every agent. */
 final class AllNames extends DefaultInternalAction {
@@ -14,7 +15,7 @@ final class AllNames extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var names = new java.util.ArrayList<Term>();
+        var names = new ArrayList<Term>();
         for (String n : ag.arch().agentNames()) {
             names.add(Literal.atom(n));
         }

@@ -6,6 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
 
 /** {@code .concat(A, B, ..., R)}: concatenates lists, or strings (other terms as text). */
 final class Concat extends DefaultInternalAction {
@@ -21,7 +22,7 @@ final class Concat extends DefaultInternalAction {
             lists &= args[i] instanceof ListTerm;
         }
         if (lists) {
-            var all = new java.util.ArrayList<Term>();
+            var all = new ArrayList<Term>();
             for (int i = 0; i < n; i++) {
                 all.addAll(((ListTerm) args[i]).elements());
             }

@@ -6,6 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
 import java.util.List;
 
 /** {@code .delete(X, L, R)}: R is L without the elements unifying X (or without index X); also on strings. */
@@ -21,7 +22,7 @@ final class Delete extends DefaultInternalAction {
             return un.unifies(args[2], new StringTerm(s.value().replace(what, "")));
         }
         List<Term> items = list(args[1]).elements();
-        var out = new java.util.ArrayList<Term>();
+        var out = new ArrayList<Term>();
         if (args[0] instanceof NumberTerm n) {
             int idx = (int) n.value();
             for (int i = 0; i < items.size(); i++) {

@@ -7,6 +7,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
+import java.util.ArrayList;
 
 /** {@code .desire(G)}: succeeds for each pending {@code +!G} event or intention pursuing G. */
 final class Desire extends DefaultInternalAction {
@@ -17,7 +18,7 @@ final class Desire extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         Term g = args[0];
-        var out = new java.util.ArrayList<Unifier>();
+        var out = new ArrayList<Unifier>();
         for (Event e : ag.circumstance().eventList()) {
             Trigger t = e.trigger();
             Unifier c = un.copy();

@@ -3,7 +3,10 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.Locale;
 
 /**
  * The directory facilitator's actions, as Jason's: {@code .df_register(S)},
@@ -16,7 +19,7 @@ final class DfAction extends DefaultInternalAction {
     private final Kind kind;
 
     DfAction(Kind kind) {
-        super(".df_" + kind.name().toLowerCase(java.util.Locale.ROOT), kind == Kind.SEARCH ? 2 : 1, kind == Kind.SEARCH ? 3 : 2);
+        super(".df_" + kind.name().toLowerCase(Locale.ROOT), kind == Kind.SEARCH ? 2 : 1, kind == Kind.SEARCH ? 3 : 2);
         this.kind = kind;
     }
 
@@ -39,8 +42,8 @@ final class DfAction extends DefaultInternalAction {
                 if (providers == null) {
                     throw IaException.wrongArguments(name(), "this infrastructure has no directory facilitator");
                 }
-                var names = new java.util.ArrayList<Term>();
-                providers.forEach(p -> names.add(jacabot.agent.syntax.Literal.atom(p)));
+                var names = new ArrayList<Term>();
+                providers.forEach(p -> names.add(Literal.atom(p)));
                 return un.unifies(args[args.length - 1], listOf(names));
         }
         if (!known) {

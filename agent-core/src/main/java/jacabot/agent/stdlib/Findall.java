@@ -4,6 +4,8 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.List;
 
 /** {@code .findall(T, Query, L)}: L is the list of T for every solution of Query. */
 final class Findall extends DefaultInternalAction {
@@ -17,8 +19,8 @@ final class Findall extends DefaultInternalAction {
     }
 
     /** {@return {@code template} instantiated by every solution of {@code query}, in order} */
-    static java.util.List<Term> solutions(Agent ag, Unifier un, Term template, Term query) {
-        var out = new java.util.ArrayList<Term>();
+    static List<Term> solutions(Agent ag, Unifier un, Term template, Term query) {
+        var out = new ArrayList<Term>();
         var it = ag.solver().solve(query, un);
         while (it.hasNext()) {
             out.add(it.next().apply(template));

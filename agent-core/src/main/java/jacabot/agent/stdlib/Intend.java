@@ -8,6 +8,8 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
+import java.util.ArrayList;
+import java.util.List;
 
 /** {@code .intend(G)}: succeeds for each intention pursuing G (backtracking). */
 final class Intend extends DefaultInternalAction {
@@ -17,13 +19,13 @@ final class Intend extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var out = new java.util.ArrayList<Unifier>();
+        var out = new ArrayList<Unifier>();
         addIntended(ag, args[0], un, out);
         return out.iterator();
     }
 
     /** Adds a solution for every intended means pursuing goal g. */
-    static void addIntended(Agent ag, Term g, Unifier un, java.util.List<Unifier> out) {
+    static void addIntended(Agent ag, Term g, Unifier un, List<Unifier> out) {
         for (Intention i : ag.circumstance().allIntentions()) {
             for (IntendedMeans im : i) {
                 Trigger t = im.trigger();

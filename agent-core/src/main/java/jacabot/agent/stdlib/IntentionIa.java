@@ -5,6 +5,7 @@ import jacabot.agent.semantics.Circumstance;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.IntendedMeans;
 import jacabot.agent.semantics.Intention;
+import jacabot.agent.semantics.Renamer;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.Literal;
@@ -44,7 +45,7 @@ final class IntentionIa extends DefaultInternalAction {
             if (!u.unifies(args[1], stateTerm(c, i))) {
                 continue;
             }
-            if (args.length >= 3 && !u.unifies(args[2], jacabot.agent.semantics.Renamer.renameApart(stack(i), ag))) {
+            if (args.length >= 3 && !u.unifies(args[2], Renamer.renameApart(stack(i), ag))) {
                 continue;
             }
             out.add(u);

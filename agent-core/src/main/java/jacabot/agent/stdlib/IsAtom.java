@@ -3,6 +3,7 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 
 /** {@code .atom(X)}: X is an atom. */
@@ -13,6 +14,6 @@ final class IsAtom extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.Literal l && l.isAtom();
+        return args[0] instanceof Literal l && l.isAtom();
     }
 }

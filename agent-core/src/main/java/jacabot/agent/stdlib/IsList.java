@@ -3,6 +3,7 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Term;
 
 /** {@code .list(X)}: X is a list. */
@@ -13,6 +14,6 @@ final class IsList extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.ListTerm;
+        return args[0] instanceof ListTerm;
     }
 }

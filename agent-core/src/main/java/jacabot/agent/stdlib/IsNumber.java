@@ -3,6 +3,7 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
 
 /** {@code .number(X)}: X is a number. */
@@ -13,6 +14,6 @@ final class IsNumber extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.NumberTerm;
+        return args[0] instanceof NumberTerm;
     }
 }

@@ -3,6 +3,7 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 
 /** {@code .string(X)}: X is a string. */
@@ -13,6 +14,6 @@ final class IsString extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.StringTerm;
+        return args[0] instanceof StringTerm;
     }
 }

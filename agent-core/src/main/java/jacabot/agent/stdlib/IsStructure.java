@@ -3,6 +3,8 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 
 /**
@@ -16,7 +18,7 @@ final class IsStructure extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return args[0] instanceof jacabot.agent.syntax.ListTerm
-                || args[0] instanceof jacabot.agent.syntax.Literal l && (!l.isAtom() || l.operandAtom());
+        return args[0] instanceof ListTerm
+                || args[0] instanceof Literal l && (!l.isAtom() || l.operandAtom());
     }
 }

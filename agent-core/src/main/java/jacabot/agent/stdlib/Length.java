@@ -3,9 +3,12 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.NumberTerm;
+import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.Collection;
 
 /** {@code .length(L, N)}: the length of a list, a string, or a set, queue or map. */
 final class Length extends DefaultInternalAction {
@@ -18,11 +21,11 @@ final class Length extends DefaultInternalAction {
         if (args[0] instanceof StringTerm s) {
             return un.unifies(args[1], new NumberTerm(s.value().length()));
         }
-        if (args[0] instanceof jacabot.agent.syntax.ListTerm l) {
+        if (args[0] instanceof ListTerm l) {
             return un.unifies(args[1], new NumberTerm(l.elements().size()));
         }
-        if (args[0] instanceof jacabot.agent.syntax.ObjectTerm o) { // a set, queue or map of .set/.queue/.map
-            if (o.value() instanceof java.util.Collection<?> c) {
+        if (args[0] instanceof ObjectTerm o) { // a set, queue or map of .set/.queue/.map
+            if (o.value() instanceof Collection<?> c) {
                 return un.unifies(args[1], new NumberTerm(c.size()));
             }
             if (o.value() instanceof TermCollections.TermMap m) {

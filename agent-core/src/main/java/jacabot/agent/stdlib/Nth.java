@@ -6,6 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
 import java.util.List;
 
 /** {@code .nth(I, L, X)}: X is the element at index I (from 0) of a list or string. */
@@ -31,7 +32,7 @@ final class Nth extends DefaultInternalAction {
             }
             return un.unifies(args[2], items.get(i));
         }
-        var out = new java.util.ArrayList<Unifier>();
+        var out = new ArrayList<Unifier>();
         for (int i = 0; i < items.size(); i++) {
             Unifier c = un.copy();
             if (c.unifies(args[0], new NumberTerm(i)) && c.unifies(args[2], items.get(i))) {

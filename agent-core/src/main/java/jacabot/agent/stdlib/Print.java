@@ -3,7 +3,9 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 
 /** {@code .print(a, ...)}: prints the arguments concatenated, strings without quotes. */
 final class Print extends DefaultInternalAction {
@@ -20,7 +22,7 @@ final class Print extends DefaultInternalAction {
         var sb = new StringBuilder();
         for (Term t : args) {
             sb.append(text(t));
-            if (t instanceof jacabot.agent.syntax.Var || t instanceof jacabot.agent.syntax.AnnotatedVar) {
+            if (t instanceof Var || t instanceof AnnotatedVar) {
                 sb.append("<no-value>"); // as Jason prints a variable still free
             }
         }

@@ -5,6 +5,7 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
+import java.util.IllegalFormatException;
 
 /** {@code .printf(Format, a, ...)}: Java's {@code String.format}; numbers are doubles, as in Jason. */
 final class Printf extends DefaultInternalAction {
@@ -26,7 +27,7 @@ final class Printf extends DefaultInternalAction {
         String format = text(args[0]);
         try {
             ag.print(String.format(format, values));
-        } catch (java.util.IllegalFormatException e) {
+        } catch (IllegalFormatException e) {
             throw IaException.wrongArguments(name(), e.getMessage());
         }
         return true;

@@ -6,6 +6,7 @@ import jacabot.agent.semantics.InternalAction;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
+import java.util.NoSuchElementException;
 
 /** {@code .range(X, Start, End[, Step])}: X takes each value from Start to End (backtracking). */
 final class Range extends DefaultInternalAction {
@@ -78,7 +79,7 @@ final class Range extends DefaultInternalAction {
         @Override
         public Unifier next() {
             if (!hasNext()) {
-                throw new java.util.NoSuchElementException();
+                throw new NoSuchElementException();
             }
             looked = false;
             return pending;

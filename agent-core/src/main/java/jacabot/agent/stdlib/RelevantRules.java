@@ -6,6 +6,7 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
 
 /**
@@ -19,7 +20,7 @@ final class RelevantRules extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        boolean any = args[0] instanceof jacabot.agent.syntax.Var;
+        boolean any = args[0] instanceof Var;
         Literal pattern = any ? null : literal(args[0]);
         var rules = new ArrayList<Term>();
         for (BeliefBase.Entry e : any ? ag.beliefBase().all() : ag.beliefBase().candidates(pattern)) {

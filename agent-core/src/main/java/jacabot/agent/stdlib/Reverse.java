@@ -5,6 +5,7 @@ import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.Collections;
 
 /** {@code .reverse(L, R)}: a reversed list or string. */
 final class Reverse extends DefaultInternalAction {
@@ -18,7 +19,7 @@ final class Reverse extends DefaultInternalAction {
             return un.unifies(args[1], new StringTerm(new StringBuilder(s.value()).reverse().toString()));
         }
         var items = list(args[0]).elements(); // a new list
-        java.util.Collections.reverse(items);
+        Collections.reverse(items);
         return un.unifies(args[1], listOf(items));
     }
 }

@@ -6,6 +6,7 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
 
 import java.util.Collection;
+import java.util.Locale;
 
 /** {@code .set.union(S, C)}, {@code .set.intersection(S, C)}, {@code .set.difference(S, C)}: change S in place by a list, set or queue C. */
 final class SetOperation extends DefaultInternalAction {
@@ -14,7 +15,7 @@ final class SetOperation extends DefaultInternalAction {
     private final Kind kind;
 
     SetOperation(Kind kind) {
-        super(".set." + kind.name().toLowerCase(java.util.Locale.ROOT), 2, 2);
+        super(".set." + kind.name().toLowerCase(Locale.ROOT), 2, 2);
         this.kind = kind;
     }
 

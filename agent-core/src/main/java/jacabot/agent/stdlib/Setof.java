@@ -4,6 +4,8 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.TreeSet;
 
 /** {@code .setof(T, Query, L)}: as {@code .findall}, sorted and without duplicates. */
 final class Setof extends DefaultInternalAction {
@@ -13,7 +15,7 @@ final class Setof extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        var sorted = new java.util.TreeSet<Term>(Findall.solutions(ag, un, args[0], args[1]));
-        return un.unifies(args[2], listOf(new java.util.ArrayList<>(sorted)));
+        var sorted = new TreeSet<Term>(Findall.solutions(ag, un, args[0], args[1]));
+        return un.unifies(args[2], listOf(new ArrayList<>(sorted)));
     }
 }

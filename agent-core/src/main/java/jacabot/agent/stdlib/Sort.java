@@ -4,6 +4,7 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Term;
+import java.util.Collections;
 
 /** {@code .sort(L, S)}: S is L in the standard order of terms. */
 final class Sort extends DefaultInternalAction {
@@ -14,7 +15,7 @@ final class Sort extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         var items = list(args[0]).elements(); // a new list
-        java.util.Collections.sort(items);
+        Collections.sort(items);
         return un.unifies(args[1], listOf(items));
     }
 }

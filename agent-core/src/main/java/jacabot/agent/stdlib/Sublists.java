@@ -10,6 +10,7 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.Iterator;
 import java.util.List;
+import java.util.NoSuchElementException;
 
 /**
  * {@code .prefix(P, L)}, {@code .suffix(S, L)} and {@code .sublist(S, L)}: P (S) unifies with a
@@ -116,7 +117,7 @@ final class Sublists extends DefaultInternalAction {
         @Override
         public Unifier next() {
             if (!hasNext()) {
-                throw new java.util.NoSuchElementException();
+                throw new NoSuchElementException();
             }
             Unifier u = pending;
             pending = null;

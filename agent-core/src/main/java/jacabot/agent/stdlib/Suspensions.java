@@ -10,7 +10,11 @@ import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 /** The bookkeeping shared by {@code .suspend}, {@code .resume} and {@code .suspended}. */
 final class Suspensions {
@@ -94,10 +98,13 @@ final class Suspensions {
                 }
             }
         }
-        for (Map.Entry<String, Circumstance.Pending> p : c.pendingIntentions().entrySet()) {
-            Intention i = p.getValue().intention();
-            String key = p.getKey();
-            if (i.isSuspended() && i.hasGoal(g, un)) {
+        Map<String, Circumstance.Pending> pending = c.pendingIntentions();
+        for (String key : inJasonOrder(pending.keySet())) {
+            Circumstance.Pending p = pending.get(key);
+            Intention i = p.intention();
+            // as Jason's, the pattern is unified in the caller's unifier: the first intention that
+            // matches binds its variables, so .resume(g(_)) resumes one of several g goals
+            if (i.isSuspended() && i.hasGoal(g, un) && i.hasGoalBinding(g, un)) {
                 i.markSuspended(false);
                 GoalStates gs = ag.goalStates();
                 gs.ofTop(i, GoalStates.State.resumed, RESUME_REASON);
@@ -109,11 +116,23 @@ final class Suspensions {
                     }
                     c.addRunningIntention(i);
                 } else {
-                    gs.ofTop(i, GoalStates.State.waiting, p.getValue().reason());
+                    gs.ofTop(i, GoalStates.State.waiting, p.reason());
                 }
             }
         }
         return true;
+    }
+
+    /**
+     * {@return the keys in the order Jason 3.2 visits its pending intentions: a ConcurrentHashMap
+     * keyed by the same names, so that which of several suspended goals resumes first is Jason's}
+     */
+    private static List<String> inJasonOrder(Set<String> keys) {
+        var jasonPI = new ConcurrentHashMap<String, Boolean>();
+        for (String k : keys) {
+            jasonPI.put(k, Boolean.TRUE);
+        }
+        return new ArrayList<>(jasonPI.keySet());
     }
 
     static boolean suspended(Agent ag, Literal g, Term reason, Unifier un) {

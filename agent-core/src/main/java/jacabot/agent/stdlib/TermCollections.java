@@ -2,11 +2,13 @@ package jacabot.agent.stdlib;
 
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.ObjectTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.Collection;
 import java.util.Map;
+import java.util.Queue;
 import java.util.TreeMap;
 import java.util.TreeSet;
 
@@ -100,8 +102,8 @@ final class TermCollections {
 
     /** {@return the queue in t} */
     @SuppressWarnings("unchecked")
-    static java.util.Queue<Term> queue(String action, Term t) throws IaException {
-        return held(action, t, java.util.Queue.class, "queue");
+    static Queue<Term> queue(String action, Term t) throws IaException {
+        return held(action, t, Queue.class, "queue");
     }
 
     private static <C> C bindNew(Term var, Unifier un, C fresh) {
@@ -119,7 +121,7 @@ final class TermCollections {
 
     /** {@return the elements of a list, set or queue term, or null} */
     static Collection<Term> elements(Term t) {
-        if (t instanceof jacabot.agent.syntax.ListTerm l) {
+        if (t instanceof ListTerm l) {
             return l.elements();
         }
         if (t instanceof ObjectTerm o && o.value() instanceof Collection<?> c) {

@@ -11,6 +11,7 @@ import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
 
 /**
  * {@code .type(X, T)}: T is {@code number}, {@code string}, {@code list}, {@code atom},
@@ -25,7 +26,7 @@ final class Type extends DefaultInternalAction {
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         // the first answer is the most specific; an atom is also a literal, a ground term is ground
-        var answers = new java.util.ArrayList<String>();
+        var answers = new ArrayList<String>();
         answers.add(typeOf(args[0]));
         if (answers.get(0).equals("atom")) {
             answers.add("literal");
@@ -33,7 +34,7 @@ final class Type extends DefaultInternalAction {
         if (args[0].isGround()) {
             answers.add("ground");
         }
-        var out = new java.util.ArrayList<Unifier>();
+        var out = new ArrayList<Unifier>();
         for (String a : answers) {
             Unifier c = un.copy();
             if (c.unifies(args[1], Literal.atom(a))) {

@@ -4,6 +4,7 @@ import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.CircumstanceListener;
 import jacabot.agent.semantics.Event;
+import jacabot.agent.semantics.GoalStates;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Intention;
 import jacabot.agent.semantics.Unifier;
@@ -125,7 +126,7 @@ final class Wait extends DefaultInternalAction {
             Literal reason = Literal.of("wait", new NumberTerm(si.id())).addAnnot(what);
             this.key = reason.toString();
             ag.circumstance().addPendingIntention(key, reason, si);
-            ag.goalStates().ofTop(si, jacabot.agent.semantics.GoalStates.State.waiting, reason);
+            ag.goalStates().ofTop(si, GoalStates.State.waiting, reason);
         }
 
         void start() {
@@ -191,7 +192,7 @@ final class Wait extends DefaultInternalAction {
                         ag.circumstance().addPendingIntention(Suspensions.SUSPENDED + si.id(), Suspensions.REASON, si);
                     } else {
                         ag.circumstance().addRunningIntention(si);
-                        ag.goalStates().ofTop(si, jacabot.agent.semantics.GoalStates.State.executing, null);
+                        ag.goalStates().ofTop(si, GoalStates.State.executing, null);
                     }
                 }
             });

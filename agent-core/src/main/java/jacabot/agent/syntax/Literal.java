@@ -3,6 +3,7 @@ package jacabot.agent.syntax;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Objects;
 import java.util.function.Consumer;
 
 /**
@@ -77,7 +78,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         if (newNs instanceof Literal l && l.isDefaultNsName()) {
             newNs = null;
         }
-        return java.util.Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs, tail);
+        return Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs, tail);
     }
 
     /** {@return the namespace as a term: the atom {@code default} for the default namespace} */
@@ -166,7 +167,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
     @Override
     public boolean equals(Object o) {
         return o == this || o instanceof Literal l && negated == l.negated && functor.equals(l.functor)
-                && args.equals(l.args) && annots.equals(l.annots) && java.util.Objects.equals(ns, l.ns)
+                && args.equals(l.args) && annots.equals(l.annots) && Objects.equals(ns, l.ns)
                 && (tail == l.tail || tail != null && tail.equals(l.tail));
     }
 
@@ -279,7 +280,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     /** {@return the same namespace, functor, arity and negation (the belief base's key)} */
     public boolean samePredicate(Literal o) {
-        return sameName(o) && java.util.Objects.equals(ns, o.ns);
+        return sameName(o) && Objects.equals(ns, o.ns);
     }
 
     /** {@return the same functor, arity and negation, whatever the namespaces} */

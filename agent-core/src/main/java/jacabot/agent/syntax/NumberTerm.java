@@ -1,5 +1,7 @@
 package jacabot.agent.syntax;
 
+import java.util.function.Consumer;
+
 /** A number; AgentSpeak numbers are doubles, printed without a decimal point when integral. */
 public record NumberTerm(double value) implements Term {
     public static final NumberTerm ZERO = new NumberTerm(0);
@@ -14,7 +16,7 @@ public record NumberTerm(double value) implements Term {
     }
 
     @Override
-    public void collectVars(java.util.function.Consumer<Var> sink) {
+    public void collectVars(Consumer<Var> sink) {
     }
 
     @Override

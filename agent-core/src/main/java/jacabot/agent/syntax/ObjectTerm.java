@@ -1,5 +1,7 @@
 package jacabot.agent.syntax;
 
+import java.util.function.Consumer;
+
 /** A Java object carried as a term (e.g. an artifact id); equal when the objects are equal. */
 public record ObjectTerm(Object value) implements Term {
     @Override
@@ -8,7 +10,7 @@ public record ObjectTerm(Object value) implements Term {
     }
 
     @Override
-    public void collectVars(java.util.function.Consumer<Var> sink) {
+    public void collectVars(Consumer<Var> sink) {
     }
 
     @Override

@@ -1,5 +1,6 @@
 package jacabot.agent.syntax;
 
+import java.util.Objects;
 import java.util.function.Consumer;
 
 /**
@@ -102,12 +103,12 @@ public record PlanTerm(Term label, Trigger trigger, Term context, Term body, Sou
     /** Plans as terms are equal by their parts (a missing context is {@code true}), wherever written. */
     @Override
     public boolean equals(Object o) {
-        return o instanceof PlanTerm p && java.util.Objects.equals(p.label, label) && p.trigger.equals(trigger)
+        return o instanceof PlanTerm p && Objects.equals(p.label, label) && p.trigger.equals(trigger)
                 && p.contextOrTrue().equals(contextOrTrue()) && p.body.equals(body);
     }
 
     @Override
     public int hashCode() {
-        return java.util.Objects.hash(label, trigger, contextOrTrue(), body);
+        return Objects.hash(label, trigger, contextOrTrue(), body);
     }
 }

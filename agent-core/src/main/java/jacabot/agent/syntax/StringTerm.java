@@ -1,5 +1,7 @@
 package jacabot.agent.syntax;
 
+import java.util.function.Consumer;
+
 /** A string; printed with its quotes when nested in a term, without them by {@code .print}. */
 public record StringTerm(String value) implements Term {
     @Override
@@ -8,7 +10,7 @@ public record StringTerm(String value) implements Term {
     }
 
     @Override
-    public void collectVars(java.util.function.Consumer<Var> sink) {
+    public void collectVars(Consumer<Var> sink) {
     }
 
     @Override

@@ -1,5 +1,7 @@
 package jacabot.agent.syntax;
 
+import java.util.function.Consumer;
+
 /**
  * An AgentSpeak term. Terms are immutable values with structural equality; variables are
  * bound by a {@code Unifier}, never by changing a term.
@@ -18,7 +20,7 @@ public sealed interface Term extends Comparable<Term>
     <R> R accept(TermVisitor<R> v);
 
     /** Visits every variable of the term, in textual order. */
-    void collectVars(java.util.function.Consumer<Var> sink);
+    void collectVars(Consumer<Var> sink);
 
     @Override
     default int compareTo(Term other) {

@@ -1,6 +1,7 @@
 package jacabot.agent.syntax;
 
 import java.util.List;
+import java.util.Objects;
 
 /** Jason's standard order of terms, and a few printing helpers. */
 public final class TermOrder {
@@ -72,7 +73,7 @@ public final class TermOrder {
     }
 
     private static int compareLiterals(Literal a, Literal b) {
-        if (a.ns() != b.ns() && !java.util.Objects.equals(a.ns(), b.ns())) {
+        if (a.ns() != b.ns() && !Objects.equals(a.ns(), b.ns())) {
             int n = compare(a.nsTerm(), b.nsTerm()); // Jason orders by namespace first
             if (n != 0) {
                 return n;

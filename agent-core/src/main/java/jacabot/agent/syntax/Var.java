@@ -1,5 +1,7 @@
 package jacabot.agent.syntax;
 
+import java.util.function.Consumer;
+
 /**
  * A variable. Source variables have serial 0; unnamed variables ({@code _}) and the fresh
  * variables made at run time carry a serial that keeps them apart from every other variable.
@@ -31,7 +33,7 @@ public record Var(String name, long serial) implements Term {
     }
 
     @Override
-    public void collectVars(java.util.function.Consumer<Var> sink) {
+    public void collectVars(Consumer<Var> sink) {
         sink.accept(this);
     }
 

@@ -1,6 +1,7 @@
 package jacabot.agent.testing;
 
 import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.DefaultEnvironment;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.runtime.MasLauncher;
@@ -185,7 +186,7 @@ public final class AslTestRunner {
         try {
             mas.createAgent("test_manager", parser.parse(AslTestLibrary.library("test_manager.asl")), parser, null);
             mas.createAgent(MasLauncher.agentNameFor(file), parser.parseFile(file), parser, MockingArch::new);
-        } catch (jacabot.agent.parser.AslSyntaxException e) {
+        } catch (AslSyntaxException e) {
             throw new MasLauncher.UserError(e.getMessage());
         }
         return mas;

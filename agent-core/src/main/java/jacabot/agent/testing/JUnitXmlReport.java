@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import javax.xml.stream.XMLOutputFactory;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamWriter;
@@ -32,7 +33,7 @@ public final class JUnitXmlReport {
             x.writeAttribute("tests", Integer.toString(result.cases().size()));
             x.writeAttribute("failures", Long.toString(failures));
             x.writeAttribute("errors", Long.toString(errors));
-            x.writeAttribute("time", String.format(java.util.Locale.ROOT, "%.3f", result.millis() / 1000.0));
+            x.writeAttribute("time", String.format(Locale.ROOT, "%.3f", result.millis() / 1000.0));
             int n = 0;
             for (AslTestCase c : result.cases()) {
                 n++;

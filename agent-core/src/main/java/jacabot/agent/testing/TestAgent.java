@@ -7,11 +7,16 @@ import jacabot.agent.semantics.Clock;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.AgentArch;
+import jacabot.agent.semantics.Unifier;
 import jacabot.agent.stdlib.Stdlib;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BiConsumer;
 import java.util.function.Function;
 
 /**
@@ -24,7 +29,7 @@ public final class TestAgent implements AgentArch {
     public final List<String> console = new ArrayList<>();
     public final List<ActionExec> actions = new ArrayList<>();
     /** Simulated time in ms; only {@link #advance} moves it. */
-    private final java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong();
+    private final AtomicLong now = new AtomicLong();
     /** Decides each action's outcome; default: success. */
     public Function<ActionExec, Boolean> environment = a -> true;
     public List<Literal> percepts;
@@ -32,7 +37,7 @@ public final class TestAgent implements AgentArch {
     private boolean stopped;
 
     /** Binds output variables of a successful action (e.g. the id of {@code makeArtifact}). */
-    public java.util.function.BiConsumer<ActionExec, jacabot.agent.semantics.Unifier> outputs = (a, u) -> {
+    public BiConsumer<ActionExec, Unifier> outputs = (a, u) -> {
     };
 
     public TestAgent(String name, String source) {
@@ -45,7 +50,7 @@ public final class TestAgent implements AgentArch {
         }
     }
 
-    private TestAgent(String name, java.nio.file.Path file) {
+    private TestAgent(String name, Path file) {
         var parser = new AslParser(List.of(file.toAbsolutePath().getParent()));
         agent = new Agent(name, this, Stdlib.defaults(), 42, parser);
         try {
@@ -56,7 +61,7 @@ public final class TestAgent implements AgentArch {
     }
 
     /** An agent read from a source file. */
-    public static TestAgent fromFile(String name, java.nio.file.Path file) {
+    public static TestAgent fromFile(String name, Path file) {
         return new TestAgent(name, file);
     }
 
@@ -82,8 +87,8 @@ public final class TestAgent implements AgentArch {
 
     /** Posts a non-persistent {@code +s} event, as an artifact's signal. */
     public TestAgent signal(String literal) {
-        agent.addExternalEvent(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
-                jacabot.agent.syntax.Trigger.Type.BELIEF, ((Literal) term(literal)).addAnnot(Literal.SOURCE_PERCEPT)));
+        agent.addExternalEvent(new Trigger(Trigger.Op.ADD,
+                Trigger.Type.BELIEF, ((Literal) term(literal)).addAnnot(Literal.SOURCE_PERCEPT)));
         return this;
     }
 
@@ -122,7 +127,7 @@ public final class TestAgent implements AgentArch {
 
     private void finish(ActionExec action, Agent ag) {
         if (environment.apply(action)) {
-            var u = new jacabot.agent.semantics.Unifier();
+            var u = new Unifier();
             outputs.accept(action, u);
             action.succeed(u);
         } else {

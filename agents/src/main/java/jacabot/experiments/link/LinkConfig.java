@@ -6,6 +6,7 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.SensorInfoFilter;
 import java.net.InetAddress;
 import java.util.function.Consumer;
+import javax.net.ssl.SSLContext;
 
 /**
  * How a {@link MiddlewareLink} listens. Immutable; start from {@link #defaults()}.
@@ -17,7 +18,7 @@ import java.util.function.Consumer;
  *                      ({@link MiddlewareLink#setLiveness})
  * @param queueCapacity events kept for {@link MiddlewareLink#receive()}; when nobody reads, the oldest
  *                      readings go (a connection event is never dropped)
- * @param limits        the deserialization filter's limits
+ * @param limits        the sensor data stream's limits (array lengths, bytes per reading and batch)
  * @param clock         the timestamp clock shared with the controller
  * @param log           where connections, refusals and closing reasons are reported
  * @param secret        the key shared with the controller; null: the user's secret file
@@ -27,7 +28,7 @@ import java.util.function.Consumer;
  */
 public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, int queueCapacity,
                          SensorInfoFilter.Limits limits, LinkClock clock, Consumer<String> log, LinkSecret secret,
-                         Guards guards, javax.net.ssl.SSLContext tls) {
+                         Guards guards, SSLContext tls) {
     /**
      * @param handshakeMs        a connection must finish its handshake within this (wall) time
      * @param frameMs            a frame, once begun, must be complete within this time
@@ -93,7 +94,7 @@ public record LinkConfig(InetAddress bindAddress, int port, long heartbeatMs, in
     }
 
     /** Listens with TLS (the context holds the middleware's key and certificate). */
-    public LinkConfig withTls(javax.net.ssl.SSLContext context) {
+    public LinkConfig withTls(SSLContext context) {
         return new LinkConfig(bindAddress, port, heartbeatMs, queueCapacity, limits, clock, log, secret, guards, context);
     }
 

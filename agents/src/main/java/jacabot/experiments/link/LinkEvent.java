@@ -1,5 +1,6 @@
 package jacabot.experiments.link;
 
+import jacabot.robot.link.LinkClock;
 import jacabot.robot.link.SensorInfo;
 
 /**
@@ -20,7 +21,7 @@ public sealed interface LinkEvent {
      *
      * @param step           the controller's control step
      * @param simTimeMs      the simulated time of the step
-     * @param sampledMicros  when the controller sampled it ({@link jacabot.robot.link.LinkClock})
+     * @param sampledMicros  when the controller sampled it ({@link LinkClock})
      * @param receivedMicros when the link read it off the socket
      */
     record Reading(SensorInfo info, long step, long simTimeMs, long sampledMicros, long receivedMicros) implements LinkEvent {

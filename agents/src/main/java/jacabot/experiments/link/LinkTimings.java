@@ -1,5 +1,6 @@
 package jacabot.experiments.link;
 
+import jacabot.robot.link.Command;
 import jacabot.robot.link.LinkClock;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
@@ -12,7 +13,7 @@ import java.util.concurrent.atomic.LongAdder;
  *   <li><b>delivery</b>: reading sampled → handed out by {@link MiddlewareLink#receive()};</li>
  *   <li><b>reactive</b>: reading sampled → the plan it triggers is selected, recorded by the agent
  *       side with {@link #planTriggered(LinkEvent.Reading)};</li>
- *   <li><b>response</b>: action executed by the agent ({@link MiddlewareLink#send(jacabot.robot.link.Command, long)})
+ *   <li><b>response</b>: action executed by the agent ({@link MiddlewareLink#send(Command, long)})
  *       → the controller applied it to the actuators (its {@code APPLIED} report).</li>
  * </ul>
  */

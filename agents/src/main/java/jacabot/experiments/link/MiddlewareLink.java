@@ -1,6 +1,8 @@
 package jacabot.experiments.link;
 
 import jacabot.robot.link.Command;
+import jacabot.robot.link.Handshake;
+import jacabot.robot.link.LinkClock;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
@@ -14,7 +16,7 @@ import java.util.function.Consumer;
 /**
  * The middleware's end of the link (thesis §2.3), as a plain class that the {@code MiddlewareArtifact}
  * wraps: one robot's controller, which connects, proves it holds the link secret
- * ({@link jacabot.robot.link.Handshake}; only then may a new connection replace the old one, so a
+ * ({@link Handshake}; only then may a new connection replace the old one, so a
  * controller that reconnects after a drop is taken back at once and nobody else is), streams its
  * sensor data and takes commands. This class is the link's face; each job is one of its parts:
  * <ul>
@@ -192,7 +194,7 @@ public final class MiddlewareLink implements AutoCloseable {
 
     /**
      * Sends a command on behalf of an agent action executed at {@code actionMicros}
-     * ({@link jacabot.robot.link.LinkClock}): the response time runs from there to the controller's
+     * ({@link LinkClock}): the response time runs from there to the controller's
      * report that the actuators got it.
      */
     public boolean send(Command command, long actionMicros) {

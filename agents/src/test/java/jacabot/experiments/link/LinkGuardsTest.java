@@ -203,7 +203,7 @@ class LinkGuardsTest {
                 }
                 try {
                     RawFrames.batch(out, 0, big);
-                    RawFrames.batch(out, 1, many); // each object is allowed, the batch is not
+                    RawFrames.batch(out, 1, many); // each reading is allowed, the batch is not
                 } catch (SocketException e) {
                     // the middleware hung up first
                 }

@@ -1,6 +1,7 @@
 package jacabot.experiments.link;
 
 import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorInfoCodec;
 import jacabot.robot.link.Uplink;
 import java.io.IOException;
 import java.io.ObjectOutputStream;
@@ -18,7 +19,7 @@ public final class RawFrames {
         out.writeLong(0);
         out.writeInt(readings.length);
         for (SensorInfo r : readings) {
-            out.writeObject(r);
+            SensorInfoCodec.write(out, r);
         }
         out.flush();
     }

@@ -9,6 +9,7 @@ import jacabot.cartago.OpTarget;
 import jacabot.cartago.PropertySnapshot;
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
@@ -16,6 +17,7 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -42,7 +44,7 @@ public final class RemoteWorkspace implements AutoCloseable {
     private volatile boolean quitting;
     private Thread reader;
     /** What the agent focuses there, as the events told (read on loss, to end those focuses). */
-    private final Map<ArtifactId, List<PropertySnapshot>> focused = new java.util.LinkedHashMap<>();
+    private final Map<ArtifactId, List<PropertySnapshot>> focused = new LinkedHashMap<>();
 
     private record Pending(OpCallback callback, Object[] args) {
     }
@@ -130,7 +132,7 @@ public final class RemoteWorkspace implements AutoCloseable {
         }
         int id = opIds.incrementAndGet();
         // the whole frame first, so that a value the wire refuses (a string over 1 MiB) sends nothing
-        var bytes = new java.io.ByteArrayOutputStream();
+        var bytes = new ByteArrayOutputStream();
         try {
             var f = new DataOutputStream(bytes);
             f.writeByte(Frames.EXEC);

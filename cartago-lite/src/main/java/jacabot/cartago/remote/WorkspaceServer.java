@@ -27,6 +27,7 @@ import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
 
@@ -276,7 +277,7 @@ public final class WorkspaceServer implements AutoCloseable {
             ended = true;
             if (writer != null) {
                 try {
-                    if (outbox.offer(new byte[0], 1, java.util.concurrent.TimeUnit.SECONDS)) {
+                    if (outbox.offer(new byte[0], 1, TimeUnit.SECONDS)) {
                         writer.join(2000);
                     }
                 } catch (InterruptedException e) {

@@ -30,7 +30,7 @@ public final class Protocol {
     /** "JCBT": the first int of a handshake, so that a stray client is told apart from a controller. */
     public static final int MAGIC = 0x4A434254;
     /** Bumped whenever a frame, a command code or a sensor id changes meaning. */
-    public static final int VERSION = 2;
+    public static final int VERSION = 3;
     public static final String DEFAULT_HOST = "127.0.0.1";
     public static final int DEFAULT_PORT = 4444;
     /** The most arguments a command frame may announce; more means the stream is garbage. */

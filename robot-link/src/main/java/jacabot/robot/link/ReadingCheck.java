@@ -6,8 +6,8 @@ import java.util.Set;
 
 /**
  * Checks a reading's shape against the devices the controller declared in its {@link Protocol.Hello},
- * before any artifact sees it: the deserialization filter only knows that a {@link SensorInfo} is a
- * {@code SensorInfo}; an empty gripper array or a NaN distance is legal Java and still poison for
+ * before any artifact sees it: the codec ({@link SensorInfoCodec}) only bounds what it allocates; an
+ * empty gripper array or a NaN distance is legal Java and still poison for
  * code that indexes and compares. A reading is refused when its id was not declared, when it uses
  * fields its kind does not have, when an array has the wrong length for its kind, or when a value
  * is not finite.

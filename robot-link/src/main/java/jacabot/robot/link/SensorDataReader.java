@@ -4,19 +4,19 @@ import java.io.BufferedInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InvalidClassException;
 import java.io.ObjectInputStream;
 import java.io.ObjectStreamException;
-import java.io.OptionalDataException;
 import java.io.UTFDataFormatException;
 import java.util.ArrayList;
 import java.util.List;
 
 /**
  * The middleware's end of the sensor data stream: reads {@link Uplink} frames through an
- * {@code ObjectInputStream} guarded by a {@link SensorInfoFilter}. Every way the stream can be wrong
- * (a foreign class, a huge array, an unknown tag, a truncated frame, garbage) becomes one
- * {@link ProtocolException} with a readable reason; the caller closes the connection.
+ * {@code ObjectInputStream}, readings in {@link SensorInfoCodec}'s encoding. Nothing is deserialized:
+ * the stream's {@link SensorInfoFilter} stays installed and refuses every class, so an object put
+ * where a reading belongs is never built. Every way the stream can be wrong (an object, a huge
+ * array, an unknown tag, a truncated frame, garbage) becomes one {@link ProtocolException} with a
+ * readable reason; the caller closes the connection.
  */
 public final class SensorDataReader {
     private final BufferedInputStream buffered;
@@ -36,7 +36,7 @@ public final class SensorDataReader {
      * @throws ProtocolException when the bytes are not an object stream
      */
     public SensorDataReader(InputStream in, SensorInfoFilter.Limits limits) throws IOException {
-        this.filter = new SensorInfoFilter(limits);
+        this.filter = new SensorInfoFilter();
         this.limits = limits;
         this.buffered = new BufferedInputStream(in);
         this.frameReady = () -> this.in.available() > 0 || buffered.available() > 0;
@@ -99,7 +99,6 @@ public final class SensorDataReader {
                 openStream(); // a new header follows: the old stream's handles go
                 continue;
             }
-            filter.beginFrame();
             try {
                 if (costs == null) {
                     return readFrame(tag);
@@ -127,7 +126,9 @@ public final class SensorDataReader {
                 default: throw new ProtocolException("garbage on the sensor data stream: unknown frame tag " + tag);
             }
         } catch (EOFException e) {
-            throw new ProtocolException("truncated frame: the sensor data stream ended inside a frame (tag " + tag + ")");
+            // in block data, an object where a reading's fields belong also ends the primitives
+            throw new ProtocolException("truncated frame: the sensor data stream ended inside a frame, or carried "
+                    + "something other than its fields (tag " + tag + ")");
         } catch (ObjectStreamException | UTFDataFormatException e) {
             throw garbage(e);
         }
@@ -140,37 +141,17 @@ public final class SensorDataReader {
             throw new ProtocolException("garbage on the sensor data stream: a batch of " + count + " readings");
         }
         List<SensorInfo> readings = new ArrayList<>(count);
+        long budget = limits.maxBytesPerFrame();
         for (int i = 0; i < count; i++) {
-            readings.add(readSensorInfo());
+            if (++objectsInStream > limits.maxObjectsPerStream()) {
+                throw new ProtocolException("garbage on the sensor data stream: more than " + limits.maxObjectsPerStream()
+                        + " readings without a stream restart");
+            }
+            SensorInfoCodec.Decoded d = SensorInfoCodec.read(in, limits, budget);
+            budget -= d.bytes();
+            readings.add(d.info());
         }
         return new Uplink.Batch(step, simTime, sampled, readings);
-    }
-
-    private SensorInfo readSensorInfo() throws IOException {
-        if (++objectsInStream > limits.maxObjectsPerStream()) {
-            throw new ProtocolException("garbage on the sensor data stream: more than " + limits.maxObjectsPerStream()
-                    + " readings without a stream restart");
-        }
-        filter.beginObject();
-        Object o;
-        try {
-            o = in.readObject();
-        } catch (InvalidClassException e) {
-            String why = filter.lastRejection();
-            throw new ProtocolException("rejected by the deserialization filter: "
-                    + (why != null ? why : e.getMessage()), e);
-        } catch (OptionalDataException e) {
-            throw new ProtocolException("garbage on the sensor data stream: primitive data where a SensorInfo was expected");
-        } catch (ClassNotFoundException e) {
-            throw new ProtocolException("unknown class on the sensor data stream: " + e.getMessage());
-        } catch (RuntimeException e) {
-            // ObjectInputStream can fail with unchecked exceptions on corrupt input (e.g. a negative array size).
-            throw new ProtocolException("garbage on the sensor data stream: " + e, e);
-        }
-        if (!(o instanceof SensorInfo)) {
-            throw new ProtocolException("expected a SensorInfo, got " + (o == null ? "null" : o.getClass().getName()));
-        }
-        return (SensorInfo) o;
     }
 
     private static ProtocolException garbage(IOException e) {

@@ -8,11 +8,11 @@ import java.util.List;
 
 /**
  * The controller's end of the sensor data stream: an {@code ObjectOutputStream}, as in the thesis,
- * carrying the {@link Uplink} frames (primitive headers, then one {@link SensorInfo} object per
- * reading). Every {@code resetEvery} batches the object stream restarts ({@link Uplink#RESTART}, then
- * a new stream header): an {@code ObjectOutputStream} otherwise keeps a reference to every object it
- * ever wrote, and so does the reader's {@code ObjectInputStream}, which is why the reader replaces
- * its stream at each restart and refuses a stream that goes on too long without one.
+ * carrying the {@link Uplink} frames (primitive headers, then each {@link SensorInfo} in the compact
+ * encoding of {@link SensorInfoCodec}; version 2 wrote them as serialized objects). Every
+ * {@code resetEvery} batches the object stream restarts ({@link Uplink#RESTART}, then a new stream
+ * header), as version 2 did to bound both ends' object handle tables; the reader still refuses a
+ * stream that goes on too long without one.
  */
 public final class SensorDataWriter {
     private final BufferedOutputStream buffered;
@@ -65,7 +65,7 @@ public final class SensorDataWriter {
         List<SensorInfo> readings = batch.readings();
         out.writeInt(readings.size());
         for (SensorInfo info : readings) {
-            out.writeObject(info);
+            SensorInfoCodec.write(out, info);
         }
         out.writeByte(Uplink.STEP_MARKER);
         out.writeLong(marker.step());

@@ -13,7 +13,8 @@ import java.util.Optional;
  * triple, an int array (image sections or RGB) or a double array.
  *
  * <p>Unlike the thesis' class, the double-array constructor keeps the id, and the value fields are
- * primitive so that the deserialization filter only has to allow this class and primitive arrays.
+ * primitive. It stays {@code Serializable}, as in the thesis, but the link writes it with
+ * {@link SensorInfoCodec} (protocol version 3).
  */
 public final class SensorInfo implements Serializable {
     private static final long serialVersionUID = 1L;
@@ -56,6 +57,36 @@ public final class SensorInfo implements Serializable {
     /** A double-array reading. */
     public SensorInfo(int id, double[] values) {
         this(id, 0, NO_INTS, 0, 0, 0, values.clone());
+    }
+
+    /** A reading as the compact codec read it (null arrays: empty); the arrays are not copied. */
+    static SensorInfo decoded(int id, double value, int[] ints, double x, double y, double z, double[] doubles) {
+        return new SensorInfo(id, value, ints == null ? NO_INTS : ints, x, y, z, doubles == null ? NO_DOUBLES : doubles);
+    }
+
+    // the fields as they are, for the codec (no copies)
+    double value() {
+        return value;
+    }
+
+    double x() {
+        return x;
+    }
+
+    double y() {
+        return y;
+    }
+
+    double z() {
+        return z;
+    }
+
+    int[] ints() {
+        return intValues;
+    }
+
+    double[] doubles() {
+        return doubleValues;
     }
 
     public int getId() {

@@ -3,23 +3,25 @@ package jacabot.robot.link;
 import java.io.ObjectInputFilter;
 
 /**
- * The deserialization filter of the sensor data stream: only {@link SensorInfo} and its
- * {@code int[]}/{@code double[]} fields may be read, with limits on depth, array length, back
- * references and the bytes one object may take. Anything else is rejected before it is built, so a
- * hostile or confused peer cannot make the middleware instantiate a foreign class or allocate a huge
- * array; the reader then closes the connection with {@link #lastRejection()} as the reason.
- *
- * <p>One filter per stream: the byte limit is per object (the stream's own byte count grows for
- * the life of the connection), so {@link #beginObject()} marks where each top-level object starts.
+ * The limits of the sensor data stream, and its deserialization filter. Since protocol version 3
+ * the stream carries no objects ({@link SensorInfoCodec}): the filter stays installed on the
+ * middleware's {@code ObjectInputStream} as a second lock and refuses every class, so even a reader
+ * changed to call {@code readObject} would build nothing from the peer's bytes. The limits bound
+ * what the codec allocates: an array's length, a reading's bytes, a batch's bytes, and the readings
+ * between two stream restarts.
  */
 public final class SensorInfoFilter implements ObjectInputFilter {
     /**
      * Limits; {@link #DEFAULT} fits a 640×480 camera image.
      *
-     * @param maxBytesPerFrame   bytes one batch may take in all (the per-object limit times the batch
-     *                           length would allow gigabytes)
+     * @param maxArrayLength    the longest array a reading may carry
+     * @param maxDepth          version 2's bound on object nesting; unused since version 3 carries no objects
+     * @param maxReferences     version 2's bound on back references; unused likewise
+     * @param maxBytesPerObject bytes one reading may take
+     * @param maxBytesPerFrame   bytes the readings of one batch may take in all (the per-reading limit
+     *                           times the batch length would allow gigabytes)
      * @param maxObjectsPerStream readings one object stream may carry before it restarts
-     *                           ({@link Uplink#RESTART}): the reader's handle table keeps them all
+     *                           ({@link Uplink#RESTART})
      */
     public record Limits(int maxArrayLength, int maxDepth, long maxReferences, long maxBytesPerObject,
                          long maxBytesPerFrame, long maxObjectsPerStream) {
@@ -31,25 +33,7 @@ public final class SensorInfoFilter implements ObjectInputFilter {
         }
     }
 
-    private final Limits limits;
-    private long objectStart = -1;
-    private long frameStart = -1;
-    private long referencesStart;
     private String lastRejection;
-
-    public SensorInfoFilter(Limits limits) {
-        this.limits = limits;
-    }
-
-    /** Called before each top-level {@code readObject}: the byte limit counts from here. */
-    public void beginObject() {
-        objectStart = -1;
-    }
-
-    /** Called before each frame: the frame's byte limit counts from here. */
-    public void beginFrame() {
-        frameStart = -1;
-    }
 
     /** {@return why the last object was rejected, or null} */
     public String lastRejection() {
@@ -58,44 +42,9 @@ public final class SensorInfoFilter implements ObjectInputFilter {
 
     @Override
     public Status checkInput(FilterInfo info) {
-        if (objectStart < 0) {
-            objectStart = info.streamBytes();
-            referencesStart = info.references();
-        }
-        if (frameStart < 0) {
-            frameStart = objectStart;
-        }
         Class<?> type = info.serialClass();
-        if (type != null) {
-            if (type.isArray()) {
-                Class<?> component = type.getComponentType();
-                if (component != int.class && component != double.class) {
-                    return reject("array of " + component.getName() + " is not allowed");
-                }
-                if (info.arrayLength() > limits.maxArrayLength()) {
-                    return reject("array of " + info.arrayLength() + " elements exceeds the limit of "
-                            + limits.maxArrayLength());
-                }
-            } else if (type != SensorInfo.class) {
-                return reject("class " + type.getName() + " is not allowed (only SensorInfo)");
-            }
-        }
-        if (info.depth() > limits.maxDepth()) {
-            return reject("nesting depth " + info.depth() + " exceeds " + limits.maxDepth());
-        }
-        // the JDK counts references over the whole stream (reset() does not clear the count), so
-        // the limit applies to each object read
-        long references = info.references() - referencesStart;
-        if (references > limits.maxReferences()) {
-            return reject(references + " back references exceed " + limits.maxReferences());
-        }
-        if (info.streamBytes() - objectStart > limits.maxBytesPerObject()) {
-            return reject("object larger than " + limits.maxBytesPerObject() + " bytes");
-        }
-        if (info.streamBytes() - frameStart > limits.maxBytesPerFrame()) {
-            return reject("batch larger than " + limits.maxBytesPerFrame() + " bytes");
-        }
-        return Status.ALLOWED;
+        return reject(type == null ? "no object is allowed on the sensor data stream"
+                : "class " + type.getName() + " is not allowed (the sensor data stream carries no objects)");
     }
 
     private Status reject(String reason) {

@@ -19,6 +19,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
@@ -103,7 +104,7 @@ class LinkSecurityTest {
         Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rw-r--r--"));
         var e = assertThrows(IOException.class, () -> LinkSecret.load(file));
         assertTrue(e.getMessage().contains("chmod 600"), e.getMessage());
-        Files.setPosixFilePermissions(file, java.util.EnumSet.of(PosixFilePermission.OWNER_READ));
+        Files.setPosixFilePermissions(file, EnumSet.of(PosixFilePermission.OWNER_READ));
         Files.writeString(dir.resolve("bad"), "not hex");
         Files.setPosixFilePermissions(dir.resolve("bad"), PosixFilePermissions.fromString("rw-------"));
         assertTrue(assertThrows(IOException.class, () -> LinkSecret.load(dir.resolve("bad"))).getMessage()
@@ -191,7 +192,7 @@ class LinkSecurityTest {
             out.writeLong(0);
             out.writeLong(0);
             out.writeInt(1);
-            out.writeObject(new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
+            SensorInfoCodec.write(out, new SensorInfo(SensorKind.LEFT_DISTANCE.id(), i));
         }
         out.flush();
         var never = new SensorDataReader(new ByteArrayInputStream(raw.toByteArray()), limits);

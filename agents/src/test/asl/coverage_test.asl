@@ -1,0 +1,108 @@
+// Skill test of avoidance and coverage for the two-sensor MyBot (skills/coverage.asl): its set-up
+// gives the middleware dead reckoning and (in a large arena) closer obstacle levels; an obstacle
+// makes the robot turn away from its side and veer off along an arc once it clears; obstacles that
+// come too often lead to an escape; random motion takes straight legs, cut short over floor
+// already crossed, and turns towards new floor. The operations are mocked (agents/README.md
+// "Testing skills").
+{ include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
+{ include("../../main/asl/skills/coverage.asl") }
+
+maxSpeed(100).
+arena(3, 3).
+mock_operation(_, ok).
+
+// what the skill needs of recovery: the obstacle clears at once
++!clear <- -obstacle(true); +obstacle(false).
+
+// a new obstacle percept (the previous one gone)
++!obstacle_ahead(D) <- -+delta(D); -obstacle(false); -obstacle(true); !!perceive(obstacle(true)).
+
+@[test]
++!test_set_up_in_a_large_arena_gives_odometry_and_closer_obstacle_levels
+    <- !forget_calls; !setUpCoverage;
+       !assert_true(mock_called(odometry(0.001, 0.09)));
+       !assert_true(mock_called(exploreHorizon(0.6)));
+       !assert_true(mock_called(obstacleLevels(480, 300)));
+       !assert_true(mock_called(deltaLimit(150))).
+
+@[test]
++!test_set_up_in_a_small_arena_keeps_the_thesis_obstacle_levels
+    <- !forget_calls; -+arena(1, 1); !setUpCoverage; -+arena(3, 3);
+       !assert_true(mock_called(odometry(_, _)));
+       !assert_false(mock_called(obstacleLevels(_, _))).
+
+@[test]
++!test_an_obstacle_on_the_left_turns_right_then_veers_away
+    <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(40);
+       !until(mock_called(setSpeeds(100, V)) & V < 100 & V > 0, 2000);
+       !assert_true(mock_called(stop));
+       !assert_true(mock_called(setSpeeds(100, -100)));                  // on the spot, away from it
+       !assert_true(mock_called(setSpeeds(100, V)) & V < 100 & V > 0);   // the arc, still away
+       !until(not veering, 2000);
+       !assert_false(avoiding | veering);
+       ?obstacleTimes(L);
+       !assert_equals(1, .length(L)).                                     // noted for the trap count
+
+@[test]
++!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
+    <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(0);
+       !until(not avoiding & mock_called(turnAround), 2000);
+       !assert_true(mock_called(backward));
+       !assert_true(mock_called(turnAround)).
+
+@[test]
++!test_obstacles_too_often_lead_to_an_escape
+    <- !forget_calls; .system_time(T);
+       -+obstacleTimes([T, T, T, T]);                                     // the fifth makes a trap
+       !obstacle_ahead(40);
+       !until(obstacleTimes([]) & not avoiding, 5000);
+       !assert_true(mock_called(setSpeeds(-100, -100)));                  // a step back
+       !assert_true(mock_called(setSpeeds(100, -100)));                   // the turn on the spot
+       !assert_true(obstacleTimes([]));                                   // the count starts again
+       !assert_false(veering).
+
+@[test]
++!test_old_obstacles_do_not_count_for_a_trap
+    <- .system_time(T); -+obstacleTimes([T - 20000, T - 30000]);
+       !noteObstacle;
+       ?obstacleTimes(L);
+       !assert_equals(1, .length(L)).
+
+@[test]
++!test_a_straight_leg_is_cut_short_over_floor_crossed_before
+    <- !forget_calls; -stale; -obstacle(true); +mock_operation(staleTime(5000), ok);
+       !!move(0.2);
+       !until(stale, 2000);
+       -mock_operation(staleTime(5000), ok);
+       !assert_true(mock_called(setSpeeds(100, 100)));
+       !assert_true(stale).
+
+@[test]
++!test_a_turn_goes_towards_new_floor
+    <- !forget_calls; -stale; -+obstacleTimes([]);
+       +mock_operation(exploreTurn(100, "left", 50), ok); +mock_operation(staleTime(0), ok);
+       !!move(0.8);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       .drop_desire(move(_));
+       !assert_true(mock_called(exploreTurn(100, "left", 50)));
+       !assert_true(mock_called(setSpeeds(-100, 100))).
+
+@[test]
++!test_no_turn_just_after_an_obstacle
+    <- !forget_calls; .system_time(T); -+obstacleTimes([T]);
+       !!move(0.8);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       .drop_desire(move(_));
+       !assert_false(mock_called(exploreTurn(_, _, _))).
+
+@[test]
++!test_random_motion_waits_while_avoiding
+    <- !forget_calls; -+obstacleTimes([]); +avoiding; -obstacle(true);
+       !!move(0.2);
+       .wait(200);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -avoiding;
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       .drop_desire(move(_));
+       !assert_true(mock_called(setSpeeds(100, 100))).
