@@ -1,6 +1,6 @@
 // Skill: delivery to the storage area (thesis Chapter 4 §3), with the Khepera's GPS and compass.
 // After picking a cylinder the robot aligns with the compass towards the storage point computed
-// from GPS (computeGap, balance), goes straight, avoids obstacles by a detour and re-aligns, puts
+// from GPS (heading.asl: computeGap, balance), goes straight, goes round obstacles and re-aligns, puts
 // the cylinder down at the storage point (targetReached), turns around and leaves the area
 // (outOfStorageArea), never entering it without a cylinder (noAccess); then it looks for the next.
 // Parameters:
@@ -8,8 +8,6 @@ threshold(0.04).    // m: the storage point is reached within it, per axis (the 
 ray(0.04).          // the threshold in force for the storage point (raiseRay; recharge restores it)
 maxRay(0.04).       // the widest threshold: with a wider one the robot stopped outside the area,
                     // put the cylinder down there and turned into the area empty
-steerEvery(2500).   // ms between heading checks on the way
-detours(0).         // obstacles met on this trip: each detour goes round longer
 stored(0).          // cylinders put down at the storage point so far
 // no cylinder is picked within storageClearance of the storage point: its radius (from the world)
 // and the cylinder held in front of the robot (a fixed 0.22 m left a cylinder knocked out of the
@@ -17,11 +15,12 @@ stored(0).          // cylinders put down at the storage point so far
 storageClearance(C) :- storageRadius(R) & C = R + 0.09.
 storageClearance(0.15) :- not storageRadius(_).
 // Reads: storagePoint(X, Z), storageRadius(R) (from the world file, as initial beliefs: no
-// coordinate is written in an agent); travelSpeed(V) (far sight); lastAvoid(T) (avoidance);
+// coordinate is written in an agent); lastAvoid(T) (avoidance);
 // onErrand, halted (rules a skill that sends the robot elsewhere extends, e.g. recharge).
-// Beliefs: delivering, insideArea, firstTime, ~delivered, targetPoint(X, Z), desired(Degrees).
+// Beliefs: delivering, insideArea, firstTime, ~delivered, targetPoint(X, Z).
 // Rules it offers: travelling (on the way to a target: obstacles are gone round, not avoided),
 // pickingOff (no cylinder is taken), nearStorage.
+// Includes heading.asl (the compass: computeGap, balance, steer, detour).
 // Needs: picking (it supplies +!go_ahead : picked(true)), avoidance (!avoid), recovery (!escape),
 // sweep (!found, !nextWaypoint, searchClock). Include it after recharge, before avoidance.
 // Fixed from the listing: "--b" and "+-b" stand for "-+b"; the balance window compares the
@@ -42,25 +41,6 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 @setUpDelivery
 +!setUpDelivery : storagePoint(X, Z) & storageClearance(SC) & threshold(T)
     <- deltaBased(false); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z); ignoreCylindersNear(X, Z, SC); setThreshold(T).
-
-/* Going round obstacles on the way: a detour, then re-align (Chapter 4 §3.1) */
-
-// Recovery, not in the thesis: the detour is one goal (a newer obstacle replaces it) and goes
-// round the obstacle longer each time (forward 1 s, then up to 4 s more); a lateral obstacle
-// is gone round as a front one.
-@detourObstacle
-+obstacle(true) : travelling & delta(D) & not insideArea
-    <- .drop_intention(balance); .drop_intention(detour(_)); !detour(D).
-@detourLateral
-+lateralObstacle(S) : travelling & not insideArea & not avoiding
-    <- .drop_intention(balance); .drop_intention(detour(_)); if (S == "left") { !detour(-1) } else { !detour(1) }.
-// forward before re-aligning: re-aligning at once turned the robot back into the obstacle it had
-// just left, and it could dither for minutes in front of a box between it and the storage point
-@detour
-+!detour(D) : detours(N)
-    <- +avoiding; stop; !avoid(D); -+detours(N + 1);
-       .random(R); F = 1000 + R * 1000 * math.min(N, 4); forward; .wait(F);
-       !computeGap; !balance.
 
 /* At the storage point (Chapter 4 §3.1) */
 
@@ -95,41 +75,6 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     <- computeAngle(Sx, Sz, X, Z, Away); -+desired(Away); !balance; forward; .wait(2000).
 @leaveStorageBlind +!leaveStorage <- turnAround; .wait(2000); forward; .wait(1500).
 
-/* Heading towards the target point with the compass (Chapter 4 §3.1) */
-
-@computeGap
-+!computeGap : location(X, Y, Z) & targetPoint(Tx, Tz)
-    <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
-
-@balanced
-+!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
-    <- stop; -~around; +firstTime; !cruise.
-// near 0/360 the window above never holds (e.g. D = 0.3, O = 359.9)
-@balancedAcrossNorth
-+!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
-    <- stop; -~around; +firstTime; !cruise.
-@balanceRight
-+!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
-    <- setSpeeds(25, -10); .wait(20); !balance.
-@balanceLeft
-+!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
-    <- setSpeeds(-10, 25); .wait(20); !balance.
-@balanceWait +!balance <- .wait(20); !balance.
-// the balance plans end by going on at travelSpeed (the thesis: forward)
-@cruise +!cruise : travelSpeed(V) <- setSpeeds(V, V).
-
-// while delivering: re-align when the heading is off by more than 10 degrees
-@steer
-+!steer : travelling & not halted & steerEvery(T)
-    <- .wait(T);
-       if (not avoiding & not .intend(balance) & not halted & travelling & location(X, _, Z) & targetPoint(Tx, Tz)) {
-           computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
-           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
-       };
-       !steer.
-@steerDone +!steer.
-@steerRetry -!steer <- .wait(500); !steer.
-
 /* The task: a cylinder picked is delivered; random motion waits meanwhile */
 
 @deliverPicked
@@ -152,10 +97,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 /* No progress though the wheels turn (the middleware's "stuck"): escape, then carry on */
 
 @stuckIgnored +stuck : picking | insideArea.
-@stuckOnTheWay
-+stuck : travelling & not avoiding
-    <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
-       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.
+{ include("heading.asl") }
 // near the storage area without a cylinder: away from it, not backwards into it
 @stuckNearStorage
 +stuck : nearStorage & not travelling & not avoiding

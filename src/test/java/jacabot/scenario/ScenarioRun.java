@@ -3,6 +3,7 @@ package jacabot.scenario;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
+import jacabot.app.run.RobotAgent;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
@@ -55,6 +56,8 @@ final class ScenarioRun {
     final List<Sample> samples = new ArrayList<>();
     final List<Release> releases = new ArrayList<>();
     LockstepCoordinator.Result result;
+    /** The lockstep run (its agents, its middleware artifact). */
+    LockstepRun lockstep;
     private long nowMs;
 
     private ScenarioRun(Experiment experiment, long seed, SimWorld world) {
@@ -93,14 +96,24 @@ final class ScenarioRun {
 
     private static ScenarioRun run(Experiment experiment, String agentResource, long seed, boolean noise, double seconds,
             UnaryOperator<WorldSpec> edit, BiConsumer<Long, ScenarioRun> eachStep) throws Exception {
+        var agent = new RobotAgent(RobotAgent.ALONE, AgentSource.resource(agentResource, experiment.id() + ".asl"));
+        return run(experiment, List.of(agent), seed, noise, seconds, edit, eachStep);
+    }
+
+    /**
+     * Runs {@code experiment} with the robot programmed by several agents sharing its middleware
+     * (e.g. a task agent and an energy agent); {@link #lockstep} is the run, for its middleware.
+     */
+    static ScenarioRun run(Experiment experiment, List<RobotAgent> agents, long seed, boolean noise, double seconds,
+            UnaryOperator<WorldSpec> edit, BiConsumer<Long, ScenarioRun> eachStep) throws Exception {
         WorldSpec s = WorldFileReader.read(ROOT.resolve(experiment.worldFile()));
         s = new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), seed, noise, s.walls(), s.boxes(),
                 s.cylinders(), s.storage(), s.charger(), s.robots(), s.events());
         s = edit.apply(s);
         ScenarioRun run = new ScenarioRun(experiment, seed, SimWorld.of(s));
-        var source = AgentSource.resource(agentResource, experiment.id() + ".asl");
-        var lockstep = new LockstepRun(run.world, null, experiment, source, seed,
+        var lockstep = new LockstepRun(run.world, null, experiment, agents, seed,
                 new PrintStream(run.new LineSink(), true, StandardCharsets.UTF_8));
+        run.lockstep = lockstep;
         AreaSpec storage = s.storage();
         lockstep.onStep(data -> {
             run.nowMs = data.simTimeMs();

@@ -1,7 +1,9 @@
 package jacabot.experiments;
 
+import jacabot.cartago.AgentId;
 import jacabot.cartago.Artifact;
 import jacabot.cartago.FollowingClock;
+import jacabot.cartago.GUARD;
 import jacabot.cartago.IBlockingCmd;
 import jacabot.cartago.INTERNAL_OPERATION;
 import jacabot.cartago.OPERATION;
@@ -44,6 +46,10 @@ public abstract class MiddlewareArtifact extends Artifact {
     private long simTimeMs;
     /** A lockstep step marker handled, its acknowledgement not yet requested (−1: none). */
     private long ackDue = -1;
+    private final WheelLease wheels = new WheelLease();
+
+    /** The holder in {@code wheels(Holder)} while no agent holds the wheels. */
+    public enum Wheels { FREE }
 
     /** What {@code failsafe(tripped)} says: the controller stopped the wheels on its own. */
     public enum FailSafe { TRIPPED }
@@ -222,6 +228,7 @@ public abstract class MiddlewareArtifact extends Artifact {
 
     /** {@return the commands issued since the last call (lockstep)} */
     public synchronized List<Command> takeCommands() {
+        wheels.endStep();
         var out = new ArrayList<>(outbox);
         outbox.clear();
         return out;
@@ -254,41 +261,100 @@ public abstract class MiddlewareArtifact extends Artifact {
         stopDistance = false;
     }
 
+    // ---- the wheels, one agent's at a time --------------------------------------------------------
+
+    /**
+     * The caller holds the wheels until it releases them; waits while another agent holds them
+     * (not in the thesis: one robot, several agents). Observable: {@code wheels(Holder)}, defined
+     * at the first call ({@code free} when released), so an agent alone on its robot never sees it.
+     */
+    @OPERATION
+    void acquireWheels() {
+        AgentId me = getCurrentOpAgentId();
+        await("wheelsFreeFor", me.name());
+        wheels.hold(me.name());
+        showWheels(me);
+    }
+
+    @GUARD
+    boolean wheelsFreeFor(String agent) {
+        return wheels.isFreeFor(agent);
+    }
+
+    /** The caller lets the wheels go (it did not hold them: nothing happens). */
+    @OPERATION
+    void releaseWheels() {
+        if (wheels.release(getCurrentOpAgentId().name())) {
+            showWheels(Wheels.FREE);
+        }
+    }
+
+    private void showWheels(Object holder) {
+        if (hasObsProperty("wheels")) {
+            updateObsProperty("wheels", holder);
+        } else {
+            defineObsProperty("wheels", holder);
+        }
+    }
+
+    /** {@return who holds the wheels, whose commands went through in this step and how many were refused} */
+    public WheelLease wheelLease() {
+        return wheels;
+    }
+
+    /**
+     * Sends a wheel command, unless the wheels are leased ({@link WheelLease}) and the caller does not
+     * hold them, or another agent drove them in this step: then the operation fails
+     * ({@code wheels_held_by(Holder)}, {@code wheels_not_held}).
+     */
+    private void drive(Command c) {
+        String me = getCurrentOpAgentId().name();
+        var refusal = wheels.command(me);
+        if (refusal.isPresent()) {
+            var holder = wheels.holder();
+            if (holder.isPresent()) {
+                failed(me + " may not command the wheels: " + refusal.get(), "wheels_held_by", new AgentId(holder.get()));
+            }
+            failed(me + " may not command the wheels: " + refusal.get(), "wheels_not_held");
+        }
+        send(c);
+    }
+
     // ---- robot commands -------------------------------------------------------------------------
 
     @OPERATION
     void setSpeeds(double left, double right) {
-        send(Command.setSpeeds(left, right));
+        drive(Command.setSpeeds(left, right));
     }
 
     @OPERATION
     void stop() {
-        send(Command.stop());
+        drive(Command.stop());
     }
 
     @OPERATION
     void forward() {
-        send(Command.forward());
+        drive(Command.forward());
     }
 
     @OPERATION
     void backward() {
-        send(Command.backward());
+        drive(Command.backward());
     }
 
     @OPERATION
     void turnLeft() {
-        send(Command.turnLeft());
+        drive(Command.turnLeft());
     }
 
     @OPERATION
     void turnRight() {
-        send(Command.turnRight());
+        drive(Command.turnRight());
     }
 
     @OPERATION
     void turnAround() {
-        send(Command.turnAround());
+        drive(Command.turnAround());
     }
 
     @Override

@@ -81,7 +81,8 @@ class SkillLibraryTest {
     /** Within one agent (its includes read in), a label names one plan, and every include is found. */
     @Test
     void everyAgentNamesEachPlanOnce() throws Exception {
-        for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up")) {
+        for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up",
+                "suspend-resume-task", "suspend-resume-energy")) {
             Path file = ASL.resolve(agent + ".asl");
             if (!Files.exists(file)) {
                 continue;

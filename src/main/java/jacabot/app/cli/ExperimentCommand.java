@@ -21,6 +21,7 @@ import jacabot.app.run.LagMeter;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
 import jacabot.app.run.RealTimeRun;
+import jacabot.app.run.RobotAgent;
 import jacabot.app.world.Landmarks;
 import jacabot.cartago.CartagoException;
 import jacabot.robot.Experiment;
@@ -58,6 +59,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
@@ -98,6 +100,11 @@ final class ExperimentCommand implements Callable<Integer> {
 
     @Option(names = "--agent", paramLabel = "FILE", description = "the agent (default: the packaged agents/src/main/asl/NAME.asl)")
     private Path agent;
+
+    @Option(names = "--agents", paramLabel = "NAMES", split = ",", description = "the robot programmed by several agents "
+            + "sharing its middleware (not in the thesis: its Chapter 6), each NAME the packaged agents/src/main/asl/EXPERIMENT-NAME.asl; "
+            + "suspend-resume: task,energy. Lockstep, headless")
+    private List<String> agentNames;
 
     @Option(names = "--baseline", description = "run the procedural baseline controller (the thesis' C program) instead of the agent")
     private boolean baseline;
@@ -170,17 +177,24 @@ final class ExperimentCommand implements Callable<Integer> {
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),
                 spec.walls(), spec.boxes(), spec.cylinders(), spec.storage(), spec.charger(), spec.robots(), spec.events());
-        AgentSource source = agent != null ? readAgent(Installation.locate(agent))
-                : AgentSource.packaged(experiment, "agents/src/main/asl/" + experiment.id() + ".asl");
-        String sourceName = source.name();
+        List<RobotAgent> robotAgents = agentNames == null
+                ? List.of(new RobotAgent(RobotAgent.ALONE, agent != null ? readAgent(Installation.locate(agent))
+                        : AgentSource.packaged(experiment, "agents/src/main/asl/" + experiment.id() + ".asl")))
+                : RobotAgents.packaged(experiment, agentNames, agent != null ? "--agent" : baseline ? "--baseline" : null);
+        AgentSource source = robotAgents.get(0).source();
+        String sourceName = robotAgents.stream().map(a -> a.source().name()).collect(Collectors.joining(", "));
         var mixUps = new ArrayList<String>();
         if (!baseline) {
-            mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), source.text(), sourceName));
+            for (RobotAgent a : robotAgents) {
+                mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), a.source().text(), a.source().name()));
+            }
         } else {
             ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
         }
-        Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agent, baseline, runSeed);
+        // several agents: their names stand for the agent file's in the folder (runs/suspend-resume-task-energy-13)
+        Path agentPart = agentNames == null ? agent : Path.of(String.join("-", agentNames) + ".asl");
+        Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agentPart, baseline, runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
         SimWorld simWorld;
         try {
@@ -212,7 +226,8 @@ final class ExperimentCommand implements Callable<Integer> {
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
-        boolean viewer = !headless && !lockstep && !GraphicsEnvironment.isHeadless();
+        // the real-time run with the viewer hosts one agent; several run in lockstep
+        boolean viewer = !headless && !lockstep && agentNames == null && !GraphicsEnvironment.isHeadless();
         if (viewer) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
@@ -221,7 +236,7 @@ final class ExperimentCommand implements Callable<Integer> {
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         try {
-            run = new LockstepRun(simWorld, null, experiment, source, runSeed, console);
+            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, console);
         } catch (AslSyntaxException e) {
             throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
@@ -311,6 +326,9 @@ final class ExperimentCommand implements Callable<Integer> {
             }
             double wall = (System.nanoTime() - start) / 1e9;
             report(log, recorder.summary("agent"), simWorld, outDir, wall, run.cycles(), files(worldFile, sourceName));
+            if (robotAgents.size() > 1) {
+                log.result(RobotAgents.wheelSummary(run.middleware().wheelLease()));
+            }
             RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             if (inspector != null) {

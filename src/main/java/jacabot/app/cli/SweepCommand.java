@@ -75,6 +75,10 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--agent", paramLabel = "FILE", description = "the agent to run (only with one EXPERIMENT), e.g. the thesis' as published: agents/src/main/asl/as-published/navigation.asl, found from any folder (default: the packaged one)")
     private Path agent;
 
+    @Option(names = "--agents", paramLabel = "NAMES", split = ",", description = "the robot programmed by several agents "
+            + "(only with one EXPERIMENT), as jacabot experiment --agents: suspend-resume: task,energy")
+    private List<String> agentNames;
+
     @Option(names = "--jobs", paramLabel = "J", description = "runs at once (default: one per core, here ${DEFAULT-VALUE})")
     private int jobs = Runtime.getRuntime().availableProcessors();
 
@@ -146,6 +150,9 @@ final class SweepCommand implements Callable<Integer> {
             if (agent != null && experiment.equals("all")) {
                 throw new IllegalArgumentException("--agent needs one EXPERIMENT, not all");
             }
+            if (agentNames != null && experiment.equals("all")) {
+                throw new IllegalArgumentException("--agents needs one EXPERIMENT, not all");
+            }
             if (worlds != null && generate != null) {
                 throw new IllegalArgumentException("--worlds and --generate exclude each other");
             }
@@ -200,6 +207,9 @@ final class SweepCommand implements Callable<Integer> {
                 .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
         if (agentSource != null) {
             sweep.agent(experiments.get(0), agentSource);
+        }
+        if (agentNames != null) {
+            sweep.agents(experiments.get(0), RobotAgents.packaged(experiments.get(0), agentNames, agent != null ? "--agent" : null));
         }
         Sweep.Outcomes result = sweep.run(jobList);
         List<RunOutcome> runs = new ArrayList<>(result.runs());

@@ -43,7 +43,8 @@ public final class RunTap implements Closeable {
         this.world = run.world();
         this.robot = world.robots().get(0);
         this.log = log;
-        var agent = run.mas().agent("robot");
+        // a robot programmed by several agents: the first one's mind (the task agent's)
+        var agent = run.mas().agent(run.agentNames().get(0));
         this.watch = agent == null ? null : MindWatch.attach(inspector, agent, this::robotView);
         run.onCommands(this::afterStep);
     }

@@ -37,7 +37,9 @@ import java.util.function.Consumer;
  * An experiment with the agent in the loop, in lockstep: each control step the world's readings
  * reach the middleware artifact, the agent reasons until it is idle, its commands go back, and
  * only then does the world advance. Agents, artifacts and the world all run in simulated time,
- * so a run is as fast as the machine allows and replays exactly under a seed.
+ * so a run is as fast as the machine allows and replays exactly under a seed. A robot may be
+ * programmed by several agents sharing its middleware artifact ({@link RobotAgent}): all of them
+ * reason every step until the system is idle.
  */
 public final class LockstepRun implements AutoCloseable {
     /** At most this many reasoning cycles per control step (a busy agent cannot stall the world). */
@@ -65,8 +67,8 @@ public final class LockstepRun implements AutoCloseable {
     private boolean remoteController;
     private boolean inMemory;
     private volatile LockstepCoordinator coordinator;
-    private final FailureWatch failures;
-    private final List<Literal> initialGoals;
+    /** The robot's agents, in the order they were made (each reasons every step, in this order). */
+    private final List<Member> members = new ArrayList<>();
     private boolean reasoned;
     private Consumer<StepData> onStep = d -> {
     };
@@ -74,11 +76,31 @@ public final class LockstepRun implements AutoCloseable {
     };
     private volatile Consumer<Agent> beforeCycle;
 
+    /** One agent of the robot and what watches it for failures. */
+    private record Member(String name, FailureWatch failures, List<Literal> initialGoals) {
+    }
+
     /**
-     * @param agent the agent's program (its includes are read from where it came from)
+     * @param agent the agent's program (its includes are read from where it came from), named
+     *              {@value RobotAgent#ALONE}
      */
     public LockstepRun(SimWorld world, String robotName, Experiment experiment, AgentSource agent,
             long seed, PrintStream console) throws AslSyntaxException, CartagoException {
+        this(world, robotName, experiment, List.of(new RobotAgent(RobotAgent.ALONE, agent)), seed, console);
+    }
+
+    /**
+     * The robot programmed by several agents sharing its middleware artifact (the thesis' Chapter 6
+     * wish): each step, all of them reason until the system is idle; the middleware lends the wheels
+     * to one at a time ({@link MiddlewareArtifact#wheelLease}).
+     *
+     * @param agents the robot's agents, at least one, names unique
+     */
+    public LockstepRun(SimWorld world, String robotName, Experiment experiment, List<RobotAgent> agents,
+            long seed, PrintStream console) throws AslSyntaxException, CartagoException {
+        if (agents.isEmpty() || agents.stream().map(RobotAgent::name).distinct().count() != agents.size()) {
+            throw new IllegalArgumentException("a robot needs one or more agents with distinct names, got " + agents);
+        }
         this.world = world;
         this.robotName = robotName;
         workspace = Workspace.builder("main").stepped().clock(clock).console(console)
@@ -90,12 +112,17 @@ public final class LockstepRun implements AutoCloseable {
         // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
         middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
-        AslParser parser = agent.parser();
+        for (RobotAgent agent : agents) {
+            members.add(createAgent(agent, experiment));
+        }
+    }
+
+    private Member createAgent(RobotAgent agent, Experiment experiment) throws AslSyntaxException {
+        AslParser parser = agent.source().parser();
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
-        AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
-        initialGoals = program.goals();
-        failures = new FailureWatch(initialGoals);
-        mas.createAgent("robot", program, parser, local -> new CAgentArch(local) {
+        AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world.spec(), experiment);
+        var member = new Member(agent.name(), new FailureWatch(program.goals()), program.goals());
+        mas.createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
             @Override
             public void sense(Agent a) { // the start of each reasoning cycle, on the run's thread
                 Consumer<Agent> hook = beforeCycle;
@@ -105,12 +132,13 @@ public final class LockstepRun implements AutoCloseable {
                 super.sense(a);
             }
         }).setPlanListener((event, plan) -> {
-            failures.planSelected(event, clock.nowMillis());
+            member.failures().planSelected(event, clock.nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
                 reactive.record((System.nanoTime() - deliveredNanos) / 1000);
             }
         });
+        return member;
     }
 
     private static boolean isPercept(Event e) {
@@ -211,7 +239,23 @@ public final class LockstepRun implements AutoCloseable {
      * {@code .stopMAS} before the end, a failure storm: {@link FailureWatch}); the run ended at that step
      */
     public Optional<String> agentFailure() {
-        return failures.verdict();
+        for (Member m : members) {
+            Optional<String> verdict = m.failures().verdict();
+            if (verdict.isPresent()) {
+                return members.size() == 1 ? verdict : Optional.of(m.name() + ": " + verdict.get());
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** {@return the names of the robot's agents, in the order they were made} */
+    public List<String> agentNames() {
+        return members.stream().map(Member::name).toList();
+    }
+
+    /** {@return the robot's middleware artifact (the wheels' holder and drivers: {@link MiddlewareArtifact#wheelLease})} */
+    public MiddlewareArtifact middleware() {
+        return middleware;
     }
 
     /** Ends a run in progress at the current step; {@link #runFor} returns what it has. */
@@ -259,13 +303,13 @@ public final class LockstepRun implements AutoCloseable {
             cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
             if (!reasoned) {
                 reasoned = true;
-                failures.firstReasoningDone(mas.agent("robot").planLibrary(), initialGoals);
+                members.forEach(m -> m.failures().firstReasoningDone(mas.agent(m.name()).planLibrary(), m.initialGoals()));
             }
             if (mas.isStopped()) {
-                failures.systemStopped(clock.nowMillis());
+                members.forEach(m -> m.failures().systemStopped(clock.nowMillis()));
             }
             LockstepCoordinator c = coordinator;
-            if (failures.verdict().isPresent() && c != null) {
+            if (agentFailure().isPresent() && c != null) {
                 c.endAfterThisStep(); // a failed agent does not run out its duration
             }
         }

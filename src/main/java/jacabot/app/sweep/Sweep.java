@@ -2,6 +2,7 @@ package jacabot.app.sweep;
 
 import jacabot.app.console.ConsoleLog;
 import jacabot.app.run.AgentSource;
+import jacabot.app.run.RobotAgent;
 import jacabot.robot.Experiment;
 import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
@@ -39,7 +40,7 @@ public final class Sweep {
     private boolean socket;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
-    private final Map<Experiment, AgentSource> agents = new EnumMap<>(Experiment.class);
+    private final Map<Experiment, List<RobotAgent>> agents = new EnumMap<>(Experiment.class);
 
     /**
      * What a sweep leaves: every outcome (in job order), the wall-clock time it took, the CPU time
@@ -109,7 +110,12 @@ public final class Sweep {
 
     /** Runs {@code agent} as the agent of experiment {@code e}, not the packaged one. */
     public Sweep agent(Experiment e, AgentSource agent) {
-        agents.put(e, agent);
+        return agents(e, List.of(new RobotAgent(RobotAgent.ALONE, agent)));
+    }
+
+    /** Runs experiment {@code e}'s robot programmed by these agents (the thesis' Chapter 6 wish), not the packaged one. */
+    public Sweep agents(Experiment e, List<RobotAgent> robotAgents) {
+        agents.put(e, List.copyOf(robotAgents));
         return this;
     }
 
@@ -133,9 +139,9 @@ public final class Sweep {
             futures.put(done.submit(() -> {
                 started.put(index, System.nanoTime());
                 SweepJob job = list.get(index);
-                AgentSource given = agents.get(job.experiment()); // read only once the jobs run
-                SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS,
-                        given != null ? given : SweepRun.packaged(job.experiment()), socket);
+                List<RobotAgent> given = agents.get(job.experiment()); // read only once the jobs run
+                SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS, given != null ? given
+                        : List.of(new RobotAgent(RobotAgent.ALONE, SweepRun.packaged(job.experiment()))), socket);
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

@@ -2,6 +2,7 @@ package jacabot.app.sweep;
 
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
+import jacabot.app.run.RobotAgent;
 import jacabot.app.world.Landmarks;
 import jacabot.robot.Experiment;
 import jacabot.robot.baseline.BaselineController;
@@ -78,6 +79,11 @@ public final class SweepRun {
      * its logs, without the socket's system calls and thread hand-offs.
      */
     public static Result run(SweepJob job, double seconds, double wallLimitS, AgentSource agent, boolean socket) {
+        return run(job, seconds, wallLimitS, List.of(new RobotAgent(RobotAgent.ALONE, agent)), socket);
+    }
+
+    /** Runs a job with the robot programmed by the given agents sharing its middleware (the thesis' Chapter 6 wish). */
+    public static Result run(SweepJob job, double seconds, double wallLimitS, List<RobotAgent> agents, boolean socket) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -107,7 +113,7 @@ public final class SweepRun {
         String message = "";
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
-                try (var run = new LockstepRun(world, null, e, agent, job.seed(),
+                try (var run = new LockstepRun(world, null, e, agents, job.seed(),
                         new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket)) {
                     run.runFor(seconds);
                     if (run.agentFailure().isPresent()) {

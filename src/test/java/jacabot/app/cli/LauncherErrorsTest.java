@@ -48,6 +48,17 @@ class LauncherErrorsTest {
     }
 
     @Test
+    void agentsThatAreNotPackagedOrClashAreUserErrors(@TempDir Path dir) {
+        String out = dir.resolve("o").toString();
+        assertOneLine(experiment("--agents", "task,energy", "--out", out), "2",
+                "--agents: no packaged agent agents/src/main/asl/obstacle-avoidance-task.asl (suspend-resume has task and energy");
+        assertOneLine(CliRun.run("experiment", "suspend-resume", "--agents", "task,task", "--out", out), "2",
+                "--agents: 'task' must be a new agent name");
+        assertOneLine(CliRun.run("experiment", "suspend-resume", "--agents", "task,energy", "--agent", "x.asl", "--out", out), "2",
+                "--agents: not with --agent");
+    }
+
+    @Test
     void anAgentThatIsNotAReadableFileIsAUserError(@TempDir Path dir) {
         assertOneLine(experiment("--agent", dir.toString(), "--out", dir.resolve("o").toString()), "2", "no such file");
         assertOneLine(experiment("--agent", dir.resolve("none.asl").toString()), "2", "no such file");

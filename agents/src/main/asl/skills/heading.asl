@@ -1,0 +1,78 @@
+// Skill: heading by compass to a target point (thesis Chapter 4 §3.1), with the Khepera's GPS and
+// compass: turn to the heading of the target point (computeGap, balance), go at travel speed,
+// re-align on the way (steer), go round an obstacle met on the way (detour) and escape when the
+// middleware says "stuck". Delivery heads for the storage point with it, recharge for the charger
+// and back to the marked point.
+// Parameters:
+steerEvery(2500).   // ms between heading checks on the way
+detours(0).         // obstacles met on this trip: each detour goes round longer
+// the wheel speed on the way: far sight's travelSpeed when the agent has it
+speedOnTheWay(V) :- travelSpeed(V).
+speedOnTheWay(100) :- not travelSpeed(_).
+// Reads: targetPoint(X, Z) (the skill that sends the robot: delivery, recharge); location, orientation,
+// delta (the middleware); travelling, halted, insideArea (rules of the skills that send the robot),
+// avoiding (avoidance).
+// Beliefs: desired(Degrees), firstTime, ~around (delivery reads them).
+// Needs: avoidance (!avoid), recovery (!escape). Included by delivery (between its "+stuck" plans:
+// picking and the storage area come first); an agent without delivery includes it before avoidance.
+
+/* Going round obstacles on the way: a detour, then re-align (Chapter 4 §3.1) */
+
+// Recovery, not in the thesis: the detour is one goal (a newer obstacle replaces it) and goes
+// round the obstacle longer each time (forward 1 s, then up to 4 s more); a lateral obstacle
+// is gone round as a front one.
+@detourObstacle
++obstacle(true) : travelling & delta(D) & not insideArea
+    <- .drop_intention(balance); .drop_intention(detour(_)); !detour(D).
+@detourLateral
++lateralObstacle(S) : travelling & not insideArea & not avoiding
+    <- .drop_intention(balance); .drop_intention(detour(_)); if (S == "left") { !detour(-1) } else { !detour(1) }.
+// forward before re-aligning: re-aligning at once turned the robot back into the obstacle it had
+// just left, and it could dither for minutes in front of a box between it and the storage point
+@detour
++!detour(D) : detours(N)
+    <- +avoiding; stop; !avoid(D); -+detours(N + 1);
+       .random(R); F = 1000 + R * 1000 * math.min(N, 4); forward; .wait(F);
+       !computeGap; !balance.
+
+/* Heading towards the target point with the compass (Chapter 4 §3.1) */
+
+@computeGap
++!computeGap : location(X, Y, Z) & targetPoint(Tx, Tz)
+    <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
+
+@balanced
++!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
+    <- stop; -~around; +firstTime; !cruise.
+// near 0/360 the window above never holds (e.g. D = 0.3, O = 359.9)
+@balancedAcrossNorth
++!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
+    <- stop; -~around; +firstTime; !cruise.
+@balanceRight
++!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
+    <- setSpeeds(25, -10); .wait(20); !balance.
+@balanceLeft
++!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
+    <- setSpeeds(-10, 25); .wait(20); !balance.
+@balanceWait +!balance <- .wait(20); !balance.
+// the balance plans end by going on at travelSpeed (the thesis: forward)
+@cruise +!cruise : speedOnTheWay(V) <- setSpeeds(V, V).
+
+// while travelling: re-align when the heading is off by more than 10 degrees
+@steer
++!steer : travelling & not halted & steerEvery(T)
+    <- .wait(T);
+       if (not avoiding & not .intend(balance) & not halted & travelling & location(X, _, Z) & targetPoint(Tx, Tz)) {
+           computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
+           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
+       };
+       !steer.
+@steerDone +!steer.
+@steerRetry -!steer <- .wait(500); !steer.
+
+/* No progress though the wheels turn, on the way */
+
+@stuckOnTheWay
++stuck : travelling & not avoiding
+    <- println("No progress: escaping"); .drop_intention(balance); .drop_intention(detour(_));
+       +avoiding; stop; !escape; -avoiding; .wait(800); !computeGap; !balance.

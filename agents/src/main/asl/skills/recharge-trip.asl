@@ -1,0 +1,77 @@
+// Skill: the trip to the charger and back (thesis Chapter 4 §4.1 and Appendix B). When the battery
+// runs low (lowBattery) the task is suspended (!suspendTask, "charging" believed), the robot marks
+// its position and orientation, goes to the charger, waits there for the charge, comes back to the
+// marked point, and the task resumes (!resumeTask(Orientation)).
+// Parameters:
+lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
+chargedLevel(900).      // J: and charged over it
+tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
+// Reads: charger(X, Z) (the world file).
+// Beliefs: charging, atCharger. Rules it extends: travelling, halted.
+// Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
+// hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
+// energy-agent.asl's when it is another agent's.
+// Deviations from the listing: the listing waits 3 s at the charger (".wait(3000)"); with the
+// world's 20 W charger that is 60 J, and the battery was low again within a minute. The robot
+// stops, ignores its distance sensors (a wall next to the charger must not make it leave) and
+// waits for the middleware's "charged" signal, two minutes at most. Charger and marked point are
+// reached with a 3 cm threshold (the charger's radius is 6 cm); the storage point's threshold (ray)
+// is restored afterwards. "!restoreOrientation(0)" restores the orientation marked when the battery
+// went low.
+
+travelling :- charging.
+halted :- atCharger.
+setUpGoal(setUpRecharge).
+forgetOnFall(atCharger).
+
+@setUpRecharge
++!setUpRecharge : lowBatteryLevel(L) & chargedLevel(C) <- batteryLevels(L, C).
+
+@stuckAtCharger +stuck : atCharger.
+
+/* Low battery: suspend, recharge, come back, resume (Chapter 4 §4.1) */
+
+// Recovery, not in the thesis: the waits for the charger, the charge and the marked point are
+// bounded (!reachCharger, !waitCharged, !reachMarked); the robot steers on the way (!!steer).
+// "charging" first: lowBattery comes every control step while the battery is low, and those queued
+// behind an atomic plan must find the robot charging already (else each one started a recharge)
+@rechargeSuspend
++lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
+    <- +charging; mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
+       !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
+       !chargerDone;
+       .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
+       -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
+       !reachMarked; stop; .print("Previous pt reached"); !resumeTask(O).
+
+// hooks for a robot that shares the charger (a team's skill: team-claims): its turn, then leave it
+@chargerFree +!awaitChargerTurn.
+@chargerLeft +!chargerDone.
+
+// the trip to the charger, "charging" believed (the task stays suspended): also a robot's way to park
+@goToCharger
++!goToCharger : charger(Cx, Cz)
+    <- .succeed_goal(move(_)); -avoiding; -+detours(0);
+       stop; setThreshold(0.03); -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz);
+       !computeGap; !!balance; !!steer; !reachCharger; +atCharger; stop; .drop_intention(balance); stop.
+
+// the charger is tried again (the battery must be charged), the marked point is given up (the
+// task resumes from where the robot is)
+@reachCharger +!reachCharger : tripTimeout(T) <- .wait({+targetReached}, T).
+@reachChargerAgain
+-!reachCharger[error(E), error_msg(M)]
+    <- println("Charger not reached yet (", E, " ", M, "): trying again"); !escape; !computeGap; !balance; !reachCharger.
+@waitCharged +!waitCharged <- .wait({+charged}, 120000).
+@notCharging
+-!waitCharged : battery(B) & lowBatteryLevel(L) & B < L
+    <- println("Not charging: back to the charger"); restartAcquireDistance; -atCharger;
+       !computeGap; !balance; !reachCharger; +atCharger; stop; stopAcquireDistance; !waitCharged.
+@chargeEnded -!waitCharged : battery(B) <- println("Charging ended at ", B, " J").
+@reachMarked +!reachMarked : tripTimeout(T) <- .wait({+targetReached}, T).
+@markedGivenUp
+-!reachMarked[error(E), error_msg(M)]
+    <- println("Marked point not reached in time (", E, " ", M, "): resuming from here").
+
+@restore[atomic]
++!restoreOrientation(D)
+    <- .print("Restoring"); -+desired(D); !balance; stop; .drop_intention(balance); .print("Restored"); .wait(500).
