@@ -134,7 +134,7 @@ final class ExperimentCommand implements Callable<Integer> {
 
     @Option(names = "--break", paramLabel = "SPEC", description = "lockstep: halt after the control step where SPEC "
             + "holds, print the mind and read commands (label:NAME, +!goal, -belief(_), belief:PATTERN, failure, t=60s)")
-    private List<String> breaks = new java.util.ArrayList<>();
+    private List<String> breaks = new ArrayList<>();
 
     @picocli.CommandLine.Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();

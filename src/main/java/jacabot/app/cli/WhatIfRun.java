@@ -1,5 +1,7 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
+import jacabot.app.plot.RunPlots;
 import jacabot.app.replay.StepArchive;
 import jacabot.app.replay.StepLog;
 import jacabot.app.replay.WhatIf;
@@ -40,7 +42,7 @@ final class WhatIfRun {
         StepLog.Header h = recorded.header();
         Experiment experiment = Experiment.parse(h.experiment())
                 .orElseThrow(() -> new UserError(dir + ": unknown experiment '" + h.experiment() + "' in its step log"));
-        Path worldFile = worldOption != null ? worldOption : jacabot.app.Installation.resolve(experiment.worldFile());
+        Path worldFile = worldOption != null ? worldOption : Installation.resolve(experiment.worldFile());
         SimWorld world;
         try {
             world = SimWorld.of(WorldFileReader.read(worldFile));
@@ -70,7 +72,7 @@ final class WhatIfRun {
             throw new UserError(agent + ": " + e.getMessage());
         }
         Files.writeString(target.resolve("event-log.txt"), r.recorder().summary("agent").eventLog());
-        jacabot.app.plot.RunPlots.writeAll(target, console);
+        RunPlots.writeAll(target, console);
         console.printf("Plans swapped at t=%.2f s. Written: %s, event-log.txt; compare with: jacabot plot %s %s%n",
                 r.swappedAtMs() / 1000.0, target.resolve(StepLog.FILE), dir, target);
         return r.swappedAtMs() < 0 ? 1 : 0;
