@@ -33,11 +33,15 @@ forgetOnFall(atCharger).
 
 // Recovery, not in the thesis: the waits for the charger, the charge and the marked point are
 // bounded (!reachCharger, !waitCharged, !reachMarked); the robot steers on the way (!!steer).
-// "charging" first: lowBattery comes every control step while the battery is low, and those queued
-// behind an atomic plan must find the robot charging already (else each one started a recharge)
-@rechargeSuspend
+// One trip per low battery: lowBattery comes every control step while the battery is low, and the
+// signals queued meanwhile must find the robot charging already. The plan that believes "charging"
+// is atomic, so no other lowBattery is considered before it (else each one started a trip).
+@rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
-    <- +charging; mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
+    <- +charging; !!rechargeTrip(X, Y, Z, O).
+@rechargeTrip
++!rechargeTrip(X, Y, Z, O)
+    <- mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
        !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
