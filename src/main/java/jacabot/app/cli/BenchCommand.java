@@ -31,15 +31,6 @@ final class BenchCommand implements Runnable {
         out.flush();
     }
 
-    /** {@return the seconds of a --duration} @throws UserError when it is not one */
-    static double duration(String text) {
-        try {
-            return ExperimentCommand.parseDuration(text);
-        } catch (IllegalArgumentException e) {
-            throw new UserError("--duration: " + e.getMessage());
-        }
-    }
-
     /** Our interpreter against Jason 3.2.0, side by side. */
     @Command(name = "interpreter", mixinStandardHelpOptions = true,
             description = {"Runs the same AgentSpeak programs on our interpreter and on Jason 3.2.0, alternating, "
@@ -144,7 +135,7 @@ final class BenchCommand implements Runnable {
             } catch (WorldFileException e) {
                 throw new UserError(e.getMessage());
             }
-            new SimulationBenchmark(world, duration(duration), runSeed, warmups, runs,
+            new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
@@ -174,7 +165,7 @@ final class BenchCommand implements Runnable {
                 throw new UserError("--speed must be a positive number, got " + speed);
             }
             new LatencyBenchmark(CompareCommand.bundled(root,
-                    Experiment.OBSTACLE_AVOIDANCE.worldFile()), duration(duration), speed,
+                    Experiment.OBSTACLE_AVOIDANCE.worldFile()), ExperimentCommand.duration(duration), speed,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }

@@ -51,7 +51,7 @@ final class CompareCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        double seconds = BenchCommand.duration(duration);
+        double seconds = ExperimentCommand.duration(duration);
         var out = ConsoleStreams.of(spec.commandLine().getOut());
         if (codeOnly) {
             codeTables(out);

@@ -146,12 +146,7 @@ final class ExperimentCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         ConsoleLog log = verbosity.console(commandSpec);
         PrintStream console = log.agents();
-        double seconds;
-        try {
-            seconds = parseDuration(duration);
-        } catch (IllegalArgumentException e) {
-            throw new UserError("--duration: " + e.getMessage());
-        }
+        double seconds = duration(duration);
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new UserError("--speed must be a positive number, got " + speed);
         }
@@ -552,6 +547,15 @@ final class ExperimentCommand implements Callable<Integer> {
         long ms = lags.stream().mapToLong(e -> e.endMs() - e.startMs()).sum();
         return String.format(Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
                 lags.size(), lags.size() == 1 ? "" : "s", ms / 1000.0, simulatedSeconds);
+    }
+
+    /** {@return the seconds of a --duration} @throws UserError when it is not one */
+    static double duration(String text) {
+        try {
+            return parseDuration(text);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--duration: " + e.getMessage());
+        }
     }
 
     static double parseDuration(String text) {

@@ -81,12 +81,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
             throw new UserError("unknown team experiment '" + name + "' (expected team-delivery)");
         }
         ConsoleLog log = verbosity.console(commandSpec);
-        double seconds;
-        try {
-            seconds = ExperimentCommand.parseDuration(duration);
-        } catch (IllegalArgumentException e) {
-            throw new UserError("--duration: " + e.getMessage());
-        }
+        double seconds = ExperimentCommand.duration(duration);
         Path worldFile = world != null ? Installation.locate(world) : Installation.resolve("worlds/team-delivery.json");
         WorldSpec spec = teamWorld(worldFile, robots);
         long runSeed = seed != null ? seed : spec.seed();

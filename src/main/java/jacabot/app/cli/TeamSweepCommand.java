@@ -82,12 +82,7 @@ final class TeamSweepCommand implements Callable<Integer> {
             throw new UserError("unknown team experiment '" + experiment + "' (expected team-delivery)");
         }
         ConsoleLog log = verbosity.console(commandSpec);
-        double seconds;
-        try {
-            seconds = ExperimentCommand.parseDuration(duration);
-        } catch (IllegalArgumentException e) {
-            throw new UserError("--duration: " + e.getMessage());
-        }
+        double seconds = ExperimentCommand.duration(duration);
         List<Long> runSeeds = seedsOf("--seeds", seeds);
         List<Long> worlds = seedsOf("--world-seeds", worldSeeds);
         if (jobs < 1 || robots.stream().anyMatch(n -> n < 1 || n > WorldGenerator.MAX_TEAM)) {
