@@ -186,11 +186,14 @@ public final class Debugger {
             cycleStepping = false;
         }
         listeners.forEach(l -> l.accept(h)); // before the halt is seen: what they print comes first
+        synchronized (this) {
+            halted = h;
+            notifyAll();
+        }
+        // set once: a resume that comes while a task runs (halted = null) must not be overwritten
         while (true) {
             Runnable task;
             synchronized (this) {
-                halted = h;
-                notifyAll();
                 while (halted == h && !stopped && tasks.isEmpty()) {
                     try {
                         wait();
