@@ -164,9 +164,12 @@ public final class Inspector implements AutoCloseable {
         Debugger d = debugger;
         var out = new LinkedHashMap<String, Object>();
         out.put("available", d != null);
-        Debugger.Halt h = d == null ? null : d.halted();
+        Debugger.State s = d == null ? null : d.state();
+        // the page shows no state older than the one it shows (a command's answer may come after a push)
+        out.put("version", s == null ? 0 : s.version());
+        Debugger.Halt h = s == null ? null : s.halted();
         out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason(), "mind", h.mind()));
-        out.put("breakpoints", d == null ? List.of() : d.breakpoints().stream().map(Breakpoint::text).toList());
+        out.put("breakpoints", s == null ? List.of() : s.breakpoints());
         out.put("editable", edits != null);
         out.put("whatIfs", List.copyOf(whatIfs));
         return out;
