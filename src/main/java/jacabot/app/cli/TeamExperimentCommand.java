@@ -3,6 +3,10 @@ package jacabot.app.cli;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.Inspector;
+import jacabot.app.plot.RunPlots;
+import jacabot.app.replay.StepLog;
+import jacabot.app.replay.TeamTap;
 import jacabot.app.run.AgentSource;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
@@ -72,6 +76,9 @@ final class TeamExperimentCommand implements Callable<Integer> {
     @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
+    @Mixin
+    private InspectorOptions inspectorOptions = new InspectorOptions();
+
     @Spec
     private CommandSpec commandSpec;
 
@@ -95,17 +102,21 @@ final class TeamExperimentCommand implements Callable<Integer> {
                 + ", lockstep.");
         long t0 = System.nanoTime();
         TeamDeliveryRun.Outcome outcome;
+        Inspector inspector = null;
         if (baseline) {
             outcome = TeamDeliveryRun.baseline(spec, runSeed, seconds);
         } else {
             PrintStream console = log.agents();
             long every = 60_000;
-            try {
+            inspector = inspectorOptions.start(false, "team-delivery, " + n + " robots, seed " + runSeed,
+                    ConsoleLog.lines(log::result));
+            Inspector page = inspector;
+            try { // every robot's step log (DIR/ROBOT/steps.jsonl.gz) and mind in the inspector
                 outcome = TeamDeliveryRun.agents(spec, source, runSeed, seconds, console, false, t -> {
                     if (t > 0 && t % every == 0) {
                         log.info(String.format(Locale.ROOT, "t=%d s", t / 1000));
                     }
-                });
+                }, run -> TeamTap.attach(run, page, outDir, WorldGenerator.TEAM_DELIVERY, source.name()));
             } catch (AslSyntaxException e) {
                 throw UserError.located(e.getMessage());
             } catch (CartagoException e) {
@@ -117,7 +128,16 @@ final class TeamExperimentCommand implements Callable<Integer> {
         write(outDir, outcome, text);
         log.info("");
         text.forEach(log::result);
-        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt");
+        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt"
+                + (baseline ? "" : ", ROBOT/" + StepLog.FILE + " (jacabot replay " + outDir + " --headless --inspector)"));
+        if (!baseline) {
+            RunPlots.writeTeam(outDir, ConsoleLog.lines(log::result));
+        }
+        if (inspector != null) {
+            inspector.showPlots(outDir);
+            inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
+            inspector.close();
+        }
         if (outcome.agentFailure().isPresent()) {
             throw new RunFailure(outcome.agentFailure().get());
         }

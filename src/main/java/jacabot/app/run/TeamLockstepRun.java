@@ -25,6 +25,7 @@ import jacabot.experiments.team.ChargerQueue;
 import jacabot.experiments.team.TaskBoard;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Experiment;
+import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
@@ -71,6 +72,14 @@ public final class TeamLockstepRun implements AutoCloseable {
     private RuntimeException failure;
     private Consumer<Long> onStep = t -> {
     };
+    private RobotStepListener onAnswer = (robot, data, commands) -> {
+    };
+
+    /** What a robot's link delivered in a control step and what its agent answered. */
+    @FunctionalInterface
+    public interface RobotStepListener {
+        void afterStep(String robot, StepData data, List<Command> commands);
+    }
 
     /**
      * @param world every robot of it is a member of the team, in the file's order
@@ -114,6 +123,15 @@ public final class TeamLockstepRun implements AutoCloseable {
     /** Called after each control step with the simulated time (progress lines). */
     public void onStep(Consumer<Long> listener) {
         this.onStep = listener;
+    }
+
+    /**
+     * Called for each robot after each control step, in the world file's order, with its readings
+     * and the commands going to it: the agents are idle, the world not yet stepped (step logs, the
+     * inspector). Only reads, so the run is the same with or without it.
+     */
+    public void onAnswer(RobotStepListener listener) {
+        this.onAnswer = listener;
     }
 
     public SimWorld world() {
@@ -218,7 +236,7 @@ public final class TeamLockstepRun implements AutoCloseable {
                 }
             }
             for (TeamMember m : members) {
-                m.answer(stepLogs);
+                m.answer(stepLogs, onAnswer);
             }
             for (TeamMember m : members) {
                 m.link().controller().finishStep();

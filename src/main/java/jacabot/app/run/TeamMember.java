@@ -7,6 +7,7 @@ import jacabot.experiments.MiddlewareArtifact;
 import jacabot.experiments.link.StepData;
 import jacabot.robot.link.Command;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 
 /**
@@ -73,8 +74,8 @@ final class TeamMember {
         }
     }
 
-    /** Sends the agent's commands of this step and the step's acknowledgement to the controller. */
-    void answer(boolean log) {
+    /** Sends the agent's commands of this step and the step's acknowledgement to the controller, {@code tap} seeing them first. */
+    void answer(boolean log, TeamLockstepRun.RobotStepListener tap) {
         StepData d = delivered;
         delivered = null;
         if (d == null) {
@@ -84,6 +85,7 @@ final class TeamMember {
         if (log) {
             eventLog.add(LockstepCoordinator.describe(d.step(), d.simTimeMs(), d.readings(), commands));
         }
+        tap.afterStep(robot, d, Collections.unmodifiableList(commands));
         link.middleware().answerStep(commands, d.step());
     }
 

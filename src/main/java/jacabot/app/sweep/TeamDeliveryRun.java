@@ -11,7 +11,10 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.WorldSpec;
+import java.io.Closeable;
+import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -62,9 +65,27 @@ public final class TeamDeliveryRun {
      */
     public static Outcome agents(WorldSpec spec, AgentSource agent, long seed, double seconds, PrintStream console,
             boolean stepLogs, Consumer<Long> onStep) throws AslSyntaxException, CartagoException {
+        return agents(spec, agent, seed, seconds, console, stepLogs, onStep, null);
+    }
+
+    /** What watches a team's run (its robots' step logs, the inspector): attached before it runs, closed after. */
+    @FunctionalInterface
+    public interface Tap {
+        Closeable attach(TeamLockstepRun run) throws IOException;
+    }
+
+    /**
+     * As {@link #agents(WorldSpec, AgentSource, long, double, PrintStream, boolean, Consumer)}, watched by {@code tap}.
+     *
+     * @param tap attached before the run and closed after it, or null
+     * @throws UncheckedIOException when the tap cannot write
+     */
+    public static Outcome agents(WorldSpec spec, AgentSource agent, long seed, double seconds, PrintStream console,
+            boolean stepLogs, Consumer<Long> onStep, Tap tap) throws AslSyntaxException, CartagoException {
         SimWorld world = SimWorld.of(withSeed(spec, seed));
         List<RunRecorder> recorders = attach(world);
-        try (TeamLockstepRun run = new TeamLockstepRun(world, agent, seed, console)) {
+        try (TeamLockstepRun run = new TeamLockstepRun(world, agent, seed, console);
+                Closeable watching = tap == null ? null : tap.attach(run)) {
             run.stepLogs(stepLogs);
             if (onStep != null) {
                 run.onStep(onStep);
@@ -79,6 +100,8 @@ public final class TeamDeliveryRun {
             var figures = figures(world, summaries, w.doubleClaims(), w.longestChargerWait());
             return new Outcome(false, seed, summaries, w.claims(), w.chargerWaits(), figures,
                     SuccessCriteria.judgeTeam(figures), logs, run.agentFailure(), run.cycles());
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
     }
 

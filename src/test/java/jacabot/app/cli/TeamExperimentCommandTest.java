@@ -21,8 +21,22 @@ class TeamExperimentCommandTest {
         for (String robot : new String[] {"khepera1", "khepera2"}) {
             assertTrue(Files.readString(dir.resolve(robot).resolve("summary.json")).contains("\"robot\" : \"" + robot + "\""));
             assertTrue(Files.exists(dir.resolve(robot).resolve("event-log.txt")));
+            assertTrue(Files.size(dir.resolve(robot).resolve("steps.jsonl.gz")) > 0, robot + "'s step log");
         }
         assertTrue(Files.readString(dir.resolve("summary.txt")).startsWith("team-delivery, 2 robots, seed 21"));
+        assertTrue(Files.size(dir.resolve("trajectory.png")) > 0, "every robot's trajectory");
+
+        // the team's folder in the tools: plotted again, one robot replayed, the whole team only in the inspector
+        Files.delete(dir.resolve("trajectory.png"));
+        String[] plot = CliRun.run("plot", dir.toString());
+        assertEquals("0", plot[0], plot[2]);
+        assertTrue(Files.exists(dir.resolve("trajectory.png")) && Files.exists(dir.resolve("khepera2").resolve("speed.png")), plot[1]);
+        String[] one = CliRun.run("replay", dir.resolve("khepera2").toString(), "--headless");
+        assertEquals("0", one[0], one[2]);
+        assertTrue(one[1].contains("robot khepera2"), one[1]);
+        String[] all = CliRun.run("replay", dir.toString(), "--headless");
+        assertEquals("2", all[0], all[2]);
+        assertTrue(all[2].contains("is a team's run") && all[2].contains("--headless --inspector"), all[2]);
     }
 
     @Test
