@@ -59,6 +59,7 @@ public final class RunTap implements Closeable {
         }
         if (inspector != null) {
             inspector.world(start);
+            inspector.workspace(ArtifactsView.of(run.workspace()));
         }
         var tap = new RunTap(run, inspector, log);
         tap.header = log == null ? null : log.header();

@@ -53,6 +53,7 @@ public final class TeamTap implements Closeable {
         }
         if (inspector != null) {
             inspector.world(start);
+            inspector.workspace(ArtifactsView.of(run.workspace()));
         }
         run.onAnswer((robot, data, commands) -> tap.robots.get(robot).afterStep(data, commands));
         return tap;

@@ -142,6 +142,11 @@ public final class TeamLockstepRun implements AutoCloseable {
         return mas;
     }
 
+    /** {@return the team's workspace (read it, e.g. the inspector's artifacts panel; the run drives it)} */
+    public Workspace workspace() {
+        return workspace;
+    }
+
     public long cycles() {
         return cycles;
     }

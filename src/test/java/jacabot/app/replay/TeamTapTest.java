@@ -3,6 +3,8 @@ package jacabot.app.replay;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.run.AgentSource;
@@ -33,19 +35,25 @@ import org.junit.jupiter.api.io.TempDir;
  * A team's run in the tools: every robot's step log in its own folder holds that robot's steps
  * (the commands its agent answered, step for step as its event log has them, and its agent's
  * mind), the inspector shows every robot's agent and the team's shared artifacts as each agent
- * perceives them, the team's plot draws every robot, and the run is the same with the tap as
- * without it.
+ * perceives them, with their operations and who focuses on them, the team's plot draws every
+ * robot, and the run is the same with the tap as without it.
  */
 class TeamTapTest {
     static final double SECONDS = 2;
 
-    private static Map<String, List<String>> run(Path dir, Inspector inspector) throws Exception {
+    /** Checks made at the end of the run, its workspace still open. */
+    interface AtTheEnd {
+        void check() throws Exception;
+    }
+
+    private static Map<String, List<String>> run(Path dir, Inspector inspector, AtTheEnd atTheEnd) throws Exception {
         WorldSpec spec = WorldFileReader.read(Path.of(System.getProperty("jacabot.rootDir", "."), "worlds/team-delivery.json"));
         SimWorld world = SimWorld.of(TeamWorld.firstRobots(spec, 2));
         AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
         try (var run = new TeamLockstepRun(world, agent, 7, new PrintStream(OutputStream.nullOutputStream()))) {
             TeamTap tap = dir == null ? null : TeamTap.attach(run, inspector, dir, "team-delivery", "team-delivery.asl");
             run.runFor(SECONDS);
+            atTheEnd.check();
             if (tap != null) {
                 tap.close();
             }
@@ -60,11 +68,12 @@ class TeamTapTest {
     @Test
     @Timeout(120)
     void everyRobotHasItsStepLogAndItsMindAndTheRunIsTheSame(@TempDir Path dir) throws Exception {
-        Map<String, List<String>> plain = run(null, null);
+        Map<String, List<String>> plain = run(null, null, () -> {
+        });
         Map<String, List<String>> tapped;
         var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
         try (Inspector inspector = Inspector.startOnFreePort()) {
-            tapped = run(dir, inspector);
+            tapped = run(dir, inspector, () -> workspaceShown(client, inspector));
             assertEquals("[\"khepera1\",\"khepera2\"]", get(client, inspector.url("api/agents")));
             String artifacts = get(client, inspector.url("api/artifacts"));
             for (String shared : List.of("\"board\":{\"khepera1\"", "\"charger\":{\"khepera1\"", "\"khepera2\":[")) {
@@ -103,6 +112,24 @@ class TeamTapTest {
         RunPlots.writeTeam(dir, new PrintStream(OutputStream.nullOutputStream()));
         assertTrue(Files.size(dir.resolve("trajectory.png")) > 0, "the team's trajectories");
         assertTrue(Files.isRegularFile(dir.resolve("khepera2").resolve("speed.png")), "each robot's plots");
+    }
+
+    /** The live workspace: each shared artifact's operations and both agents focusing on it, not the workspace's own. */
+    private static void workspaceShown(HttpClient client, Inspector inspector) throws Exception {
+        JsonNode ws = new ObjectMapper().readTree(get(client, inspector.url("api/workspace")));
+        JsonNode board = ws.path("board");
+        assertEquals("jacabot.experiments.team.TaskBoard", board.path("type").asText(), ws.toString());
+        assertTrue(board.path("operations").toString().contains("\"claim/3\""), board.toString());
+        assertEquals(Set.of("khepera1", "khepera2"), names(board.path("focusedBy")), board.toString());
+        assertEquals(Set.of("khepera1", "khepera2"), names(ws.path("charger").path("focusedBy")), ws.toString());
+        assertEquals(Set.of("khepera2"), names(ws.path("middleware_khepera2").path("focusedBy")), ws.toString());
+        assertTrue(ws.path("console").isMissingNode() && ws.path("workspace").isMissingNode(), ws.toString());
+    }
+
+    private static Set<String> names(JsonNode list) {
+        var out = new TreeSet<String>();
+        list.forEach(n -> out.add(n.asText()));
+        return out;
     }
 
     private static String get(HttpClient c, String url) throws Exception {
