@@ -28,7 +28,7 @@ final class CurrentIntention extends DefaultInternalAction {
         if (i == null) {
             return false;
         }
-        Term stack = Renamer.renameApart(IntentionIa.stack(i), ag);
+        Term stack = IntentionIa.stack(i, ag); // as Jason's, the same term as .intention's
         return un.unifies(args[0], Literal.of("intention", new NumberTerm(i.id()), stack));
     }
 }
