@@ -4,7 +4,6 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Circumstance;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Intention;
-import jacabot.agent.semantics.Renamer;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
