@@ -11,6 +11,7 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.WorldSpec;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -39,10 +40,12 @@ public final class TeamDeliveryRun {
      * @param chargerWaits  how many times a robot queued behind another for the charger
      * @param stepLogs      every robot's step log (agents only, when kept)
      * @param agentFailure  the first agent that failed at its job, and why
+     * @param departures    the agents that left the team during the run (died), and when
      */
     public record Outcome(boolean baseline, long seed, List<RunSummary> robots, int claims, int chargerWaits,
                           SuccessCriteria.TeamFigures figures, SuccessCriteria.Verdict verdict,
-                          Map<String, List<String>> stepLogs, Optional<String> agentFailure, long cycles) {
+                          Map<String, List<String>> stepLogs, Optional<String> agentFailure, long cycles,
+                          List<String> departures) {
         /** {@return the team's deliveries} */
         public int deliveries() {
             return figures.deliveries();
@@ -61,7 +64,7 @@ public final class TeamDeliveryRun {
      * @param onStep called after each control step with the simulated time in ms (progress), or null
      */
     public static Outcome agents(WorldSpec spec, AgentSource agent, long seed, double seconds, PrintStream console,
-            boolean stepLogs, Consumer<Long> onStep) throws AslSyntaxException, CartagoException {
+            boolean stepLogs, Consumer<Long> onStep) throws AslSyntaxException, CartagoException, IOException, InterruptedException {
         SimWorld world = SimWorld.of(withSeed(spec, seed));
         List<RunRecorder> recorders = attach(world);
         try (TeamLockstepRun run = new TeamLockstepRun(world, agent, seed, console)) {
@@ -78,7 +81,7 @@ public final class TeamDeliveryRun {
             TeamWatch w = run.watch();
             var figures = figures(world, summaries, w.doubleClaims(), w.longestChargerWait());
             return new Outcome(false, seed, summaries, w.claims(), w.chargerWaits(), figures,
-                    SuccessCriteria.judgeTeam(figures), logs, run.agentFailure(), run.cycles());
+                    SuccessCriteria.judgeTeam(figures), logs, run.agentFailure(), run.cycles(), run.departures());
         }
     }
 
@@ -87,7 +90,7 @@ public final class TeamDeliveryRun {
         TeamBaseline.TeamRun run = TeamBaseline.run(SimWorld.of(withSeed(spec, seed)), seed, seconds);
         var figures = figures(run.world(), run.summaries(), 0, 0);
         return new Outcome(true, seed, run.summaries(), 0, 0, figures, SuccessCriteria.judgeTeam(figures), Map.of(),
-                Optional.empty(), 0);
+                Optional.empty(), 0, List.of());
     }
 
     private static List<RunRecorder> attach(SimWorld world) {
