@@ -151,6 +151,11 @@ public final class TeamLockstepRun implements AutoCloseable {
         return board;
     }
 
+    /** {@return the team's charger queue (read it between two steps)} */
+    public ChargerQueue charger() {
+        return charger;
+    }
+
     /**
      * {@return robot {@code robot}'s event log: its controller's lines (readings, applied commands and
      * poses), a line {@code --}, its agent side's (a step's readings and the commands answered)}
