@@ -38,13 +38,14 @@ public final class TeamDeliveryRun {
      * @param robots        every robot's summary, in the world file's order
      * @param claims        claims made on the task board (0 for the baseline, which has none)
      * @param chargerWaits  how many times a robot queued behind another for the charger
-     * @param stepLogs      every robot's step log (agents only, when kept)
+     * @param linkLogs      every robot's controller event log: a line per reading, applied command and pose
+     *                      (agents only, when kept)
      * @param agentFailure  the first agent that failed at its job, and why
      * @param departures    the agents that left the team during the run (died), and when
      */
     public record Outcome(boolean baseline, long seed, List<RunSummary> robots, int claims, int chargerWaits,
                           SuccessCriteria.TeamFigures figures, SuccessCriteria.Verdict verdict,
-                          Map<String, List<String>> stepLogs, Optional<String> agentFailure, long cycles,
+                          Map<String, List<String>> linkLogs, Optional<String> agentFailure, long cycles,
                           List<String> departures) {
         /** {@return the team's deliveries} */
         public int deliveries() {
@@ -75,7 +76,7 @@ public final class TeamDeliveryRun {
             run.runFor(seconds);
             Map<String, List<String>> logs = new LinkedHashMap<>();
             for (String r : run.robots()) {
-                logs.put(r, List.copyOf(run.eventLog(r)));
+                logs.put(r, run.controllerLog(r));
             }
             List<RunSummary> summaries = summaries(recorders, AGENTS);
             TeamWatch w = run.watch();
@@ -93,7 +94,8 @@ public final class TeamDeliveryRun {
                 Optional.empty(), 0, List.of());
     }
 
-    private static List<RunRecorder> attach(SimWorld world) {
+    /** {@return a recorder of ground truth per robot of the world, in its order} */
+    public static List<RunRecorder> attach(SimWorld world) {
         List<RunRecorder> out = new ArrayList<>();
         for (Robot r : world.robots()) {
             out.add(RunRecorder.attach(world, r.name()));
@@ -101,7 +103,8 @@ public final class TeamDeliveryRun {
         return out;
     }
 
-    private static List<RunSummary> summaries(List<RunRecorder> recorders, String controller) {
+    /** {@return every recorder's summary, naming {@code controller}} */
+    public static List<RunSummary> summaries(List<RunRecorder> recorders, String controller) {
         List<RunSummary> out = new ArrayList<>();
         for (RunRecorder r : recorders) {
             out.add(r.summary(controller));
