@@ -3,9 +3,12 @@ package jacabot.app.cli;
 import jacabot.app.bench.InterpreterBenchmark;
 import jacabot.app.bench.LatencyBenchmark;
 import jacabot.app.bench.SimulationBenchmark;
+import jacabot.app.bench.TeamSimulationBenchmark;
+import jacabot.app.run.AgentSource;
 import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.world.WorldSpec;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -27,7 +30,7 @@ final class BenchCommand implements Runnable {
         var out = spec.commandLine().getOut();
         out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE] [--programs LIST] [--project FILE.mas2j] [--limit S]");
         out.println("       jacabot bench latency [--duration 60s] [--speed X]");
-        out.println("       jacabot bench sim [--duration 10m] [--seed N]");
+        out.println("       jacabot bench sim [--duration 10m] [--seed N] [--robots N]");
         out.flush();
     }
 
@@ -123,10 +126,17 @@ final class BenchCommand implements Runnable {
         @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
+        @Option(names = "--robots", paramLabel = "N", description = "instead: team-delivery with a team of N robots against "
+                + "one robot, runs alternated (worlds/team-delivery.json, its seed; default --duration 60s, --warmup 1)")
+        private Integer robots;
+
         @Override
         public Integer call() throws Exception {
             if (warmups < 0 || runs < 1) {
                 throw new UserError("--warmup must be 0 or more and --runs 1 or more, got " + warmups + " and " + runs);
+            }
+            if (robots != null) {
+                return team();
             }
             Path world = CompareCommand.bundled(root, Experiment.SUSPEND_RESUME.worldFile());
             long runSeed;
@@ -137,6 +147,26 @@ final class BenchCommand implements Runnable {
             }
             new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
+            return 0;
+        }
+
+        /** {@code --robots N}: the team's cost per simulated second against one robot's. */
+        private int team() throws Exception {
+            Path file = CompareCommand.bundled(root, "worlds/team-delivery.json");
+            WorldSpec world;
+            try {
+                world = WorldFileReader.read(file);
+            } catch (WorldFileException e) {
+                throw new UserError(e.getMessage());
+            }
+            if (robots < 1 || robots > world.robots().size()) {
+                throw new UserError("--robots must be in 1.." + world.robots().size() + " (the robots of " + file + "), got " + robots);
+            }
+            boolean defaultDuration = spec.commandLine().getParseResult().matchedOption("--duration") == null;
+            boolean defaultWarmup = spec.commandLine().getParseResult().matchedOption("--warmup") == null;
+            AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
+            new TeamSimulationBenchmark(world, agent, robots, ExperimentCommand.duration(defaultDuration ? "60s" : duration),
+                    seed != null ? seed : world.seed(), defaultWarmup ? 1 : warmups, runs, ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
     }

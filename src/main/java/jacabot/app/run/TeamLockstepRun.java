@@ -237,9 +237,9 @@ public final class TeamLockstepRun implements AutoCloseable {
             long endAt = Math.round(seconds * 1000);
             int controlStep = world.controlStep();
             while (!stopRequested && failure == null) {
-                long now = links.awaitSteps(arrivals);
+                long now = links.awaitSteps(arrivals, () -> stopRequested);
                 if (now < 0) {
-                    break; // every controller said goodbye
+                    break; // every controller said goodbye, or stop()
                 }
                 agentsTurnOrFail(now);
                 afterStep(now);

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 /**
@@ -51,12 +52,12 @@ final class TeamRemoteLinks implements AutoCloseable {
     /**
      * Waits until every robot still in the team (its agent in, its link not ended) has sent its next
      * step, as long as it takes for the controllers to connect. {@return the steps' simulated time,
-     * or −1 when every link has ended (the controllers said goodbye)}
+     * or −1 when every link has ended (the controllers said goodbye) or {@code stopped} says so}
      *
      * @throws IllegalStateException when a controller of another robot connects on a robot's port,
      *                               the robots' steps disagree, or the controllers fall silent
      */
-    long awaitSteps(Object arrivals) throws InterruptedException {
+    long awaitSteps(Object arrivals, BooleanSupplier stopped) throws InterruptedException {
         long lastNews = System.nanoTime();
         int seen = -1;
         synchronized (arrivals) {
@@ -84,7 +85,7 @@ final class TeamRemoteLinks implements AutoCloseable {
                         waiting++;
                     }
                 }
-                if (live == 0) {
+                if (live == 0 || stopped.getAsBoolean()) {
                     return -1;
                 }
                 if (waiting == 0) {
