@@ -76,12 +76,12 @@ public final class TeamSimulationBenchmark {
         out.printf(Locale.ROOT, "team-delivery in lockstep in one process, world '%s', seed %d, %.0f s simulated per run: "
                 + "%d warm-up pairs, then %d measured pairs (1 robot, then %d), alternated%n", world.name(), seed, seconds, warmups,
                 measuredRuns, robots);
-        out.println("| robots | wall ms per simulated s (median) | CPU ms per simulated s | physics and devices, ms per simulated s | reasoning cycles per simulated s |");
+        out.println("| robots | wall ms per simulated s (median) | CPU ms of the run's thread per simulated s | physics and devices, ms per simulated s | reasoning cycles per simulated s |");
         out.println("|---|---|---|---|---|");
         row(1, one);
         row(robots, team);
         double wall = median(wallRatios), cpu = median(cpuRatios);
-        out.printf(Locale.ROOT, "%d robots cost %.2fx one robot per simulated second (wall clock; CPU %.2fx), median of the pairs' ratios "
+        out.printf(Locale.ROOT, "%d robots cost %.2fx one robot per simulated second (wall clock; the run thread's CPU %.2fx), median of the pairs' ratios "
                 + "(%s); the target for 4 robots: at most 4.5x.%n", robots, wall, cpu,
                 wallRatios.stream().map(r -> String.format(Locale.ROOT, "%.2f", r)).collect(Collectors.joining(" ")));
     }

@@ -49,6 +49,34 @@ class LocalMASTest {
                 "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
     }
 
+    /** Stepping: an agent whose cycle throws is taken out when asked to be (a team's host), else the throw ends the step. */
+    @Test
+    void anAgentWhoseCycleThrowsIsTakenOutAndTheOthersGoOn() throws Exception {
+        String counter = "n(0).\n!count.\n+!count : n(N) & N < 5 <- -+n(N + 1); .print(N); !count.\n+!count.\n";
+        for (boolean listening : new boolean[] {false, true}) {
+            var out = new ByteArrayOutputStream();
+            var system = new LocalMAS(now::get, new PrintStream(out, true, StandardCharsets.UTF_8), 1);
+            system.createAgent("alice", parser.parse(counter, "alice.asl"), parser, null);
+            system.createAgent("bob", parser.parse(counter, "bob.asl"), parser, null);
+            system.agent("bob").setPlanListener((event, plan) -> {
+                throw new IllegalStateException("simulated");
+            });
+            if (!listening) {
+                var thrown = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class, () -> system.runUntilQuiescent(10_000));
+                assertEquals("simulated", thrown.getMessage());
+                continue;
+            }
+            List<String> died = new java.util.ArrayList<>();
+            system.onAgentDied((name, e) -> died.add(name + ": " + e.getMessage()));
+            system.runUntilQuiescent(10_000);
+            assertEquals(List.of("bob: simulated"), died);
+            assertEquals(null, system.agent("bob"), "out of the system");
+            assertEquals(List.of("alice"), system.agentNames());
+            assertEquals(List.of("[alice] 0", "[alice] 1", "[alice] 2", "[alice] 3", "[alice] 4"),
+                    out.toString(StandardCharsets.UTF_8).lines().toList(), "alice went on");
+        }
+    }
+
     /** What Jason 3.2.0 prints for these three agents (in some order): every other agent gets both messages. */
     @Test
     void broadcastReachesEveryOtherAgent() throws Exception {
