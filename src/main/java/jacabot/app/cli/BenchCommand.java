@@ -16,14 +16,16 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot bench ...}: benchmarks that print figures. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
         subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class, BenchWorldCommand.class})
 final class BenchCommand implements Runnable {
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec spec;
+    @Spec
+    private CommandSpec spec;
 
     @Override
     public void run() {
@@ -41,8 +43,8 @@ final class BenchCommand implements Runnable {
                     "Jason is not a dependency of jacabot: `gradle benchInterpreter` fetches it and writes its class path "
                     + "to build/jason-classpath.txt."})
     static final class Interpreter implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--runs", description = "measured runs per program and interpreter (default ${DEFAULT-VALUE})")
         private int runs = 3;
@@ -108,8 +110,8 @@ final class BenchCommand implements Runnable {
             description = "Runs experiment 4 headless in lockstep (agent, artifact, socket, controller, physics, sensors) "
                     + "and prints the real-time factor and the share of time in each part; then the procedural baseline.")
     static final class Simulation implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--duration", paramLabel = "T", description = "simulated time (default ${DEFAULT-VALUE})")
         private String duration = "10m";
@@ -177,8 +179,8 @@ final class BenchCommand implements Runnable {
                     + "lockstep: a box moved in front of the robot and away every 120 simulated ms, the agent answering "
                     + "each obstacle change with stop.")
     static final class Latency implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--duration", paramLabel = "T", description = "simulated time in real-time mode (default ${DEFAULT-VALUE}); lockstep runs four times longer")
         private String duration = "120s";

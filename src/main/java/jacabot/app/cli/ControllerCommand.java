@@ -10,8 +10,8 @@ import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
-import jacabot.sim.world.WorldSpec;
 import jacabot.sim.viewer.WorldViewer;
+import jacabot.sim.world.WorldSpec;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -30,7 +30,9 @@ import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code jacabot controller}: the robot controller process on its own (thesis Chapter 4, "Start the
@@ -97,8 +99,8 @@ final class ControllerCommand implements Callable<Integer> {
     @Option(names = "--tls-password-file", paramLabel = "FILE", description = "the --tls-store's password, on the file's first line")
     private Path tlsPasswordFile;
 
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec spec;
+    @Spec
+    private CommandSpec spec;
 
     @Option(names = "--seconds", paramLabel = "S", description = "stop after this much simulated time (default: run until stopped)")
     private Double seconds;
