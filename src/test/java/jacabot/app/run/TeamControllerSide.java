@@ -66,6 +66,46 @@ final class TeamControllerSide implements AutoCloseable {
         thread.start();
     }
 
+    /**
+     * Starts {@code agents} (made with {@link TeamLockstepRun#remoteController}) on a thread of its own,
+     * waits for its links to listen, then starts the controllers against them.
+     */
+    static TeamControllerSide against(TeamLockstepRun agents, LinkSecret secret, double seconds) throws Exception {
+        Throwable[] failed = new Throwable[1];
+        Thread thread = new Thread(() -> {
+            try {
+                agents.runFor(seconds);
+            } catch (Throwable t) {
+                failed[0] = t;
+            }
+        }, "team-agents");
+        thread.start();
+        long listening = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (agents.listeningPorts().isEmpty() && failed[0] == null && System.nanoTime() < listening) {
+            Thread.sleep(10);
+        }
+        if (agents.listeningPorts().size() != agents.robots().size()) {
+            throw new AssertionError("a link per robot: " + agents.listeningPorts() + ", " + failed[0]);
+        }
+        TeamControllerSide side = new TeamControllerSide(agents.robots().size(), agents.listeningPorts(), secret, seconds);
+        side.agents = thread;
+        side.agentsFailed = failed;
+        return side;
+    }
+
+    private Thread agents;
+    private Throwable[] agentsFailed;
+
+    /** Waits for the end of both sides' runs. {@return the first failure of the controllers' or the agents', or null} */
+    Throwable joinBoth() throws InterruptedException {
+        Throwable c = join();
+        agents.join(TimeUnit.SECONDS.toMillis(120));
+        if (agents.isAlive()) {
+            return new AssertionError("the agents' side did not end");
+        }
+        return c != null ? c : agentsFailed[0];
+    }
+
     static SimWorld world(int robots) throws Exception {
         var spec = WorldFileReader.read(Path.of(System.getProperty("jacabot.rootDir", "."), "worlds/team-delivery.json"));
         return SimWorld.of(TeamWorld.firstRobots(spec, robots));

@@ -130,23 +130,8 @@ class TeamFaultsTest {
         try (var run = new TeamLockstepRun(TeamControllerSide.world(2), TeamTwoProcessTest.AGENT, 7,
                 new PrintStream(OutputStream.nullOutputStream())).remoteController(true)) {
             Death d = arm(run);
-            Throwable[] failed = new Throwable[1];
-            Thread agents = new Thread(() -> {
-                try {
-                    run.runFor(SECONDS);
-                } catch (Throwable t) {
-                    failed[0] = t;
-                }
-            }, "team-agents");
-            agents.start();
-            long listening = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-            while (run.listeningPorts().isEmpty() && System.nanoTime() < listening) {
-                Thread.sleep(10);
-            }
-            try (var controllers = new TeamControllerSide(2, run.listeningPorts(), secret, SECONDS)) {
-                assertNull(controllers.join());
-                agents.join(TimeUnit.SECONDS.toMillis(120));
-                assertNull(failed[0]);
+            try (var controllers = TeamControllerSide.against(run, secret, SECONDS)) {
+                assertNull(controllers.joinBoth());
                 assertTrue(d.atMs > 0, "an agent claimed a cylinder, and then died");
                 assertTheTeamWentOn(d, run, controllers.events.get(d.victim), controllers.events.get(survivor(d)), run.agentLog(survivor(d)));
                 long wallMs = TimeUnit.NANOSECONDS.toMillis(controllers.failSafeNanos.get(d.victim) - d.wallNanos);

@@ -9,7 +9,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -36,26 +35,8 @@ class TeamTwoProcessTest {
         var twoOut = new ByteArrayOutputStream();
         try (TeamLockstepRun two = new TeamLockstepRun(TeamControllerSide.world(2), AGENT, 7,
                 new PrintStream(twoOut, true, StandardCharsets.UTF_8)).remoteController(true)) {
-            Throwable[] agentsFailed = new Throwable[1];
-            Thread agents = new Thread(() -> {
-                try {
-                    two.runFor(SECONDS);
-                } catch (Throwable t) {
-                    agentsFailed[0] = t;
-                }
-            }, "team-agents");
-            agents.start();
-            long listening = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-            while (two.listeningPorts().isEmpty() && agentsFailed[0] == null && System.nanoTime() < listening) {
-                Thread.sleep(10);
-            }
-            List<Integer> ports = two.listeningPorts();
-            assertEquals(2, ports.size(), () -> "a link per robot: " + agentsFailed[0]);
-            try (var controllers = new TeamControllerSide(2, ports, secret, SECONDS)) {
-                assertNull(controllers.join());
-                agents.join(TimeUnit.SECONDS.toMillis(120));
-                assertNull(agentsFailed[0]);
-                assertTrue(!agents.isAlive(), "the agents' side ended");
+            try (var controllers = TeamControllerSide.against(two, secret, SECONDS)) {
+                assertNull(controllers.joinBoth());
                 for (String robot : one.robots()) {
                     List<String> controllerLog = controllers.events.get(robot);
                     assertEquals(String.join("\n", one.controllerLog(robot)), String.join("\n", controllerLog),
