@@ -40,6 +40,25 @@ class TeamExperimentCommandTest {
     }
 
     @Test
+    void theAgentsSideOfTwoProcessesLeavesTheOutputsToTheControllers() {
+        String[] r = CliRun.run("experiment", "team-delivery", "--robots", "2", "--remote-controller", "--link-log");
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("--link-log goes with the controllers' process"), r[2]);
+        r = CliRun.run("experiment", "team-delivery", "--robots", "4", "--remote-controller", "--port", "65534");
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("--port must leave 4 ports in 1..65535"), r[2]);
+    }
+
+    @Test
+    void benchSimComparesATeamWithOneRobotInTheSameRun() {
+        String[] r = CliRun.run("bench", "sim", "--robots", "2", "--duration", "2s", "--warmup", "0", "--runs", "1");
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[1].contains("\n| 1 | ") && r[1].contains("\n| 2 | "), r[1]);
+        assertTrue(r[1].matches("(?s).*2 robots cost \\d+\\.\\d\\dx one robot per simulated second.*"), r[1]);
+        assertEquals("2", CliRun.run("bench", "sim", "--robots", "5")[0]);
+    }
+
+    @Test
     void aWorldWithoutEnoughRobotsIsOneLineAndExitTwo() {
         String[] r = CliRun.run("experiment", "team-delivery", "--robots", "5", "--duration", "1s");
         assertEquals("2", r[0], r[1] + r[2]);

@@ -1,6 +1,7 @@
 package jacabot.agent.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
@@ -18,7 +19,6 @@ import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
-import org.junit.jupiter.api.Assertions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -55,6 +55,34 @@ class LocalMASTest {
         assertEquals(List.of("[bob] price 10 from alice", "[bob] hello alice (asked by alice)",
                 "[alice] bob has stock(3)[source(bob)]", "[alice] unknown: false",
                 "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
+    }
+
+    /** Stepping: an agent whose cycle throws is taken out when asked to be (a team's host), else the throw ends the step. */
+    @Test
+    void anAgentWhoseCycleThrowsIsTakenOutAndTheOthersGoOn() throws Exception {
+        String counter = "n(0).\n!count.\n+!count : n(N) & N < 5 <- -+n(N + 1); .print(N); !count.\n+!count.\n";
+        for (boolean listening : new boolean[] {false, true}) {
+            var out = new ByteArrayOutputStream();
+            var system = new LocalMAS(now::get, new PrintStream(out, true, StandardCharsets.UTF_8), 1);
+            system.createAgent("alice", parser.parse(counter, "alice.asl"), parser, null);
+            system.createAgent("bob", parser.parse(counter, "bob.asl"), parser, null);
+            system.agent("bob").setPlanListener((event, plan) -> {
+                throw new IllegalStateException("simulated");
+            });
+            if (!listening) {
+                var thrown = assertThrows(IllegalStateException.class, () -> system.runUntilQuiescent(10_000));
+                assertEquals("simulated", thrown.getMessage());
+                continue;
+            }
+            List<String> died = new ArrayList<>();
+            system.onAgentDied((name, e) -> died.add(name + ": " + e.getMessage()));
+            system.runUntilQuiescent(10_000);
+            assertEquals(List.of("bob: simulated"), died);
+            assertEquals(null, system.agent("bob"), "out of the system");
+            assertEquals(List.of("alice"), system.agentNames());
+            assertEquals(List.of("[alice] 0", "[alice] 1", "[alice] 2", "[alice] 3", "[alice] 4"),
+                    out.toString(StandardCharsets.UTF_8).lines().toList(), "alice went on");
+        }
     }
 
     /** What Jason 3.2.0 prints for these three agents (in some order): every other agent gets both messages. */
@@ -186,7 +214,7 @@ class LocalMASTest {
     @Test
     void anInfrastructureOtherThanLocalIsRefused(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n infrastructure: Jade\n agents: a;\n}\n");
-        var e = Assertions.assertThrows(AslSyntaxException.class,
+        var e = assertThrows(AslSyntaxException.class,
                 () -> Mas2jReader.read(dir.resolve("p.mas2j")));
         assertTrue(e.getMessage().contains("infrastructure 'Jade' is not supported"), e.getMessage());
     }
@@ -196,7 +224,7 @@ class LocalMASTest {
     void aProjectThatDoesNotParsePrintsJasonsLine(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a; at;\n}\n");
         var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
-        Assertions.assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
         assertEquals(List.of("[RunLocalMAS] Error parsing file file:" + dir.resolve("p.mas2j") + "!"), lines());
     }
 
