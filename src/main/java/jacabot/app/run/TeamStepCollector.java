@@ -31,6 +31,7 @@ final class TeamStepCollector implements Consumer<LinkEvent> {
                 readings.clear();
                 robot = c.robotName();
                 connected = true;
+                ended = false; // a controller that reconnected: its robot is waited for again
             } else if (e instanceof LinkEvent.Reading r) {
                 readings.add(r.info());
                 return;
