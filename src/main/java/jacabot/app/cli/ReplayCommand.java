@@ -30,8 +30,10 @@ import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot replay runs/X}: plays a recorded run back, with the agent's mind at each instant. */
 @Command(name = "replay", mixinStandardHelpOptions = true,
@@ -39,8 +41,8 @@ import picocli.CommandLine.Parameters;
                 + "the viewer with play/pause/step/speed and a time slider, and the mind inspector at the same instant.",
                 "Headless (no display, or --headless): prints a summary, the mind at --at T, and --frames N as PNG."})
 final class ReplayCommand implements Callable<Integer> {
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    @Spec
+    private CommandSpec commandSpec;
     /** picocli's writers, so the command can run in-process (tests) without the global streams */
     private PrintStream out;
     private PrintStream err;
