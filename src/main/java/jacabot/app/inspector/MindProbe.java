@@ -10,6 +10,7 @@ import jacabot.agent.semantics.Intention;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Comparator;
@@ -53,6 +54,11 @@ public final class MindProbe {
             @Override
             public void intentionAdded(Intention i) {
                 probe.noteTop(i);
+            }
+
+            @Override
+            public boolean hearsBeliefEvent(Trigger.Op op, Literal b) {
+                return false; // it reads intentions only: percepts no plan is for stay unmade, as without it
             }
         });
         return probe;

@@ -34,6 +34,8 @@ final class Wait extends DefaultInternalAction {
      */
     private static final Map<String, Optional<Trigger>> PARSED = new ConcurrentHashMap<>();
     private static final int PARSED_MAX = 1024;
+    /** The start of a waiting intention's key in PI; its reason's text is Jason's key. */
+    static final String KEY = "wait#";
 
     Wait() {
         super(".wait", 1, 3);
@@ -124,7 +126,9 @@ final class Wait extends DefaultInternalAction {
             this.start = ag.clock().millis();
             Term what = te != null ? te.literal() : formula != null ? formula : Literal.of("time", new NumberTerm(timeout));
             Literal reason = Literal.of("wait", new NumberTerm(si.id())).addAnnot(what);
-            this.key = reason.toString();
+            // an intention waits once at a time: its id is key enough (the reason's text, Jason's
+            // key, is made only where Jason's order of PI matters: Suspensions.inJasonOrder)
+            this.key = KEY + si.id();
             ag.circumstance().addPendingIntention(key, reason, si);
             ag.goalStates().ofTop(si, GoalStates.State.waiting, reason);
         }
@@ -141,6 +145,23 @@ final class Wait extends DefaultInternalAction {
             if (!dropped) {
                 test(e);
             }
+        }
+
+        /**
+         * A wait for a time hears no belief event, and a wait for an event only those that may
+         * match it (its type, operator, functor and arity); a wait for a formula tests it at every
+         * event, so it hears them all.
+         */
+        @Override
+        public boolean hearsBeliefEvent(Trigger.Op op, Literal b) {
+            if (done || dropped) {
+                return false;
+            }
+            if (formula != null) {
+                return true;
+            }
+            return te != null && te.type() == Trigger.Type.BELIEF && te.op() == op
+                    && (!(te.literal() instanceof Literal l) || l.functor().equals(b.functor()) && l.arity() == b.arity());
         }
 
         @Override
