@@ -13,6 +13,7 @@ import jacabot.agent.syntax.Term;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
 /** The bookkeeping shared by {@code .suspend}, {@code .resume} and {@code .suspended}. */
@@ -98,7 +99,7 @@ final class Suspensions {
             }
         }
         Map<String, Circumstance.Pending> pending = c.pendingIntentions();
-        for (String key : inJasonOrder(pending)) {
+        for (String key : inJasonOrder(pending.keySet())) {
             Circumstance.Pending p = pending.get(key);
             Intention i = p.intention();
             // as Jason's, the pattern is unified in the caller's unifier: the first intention that
@@ -126,14 +127,12 @@ final class Suspensions {
      * {@return the keys in the order Jason 3.2 visits its pending intentions: a ConcurrentHashMap
      * keyed by the same names, so that which of several suspended goals resumes first is Jason's}
      */
-    private static List<String> inJasonOrder(Map<String, Circumstance.Pending> pending) {
-        var jasonPI = new ConcurrentHashMap<String, String>();
-        for (Map.Entry<String, Circumstance.Pending> p : pending.entrySet()) {
-            String k = p.getKey();
-            // a .wait is keyed by its intention's id here, by its reason's text in Jason
-            jasonPI.put(k.startsWith(Wait.KEY) ? p.getValue().reason().toString() : k, k);
+    private static List<String> inJasonOrder(Set<String> keys) {
+        var jasonPI = new ConcurrentHashMap<String, Boolean>();
+        for (String k : keys) {
+            jasonPI.put(k, Boolean.TRUE);
         }
-        return new ArrayList<>(jasonPI.values());
+        return new ArrayList<>(jasonPI.keySet());
     }
 
     static boolean suspended(Agent ag, Literal g, Term reason, Unifier un) {

@@ -34,8 +34,6 @@ final class Wait extends DefaultInternalAction {
      */
     private static final Map<String, Optional<Trigger>> PARSED = new ConcurrentHashMap<>();
     private static final int PARSED_MAX = 1024;
-    /** The start of a waiting intention's key in PI; its reason's text is Jason's key. */
-    static final String KEY = "wait#";
 
     Wait() {
         super(".wait", 1, 3);
@@ -126,9 +124,7 @@ final class Wait extends DefaultInternalAction {
             this.start = ag.clock().millis();
             Term what = te != null ? te.literal() : formula != null ? formula : Literal.of("time", new NumberTerm(timeout));
             Literal reason = Literal.of("wait", new NumberTerm(si.id())).addAnnot(what);
-            // an intention waits once at a time: its id is key enough (the reason's text, Jason's
-            // key, is made only where Jason's order of PI matters: Suspensions.inJasonOrder)
-            this.key = KEY + si.id();
+            this.key = reason.toString();
             ag.circumstance().addPendingIntention(key, reason, si);
             ag.goalStates().ofTop(si, GoalStates.State.waiting, reason);
         }
