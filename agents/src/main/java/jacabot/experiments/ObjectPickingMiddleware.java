@@ -102,12 +102,12 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         heading = orientation(n);
     }
 
-    private void sight(int[] image) {
+    private void sight(SensorInfo camera) {
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
-            return;
+            return; // before the image is copied: most readings end here
         }
-        CylinderSighting.find(image, fov).filter(s -> !excluded(s)).ifPresent(s -> {
+        CylinderSighting.find(camera.getIntValues(), fov).filter(s -> !excluded(s)).ifPresent(s -> {
             lastSightingMs = simTimeMs();
             signal("cylinderSighted", Math.round(s.offset() * 10) / 10.0, Math.round(s.distance() * 100) / 100.0);
         });
@@ -239,7 +239,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 noteCompass(info.getCoord());
                 break;
             case CAMERA_IMAGE:
-                sight(info.getIntValues());
+                sight(info);
                 break;
             case GRIP_FORCE:
                 boolean nowHolding = info.getVal() < HOLD_FORCE;

@@ -43,7 +43,16 @@ final class Values {
 
     /** {@return whether two value tuples are the same, as in {@link #same(Object, Object)}} */
     static boolean sameAll(Object[] a, Object[] b) {
-        return same(Arrays.asList(a), Arrays.asList(b));
+        // as same(List, List), without the two views: every property update at a commit comes here
+        if (a.length != b.length) {
+            return false;
+        }
+        for (int i = 0; i < a.length; i++) {
+            if (!same(a[i], b[i])) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** {@return a list view of a list or array, or null for anything else} */

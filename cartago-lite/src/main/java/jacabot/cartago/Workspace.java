@@ -345,12 +345,14 @@ public final class Workspace implements AutoCloseable {
                 core.lock().lock();
                 try {
                     core.markDisposed();
+                    artifactsChanged();
                 } finally {
                     core.lock().unlock();
                 }
                 throw e;
             }
             byName.put(artifactName, core);
+            artifactsChanged();
             return id;
         } catch (RuntimeException e) {
             names.remove(artifactName);
@@ -361,11 +363,13 @@ public final class Workspace implements AutoCloseable {
     /** Internal operations started by {@code init} need the artifact findable by id only. */
     private void registerDuringInit(ArtifactCore core) {
         byId.put(core.id().id(), core);
+        artifactsChanged();
     }
 
     private void unregister(ArtifactCore core) {
         byId.remove(core.id().id());
         byName.remove(core.id().name(), core);
+        artifactsChanged();
     }
 
     /** Disposes {@code core}: runs its hook, ends its observers' focus and forgets it. */
@@ -382,6 +386,7 @@ public final class Workspace implements AutoCloseable {
                 logger.warning(core.id().name(), "dispose() failed", e);
             }
             agents.forget(core.id(), core.markDisposed());
+            artifactsChanged();
         } finally {
             core.lock().unlock();
         }
@@ -417,15 +422,38 @@ public final class Workspace implements AutoCloseable {
         return core;
     }
 
-    /** {@return live artifacts, oldest first} */
+    /**
+     * {@return live artifacts, oldest first} Every operation without a target asks for them
+     * ({@link OpResolver}), so the list is kept until an artifact comes or goes: it is stamped with
+     * the {@link #artifactsChanged} count read before it was made.
+     */
     List<ArtifactCore> cores() {
-        List<ArtifactCore> live = new ArrayList<>();
+        Live known = live;
+        long version = artifactsVersion;
+        if (known != null && known.version() == version) {
+            return known.cores();
+        }
+        List<ArtifactCore> cores = new ArrayList<>();
         for (ArtifactCore core : byId.values()) {
             if (!core.isDisposed() && byName.get(core.id().name()) == core) {
-                live.add(core);
+                cores.add(core);
             }
         }
-        return live;
+        List<ArtifactCore> made = List.copyOf(cores);
+        live = new Live(version, made);
+        return made;
+    }
+
+    /** The live artifacts as of a count of {@link #artifactsChanged}. */
+    private record Live(long version, List<ArtifactCore> cores) {
+    }
+
+    private volatile Live live;
+    private volatile long artifactsVersion;
+
+    /** Called after each change to the artifacts {@link #cores} lists (made, named, disposed, forgotten). */
+    private synchronized void artifactsChanged() {
+        artifactsVersion++;
     }
 
     boolean hasJoined(AgentId agent) {

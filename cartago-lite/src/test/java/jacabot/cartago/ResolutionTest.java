@@ -96,4 +96,25 @@ class ResolutionTest {
             ok(ws, alice, "inc");
         }
     }
+    /** The live artifacts are kept between operations ({@code Workspace.cores}) until one comes or goes. */
+    @Test
+    void anArtifactMadeOrDisposedBetweenTwoOperationsIsSeenByTheNext() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            RecordingObserver bobSees = new RecordingObserver();
+            AgentId bob = ws.join("bob", bobSees);
+            ws.createArtifact("counter", Counter.class);
+            ok(ws, bob, "inc");
+            Calls.assertReason("unknown_operation", Calls.failure(ws, bob, OpTarget.any(), "whoAmI", new OpFeedbackParam<>()));
+            ArtifactId desk = ws.createArtifact("desk", Desk.class);
+            assertEquals("bob", ok(ws, bob, "whoAmI", new OpFeedbackParam<>()).outputs().get(0));
+            ws.disposeArtifact(desk);
+            Calls.assertReason("unknown_operation", Calls.failure(ws, bob, OpTarget.any(), "whoAmI", new OpFeedbackParam<>()));
+            ArtifactId other = ws.createArtifact("other", Counter.class);
+            ws.disposeArtifact(ws.lookup("counter").orElseThrow());
+            ok(ws, bob, "focus", other);
+            bobSees.drain();
+            ok(ws, bob, "inc");
+            bobSees.expect("other count(0)->count(1)", "other !tick");
+        }
+    }
 }

@@ -7,13 +7,19 @@ import jacabot.agent.semantics.CircumstanceListener;
 import jacabot.agent.semantics.Event;
 import jacabot.agent.semantics.IntendedMeans;
 import jacabot.agent.semantics.Intention;
+import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Trigger;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -38,6 +44,8 @@ public final class MindProbe {
     private int planCount = -1;
     private List<String> plans = List.of();
     private List<Plan> planObjects = List.of();
+    /** The facts the last capture showed, by identity (captures run on the agent's thread). */
+    private IdentityHashMap<Literal, MindState.Belief> lastShown = new IdentityHashMap<>();
 
     private MindProbe(Agent agent) {
         this.agent = agent;
@@ -53,6 +61,11 @@ public final class MindProbe {
             @Override
             public void intentionAdded(Intention i) {
                 probe.noteTop(i);
+            }
+
+            @Override
+            public boolean hearsBeliefEvent(Trigger.Op op, Literal b) {
+                return false; // it reads intentions only: percepts no plan is for stay unmade, as without it
             }
         });
         return probe;
@@ -95,10 +108,24 @@ public final class MindProbe {
 
     private MindState state(long number, long cyclesDone, List<MindState.Selection> chosen) {
         var beliefs = new ArrayList<MindState.Belief>();
+        var shown = new IdentityHashMap<Literal, MindState.Belief>();
         for (BeliefBase.Entry e : agent.beliefBase().all()) {
             // rules too, as Jason's inspector lists them with the facts
-            beliefs.add(e.rule() == null ? belief(e.literal()) : new MindState.Belief(e.rule().toString(), List.of(), List.of()));
+            if (e.rule() != null) {
+                beliefs.add(new MindState.Belief(e.rule().toString(), List.of(), List.of()));
+                continue;
+            }
+            // a fact is an immutable literal: one the last capture showed is shown the same
+            MindState.Belief b = lastShown.get(e.literal());
+            if (b == null) {
+                b = belief(e.literal());
+            }
+            if (printsTheSame(e.literal())) {
+                shown.put(e.literal(), b);
+            }
+            beliefs.add(b);
         }
+        lastShown = shown;
         Circumstance c = agent.circumstance();
         var events = new ArrayList<String>();
         for (Event e : c.eventList()) {
@@ -159,6 +186,30 @@ public final class MindProbe {
 
     private static String withoutSourceAnnots(Plan p) {
         return p.label() == null ? p.toString() : p.withLabel(p.label().withoutAnnots()).toString();
+    }
+
+    /**
+     * {@return whether the literal's text cannot change: made of literals, numbers, strings, lists
+     * and variables only} (an object term prints its Java object, which may change)
+     */
+    private static boolean printsTheSame(Term t) {
+        if (t instanceof Literal l) {
+            for (Term a : l.args()) {
+                if (!printsTheSame(a)) {
+                    return false;
+                }
+            }
+            for (Term a : l.annots()) {
+                if (!printsTheSame(a)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        if (t instanceof ListTerm.Cons c) {
+            return printsTheSame(c.head()) && printsTheSame(c.tail());
+        }
+        return t instanceof NumberTerm || t instanceof StringTerm || t instanceof ListTerm.Empty || t instanceof Var;
     }
 
     static MindState.Belief belief(Literal l) {

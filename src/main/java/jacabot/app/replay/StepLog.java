@@ -26,6 +26,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -134,6 +135,8 @@ public final class StepLog {
         private Consumer<Chunk> onChunk = c -> {
         };
         private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
+        /** The last step's beliefs' texts, by identity. */
+        private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
         private List<MindState.IntentionView> intentions = List.of();
         private List<String> events = List.of();
         private final Map<String, Moved> objects = new HashMap<>();
@@ -274,8 +277,14 @@ public final class StepLog {
         private MindDelta delta(MindState mind) {
             var added = new ArrayList<MindState.Belief>();
             var now = new LinkedHashMap<String, MindState.Belief>();
+            // the probe gives a belief that did not change as the same object: its text is known
+            var texts = new IdentityHashMap<MindState.Belief, String>();
             for (MindState.Belief b : mind.beliefs()) {
-                String key = b.text();
+                String key = beliefTexts.get(b);
+                if (key == null) {
+                    key = b.text();
+                }
+                texts.put(b, key);
                 now.put(key, b);
                 if (!beliefs.containsKey(key)) {
                     added.add(b);
@@ -289,6 +298,7 @@ public final class StepLog {
             }
             beliefs.clear();
             beliefs.putAll(now);
+            beliefTexts = texts;
             List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
             intentions = mind.intentions();
             List<String> evs = mind.events().equals(events) ? null : mind.events();

@@ -512,7 +512,7 @@ public final class Agent {
     public boolean addPercept(Literal l) {
         Literal added = beliefBase.add(l, false);
         if (added != null) {
-            circumstance.addEvent(new Event(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF, added), null));
+            circumstance.addBeliefEvent(Trigger.Op.ADD, added);
         }
         return added != null;
     }
@@ -520,7 +520,7 @@ public final class Agent {
     /** Removes a belief added by {@link #addPercept} with a {@code -b} event. */
     public boolean removePercept(Literal l) {
         if (beliefBase.removeEntry(l)) {
-            circumstance.addEvent(new Event(new Trigger(Trigger.Op.DEL, Trigger.Type.BELIEF, l), null));
+            circumstance.addBeliefEvent(Trigger.Op.DEL, l);
             return true;
         }
         return false;

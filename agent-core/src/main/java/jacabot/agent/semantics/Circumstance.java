@@ -78,20 +78,34 @@ public final class Circumstance {
      * is for are not).
      */
     public void addBeliefEvent(Trigger.Op op, Literal b) {
-        if (relevantBelief != null && listeners.length == 0 && !relevantBelief.test(op, b)) {
+        if (relevantBelief != null && !relevantBelief.test(op, b) && unheard(op, b)) {
             return;
         }
-        addEvent(new Event(new Trigger(op, Trigger.Type.BELIEF, b), null));
+        keep(new Event(new Trigger(op, Trigger.Type.BELIEF, b), null));
+    }
+
+    /** {@return whether no listener hears the belief event {@code op b} (see {@link CircumstanceListener#hearsBeliefEvent})} */
+    private boolean unheard(Trigger.Op op, Term b) {
+        for (CircumstanceListener l : listeners) {
+            if (!(b instanceof Literal lit) || l.hearsBeliefEvent(op, lit)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     public void addEvent(Event e) {
         // as Jason's updateEvents: an external belief event no plan is relevant for is not kept,
-        // unless something listens to events (a .wait, an inspector); a message told or a -+b
-        // then costs no event to select and discard
-        if (e.intention() == null && e.trigger().type() == Trigger.Type.BELIEF
-                && relevant != null && listeners.length == 0 && !relevant.test(e.trigger())) {
+        // unless a listener hears such events (a .wait for it, an inspector); a message told or a
+        // -+b then costs no event to select and discard
+        if (e.intention() == null && e.trigger().type() == Trigger.Type.BELIEF && relevant != null
+                && !relevant.test(e.trigger()) && unheard(e.trigger().op(), e.trigger().literal())) {
             return;
         }
+        keep(e);
+    }
+
+    private void keep(Event e) {
         if (e.isAtomic()) {
             atomicEvent = e;
         } else {

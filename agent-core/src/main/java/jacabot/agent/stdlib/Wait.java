@@ -143,6 +143,23 @@ final class Wait extends DefaultInternalAction {
             }
         }
 
+        /**
+         * A wait for a time hears no belief event, and a wait for an event only those that may
+         * match it (its type, operator, functor and arity); a wait for a formula tests it at every
+         * event, so it hears them all.
+         */
+        @Override
+        public boolean hearsBeliefEvent(Trigger.Op op, Literal b) {
+            if (done || dropped) {
+                return false;
+            }
+            if (formula != null) {
+                return true;
+            }
+            return te != null && te.type() == Trigger.Type.BELIEF && te.op() == op
+                    && (!(te.literal() instanceof Literal l) || l.functor().equals(b.functor()) && l.arity() == b.arity());
+        }
+
         @Override
         public void intentionAdded(Intention i) {
             test(null);

@@ -111,11 +111,17 @@ public class CAgentArch extends LocalArch {
 
     /** The annotations of each artifact's property beliefs, made once (used on the agent's thread only, in sense). */
     private final Map<ArtifactId, List<Term>> propertyAnnots = new HashMap<>();
+    /** The last artifact {@link #belief} served, and its annotations: nearly every change comes from one artifact. */
+    private ArtifactId lastId;
+    private List<Term> lastAnnots;
 
     private Literal belief(ArtifactId id, PropertySnapshot p) {
-        // sorted and immutable, so the literal keeps the list as it is
-        List<Term> annots = propertyAnnots.computeIfAbsent(id, k -> new Literal("a", List.of(), annots(k, "obs_prop"), false).annots());
-        return new Literal(p.name(), TermConverter.toTerms(p.values()), annots, false);
+        if (id != lastId) {
+            // sorted and immutable, so the literal keeps the list as it is
+            lastAnnots = propertyAnnots.computeIfAbsent(id, k -> new Literal("a", List.of(), annots(k, "obs_prop"), false).annots());
+            lastId = id;
+        }
+        return new Literal(p.name(), TermConverter.toTerms(p.values()), lastAnnots, false);
     }
 
     private void add(Agent ag, ArtifactId id, PropertySnapshot p) {
@@ -124,12 +130,29 @@ public class CAgentArch extends LocalArch {
         ag.addPercept(l);
     }
 
-    /** Removes the belief of one property (several may share a name: the values tell them apart). */
+    /**
+     * Removes the belief of one property (several may share a name: the values tell them apart).
+     * The belief is found by name and arguments among those the artifact's properties became: all
+     * carry the same annotations, so it need not be made anew to be compared.
+     */
     private void remove(Agent ag, ArtifactId id, PropertySnapshot p) {
         List<Literal> of = beliefs.get(id);
-        Literal l = belief(id, p);
-        if (of != null && of.remove(l)) {
-            ag.removePercept(l);
+        if (of == null) {
+            return;
+        }
+        List<Term> args = null;
+        for (int k = 0, n = of.size(); k < n; k++) {
+            Literal l = of.get(k);
+            if (l.functor().equals(p.name()) && l.arity() == p.values().size()) {
+                if (args == null) {
+                    args = TermConverter.toTerms(p.values());
+                }
+                if (l.args().equals(args)) {
+                    of.remove(k);
+                    ag.removePercept(l);
+                    return;
+                }
+            }
         }
     }
 
@@ -169,6 +192,7 @@ public class CAgentArch extends LocalArch {
             queue(ag -> {
                 properties.forEach(p -> remove(ag, artifact, p));
                 propertyAnnots.remove(artifact);
+                lastId = null;
             });
         }
     }

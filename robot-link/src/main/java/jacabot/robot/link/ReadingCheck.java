@@ -66,7 +66,7 @@ public final class ReadingCheck {
                 if (doubles != 0 || info.getVal() != 0) {
                     return k + ": an int-array reading carries other fields";
                 }
-                return intsProblem(k, info.getIntValues());
+                return intsProblem(k, info.ints()); // read, not kept: no copy
             case DOUBLES:
                 if (ints != 0 || info.getVal() != 0) {
                     return k + ": a double-array reading carries other fields";

@@ -39,6 +39,7 @@ public enum SensorKind {
     private final int id;
     private final Shape shape;
     private final String description;
+    private final Optional<SensorKind> asOptional = Optional.of(this);
 
     SensorKind(int id, Shape shape, String description) {
         this.id = id;
@@ -61,13 +62,16 @@ public enum SensorKind {
 
     /** {@return the kind of an id, empty for ids this version does not know} */
     public static Optional<SensorKind> of(int id) {
-        for (SensorKind k : values()) {
+        for (SensorKind k : ALL) {
             if (k.id == id) {
-                return Optional.of(k);
+                return k.asOptional;
             }
         }
         return Optional.empty();
     }
+
+    /** The kinds, made once: {@link #of} runs for every reading, and {@code values()} copies its array. */
+    private static final SensorKind[] ALL = values();
 
     /** {@return the kind of a distance sensor named as on our robot models, empty for other names} */
     public static Optional<SensorKind> ofDistanceSensor(String deviceName) {
