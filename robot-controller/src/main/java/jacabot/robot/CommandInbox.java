@@ -42,6 +42,13 @@ final class CommandInbox {
         this.simTimeMs = simTimeMs;
     }
 
+    /** {@return the world's time when the middleware was last heard from (a command or a heartbeat)} */
+    long lastHeardSimMs() {
+        synchronized (lock) {
+            return lastHeardSimMs;
+        }
+    }
+
     private void heard() {
         lastHeardNanos = nanoTime.getAsLong();
         lastHeardSimMs = simTimeMs.getAsLong();

@@ -142,6 +142,15 @@ public final class RobotController implements AutoCloseable {
         return link.lastProblem();
     }
 
+    /**
+     * {@return the simulated time at which a command or heartbeat of the middleware was last taken
+     * in} The fail-safe counts its silence from there: a middleware that dies cannot be known dead
+     * before the last of what it sent has been read.
+     */
+    public long lastHeardSimMs() {
+        return inbox.lastHeardSimMs();
+    }
+
     /** {@return how many times the fail-safe stopped the wheels} */
     public long failSafeTrips() {
         return failSafeTrips;
