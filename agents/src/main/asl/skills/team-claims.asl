@@ -12,8 +12,8 @@
 // - The claim is completed when the cylinder is put down in the storage area (stored(N) grows),
 //   released when the homing is given up (out of sight, chased too long) or the battery runs low.
 // Parameters:
-ignoreClaimed(0.2).   // m around another robot's claim where sightings are left alone (the
-                      // board's own radius: its claims are at least this far apart)
+ignoreClaimed(0.3).   // m around another robot's claim where sightings are left alone (wider than
+                      // the board's 0.2 m: two estimates of one cylinder 0.25 m apart were two claims)
 gripReach(0.06).      // m from the robot's centre to a cylinder held in the gripper
 // Beliefs: myClaim(Id), claimRefused.
 // Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true)), delivery

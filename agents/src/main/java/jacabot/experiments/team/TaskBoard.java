@@ -39,6 +39,8 @@ import java.util.Map;
 public class TaskBoard extends Artifact {
     /** Places closer than this are one cylinder, metres. */
     static final double DEFAULT_RADIUS = 0.1;
+    /** A cylinder picked up voids other agents' claims within this many radii of it. */
+    static final double TAKE_REACH = 1.5;
 
     private record Claim(int id, AgentId agent, ObsProperty property) {
         double x() {
@@ -149,18 +151,20 @@ public class TaskBoard extends Artifact {
 
     /**
      * The caller has picked up the cylinder at (x, z): the cylinder is its own in fact, so every
-     * other agent's claim within the radius there is void (dropped), the caller's other claims are
-     * released (a robot carries one cylinder), and its claim on (x, z) is given back, made if need be.
+     * other agent's claim within {@link #TAKE_REACH} radii of it is void (dropped: two robots'
+     * estimates of one cylinder seen from afar may lie further apart than the radius), the caller's
+     * other claims are released (a robot carries one cylinder), and its claim within the radius
+     * there is given back with its place updated, made if need be.
      */
     @OPERATION
     void take(double x, double z, OpFeedbackParam<Integer> id) {
         AgentId me = getCurrentOpAgentId();
         Claim kept = null;
         for (Claim c : List.copyOf(claims.values())) {
-            boolean there = Math.hypot(c.x() - x, c.z() - z) < radius;
-            if (there && c.agent().equals(me) && kept == null) {
+            double d = Math.hypot(c.x() - x, c.z() - z);
+            if (d < radius && c.agent().equals(me) && kept == null) {
                 kept = c;
-            } else if (there || c.agent().equals(me)) {
+            } else if (d < TAKE_REACH * radius || c.agent().equals(me)) {
                 drop(c);
             }
         }
