@@ -3,8 +3,7 @@
 // program, named as its robot; they coordinate through the team's artifacts (task board, charger
 // queue). The team's skills come first: team-storage (one robot at a time at the storage point),
 // team-places (where the teammates are), team-claims (who fetches which cylinder), team-charger
-// (one at a time at the charger), team-way (giving way to a teammate); the other skills are
-// experiment 4's. From the world file:
+// (one at a time at the charger); the other skills are experiment 4's. From the world file:
 // storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
@@ -15,7 +14,6 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 { include("skills/team-places.asl") }
 { include("skills/team-claims.asl") }
 { include("skills/team-charger.asl") }
-{ include("skills/team-way.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }

@@ -69,3 +69,14 @@ mock_operation(_, ok).
        ?mock_called(take(X, Z, 7));
        !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27);  // in the gripper, 6 cm ahead
        !assert_false(myClaim(3)).
+
+@[test]
++!test_a_claim_the_board_voided_does_not_fail_the_next_claim
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _); -+picked(false);
+       +myClaim(14);                                          // voided meanwhile: the board has no claim 14
+       +mock_operation(release(14), fail("no claim 14 on the task board", no_claim(14)));
+       !!perceive(cylinderSighted(0, 0.5));
+       !until(homing(_), 5000);
+       !assert_true(homing(_));                                // the new claim stands, the homing goes on
+       !assert_true(myClaim(3));
+       !assert_false(myClaim(14)).

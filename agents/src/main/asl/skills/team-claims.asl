@@ -46,7 +46,7 @@ claimedByOther(X, Z) :- claimed(_, A, Cx, Cz) & not .my_name(A) & ignoreClaimed(
 -!claim(_, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
 @claimFailed -!claim(_, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
-@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- release(Old); -myClaim(Old).
+@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
 @keepClaim +!dropOtherClaim(_).
 
 // the cylinder in the gripper is this robot's, whoever had claimed its place
@@ -56,8 +56,13 @@ claimedByOther(X, Z) :- claimed(_, A, Cx, Cz) & not .my_name(A) & ignoreClaimed(
 // a claim the board voided (another robot took the cylinder) is forgotten
 @claimVoided -claimed(Id, Me, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _) & not picked(true) <- -myClaim(Id).
 
-@completeClaim +stored(N) : N > 0 & myClaim(Id) <- complete(Id); -myClaim(Id); .print("Claim ", Id, " completed").
+@completeClaim +stored(N) : N > 0 & myClaim(Id) <- -myClaim(Id); complete(Id); .print("Claim ", Id, " completed").
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
--homing(_) : myClaim(Id) & not picked(true) & not picking <- release(Id); -myClaim(Id); .print("Claim ", Id, " released").
-@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- release(Id); -myClaim(Id).
+-homing(_) : myClaim(Id) & not picked(true) & not picking <- !releaseClaim(Id); .print("Claim ", Id, " released").
+@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- !releaseClaim(Id).
+
+// the belief goes first: a claim the board has voided meanwhile (another robot took its cylinder)
+// is not this robot's any more, and no later claim must fail on releasing it
+@releaseClaim +!releaseClaim(Id) <- -myClaim(Id); release(Id).
+@claimGoneAlready -!releaseClaim(_).
