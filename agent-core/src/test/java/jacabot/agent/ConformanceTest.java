@@ -12,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DynamicTest;
@@ -22,7 +23,7 @@ import org.junit.jupiter.api.TestFactory;
  * Runs each program in both run modes (a thread per agent, and deterministic stepping).
  */
 class ConformanceTest {
-    private static final java.util.regex.Pattern CONSOLE_LINE = java.util.regex.Pattern.compile("^\\[[A-Za-z0-9_]+\\] .*");
+    private static final Pattern CONSOLE_LINE = Pattern.compile("^\\[[A-Za-z0-9_]+\\] .*");
 
     static Path corpus(String name) throws URISyntaxException {
         return Path.of(ConformanceTest.class.getResource("/" + name).toURI());

@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 
 /**
  * The usage interface of an artifact class, found once by reflection: its operations, guards and
@@ -106,6 +107,14 @@ final class ArtifactType {
 
     Class<? extends Artifact> type() {
         return type;
+    }
+
+    /** {@return the operations agents may use (the usage interface), as name/arity, sorted} */
+    List<String> usageInterface() {
+        Set<String> out = new TreeSet<>();
+        operations.forEach((name, ops) -> ops.stream().filter(o -> o.kind() == OpMethod.Kind.OPERATION)
+                .forEach(o -> out.add(name + "/" + o.method().getParameterCount())));
+        return List.copyOf(out);
     }
 
     /** {@return the operations called {@code name}, of any arity, of the given kinds in that order} */

@@ -432,6 +432,15 @@ public final class Workspace implements AutoCloseable {
         return agents.has(agent);
     }
 
+    /**
+     * {@return the operations agents may use on {@code id} (its usage interface, inherited ones
+     * included), as name/arity, sorted; empty once it is disposed}
+     */
+    public List<String> operationsOf(ArtifactId id) {
+        ArtifactCore core = byId.get(id.id());
+        return core == null ? List.of() : core.type().usageInterface();
+    }
+
     /** {@return the agents observing {@code id}, in focus order} */
     public List<AgentId> observersOf(ArtifactId id) {
         ArtifactCore core = byId.get(id.id());

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -165,7 +166,7 @@ class ArtifactToArtifactTest {
             var waiting = Calls.start(ws, agent, OpTarget.name("blackboard"), "in", "pair", "k", new OpFeedbackParam<>());
             ok(ws, agent, "out", "pair", "j", 1);
             ok(ws, agent, "out", "pair", "k", 2);
-            OpOutcome got = waiting.get(10, java.util.concurrent.TimeUnit.SECONDS);
+            OpOutcome got = waiting.get(10, TimeUnit.SECONDS);
             assertEquals(2, ((OpOutcome.Success) got).outputs().get(2));
             assertEquals("j", ok(ws, agent, "rd", "pair", new OpFeedbackParam<>(), 1).outputs().get(1));
             assertReason("no_match", failure(ws, agent, OpTarget.any(), "inp", "pair", "k", new OpFeedbackParam<>()));

@@ -4,6 +4,8 @@ import static jacabot.cartago.Calls.ok;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import jacabot.cartago.examples.Counter;
+import java.util.List;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 
 /** The thesis' counter (Chapter 2, section 4.2): the agent's side played by Java calls. */
@@ -47,7 +49,7 @@ class CounterTest {
             AgentId agent = ws.join("counter_user", new RecordingObserver());
             ok(ws, agent, "println", "observed new value: ", 1.0);
             ok(ws, agent, "println", "perceived a tick");
-            ok(ws, agent, "print", "x = ", 2.5, " list ", java.util.List.of(1.0, "a"));
+            ok(ws, agent, "print", "x = ", 2.5, " list ", List.of(1.0, "a"));
             assertEquals("[counter_user] observed new value: 1\n[counter_user] perceived a tick\n"
                     + "[counter_user] x = 2.5 list [1,\"a\"]", console.text());
         }
@@ -63,16 +65,16 @@ class CounterTest {
             ok(ws, agent, "focus", c0);
             ok(ws, agent, "focus", "c1");
             alice.expect("c0 focused [count(0)]", "c1 focused [count(0)]");
-            assertEquals(java.util.List.of(c0, c1), ws.focusedBy(agent));
+            assertEquals(List.of(c0, c1), ws.focusedBy(agent));
 
             ok(ws, agent, "stopFocus", c0);
             alice.expect("c0 unfocused [count(0)]");
             Calls.call(ws, agent, OpTarget.id(c0), "inc");
             ok(ws, agent, "disposeArtifact", c1);
             alice.expect("c1 disposed [count(0)]");
-            assertEquals(java.util.List.of(), ws.focusedBy(agent));
-            assertEquals(java.util.Optional.empty(), ws.lookup("c1"));
-            assertEquals(java.util.List.of(), alice.drain(), "no event from c0 after stopFocus");
+            assertEquals(List.of(), ws.focusedBy(agent));
+            assertEquals(Optional.empty(), ws.lookup("c1"));
+            assertEquals(List.of(), alice.drain(), "no event from c0 after stopFocus");
         }
     }
 }

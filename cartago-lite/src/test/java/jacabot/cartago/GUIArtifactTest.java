@@ -7,10 +7,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import jacabot.cartago.tools.GUIArtifact;
+import java.awt.Component;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
+import java.awt.event.ItemEvent;
 import java.awt.event.MouseEvent;
+import java.awt.event.WindowEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -38,7 +41,7 @@ class GUIArtifactTest {
         SwingUtilities.invokeAndWait(action);
     }
 
-    static void drag(java.awt.Component on, int x, int y) {
+    static void drag(Component on, int x, int y) {
         on.dispatchEvent(new MouseEvent(on, MouseEvent.MOUSE_DRAGGED, System.currentTimeMillis(), InputEvent.BUTTON1_DOWN_MASK,
                 x, y, 0, false));
     }
@@ -190,8 +193,8 @@ class GUIArtifactTest {
         }
 
         @INTERNAL_OPERATION
-        void toggled(java.awt.event.ItemEvent e) {
-            signal("toggled", e.getStateChange() == java.awt.event.ItemEvent.SELECTED);
+        void toggled(ItemEvent e) {
+            signal("toggled", e.getStateChange() == ItemEvent.SELECTED);
         }
 
         @INTERNAL_OPERATION
@@ -345,7 +348,7 @@ class GUIArtifactTest {
         }
 
         @INTERNAL_OPERATION
-        void closing(java.awt.event.WindowEvent e) {
+        void closing(WindowEvent e) {
             signal("closing");
         }
     }
@@ -367,7 +370,7 @@ class GUIArtifactTest {
                 ok(f.ws, f.agent, "focus", id);
                 f.obs.next();
                 Windowed w = f.ws.artifactObject(id, Windowed.class).orElseThrow();
-                onEdt(() -> w.frame.dispatchEvent(new java.awt.event.WindowEvent(w.frame, java.awt.event.WindowEvent.WINDOW_CLOSING)));
+                onEdt(() -> w.frame.dispatchEvent(new WindowEvent(w.frame, WindowEvent.WINDOW_CLOSING)));
                 f.obs.expect("w !closing");
                 ok(f.ws, f.agent, "disposeArtifact", id);
                 for (int i = 0; i < 100 && w.frame.isDisplayable(); i++) {

@@ -5,7 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
 
 /** Workspace.execOpInline: a lockstep host's operation run on its own thread when it is next anyway. */
@@ -75,7 +77,7 @@ class InlineOperationTest {
 
     /** Remembers the thread of each step of an operation that waits. */
     public static final class Sleeper extends Artifact {
-        final java.util.List<String> threads = new java.util.concurrent.CopyOnWriteArrayList<>();
+        final List<String> threads = new CopyOnWriteArrayList<>();
 
         @OPERATION
         void nap() {

@@ -9,6 +9,7 @@ import jacabot.cartago.examples.Counter;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 
 /** Closing a workspace, logging, and the default artifacts. */
@@ -69,7 +70,7 @@ class WorkspaceLifecycleTest {
             assertEquals(Counter.class.getName(), c0.getArtifactType());
             assertEquals("cobj_" + c0.id(), c0.toString());
             assertEquals(List.of("workspace", "console", "blackboard", "body_alice", "c0"),
-                    ws.artifacts().stream().map(ArtifactId::getName).collect(java.util.stream.Collectors.toList()));
+                    ws.artifacts().stream().map(ArtifactId::getName).collect(Collectors.toList()));
             assertEquals(List.of(agent), ws.agents());
             assertEquals(agent, ws.lookup("body_alice").orElseThrow().creator());
             ws.leave(agent);

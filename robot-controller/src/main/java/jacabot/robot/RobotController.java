@@ -215,12 +215,22 @@ public final class RobotController implements AutoCloseable {
     /**
      * Several robots of one world in lockstep (a team), first half of {@link #answerStep}: sends the
      * step {@link #controlStep} sensed, without waiting for the answer, so that every robot's step is
-     * delivered before any agent reasons. {@return false when there was no step to send or no link}
+     * delivered before any agent reasons. A link that has dropped since it came up trips the
+     * fail-safe instead (the robot stops and is not waited for: its team goes on).
+     * {@return false when there was no step to send or no link}
      */
     public boolean sendStep() {
         Sensed s = sensed;
         sensed = null;
-        if (s == null || closed || !inbox.isConnected()) {
+        if (s == null || closed) {
+            return false;
+        }
+        if (!inbox.isConnected()) {
+            if (inbox.connections() > 0) {
+                synchronized (world) {
+                    failSafe("the link to the middleware dropped");
+                }
+            }
             return false;
         }
         link.send(out -> out.writeStep(s.batch(), s.marker()));

@@ -3,9 +3,12 @@ package jacabot.app.cli;
 import jacabot.app.bench.InterpreterBenchmark;
 import jacabot.app.bench.LatencyBenchmark;
 import jacabot.app.bench.SimulationBenchmark;
+import jacabot.app.bench.TeamSimulationBenchmark;
+import jacabot.app.run.AgentSource;
 import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.world.WorldSpec;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,21 +16,23 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** {@code jacabot bench ...}: benchmarks that print figures. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Benchmarks that print figures.",
         subcommands = {BenchCommand.Interpreter.class, BenchCommand.Latency.class, BenchCommand.Simulation.class, BenchWorldCommand.class})
 final class BenchCommand implements Runnable {
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec spec;
+    @Spec
+    private CommandSpec spec;
 
     @Override
     public void run() {
         var out = spec.commandLine().getOut();
         out.println("Usage: jacabot bench interpreter [--runs N] [--jason-classpath FILE] [--programs LIST] [--project FILE.mas2j] [--limit S]");
         out.println("       jacabot bench latency [--duration 60s] [--speed X]");
-        out.println("       jacabot bench sim [--duration 10m] [--seed N]");
+        out.println("       jacabot bench sim [--duration 10m] [--seed N] [--robots N]");
         out.flush();
     }
 
@@ -38,8 +43,8 @@ final class BenchCommand implements Runnable {
                     "Jason is not a dependency of jacabot: `gradle benchInterpreter` fetches it and writes its class path "
                     + "to build/jason-classpath.txt."})
     static final class Interpreter implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--runs", description = "measured runs per program and interpreter (default ${DEFAULT-VALUE})")
         private int runs = 3;
@@ -105,8 +110,8 @@ final class BenchCommand implements Runnable {
             description = "Runs experiment 4 headless in lockstep (agent, artifact, socket, controller, physics, sensors) "
                     + "and prints the real-time factor and the share of time in each part; then the procedural baseline.")
     static final class Simulation implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--duration", paramLabel = "T", description = "simulated time (default ${DEFAULT-VALUE})")
         private String duration = "10m";
@@ -123,10 +128,17 @@ final class BenchCommand implements Runnable {
         @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
+        @Option(names = "--robots", paramLabel = "N", description = "instead: team-delivery with a team of N robots against "
+                + "one robot, runs alternated (worlds/team-delivery.json, its seed; default --duration 60s, --warmup 1)")
+        private Integer robots;
+
         @Override
         public Integer call() throws Exception {
             if (warmups < 0 || runs < 1) {
                 throw new UserError("--warmup must be 0 or more and --runs 1 or more, got " + warmups + " and " + runs);
+            }
+            if (robots != null) {
+                return team();
             }
             Path world = CompareCommand.bundled(root, Experiment.SUSPEND_RESUME.worldFile());
             long runSeed;
@@ -139,6 +151,26 @@ final class BenchCommand implements Runnable {
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }
+
+        /** {@code --robots N}: the team's cost per simulated second against one robot's. */
+        private int team() throws Exception {
+            Path file = CompareCommand.bundled(root, "worlds/team-delivery.json");
+            WorldSpec world;
+            try {
+                world = WorldFileReader.read(file);
+            } catch (WorldFileException e) {
+                throw new UserError(e.getMessage());
+            }
+            if (robots < 1 || robots > world.robots().size()) {
+                throw new UserError("--robots must be in 1.." + world.robots().size() + " (the robots of " + file + "), got " + robots);
+            }
+            boolean defaultDuration = spec.commandLine().getParseResult().matchedOption("--duration") == null;
+            boolean defaultWarmup = spec.commandLine().getParseResult().matchedOption("--warmup") == null;
+            AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
+            new TeamSimulationBenchmark(world, agent, robots, ExperimentCommand.duration(defaultDuration ? "60s" : duration),
+                    seed != null ? seed : world.seed(), defaultWarmup ? 1 : warmups, runs, ConsoleStreams.of(spec.commandLine().getOut())).run();
+            return 0;
+        }
     }
 
     /** Reactive and response time over the real socket, in real time and in lockstep. */
@@ -147,8 +179,8 @@ final class BenchCommand implements Runnable {
                     + "lockstep: a box moved in front of the robot and away every 120 simulated ms, the agent answering "
                     + "each obstacle change with stop.")
     static final class Latency implements Callable<Integer> {
-        @picocli.CommandLine.Spec
-        private picocli.CommandLine.Model.CommandSpec spec;
+        @Spec
+        private CommandSpec spec;
 
         @Option(names = "--duration", paramLabel = "T", description = "simulated time in real-time mode (default ${DEFAULT-VALUE}); lockstep runs four times longer")
         private String duration = "120s";

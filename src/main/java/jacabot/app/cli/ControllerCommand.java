@@ -1,13 +1,17 @@
 package jacabot.app.cli;
 
 import jacabot.app.Installation;
+import jacabot.app.sweep.TeamDeliveryRun;
+import jacabot.app.world.TeamWorld;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.RobotController;
 import jacabot.robot.link.LinkSecret;
 import jacabot.sim.SimRunner;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
+import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.viewer.WorldViewer;
+import jacabot.sim.world.WorldSpec;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -26,12 +30,15 @@ import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code jacabot controller}: the robot controller process on its own (thesis Chapter 4, "Start the
  * Simulation"): runs one robot of a world and connects to the middleware's server socket, so the
- * simulator and the agent platform can run as two processes.
+ * simulator and the agent platform can run as two processes. With {@code --lockstep} and a world of
+ * several robots it runs them all, a team ({@link TeamControllerRun}).
  */
 @Command(name = "controller", mixinStandardHelpOptions = true,
         description = {"Runs one robot of a world as a robot controller process: it connects to the middleware "
@@ -41,8 +48,22 @@ final class ControllerCommand implements Callable<Integer> {
     @Option(names = "--world", required = true, paramLabel = "FILE", description = "the world file, e.g. worlds/navigation.json")
     private Path world;
 
-    @Option(names = "--robot", paramLabel = "NAME", description = "the robot to control (default: the world's first)")
+    @Option(names = "--robot", paramLabel = "NAME", description = "the robot to control (default: the world's first; "
+            + "with --lockstep and a world of several robots, every robot: a team)")
     private String robot;
+
+    @Option(names = "--robots", paramLabel = "N", description = "with --lockstep: a team of the world's first N robots, "
+            + "robot i connecting to --port + i (default: every robot of the world)")
+    private Integer robots;
+
+    @Option(names = "--seed", paramLabel = "N", description = "the world's seed: sensor noise, random motion (default: the world file's)")
+    private Long seed;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "a team: write per robot DIR/ROBOT/summary.json and event-log.txt (ground truth)")
+    private Path out;
+
+    @Option(names = "--link-log", description = "a team, with --out: also DIR/ROBOT/link-log.txt, a line per reading, applied command and pose")
+    private boolean linkLog;
 
     @Option(names = "--host", paramLabel = "HOST", description = "the middleware's address (default ${DEFAULT-VALUE})")
     private String host = "127.0.0.1";
@@ -78,8 +99,8 @@ final class ControllerCommand implements Callable<Integer> {
     @Option(names = "--tls-password-file", paramLabel = "FILE", description = "the --tls-store's password, on the file's first line")
     private Path tlsPasswordFile;
 
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec spec;
+    @Spec
+    private CommandSpec spec;
 
     @Option(names = "--seconds", paramLabel = "S", description = "stop after this much simulated time (default: run until stopped)")
     private Double seconds;
@@ -118,11 +139,22 @@ final class ControllerCommand implements Callable<Integer> {
         }
         SimWorld simWorld;
         try {
-            simWorld = SimWorld.load(Installation.locate(world));
-        } catch (WorldFileException e) {
-            throw new UserError(e.getMessage());
+            simWorld = SimWorld.of(spec());
         } catch (RuntimeException e) {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
+        }
+        if (isTeam(simWorld)) {
+            if (eventLog != null) {
+                throw new UserError("--event-log: a team's controller writes each robot's link log to OUT/ROBOT/link-log.txt; use --out DIR --link-log");
+            }
+            if (port + simWorld.robots().size() - 1 > 65535) {
+                throw new UserError("--port " + port + ": a team of " + simWorld.robots().size() + " needs ports up to " + (port + simWorld.robots().size() - 1));
+            }
+            return new TeamControllerRun(simWorld, config, host, port, out, linkLog, stdout).run(seconds);
+        }
+        if (out != null || linkLog) {
+            throw new UserError((out != null ? "--out" : "--link-log") + " is for a team (--lockstep and a world of several robots); "
+                    + "one robot's controller writes its link log with --event-log FILE");
         }
         BufferedWriter events = null;
         if (eventLog != null) {
@@ -173,6 +205,43 @@ final class ControllerCommand implements Callable<Integer> {
                 simWorld.time(), controller.steps()));
         stdout.flush();
         return 0;
+    }
+
+    /** {@return the world file's spec, with --seed and the first --robots robots} */
+    private WorldSpec spec() {
+        WorldSpec spec;
+        Path file = Installation.locate(world);
+        try {
+            spec = WorldFileReader.read(file);
+        } catch (WorldFileException e) {
+            throw new UserError(e.getMessage());
+        }
+        if (seed != null) {
+            spec = TeamDeliveryRun.withSeed(spec, seed);
+        }
+        if (robots != null) {
+            if (robot != null) {
+                throw new UserError("--robots N makes a team, --robot NAME runs one robot: choose one");
+            }
+            if (robots < 1 || robots > spec.robots().size()) {
+                throw new UserError("--robots must be in 1.." + spec.robots().size() + " (the robots of " + file + "), got " + robots);
+            }
+            spec = TeamWorld.firstRobots(spec, robots);
+        }
+        return spec;
+    }
+
+    /** A team: lockstep, no --robot, and --robots or a world of several robots. */
+    private boolean isTeam(SimWorld w) {
+        boolean team = robot == null && (robots != null || w.robots().size() > 1);
+        if (team && !lockstep) {
+            throw new UserError("a team (" + w.robots().size() + " robots in " + world + ") runs in lockstep only: add --lockstep, "
+                    + "or choose one robot with --robot NAME");
+        }
+        if (team && (viewer || tlsStore != null)) {
+            throw new UserError("a team's controller runs headless and without TLS (not built): drop " + (viewer ? "--viewer" : "--tls-store"));
+        }
+        return team;
     }
 
     private static void closeQuietly(Writer w) {

@@ -2,6 +2,7 @@ package jacabot.app.cli;
 
 import jacabot.app.plot.RunPlots;
 import jacabot.app.replay.StepLog;
+import jacabot.app.replay.TeamRuns;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -33,6 +34,10 @@ final class PlotCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         out = ConsoleStreams.of(commandSpec.commandLine().getOut());
+        if (dirs.size() == 1 && !TeamRuns.robotDirs(dirs.get(0)).isEmpty()) {
+            RunPlots.writeTeam(dirs.get(0), out); // a team's run: each robot's plots and every trajectory in one
+            return 0;
+        }
         for (Path dir : dirs) {
             if (!Files.isRegularFile(dir.resolve(StepLog.FILE))) {
                 throw new UserError(dir + ": no " + StepLog.FILE

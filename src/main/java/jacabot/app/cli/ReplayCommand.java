@@ -9,6 +9,7 @@ import jacabot.app.replay.Replay;
 import jacabot.app.replay.ReplayViewer;
 import jacabot.app.replay.StepArchive;
 import jacabot.app.replay.StepLog;
+import jacabot.app.replay.TeamRuns;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
@@ -83,6 +84,11 @@ final class ReplayCommand implements Callable<Integer> {
             return WhatIfRun.run(dir, whatIf, agent, world, duration, outDir, out, err);
         }
         boolean window = !headless && !GraphicsEnvironment.isHeadless();
+        List<Path> team = TeamRuns.robotDirs(dir);
+        if (!team.isEmpty() && !(!window && inspectorOptions.asked())) {
+            throw new UserError(dir + " is a team's run: replay one robot's folder (" + team.get(0)
+                    + "), or every robot's mind with --headless --inspector");
+        }
         if (!window && inspectorOptions.asked()) {
             try {
                 return serve(); // reads the step log on demand, not all of it into memory
@@ -133,6 +139,9 @@ final class ReplayCommand implements Callable<Integer> {
     private int serve() throws Exception {
         Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
         try {
+            if (!TeamRuns.robotDirs(dir).isEmpty()) {
+                return serveTeam(inspector);
+            }
             var archive = StepArchive.show(inspector, dir);
             try { // what-ifs from the page
                 StepLog.Header h = archive.header();
@@ -146,17 +155,32 @@ final class ReplayCommand implements Callable<Integer> {
             out.printf("The recorded run, %.1f s to %.1f s, is served at %s ; %s%n", archive.firstTimeMs() / 1000.0,
                     archive.lastTimeMs() / 1000.0, inspector.address(),
                     System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
-            out.flush();
-            commandSpec.commandLine().getOut().flush(); // the address now, not when the process ends
-            if (System.console() != null) {
-                System.in.read();
-            } else {
-                new CountDownLatch(1).await();
-            }
+            awaitQuit();
         } finally {
             inspector.close();
         }
         return 0;
+    }
+
+    /** A team's run: every robot's agent in the page, its history read on demand (no what-if: a team's is not built). */
+    private int serveTeam(Inspector inspector) throws Exception {
+        var first = TeamRuns.show(inspector, dir);
+        out.printf("The recorded team run, %d robots, %.1f s to %.1f s, is served at %s ; %s%n", TeamRuns.robotDirs(dir).size(),
+                first.firstTimeMs() / 1000.0, first.lastTimeMs() / 1000.0, inspector.address(),
+                System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
+        awaitQuit();
+        return 0;
+    }
+
+    /** The address now, not when the process ends; then serves until Enter (or Ctrl-C without a terminal). */
+    private void awaitQuit() throws IOException, InterruptedException {
+        out.flush();
+        commandSpec.commandLine().getOut().flush();
+        if (System.console() != null) {
+            System.in.read();
+        } else {
+            new CountDownLatch(1).await();
+        }
     }
 
     private int headlessReplay(Replay replay) throws IOException {

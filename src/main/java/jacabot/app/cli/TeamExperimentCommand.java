@@ -3,16 +3,25 @@ package jacabot.app.cli;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.Inspector;
+import jacabot.app.plot.RunPlots;
+import jacabot.app.replay.StepLog;
+import jacabot.app.replay.TeamTap;
 import jacabot.app.run.AgentSource;
+import jacabot.app.run.TeamLockstepRun;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
 import jacabot.app.world.WorldGenerator;
 import jacabot.cartago.CartagoException;
+import jacabot.robot.link.LinkSecret;
+import jacabot.robot.link.Protocol;
 import jacabot.robot.run.RunSummary;
+import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -66,11 +75,30 @@ final class TeamExperimentCommand implements Callable<Integer> {
             + "(default runs/team-delivery[-WORLD][-baseline]-NROBOTS-SEED)")
     private Path out;
 
+    @Option(names = "--link-log", description = "also write OUT/ROBOT/link-log.txt: the robot's controller's event log, "
+            + "a line per control step's readings, applied command and pose")
+    private boolean linkLog;
+
+    @Option(names = "--remote-controller", description = "the agents' side only: robot i's link waits on --port + i "
+            + "(default 4444 + i) for `jacabot controller --lockstep` with the same world file, team and seed in another process, "
+            + "and runs with it step by step (the same run as in one process)")
+    private boolean remoteController;
+
+    @Option(names = "--port", paramLabel = "PORT", description = "with --remote-controller: the first robot's port (default 4444)")
+    private int port = Protocol.DEFAULT_PORT;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "with --remote-controller: the link secret shared with the controller (default ~/.jacabot/link-secret)")
+    private Path secretFile;
+
     @Option(names = "--headless", description = "accepted for symmetry with the other experiments: a team always runs headless")
     private boolean headless;
 
     @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
+
+    @Mixin
+    private InspectorOptions inspectorOptions = new InspectorOptions();
 
     @Spec
     private CommandSpec commandSpec;
@@ -88,6 +116,9 @@ final class TeamExperimentCommand implements Callable<Integer> {
         int n = spec.robots().size();
         AgentSource source = agent != null ? ExperimentCommand.readAgent(Installation.locate(agent))
                 : AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
+        if (remoteController) {
+            return runWithRemoteController(spec, source, runSeed, seconds, log);
+        }
         Path outDir = out != null ? out : runFolder(world == null ? null : worldFile, baseline, n, runSeed);
         Files.createDirectories(outDir);
         log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + worldFile + ", seed " + runSeed + ", " + duration
@@ -95,17 +126,21 @@ final class TeamExperimentCommand implements Callable<Integer> {
                 + ", lockstep.");
         long t0 = System.nanoTime();
         TeamDeliveryRun.Outcome outcome;
+        Inspector inspector = null;
         if (baseline) {
             outcome = TeamDeliveryRun.baseline(spec, runSeed, seconds);
         } else {
             PrintStream console = log.agents();
             long every = 60_000;
-            try {
-                outcome = TeamDeliveryRun.agents(spec, source, runSeed, seconds, console, false, t -> {
+            inspector = inspectorOptions.start(false, "team-delivery, " + n + " robots, seed " + runSeed,
+                    ConsoleLog.lines(log::result));
+            Inspector page = inspector;
+            try { // every robot's step log (DIR/ROBOT/steps.jsonl.gz) and mind in the inspector
+                outcome = TeamDeliveryRun.agents(spec, source, runSeed, seconds, console, linkLog, t -> {
                     if (t > 0 && t % every == 0) {
                         log.info(String.format(Locale.ROOT, "t=%d s", t / 1000));
                     }
-                });
+                }, run -> TeamTap.attach(run, page, outDir, WorldGenerator.TEAM_DELIVERY, source.name()));
             } catch (AslSyntaxException e) {
                 throw UserError.located(e.getMessage());
             } catch (CartagoException e) {
@@ -117,9 +152,74 @@ final class TeamExperimentCommand implements Callable<Integer> {
         write(outDir, outcome, text);
         log.info("");
         text.forEach(log::result);
-        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt");
+        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt"
+                + (linkLog && !baseline ? ", ROBOT/link-log.txt" : "")
+                + (baseline ? "" : ", ROBOT/" + StepLog.FILE + " (jacabot replay " + outDir + " --headless --inspector)"));
+        if (!baseline) {
+            RunPlots.writeTeam(outDir, ConsoleLog.lines(log::result));
+        }
+        if (inspector != null) {
+            inspector.showPlots(outDir);
+            inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
+            inspector.close();
+        }
         if (outcome.agentFailure().isPresent()) {
             throw new RunFailure(outcome.agentFailure().get());
+        }
+        if (!outcome.departures().isEmpty()) {
+            throw new RunFailure("an agent left the team: " + outcome.departures().get(0));
+        }
+        return 0;
+    }
+
+    /**
+     * The agents' side of a team in two processes: the world, its summaries and its logs are the
+     * controllers' ({@code jacabot controller --lockstep --world FILE [--robots N] [--seed S] --out DIR}).
+     */
+    private int runWithRemoteController(WorldSpec spec, AgentSource source, long runSeed, double seconds, ConsoleLog log)
+            throws Exception {
+        int n = spec.robots().size();
+        if (baseline || linkLog || out != null) {
+            throw new UserError((baseline ? "--baseline" : linkLog ? "--link-log" : "--out")
+                    + " goes with the controllers' process when they are remote: `jacabot controller --lockstep ... --out DIR --link-log`");
+        }
+        if (port < 1 || port + n - 1 > 65535) {
+            throw new UserError("--port must leave " + n + " ports in 1..65535 (robot i listens on --port + i), got " + port);
+        }
+        try {
+            LinkSecret.useInThisProcess(secretFile != null ? LinkSecret.loadOrCreate(secretFile) : LinkSecret.userDefault());
+        } catch (IOException | UncheckedIOException e) {
+            throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
+        }
+        TeamLockstepRun made;
+        try {
+            made = new TeamLockstepRun(SimWorld.of(TeamDeliveryRun.withSeed(spec, runSeed)), source, runSeed, log.agents());
+        } catch (AslSyntaxException e) {
+            throw UserError.located(e.getMessage());
+        } catch (CartagoException e) {
+            throw new IllegalStateException("cannot make the team's artifacts: " + e.getMessage(), e);
+        }
+        try (TeamLockstepRun run = made) {
+            run.remoteController(true).port(port);
+            log.info("Waiting for `jacabot controller --lockstep --world FILE" + (robots != null ? " --robots " + robots : "")
+                    + " --seed " + runSeed + " --port " + port + "` with the same world file (robot i on port " + port + " + i).");
+            long[] steps = {0};
+            run.onStep(t -> steps[0]++);
+            try {
+                run.runFor(seconds);
+            } catch (IOException e) {
+                throw new IllegalStateException("cannot listen on ports " + port + ".." + (port + n - 1) + " (" + e.getMessage()
+                        + "); choose others with --port", e);
+            }
+            log.result(String.format(Locale.ROOT, "%d steps (%.1f s simulated) with the remote controllers, %d robots, %d reasoning cycles.",
+                    steps[0], steps[0] * spec.controlStep() / 1000.0, n, run.cycles()));
+            run.departures().forEach(d -> log.result("agent left: " + d));
+            if (run.agentFailure().isPresent()) {
+                throw new RunFailure(run.agentFailure().get());
+            }
+            if (!run.departures().isEmpty()) {
+                throw new RunFailure("an agent left the team: " + run.departures().get(0));
+            }
         }
         return 0;
     }
@@ -180,6 +280,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         lines.add(String.format(Locale.ROOT, "%.0f s simulated in %.1f s%s", f.duration(), wallSeconds,
                 o.baseline() ? "" : ", " + o.cycles() + " reasoning cycles"));
         o.agentFailure().ifPresent(why -> lines.add("agent failure: " + why));
+        o.departures().forEach(d -> lines.add("agent left: " + d));
         return lines;
     }
 
@@ -189,6 +290,10 @@ final class TeamExperimentCommand implements Callable<Integer> {
             Path dir = Files.createDirectories(outDir.resolve(r.robot()));
             r.writeJson(dir.resolve("summary.json"));
             Files.writeString(dir.resolve("event-log.txt"), r.eventLog());
+            List<String> links = o.linkLogs().get(r.robot());
+            if (links != null) {
+                Files.write(dir.resolve("link-log.txt"), links);
+            }
         }
     }
 }

@@ -26,10 +26,23 @@ public final class Debugger {
     public record Halt(long timeMs, String reason, MindState mind) {
     }
 
+    /**
+     * What a page shows of the debugger, read at one instant: where the run is halted (or null)
+     * and the breakpoints, with a version that grows at every change of either. A page that gets
+     * a command's answer after a newer pushed state (the run halted again meanwhile) keeps the
+     * newer one: it never shows a state older than the one it shows.
+     */
+    public record State(long version, Halt halted, List<String> breakpoints) {
+    }
+
     private final List<Breakpoint> breakpoints = new CopyOnWriteArrayList<>();
     private final List<Consumer<Halt>> listeners = new CopyOnWriteArrayList<>();
     private Set<String> beliefs = new HashSet<>();
     private Halt halted;
+    /** The halt is at the start of a reasoning cycle (that cycle runs first when the run goes on). */
+    private boolean haltedBeforeCycle;
+    /** Grows at each change of {@link #state()}. */
+    private long version;
     private final Queue<Runnable> tasks = new ArrayDeque<>();
     private boolean stepping;
     /** A one-cycle step was asked for; {@code cycleRan}: its cycle has started. */
@@ -41,12 +54,16 @@ public final class Debugger {
     /** Adds a breakpoint. {@return it} */
     public Breakpoint add(String spec) {
         Breakpoint b = Breakpoint.parse(spec);
-        breakpoints.add(b);
+        synchronized (this) {
+            breakpoints.add(b);
+            version++;
+        }
         return b;
     }
 
     /** Removes the breakpoint with this text. {@return whether there was one} */
-    public boolean remove(String spec) {
+    public synchronized boolean remove(String spec) {
+        version++;
         return breakpoints.removeIf(b -> b.text().equals(spec.trim()));
     }
 
@@ -57,6 +74,11 @@ public final class Debugger {
     /** Calls {@code listener} on the run's thread each time the run halts (print the mind, tell the page). */
     public void onHalt(Consumer<Halt> listener) {
         listeners.add(listener);
+    }
+
+    /** {@return where the run is halted and the breakpoints, at one instant} */
+    public synchronized State state() {
+        return new State(version, halted, breakpoints.stream().map(Breakpoint::text).toList());
     }
 
     /** {@return where the run is halted, or null while it runs} */
@@ -77,6 +99,7 @@ public final class Debugger {
         stepping = false;
         cycleStepping = false;
         halted = null;
+        version++;
         notifyAll();
     }
 
@@ -85,6 +108,7 @@ public final class Debugger {
         stepping = true;
         cycleStepping = false;
         halted = null;
+        version++;
         notifyAll();
     }
 
@@ -95,8 +119,10 @@ public final class Debugger {
     public synchronized void stepCycle() {
         stepping = false;
         cycleStepping = true;
-        cycleRan = false;
+        // halted at the start of a cycle: that cycle is the one step (not it and the next)
+        cycleRan = halted != null && haltedBeforeCycle;
         halted = null;
+        version++;
         notifyAll();
     }
 
@@ -149,13 +175,16 @@ public final class Debugger {
             if (why != null) {
                 reason = "breakpoint " + b.text() + ": " + why;
                 if (b.kind().equals("time")) {
-                    breakpoints.remove(b); // a time is reached once
+                    synchronized (this) {
+                        breakpoints.remove(b); // a time is reached once
+                        version++;
+                    }
                 }
                 break;
             }
         }
         if (reason != null) {
-            halt(new Halt(mind.timeMs(), reason, mind));
+            halt(new Halt(mind.timeMs(), reason, mind), false);
         }
     }
 
@@ -176,11 +205,11 @@ public final class Debugger {
             }
         }
         MindState m = mind.get();
-        halt(new Halt(m.timeMs(), "one reasoning cycle (cycle " + m.cycle() + ")", m));
+        halt(new Halt(m.timeMs(), "one reasoning cycle (cycle " + m.cycle() + ")", m), true);
     }
 
     /** Tells the listeners, then blocks the run's thread until a command lets it go on. */
-    private void halt(Halt h) {
+    private void halt(Halt h, boolean beforeCycle) {
         synchronized (this) {
             stepping = false;
             cycleStepping = false;
@@ -188,6 +217,8 @@ public final class Debugger {
         listeners.forEach(l -> l.accept(h)); // before the halt is seen: what they print comes first
         synchronized (this) {
             halted = h;
+            haltedBeforeCycle = beforeCycle;
+            version++;
             notifyAll();
         }
         // set once: a resume that comes while a task runs (halted = null) must not be overwritten

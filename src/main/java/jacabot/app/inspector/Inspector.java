@@ -28,6 +28,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.BiFunction;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * The mind inspector: a web page on loopback showing each agent's beliefs, events, intentions,
@@ -67,6 +68,7 @@ public final class Inspector implements AutoCloseable {
     private volatile Object world;
     private volatile Debugger debugger;
     private volatile RunEdits edits;
+    private volatile Supplier<Map<String, ArtifactInfo>> workspace = Map::of;
     private final List<WhatIfJob> whatIfs = new CopyOnWriteArrayList<>();
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
     private volatile Path plotDir;
@@ -97,6 +99,7 @@ public final class Inspector implements AutoCloseable {
         context("/api/timeline", ex -> withHistory(ex, (h, t) -> timeline(h)));
         context("/api/belief", ex -> withHistory(ex, (h, t) -> beliefHistory(h, query(ex).getOrDefault("name", ""))));
         context("/api/artifacts", ex -> sendJson(ex, artifacts(time(query(ex).get("t")))));
+        context("/api/workspace", ex -> sendJson(ex, workspace.get()));
         context("/api/source", ex -> sendJson(ex, Map.of("text", edits == null ? "" : edits.source())));
         context("/api/whatif", this::whatIf);
         context("/api/reload", this::reload);
@@ -164,9 +167,12 @@ public final class Inspector implements AutoCloseable {
         Debugger d = debugger;
         var out = new LinkedHashMap<String, Object>();
         out.put("available", d != null);
-        Debugger.Halt h = d == null ? null : d.halted();
+        Debugger.State s = d == null ? null : d.state();
+        // the page shows no state older than the one it shows (a command's answer may come after a push)
+        out.put("version", s == null ? 0 : s.version());
+        Debugger.Halt h = s == null ? null : s.halted();
         out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason(), "mind", h.mind()));
-        out.put("breakpoints", d == null ? List.of() : d.breakpoints().stream().map(Breakpoint::text).toList());
+        out.put("breakpoints", s == null ? List.of() : s.breakpoints());
         out.put("editable", edits != null);
         out.put("whatIfs", List.copyOf(whatIfs));
         return out;
@@ -313,6 +319,11 @@ public final class Inspector implements AutoCloseable {
             }
         }
         return out;
+    }
+
+    /** A live run's artifacts now, by name: their operations and who focuses on them (the artifacts panel). */
+    public void workspace(Supplier<Map<String, ArtifactInfo>> artifacts) {
+        this.workspace = artifacts;
     }
 
     /** The world the page draws under the robot: its geometry at the start (any JSON-writable value). */

@@ -2,6 +2,7 @@ package jacabot.app.plot;
 
 import jacabot.app.inspector.MindState;
 import jacabot.app.replay.StepLog;
+import jacabot.app.replay.TeamRuns;
 import jacabot.sim.engine.WorldSnapshot;
 import java.awt.Color;
 import java.awt.image.BufferedImage;
@@ -86,6 +87,22 @@ public final class RunPlots {
         if (!written.isEmpty()) {
             out.println("Plots: " + String.join(", ", written) + " in " + outDir);
         }
+    }
+
+    /**
+     * A team's folder: each robot's plots in its folder, and every robot's trajectory, each in its
+     * colour, in the team's {@code trajectory.png}.
+     */
+    public static void writeTeam(Path teamDir, PrintStream out) throws IOException {
+        List<Path> robots = TeamRuns.robotDirs(teamDir);
+        if (robots.isEmpty()) {
+            return;
+        }
+        for (Path r : robots) {
+            writeAll(r, out);
+        }
+        overlay(robots, teamDir.resolve("trajectory.png"));
+        out.println("Team trajectories: " + teamDir.resolve("trajectory.png"));
     }
 
     private static void save(Chart<?, ?> chart, Path dir, String name, List<String> written) {

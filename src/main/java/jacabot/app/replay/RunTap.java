@@ -3,22 +3,19 @@ package jacabot.app.replay;
 import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindProbe;
-import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.MindState;
+import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.RobotView;
 import jacabot.app.run.LockstepRun;
 import jacabot.experiments.link.StepData;
 import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
-import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
-import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import jacabot.sim.robot.Robot;
 import java.io.Closeable;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 
@@ -28,24 +25,18 @@ import java.util.function.Supplier;
  * reads the agent and the world, so the run itself is the same with or without it.
  */
 public final class RunTap implements Closeable {
-    private final SimWorld world;
-    private final Robot robot;
+    private final RobotTap robot;
     private final MindWatch watch;
-    private final StepLog.Writer log;
-    private volatile List<String> lastCommands = List.of();
-    private volatile List<SensorInfo> lastReadings = List.of();
     private volatile Debugger debugger;
     private final LockstepRun run;
     private StepLog.Header header;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.run = run;
-        this.world = run.world();
-        this.robot = world.robots().get(0);
-        this.log = log;
+        SimWorld world = run.world();
         // a robot programmed by several agents: the first one's mind (the task agent's)
-        var agent = run.mas().agent(run.agentNames().get(0));
-        this.watch = agent == null ? null : MindWatch.attach(inspector, agent, this::robotView);
+        this.robot = new RobotTap(world, world.robots().get(0), run.mas().agent(run.agentNames().get(0)), inspector, log);
+        this.watch = robot.watch();
         run.onCommands(this::afterStep);
     }
 
@@ -64,13 +55,11 @@ public final class RunTap implements Closeable {
             var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), w.name(), w.seed(), w.controlStep(),
                     w.robots().get(0).name(), agentFile, start,
                     run.mas().agent("robot") == null ? null : MindProbe.planTexts(run.mas().agent("robot")));
-            log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
-            if (inspector != null) {
-                archive(inspector, log, outDir.resolve(StepLog.FILE), header);
-            }
+            log = RobotTap.open(outDir.resolve(StepLog.FILE), header, inspector, "robot");
         }
         if (inspector != null) {
             inspector.world(start);
+            inspector.workspace(ArtifactsView.of(run.workspace()));
         }
         var tap = new RunTap(run, inspector, log);
         tap.header = log == null ? null : log.header();
@@ -84,32 +73,11 @@ public final class RunTap implements Closeable {
 
     /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */
     static void archive(Inspector inspector, StepLog.Writer log, Path file, StepLog.Header header) {
-        var archive = StepArchive.live(file, header);
-        log.onChunk(archive::add);
-        inspector.add("robot").archive(archive);
+        RobotTap.archive(inspector, log, file, header, "robot");
     }
 
     private void afterStep(StepData data, List<Command> commands) {
-        var text = new ArrayList<String>(commands.size());
-        commands.forEach(c -> text.add(c.toString()));
-        if (!commands.isEmpty()) {
-            lastCommands = text;
-        }
-        lastReadings = data.readings();
-        MindState mind = watch == null ? null : watch.capture();
-        if (log != null) {
-            List<ObjectState> objects;
-            StepLog.Body body;
-            synchronized (world) {
-                // not world.snapshot(): it copies the whole trajectory, every step
-                objects = world.supervisor().objects();
-                var p = robot.pose();
-                body = new StepLog.Body(p.x(), p.z(), p.heading(), robot.hasBattery() ? robot.getBattery().energy() : null,
-                        robot.getWheels().getLeftSpeed(), robot.getWheels().getRightSpeed(),
-                        robot.hasGripper() ? robot.getGripper().heldObject() : null, robot.contactTime());
-            }
-            log.step(data.simTimeMs(), body, commands, data.readings(), mind, objects);
-        }
+        MindState mind = robot.afterStep(data, commands);
         var d = debugger;
         if (d != null && mind != null) {
             d.afterStep(mind); // may halt here, the world waiting with the agent
@@ -140,38 +108,14 @@ public final class RunTap implements Closeable {
         return debugger(d);
     }
 
-    private RobotView robotView() {
-        var readings = new ArrayList<String>();
-        lastReadings.forEach(r -> readings.add(StepLog.reading(r)));
-        return view(world, robot, lastCommands, readings);
-    }
-
     /** {@return the first robot's body now, without commands (a real-time run sends them over its socket)} */
     public static Supplier<RobotView> robotView(SimWorld world) {
         Robot r = world.robots().get(0);
-        return () -> view(world, r, List.of(), List.of());
-    }
-
-    private static RobotView view(SimWorld world, Robot robot, List<String> commands, List<String> readings) {
-        synchronized (world) {
-            var p = robot.pose();
-            var placed = new ArrayList<RobotView.Placed>();
-            for (ObjectState o : world.supervisor().objects()) {
-                if (o.movable()) {
-                    placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
-                            StepLog.round(o.pose().heading()), o.carriedBy()));
-                }
-            }
-            return new RobotView(world.timeMs(), p.x(), p.z(), p.heading(),
-                    robot.hasBattery() ? robot.getBattery().energy() : null, robot.getWheels().getLeftSpeed(),
-                    robot.getWheels().getRightSpeed(), commands, placed, readings);
-        }
+        return () -> RobotTap.view(world, r, List.of(), List.of());
     }
 
     @Override
     public void close() throws IOException {
-        if (log != null) {
-            log.close();
-        }
+        robot.close();
     }
 }

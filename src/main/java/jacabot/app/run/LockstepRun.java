@@ -191,6 +191,11 @@ public final class LockstepRun implements AutoCloseable {
         return mas;
     }
 
+    /** {@return the run's workspace (read it, e.g. the inspector's artifacts panel; the run drives it)} */
+    public Workspace workspace() {
+        return workspace;
+    }
+
     public long cycles() {
         return cycles;
     }

@@ -19,19 +19,21 @@ import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
 import jacabot.experiments.SuspendResumeMiddleware;
 import jacabot.experiments.link.LinkConfig;
-import jacabot.experiments.link.LinkEvent;
 import jacabot.experiments.link.StepData;
 import jacabot.experiments.team.ChargerQueue;
 import jacabot.experiments.team.TaskBoard;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Experiment;
-import jacabot.robot.link.SensorInfo;
-import jacabot.sim.SimRunner;
+import jacabot.robot.RobotController;
+import jacabot.robot.TeamLockstep;
+import jacabot.robot.link.Command;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 import java.util.function.Consumer;
 
@@ -66,11 +68,25 @@ public final class TeamLockstepRun implements AutoCloseable {
     private final TeamWatch watch;
     private final List<String> linkLog = new ArrayList<>();
     private boolean stepLogs = true;
+    /** Two processes: the controllers are another process's; robot i's link listens on {@code port + i} (0: free ports). */
+    private boolean remote;
+    private int port;
+    private volatile TeamRemoteLinks remoteLinks;
+    private final Object arrivals = new Object();
+    private final List<String> departures = new ArrayList<>();
     private long cycles;
     private volatile boolean stopRequested;
     private RuntimeException failure;
     private Consumer<Long> onStep = t -> {
     };
+    private RobotStepListener onAnswer = (robot, data, commands) -> {
+    };
+
+    /** What a robot's link delivered in a control step and what its agent answered. */
+    @FunctionalInterface
+    public interface RobotStepListener {
+        void afterStep(String robot, StepData data, List<Command> commands);
+    }
 
     /**
      * @param world every robot of it is a member of the team, in the file's order
@@ -83,6 +99,7 @@ public final class TeamLockstepRun implements AutoCloseable {
                 .logger(CartagoLogger.console(console)).build();
         mas = new LocalMAS(clock::nowMillis, console, seed);
         mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
+        mas.onAgentDied(this::agentDied);
         stepper = new JacaStepper(mas, workspace);
         host = workspace.join("runner", new ArtifactObserverAdapter());
         ArtifactId boardId = workspace.createArtifact(BOARD, TaskBoard.class.getName(), CLAIM_RADIUS);
@@ -100,7 +117,7 @@ public final class TeamLockstepRun implements AutoCloseable {
             FailureWatch failures = new FailureWatch(goals);
             mas.createAgent(name, program, parser, CAgentArch::new)
                     .setPlanListener((event, plan) -> failures.planSelected(event, clock.nowMillis()));
-            members.add(new TeamMember(name, id, middleware, failures, goals));
+            members.add(new TeamMember(name, id, middleware, failures, goals, this::arrived));
         }
         watch = new TeamWatch(world, board, charger, members.stream().map(TeamMember::robot).toList());
     }
@@ -116,12 +133,26 @@ public final class TeamLockstepRun implements AutoCloseable {
         this.onStep = listener;
     }
 
+    /**
+     * Called for each robot after each control step, in the world file's order, with its readings
+     * and the commands going to it: the agents are idle, the world not yet stepped (step logs, the
+     * inspector). Only reads, so the run is the same with or without it.
+     */
+    public void onAnswer(RobotStepListener listener) {
+        this.onAnswer = listener;
+    }
+
     public SimWorld world() {
         return world;
     }
 
     public LocalMAS mas() {
         return mas;
+    }
+
+    /** {@return the team's workspace (read it, e.g. the inspector's artifacts panel; the run drives it)} */
+    public Workspace workspace() {
+        return workspace;
     }
 
     public long cycles() {
@@ -143,9 +174,31 @@ public final class TeamLockstepRun implements AutoCloseable {
         return board;
     }
 
-    /** {@return robot {@code robot}'s event log: its controller's lines and its agent side's, one per step} */
+    /** {@return the team's charger queue (read it between two steps)} */
+    public ChargerQueue charger() {
+        return charger;
+    }
+
+    /**
+     * {@return robot {@code robot}'s event log: its controller's lines (readings, applied commands and
+     * poses), a line {@code --}, its agent side's (a step's readings and the commands answered)}
+     */
     public List<String> eventLog(String robot) {
-        return members.stream().filter(m -> m.robot().equals(robot)).findFirst().orElseThrow().eventLog();
+        return member(robot).eventLog();
+    }
+
+    /** {@return robot {@code robot}'s controller's lines (empty when the controllers are in another process)} */
+    public List<String> controllerLog(String robot) {
+        return List.copyOf(member(robot).controllerLog());
+    }
+
+    /** {@return robot {@code robot}'s agent side's lines, one per step answered} */
+    public List<String> agentLog(String robot) {
+        return List.copyOf(member(robot).agentLog());
+    }
+
+    private TeamMember member(String robot) {
+        return members.stream().filter(m -> m.robot().equals(robot)).findFirst().orElseThrow();
     }
 
     /** {@return the first agent that failed at its job and why, e.g. "khepera2: no plan for !start"} */
@@ -170,93 +223,172 @@ public final class TeamLockstepRun implements AutoCloseable {
         workspace.close();
     }
 
+    // ---- two processes: the controllers in another ({@code jacabot controller --lockstep --world FILE}) ----
+
     /**
-     * Runs {@code seconds} of simulated time (less when an agent fails at its job or {@link #stop}).
-     *
-     * @throws IllegalStateException when the agent side fails
+     * The controllers are another process's ({@code jacabot controller --lockstep} with the same
+     * world file and team): robot i's link listens on {@link #port} + i, and each step is answered
+     * once every robot's step has come (the barrier stays here), so the run is the one-process run.
+     * The world here only gives the spec; it is not stepped, and {@link #watch} counts nothing.
      */
-    public void runFor(double seconds) {
-        for (TeamMember m : members) {
-            ControllerConfig cc = ControllerConfig.defaults().withRobot(m.robot()).withLockstep(true).withLog(linkLog::add);
-            if (stepLogs) {
-                cc = cc.withEventLog(m.eventLog()::add);
+    public TeamLockstepRun remoteController(boolean on) {
+        this.remote = on;
+        return this;
+    }
+
+    /** With {@link #remoteController}: robot i's link listens on {@code basePort + i} (0: each on a free port). */
+    public TeamLockstepRun port(int basePort) {
+        this.port = basePort;
+        return this;
+    }
+
+    /** {@return with {@link #remoteController}, the ports listened on in the robots' order, once they are (empty before)} */
+    public List<Integer> listeningPorts() {
+        TeamRemoteLinks l = remoteLinks;
+        return l == null ? List.of() : l.ports();
+    }
+
+    /** {@return the agents that left the team during the run and why, e.g. "khepera2 at t=12.3 s: its reasoning threw ..."} */
+    public List<String> departures() {
+        return List.copyOf(departures);
+    }
+
+    /** The agents' half with the controllers in another process, until {@code seconds} of steps or their goodbye. */
+    private void runRemote(double seconds) throws IOException, InterruptedException {
+        try (TeamRemoteLinks links = TeamRemoteLinks.open(members, port, linkLog::add)) {
+            remoteLinks = links;
+            long endAt = Math.round(seconds * 1000);
+            int controlStep = world.controlStep();
+            while (!stopRequested && failure == null) {
+                long now = links.awaitSteps(arrivals, () -> stopRequested);
+                if (now < 0) {
+                    break; // every controller said goodbye, or stop()
+                }
+                agentsTurnOrFail(now);
+                afterStep(now);
+                if (now + controlStep >= endAt) {
+                    links.awaitGoodbyes(arrivals); // the answer is on its way: closing now could cut it off
+                    break;
+                }
             }
-            m.connect(InProcessLink.inMemory(world, cc, LinkConfig.defaults().withLog(linkLog::add)));
-        }
-        SimRunner runner = new SimRunner(world, w -> members.forEach(m -> m.link().controller().controlStep(w)), this::step);
-        runner.setMode(SimRunner.Mode.FAST);
-        long end = world.timeMs() + Math.round(seconds * 1000);
-        while (world.timeMs() < end && !stopRequested && failure == null) {
-            runner.stepOnce();
+        } finally {
+            remoteLinks = null;
         }
         if (failure != null) {
             throw failure;
         }
     }
 
-    /** One team step, without the world's lock: deliver every robot's step, reason once, answer every robot. */
-    private void step(SimWorld w) {
-        try {
-            for (TeamMember m : members) {
-                m.link().controller().sendStep(); // in memory: the robot's frames are read before this returns
-            }
-            long now = w.timeMs();
-            if (now > clock.nowMillis()) {
-                clock.advance(now - clock.nowMillis());
-            }
-            for (TeamMember m : members) {
-                StepData data = m.takeStep();
-                if (data != null && !mas.isStopped()) {
-                    workspace.execOpInline(host, OpTarget.id(m.middlewareId()), "deliverStep", new Object[] {data}, outcome -> {
-                    });
-                }
-            }
-            if (!mas.isStopped()) {
-                cycles += stepper.runUntilQuiescent(LockstepRun.CYCLES_PER_STEP * members.size());
-                for (TeamMember m : members) {
-                    m.firstReasoningDone(mas);
-                }
-            }
-            for (TeamMember m : members) {
-                m.answer(stepLogs);
-            }
-            for (TeamMember m : members) {
-                m.link().controller().finishStep();
-            }
-            watch.afterStep(now);
-            if (agentFailure().isPresent() || mas.isStopped()) {
-                stopRequested = true;
-            }
-            onStep.accept(now);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            stopRequested = true;
-        } catch (RuntimeException e) {
-            failure = e;
+    private void arrived() {
+        synchronized (arrivals) {
+            arrivals.notifyAll();
         }
     }
 
-    /** The middleware end of a robot's link: collects a step's readings until its marker. */
-    static final class StepCollector implements Consumer<LinkEvent> {
-        private final List<SensorInfo> readings = new ArrayList<>();
-        private StepData pending;
+    // ---- an agent that dies leaves the team ----
 
-        @Override
-        public void accept(LinkEvent e) {
-            if (e instanceof LinkEvent.Connected) {
-                readings.clear();
-            } else if (e instanceof LinkEvent.Reading r) {
-                readings.add(r.info());
-            } else if (e instanceof LinkEvent.StepMarker m) {
-                pending = new StepData(m.step(), m.simTimeMs(), List.copyOf(readings));
-                readings.clear();
+    /** An agent's reasoning threw (on the run's thread, inside the agents' turn): it is out of the system. */
+    private void agentDied(String agent, Throwable why) {
+        mas.console("[" + agent + "] *** the agent died: " + why);
+    }
+
+    /**
+     * After the agents' turn: an agent no longer in the system (it died, or {@code .kill_agent})
+     * leaves the workspace, so the board frees its claims and the charger queue its place
+     * ({@code agentLeft}), and its robot's link is closed, so its controller's fail-safe stops it.
+     */
+    private void departuresAfterReasoning(long now) {
+        for (TeamMember m : members) {
+            if (m.left() != null || (mas.agent(m.robot()) != null && !mas.agent(m.robot()).isStopped())) {
+                continue;
+            }
+            for (AgentId a : workspace.agents()) {
+                if (a.name().equals(m.robot())) {
+                    workspace.leave(a);
+                }
+            }
+            String why = String.format(Locale.ROOT, "%s at t=%.2f s: its agent is gone", m.robot(), now / 1000.0);
+            departures.add(why);
+            m.agentLeft(why);
+        }
+    }
+
+    /**
+     * Runs {@code seconds} of simulated time (less when an agent fails at its job or {@link #stop}).
+     *
+     * @throws IllegalStateException when the agent side fails
+     * @throws IOException           with {@link #remoteController}, when a link cannot listen
+     */
+    public void runFor(double seconds) throws IOException, InterruptedException {
+        if (remote) {
+            runRemote(seconds);
+            return;
+        }
+        List<RobotController> controllers = new ArrayList<>();
+        for (TeamMember m : members) {
+            ControllerConfig cc = ControllerConfig.defaults().withRobot(m.robot()).withLockstep(true).withLog(linkLog::add);
+            if (stepLogs) {
+                cc = cc.withEventLog(m.controllerLog()::add);
+            }
+            m.connect(InProcessLink.inMemory(world, cc, LinkConfig.defaults().withLog(linkLog::add)));
+            controllers.add(m.controller());
+        }
+        TeamLockstep team = new TeamLockstep(world, controllers, this::agentsTurnOrFail).afterStep(now -> {
+            if (failure == null) {
+                watch.afterStep(now);
+                afterStep(now);
+            }
+        });
+        long end = world.timeMs() + Math.round(seconds * 1000);
+        while (world.timeMs() < end && !stopRequested && failure == null && !team.interrupted()) {
+            team.runner().stepOnce();
+        }
+        if (failure != null) {
+            throw failure;
+        }
+    }
+
+    /** The agents' turn of a team step: deliver every robot's step, reason once, answer every robot. */
+    private void agentsTurnOrFail(long now) {
+        if (failure != null) {
+            return;
+        }
+        try {
+            agentsTurn(now);
+        } catch (RuntimeException e) {
+            failure = e;
+            members.forEach(m -> m.agentLeft("the agent side failed")); // no controller waits for an answer that will not come
+        }
+    }
+
+    private void agentsTurn(long now) {
+        if (now > clock.nowMillis()) {
+            clock.advance(now - clock.nowMillis());
+        }
+        for (TeamMember m : members) {
+            StepData data = m.takeStep();
+            if (data != null && !mas.isStopped()) {
+                workspace.execOpInline(host, OpTarget.id(m.middlewareId()), "deliverStep", new Object[] {data}, outcome -> {
+                });
             }
         }
-
-        StepData take() {
-            StepData d = pending;
-            pending = null;
-            return d;
+        if (!mas.isStopped()) {
+            cycles += stepper.runUntilQuiescent(LockstepRun.CYCLES_PER_STEP * members.size());
+            departuresAfterReasoning(now);
+            for (TeamMember m : members) {
+                m.firstReasoningDone(mas);
+            }
         }
+        for (TeamMember m : members) {
+            m.answer(stepLogs, onAnswer);
+        }
+    }
+
+    /** After every robot's answer: a failed agent ends the run; progress. */
+    private void afterStep(long now) {
+        if (agentFailure().isPresent() || mas.isStopped()) {
+            stopRequested = true;
+        }
+        onStep.accept(now);
     }
 }

@@ -11,6 +11,8 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.WorldSpec;
+import java.io.Closeable;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -37,12 +39,15 @@ public final class TeamDeliveryRun {
      * @param robots        every robot's summary, in the world file's order
      * @param claims        claims made on the task board (0 for the baseline, which has none)
      * @param chargerWaits  how many times a robot queued behind another for the charger
-     * @param stepLogs      every robot's step log (agents only, when kept)
+     * @param linkLogs      every robot's controller event log: a line per reading, applied command and pose
+     *                      (agents only, when kept)
      * @param agentFailure  the first agent that failed at its job, and why
+     * @param departures    the agents that left the team during the run (died), and when
      */
     public record Outcome(boolean baseline, long seed, List<RunSummary> robots, int claims, int chargerWaits,
                           SuccessCriteria.TeamFigures figures, SuccessCriteria.Verdict verdict,
-                          Map<String, List<String>> stepLogs, Optional<String> agentFailure, long cycles) {
+                          Map<String, List<String>> linkLogs, Optional<String> agentFailure, long cycles,
+                          List<String> departures) {
         /** {@return the team's deliveries} */
         public int deliveries() {
             return figures.deliveries();
@@ -61,10 +66,29 @@ public final class TeamDeliveryRun {
      * @param onStep called after each control step with the simulated time in ms (progress), or null
      */
     public static Outcome agents(WorldSpec spec, AgentSource agent, long seed, double seconds, PrintStream console,
-            boolean stepLogs, Consumer<Long> onStep) throws AslSyntaxException, CartagoException {
+            boolean stepLogs, Consumer<Long> onStep) throws AslSyntaxException, CartagoException, IOException, InterruptedException {
+        return agents(spec, agent, seed, seconds, console, stepLogs, onStep, null);
+    }
+
+    /** What watches a team's run (its robots' step logs, the inspector): attached before it runs, closed after. */
+    @FunctionalInterface
+    public interface Tap {
+        Closeable attach(TeamLockstepRun run) throws IOException;
+    }
+
+    /**
+     * As {@link #agents(WorldSpec, AgentSource, long, double, PrintStream, boolean, Consumer)}, watched by {@code tap}.
+     *
+     * @param tap attached before the run and closed after it, or null
+     * @throws IOException when the tap cannot write
+     */
+    public static Outcome agents(WorldSpec spec, AgentSource agent, long seed, double seconds, PrintStream console,
+            boolean stepLogs, Consumer<Long> onStep, Tap tap)
+            throws AslSyntaxException, CartagoException, IOException, InterruptedException {
         SimWorld world = SimWorld.of(withSeed(spec, seed));
         List<RunRecorder> recorders = attach(world);
-        try (TeamLockstepRun run = new TeamLockstepRun(world, agent, seed, console)) {
+        try (TeamLockstepRun run = new TeamLockstepRun(world, agent, seed, console);
+                Closeable watching = tap == null ? null : tap.attach(run)) {
             run.stepLogs(stepLogs);
             if (onStep != null) {
                 run.onStep(onStep);
@@ -72,13 +96,13 @@ public final class TeamDeliveryRun {
             run.runFor(seconds);
             Map<String, List<String>> logs = new LinkedHashMap<>();
             for (String r : run.robots()) {
-                logs.put(r, List.copyOf(run.eventLog(r)));
+                logs.put(r, run.controllerLog(r));
             }
             List<RunSummary> summaries = summaries(recorders, AGENTS);
             TeamWatch w = run.watch();
             var figures = figures(world, summaries, w.doubleClaims(), w.longestChargerWait());
             return new Outcome(false, seed, summaries, w.claims(), w.chargerWaits(), figures,
-                    SuccessCriteria.judgeTeam(figures), logs, run.agentFailure(), run.cycles());
+                    SuccessCriteria.judgeTeam(figures), logs, run.agentFailure(), run.cycles(), run.departures());
         }
     }
 
@@ -87,10 +111,11 @@ public final class TeamDeliveryRun {
         TeamBaseline.TeamRun run = TeamBaseline.run(SimWorld.of(withSeed(spec, seed)), seed, seconds);
         var figures = figures(run.world(), run.summaries(), 0, 0);
         return new Outcome(true, seed, run.summaries(), 0, 0, figures, SuccessCriteria.judgeTeam(figures), Map.of(),
-                Optional.empty(), 0);
+                Optional.empty(), 0, List.of());
     }
 
-    private static List<RunRecorder> attach(SimWorld world) {
+    /** {@return a recorder of ground truth per robot of the world, in its order} */
+    public static List<RunRecorder> attach(SimWorld world) {
         List<RunRecorder> out = new ArrayList<>();
         for (Robot r : world.robots()) {
             out.add(RunRecorder.attach(world, r.name()));
@@ -98,7 +123,8 @@ public final class TeamDeliveryRun {
         return out;
     }
 
-    private static List<RunSummary> summaries(List<RunRecorder> recorders, String controller) {
+    /** {@return every recorder's summary, naming {@code controller}} */
+    public static List<RunSummary> summaries(List<RunRecorder> recorders, String controller) {
         List<RunSummary> out = new ArrayList<>();
         for (RunRecorder r : recorders) {
             out.add(r.summary(controller));

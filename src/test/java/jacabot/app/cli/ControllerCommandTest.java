@@ -47,6 +47,18 @@ class ControllerCommandTest {
     }
 
     @Test
+    void aTeamWorldsControllerRunsInLockstepAndWritesPerRobot(@TempDir Path dir) {
+        String team = Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", "team-delivery.json").toString();
+        String secret = dir.resolve("secret").toString();
+        assertUserError(run("controller", "--world", team, "--secret-file", secret), "runs in lockstep only: add --lockstep");
+        assertUserError(run("controller", "--world", team, "--lockstep", "--robots", "9", "--secret-file", secret),
+                "--robots must be in 1..4");
+        assertUserError(run("controller", "--world", team, "--lockstep", "--event-log", dir.resolve("e").toString(),
+                "--secret-file", secret), "use --out DIR --link-log");
+        assertUserError(run("controller", "--world", NAVIGATION, "--out", dir.toString(), "--secret-file", secret), "--out is for a team");
+    }
+
+    @Test
     void theControllerConnectsToARunningMiddleware(@TempDir Path dir) throws Exception {
         Path secretFile = dir.resolve("secret");
         var secret = LinkSecret.loadOrCreate(secretFile); // made 0600, as the launchers do

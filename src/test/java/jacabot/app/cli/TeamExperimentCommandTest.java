@@ -21,8 +21,41 @@ class TeamExperimentCommandTest {
         for (String robot : new String[] {"khepera1", "khepera2"}) {
             assertTrue(Files.readString(dir.resolve(robot).resolve("summary.json")).contains("\"robot\" : \"" + robot + "\""));
             assertTrue(Files.exists(dir.resolve(robot).resolve("event-log.txt")));
+            assertTrue(Files.size(dir.resolve(robot).resolve("steps.jsonl.gz")) > 0, robot + "'s step log");
         }
         assertTrue(Files.readString(dir.resolve("summary.txt")).startsWith("team-delivery, 2 robots, seed 21"));
+        assertTrue(Files.size(dir.resolve("trajectory.png")) > 0, "every robot's trajectory");
+
+        // the team's folder in the tools: plotted again, one robot replayed, the whole team only in the inspector
+        Files.delete(dir.resolve("trajectory.png"));
+        String[] plot = CliRun.run("plot", dir.toString());
+        assertEquals("0", plot[0], plot[2]);
+        assertTrue(Files.exists(dir.resolve("trajectory.png")) && Files.exists(dir.resolve("khepera2").resolve("speed.png")), plot[1]);
+        String[] one = CliRun.run("replay", dir.resolve("khepera2").toString(), "--headless");
+        assertEquals("0", one[0], one[2]);
+        assertTrue(one[1].contains("robot khepera2"), one[1]);
+        String[] all = CliRun.run("replay", dir.toString(), "--headless");
+        assertEquals("2", all[0], all[2]);
+        assertTrue(all[2].contains("is a team's run") && all[2].contains("--headless --inspector"), all[2]);
+    }
+
+    @Test
+    void theAgentsSideOfTwoProcessesLeavesTheOutputsToTheControllers() {
+        String[] r = CliRun.run("experiment", "team-delivery", "--robots", "2", "--remote-controller", "--link-log");
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("--link-log goes with the controllers' process"), r[2]);
+        r = CliRun.run("experiment", "team-delivery", "--robots", "4", "--remote-controller", "--port", "65534");
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("--port must leave 4 ports in 1..65535"), r[2]);
+    }
+
+    @Test
+    void benchSimComparesATeamWithOneRobotInTheSameRun() {
+        String[] r = CliRun.run("bench", "sim", "--robots", "2", "--duration", "2s", "--warmup", "0", "--runs", "1");
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[1].contains("\n| 1 | ") && r[1].contains("\n| 2 | "), r[1]);
+        assertTrue(r[1].matches("(?s).*2 robots cost \\d+\\.\\d\\dx one robot per simulated second.*"), r[1]);
+        assertEquals("2", CliRun.run("bench", "sim", "--robots", "5")[0]);
     }
 
     @Test

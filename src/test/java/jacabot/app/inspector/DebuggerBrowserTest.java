@@ -115,6 +115,10 @@ class DebuggerBrowserTest {
                 wait.until(b -> text(b, "halted").contains("one reasoning cycle"));
                 assertEquals(cycle + 1, debugger.halted().mind().cycle());
                 wait.until(b -> text(b, "cycle").equals(String.valueOf(cycle + 1)));
+                // the command's answer, read before the halt, may reach the page after the halt's push
+                // (under load): an older state never replaces the one shown
+                script(browser, "const d = window.debugState; showDebug(Object.assign({}, d, {version: d.version - 1, halted: null}));");
+                assertTrue(text(browser, "halted").contains("one reasoning cycle"), "the halt stays shown");
 
                 // the breakpoint deleted from the page, the run continued to its end
                 script(browser, "document.querySelector('#breakpoints a').click();");

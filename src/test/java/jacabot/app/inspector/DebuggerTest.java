@@ -1,6 +1,7 @@
 package jacabot.app.inspector;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -39,17 +40,59 @@ class DebuggerTest {
     static final Experiment EXPERIMENT = Experiment.parse("obstacle-avoidance").orElseThrow();
 
     private static String run(Path dir, Debugger debugger) throws Exception {
-        var spec = WorldFileReader.read(ROOT.resolve(EXPERIMENT.worldFile()));
         String text;
         try (InputStream in = DebuggerTest.class.getResourceAsStream("breaker.asl")) {
             text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
-        var run = new LockstepRun(SimWorld.of(spec), null, EXPERIMENT, AgentSource.text("breaker.asl", text), 1,
+        return run(dir, debugger, "breaker.asl", text, 6);
+    }
+
+    private static String run(Path dir, Debugger debugger, String name, String text, double seconds) throws Exception {
+        var spec = WorldFileReader.read(ROOT.resolve(EXPERIMENT.worldFile()));
+        var run = new LockstepRun(SimWorld.of(spec), null, EXPERIMENT, AgentSource.text(name, text), 1,
                 new PrintStream(OutputStream.nullOutputStream()));
-        try (RunTap tap = RunTap.attach(run, null, dir, EXPERIMENT, "breaker.asl")) {
+        try (RunTap tap = RunTap.attach(run, null, dir, EXPERIMENT, name)) {
             tap.debugger(debugger);
-            return run.runFor(6).eventLog();
+            return run.runFor(seconds).eventLog();
         }
+    }
+
+    /** An agent that reasons a few cycles in a row every third control step or so (its waits are 100 ms). */
+    static final String TICKER = """
+            !tick(0).
+            @tick +!tick(N) <- +count(N); -count(N); .wait(100); !tick(N + 1).
+            """;
+
+    @Test
+    @Timeout(120)
+    void eachCycleStepGoesOneCycleAlsoFromAHaltBetweenTwoCycles(@TempDir Path dir) throws Exception {
+        var debugger = new Debugger();
+        debugger.pause();
+        var log = new String[1];
+        Thread runner = new Thread(() -> {
+            try {
+                log[0] = run(dir, debugger, "ticker.asl", TICKER, 2);
+            } catch (Exception e) {
+                log[0] = "failed: " + e;
+            }
+        }, "cycle-stepped-run");
+        runner.start();
+        Debugger.Halt before = await(debugger);
+        int betweenCycles = 0;
+        for (int k = 0; k < 12; k++) {
+            debugger.stepCycle();
+            Debugger.Halt next = awaitAfter(debugger, before);
+            assertEquals(before.mind().cycle() + 1, next.mind().cycle(),
+                    "one cycle on from '" + before.reason() + "' to '" + next.reason() + "'");
+            if (!next.reason().contains("the last of this control step")) {
+                betweenCycles++;
+            }
+            before = next;
+        }
+        assertTrue(betweenCycles >= 2, "some halts are between two cycles of a step, and stepped from: " + betweenCycles);
+        debugger.resume();
+        runner.join(60_000);
+        assertFalse(log[0].startsWith("failed"), log[0]);
     }
 
     @Test

@@ -85,6 +85,10 @@ class InspectorBrowserTest {
                 wait.until(b -> count(b, "#selections tbody tr") > 0);
                 String selection = query(browser, "#selections tbody tr");
                 assertTrue(selection.contains("{") && selection.contains("}"), "a unifier in " + selection);
+                // the artifacts panel, live: the middleware's operations and the agent focusing on it
+                wait.until(b -> Browser.text(b, "artifacts").contains("acquireData/0"));
+                assertEquals("robot", ((JavascriptExecutor) browser).executeScript("return [...document.querySelectorAll("
+                        + "'#artifacts tbody tr')].find(r => r.cells[0].textContent === 'middleware').cells[4].textContent"));
                 // on a loaded machine the time line may trail the beliefs by a push or two
                 wait.until(b -> Double.parseDouble(Browser.text(b, "time")) > t0);
                 double t1 = Double.parseDouble(Browser.text(browser, "time"));

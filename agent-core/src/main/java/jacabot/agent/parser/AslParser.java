@@ -19,8 +19,11 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import org.antlr.v4.runtime.BailErrorStrategy;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
+import org.antlr.v4.runtime.atn.PredictionMode;
+import org.antlr.v4.runtime.misc.ParseCancellationException;
 
 /**
  * Reads AgentSpeak: whole agent programs (with {@code { include("f.asl") }} directives),
@@ -303,14 +306,14 @@ public final class AslParser {
         var quiet = new ErrorCollector("");
         AgentSpeakParser sll = newParser(text, quiet);
         sll.removeErrorListeners();
-        sll.setErrorHandler(new org.antlr.v4.runtime.BailErrorStrategy());
-        sll.getInterpreter().setPredictionMode(org.antlr.v4.runtime.atn.PredictionMode.SLL);
+        sll.setErrorHandler(new BailErrorStrategy());
+        sll.getInterpreter().setPredictionMode(PredictionMode.SLL);
         try {
             AgentSpeakParser.AgentContext tree = sll.agent();
             if (quiet.errors().isEmpty()) {
                 return tree;
             }
-        } catch (org.antlr.v4.runtime.misc.ParseCancellationException e) {
+        } catch (ParseCancellationException e) {
             // an error, or input SLL cannot decide: parse again with LL
         }
         return newParser(text, errors).agent();

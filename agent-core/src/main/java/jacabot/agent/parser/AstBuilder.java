@@ -366,7 +366,7 @@ final class AstBuilder {
             ns = null;
         }
         return new Literal(functor, args, List.of(), negated, false, namespaces.map(ns),
-                annots instanceof ListTerm.Empty ? null : annots);
+                annots instanceof ListTerm.Empty ? null : annots, where(ctx));
     }
 
     /** {@code ns::}, {@code NS::}, {@code _::}, {@code ::}: the namespace written (null: the default one). */

@@ -24,6 +24,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.BiConsumer;
 import java.util.function.Function;
 
 /**
@@ -50,6 +51,8 @@ public final class LocalMAS {
     /** Whether the stepping thread waits (or is about to): only then does a wake take its lock. */
     private volatile boolean steppingAsleep;
     private final CountDownLatch finished = new CountDownLatch(1);
+    /** Stepping: told of an agent whose reasoning cycle threw; null: the throw ends the step. */
+    private volatile BiConsumer<String, Throwable> onAgentDied;
 
     /**
      * Wakes one sleeping agent thread. The sleeper raises {@code asleep} before it checks for
@@ -272,14 +275,39 @@ public final class LocalMAS {
                 if (stopped || run >= budget) {
                     break;
                 }
-                if (!a.canSleep()) {
-                    a.reasoningCycle();
+                if (!a.isStopped() && !a.canSleep()) { // a killed agent may be in the list taken before
                     run++;
                     any = true;
+                    cycleOrDie(a);
                 }
             }
         }
         return run;
+    }
+
+    /**
+     * Stepping: an agent whose reasoning cycle throws (an exception, a runaway recursion) is taken out
+     * of the system, as by {@code .kill_agent}, and {@code listener} is told; the other agents go on.
+     * Without a listener (the default) the throw ends {@link #runUntilQuiescent}, as before. Not in
+     * Jason, whose agent threads log the error and go on: a team's host wants the agent gone, so that
+     * its robot stops and what it held is freed.
+     */
+    public void onAgentDied(BiConsumer<String, Throwable> listener) {
+        this.onAgentDied = listener;
+    }
+
+    private void cycleOrDie(Agent a) {
+        BiConsumer<String, Throwable> died = onAgentDied;
+        if (died == null) {
+            a.reasoningCycle();
+            return;
+        }
+        try {
+            a.reasoningCycle();
+        } catch (RuntimeException | StackOverflowError e) {
+            kill(a.name());
+            died.accept(a.name(), e);
+        }
     }
 
     /** Runs in stepping mode until {@code .stopMAS}, sleeping while every agent is idle. */

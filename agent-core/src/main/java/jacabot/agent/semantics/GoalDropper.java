@@ -1,6 +1,7 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
@@ -81,6 +82,18 @@ public final class GoalDropper {
         }
     }
 
+    /** {@return whether a {@code ^!g} plan is relevant for the goal of this trigger} */
+    private boolean hasGoalStatePlan(Trigger goal) {
+        Trigger meta = new Trigger(Trigger.Op.GOAL_STATE, goal.type(), goal.literal());
+        for (Plan p : ag.planLibrary().candidates(meta)) {
+            // the state annotations are the meta event's, not the goal's
+            if (p.trigger().literal() instanceof Literal pl && ag.newUnifier().unifies(pl.withoutAnnots(), goal.literal())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     public void drop() {
         Circumstance c = ag.circumstance();
         for (Event e : c.eventList()) {
@@ -102,6 +115,11 @@ public final class GoalDropper {
                         ? new Trigger(Trigger.Op.DEL, Trigger.Type.ACHIEVE, e.trigger().literal()) : null;
                 if (failTrigger != null && (i == null || !i.isFinished()) && ag.planLibrary().hasCandidate(failTrigger)) {
                     c.addEvent(new Event(failTrigger, i));
+                } else if (failTrigger != null && i == null && hasGoalStatePlan(e.trigger())) {
+                    // a !!g with no -!g plan is dropped silently, unless a ^!g plan follows the
+                    // goal's states: then Jason still posts -!g, which finds no plan and is
+                    // discarded with two warnings (jason-oracle/42)
+                    c.addEvent(new Event(failTrigger, null));
                 } else if (i != null && !i.isFinished()) {
                     if (mode == Mode.SUCCEED) {
                         ag.cycle().removeActionReQueue(i);

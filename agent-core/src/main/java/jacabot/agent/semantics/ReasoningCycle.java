@@ -484,8 +484,11 @@ final class ReasoningCycle {
         if (!se.isExternal()) {
             ag.warn("Could not finish intention: " + te);
             ag.dropIntention(se.intention());
+            return true;
         }
-        return true;
+        // an external -!g with no plan (a waiting !!g that .fail_goal ended): the caller warns too
+        ag.warn("Discarding external event: " + te);
+        return false;
     }
 
     /** Goal states of a failure: failed, then handled by a failure plan or finished with the goals below. */

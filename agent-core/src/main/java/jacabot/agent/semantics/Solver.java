@@ -234,7 +234,7 @@ public final class Solver {
                     break;
             }
             return new Literal(l.functor(), args, l.annots().isEmpty() ? l.annots() : mapAll(l.annots()), l.negated(),
-                    false, l.ns() == null ? null : map(l.ns()), l.tail() == null ? null : map(l.tail()));
+                    false, l.ns() == null ? null : map(l.ns()), l.tail() == null ? null : map(l.tail()), l.src());
         }
 
         @Override

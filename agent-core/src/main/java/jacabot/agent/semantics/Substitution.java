@@ -42,7 +42,7 @@ final class Substitution {
             }
             // a tail bound to a list brings its elements into the annotations (the constructor's work)
             return new Literal(l.functor(), applyAll(u, l.args()), applyAll(u, l.annots()), l.negated(), false,
-                    l.ns() == null ? null : apply(u, l.ns()), l.tail() == null ? null : apply(u, l.tail()));
+                    l.ns() == null ? null : apply(u, l.ns()), l.tail() == null ? null : apply(u, l.tail()), l.src());
         }
         if (t instanceof ListTerm.Cons) {
             if (!needsApply(u, t)) {

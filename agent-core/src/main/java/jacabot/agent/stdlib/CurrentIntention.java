@@ -4,7 +4,6 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Circumstance;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Intention;
-import jacabot.agent.semantics.Renamer;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Term;
@@ -28,7 +27,7 @@ final class CurrentIntention extends DefaultInternalAction {
         if (i == null) {
             return false;
         }
-        Term stack = Renamer.renameApart(IntentionIa.stack(i), ag);
+        Term stack = IntentionIa.stack(i, ag); // as Jason's, the same term as .intention's
         return un.unifies(args[0], Literal.of("intention", new NumberTerm(i.id()), stack));
     }
 }

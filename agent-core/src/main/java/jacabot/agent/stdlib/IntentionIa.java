@@ -45,7 +45,7 @@ final class IntentionIa extends DefaultInternalAction {
             if (!u.unifies(args[1], stateTerm(c, i))) {
                 continue;
             }
-            if (args.length >= 3 && !u.unifies(args[2], Renamer.renameApart(stack(i), ag))) {
+            if (args.length >= 3 && !u.unifies(args[2], stack(i, ag))) {
                 continue;
             }
             out.add(u);
@@ -67,7 +67,15 @@ final class IntentionIa extends DefaultInternalAction {
         return i.isSuspended() ? "suspended" : "waiting";
     }
 
-    static Term stack(Intention i) {
+    /**
+     * The stack as Jason's {@code Intention.getAsTerm} makes it, top first: each body with fresh
+     * variables, and each unifier as {@code map(Key, Value)} pairs in the order of Jason's hash map
+     * of variable names, each key a fresh variable named after the one it stands for
+     * ({@code _47ErrorId}), each value as bound: a variable stays the intention's own (a later
+     * binding, as the failure plan's {@code X = failure}, shows through it) and the variables of a
+     * structure are fresh. The trigger keeps the intention's variables.
+     */
+    static Term stack(Intention i, Agent ag) {
         var ims = new ArrayList<Term>();
         for (IntendedMeans im : i) {
             Unifier u = im.unifier();
@@ -78,14 +86,22 @@ final class IntentionIa extends DefaultInternalAction {
             }
             Term trigger = new TriggerTerm(im.trigger().withLiteral(u.apply(im.trigger().literal())));
             // the body as written (Jason does not apply the unifier; its variables come out fresh)
-            var steps = new ArrayList<>(im.remainingSteps());
+            Term body = Renamer.renameApart(new BodyTerm(new ArrayList<>(im.remainingSteps())), ag);
             var map = new ArrayList<Term>();
-            for (Map.Entry<Var, Term> e : u.bindings().entrySet()) {
+            for (Map.Entry<Var, Term> e : JasonHashOrder.of(u.bindings())) {
                 // the value as bound, not evaluated again (it may hold plans with math.random in their bodies)
-                map.add(Literal.of("map", e.getKey(), e.getValue()));
+                Term value = e.getValue() instanceof Var ? e.getValue() : Renamer.renameApart(e.getValue(), ag);
+                map.add(Literal.of("map", keyVar(e.getKey(), ag), value));
             }
-            ims.add(Literal.of("im", label, trigger, new BodyTerm(steps), listOf(map)));
+            ims.add(Literal.of("im", label, trigger, body, listOf(map)));
         }
         return listOf(ims);
+    }
+
+    /** Jason's {@code UnnamedVar.create(name)}: {@code _47} for a one-letter name, else {@code _47Name}. */
+    private static Var keyVar(Var v, Agent ag) {
+        String name = JasonHashOrder.jasonName(v);
+        Var fresh = ag.freshVar(v);
+        return name.length() == 1 ? fresh : new Var(fresh + name);
     }
 }

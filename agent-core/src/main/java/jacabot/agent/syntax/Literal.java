@@ -17,9 +17,12 @@ import java.util.function.Consumer;
  *
  * @param tail null (nearly always), or what follows {@code |} in the annotations: a variable, or a
  *        list whose elements join the annotations (its own tail, if any, becomes the tail)
+ * @param src where the literal was written (null: made at run time); as Jason's, it goes with the
+ *        literal through unifiers, beliefs and messages ({@code .get_src_info}) and counts for
+ *        nothing else (equality, order, printing)
  */
 public record Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns,
-        Term tail) implements Term {
+        Term tail, SourceInfo src) implements Term {
 
     public static final Literal DEFAULT_NS = new Literal("default", List.of(), List.of(), false, false, null);
     public static final Literal TRUE = atom("true");
@@ -56,21 +59,31 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         }
     }
 
+    public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns,
+            Term tail) {
+        this(functor, args, annots, negated, operandAtom, ns, tail, null);
+    }
+
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom, Term ns) {
-        this(functor, args, annots, negated, operandAtom, ns, null);
+        this(functor, args, annots, negated, operandAtom, ns, null, null);
     }
 
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated, boolean operandAtom) {
-        this(functor, args, annots, negated, operandAtom, null, null);
+        this(functor, args, annots, negated, operandAtom, null, null, null);
     }
 
     public Literal(String functor, List<Term> args, List<Term> annots, boolean negated) {
-        this(functor, args, annots, negated, false, null, null);
+        this(functor, args, annots, negated, false, null, null, null);
+    }
+
+    /** {@return the same literal, written at {@code where}} */
+    public Literal at(SourceInfo where) {
+        return new Literal(functor, args, annots, negated, operandAtom, ns, tail, where);
     }
 
     /** {@return this atom as written in a relational expression (see {@link #operandAtom})} */
     public Literal asOperandAtom() {
-        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true, ns, null) : this;
+        return isAtom() && !operandAtom ? new Literal(functor, args, annots, negated, true, ns, null, src) : this;
     }
 
     /** {@return the same literal in namespace {@code newNs} (null or {@code default}: the default one)} */
@@ -78,7 +91,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         if (newNs instanceof Literal l && l.isDefaultNsName()) {
             newNs = null;
         }
-        return Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs, tail);
+        return Objects.equals(newNs, ns) ? this : new Literal(functor, args, annots, negated, operandAtom, newNs, tail, src);
     }
 
     /** {@return the namespace as a term: the atom {@code default} for the default namespace} */
@@ -200,16 +213,16 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     /** {@return the literal with these annotations (the tail, if any, kept)} */
     public Literal withAnnots(List<Term> newAnnots) {
-        return new Literal(functor, args, newAnnots, negated, false, ns, tail);
+        return new Literal(functor, args, newAnnots, negated, false, ns, tail, src);
     }
 
     public Literal withArgs(List<Term> newArgs) {
-        return new Literal(functor, newArgs, annots, negated, false, ns, tail);
+        return new Literal(functor, newArgs, annots, negated, false, ns, tail, src);
     }
 
     /** {@return the literal with no annotations and no tail} */
     public Literal withoutAnnots() {
-        return annots.isEmpty() && tail == null ? this : new Literal(functor, args, List.of(), negated, false, ns);
+        return annots.isEmpty() && tail == null ? this : new Literal(functor, args, List.of(), negated, false, ns, null, src);
     }
 
     /** {@return this literal without its {@code source(_)} annotations} */
@@ -228,14 +241,14 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
 
     /** {@return a literal with these arguments annotated {@code [source(self)]} only (a belief or goal of the agent's own)} */
     public Literal withArgsFromSelf(List<Term> newArgs) {
-        return new Literal(functor, newArgs, SOURCE_SELF_ONLY, negated, false, ns);
+        return new Literal(functor, newArgs, SOURCE_SELF_ONLY, negated, false, ns, null, src);
     }
 
     public Literal addAnnot(Term annot) {
         int n = annots.size();
         if (n == 0) {
             // source(self) on a subgoal or a belief of the agent's own: a list shared by all
-            return new Literal(functor, args, annot == SOURCE_SELF ? SOURCE_SELF_ONLY : List.of(annot), negated, false, ns, tail);
+            return new Literal(functor, args, annot == SOURCE_SELF ? SOURCE_SELF_ONLY : List.of(annot), negated, false, ns, tail, src);
         }
         // one insertion into the sorted annotations, without re-sorting them
         int lo = 0;
@@ -260,7 +273,7 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         for (int i = lo; i < n; i++) {
             out[i + 1] = annots.get(i);
         }
-        return new Literal(functor, args, List.of(out), negated, false, ns, tail);
+        return new Literal(functor, args, List.of(out), negated, false, ns, tail, src);
     }
 
     /** {@return the first annotation with this functor, or null} */

@@ -13,6 +13,14 @@ public record SourceInfo(String file, int line, int column) {
         return "file:" + file.substring(slash + 1);
     }
 
+    /**
+     * {@return the source as Jason's {@code .get_src_info} names it: as {@link #jasonFile}, or ""
+     * for code read from a string at run time (whose parser names it {@code <term>} or {@code <plan>})}
+     */
+    public String jasonSrc() {
+        return file.startsWith("<") ? "" : jasonFile();
+    }
+
     /** {@return the position as Jason prints it in messages: {@code file:path:line}} */
     public String jasonPosition() {
         return jasonFile() + ":" + line;

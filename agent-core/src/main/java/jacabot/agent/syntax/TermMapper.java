@@ -30,7 +30,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
             return l;
         }
         return new Literal(l.functor(), mapAll(l.args()), mapAll(l.annots()), l.negated(), false,
-                l.ns() == null ? null : map(l.ns()), l.tail() == null ? null : map(l.tail()));
+                l.ns() == null ? null : map(l.ns()), l.tail() == null ? null : map(l.tail()), l.src());
     }
 
     @Override

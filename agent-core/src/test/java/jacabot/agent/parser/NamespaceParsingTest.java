@@ -6,10 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.AnnotatedVar;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Var;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -28,10 +31,10 @@ class NamespaceParsingTest {
         assertEquals("N::~p(1)[a]", parser.parseTerm("N::~p(1)[a]").toString());
         Literal d = (Literal) parser.parseTerm("default::b(1)");
         assertNull(d.ns());
-        assertEquals(Literal.of("b", new jacabot.agent.syntax.NumberTerm(1)), d);
+        assertEquals(Literal.of("b", new NumberTerm(1)), d);
         assertTrue(((Literal) parser.parseTerm("NS::b")).ns() instanceof Var);
         // a variable with a namespace stands for a literal of that namespace
-        var nsVar = (jacabot.agent.syntax.AnnotatedVar) parser.parseTerm("ns::X");
+        var nsVar = (AnnotatedVar) parser.parseTerm("ns::X");
         assertEquals("ns::X", nsVar.toString());
         assertEquals(Literal.atom("ns"), nsVar.ns());
     }
@@ -82,7 +85,7 @@ class NamespaceParsingTest {
                 { include("m.asl", b) }
                 { include("m.asl") }
                 """);
-        var p = new AslParser(java.util.List.of(dir)).parseFile(dir.resolve("main.asl"));
+        var p = new AslParser(List.of(dir)).parseFile(dir.resolve("main.asl"));
         String text = plans(p);
         assertTrue(text.contains("+!a::go <- .print(a); ?#1priv::n(X); .send(bob,tell,a::done(X))"), text);
         assertTrue(text.contains("+!b::go <- .print(b); ?#2priv::n(X); .send(bob,tell,b::done(X))"), text);

@@ -1,15 +1,23 @@
 package jacabot.agent.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.semantics.Clock;
+import jacabot.agent.semantics.Message;
+import jacabot.agent.syntax.Literal;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -17,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
 /** Messaging between agents, .mas2j projects, and the determinism of stepping mode. */
 class LocalMASTest {
     private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-    private final java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong();
+    private final AtomicLong now = new AtomicLong();
     private final LocalMAS mas = new LocalMAS(now::get, new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
     private final AslParser parser = new AslParser();
 
@@ -49,6 +57,34 @@ class LocalMASTest {
                 "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
     }
 
+    /** Stepping: an agent whose cycle throws is taken out when asked to be (a team's host), else the throw ends the step. */
+    @Test
+    void anAgentWhoseCycleThrowsIsTakenOutAndTheOthersGoOn() throws Exception {
+        String counter = "n(0).\n!count.\n+!count : n(N) & N < 5 <- -+n(N + 1); .print(N); !count.\n+!count.\n";
+        for (boolean listening : new boolean[] {false, true}) {
+            var out = new ByteArrayOutputStream();
+            var system = new LocalMAS(now::get, new PrintStream(out, true, StandardCharsets.UTF_8), 1);
+            system.createAgent("alice", parser.parse(counter, "alice.asl"), parser, null);
+            system.createAgent("bob", parser.parse(counter, "bob.asl"), parser, null);
+            system.agent("bob").setPlanListener((event, plan) -> {
+                throw new IllegalStateException("simulated");
+            });
+            if (!listening) {
+                var thrown = assertThrows(IllegalStateException.class, () -> system.runUntilQuiescent(10_000));
+                assertEquals("simulated", thrown.getMessage());
+                continue;
+            }
+            List<String> died = new ArrayList<>();
+            system.onAgentDied((name, e) -> died.add(name + ": " + e.getMessage()));
+            system.runUntilQuiescent(10_000);
+            assertEquals(List.of("bob: simulated"), died);
+            assertEquals(null, system.agent("bob"), "out of the system");
+            assertEquals(List.of("alice"), system.agentNames());
+            assertEquals(List.of("[alice] 0", "[alice] 1", "[alice] 2", "[alice] 3", "[alice] 4"),
+                    out.toString(StandardCharsets.UTF_8).lines().toList(), "alice went on");
+        }
+    }
+
     /** What Jason 3.2.0 prints for these three agents (in some order): every other agent gets both messages. */
     @Test
     void broadcastReachesEveryOtherAgent() throws Exception {
@@ -58,8 +94,8 @@ class LocalMASTest {
         agent("bob", listener);
         agent("carol", listener);
         mas.runUntilQuiescent(10_000);
-        var got = new java.util.ArrayList<>(lines());
-        java.util.Collections.sort(got);
+        var got = new ArrayList<>(lines());
+        Collections.sort(got);
         assertEquals(List.of("[bob] greetalice", "[bob] hello1alice", "[carol] greetalice", "[carol] hello1alice"), got);
     }
 
@@ -77,7 +113,7 @@ class LocalMASTest {
         agent("a", "!go.\n+!go <- for (.range(I, 1, 20)) { .send(b, tell, n(I)) }.\n");
         agent("b", "+n(I) <- .print(I).\n");
         mas.runUntilQuiescent(100_000);
-        List<String> expected = new java.util.ArrayList<>();
+        List<String> expected = new ArrayList<>();
         for (int i = 1; i <= 20; i++) {
             expected.add("[b] " + i);
         }
@@ -99,7 +135,7 @@ class LocalMASTest {
 
     private static List<String> runStepped(String program) throws Exception {
         var bytes = new ByteArrayOutputStream();
-        var now = new java.util.concurrent.atomic.AtomicLong();
+        var now = new AtomicLong();
         var mas = new LocalMAS(now::get, new PrintStream(bytes, true, StandardCharsets.UTF_8), 99);
         var parser = new AslParser();
         mas.createAgent("x", parser.parse(program, "x.asl"), parser, null);
@@ -160,7 +196,7 @@ class LocalMASTest {
                 """);
         var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
         launched.runUntilQuiescent(1000);
-        var got = new java.util.ArrayList<>(lines());
+        var got = new ArrayList<>(lines());
         assertEquals(List.of("[ag1] 1 c", "[ag1] h1"), got.stream().filter(l -> l.startsWith("[ag1]")).collect(Collectors.toList()));
         assertTrue(got.contains("[ag2] 1 c") && got.contains("[ag2] h1"), got.toString());
         assertTrue(got.stream().noneMatch(l -> l.startsWith("[other] 1")), "other has no option beliefs: " + got);
@@ -178,7 +214,7 @@ class LocalMASTest {
     @Test
     void anInfrastructureOtherThanLocalIsRefused(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n infrastructure: Jade\n agents: a;\n}\n");
-        var e = org.junit.jupiter.api.Assertions.assertThrows(jacabot.agent.parser.AslSyntaxException.class,
+        var e = assertThrows(AslSyntaxException.class,
                 () -> Mas2jReader.read(dir.resolve("p.mas2j")));
         assertTrue(e.getMessage().contains("infrastructure 'Jade' is not supported"), e.getMessage());
     }
@@ -188,7 +224,7 @@ class LocalMASTest {
     void aProjectThatDoesNotParsePrintsJasonsLine(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a; at;\n}\n");
         var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
-        org.junit.jupiter.api.Assertions.assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
         assertEquals(List.of("[RunLocalMAS] Error parsing file file:" + dir.resolve("p.mas2j") + "!"), lines());
     }
 
@@ -290,7 +326,7 @@ class LocalMASTest {
     /** An agent with nothing to do parks its thread after its yields, and a message still wakes it. */
     @Test
     void anIdleAgentParksAndAMessageWakesIt() throws Exception {
-        var threaded = new LocalMAS(jacabot.agent.semantics.Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+        var threaded = new LocalMAS(Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
         threaded.createAgent("bob", parser.parse("+hello[source(A)] <- .print(hello, A); .stopMAS.\n", "bob.asl"), parser, null);
         Thread runner = startRunning(threaded, false);
         Thread bob = null;
@@ -301,7 +337,7 @@ class LocalMASTest {
             }
         }
         assertTrue(bob != null && bob.getState() == Thread.State.TIMED_WAITING, "the idle agent's thread parks, it does not spin");
-        threaded.deliver(new jacabot.agent.semantics.Message("m1", "alice", "bob", "tell", jacabot.agent.syntax.Literal.atom("hello"), null));
+        threaded.deliver(new Message("m1", "alice", "bob", "tell", Literal.atom("hello"), null));
         runner.join(10_000);
         assertTrue(threaded.isStopped(), "the message woke bob, whose plan stopped the system");
         assertEquals(List.of("[bob] helloalice"), lines());
@@ -310,7 +346,7 @@ class LocalMASTest {
     /** A receiver lingering between the messages of a stream (threads, not stepping) loses none, in order. */
     @Test
     void aStreamOfMessagesArrivesWholeAndInOrderBetweenThreads() throws Exception {
-        var threaded = new LocalMAS(jacabot.agent.semantics.Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
+        var threaded = new LocalMAS(Clock.wall(), new PrintStream(bytes, true, StandardCharsets.UTF_8), 1);
         threaded.createAgent("a", parser.parse("!go.\n+!go <- for (.range(I, 1, 5000)) { .send(b, tell, n(I)) }; .send(b, tell, last).\n", "a.asl"),
                 parser, null);
         threaded.createAgent("b", parser.parse("next(1).\n+n(I) : next(I) <- -+next(I + 1).\n+n(I) <- .print(out_of_order, I).\n"

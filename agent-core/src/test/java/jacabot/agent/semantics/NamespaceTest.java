@@ -10,8 +10,10 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TermOrder;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
+import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** Namespaces in unification, order, the belief base and the plan library, as in Jason 3.2. */
 class NamespaceTest {
@@ -98,7 +100,7 @@ class NamespaceTest {
     }
 
     @Test
-    void aModuleIncludedAtRunTimeGetsItsNamespace(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+    void aModuleIncludedAtRunTimeGetsItsNamespace(@TempDir Path dir) throws Exception {
         java.nio.file.Files.writeString(dir.resolve("m.asl"), """
                 n(1).
                 +!go : n(X) <- .print(in(this_ns, X)); +::done.

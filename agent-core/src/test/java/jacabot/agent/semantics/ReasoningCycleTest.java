@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -124,7 +126,7 @@ class ReasoningCycleTest {
                 """);
         a.deferFeedback = true;
         a.cycles(50);
-        a.percepts = List.of(jacabot.agent.syntax.Literal.atom("seen"));
+        a.percepts = List.of(Literal.atom("seen"));
         a.cycles(50);
         assertEquals(List.of("a1", "b1"), a.printed());
         a.finishActions().cycles(50);
@@ -137,7 +139,7 @@ class ReasoningCycleTest {
                 +obstacle(D)[source(percept)] <- .print(seen, D).
                 -obstacle(D) <- .print(gone, D).
                 """);
-        a.percepts = List.of(jacabot.agent.syntax.Literal.of("obstacle", new jacabot.agent.syntax.NumberTerm(350)));
+        a.percepts = List.of(Literal.of("obstacle", new NumberTerm(350)));
         a.cycles(10);
         assertTrue(a.believes("obstacle(350)[source(percept)]"));
         a.percepts = List.of();

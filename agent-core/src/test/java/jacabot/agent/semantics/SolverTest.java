@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
@@ -81,7 +82,7 @@ class SolverTest {
         var a = new TestAgent(ANCESTOR + "parent(1, 2). parent(2, 3). parent(3, 4).");
         a.cycles(5);
         var it = a.agent.solver().solve(new AslParser().parseTerm("ancestor(1, Y)"), new Unifier());
-        var found = new java.util.ArrayList<String>();
+        var found = new ArrayList<String>();
         while (it.hasNext()) {
             Unifier u = it.next();
             assertEquals(Set.of(new Var("Y")), u.bindings().keySet());

@@ -30,14 +30,19 @@ class InspectionActionsTest {
     }
 
     @Test
-    void getSrcInfoAddsTheLineAndFileOfTheCall() {
+    void getSrcInfoGivesWhereTheLiteralWasWrittenNotWhereItIsAsked() {
         var a = new TestAgent("""
+                b(c(7)).
                 !g.
-                +!g <- .print(x);
-                       .get_src_info(b(1)[k], R); .print(R).
+                +!g <- X = b(1)[k];
+                       .print(x);
+                       .get_src_info(X, R); .print(R);
+                       ?b(C); .get_src_info(C, S); .print(S);
+                       Y =.. [f, [1], []]; .get_src_info(Y, T); .print(T).
                 """);
-        a.cycles(10);
-        assertEquals("b(1)[code_line(3),code_src(\"file:bob.asl\"),k]", a.printed().get(1));
+        a.cycles(20);
+        assertEquals(List.of("x", "b(1)[code_line(3),code_src(\"file:bob.asl\"),k]",
+                "c(7)[code_line(1),code_src(\"file:bob.asl\")]", "f(1)[code_line(no_code),code_src(no_code)]"), a.printed());
     }
 
     @Test

@@ -3,6 +3,8 @@ package jacabot.agent.stdlib;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.Trigger;
 import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -47,8 +49,8 @@ class WaitTest {
                 """);
         a.cycles(10);
         assertTrue(a.agent.canSleep());
-        a.agent.addExternalEvent(new jacabot.agent.syntax.Trigger(jacabot.agent.syntax.Trigger.Op.ADD,
-                jacabot.agent.syntax.Trigger.Type.ACHIEVE, jacabot.agent.syntax.Literal.atom("go")));
+        a.agent.addExternalEvent(new Trigger(Trigger.Op.ADD,
+                Trigger.Type.ACHIEVE, Literal.atom("go")));
         a.cycles(20);
         assertEquals(List.of("7"), a.printed());
     }

@@ -12,9 +12,13 @@ import jacabot.cartago.ArtifactObserver;
 import jacabot.cartago.PropertySnapshot;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.Consumer;
 
 /**
  * JaCa's {@code c4jason.CAgentArch}: the agent perceives the artifacts it focuses. Each
@@ -25,11 +29,11 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * next reasoning cycle, so they arrive at deterministic points.
  */
 public class CAgentArch extends LocalArch {
-    private final ConcurrentLinkedQueue<java.util.function.Consumer<Agent>> pending = new ConcurrentLinkedQueue<>();
+    private final ConcurrentLinkedQueue<Consumer<Agent>> pending = new ConcurrentLinkedQueue<>();
     /** The beliefs the focused properties became, by artifact. */
     private final Map<ArtifactId, List<Literal>> beliefs = new HashMap<>();
     /** {@code current_wsp(Id, Name, Node)} and {@code joinedWsp(Id, Name, FullName)} as believed now. */
-    private final java.util.Set<Literal> workspaceBeliefs = new java.util.HashSet<>();
+    private final Set<Literal> workspaceBeliefs = new HashSet<>();
     private final AgentSession session;
     private final CartagoLibrary library;
     private boolean libraryInstalled;
@@ -52,7 +56,7 @@ public class CAgentArch extends LocalArch {
             library.install(agent);
             libraryInstalled = true;
         }
-        java.util.function.Consumer<Agent> change;
+        Consumer<Agent> change;
         while ((change = pending.poll()) != null) {
             change.accept(agent);
         }
@@ -63,7 +67,7 @@ public class CAgentArch extends LocalArch {
         return pending.isEmpty();
     }
 
-    private void queue(java.util.function.Consumer<Agent> change) {
+    private void queue(Consumer<Agent> change) {
         pending.add(change);
         wake();
     }
@@ -73,7 +77,7 @@ public class CAgentArch extends LocalArch {
      * {@code joinedWsp(WspId, Name, FullName)} (CArtAgO 3's percept, one per joined workspace) up to date.
      */
     private void syncWorkspaceBeliefs(Agent ag) {
-        var now = new java.util.LinkedHashSet<Literal>();
+        var now = new LinkedHashSet<Literal>();
         session.current().ifPresent(w -> now.add(new Literal("current_wsp", List.of(TermConverter.toTerm(w.id()),
                 new StringTerm(w.id().name()), new StringTerm(w.id().node())), List.of(Literal.SOURCE_PERCEPT), false)));
         for (JoinedWorkspace w : session.all()) {

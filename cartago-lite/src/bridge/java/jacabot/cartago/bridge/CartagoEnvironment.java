@@ -4,6 +4,7 @@ import jacabot.agent.runtime.Environment;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.Clock;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
@@ -20,6 +21,7 @@ import jacabot.cartago.OpTarget;
 import jacabot.cartago.Workspace;
 import jacabot.cartago.WorkspaceId;
 import java.io.PrintStream;
+import java.time.LocalTime;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -73,15 +75,15 @@ public class CartagoEnvironment implements Environment {
             // agents and artifacts share one clock, which follows a simulation when an artifact says so
             clock = new FollowingClock();
             FollowingClock c = clock;
-            mas.useClock(new jacabot.agent.semantics.Clock() {
+            mas.useClock(new Clock() {
                 @Override
                 public long millis() {
                     return c.nowMillis();
                 }
 
                 @Override
-                public java.time.LocalTime timeOfDay() {
-                    return c.isFollowing() ? jacabot.agent.semantics.Clock.super.timeOfDay() : java.time.LocalTime.now();
+                public LocalTime timeOfDay() {
+                    return c.isFollowing() ? Clock.super.timeOfDay() : LocalTime.now();
                 }
             });
             var b = builder("main");

@@ -57,12 +57,7 @@ final class JcmParser {
         var workspaces = new ArrayList<WorkspaceDecl>();
         var classPath = new ArrayList<String>();
         var aslPath = new ArrayList<String>();
-        while (true) {
-            if (blockEnds()) {
-                break;
-            }
-            int at = pos;
-            String word = name("an entry (agent, workspace, class-path, asl-path)");
+        block("an entry (agent, workspace, class-path, asl-path)", (word, at) -> {
             switch (word) {
                 case "agent" -> agents.add(agent());
                 case "workspace" -> workspaces.add(workspace());
@@ -78,7 +73,7 @@ final class JcmParser {
                         ? "organisations (Moise) are not supported: jacabot runs the agents and the environment of a .jcm"
                         : "'" + word + "' is not supported in a .jcm here (agent, workspace, class-path, asl-path)");
             }
-        }
+        });
         skip();
         if (pos < text.length()) {
             throw error(pos, "unexpected text after the project's closing '}'");
@@ -94,58 +89,51 @@ final class JcmParser {
             pos++;
             source = name("the agent's source file");
         }
-        String beliefs = null;
-        String goals = null;
-        var focus = new ArrayList<String>();
-        var join = new ArrayList<String>();
+        var p = new AgentParams();
+        if (optionalBlock()) {
+            block("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)", (key, at) -> agentParam(p, key, at));
+        }
+        return new AgentDecl(name, source, p.beliefs, p.goals, p.focus, p.join, p.instances, p.arch);
+    }
+
+    /** An agent's parameters as they are read. */
+    private static final class AgentParams {
+        String beliefs;
+        String goals;
+        final List<String> focus = new ArrayList<>();
+        final List<String> join = new ArrayList<>();
         int instances = 1;
-        String arch = null;
-        skip();
-        if (peek() == '{') {
-            pos++;
-            while (true) {
-                if (blockEnds()) {
-                    break;
-                }
-                int at = pos;
-                String key = name("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)");
-                expect(':');
-                switch (key) {
-                    case "beliefs" -> beliefs = joined(beliefs, restOfEntry());
-                    case "goals" -> goals = joined(goals, restOfEntry());
-                    case "focus" -> {
-                        for (String f : names()) {
-                            if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
-                                throw error(at, "focus '" + f + "' is not workspace.artifact");
-                            }
-                            focus.add(f);
-                        }
+        String arch;
+    }
+
+    private void agentParam(AgentParams p, String key, int at) throws JcmError {
+        expect(':');
+        switch (key) {
+            case "beliefs" -> p.beliefs = joined(p.beliefs, restOfEntry());
+            case "goals" -> p.goals = joined(p.goals, restOfEntry());
+            case "focus" -> {
+                for (String f : names()) {
+                    if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
+                        throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
-                    case "join" -> join.addAll(names());
-                    case "instances" -> instances = number(at);
-                    case "ag-arch" -> arch = name("an architecture class");
-                    default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
-                            : "the agent parameter '" + key + "' is not supported")
-                            + " (beliefs, goals, focus, join, instances, ag-arch)");
+                    p.focus.add(f);
                 }
             }
+            case "join" -> p.join.addAll(names());
+            case "instances" -> p.instances = number(at);
+            case "ag-arch" -> p.arch = name("an architecture class");
+            default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
+                    : "the agent parameter '" + key + "' is not supported")
+                    + " (beliefs, goals, focus, join, instances, ag-arch)");
         }
-        return new AgentDecl(name, source, beliefs, goals, focus, join, instances, arch);
     }
 
     private WorkspaceDecl workspace() throws JcmError {
         String name = name("the workspace's name");
         var artifacts = new ArrayList<ArtifactDecl>();
         var agents = new ArrayList<String>();
-        skip();
-        if (peek() == '{') {
-            pos++;
-            while (true) {
-                if (blockEnds()) {
-                    break;
-                }
-                int at = pos;
-                String word = name("artifact or agents:");
+        if (optionalBlock()) {
+            block("artifact or agents:", (word, at) -> {
                 if (word.equals("artifact")) {
                     String art = name("the artifact's name");
                     expect(':');
@@ -161,12 +149,36 @@ final class JcmParser {
                 } else {
                     throw error(at, "'" + word + "' is not supported in a workspace (artifact, agents)");
                 }
-            }
+            });
         }
         return new WorkspaceDecl(name, artifacts, agents);
     }
 
     // ---- lexical helpers ------------------------------------------------------------------------
+
+    /** One entry of a block, read from its first word on ({@code at}: where that word starts). */
+    @FunctionalInterface
+    private interface EntryReader {
+        void read(String word, int at) throws JcmError;
+    }
+
+    /** Reads a block's entries, each starting with a word ({@code what} names the kinds), up to and past its '}'. */
+    private void block(String what, EntryReader entry) throws JcmError {
+        while (!blockEnds()) {
+            int at = pos;
+            entry.read(name(what), at);
+        }
+    }
+
+    /** {@return true (past it) at a '{' opening an optional block} */
+    private boolean optionalBlock() throws JcmError {
+        skip();
+        if (peek() == '{') {
+            pos++;
+            return true;
+        }
+        return false;
+    }
 
     /** {@return true (past it) at the '}' closing a block; an error at the end of the file} */
     private boolean blockEnds() throws JcmError {

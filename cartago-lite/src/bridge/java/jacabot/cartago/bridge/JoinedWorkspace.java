@@ -5,6 +5,7 @@ import jacabot.cartago.OpCallback;
 import jacabot.cartago.OpTarget;
 import jacabot.cartago.Workspace;
 import jacabot.cartago.WorkspaceId;
+import jacabot.cartago.remote.RemoteWorkspace;
 
 /** An agent's presence in one workspace, of this process or remote: where its actions go. */
 interface JoinedWorkspace {
@@ -35,7 +36,7 @@ interface JoinedWorkspace {
     }
 
     /** A workspace of another process, through a session of its node. */
-    record Remote(jacabot.cartago.remote.RemoteWorkspace session, WorkspaceId id) implements JoinedWorkspace {
+    record Remote(RemoteWorkspace session, WorkspaceId id) implements JoinedWorkspace {
         @Override
         public void execOp(OpTarget target, String operation, Object[] args, OpCallback callback) {
             session.execOp(target, operation, args, callback);

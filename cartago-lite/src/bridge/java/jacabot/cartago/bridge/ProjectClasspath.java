@@ -2,6 +2,7 @@ package jacabot.cartago.bridge;
 
 import jacabot.agent.parser.Mas2jLexer;
 import jacabot.agent.parser.Mas2jParser;
+import jacabot.agent.runtime.MasLauncher;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -14,6 +15,8 @@ import java.util.stream.Stream;
 import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
+import org.antlr.v4.runtime.RecognitionException;
+import org.antlr.v4.runtime.Recognizer;
 
 /**
  * Where a project's own classes come from, as Jason's launcher finds them: the {@code classpath:}
@@ -126,7 +129,7 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
         if (mas2j.getFileName().toString().endsWith(".jcm")) {
             try {
                 return JcmReader.classPath(mas2j);
-            } catch (jacabot.agent.runtime.MasLauncher.UserError e) {
+            } catch (MasLauncher.UserError e) {
                 return List.of(); // the launcher reports it
             }
         }
@@ -143,8 +146,8 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
         var failed = new boolean[1];
         parser.addErrorListener(new BaseErrorListener() {
             @Override
-            public void syntaxError(org.antlr.v4.runtime.Recognizer<?, ?> r, Object o, int line, int col, String msg,
-                    org.antlr.v4.runtime.RecognitionException e) {
+            public void syntaxError(Recognizer<?, ?> r, Object o, int line, int col, String msg,
+                    RecognitionException e) {
                 failed[0] = true;
             }
         });

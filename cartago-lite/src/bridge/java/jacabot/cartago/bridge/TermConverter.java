@@ -11,6 +11,7 @@ import java.lang.reflect.Array;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Locale;
 
 /** Converts between AgentSpeak terms and the plain Java values artifacts use, as JaCa does. */
 public final class TermConverter {
@@ -65,7 +66,7 @@ public final class TermConverter {
             return b ? Literal.TRUE : Literal.FALSE;
         }
         if (v instanceof Enum<?> e) {
-            return Literal.atom(e.name().toLowerCase(java.util.Locale.ROOT));
+            return Literal.atom(e.name().toLowerCase(Locale.ROOT));
         }
         if (v instanceof AgentId a) {
             return Literal.atom(a.name());

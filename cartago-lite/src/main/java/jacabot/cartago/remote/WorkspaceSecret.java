@@ -1,19 +1,11 @@
 package jacabot.cartago.remote;
 
+import jacabot.secret.SecretFile;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.FileSystemException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.attribute.PosixFileAttributeView;
-import java.nio.file.attribute.PosixFilePermission;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.security.GeneralSecurityException;
 import java.security.SecureRandom;
 import java.util.HexFormat;
-import java.util.Set;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
 
@@ -26,6 +18,8 @@ import javax.crypto.spec.SecretKeySpec;
 public final class WorkspaceSecret {
     public static final String FILE_PROPERTY = "jacabot.workspaceSecretFile";
     private static final SecureRandom RANDOM = new SecureRandom();
+    /** The secret's name in messages. */
+    private static final String NAME = "workspace secret";
     private final byte[] key;
 
     private WorkspaceSecret(byte[] key) {
@@ -55,63 +49,16 @@ public final class WorkspaceSecret {
     /**
      * {@return the secret in {@code file}, which is made (0600) with a fresh one when absent}; two
      * processes starting together end with the same one: the file appears whole or not at all
-     * ({@link #publish}), and the one that loses reads the other's.
+     * ({@link SecretFile}), and the one that loses reads the other's.
      *
      * @throws IOException when it cannot be read or made, holds no secret, or others may read it
      */
     public static WorkspaceSecret loadOrCreate(Path file) throws IOException {
-        if (!Files.exists(file)) {
-            Path dir = file.toAbsolutePath().getParent();
-            Files.createDirectories(dir);
-            byte[] fresh = nonce(32);
-            if (publish(file, HexFormat.of().formatHex(fresh) + "\n")) {
-                return new WorkspaceSecret(fresh);
-            }
-            // another process published its secret first: read that one
-        }
-        return load(file);
-    }
-
-    /**
-     * Writes {@code text} to a temporary file beside {@code file} (0600 from the start) and gives it
-     * {@code file}'s name in one step unless the name exists by then; {@return whether it was published}.
-     * A hard link, as {@code LinkSecret} publishes its file: a rename would replace a secret published
-     * meanwhile; without hard links, an atomic move after a last look.
-     */
-    private static boolean publish(Path file, String text) throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Path tmp = Files.getFileStore(dir).supportsFileAttributeView(PosixFileAttributeView.class)
-                ? Files.createTempFile(dir, "." + file.getFileName(), ".tmp", PosixFilePermissions.asFileAttribute(
-                        Set.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)))
-                : Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+        String hex = SecretFile.loadOrCreate(file, NAME, HexFormat.of().formatHex(nonce(32)));
         try {
-            Files.writeString(tmp, text, StandardCharsets.US_ASCII);
-            try {
-                Files.createLink(file, tmp);
-            } catch (UnsupportedOperationException | FileSystemException noLinks) {
-                if (noLinks instanceof FileAlreadyExistsException || Files.exists(file)) {
-                    return false;
-                }
-                Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE);
-            }
-            return true;
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
-    }
-
-    private static WorkspaceSecret load(Path file) throws IOException {
-        if (Files.getFileStore(file).supportsFileAttributeView(PosixFileAttributeView.class)) {
-            Set<PosixFilePermission> perms = Files.getPosixFilePermissions(file);
-            if (perms.contains(PosixFilePermission.GROUP_READ) || perms.contains(PosixFilePermission.OTHERS_READ)) {
-                throw new IOException("the workspace secret " + file + " may be read by other users; run: chmod 600 " + file);
-            }
-        }
-        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
-        try {
-            return new WorkspaceSecret(HexFormat.of().parseHex(text));
+            return new WorkspaceSecret(HexFormat.of().parseHex(hex));
         } catch (IllegalArgumentException e) {
-            throw new IOException(file + ": not a workspace secret (" + e.getMessage() + ")");
+            throw new IOException(file + ": not a " + NAME + " (" + e.getMessage() + ")");
         }
     }
 

@@ -3,13 +3,27 @@ package jacabot.cartago.bridge;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.cartago.remote.WorkspaceSecret;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JPanel;
+import javax.swing.JTextField;
+import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -89,8 +103,8 @@ class JacaExamplesTest {
         assertEquals("[starter] first step done, contributions so far: 0", starter.get(0), run.output);
         // the second step's signal starts an intention of its own; "run completed" is the next step of
         // the one whose operation ended: two intentions, either may print first (as in Jason)
-        assertEquals(java.util.Set.of("[starter] second step done, contributions: 12", "[starter] run completed"),
-                java.util.Set.copyOf(starter.subList(1, starter.size())), run.output);
+        assertEquals(Set.of("[starter] second step done, contributions: 12", "[starter] run completed"),
+                Set.copyOf(starter.subList(1, starter.size())), run.output);
         assertEquals(3, starter.size(), run.output);
         assertEquals(4, of(run, "helper").size(), run.output);
     }
@@ -181,11 +195,11 @@ class JacaExamplesTest {
      */
     @Test
     void aSwingWindowAsAnArtifact() throws Exception {
-        if (java.awt.GraphicsEnvironment.isHeadless()) {
+        if (GraphicsEnvironment.isHeadless()) {
             assertEquals(List.of(NO_DISPLAY), run("07a-gui").lines());
             return;
         }
-        var done = new java.util.concurrent.CompletableFuture<ProjectRun>();
+        var done = new CompletableFuture<ProjectRun>();
         new Thread(() -> {
             try {
                 done.complete(run("07a-gui"));
@@ -193,10 +207,10 @@ class JacaExamplesTest {
                 done.completeExceptionally(t);
             }
         }, "07a-gui").start();
-        javax.swing.JFrame frame = SwingDriver.frame("jacabot: 07a GUI", done);
-        var number = SwingDriver.find(frame, javax.swing.JTextField.class, "number");
-        var ok = SwingDriver.find(frame, javax.swing.JButton.class, "ok");
-        var pad = SwingDriver.find(frame, javax.swing.JPanel.class, "pad");
+        JFrame frame = SwingDriver.frame("jacabot: 07a GUI", done);
+        var number = SwingDriver.find(frame, JTextField.class, "number");
+        var ok = SwingDriver.find(frame, JButton.class, "ok");
+        var pad = SwingDriver.find(frame, JPanel.class, "pad");
         SwingDriver driver = new SwingDriver();
         driver.click(ok);
         driver.waitForText(number, "1");          // the agent answered ok with setValue(0 + 1)
@@ -205,15 +219,15 @@ class JacaExamplesTest {
         driver.click(ok);
         driver.waitForText(number, "42");         // ENTER made value 41, then ok added one
         driver.drag(pad);
-        javax.swing.SwingUtilities.invokeAndWait(() -> frame.dispatchEvent(
-                new java.awt.event.WindowEvent(frame, java.awt.event.WindowEvent.WINDOW_CLOSING)));
-        ProjectRun run = done.get(60, java.util.concurrent.TimeUnit.SECONDS);
+        SwingUtilities.invokeAndWait(() -> frame.dispatchEvent(
+                new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
+        ProjectRun run = done.get(60, TimeUnit.SECONDS);
         List<String> lines = run.lines();
         List<String> values = lines.stream().filter(l -> !l.contains("mouse dragged")).toList();
         // the first value comes with the focus, a percept: the plan's next println may come first
-        assertEquals(java.util.Set.of("[gui_user] value is now 0",
+        assertEquals(Set.of("[gui_user] value is now 0",
                 "[gui_user] type a number and ENTER, press ok to add one, drag the mouse; close the window to stop"),
-                java.util.Set.copyOf(values.subList(0, 2)), run.output);
+                Set.copyOf(values.subList(0, 2)), run.output);
         assertEquals(List.of("[gui_user] value is now 1", "[gui_user] value is now 41", "[gui_user] value is now 42",
                 "[gui_user] window closed"), values.subList(2, values.size()), run.output);
         assertTrue(lines.stream().anyMatch(l -> l.matches("\\[gui_user\\] mouse dragged to \\d+,\\d+")), run.output);
@@ -249,14 +263,14 @@ class JacaExamplesTest {
     @Test
     void anAgentOfAnotherNodeWorksInThisNodesWorkspace() throws Exception {
         int port;
-        try (var probe = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+        try (var probe = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             port = probe.getLocalPort();
         }
         Path secret = Files.createTempDirectory("jacabot-secret").resolve("workspace-secret");
         System.setProperty("jacabot.cartago.port", String.valueOf(port));
-        System.setProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY, secret.toString());
+        System.setProperty(WorkspaceSecret.FILE_PROPERTY, secret.toString());
         try {
-            var node = new java.util.concurrent.CompletableFuture<ProjectRun>();
+            var node = new CompletableFuture<ProjectRun>();
             var nodeThread = new Thread(() -> {
                 try {
                     node.complete(run("11-remote", folder("11-remote").resolve("node.mas2j")));
@@ -267,9 +281,9 @@ class JacaExamplesTest {
             nodeThread.start();
             long deadline = System.currentTimeMillis() + 60_000;
             while (true) {   // until the node listens
-                try (var probe = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), port)) {
+                try (var probe = new Socket(InetAddress.getLoopbackAddress(), port)) {
                     break;
-                } catch (java.io.IOException notYet) {
+                } catch (IOException notYet) {
                     assertTrue(System.currentTimeMillis() < deadline && !node.isDone(), "the node never listened");
                     Thread.sleep(50);
                 }
@@ -280,10 +294,10 @@ class JacaExamplesTest {
                     "[voyager] beliefs about the tally left: 0"), visitor.lines());
             // the node's console prints what the visitor printed while its current workspace was the node's
             assertEquals(List.of("[keeper] keeping main (local)", "[voyager] hello from another process",
-                    "[keeper] the visitor counted to 2", "[keeper] the visitor left"), node.get(90, java.util.concurrent.TimeUnit.SECONDS).lines());
+                    "[keeper] the visitor counted to 2", "[keeper] the visitor left"), node.get(90, TimeUnit.SECONDS).lines());
         } finally {
             System.clearProperty("jacabot.cartago.port");
-            System.clearProperty(jacabot.cartago.remote.WorkspaceSecret.FILE_PROPERTY);
+            System.clearProperty(WorkspaceSecret.FILE_PROPERTY);
         }
     }
 }

@@ -3,6 +3,7 @@ package jacabot.cartago.bridge;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.runtime.LocalMAS;
+import jacabot.cartago.SimulatedClock;
 import jacabot.cartago.bridge.CAgentArch;
 import jacabot.cartago.bridge.CartagoEnvironment;
 import jacabot.cartago.Workspace;
@@ -20,7 +21,7 @@ final class JacaHarness {
     final Workspace workspace;
     final JacaStepper stepper;
 
-    final jacabot.cartago.SimulatedClock clock = new jacabot.cartago.SimulatedClock();
+    final SimulatedClock clock = new SimulatedClock();
 
     JacaHarness() {
         workspace = Workspace.builder("main").stepped().clock(clock).console(out).build();

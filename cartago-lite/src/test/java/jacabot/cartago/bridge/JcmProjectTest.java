@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.runtime.MasLauncher;
+import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -116,7 +117,7 @@ class JcmProjectTest {
 
     private static String loadError(Path dir, String name, String text) throws Exception {
         Files.writeString(dir.resolve(name), text);
-        var out = new PrintStream(new java.io.ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        var out = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         return assertThrows(MasLauncher.UserError.class, () -> new MasLauncher(out, 0, false).load(dir.resolve(name))).getMessage();
     }
 }

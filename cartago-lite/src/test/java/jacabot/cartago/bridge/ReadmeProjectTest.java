@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -25,7 +26,7 @@ class ReadmeProjectTest {
         while (m.find() && files.size() < 3) {
             files.put(m.group(1), m.group(2));
         }
-        assertEquals(java.util.Set.of("Counter.java", "counter.mas2j", "user.asl"), files.keySet());
+        assertEquals(Set.of("Counter.java", "counter.mas2j", "user.asl"), files.keySet());
         Matcher shown = SHOWN_RUN.matcher(readme);
         assertTrue(shown.find(), "the README shows the run");
 

@@ -13,6 +13,7 @@ import java.util.concurrent.Future;
 import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
 import javax.swing.text.JTextComponent;
+import org.opentest4j.AssertionFailedError;
 
 /** Works a shown window through the system's input events (java.awt.Robot); needs a display. */
 final class SwingDriver {
@@ -59,7 +60,7 @@ final class SwingDriver {
     private static <T extends Component> T findOrNull(Container root, Class<T> type, String name) {
         try {
             return find(root, type, name);
-        } catch (org.opentest4j.AssertionFailedError notHere) {
+        } catch (AssertionFailedError notHere) {
             return null;
         }
     }

@@ -26,7 +26,9 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -144,7 +146,7 @@ class RemoteWorkspaceTest {
         assertEquals("bad_argument", f.reasonFunctor());
         assertEquals(List.of(1), f.reasonArgs());
         f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.any(), "inc", 1,
-                List.of(new java.util.concurrent.atomic.AtomicLong(3))));
+                List.of(new AtomicLong(3))));
         assertEquals(List.of(2), f.reasonArgs(), "a Number of another class, inside a list");
         f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.any(), "inc", "x".repeat(Wire.MAX_STRING + 1)));
         assertEquals("bad_argument", f.reasonFunctor());
@@ -194,7 +196,7 @@ class RemoteWorkspaceTest {
     @Test
     void aLostNodeEndsTheFocusAndTellsTheClient() throws Exception {
         var r = new Recorder();
-        var lost = new java.util.concurrent.CountDownLatch(1);
+        var lost = new CountDownLatch(1);
         RemoteWorkspace w = RemoteWorkspace.join("127.0.0.1", server.port(), "main", "voyager", r, secret, lost::countDown);
         var id = (ArtifactId) ((OpOutcome.Success) call(w, OpTarget.any(), "lookupArtifact", "counter",
                 new OpFeedbackParam<>())).outputs().get(1);

@@ -1,22 +1,13 @@
 package jacabot.robot.link;
 
+import jacabot.secret.SecretFile;
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.FileSystemException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.attribute.PosixFileAttributeView;
-import java.nio.file.attribute.PosixFilePermission;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.security.InvalidKeyException;
 import java.security.NoSuchAlgorithmException;
 import java.security.SecureRandom;
-import java.util.EnumSet;
 import java.util.HexFormat;
-import java.util.Set;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
 
@@ -32,6 +23,8 @@ public final class LinkSecret {
     /** Overrides the default file (the launchers' {@code --secret-file}). */
     public static final String FILE_PROPERTY = "jacabot.secretFile";
     private static final SecureRandom RANDOM = new SecureRandom();
+    /** The secret's name in messages. */
+    private static final String NAME = "link secret";
     private static volatile LinkSecret userDefault;
 
     private final byte[] key;
@@ -110,74 +103,24 @@ public final class LinkSecret {
     /**
      * Reads the secret in {@code file}, or makes the file (mode 0600, its directory 0700) with a fresh
      * secret when it does not exist. Two processes starting together end with the same secret: the
-     * file appears whole or not at all ({@link #publish}), and the one that loses reads the other's.
+     * file appears whole or not at all ({@link SecretFile}), and the one that loses reads the other's.
      *
      * @throws IOException when it cannot be read or made, holds no secret, or group or others may read it
      */
     public static LinkSecret loadOrCreate(Path file) throws IOException {
-        if (!Files.exists(file)) {
-            LinkSecret fresh = random();
-            Path dir = file.toAbsolutePath().getParent();
-            boolean posix = Files.getFileStore(Files.exists(dir) ? dir : dir.getRoot())
-                    .supportsFileAttributeView(PosixFileAttributeView.class);
-            if (!Files.exists(dir)) {
-                if (posix) {
-                    Files.createDirectories(dir, PosixFilePermissions.asFileAttribute(
-                            EnumSet.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE,
-                                    PosixFilePermission.OWNER_EXECUTE)));
-                } else {
-                    Files.createDirectories(dir);
-                }
-            }
-            if (publish(file, fresh.toHex() + "\n", posix)) {
-                return fresh;
-            }
-            // the other process published its secret first: read that one
-        }
-        return load(file);
-    }
-
-    /**
-     * Writes {@code text} to a temporary file beside {@code file} (0600 from the start) and gives it
-     * {@code file}'s name in one step, unless the name exists by then; {@return whether it was published}.
-     * A hard link, not {@code Files.move}: a rename replaces a secret that the other process published
-     * meanwhile, and the two would hold different keys; a link fails instead. Where the file system
-     * has no hard links, an atomic move after a last look (a narrower race).
-     */
-    private static boolean publish(Path file, String text, boolean posix) throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Path tmp = posix ? Files.createTempFile(dir, "." + file.getFileName(), ".tmp", PosixFilePermissions.asFileAttribute(
-                EnumSet.of(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)))
-                : Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
-        try {
-            Files.writeString(tmp, text, StandardCharsets.US_ASCII);
-            try {
-                Files.createLink(file, tmp);
-            } catch (UnsupportedOperationException | FileSystemException noLinks) {
-                if (noLinks instanceof FileAlreadyExistsException || Files.exists(file)) {
-                    return false;
-                }
-                Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE);
-            }
-            return true;
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        return parse(file, SecretFile.loadOrCreate(file, NAME, random().toHex()));
     }
 
     /** Reads a secret file, refusing one that group or others may read. */
     public static LinkSecret load(Path file) throws IOException {
-        if (Files.getFileStore(file).supportsFileAttributeView(PosixFileAttributeView.class)) {
-            Set<PosixFilePermission> perms = Files.getPosixFilePermissions(file);
-            if (perms.contains(PosixFilePermission.GROUP_READ) || perms.contains(PosixFilePermission.OTHERS_READ)) {
-                throw new IOException("the link secret " + file + " may be read by other users; run: chmod 600 " + file);
-            }
-        }
-        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
+        return parse(file, SecretFile.read(file, NAME));
+    }
+
+    private static LinkSecret parse(Path file, String hex) throws IOException {
         try {
-            return fromHex(text);
+            return fromHex(hex);
         } catch (IllegalArgumentException e) {
-            throw new IOException(file + ": not a link secret (" + e.getMessage() + ")");
+            throw new IOException(file + ": not a " + NAME + " (" + e.getMessage() + ")");
         }
     }
 

@@ -1,0 +1,43 @@
+package jacabot.agent.stdlib;
+
+import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The order in which Jason's {@code Unifier} lists its bindings: a {@code java.util.HashMap} keyed by
+ * variable, whose hash is its name's, so the order is that of the names' buckets (insertion order
+ * within one). Programs print it through {@code .intention}, so it is reproduced, not guessed.
+ */
+final class JasonHashOrder {
+    private JasonHashOrder() {
+    }
+
+    /** {@return the variable's name in Jason: as written, or {@code _N} for an unnamed or fresh one} */
+    static String jasonName(Var v) {
+        return v.toString();
+    }
+
+    /** {@return the bindings, given in insertion order, in the order Jason's hash map iterates them} */
+    static List<Map.Entry<Var, Term>> of(Map<Var, Term> bindings) {
+        int n = bindings.size();
+        // a map that grew by insertion has 16 buckets up to 12 entries, and doubles past 3/4 full
+        int buckets = 16;
+        while (n > buckets * 3 / 4) {
+            buckets *= 2;
+        }
+        int mask = buckets - 1;
+        var entries = new ArrayList<>(bindings.entrySet());
+        // stable: entries of one bucket keep their insertion order, as in the bucket's list
+        entries.sort(Comparator.comparingInt(e -> bucket(jasonName(e.getKey()), mask)));
+        return entries;
+    }
+
+    private static int bucket(String name, int mask) {
+        int h = name.hashCode();
+        return (h ^ (h >>> 16)) & mask;
+    }
+}
