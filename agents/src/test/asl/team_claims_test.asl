@@ -1,8 +1,10 @@
 // Skill tests of the team's claims (skills/team-claims.asl, in team-delivery.asl): a cylinder
 // sighted is claimed on the task board at its estimated place before the robot homes on it; one
-// another robot has claimed is ignored and not homed on. Artifact operations are mocked (see
+// near another robot's claim is left alone only while that claim stands; one near a teammate is
+// left alone; a cylinder picked up is taken on the board. Artifact operations are mocked (see
 // agents/README.md "Testing skills"). Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
 { include("../../main/asl/team-delivery.asl") }
 
 arena(1.0, 1.0).
@@ -12,6 +14,7 @@ charger(-0.38, 0.38).
 
 mock_operation(lookupArtifact(_, middleware), ok).
 mock_operation(claim(_, _, 3), ok).
+mock_operation(take(_, _, 7), ok).
 mock_operation(_, ok).
 
 @[test]
@@ -24,18 +27,56 @@ mock_operation(_, ok).
        !assert_true(myClaim(3)).
 
 @[test]
-+!test_a_cylinder_claimed_by_another_robot_is_ignored_and_not_homed_on
-    <- -homing(_); -myClaim(_); .abolish(mock_called(_));
-       .abolish(mock_operation(_, _));                    // only these two from now on
-       +mock_operation(claim(_, _, _), fail("khepera2 has claimed it", claimed_by(khepera2, 5)));
-       +mock_operation(ignoreCylindersNear(_, _, _), ok);
-       !!perceive(cylinderSighted(-10, 0.8));
-       !until(mock_called(ignoreCylindersNear(_, _, _)), 5000);
-       !assert_true(mock_called(ignoreCylindersNear(_, _, 0.15)));
++!test_a_cylinder_claimed_by_another_robot_is_left_alone_while_claimed
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
+       +claimed(5, khepera2, 0.12, 0.75);                 // near the place of a sighting straight ahead
+       !!perceive(cylinderSighted(0, 0.5));
+       .wait(300);
+       !assert_false(mock_called(claim(_, _, _)));       // not even asked for
        !assert_false(homing(_));
-       !assert_false(myClaim(_)).
+       -claimed(5, khepera2, 0.12, 0.75);                 // khepera2 released it
+       -cylinderSighted(_, _); !!perceive(cylinderSighted(0, 0.5));
+       !until(homing(_), 5000);
+       !assert_true(mock_called(claim(_, _, 3))).       // anyone's again
 
-+!perceive(B) <- -B; +B.
+@[test]
++!test_the_board_refusing_a_claim_stops_the_homing
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
+       +mock_operation(claim(_, _, _), fail("khepera3 has claimed it", claimed_by(khepera3, 6)));
+       .abolish(mock_operation(claim(_, _, 3), ok));
+       !!perceive(cylinderSighted(-10, 0.8));
+       !until(claimRefused, 5000);
+       !assert_true(claimRefused);
+       !assert_false(homing(_));
+       !assert_false(myClaim(_));
+       .abolish(mock_operation(claim(_, _, _), _)); +mock_operation(claim(_, _, 3), ok).
 
-+!until(C, _) : C.
-+!until(C, T) : T > 0 <- .wait(20); !until(C, T - 20).
+@[test]
++!test_a_cylinder_next_to_a_teammate_is_left_alone
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
+       +robotAt(khepera4, 0.1, 0.65);                      // 5 cm from the sighting's place: it carries it
+       !!perceive(cylinderSighted(0, 0.5));
+       .wait(300);
+       !assert_false(mock_called(claim(_, _, _)));
+       !assert_false(homing(_));
+       -robotAt(khepera4, 0.1, 0.65).
+
+@[test]
++!test_a_picked_cylinder_is_taken_on_the_board
+    <- -homing(_); !forget_calls; +myClaim(3);
+       -picked(false); !!perceive(picked(true));
+       !until(myClaim(7), 5000);
+       ?mock_called(take(X, Z, 7));
+       !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27);  // in the gripper, 6 cm ahead
+       !assert_false(myClaim(3)).
+
+@[test]
++!test_a_claim_the_board_voided_does_not_fail_the_next_claim
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _); -+picked(false);
+       +myClaim(14);                                          // voided meanwhile: the board has no claim 14
+       +mock_operation(release(14), fail("no claim 14 on the task board", no_claim(14)));
+       !!perceive(cylinderSighted(0, 0.5));
+       !until(homing(_), 5000);
+       !assert_true(homing(_));                                // the new claim stands, the homing goes on
+       !assert_true(myClaim(3));
+       !assert_false(myClaim(14)).

@@ -100,6 +100,14 @@ class TeamWorldTest {
         }
         assertTrue(w.robot("a").contactTime() > 1.5, "a " + w.robot("a").contactTime());
         assertTrue(w.robot("b").contactTime() > 1.5, "b " + w.robot("b").contactTime());
+        assertEquals(w.robot("a").contactTime(), w.robot("a").robotContactTime(), "all of a's contact was with b");
+        assertEquals(w.robot("b").contactTime(), w.robot("b").robotContactTime());
         assertEquals(0.0, w.robot("c").contactTime(), "c touched nothing");
+        w.robot("c").setSpeeds(-50, -50); // backwards into the wall 10 cm behind it
+        for (int i = 0; i < 150; i++) {
+            w.step();
+        }
+        assertTrue(w.robot("c").contactTime() > 1, "c pushed against the wall: " + w.robot("c").contactTime());
+        assertEquals(0.0, w.robot("c").robotContactTime(), "a wall is no robot");
     }
 }

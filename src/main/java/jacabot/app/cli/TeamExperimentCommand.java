@@ -264,13 +264,14 @@ final class TeamExperimentCommand implements Callable<Integer> {
         List<String> lines = new ArrayList<>();
         lines.add("team-delivery, " + o.robots().size() + " robots, seed " + o.seed() + ", world " + worldFile + ", "
                 + (agentName == null ? "procedural baseline" : "agent " + agentName));
-        for (RunSummary r : o.robots()) {
-            lines.add(String.format(Locale.ROOT, "[%s] picks %d, deliveries %d, contact %.1f s, battery min %s J%s, "
+        var f = o.figures();
+        for (int i = 0; i < o.robots().size(); i++) {
+            RunSummary r = o.robots().get(i);
+            lines.add(String.format(Locale.ROOT, "[%s] picks %d, deliveries %d, contact %.1f s (with robots %.1f s), battery min %s J%s, "
                             + "charger visits %d, distance %.1f m", r.robot(), r.picks(), r.deliveries(), r.contactTime(),
-                    r.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", r.batteryMin()),
+                    f.robotContactTimes().get(i), r.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", r.batteryMin()),
                     r.batteryEmptied() ? " (emptied)" : "", r.chargerVisits(), r.distance()));
         }
-        var f = o.figures();
         lines.add(String.format(Locale.ROOT, "team: %d deliveries of %d cylinders in %.0f s; %s", f.deliveries(), f.cylinders(),
                 f.duration(), o.baseline() ? "no coordination (no claims, no charger queue)"
                         : String.format(Locale.ROOT, "%d claims, %d double claims, %d charger waits (longest %.1f s)",

@@ -139,25 +139,31 @@ final class TeamSweepCommand implements Callable<Integer> {
     }
 
     private static String csv(List<Row> rows) {
-        var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,claims,double_claims,"
-                + "charger_waits,longest_charger_wait_s,success,reason\n");
+        var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,max_robot_contact_s,claims,"
+                + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason\n");
         for (Row r : rows) {
             var o = r.outcome();
             String per = o.robots().stream().map(s -> Integer.toString(s.deliveries())).collect(Collectors.joining(" "));
             double contact = o.robots().stream().mapToDouble(RunSummary::contactTime).max().orElse(0);
-            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%d,%d,%d,%.1f,%s,\"%s\"%n", r.world(),
-                    r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.claims(), o.figures().doubleClaims(),
-                    o.chargerWaits(), o.figures().longestChargerWait(), o.verdict().success(), o.verdict().reason()));
+            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\"%n",
+                    r.world(), r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.figures().maxRobotContact(),
+                    o.claims(), o.figures().doubleClaims(), o.chargerWaits(), o.figures().longestChargerWait(),
+                    o.figures().batteriesEmptied(), o.verdict().success(), o.verdict().reason()));
         }
         return sb.toString();
     }
 
-    /** A table: per controller and team size, the deliveries, the ratio to one robot, the criteria met. */
+    /**
+     * A table: per controller and team size, the deliveries (per world and seed, in the sweep's
+     * order), the ratio to one robot on the same worlds and seeds, how the runs fared on each team
+     * criterion, and the criteria met.
+     */
     private static String report(List<Row> rows, double seconds) {
         var sb = new StringBuilder("# team-delivery sweep\n\n");
         sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds.%n%n", rows.size(), seconds));
-        sb.append("| controller | robots | runs | deliveries | per run | vs one robot | contact < 2 s (all robots) | criteria met |\n");
-        sb.append("|---|---|---|---|---|---|---|---|\n");
+        sb.append("| controller | robots | runs | deliveries per run | in all | vs one robot | robot contact < 2 s | all contact < 2 s "
+                + "| double claims | longest charger wait | runs with a battery empty | criteria met |\n");
+        sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         Map<String, Map<Integer, List<Row>>> by = new LinkedHashMap<>();
         for (Row r : rows) {
             by.computeIfAbsent(r.controller(), k -> new LinkedHashMap<>()).computeIfAbsent(r.robots(), k -> new ArrayList<>()).add(r);
@@ -165,14 +171,22 @@ final class TeamSweepCommand implements Callable<Integer> {
         for (var c : by.entrySet()) {
             List<Row> single = c.getValue().get(1);
             int singleTotal = single == null ? 0 : single.stream().mapToInt(r -> r.outcome().deliveries()).sum();
+            boolean agents = c.getKey().equals("agents");
             for (var n : c.getValue().entrySet()) {
                 List<Row> rs = n.getValue();
                 int total = rs.stream().mapToInt(r -> r.outcome().deliveries()).sum();
+                String each = rs.stream().map(r -> Integer.toString(r.outcome().deliveries())).collect(Collectors.joining(", "));
+                long robotContact = rs.stream().filter(r -> r.outcome().figures().maxRobotContact() < 2).count();
                 long lowContact = rs.stream().filter(r -> r.outcome().robots().stream().allMatch(s -> s.contactTime() < 2)).count();
+                int doubles = rs.stream().mapToInt(r -> r.outcome().figures().doubleClaims()).sum();
+                double wait = rs.stream().mapToDouble(r -> r.outcome().figures().longestChargerWait()).max().orElse(0);
+                long emptied = rs.stream().filter(r -> r.outcome().figures().batteriesEmptied() > 0).count();
                 long met = rs.stream().filter(r -> r.outcome().verdict().success()).count();
                 String ratio = single == null || singleTotal == 0 ? "-" : String.format(Locale.ROOT, "%.2f×", (double) total / singleTotal);
-                sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %.2f | %s | %d of %d | %d of %d |%n", c.getKey(),
-                        n.getKey(), rs.size(), total, (double) total / rs.size(), ratio, lowContact, rs.size(), met, rs.size()));
+                sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %d | %s | %d of %d | %d of %d | %s | %s | %d | %d of %d |%n",
+                        c.getKey(), n.getKey(), rs.size(), each, total, ratio, robotContact, rs.size(), lowContact, rs.size(),
+                        agents ? Integer.toString(doubles) : "-", agents ? String.format(Locale.ROOT, "%.0f s", wait) : "-",
+                        emptied, met, rs.size()));
             }
         }
         return sb.toString();

@@ -14,8 +14,9 @@ import java.util.Set;
 /**
  * What a team run's shared artifacts show, read after every control step against the world's
  * ground truth: how many claims were made, whether two robots ever held claims on one cylinder
- * (each claim is the cylinder nearest its place), and how long each robot waited in the charger's
- * queue behind another (from joining it to holding the charger).
+ * (each claim names the cylinder its robot carries, else the one nearest its place when it was
+ * placed there), and how long each robot waited in the charger's queue behind another (from
+ * joining it to holding the charger).
  */
 public final class TeamWatch {
     /** A claim farther than this from every cylinder names none, metres. */
@@ -28,9 +29,14 @@ public final class TeamWatch {
     private final Map<String, Long> waitingSince = new HashMap<>();
     private final Map<String, Double> longestWait = new HashMap<>();
     private final Set<String> doubled = new HashSet<>();
+    /** Each claim's place and the cylinder it named when placed there, by claim id. */
+    private final Map<Integer, Named> named = new HashMap<>();
     private int claims;
     private int doubleClaims;
     private int chargerWaits;
+
+    private record Named(double x, double z, String cylinder) {
+    }
 
     TeamWatch(SimWorld world, TaskBoard board, ChargerQueue charger, List<String> robots) {
         this.world = world;
@@ -44,8 +50,11 @@ public final class TeamWatch {
         for (TaskBoard.Held h : held) {
             claims = Math.max(claims, h.id());
         }
-        if (held.size() > 1) {
-            checkDoubleClaims(held);
+        if (!held.isEmpty()) {
+            checkDoubleClaims(held); // names every new claim, counts pairs
+        }
+        if (named.size() > held.size()) {
+            named.keySet().retainAll(held.stream().map(TaskBoard.Held::id).toList());
         }
         List<String> queue = charger.queued();
         for (int i = 0; i < queue.size(); i++) {
@@ -72,14 +81,21 @@ public final class TeamWatch {
         }
     }
 
-    /** Two agents' claims naming one cylinder: counted once per pair of claims. */
+    /** Names each claim's cylinder; two agents' claims naming one cylinder are counted once per pair. */
     private void checkDoubleClaims(List<TaskBoard.Held> held) {
         List<ObjectState> cylinders = world.supervisor().objects().stream().filter(o -> o.kind() == ObjectKind.CYLINDER).toList();
         Map<String, TaskBoard.Held> byCylinder = new HashMap<>();
         for (TaskBoard.Held h : held) {
-            // a claim's cylinder is the one its robot carries, else the one nearest its place
+            // a claim's cylinder is the one its robot carries, else the one nearest its place when
+            // the claim was placed there (a robot carrying another cylinder past it later does not
+            // make it name that one)
             String carried = world.supervisor().carried(h.agent());
-            String c = carried != null ? carried : nearest(cylinders, h.x(), h.z());
+            Named n = named.get(h.id());
+            if (n == null || n.x() != h.x() || n.z() != h.z()) {
+                n = new Named(h.x(), h.z(), nearest(cylinders, h.x(), h.z()));
+                named.put(h.id(), n);
+            }
+            String c = carried != null ? carried : n.cylinder();
             if (c == null) {
                 continue;
             }

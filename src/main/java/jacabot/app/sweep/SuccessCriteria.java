@@ -34,8 +34,9 @@ import java.util.Optional;
  *
  * <p>A team's run (team-delivery, thesis Chapter 6), {@link #judgeTeam}: deliveries counted for the
  * team, at least {@link #MIN_DELIVERIES} per robot (no more than the world's cylinders); every
- * robot's contact under {@link #MAX_CONTACT_S} s and its battery never empty; no cylinder ever
- * claimed by two robots at once; no robot waiting for the charger longer than
+ * robot's contact with another robot under {@link #MAX_CONTACT_S} s (contact with walls and boxes
+ * is a robot's own affair, judged by the one-robot experiments) and its battery never empty; no
+ * cylinder ever claimed by two robots at once; no robot waiting for the charger longer than
  * {@link #MAX_CHARGER_WAIT_S} s. Across runs, a team of N should deliver {@link #scalingTarget}
  * times what one robot delivers on the same worlds and seeds.
  */
@@ -71,15 +72,25 @@ public final class SuccessCriteria {
     /**
      * What the team criteria read from a run.
      *
-     * @param contactTimes        each robot's contact time, seconds, in the world file's order
+     * @param contactTimes        each robot's contact time (walls, boxes, robots), seconds, in the world file's order
+     * @param robotContactTimes   each robot's time touching another robot, seconds, in the same order
      * @param batteriesEmptied    how many robots' batteries ran empty
      * @param doubleClaims        how many times a cylinder was claimed by a second robot while claimed
      * @param longestChargerWait  the longest a robot waited for the charger, seconds
      */
-    public record TeamFigures(double duration, int cylinders, int deliveries, List<Double> contactTimes, int batteriesEmptied,
-                              int doubleClaims, double longestChargerWait) {
+    public record TeamFigures(double duration, int cylinders, int deliveries, List<Double> contactTimes,
+                              List<Double> robotContactTimes, int batteriesEmptied, int doubleClaims, double longestChargerWait) {
         public TeamFigures {
             contactTimes = List.copyOf(contactTimes);
+            robotContactTimes = List.copyOf(robotContactTimes);
+            if (robotContactTimes.size() != contactTimes.size()) {
+                throw new IllegalArgumentException("a contact time and a robot contact time per robot");
+            }
+        }
+
+        /** {@return the longest any robot of the team touched another robot, seconds} */
+        public double maxRobotContact() {
+            return robotContactTimes.stream().mapToDouble(Double::doubleValue).max().orElse(0);
         }
 
         /** {@return the team's size} */
@@ -208,8 +219,8 @@ public final class SuccessCriteria {
             why.add(f.deliveries() + " team deliver" + (f.deliveries() == 1 ? "y" : "ies") + " (< " + due + ")");
         }
         for (int i = 0; i < f.robots(); i++) {
-            if (!(f.contactTimes().get(i) < MAX_CONTACT_S)) {
-                why.add(fmt("robot %d: contact %.1f s (>= %.0f s)", i + 1, f.contactTimes().get(i), MAX_CONTACT_S));
+            if (!(f.robotContactTimes().get(i) < MAX_CONTACT_S)) {
+                why.add(fmt("robot %d: contact with robots %.1f s (>= %.0f s)", i + 1, f.robotContactTimes().get(i), MAX_CONTACT_S));
             }
         }
         if (f.batteriesEmptied() > 0) {

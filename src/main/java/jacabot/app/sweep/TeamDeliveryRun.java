@@ -137,8 +137,10 @@ public final class TeamDeliveryRun {
         double duration = robots.isEmpty() ? 0 : robots.get(0).duration();
         int deliveries = robots.stream().mapToInt(RunSummary::deliveries).sum();
         List<Double> contacts = robots.stream().map(RunSummary::contactTime).toList();
+        // every robot of the world is on the team, in the world file's order, as the summaries
+        List<Double> robotContacts = world.robots().stream().map(Robot::robotContactTime).toList();
         int emptied = (int) robots.stream().filter(RunSummary::batteryEmptied).count();
-        return new SuccessCriteria.TeamFigures(duration, world.spec().cylinders().size(), deliveries, contacts, emptied,
-                doubleClaims, longestWait);
+        return new SuccessCriteria.TeamFigures(duration, world.spec().cylinders().size(), deliveries, contacts, robotContacts,
+                emptied, doubleClaims, longestWait);
     }
 }

@@ -4,24 +4,25 @@ import jacabot.cartago.AgentId;
 import jacabot.cartago.Artifact;
 import jacabot.cartago.GUARD;
 import jacabot.cartago.OPERATION;
-import java.util.ArrayList;
 import java.util.List;
 
 /**
  * The queue for a team's one charger (thesis Chapter 6, coordination among robots): a robot whose
  * battery runs low asks for the charger and waits its turn, so that two robots never push each
  * other off the charging area. The queue is first come, first served; its head holds the charger
- * until it leaves the queue.
+ * until it leaves the queue, or lets the next one go first when it cannot reach the charger.
  *
  * <p>Observable property: {@code chargerQueue(List)}, the agents in order (atoms), the holder
  * first. Operations: {@code requestCharger} (joins the tail; already queued, keeps its place),
  * {@code awaitCharger} (waits, without holding the artifact, until the caller is the head; joins
- * first if need be; fails if the caller leaves meanwhile), {@code leaveCharger} (leaves the queue wherever the caller stands, the charger
- * if it held it; not queued is fine). An agent that leaves the workspace leaves the queue too
- * ({@link #agentLeft}), so a robot whose agent died never keeps the others from the charger.
+ * first if need be; fails if the caller leaves meanwhile), {@code yieldCharger} (the holder lets
+ * the next one have the charger and waits behind it; alone, it keeps it), {@code leaveCharger}
+ * (leaves the queue wherever the caller stands, the charger if it held it; not queued is fine). An
+ * agent that leaves the workspace leaves the queue too ({@link #agentLeft}), so a robot whose
+ * agent died never keeps the others from the charger.
  */
 public class ChargerQueue extends Artifact {
-    private final List<AgentId> queue = new ArrayList<>();
+    private final TurnQueue queue = new TurnQueue();
 
     void init() {
         defineObsProperty("chargerQueue", List.of());
@@ -30,7 +31,9 @@ public class ChargerQueue extends Artifact {
     /** Joins the tail of the queue, unless the caller is queued already. */
     @OPERATION
     void requestCharger() {
-        join(getCurrentOpAgentId());
+        if (queue.join(getCurrentOpAgentId())) {
+            publish();
+        }
     }
 
     /**
@@ -41,7 +44,7 @@ public class ChargerQueue extends Artifact {
     @OPERATION
     void awaitCharger() {
         AgentId me = getCurrentOpAgentId();
-        join(me);
+        requestCharger();
         await("headOrGone", me);
         if (!queue.contains(me)) {
             failed(me.name() + " left the charger's queue while waiting", "not_queued");
@@ -50,7 +53,15 @@ public class ChargerQueue extends Artifact {
 
     @GUARD
     boolean headOrGone(AgentId agent) {
-        return queue.isEmpty() || queue.get(0).equals(agent) || !queue.contains(agent);
+        return queue.headOrGone(agent);
+    }
+
+    /** The holder lets the next in the queue have the charger and stands second (alone, it keeps the charger). */
+    @OPERATION
+    void yieldCharger() {
+        if (queue.yieldTurn(getCurrentOpAgentId())) {
+            publish();
+        }
     }
 
     /** Leaves the queue (and the charger, if the caller held it). */
@@ -61,7 +72,7 @@ public class ChargerQueue extends Artifact {
 
     /** {@return the queued agents' names, the holder first; read it between two artifact steps} */
     public List<String> queued() {
-        return queue.stream().map(AgentId::name).toList();
+        return queue.names();
     }
 
     @Override
@@ -69,20 +80,13 @@ public class ChargerQueue extends Artifact {
         leave(agent);
     }
 
-    private void join(AgentId agent) {
-        if (!queue.contains(agent)) {
-            queue.add(agent);
-            publish();
-        }
-    }
-
     private void leave(AgentId agent) {
-        if (queue.remove(agent)) {
+        if (queue.leave(agent)) {
             publish();
         }
     }
 
     private void publish() {
-        getObsProperty("chargerQueue").updateValue(List.copyOf(queue));
+        getObsProperty("chargerQueue").updateValue(queue.agents());
     }
 }

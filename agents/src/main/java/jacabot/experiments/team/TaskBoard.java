@@ -2,6 +2,7 @@ package jacabot.experiments.team;
 
 import jacabot.cartago.AgentId;
 import jacabot.cartago.Artifact;
+import jacabot.cartago.GUARD;
 import jacabot.cartago.OPERATION;
 import jacabot.cartago.ObsProperty;
 import jacabot.cartago.OpFeedbackParam;
@@ -27,10 +28,19 @@ import java.util.Map;
  * artifact step, so two agents can never hold claims on one cylinder, however their calls
  * interleave. An agent that leaves the workspace (its process ended) loses its claims:
  * {@link #agentLeft} frees them and signals {@code claimsFreed(Agent, N)}.
+ *
+ * <p>The board also shows where the robots are and whose turn it is at the storage point, where
+ * every delivery ends (a robot's distance sensors see another only as an obstacle, and a robot
+ * putting a cylinder down does not look): {@code at(X, Z)} publishes the caller's place as
+ * {@code robotAt(Agent, X, Z)}; {@code awaitStorageTurn} queues the caller for the storage area
+ * and waits until it is the head, {@code storageDone} leaves that queue; {@code storageQueue(List)}
+ * shows it, the robot whose turn it is first.
  */
 public class TaskBoard extends Artifact {
     /** Places closer than this are one cylinder, metres. */
     static final double DEFAULT_RADIUS = 0.1;
+    /** A cylinder picked up voids other agents' claims within this many radii of it. */
+    static final double TAKE_REACH = 1.5;
 
     private record Claim(int id, AgentId agent, ObsProperty property) {
         double x() {
@@ -43,6 +53,8 @@ public class TaskBoard extends Artifact {
     }
 
     private final Map<Integer, Claim> claims = new LinkedHashMap<>();
+    private final Map<AgentId, ObsProperty> places = new LinkedHashMap<>();
+    private final TurnQueue storage = new TurnQueue();
     private double radius;
     private int lastId;
 
@@ -60,6 +72,48 @@ public class TaskBoard extends Artifact {
         }
         this.radius = radius;
         defineObsProperty("completed", 0);
+        defineObsProperty("storageQueue", List.of());
+    }
+
+    /** Publishes where the caller's robot is: {@code robotAt(Agent, X, Z)}, one per robot. */
+    @OPERATION
+    void at(double x, double z) {
+        AgentId me = getCurrentOpAgentId();
+        ObsProperty p = places.get(me);
+        if (p == null) {
+            places.put(me, defineObsProperty("robotAt", me, x, z));
+        } else {
+            p.updateValues(me, x, z);
+        }
+    }
+
+    /**
+     * Queues the caller for the storage area (joining the tail once) and waits until its turn
+     * comes; fails with {@code not_queued} if it leaves the queue meanwhile.
+     */
+    @OPERATION
+    void awaitStorageTurn() {
+        AgentId me = getCurrentOpAgentId();
+        if (storage.join(me)) {
+            publishStorage();
+        }
+        await("storageTurnOrGone", me);
+        if (!storage.contains(me)) {
+            failed(me.name() + " left the storage area's queue while waiting", "not_queued");
+        }
+    }
+
+    @GUARD
+    boolean storageTurnOrGone(AgentId agent) {
+        return storage.headOrGone(agent);
+    }
+
+    /** Leaves the storage area's queue (its turn, if it had it; not queued is fine). */
+    @OPERATION
+    void storageDone() {
+        if (storage.leave(getCurrentOpAgentId())) {
+            publishStorage();
+        }
     }
 
     /** Claims the cylinder at (x, z) for the calling agent; see {@link #claim(double, double, OpFeedbackParam)}. */
@@ -92,9 +146,34 @@ public class TaskBoard extends Artifact {
             id.set(mine.id());
             return;
         }
-        int next = ++lastId;
-        claims.put(next, new Claim(next, me, defineObsProperty("claimed", next, me, x, z)));
-        id.set(next);
+        id.set(newClaim(me, x, z));
+    }
+
+    /**
+     * The caller has picked up the cylinder at (x, z): the cylinder is its own in fact, so every
+     * other agent's claim within {@link #TAKE_REACH} radii of it is void (dropped: two robots'
+     * estimates of one cylinder seen from afar may lie further apart than the radius), the caller's
+     * other claims are released (a robot carries one cylinder), and its claim within the radius
+     * there is given back with its place updated, made if need be.
+     */
+    @OPERATION
+    void take(double x, double z, OpFeedbackParam<Integer> id) {
+        AgentId me = getCurrentOpAgentId();
+        Claim kept = null;
+        for (Claim c : List.copyOf(claims.values())) {
+            double d = Math.hypot(c.x() - x, c.z() - z);
+            if (d < radius && c.agent().equals(me) && kept == null) {
+                kept = c;
+            } else if (d < TAKE_REACH * radius || c.agent().equals(me)) {
+                drop(c);
+            }
+        }
+        if (kept != null) {
+            kept.property().updateValues(kept.id(), me, x, z);
+            id.set(kept.id());
+            return;
+        }
+        id.set(newClaim(me, x, z));
     }
 
     /** Gives up the caller's claim {@code id}: another agent may claim that cylinder now. */
@@ -128,10 +207,26 @@ public class TaskBoard extends Artifact {
 
     @Override
     protected void agentLeft(AgentId agent) {
+        if (storage.leave(agent)) {
+            publishStorage();
+        }
+        if (places.remove(agent) != null) {
+            removeObsPropertyByTemplate("robotAt", agent, null, null);
+        }
         int freed = freeAll(agent);
         if (freed > 0) {
             signal("claimsFreed", agent, freed);
         }
+    }
+
+    private int newClaim(AgentId agent, double x, double z) {
+        int next = ++lastId;
+        claims.put(next, new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z)));
+        return next;
+    }
+
+    private void publishStorage() {
+        getObsProperty("storageQueue").updateValue(storage.agents());
     }
 
     private Claim owned(int id) {

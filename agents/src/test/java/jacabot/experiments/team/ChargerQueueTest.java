@@ -64,4 +64,24 @@ class ChargerQueueTest {
             assertTrue(bWaits.join().succeeded(), "b holds the charger");
         }
     }
+
+    @Test
+    void aHolderThatCannotReachTheChargerLetsTheNextGoFirst() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("charger", ChargerQueue.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "w", "charger");
+            ok(ws, a, "charger", "awaitCharger");
+            ok(ws, a, "charger", "yieldCharger"); // alone: keeps the charger
+            assertEquals(List.of(List.of(List.of(a))), sees.values("chargerQueue"));
+            ok(ws, b, "charger", "requestCharger");
+            ok(ws, c, "charger", "requestCharger");
+            CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "charger", "awaitCharger");
+            assertFalse(completesSoon(bWaits));
+            ok(ws, b, "charger", "yieldCharger"); // not the holder: nothing changes
+            ok(ws, a, "charger", "yieldCharger");
+            assertTrue(bWaits.join().succeeded(), "b holds the charger");
+            assertEquals(List.of(List.of(List.of(b, a, c))), sees.values("chargerQueue"), "a second, before c");
+        }
+    }
 }

@@ -145,4 +145,65 @@ class TaskBoardTest {
         }
         assertEquals(List.of(), violations);
     }
+
+    @Test
+    void aCylinderTakenIsTheTakersWhoeverHadClaimedItsPlace() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            int bs = claim(ws, b, 0.50, 0.50);           // b goes for the cylinder at (0.5, 0.5)
+            int elsewhere = claim(ws, a, -0.5, -0.5);    // a went for another one...
+            OpOutcome.Success took = ok(ws, a, "board", "take", 0.55, 0.5, new OpFeedbackParam<Integer>());
+            int id = ((Number) took.outputs().get(2)).intValue(); // ...and picked b's up on the way
+            assertTrue(id != bs && id != elsewhere, "a new claim for the cylinder in a's gripper");
+            assertEquals(List.of(List.of(id, a, 0.55, 0.5)), sees.values("claimed"), "b's claim void, a's other one released");
+            fails("no_claim", List.of(bs), ws, b, "board", "release", bs);
+            OpOutcome.Success again = ok(ws, a, "board", "take", 0.56, 0.5, new OpFeedbackParam<Integer>());
+            assertEquals(id, ((Number) again.outputs().get(2)).intValue(), "its own claim there: the same claim");
+        }
+    }
+
+    @Test
+    void robotsPublishTheirPlacesOneEach() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+            ok(ws, a, "board", "at", 0.1, 0.2);
+            ok(ws, b, "board", "at", -0.3, 0.4);
+            ok(ws, a, "board", "at", 0.15, 0.2);
+            assertEquals(List.of(List.of(a, 0.15, 0.2), List.of(b, -0.3, 0.4)), sees.values("robotAt"));
+            ws.leave(b);
+            assertEquals(List.of(List.of(a, 0.15, 0.2)), sees.values("robotAt"), "a robot gone is nowhere");
+        }
+    }
+
+    @Test
+    void oneRobotAtATimeAtTheStoragePoint() throws CartagoException, InterruptedException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+            ok(ws, a, "board", "awaitStorageTurn"); // free: at once
+            CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "board", "awaitStorageTurn");
+            awaitQueue(sees, List.of(a, b)); // b joins from a thread of its own, then c
+            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "board", "awaitStorageTurn");
+            awaitQueue(sees, List.of(a, b, c));
+            assertTrue(!bWaits.isDone() && !cWaits.isDone(), "b and c wait while a is at the storage point");
+            ok(ws, a, "board", "storageDone");
+            assertTrue(bWaits.join().succeeded(), "b's turn");
+            ws.leave(b); // b's agent gone while at the storage point: c's turn
+            assertTrue(cWaits.join().succeeded(), "c's turn");
+            assertEquals(List.of(List.of(List.of(c))), sees.values("storageQueue"));
+        }
+    }
+
+    private static void awaitQueue(Ops.Watcher sees, List<AgentId> queue) throws InterruptedException {
+        for (int i = 0; i < 300 && !sees.values("storageQueue").equals(List.of(List.of(queue))); i++) {
+            Thread.sleep(10);
+        }
+        assertEquals(List.of(List.of(queue)), sees.values("storageQueue"));
+    }
 }

@@ -144,6 +144,16 @@ final class Physics {
         return !world.getInContactBodies(o.body, false).isEmpty();
     }
 
+    /** {@return whether the body touches another robot's body} */
+    boolean touchesRobot(SimObject o) {
+        for (Body b : world.getInContactBodies(o.body, false)) {
+            if (b.getUserData() instanceof SimObject other && other != o && other.kind == ObjectKind.ROBOT) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** A ray caster that ignores one robot and every carried object. */
     RayCaster rayCaster(SimObject self) {
         return new RayCaster() {

@@ -31,6 +31,7 @@ final class RobotRuntime implements RobotHost, GraspHost {
     private boolean latestBetween;
     private final Robot robot;
     private double contactTime;
+    private double robotContactTime;
 
     RobotRuntime(Engine engine, Physics physics, RobotSpec spec, RobotModel model) {
         this.engine = engine;
@@ -65,6 +66,9 @@ final class RobotRuntime implements RobotHost, GraspHost {
     void afterStep(double dt, long nowMs, AreaSpec charger, boolean controlStepEnd) {
         if (physics.inContact(body)) {
             contactTime += dt;
+            if (physics.touchesRobot(body)) {
+                robotContactTime += dt;
+            }
         }
         if (robot.hasBattery()) {
             Battery b = robot.getBattery();
@@ -164,6 +168,11 @@ final class RobotRuntime implements RobotHost, GraspHost {
     @Override
     public double contactTime() {
         return contactTime;
+    }
+
+    @Override
+    public double robotContactTime() {
+        return robotContactTime;
     }
 
     // ---- GraspHost

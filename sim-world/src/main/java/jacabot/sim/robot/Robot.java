@@ -207,6 +207,11 @@ public final class Robot {
         return host.contactTime();
     }
 
+    /** {@return the simulated seconds this robot has spent touching another robot (part of {@link #contactTime})} */
+    public double robotContactTime() {
+        return host.robotContactTime();
+    }
+
     /** Called by the world after each physics step: moves the gripper, takes due readings. */
     public void afterPhysicsStep(double dt, long nowMs) {
         if (gripper != null) {

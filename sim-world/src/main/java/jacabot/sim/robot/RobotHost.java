@@ -32,4 +32,9 @@ public interface RobotHost {
 
     /** {@return the simulated seconds spent touching walls, obstacles or other robots} */
     double contactTime();
+
+    /** {@return the simulated seconds spent touching another robot (a team's ground truth)} */
+    default double robotContactTime() {
+        return 0;
+    }
 }

@@ -1,0 +1,63 @@
+// Skill: one charger for the team (thesis Chapter 6, multi-robot coordination; not in the thesis),
+// the team's side of recharge's hooks (!awaitChargerTurn, !chargerDone). A robot whose battery
+// runs low goes near the charger (within chargerQueueRadius, per axis) and only there queues for it
+// (requestCharger, awaitCharger), standing still out of the way of the robot on the charger; the
+// queue's order is then the order of arrival, so nobody waits for a robot still far away. The robot
+// whose turn it is but that does not reach the charger within chargerTurnLimit lets the next one
+// go first (yieldCharger) and waits again. A robot recharged leaves the queue once it is
+// chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
+// Parameters:
+chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
+chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger
+chargerLeaveDistance(0.2).   // m from the charger where a recharged robot leaves the queue
+chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
+// Beliefs: waitingCharger, yieldedCharger. Rules it extends: halted.
+// Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L) (the charger).
+// Needs: recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
+// (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
+// for -!reachCharger and the obstacles while waiting come first.
+
+halted :- waitingCharger.
+nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
+
+@awaitChargerTurn
++!awaitChargerTurn : chargerQueueRadius(W)
+    <- !approachCharger(W); stop; !queueForCharger; .print("The charger is mine"); !!watchChargerTurn.
+
+@nearChargerAlready +!approachCharger(W) : nearCharger(W).
+@approachCharger
++!approachCharger(W) : charger(Cx, Cz)
+    <- .succeed_goal(move(_)); -avoiding; -+detours(0); stop; setThreshold(W);
+       -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz); !computeGap; !!balance; !!steer;
+       !reachCharger; stop; .drop_intention(balance); stop.
+
+@queueForCharger
++!queueForCharger
+    <- +waitingCharger; requestCharger; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+@queueForChargerFailed -!queueForCharger <- -waitingCharger.
+
+// the turn given to a robot that does not reach the charger in time goes to the next one
+@watchChargerTurn +!watchChargerTurn : chargerTurnLimit(T) <- .wait(T); !checkChargerTurn.
+@yieldChargerTurn
++!checkChargerTurn : charging & not atCharger & .intend(reachCharger) & .my_name(Me) & chargerQueue([Me, _ | _])
+    <- .print("Charger not reached in time: the next robot goes first"); +yieldedCharger; yieldCharger;
+       .fail_goal(reachCharger).
+@keepChargerTurn +!checkChargerTurn.
+@chargerTurnYielded
+-!reachCharger : yieldedCharger
+    <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
+       !escape; !computeGap; !balance; !reachCharger.
+
+@leaveChargerQueue +!chargerDone : chargerLeaveTimeout(N) <- !!leaveChargerAway(N).
+@leaveChargerAway
++!leaveChargerAway(N) : N > 0 & chargerLeaveDistance(D) & nearCharger(D) <- .wait(250); !leaveChargerAway(N - 1).
+@leaveChargerNow +!leaveChargerAway(_) <- leaveCharger.
+// a recharge given up (a fallen cylinder drops every desire and forgets "charging") leaves the
+// queue too, else its robot held the charger for the rest of the run; with a cylinder being
+// delivered, recharge's own plan for -charging resumes the delivery (the queue is left already)
+@leaveChargerOnGiveUp -charging : not delivering <- -waitingCharger; leaveCharger.
+
+// while waiting for its turn the robot stands still
+@obstacleWhileWaitingCharger +obstacle(true) : waitingCharger.
+@lateralWhileWaitingCharger +lateralObstacle(_) : waitingCharger.
+@stuckWhileWaitingCharger +stuck : waitingCharger.

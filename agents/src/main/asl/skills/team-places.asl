@@ -1,0 +1,23 @@
+// Skill: where the teammates are (thesis Chapter 6, multi-robot coordination; not in the thesis).
+// A robot's distance sensors see another robot only as an obstacle, and its camera sees the red
+// cylinder another robot carries as a cylinder: every robot publishes its place on the team's task
+// board (at(X, Z): robotAt(Agent, X, Z) for all to perceive) about once a second, so that the
+// others can tell a teammate (and what it carries or is about to take) from the rest.
+// Parameters:
+placeEvery(1000).          // ms between two publications of the robot's place
+teammateClearance(0.15).   // m: a sighting this near a teammate's last published place is the
+                           // teammate's (a cylinder carried 6 cm ahead, a robot's second of travel)
+// Beliefs: placePublished(T). Reads: location(X, Y, Z) (the middleware), robotAt(A, X, Z) (the board).
+// Rules it offers: teammateNear(X, Z).
+// Needs: the board focused (team-claims' setUpTeam). Include it after team-storage.
+
+placeDue(_) :- not placePublished(_).
+placeDue(T) :- placePublished(T0) & placeEvery(E) & T - T0 >= E.
+teammateNear(X, Z) :- robotAt(A, Rx, Rz) & not .my_name(A) & teammateClearance(R)
+    & (X - Rx) * (X - Rx) + (Z - Rz) * (Z - Rz) < R * R.
+
+// driven by the GPS percept, so that no drop of every desire (a fallen cylinder) ends it; a skill
+// with a plan for +location that applies now and then (team-storage) is included before this one
+@publishPlace[atomic]
++location(X, _, Z) : .system_time(T) & placeDue(T)
+    <- -+placePublished(T); at(X, Z).

@@ -1,0 +1,47 @@
+// Skill: one robot at a time at the storage point (thesis Chapter 6, multi-robot coordination; not
+// in the thesis). Every delivery ends at the one storage point, where a robot puts its cylinder
+// down without looking (delivery: no distance sensing inside the area), so two robots there
+// touched each other. A robot bringing a cylinder asks the task board for its turn when it comes
+// within storageQueueRadius of the storage point; if another robot has it, it stops where it is
+// (out of the area: the area's access radius is 0.15 m) and waits, then goes on. It gives the
+// turn up once out of the area (-insideArea), or when the delivery ends or pauses before it got in.
+// Parameters:
+storageQueueRadius(0.35).   // m from the storage point where a robot with a cylinder asks its turn
+storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
+// Beliefs: waitingStorage, storageTurnMine. Rules it extends: halted.
+// Reads: delivering, insideArea, onErrand (delivery, recharge), storagePoint(X, Z) (the world).
+// Needs: delivery (computeGap, balance), the board focused (team-claims). Include it first (its
+// +location plan applies now and then, team-places' almost always), before
+// delivery, heading and avoidance: its plans for obstacles while waiting come first.
+
+halted :- waitingStorage.
+
+@askStorageTurn[atomic]
++location(X, _, Z) : delivering & not onErrand & not insideArea & not storageTurnMine & not waitingStorage
+                    & storagePoint(Sx, Sz) & storageQueueRadius(R) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < R * R
+    <- +waitingStorage; !!storageTurn.
+
+@storageTurnFree +!storageTurn : storageQueue([]) <- awaitStorageTurn; !storageTurnTaken.
+@storageTurnBusy
++!storageTurn <- stop; .print("Waiting for the storage area"); awaitStorageTurn; !storageTurnTaken; !computeGap; !balance.
+@storageTurnLost -!storageTurn <- -waitingStorage.
+@storageTurnTaken +!storageTurnTaken <- +storageTurnMine; -waitingStorage; !!storageTurnWatch.
+
+@storageTurnWatch +!storageTurnWatch : storageTurnLimit(T) <- .wait(T); !storageTurnOver.
+@storageTurnOverdue +!storageTurnOver : storageTurnMine <- .print("Storage turn over: next robot"); !giveStorageTurn.
+@storageTurnOverAlready +!storageTurnOver.
+
+@giveStorageTurn +!giveStorageTurn <- -storageTurnMine; storageDone.
+
+// out of the area after a delivery, or a fallen cylinder (delivery forgets insideArea)
+@storageLeft -insideArea : storageTurnMine <- !giveStorageTurn.
+// the delivery ended or paused before the area was reached (a fall, a low battery)
+@storageNotReached -delivering : storageTurnMine & not insideArea <- !giveStorageTurn.
+@storageChargingFirst +charging : storageTurnMine & not insideArea <- !giveStorageTurn.
+@storageWaitCharging +charging : waitingStorage <- storageDone; -waitingStorage.
+
+// while waiting for its turn the robot stands still: obstacles (a robot leaving the area) and the
+// missing progress are no reason to move
+@obstacleWhileWaitingStorage +obstacle(true) : waitingStorage.
+@lateralWhileWaitingStorage +lateralObstacle(_) : waitingStorage.
+@stuckWhileWaitingStorage +stuck : waitingStorage.

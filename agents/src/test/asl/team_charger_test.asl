@@ -1,0 +1,43 @@
+// Skill tests of one charger for the team (skills/team-charger.asl, in team-delivery.asl): a
+// robot with a low battery first goes near the charger and only there queues for it; once
+// recharged it leaves the queue when it is away from the charger. Run: jacabot test agents/src/test/asl
+{ include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
+{ include("../../main/asl/team-delivery.asl") }
+
+arena(1.0, 1.0).
+storagePoint(0.41, -0.41).
+storageRadius(0.1).
+charger(-0.38, 0.38).
+
+mock_operation(lookupArtifact(_, middleware), ok).
+mock_operation(computeAngle(_, _, _, _, 90), ok).
+mock_operation(_, ok).
+
+@[test]
++!test_a_low_battery_takes_the_robot_near_the_charger_before_it_queues
+    <- +location(0.3, 0, 0.2); +orientation(90); +battery(470); +chargerQueue([]);
+       !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.3)), 10000);
+       !assert_true(mock_called(setUpTargetPoint(-0.38, 0, 0.38)));
+       .wait(200);
+       !assert_false(mock_called(requestCharger));               // not queued while far
+       -location(_, _, _); +location(-0.2, 0, 0.3);
+       -targetReached; !!perceive(targetReached);                // near the charger
+       !until(mock_called(awaitCharger), 10000);
+       !assert_true(mock_called(requestCharger));
+       !until(mock_called(setThreshold(0.03)), 10000);
+       !assert_true(mock_called(setThreshold(0.03))).            // then onto the charger itself
+
+@[test]
++!test_a_recharged_robot_leaves_the_queue_once_away_from_the_charger
+    <- !forget_calls;
+       -location(_, _, _); +location(-0.38, 0, 0.38);
+       -targetReached; !!perceive(targetReached);                // on the charger
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); !!perceive(charged);
+       .wait(600);
+       !assert_false(mock_called(leaveCharger));                 // still on it
+       -location(_, _, _); +location(-0.1, 0, 0.38);              // 0.28 m away
+       !until(mock_called(leaveCharger), 5000);
+       !assert_true(mock_called(leaveCharger)).

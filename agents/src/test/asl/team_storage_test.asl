@@ -1,0 +1,47 @@
+// Skill tests of one robot at a time at the storage point (skills/team-storage.asl, in
+// team-delivery.asl): a robot with a cylinder asks its turn near the storage point, stops and waits
+// if another robot has it, and gives the turn up once out of the area. Run: jacabot test agents/src/test/asl
+{ include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
+{ include("../../main/asl/team-delivery.asl") }
+
+arena(1.0, 1.0).
+storagePoint(0.41, -0.41).
+storageRadius(0.1).
+charger(-0.38, 0.38).
+
+mock_operation(lookupArtifact(_, middleware), ok).
+mock_operation(computeAngle(_, _, _, _, 90), ok).
+mock_operation(_, ok).
+
+@[test]
++!test_far_from_the_storage_point_no_turn_is_asked
+    <- +orientation(90); +storageQueue([]); +delivering; !forget_calls;
+       !!perceive(location(0.0, 0, 0.0));                        // 0.58 m away
+       .wait(200);
+       !assert_false(mock_called(awaitStorageTurn));
+       !assert_false(waitingStorage).
+
+@[test]
++!test_a_robot_waits_for_its_turn_while_another_is_at_the_storage_point
+    <- !forget_calls; -+storageQueue([khepera2]);
+       -location(_, _, _); !!perceive(location(0.2, 0, -0.3));   // 0.24 m away
+       !until(storageTurnMine, 5000);
+       !assert_true(mock_called(stop));                          // stopped, then waited
+       !assert_true(mock_called(awaitStorageTurn));
+       !assert_false(waitingStorage).
+
+@[test]
++!test_the_turn_is_given_up_out_of_the_area
+    <- !forget_calls; +insideArea; -insideArea;
+       !until(mock_called(storageDone), 5000);
+       !assert_true(mock_called(storageDone));
+       !assert_false(storageTurnMine).
+
+@[test]
++!test_a_free_storage_point_is_taken_without_stopping
+    <- !forget_calls; -+storageQueue([]);
+       -location(_, _, _); !!perceive(location(0.21, 0, -0.3));
+       !until(storageTurnMine, 5000);
+       !assert_true(mock_called(awaitStorageTurn));
+       !assert_false(mock_called(stop)).
