@@ -46,18 +46,6 @@ mock_operation(_, ok).
        !assert_false(followingWall(_, _, _) | avoiding).         // the trip ended: so did the following
 
 @[test]
-+!test_the_sweep_follows_a_wall_met_again_on_the_way_to_its_waypoint
-    <- !forget_calls; .system_time(T0); +searching; +waypoint(0.9, 0.4, T0);
-       +lastAvoid(T0);                                           // avoidance met an obstacle here
-       !assert_true(hitPoint(0.5, 0));
-       +obstacle(true);
-       !until(followingWall(_, _, _), 1000);
-       !assert_true(followingWall(left, _, _));
-       -obstacle(true); -searching;
-       !until(not followingWall(_, _, _), 1000);
-       !assert_false(followingWall(_, _, _) | hitPoint(_, _)).   // the sweep ended: so did both
-
-@[test]
 +!test_an_obstacle_far_from_the_earlier_ones_is_left_to_heading
     <- +delivering; -+detours(0);
        +hitPoint(-0.5, -0.5);
