@@ -13,7 +13,6 @@ taskAgent(task).
 { include("skills/energy-agent.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/recharge-trip.asl") }
-{ include("skills/way-round.asl") }
 { include("skills/heading.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/recovery.asl") }

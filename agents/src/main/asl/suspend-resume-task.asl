@@ -13,7 +13,6 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 { include("skills/task-agent.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/suspension.asl") }
-{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }

@@ -10,7 +10,6 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
-{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
