@@ -15,6 +15,7 @@ waypointProgress(off).
 !start.
 
 { include("skills/initial-phase.asl") }
+{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }

@@ -1,6 +1,7 @@
 // Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
 // needed, then park on the charger. Written from the skills of the four experiments alone: the
-// skills of suspend-resume, and two plans of its own that decide when the task is done.
+// skills of suspend-resume, a search memory, and the plans of its own that decide when the task is
+// done and when to search.
 // From the world file: cylinders(N) (how many there are to store), storagePoint(X, Z),
 // storageRadius(R), charger(X, Z), arena(W, D).
 
@@ -10,10 +11,12 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
+{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
+{ include("skills/search-memory.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
@@ -27,4 +30,6 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 +!parkIfDone : stored(N) & cylinders(N) & not charging
     <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; !goToCharger;
        stopAcquireDistance; .print("Parked on the charger").
+// not done: look for the rest, where a cylinder was seen first (search-memory)
+@searchOn +!parkIfDone : not delivering & not picked(true) <- !searchFromMemory.
 @notDone +!parkIfDone.

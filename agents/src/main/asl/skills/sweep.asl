@@ -27,7 +27,8 @@ setUpGoal(setUpSweep).
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
 // lastAvoid(T) (avoidance); maxSpeed(M).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
-// lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot).
+// lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot);
+// resumeSweep (the agent's, optional: a new search goes on where the last one stopped).
 // Needs: !balance (delivery), !escape (recovery). Include it after recovery, before random walk.
 
 @setUpSweep +!setUpSweep <- .system_time(Now); +lastFound(Now); +lastLook(Now); !!searchClock.
@@ -44,6 +45,8 @@ setUpGoal(setUpSweep).
        if (T - T0 > S & not searching & not travelling) { println("No cylinder for a while: sweeping the arena"); +searching; !planSweep };
        !searchClock.
 
+// an agent that believes resumeSweep goes on along the lanes it had not yet driven
+@planSweepResumed +!planSweep : resumeSweep & sweep([_ | _]) <- !nextWaypoint.
 @planSweep
 +!planSweep : arena(W, D) & sweepSpacing(S)
     <- Hx = W / 2 - S / 2; Hz = D / 2 - S / 2; N = math.floor(2 * Hz / S);

@@ -1,0 +1,44 @@
+// Skill: a search memory, not in the thesis. A cylinder the camera showed but the robot did not go
+// for (it was avoiding, on a recharge trip, ignoring one it had given up, or going round an
+// obstacle) is remembered where it was seen; a search (after a delivery, say) goes first to the
+// nearest one remembered and looks around there, and the sweep goes on along the lanes it had not
+// yet driven (sweep.asl's resumeSweep) instead of starting them again.
+// Parameters:
+sameSighting(0.2).   // m: sightings this near each other are one cylinder
+takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
+resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
+// Reads: location, orientation; storagePoint(X, Z), storageClearance(C) (delivery: the cylinders
+// stored there are not to be looked for); searching, sweep(L) (sweep).
+// Beliefs: seenCylinder(X, Z).
+// Needs: sweep (!planSweep, waypoint, closest). Include it after far sight (its sighting plan
+// takes only the sightings far sight leaves) and before sweep.
+
+// where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right
+sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & H = (O + Off) * math.pi / 180
+    & Cx = X + Dist * math.cos(H) & Cz = Z + Dist * math.sin(H).
+nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
+seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
+
+/* Remembering and forgetting */
+
+@rememberSighting
++cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & sameSighting(R)
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
+@sightingNotRemembered +cylinderSighted(_, _).
+
+@forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
+
+// the cylinder picked is no longer to be looked for
+@forgetPicked +picked(true) : location(X, _, Z) & takenRadius(R) <- !forgetNear(X, Z, R).
+
+/* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
+
+@recallNearest
++!searchFromMemory : seenCylinder(_, _) & location(X, _, Z)
+    <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
+       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
+       if (not sweep([_ | _])) { !planSweep };
+       println("Looking again where a cylinder was seen"); +searching;
+       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000).
+@searchingAlready +!searchFromMemory : searching.
+@searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.

@@ -1,0 +1,129 @@
+// Skill: the way round a wall, not in the thesis: a "bug" boundary following (Lumelsky and
+// Stepanov's Bug algorithms). On the way to a target point (delivery, the recharge trip: while
+// "travelling") heading.asl goes round an obstacle and re-aligns with the target; against a wall
+// across the arena that sent the robot back and forth in front of the wall. Here an obstacle met
+// again near where one was met before on this trip is a wall between the robot and its target:
+// the robot follows its boundary, the wall kept on one side by the front-left and front-right
+// distance sensors, until the target lies on its free side (the leave condition), and heads for
+// it again. Round a wall's end the boundary leads through a doorway or a corridor, so the robot
+// finds the way without a map of the walls; a wall that ends at the arena's boundary is followed
+// the other way. Only trips: following the boxes met again on the sweep's way to its waypoints
+// too lost runs that the sweep's own avoidance wins (wide generated worlds 51 and 53, tidy-up).
+// Parameters:
+rehitRadius(0.35).    // m: an obstacle met within this of an earlier one on this trip is a wall
+followSpeed(70).      // wheel speed along the wall
+followEvery(80).      // ms between two corrections of the heading along the wall
+followLimit(150000).  // ms of following before it is given up (the other side is tried next)
+minFollow(2500).      // ms of following before the leave condition is tested
+leaveAngle(35).       // degrees: the target this far to the free side ends the following
+leaveNear(0.15).      // m: no following this near the target (the last approach is heading's)
+// Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
+// recharge-trip); detours(N) (heading: the count of obstacles met on this trip, reset to 0 when a
+// trip starts); picking, reachCylinder(B) (picking); location, orientation, leftSensor,
+// rightSensor (the front-left and front-right sensors); arena(W, D); maxSpeed(M).
+// Beliefs: hitPoint(X, Z) (where obstacles were met on this trip), followingWall(Side, Since, Dist)
+// (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
+// gaveUpSide(Side), avoiding (avoidance: the other skills stand aside meanwhile).
+// Needs: !computeGap, !balance (heading). Include it after recharge, before delivery (its
+// obstacle and stuck plans come before heading's).
+
+// the free run (m) from the robot to the arena's boundary along heading H (degrees, as computeAngle)
+runTo(C, P, Half, T) :- C > 0.001 & T = (Half - P) / C.
+runTo(C, P, Half, T) :- C < -0.001 & T = (-Half - P) / C.
+runTo(C, _, _, 1000) :- C >= -0.001 & C <= 0.001.
+freeRun(H, L) :- location(X, _, Z) & arena(W, D) & R = H * math.pi / 180 & Cx = math.cos(R) & Cz = math.sin(R)
+    & runTo(Cx, X, W / 2, Tx) & runTo(Cz, Z, D / 2, Tz) & L = math.min(Tx, Tz).
+// an obstacle met again near where an earlier one was met on this trip
+metHereBefore :- location(X, _, Z) & rehitRadius(R) & hitPoint(Hx, Hz) & (X - Hx) * (X - Hx) + (Z - Hz) * (Z - Hz) < R * R.
+atBoundary :- location(X, _, Z) & arena(W, D) & (math.abs(X) > W / 2 - 0.1 | math.abs(Z) > D / 2 - 0.1).
+// where the robot is going: the target point of a trip (the sweep's way to its waypoints is left
+// to avoidance: following the boxes met again while sweeping measured worse, see the header)
+goingTo(X, Z) :- travelling & targetPoint(X, Z).
+// the following ends when another skill takes the wheels (a cylinder to pick, the storage area)
+// or the robot is halted (heading's rule: at the charger, another agent's wheels)
+followingOff :- picking | reachCylinder(true) | (nearStorage & not delivering) | halted.
+targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)).
+
+/* Where obstacles were met on this trip (heading counts them: detours) */
+
+@newTrip +detours(0) <- .abolish(hitPoint(_, _)); .abolish(gaveUpSide(_)).
+@noteHit +detours(N) : N > 0 & location(X, _, Z) <- +hitPoint(X, Z).
+
+/* A wall met again: follow it */
+
+@followOnRehit[atomic]
++obstacle(true) : goingTo(_, _) & not insideArea & not followingWall(_, _, _) & not followingOff & metHereBefore
+                & targetDistance(Dist) & leaveNear(Near) & Dist > Near
+    <- .drop_intention(balance); .drop_intention(detour(_)); +avoiding; stop;
+       !chooseSide(S); .system_time(T); +followingWall(S, T, Dist);
+       println("A wall between the robot and its target: following it, the wall on the ", S);
+       !!followWall.
+// meanwhile the sensors are the following's: no detour, no avoidance
+@obstacleWhileFollowing +obstacle(true) : followingWall(_, _, _).
+
+// the side with the longer run along the wall before the arena's boundary (a doorway is likelier
+// there), unless that side was given up on this trip
+@chooseSide
++!chooseSide(S) : location(X, _, Z) & goingTo(Tx, Tz)
+    <- computeAngle(X, Z, Tx, Tz, D); ?freeRun(D - 90, L); ?freeRun(D + 90, R);
+       if (L >= R) { S0 = right } else { S0 = left };
+       if (gaveUpSide(S0) & not (gaveUpSide(right) & gaveUpSide(left))) { !otherSide(S0, S) } else { S = S0 }.
+@otherSideLeft +!otherSide(right, left).
+@otherSideRight +!otherSide(left, right).
+
+/* Along the wall, one correction every followEvery ms */
+
+// the target's bearing from the heading (Rel, -180..180, positive to the right: the compass turns
+// clockwise) decides whether to leave the wall
+@followWall
++!followWall : followingWall(S, T0, Dist0) & not followingOff & location(X, _, Z) & goingTo(Tx, Tz) & orientation(O)
+    <- computeAngle(X, Z, Tx, Tz, D); R0 = D - O; Rel = R0 - 360 * math.round(R0 / 360);
+       !followOrLeave(S, T0, Dist0, Rel).
+@followEnded +!followWall <- !endFollowing.
+@followDropped -!followWall <- !endFollowing.
+
+@leaveWall
++!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & canLeave(S, Dist0, Rel)
+    <- println("The target is on the free side: heading for it again"); !endFollowing; !headAgain.
+@followGivenUp
++!followOrLeave(S, T0, _, _) : .system_time(T) & followLimit(Lim) & T - T0 > Lim
+    <- println("No way round found on the ", S, ": heading for the target again"); +gaveUpSide(S);
+       !endFollowing; !headAgain.
+// the wall led to the arena's boundary, away from the target: no doorway that way; the other
+// side, along the same wall (Bug would go round the whole room first)
+@turnBackAtBoundary
++!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & atBoundary
+                                    & math.abs(Rel) > 135 & not gaveUpSide(S)
+    <- println("The wall ends at the arena's boundary: following it the other way"); +gaveUpSide(S);
+       !otherSide(S, S2); -followingWall(S, T0, Dist0); +followingWall(S2, T, Dist0); !followWall.
+@followStep +!followOrLeave(S, _, _, _) : followEvery(E) <- !alongWall(S); .wait(E); !followWall.
+
+@endFollowing +!endFollowing <- .abolish(followingWall(_, _, _)); -avoiding.
+// the trip turns to its target again (heading)
+@headAgainOnTrip +!headAgain : travelling <- !computeGap; !balance.
+@headAgainEnded +!headAgain.
+
+// leave when the target is well to the free side, neither ahead (a corridor's far wall may be in
+// the way) nor behind (its bearing there flips between -180 and 180)
+canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & F < 200.
+canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & F < 200.
+
+// the sensor on the wall's side (N) keeps the wall at 2-4 cm; the other (F) sees what comes ahead
+@alongRight +!alongWall(right) : leftSensor(F) & rightSensor(N) <- !steerAlong(N, F, 1).
+@alongLeft +!alongWall(left) : leftSensor(N) & rightSensor(F) <- !steerAlong(N, F, -1).
+// Sign 1: the wall on the right (turning away is to the left)
+@wallAhead +!steerAlong(N, F, Sign) : (F > 200 | N > 480) & maxSpeed(M) <- !wheels(-M / 4, M / 4, Sign).
+@tooClose +!steerAlong(N, F, Sign) : N > 300 & followSpeed(V) <- !wheels(V / 2, V, Sign).
+@alongside +!steerAlong(N, F, Sign) : N > 60 & followSpeed(V) <- !wheels(V, V * 0.85, Sign).
+@wallLost +!steerAlong(N, F, Sign) : followSpeed(V) <- !wheels(V, V * 0.3, Sign).
+// the speeds for the wall on the right; mirrored for the wall on the left
+@wheelsRight +!wheels(A, B, 1) <- setSpeeds(A, B).
+@wheelsLeft +!wheels(A, B, -1) <- setSpeeds(B, A).
+
+// wedged along the wall (the held cylinder against a corner): back off, turn away, go on
+@stuckFollowing
++stuck : followingWall(S, _, _) & maxSpeed(M)
+    <- println("No progress along the wall: backing off"); .drop_intention(followWall);
+       setSpeeds(-M / 2, -M / 2); .wait(800);
+       if (S == right) { setSpeeds(-M / 4, M / 4) } else { setSpeeds(M / 4, -M / 4) }; .wait(600);
+       if (followingWall(_, _, _)) { !!followWall }.

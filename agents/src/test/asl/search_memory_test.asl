@@ -1,0 +1,63 @@
+// Skill test of the search memory (skills/search-memory.asl): a cylinder seen and not gone for is
+// remembered where the sighting puts it, once however often it is seen, never in the storage
+// area; picking it forgets it; a search goes first to the nearest one remembered, else on along
+// the sweep's lanes. The operations are mocked (agents/README.md "Testing skills").
+{ include("tester_agent.asl") }
+{ include("skill_test_support.asl") }
+{ include("../../main/asl/skills/search-memory.asl") }
+
+location(0, 0, 0).
+orientation(0).
+storagePoint(-1, -1).
+storageClearance(0.15).
+
+mock_operation(_, ok).
+
+// what the skill needs of sweep
++!planSweep <- +sweepPlanned; -+sweep([[0.5, 0.5]]).
+
+@[test]
++!test_a_sighting_is_remembered_where_it_puts_the_cylinder_once
+    <- .abolish(seenCylinder(_, _));
+       +cylinderSighted(0, 1);                          // 1 m straight ahead (heading 0: +x)
+       !until(seenCylinder(_, _), 500);
+       ?seenCylinder(X, Z); !assert_equals(X, 1, 0.001); !assert_equals(Z, 0, 0.001);
+       -cylinderSighted(0, 1); +cylinderSighted(5, 1.05);  // the same one, seen again a little aside
+       .wait(100);
+       .count(seenCylinder(_, _), N); !assert_true(N == 1);
+       -cylinderSighted(5, 1.05); +cylinderSighted(90, 0.5);  // another: 0.5 m to the right (+z)
+       !until(seenCylinder(_, 0.5), 500);
+       ?seenCylinder(X2, Z2); !assert_equals(X2, 0, 0.001); !assert_equals(Z2, 0.5, 0.001);
+       -cylinderSighted(90, 0.5).
+
+@[test]
++!test_a_cylinder_in_the_storage_area_is_not_remembered
+    <- .abolish(seenCylinder(_, _)); -+location(-1, 0, -1.5);
+       +cylinderSighted(90, 0.5);                       // at the storage point: a stored one
+       .wait(100);
+       !assert_false(seenCylinder(_, _));
+       -cylinderSighted(90, 0.5); -+location(0, 0, 0).
+
+@[test]
++!test_picking_a_cylinder_forgets_it
+    <- .abolish(seenCylinder(_, _)); +seenCylinder(0.1, 0); +seenCylinder(1, 1);
+       +picked(true);
+       !until(not seenCylinder(0.1, 0), 500);
+       !assert_false(seenCylinder(0.1, 0));
+       !assert_true(seenCylinder(1, 1));                // another place: kept
+       -picked(true).
+
+@[test]
++!test_a_search_goes_first_to_the_nearest_cylinder_remembered
+    <- .abolish(seenCylinder(_, _)); -searching; -sweep(_); -sweepPlanned;
+       +seenCylinder(1, 1); +seenCylinder(0.3, -0.2);
+       !searchFromMemory;
+       !assert_true(searching & waypoint(0.3, -0.2, _));
+       !assert_false(seenCylinder(0.3, -0.2));          // one visit: not looked for again
+       !assert_true(seenCylinder(1, 1) & sweepPlanned).  // the lanes come after it
+
+@[test]
++!test_with_nothing_remembered_a_search_goes_on_along_the_lanes
+    <- .abolish(seenCylinder(_, _)); -searching; -sweepPlanned;
+       !searchFromMemory;
+       !assert_true(searching & sweepPlanned).
