@@ -50,7 +50,7 @@ mock_operation(_, ok).
 
 @[test]
 +!test_a_cylinder_chased_too_long_is_given_up_and_ignored_a_while
-    <- !forget_calls; -escaped; .system_time(T); -+homing(T - 60000); -+ignoreFor(300);  // a minute
+    <- !forget_calls; -escaped; .system_time(T); -+homing(T - 60000); -+ignoreFor(1500);  // a minute; ignored 1.5 s, long enough for a loaded machine
        !sighting(0, 1.0);
        !until(escaped, 2000);
        !assert_false(homing(_));
@@ -58,7 +58,7 @@ mock_operation(_, ok).
        !assert_true(ignoring);
        !sighting(0, 1.0); .wait(100);
        !assert_false(homing(_));                                       // ignored meanwhile
-       !until(not ignoring, 2000);
+       !until(not ignoring, 6000);
        !assert_false(ignoring).
 
 @[test]
@@ -70,10 +70,10 @@ mock_operation(_, ok).
 
 @[test]
 +!test_a_cylinder_lost_from_sight_is_ignored_a_while
-    <- .system_time(T); -+homing(T - 5000); -+lastSighted(T - 5000); -+lostSightIgnore(300);
+    <- .system_time(T); -+homing(T - 5000); -+lastSighted(T - 5000); -+lostSightIgnore(1500);
        !move(0.5);
        !assert_false(homing(_));
        !until(ignoring, 1000);
        !assert_true(ignoring);
-       !until(not ignoring, 2000);
+       !until(not ignoring, 6000);
        !assert_false(ignoring).
