@@ -26,7 +26,7 @@ class ReplayCommandTest {
         assertEquals("0", r[0], r[2]);
         assertTrue(r[1].contains("experiment navigation") && r[1].contains("seed 2"), r[1]);
         assertTrue(r[1].contains("Mind at t=3.00 s"), r[1]);
-        assertTrue(r[1].contains("intention 1"), r[1]);
+        assertTrue(r[1].matches("(?s).*intentions:\\R\\s+intention \\d+ .*"), r[1]); // which ones run at 3 s is the agent's business
         assertTrue(Files.isRegularFile(run.resolve("frames/frame-0002.png")), r[1]);
 
         Files.delete(run.resolve("speed.png"));
