@@ -187,6 +187,16 @@ public final class StepLog {
         }
 
         /**
+         * Hands every step, as {@link Reader} would read it back, to {@code sink} once it is
+         * written, on the writer's thread (the plots' series, collected during the run). Set it
+         * before the first step.
+         */
+        public Writer onStep(Consumer<Step> sink) {
+            encoder.onStep = sink;
+            return this;
+        }
+
+        /**
          * Writes one step.
          *
          * @param mind the agent's mind after the step (null: no agent)
@@ -317,6 +327,7 @@ public final class StepLog {
         private long lastTime;
         private volatile Consumer<Chunk> onChunk = c -> {
         };
+        private volatile Consumer<Step> onStep;
         private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
         /** The last step's beliefs' texts, by identity. */
         private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
@@ -369,6 +380,8 @@ public final class StepLog {
                 ArrayNode r = n.putArray("in");
                 readings.forEach(r::add);
             }
+            Consumer<Step> stepSink = onStep;
+            Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
             if (world != null) {
                 ObjectNode moved = null;
                 for (ObjectState o : world) {
@@ -382,20 +395,28 @@ public final class StepLog {
                             moved = n.putObject("moved");
                         }
                         moved.set(o.id(), JSON.valueToTree(now));
+                        if (movedNow != null) {
+                            movedNow.put(o.id(), now);
+                        }
                     }
                 }
             }
+            MindDelta written = null;
             if (mind != null) {
                 MindDelta d = delta(mind);
                 if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
                         || d.events() != null) {
                     n.set("mind", JSON.valueToTree(d));
+                    written = d;
                 }
             }
             if (lag != null) {
                 n.set("lag", JSON.valueToTree(lag));
             }
             line(n);
+            if (stepSink != null) {
+                stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
+            }
             steps++;
             if (steps % CHUNK == 0) {
                 flushChunk();
