@@ -244,6 +244,9 @@ final class ExperimentCommand implements Callable<Integer> {
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
+        // the plots' series collected as the step log is written, not read back after the run
+        var series = tap.header() == null ? null : new RunPlots.Series(tap.header());
+        tap.onSteps(series);
         if (!breaks.isEmpty() || inspector != null) {
             Debugger debugger;
             try { // the page can halt the run too
@@ -325,7 +328,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 log.result(RobotAgents.wheelSummary(run.middleware().wheelLease()));
             }
             RunPlots.writeLatency(outDir, run.reactiveSamples(), result.timings().responseSamples());
-            RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+            RunPlots.writeAll(outDir, ConsoleLog.lines(log::result), series);
             if (inspector != null) {
                 inspector.showPlots(outDir);
                 inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));

@@ -14,6 +14,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -69,10 +70,19 @@ public final class RunPlots {
 
     /** Draws every plot the folder has data for; prints one line naming them. */
     public static void writeAll(Path outDir, PrintStream out) throws IOException {
+        writeAll(outDir, out, null);
+    }
+
+    /**
+     * As {@link #writeAll(Path, PrintStream)}, the step log's series taken from {@code collected}
+     * (filled during the run from the step log's writer, {@link StepLog.Writer#onStep}) instead of
+     * read back from the file; null: read the file.
+     */
+    public static void writeAll(Path outDir, PrintStream out, Series collected) throws IOException {
         var written = new ArrayList<String>();
         Path steps = outDir.resolve(StepLog.FILE);
-        if (Files.isRegularFile(steps)) {
-            var series = Series.read(steps);
+        if (collected != null || Files.isRegularFile(steps)) {
+            var series = collected != null ? collected : Series.read(steps);
             var marks = marks(outDir, series);
             battery(series, marks).ifPresent(c -> save(c, outDir, "battery", written));
             save(speed(series), outDir, "speed", written);
@@ -114,8 +124,11 @@ public final class RunPlots {
         }
     }
 
-    /** The step log as columns. */
-    static final class Series {
+    /**
+     * The step log as columns: read back from the file, or collected step by step as the step
+     * log's writer writes them (the same steps, so the same columns).
+     */
+    public static final class Series implements Consumer<StepLog.Step> {
         final List<Double> t = new ArrayList<>();
         final List<Double> x = new ArrayList<>();
         final List<Double> z = new ArrayList<>();
@@ -126,40 +139,52 @@ public final class RunPlots {
         final List<MindState.Selection> selections = new ArrayList<>();
         /** Times (s) at which an intention was about to run the {@code mark} action. */
         final List<Double> markActions = new ArrayList<>();
-        WorldSnapshot start;
-        double width = 1;
-        double depth = 1;
+        final WorldSnapshot start;
+        final double width;
+        final double depth;
+        private double px = Double.NaN;
+        private double pz = Double.NaN;
+        private double pt;
+
+        /** An empty series for the step log that starts with {@code header}. */
+        public Series(StepLog.Header header) {
+            start = header.start();
+            width = header.start().arena().width();
+            depth = header.start().arena().depth();
+        }
 
         static Series read(Path file) throws IOException {
-            var s = new Series();
             try (var in = new StepLog.Reader(file)) {
-                s.start = in.header().start();
-                s.width = in.header().start().arena().width();
-                s.depth = in.header().start().arena().depth();
+                var s = new Series(in.header());
                 StepLog.Step step;
-                double px = Double.NaN, pz = Double.NaN, pt = 0;
                 while ((step = in.next()) != null) {
-                    double t = step.timeMs() / 1000.0;
-                    var b = step.body();
-                    s.t.add(t);
-                    s.x.add(b.x());
-                    s.z.add(b.z());
-                    s.battery.add(b.battery() == null ? Double.NaN : b.battery());
-                    s.left.add(b.left());
-                    s.right.add(b.right());
-                    s.speed.add(Double.isNaN(px) || t <= pt ? 0 : Math.hypot(b.x() - px, b.z() - pz) / (t - pt) * 1000);
-                    px = b.x();
-                    pz = b.z();
-                    pt = t;
-                    if (step.mind() != null && step.mind().selections() != null) {
-                        s.selections.addAll(step.mind().selections());
-                    }
-                    if (step.mind() != null && step.mind().intentions() != null && aboutToMark(step.mind().intentions())) {
-                        s.markActions.add(t);
-                    }
+                    s.accept(step);
                 }
+                return s;
             }
-            return s;
+        }
+
+        /** Adds one step (on the step log's writer thread during a run: read it after the log closes). */
+        @Override
+        public void accept(StepLog.Step step) {
+            double now = step.timeMs() / 1000.0;
+            var b = step.body();
+            t.add(now);
+            x.add(b.x());
+            z.add(b.z());
+            battery.add(b.battery() == null ? Double.NaN : b.battery());
+            left.add(b.left());
+            right.add(b.right());
+            speed.add(Double.isNaN(px) || now <= pt ? 0 : Math.hypot(b.x() - px, b.z() - pz) / (now - pt) * 1000);
+            px = b.x();
+            pz = b.z();
+            pt = now;
+            if (step.mind() != null && step.mind().selections() != null) {
+                selections.addAll(step.mind().selections());
+            }
+            if (step.mind() != null && step.mind().intentions() != null && aboutToMark(step.mind().intentions())) {
+                markActions.add(now);
+            }
         }
 
         /** The {@code mark} action about to run on top of an intention (the thesis' agent marks its position). */

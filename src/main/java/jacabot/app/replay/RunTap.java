@@ -17,6 +17,7 @@ import java.io.Closeable;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 /**
@@ -30,6 +31,7 @@ public final class RunTap implements Closeable {
     private volatile Debugger debugger;
     private final LockstepRun run;
     private StepLog.Header header;
+    private StepLog.Writer log;
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.run = run;
@@ -63,12 +65,24 @@ public final class RunTap implements Closeable {
         }
         var tap = new RunTap(run, inspector, log);
         tap.header = log == null ? null : log.header();
+        tap.log = log;
         return tap;
     }
 
     /** {@return the step log's header, or null without a step log} */
     public StepLog.Header header() {
         return header;
+    }
+
+    /**
+     * Hands every step of the step log, as read back, to {@code sink} on the log's writer thread
+     * (null, or no step log: nothing). Call before the run; {@code sink} is complete after
+     * {@link #close()}.
+     */
+    public void onSteps(Consumer<StepLog.Step> sink) {
+        if (log != null && sink != null) {
+            log.onStep(sink);
+        }
     }
 
     /** The inspector reads the robot agent's past, beyond its memory, from the step log being written. */

@@ -30,6 +30,8 @@ import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 import java.util.zip.GZIPInputStream;
@@ -124,43 +126,73 @@ public final class StepLog {
 
     // ---- writing ---------------------------------------------------------------------------------------
 
-    /** Streams steps to a gzipped file. Not thread-safe: the run's step thread writes. */
+    /**
+     * One step as the run's thread captured it: every part immutable (records, copied lists, the
+     * mind's capture, readings and commands as the link made them), so the writer's thread can
+     * print it later exactly as it was at the step.
+     */
+    private record Pending(long timeMs, Body body, List<?> commands, List<?> readings, MindState mind,
+            List<ObjectState> world, Lag lag) {
+    }
+
+    /**
+     * Streams steps to a gzipped file. The run's step thread only captures a step and queues it;
+     * one writer thread of its own prints, compresses and writes the steps in order, so the file
+     * is the same as when the step thread wrote it. The queue is bounded: a step thread that
+     * outruns the disk waits (no step is ever dropped). A failure of the writing is thrown by the
+     * next step and by {@link #close()}, which writes every queued step first. One thread steps.
+     */
     public static final class Writer implements Closeable {
-        private final OutputStream file;
-        private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
-        private long offset;
-        private long steps;
-        private long chunkFirstTime;
-        private long lastTime;
-        private Consumer<Chunk> onChunk = c -> {
-        };
-        private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
-        /** The last step's beliefs' texts, by identity. */
-        private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
-        private List<MindState.IntentionView> intentions = List.of();
-        private List<String> events = List.of();
-        private final Map<String, Moved> objects = new HashMap<>();
+        /** Steps queued at most: a few seconds of simulated time, a few MB of captured minds. */
+        static final int QUEUE = 256;
+        private static final Pending END = new Pending(-1, null, List.of(), List.of(), null, null, null);
 
         private final Header header;
+        private final Encoder encoder;
+        private final BlockingQueue<Pending> queue;
+        private final Thread thread;
+        private volatile Throwable failure;
+        private boolean closed;
 
         public Writer(Path file, Header header) throws IOException {
+            this(file, header, true);
+        }
+
+        /** @param background false: every step written on the caller's thread (the tests' reference) */
+        Writer(Path file, Header header, boolean background) throws IOException {
             this.header = header;
-            Files.createDirectories(file.toAbsolutePath().getParent());
-            this.file = Files.newOutputStream(file);
-            for (ObjectState o : header.start().objects()) {
-                objects.put(o.id(), moved(o));
+            this.encoder = new Encoder(file, header);
+            if (background) {
+                queue = new ArrayBlockingQueue<>(QUEUE);
+                thread = new Thread(this::drain, "step log " + file.getFileName());
+                thread.setDaemon(true);
+                thread.start();
+            } else {
+                queue = null;
+                thread = null;
             }
-            line(JSON.valueToTree(header));
-            flushChunk();
         }
 
         public Header header() {
             return header;
         }
 
-        /** Hands every gzip member of steps, once it is on disk, to {@code sink} (the inspector's index). */
+        /**
+         * Hands every gzip member of steps, once it is on disk, to {@code sink} (the inspector's
+         * index), on the writer's thread. Set it before the first step.
+         */
         public Writer onChunk(Consumer<Chunk> sink) {
-            this.onChunk = sink;
+            encoder.onChunk = sink;
+            return this;
+        }
+
+        /**
+         * Hands every step, as {@link Reader} would read it back, to {@code sink} once it is
+         * written, on the writer's thread (the plots' series, collected during the run). Set it
+         * before the first step.
+         */
+        public Writer onStep(Consumer<Step> sink) {
+            encoder.onStep = sink;
             return this;
         }
 
@@ -172,10 +204,7 @@ public final class StepLog {
          */
         public void step(long timeMs, Body body, List<Command> commands, List<SensorInfo> readings, MindState mind,
                 List<ObjectState> world) {
-            var text = new ArrayList<String>(readings.size());
-            readings.forEach(x -> text.add(reading(x)));
-            stepText(timeMs, body, commands.stream().map(Command::toString).collect(Collectors.toList()),
-                    text, mind, world);
+            submit(new Pending(timeMs, body, List.copyOf(commands), List.copyOf(readings), mind, copy(world), null));
         }
 
         /**
@@ -190,6 +219,144 @@ public final class StepLog {
         /** As {@link #stepText(long, Body, List, List, MindState, List)}, with a lag episode's start or end (or null). */
         public void stepText(long timeMs, Body body, List<String> commands, List<String> readings, MindState mind,
                 List<ObjectState> world, Lag lag) {
+            submit(new Pending(timeMs, body, List.copyOf(commands), List.copyOf(readings), mind, copy(world), lag));
+        }
+
+        private static List<ObjectState> copy(List<ObjectState> world) {
+            return world == null ? null : List.copyOf(world);
+        }
+
+        private void submit(Pending s) {
+            if (closed) {
+                throw new IllegalStateException("step log closed");
+            }
+            if (thread == null) {
+                encoder.write(s);
+                return;
+            }
+            rethrow();
+            uninterruptibly(() -> queue.put(s)); // queued all the same: a step log loses no step
+        }
+
+        private interface Wait {
+            void run() throws InterruptedException;
+        }
+
+        /** Runs {@code w} to its end through interrupts, then interrupts the thread again if it was. */
+        private static void uninterruptibly(Wait w) {
+            boolean interrupted = false;
+            while (true) {
+                try {
+                    w.run();
+                    break;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+
+        /** The writer's thread: writes the queued steps in order until the end; after a failure, only drains. */
+        private void drain() {
+            while (true) {
+                Pending s;
+                try {
+                    s = queue.take();
+                } catch (InterruptedException e) {
+                    continue; // nobody interrupts it; the end is a queued mark
+                }
+                if (s == END) {
+                    return;
+                }
+                if (failure == null) {
+                    try {
+                        encoder.write(s);
+                    } catch (Throwable t) {
+                        failure = t;
+                    }
+                }
+            }
+        }
+
+        /** Throws the writer thread's failure, if any, on the step's thread. */
+        private void rethrow() {
+            Throwable t = failure;
+            if (t instanceof UncheckedIOException u) {
+                throw new UncheckedIOException(u.getMessage(), u.getCause());
+            } else if (t instanceof RuntimeException r) {
+                throw r;
+            } else if (t instanceof Error e) {
+                throw e;
+            }
+        }
+
+        /** Writes every queued step, the last gzip member, and closes the file. */
+        @Override
+        public void close() throws IOException {
+            if (closed) {
+                return;
+            }
+            closed = true;
+            try {
+                if (thread != null) {
+                    uninterruptibly(() -> queue.put(END));
+                    uninterruptibly(thread::join);
+                    if (failure instanceof UncheckedIOException u) {
+                        throw u.getCause();
+                    }
+                    rethrow();
+                }
+            } finally {
+                encoder.close();
+            }
+        }
+    }
+
+    /**
+     * Turns steps into the file's bytes: the JSON lines, the mind's and the objects' changes, the
+     * gzip members. Not thread-safe: the writer's thread runs it.
+     */
+    private static final class Encoder implements Closeable {
+        private final OutputStream file;
+        private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
+        private long offset;
+        private long steps;
+        private long chunkFirstTime;
+        private long lastTime;
+        private volatile Consumer<Chunk> onChunk = c -> {
+        };
+        private volatile Consumer<Step> onStep;
+        private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
+        /** The last step's beliefs' texts, by identity. */
+        private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
+        private List<MindState.IntentionView> intentions = List.of();
+        private List<String> events = List.of();
+        private final Map<String, Moved> objects = new HashMap<>();
+
+        Encoder(Path file, Header header) throws IOException {
+            Files.createDirectories(file.toAbsolutePath().getParent());
+            this.file = Files.newOutputStream(file);
+            for (ObjectState o : header.start().objects()) {
+                objects.put(o.id(), moved(o));
+            }
+            line(JSON.valueToTree(header));
+            flushChunk();
+        }
+
+        /** Writes one step, its commands and readings as text (the writer's thread makes that text). */
+        void write(Pending s) {
+            long timeMs = s.timeMs();
+            Body body = s.body();
+            List<String> commands = s.commands().stream().map(Object::toString).collect(Collectors.toList());
+            List<String> readings = new ArrayList<>(s.readings().size());
+            for (Object r : s.readings()) {
+                readings.add(r instanceof SensorInfo info ? reading(info) : (String) r);
+            }
+            MindState mind = s.mind();
+            List<ObjectState> world = s.world();
+            Lag lag = s.lag();
             boolean key = steps % CHUNK == 0;
             if (key) {
                 chunkFirstTime = timeMs;
@@ -213,6 +380,8 @@ public final class StepLog {
                 ArrayNode r = n.putArray("in");
                 readings.forEach(r::add);
             }
+            Consumer<Step> stepSink = onStep;
+            Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
             if (world != null) {
                 ObjectNode moved = null;
                 for (ObjectState o : world) {
@@ -226,20 +395,28 @@ public final class StepLog {
                             moved = n.putObject("moved");
                         }
                         moved.set(o.id(), JSON.valueToTree(now));
+                        if (movedNow != null) {
+                            movedNow.put(o.id(), now);
+                        }
                     }
                 }
             }
+            MindDelta written = null;
             if (mind != null) {
                 MindDelta d = delta(mind);
                 if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
                         || d.events() != null) {
                     n.set("mind", JSON.valueToTree(d));
+                    written = d;
                 }
             }
             if (lag != null) {
                 n.set("lag", JSON.valueToTree(lag));
             }
             line(n);
+            if (stepSink != null) {
+                stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
+            }
             steps++;
             if (steps % CHUNK == 0) {
                 flushChunk();
