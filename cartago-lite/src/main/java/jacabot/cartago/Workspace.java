@@ -38,6 +38,8 @@ public final class Workspace implements AutoCloseable {
     private final FocusBook agents;
     private final ArtifactRegistry registry;
     private volatile boolean closed;
+    /** Completed operations kept per agent and artifact; 0: the operation log is off. */
+    private volatile int operationsKept;
 
     private Workspace(Builder b) {
         this.name = b.name;
@@ -323,6 +325,35 @@ public final class Workspace implements AutoCloseable {
         } finally {
             core.lock().unlock();
         }
+    }
+
+    // ---- the operation log (a debugger's view; CArtAgO's loggers see every operation as it goes) ----
+
+    /**
+     * Keeps, from now on, the last {@code lastN} completed operations of each agent on each
+     * artifact ({@link #operationLog}); 0, the default, keeps none. Off, it costs one volatile read
+     * per operation; on, a clock reading and a record. It does not change how operations run.
+     */
+    public void recordOperations(int lastN) {
+        if (lastN < 0) {
+            throw new IllegalArgumentException("lastN must be 0 or more, not " + lastN);
+        }
+        operationsKept = lastN;
+    }
+
+    /** {@return whether {@link #recordOperations} is on} */
+    public boolean recordsOperations() {
+        return operationsKept > 0;
+    }
+
+    /** {@return the operations recorded on {@code id} so far, in the order they completed; empty once it is disposed} */
+    public List<OperationRecord> operationLog(ArtifactId id) {
+        ArtifactCore core = registry.byId(id.id());
+        return core == null ? List.of() : core.operationLog();
+    }
+
+    int operationsKept() {
+        return operationsKept;
     }
 
     // ---- configuration ----
