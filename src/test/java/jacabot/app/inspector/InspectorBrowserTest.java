@@ -14,8 +14,10 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.Locale;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -124,15 +126,26 @@ class InspectorBrowserTest {
     /**
      * A recorded 10-minute run served as {@code jacabot replay RUN --headless --inspector} serves it:
      * the slider reaches t = 0, and the canvas draws the robot where the step log puts it, at the
-     * start and at 300 s.
+     * start and at 300 s; a click on a console line (shown around the instant, or found by its text
+     * anywhere in the run) moves the page to that line's instant.
      */
     @Test
     @Timeout(240)
     void recordedTenMinuteRunFromItsStartWithTheRobotDrawnWhereTheLogPutsIt(@TempDir Path dir)
             throws Exception {
         SyntheticRun.write(dir, 600);
+        // its console: a line every 3 s, and one failure late in the run
+        var console = new StringBuilder();
+        for (int i = 0; i < 200; i++) {
+            console.append(String.format(Locale.ROOT, "t=%.3f [robot] tick %d%n", 3.0 * i, i));
+            if (i == 137) {
+                console.append("t=412.040 [robot] move failed\n");
+            }
+        }
+        Files.writeString(dir.resolve(ConsoleFile.FILE), console);
         try (Inspector inspector = Inspector.startOnFreePort()) {
-            StepArchive.show(inspector, dir);
+            StepArchive.show(inspector, dir); // as replay --headless --inspector does
+            inspector.console(ConsoleFile.of(dir));
             WebDriver browser = Browser.open();
             try {
                 browser.get(inspector.address().toString());
@@ -158,6 +171,21 @@ class InspectorBrowserTest {
                             + " return c.red + ',' + c.green + ',' + c.blue;");
                     assertEquals(expected, robot, "the robot's colour on the canvas at t=" + t);
                 }
+                // the console panel: lines around the instant shown (300 s); a click on one goes to its instant
+                wait.until(b -> Browser.script(b, "return document.querySelector('#console tr[data-t=\"261000\"]')") != null);
+                Browser.script(browser, "document.querySelector('#console tr[data-t=\"261000\"]').click();");
+                wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs || -1")).longValue() == 261_000);
+                assertEquals("261000", Browser.script(browser, "return document.getElementById('slider').value"));
+                assertEquals("261.00", Browser.text(browser, "time"));
+                wait.until(b -> "261000".equals(Browser.script(b, "const r = document.querySelector('#console tr.now'); return r && r.dataset.t")));
+                // found anywhere in the run by its text, then clicked
+                Browser.script(browser, "document.getElementById('console-find').value = 'failed'; document.getElementById('console-find-go').click();");
+                wait.until(b -> Browser.script(b, "return document.querySelector('#console tr[data-t=\"412040\"]')") != null);
+                assertEquals(1L, Browser.script(browser, "return document.querySelectorAll('#console tr').length"), "only the line found");
+                Browser.script(browser, "document.querySelector('#console tr[data-t=\"412040\"]').click();");
+                wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs || -1")).longValue() == 412_040);
+                assertEquals(SyntheticRun.x(412_040, 600_000), ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue(),
+                        1e-9, "the world drawn at the line's instant");
                 Browser.screenshot(browser, "inspector-replay.png");
             } finally {
                 browser.quit();
