@@ -193,6 +193,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path agentPart = agentNames == null ? agent : Path.of(String.join("-", agentNames) + ".asl");
         Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agentPart, baseline, runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
+        Files.deleteIfExists(outDir.resolve(ConsoleFile.FILE)); // a run that writes none must not show an older run's
         SimWorld simWorld;
         try {
             simWorld = SimWorld.of(spec);
@@ -476,7 +477,8 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
                 summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : ""));
         log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
-                + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : ""));
+                + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : "")
+                + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */
