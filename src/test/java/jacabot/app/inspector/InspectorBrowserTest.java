@@ -17,6 +17,7 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
@@ -39,22 +40,26 @@ class InspectorBrowserTest {
 
     @Test
     @Timeout(240)
-    void pageFollowsTheRobotsMind() throws Exception {
+    void pageFollowsTheRobotsMind(@TempDir Path dir) throws Exception {
 
         Experiment experiment = Experiment.parse("navigation").orElseThrow();
         var spec = WorldFileReader.read(ROOT.resolve(experiment.worldFile()));
         SimWorld world = SimWorld.of(spec);
         var source = AgentSource.packaged(experiment);
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
-        var run = new LockstepRun(world, null, experiment, source, spec.seed(), quiet).stepLogs(false);
+        // the agent's console with its simulated times, as jacabot experiment writes it
+        var consoleFile = ConsoleRecorder.open(dir, world::timeMs);
+        var run = new LockstepRun(world, null, experiment, source, spec.seed(), consoleFile.tee(quiet)).stepLogs(false);
         AtomicBoolean stop = new AtomicBoolean();
         try (Inspector inspector = Inspector.startOnFreePort(); RunTap tap = RunTap.attach(run, inspector, null, experiment, "navigation.asl")) {
             inspector.title("experiment navigation (browser test)");
+            inspector.console(ConsoleFile.of(dir));
             // paced to about 8x real time so the page sees the robot move; stopped at the end of the test
             run.onStep(d -> {
                 if (stop.get()) {
                     throw new IllegalStateException("test over");
                 }
+                consoleFile.events(List.of());
                 sleep(5);
             });
             Thread runner = new Thread(() -> {
@@ -101,6 +106,8 @@ class InspectorBrowserTest {
                 wait.until(b -> Double.parseDouble(Browser.text(b, "time")) > t0);
                 double t1 = Double.parseDouble(Browser.text(browser, "time"));
                 assertTrue(t1 > t0, "time goes on: " + t0 + " then " + t1);
+                // the console panel, live: what the agent printed at its start, with its simulated time
+                wait.until(b -> query(b, "#console tbody").contains("[robot] focus achieved"));
                 Browser.screenshot(browser, "inspector-live.png");
 
                 // the time slider: back to the first kept frame, the page stops following
@@ -119,6 +126,7 @@ class InspectorBrowserTest {
                 browser.quit();
                 stop.set(true);
                 runner.join(10_000);
+                consoleFile.close();
             }
         }
     }
