@@ -5,6 +5,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.ConsoleFile;
+import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.inspector.DebugConsole;
 import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.MindWatch;
@@ -191,6 +193,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path agentPart = agentNames == null ? agent : Path.of(String.join("-", agentNames) + ".asl");
         Path outDir = out != null ? out : runFolder(experiment, world == null ? null : worldFile, agentPart, baseline, runSeed);
         prepareOut(outDir); // before the run: a run of an hour must not fail at its end on a typo
+        Files.deleteIfExists(outDir.resolve(ConsoleFile.FILE)); // a run that writes none must not show an older run's
         SimWorld simWorld;
         try {
             simWorld = SimWorld.of(spec);
@@ -230,8 +233,10 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
+        // the agents' console with its simulated times, for the inspector's console panel (the world is here only)
+        ConsoleRecorder consoleFile = remoteController ? null : ConsoleRecorder.open(outDir, simWorld::timeMs);
         try {
-            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, console);
+            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile == null ? console : consoleFile.tee(console));
         } catch (AslSyntaxException e) {
             throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
@@ -244,6 +249,9 @@ final class ExperimentCommand implements Callable<Integer> {
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
                 ConsoleLog.lines(log::result));
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
+        if (inspector != null) {
+            inspector.console(ConsoleFile.of(outDir));
+        }
         // the plots' series collected as the step log is written, not read back after the run
         var series = tap.header() == null ? null : new RunPlots.Series(tap.header());
         tap.onSteps(series);
@@ -264,6 +272,7 @@ final class ExperimentCommand implements Callable<Integer> {
         long start = System.nanoTime();
         long[] nextReport = {10_000};
         run.onStep(data -> {
+            consoleFile.events(recorder.events());
             if (data.simTimeMs() >= nextReport[0]) {
                 nextReport[0] += 10_000;
                 double wall = (System.nanoTime() - start) / 1e9;
@@ -312,6 +321,12 @@ final class ExperimentCommand implements Callable<Integer> {
             }
             linkFile.flush();
             tap.close();
+            consoleFile.events(recorder.events());
+            try {
+                consoleFile.close();
+            } catch (UncheckedIOException e) {
+                log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
+            }
             if (terminated.get()) {
                 log.result(String.format("Stopped by a signal at t=%.2f s; writing what there is.", simWorld.timeMs() / 1000.0));
             } else if (run.agentFailure().isPresent()) {
@@ -462,7 +477,8 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result(String.format("%.0f s simulated in %.1f s (%.0fx real time)%s.", summary.duration(), wallSeconds,
                 summary.duration() / Math.max(wallSeconds, 1e-9), cycles >= 0 ? ", " + cycles + " reasoning cycles" : ""));
         log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
-                + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : ""));
+                + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : "")
+                + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
     }
 
     /** Real time with the Swing viewer, the agent running free as in the thesis. */

@@ -1,6 +1,7 @@
 package jacabot.app.cli;
 
 import jacabot.app.Installation;
+import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.MindText;
@@ -114,6 +115,7 @@ final class ReplayCommand implements Callable<Integer> {
         var history = inspector == null ? null : inspector.add("robot");
         if (inspector != null) {
             inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
+            inspector.console(ConsoleFile.of(Files.isDirectory(dir) ? dir : dir.toAbsolutePath().getParent()));
         }
         var closed = new CountDownLatch(1);
         SwingUtilities.invokeLater(() -> {
@@ -145,6 +147,7 @@ final class ReplayCommand implements Callable<Integer> {
                 return serveTeam(inspector);
             }
             var archive = StepArchive.show(inspector, dir);
+            inspector.console(ConsoleFile.of(Files.isDirectory(dir) ? dir : dir.toAbsolutePath().getParent()));
             try { // what-ifs from the page
                 StepLog.Header h = archive.header();
                 Experiment experiment = Experiment.parse(h.experiment()).orElse(null);

@@ -41,7 +41,8 @@ import java.util.function.Supplier;
  * {@link Debugger}'s controls ({@code /api/debug}), the time views over the whole run
  * ({@code /api/timeline}, {@code /api/belief}, {@code /api/artifacts}: {@link TimeViews}) and, when
  * the run allows it ({@link RunEdits}), what-ifs and plan reloads ({@code /api/whatif},
- * {@code /api/reload}). Every agent added is a history of its own: a team's robots, or a what-if
+ * {@code /api/reload}), and the run's console by simulated time ({@code /api/console}, read from
+ * its file: {@link ConsoleFile}). Every agent added is a history of its own: a team's robots, or a what-if
  * beside the run it came from.
  *
  * <p>Guarded as Jupyter is: every request must carry the run's secret token (the address printed
@@ -71,7 +72,9 @@ public final class Inspector implements AutoCloseable {
     private volatile Supplier<Map<String, ArtifactInfo>> workspace = Map::of;
     private final List<WhatIfJob> whatIfs = new CopyOnWriteArrayList<>();
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
+    private final List<String> paths = new ArrayList<>();
     private volatile Path plotDir;
+    private volatile ConsoleFile console;
     private volatile String title = "jacabot";
     private volatile boolean closed;
 
@@ -103,6 +106,7 @@ public final class Inspector implements AutoCloseable {
         context("/api/source", ex -> sendJson(ex, Map.of("text", edits == null ? "" : edits.source())));
         context("/api/whatif", this::whatIf);
         context("/api/reload", this::reload);
+        context("/api/console", this::console);
         context("/plots/", this::plot);
         server.start();
     }
@@ -341,6 +345,21 @@ public final class Inspector implements AutoCloseable {
         this.plotDir = dir;
     }
 
+    /** Serves the run's console lines by time ({@code /api/console}), read from its file on demand. */
+    public void console(ConsoleFile lines) {
+        this.console = lines;
+    }
+
+    /** {@code GET /api/console}: the run's console lines around an instant or over a stretch of time ({@link ConsoleFile#answer}). */
+    private void console(HttpExchange ex) throws IOException {
+        ConsoleFile c = console;
+        try {
+            sendJson(ex, c == null ? Map.of("available", false, "lines", List.of()) : c.answer(query(ex)));
+        } catch (IllegalArgumentException e) {
+            sendText(ex, 400, e.getMessage());
+        }
+    }
+
     /** Names the run in the page's title. */
     public void title(String text) {
         this.title = text;
@@ -362,7 +381,13 @@ public final class Inspector implements AutoCloseable {
 
     // ---- the guard -------------------------------------------------------------------------------------
 
+    /** {@return every path the inspector serves (the guard's test tries each)} */
+    List<String> paths() {
+        return List.copyOf(paths);
+    }
+
     private void context(String path, HttpHandler handler) {
+        paths.add(path);
         server.createContext(path, ex -> {
             String why = guard.refusal(ex, query(ex).get("token"));
             if (why != null) {

@@ -14,8 +14,11 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileReader;
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -37,22 +40,26 @@ class InspectorBrowserTest {
 
     @Test
     @Timeout(240)
-    void pageFollowsTheRobotsMind() throws Exception {
+    void pageFollowsTheRobotsMind(@TempDir Path dir) throws Exception {
 
         Experiment experiment = Experiment.parse("navigation").orElseThrow();
         var spec = WorldFileReader.read(ROOT.resolve(experiment.worldFile()));
         SimWorld world = SimWorld.of(spec);
         var source = AgentSource.packaged(experiment);
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
-        var run = new LockstepRun(world, null, experiment, source, spec.seed(), quiet).stepLogs(false);
+        // the agent's console with its simulated times, as jacabot experiment writes it
+        var consoleFile = ConsoleRecorder.open(dir, world::timeMs);
+        var run = new LockstepRun(world, null, experiment, source, spec.seed(), consoleFile.tee(quiet)).stepLogs(false);
         AtomicBoolean stop = new AtomicBoolean();
         try (Inspector inspector = Inspector.startOnFreePort(); RunTap tap = RunTap.attach(run, inspector, null, experiment, "navigation.asl")) {
             inspector.title("experiment navigation (browser test)");
+            inspector.console(ConsoleFile.of(dir));
             // paced to about 8x real time so the page sees the robot move; stopped at the end of the test
             run.onStep(d -> {
                 if (stop.get()) {
                     throw new IllegalStateException("test over");
                 }
+                consoleFile.events(List.of());
                 sleep(5);
             });
             Thread runner = new Thread(() -> {
@@ -99,6 +106,8 @@ class InspectorBrowserTest {
                 wait.until(b -> Double.parseDouble(Browser.text(b, "time")) > t0);
                 double t1 = Double.parseDouble(Browser.text(browser, "time"));
                 assertTrue(t1 > t0, "time goes on: " + t0 + " then " + t1);
+                // the console panel, live: what the agent printed at its start, with its simulated time
+                wait.until(b -> query(b, "#console tbody").contains("[robot] focus achieved"));
                 Browser.screenshot(browser, "inspector-live.png");
 
                 // the time slider: back to the first kept frame, the page stops following
@@ -117,6 +126,7 @@ class InspectorBrowserTest {
                 browser.quit();
                 stop.set(true);
                 runner.join(10_000);
+                consoleFile.close();
             }
         }
     }
@@ -124,15 +134,26 @@ class InspectorBrowserTest {
     /**
      * A recorded 10-minute run served as {@code jacabot replay RUN --headless --inspector} serves it:
      * the slider reaches t = 0, and the canvas draws the robot where the step log puts it, at the
-     * start and at 300 s.
+     * start and at 300 s; a click on a console line (shown around the instant, or found by its text
+     * anywhere in the run) moves the page to that line's instant.
      */
     @Test
     @Timeout(240)
     void recordedTenMinuteRunFromItsStartWithTheRobotDrawnWhereTheLogPutsIt(@TempDir Path dir)
             throws Exception {
         SyntheticRun.write(dir, 600);
+        // its console: a line every 3 s, and one failure late in the run
+        var console = new StringBuilder();
+        for (int i = 0; i < 200; i++) {
+            console.append(String.format(Locale.ROOT, "t=%.3f [robot] tick %d%n", 3.0 * i, i));
+            if (i == 137) {
+                console.append("t=412.040 [robot] move failed\n");
+            }
+        }
+        Files.writeString(dir.resolve(ConsoleFile.FILE), console);
         try (Inspector inspector = Inspector.startOnFreePort()) {
-            StepArchive.show(inspector, dir);
+            StepArchive.show(inspector, dir); // as replay --headless --inspector does
+            inspector.console(ConsoleFile.of(dir));
             WebDriver browser = Browser.open();
             try {
                 browser.get(inspector.address().toString());
@@ -158,6 +179,21 @@ class InspectorBrowserTest {
                             + " return c.red + ',' + c.green + ',' + c.blue;");
                     assertEquals(expected, robot, "the robot's colour on the canvas at t=" + t);
                 }
+                // the console panel: lines around the instant shown (300 s); a click on one goes to its instant
+                wait.until(b -> Browser.script(b, "return document.querySelector('#console tr[data-t=\"261000\"]')") != null);
+                Browser.script(browser, "document.querySelector('#console tr[data-t=\"261000\"]').click();");
+                wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs || -1")).longValue() == 261_000);
+                assertEquals("261000", Browser.script(browser, "return document.getElementById('slider').value"));
+                assertEquals("261.00", Browser.text(browser, "time"));
+                wait.until(b -> "261000".equals(Browser.script(b, "const r = document.querySelector('#console tr.now'); return r && r.dataset.t")));
+                // found anywhere in the run by its text, then clicked
+                Browser.script(browser, "document.getElementById('console-find').value = 'failed'; document.getElementById('console-find-go').click();");
+                wait.until(b -> Browser.script(b, "return document.querySelector('#console tr[data-t=\"412040\"]')") != null);
+                assertEquals(1L, Browser.script(browser, "return document.querySelectorAll('#console tr').length"), "only the line found");
+                Browser.script(browser, "document.querySelector('#console tr[data-t=\"412040\"]').click();");
+                wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs || -1")).longValue() == 412_040);
+                assertEquals(SyntheticRun.x(412_040, 600_000), ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue(),
+                        1e-9, "the world drawn at the line's instant");
                 Browser.screenshot(browser, "inspector-replay.png");
             } finally {
                 browser.quit();

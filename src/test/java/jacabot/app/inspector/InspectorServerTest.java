@@ -112,6 +112,16 @@ class InspectorServerTest {
             assertEquals(5, refused.size(), "each refusal logged: " + refused);
             assertTrue(refused.get(0).contains("no token") && refused.get(3).contains("wrong token")
                     && refused.get(4).contains("another origin"), refused.toString());
+            // every endpoint the inspector serves, the console's too: without the token, and with it from another origin
+            List<String> paths = inspector.paths();
+            assertTrue(paths.containsAll(List.of("/", "/api/state", "/api/stream", "/api/debug", "/api/whatif", "/api/console")), paths.toString());
+            for (String path : paths) {
+                String p = path.substring(1) + (path.endsWith("/") && path.length() > 1 ? "trajectory.png" : "");
+                assertEquals(403, status(client, inspector.uri() + p), "no token: " + path);
+                var foreignPage = HttpRequest.newBuilder(URI.create(inspector.url(p))).header("Origin", "http://evil.example").build();
+                assertEquals(403, client.send(foreignPage, HttpResponse.BodyHandlers.discarding()).statusCode(), "another origin: " + path);
+            }
+            assertEquals(5 + 2 * paths.size(), refused.size(), "each refusal logged");
         }
         try (Inspector inspector = Inspector.startOnFreePort()) {
             // DNS rebinding: the right token, for a host name that is not the inspector's (a raw request: the
