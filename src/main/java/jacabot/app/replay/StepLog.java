@@ -331,6 +331,8 @@ public final class StepLog {
         private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
         /** The last step's beliefs' texts, by identity. */
         private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
+        /** The last step's list of beliefs: the probe gives the same one while they do not change. */
+        private List<MindState.Belief> beliefList;
         private List<MindState.IntentionView> intentions = List.of();
         private List<String> events = List.of();
         private final Map<String, Moved> objects = new HashMap<>();
@@ -361,6 +363,7 @@ public final class StepLog {
             if (key) {
                 chunkFirstTime = timeMs;
                 beliefs.clear(); // a key step holds the whole mind, and every movable object
+                beliefList = null;
                 intentions = null;
                 events = null;
                 objects.clear();
@@ -452,36 +455,48 @@ public final class StepLog {
         }
 
         private MindDelta delta(MindState mind) {
-            var added = new ArrayList<MindState.Belief>();
-            var now = new LinkedHashMap<String, MindState.Belief>();
+            List<MindState.Belief> added = null;
+            List<String> removed = null;
+            // the probe gives the same list while the belief base does not change
+            if (mind.beliefs() != beliefList) {
+                added = new ArrayList<>();
+                removed = new ArrayList<>();
+                beliefsDelta(mind.beliefs(), added, removed);
+                beliefList = mind.beliefs();
+            }
+            List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
+            intentions = mind.intentions();
+            List<String> evs = mind.events().equals(events) ? null : mind.events();
+            events = mind.events();
+            return new MindDelta(mind.cycle(), added == null || added.isEmpty() ? null : added,
+                    removed == null || removed.isEmpty() ? null : removed,
+                    mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
+        }
+
+        /** Adds to {@code added} the beliefs not in the last step's, to {@code removed} the texts of those gone. */
+        private void beliefsDelta(List<MindState.Belief> now, List<MindState.Belief> added, List<String> removed) {
+            var byText = new LinkedHashMap<String, MindState.Belief>();
             // the probe gives a belief that did not change as the same object: its text is known
             var texts = new IdentityHashMap<MindState.Belief, String>();
-            for (MindState.Belief b : mind.beliefs()) {
+            for (MindState.Belief b : now) {
                 String key = beliefTexts.get(b);
                 if (key == null) {
                     key = b.text();
                 }
                 texts.put(b, key);
-                now.put(key, b);
+                byText.put(key, b);
                 if (!beliefs.containsKey(key)) {
                     added.add(b);
                 }
             }
-            var removed = new ArrayList<String>();
             for (String key : beliefs.keySet()) {
-                if (!now.containsKey(key)) {
+                if (!byText.containsKey(key)) {
                     removed.add(key);
                 }
             }
             beliefs.clear();
-            beliefs.putAll(now);
+            beliefs.putAll(byText);
             beliefTexts = texts;
-            List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
-            intentions = mind.intentions();
-            List<String> evs = mind.events().equals(events) ? null : mind.events();
-            events = mind.events();
-            return new MindDelta(mind.cycle(), added.isEmpty() ? null : added, removed.isEmpty() ? null : removed,
-                    mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
         }
 
         private void line(JsonNode n) {
