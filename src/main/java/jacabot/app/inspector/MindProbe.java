@@ -44,8 +44,10 @@ public final class MindProbe {
     private int planCount = -1;
     private List<String> plans = List.of();
     private List<Plan> planObjects = List.of();
-    /** The facts the last capture showed, by identity (captures run on the agent's thread). */
-    private IdentityHashMap<Literal, MindState.Belief> lastShown = new IdentityHashMap<>();
+    /** The beliefs and intentions as the last capture printed them (captures run on the agent's thread). */
+    private final BeliefTexts beliefs = new BeliefTexts();
+    private final IntentionTexts intentions = new IntentionTexts();
+    private List<String> lastEvents = List.of();
 
     private MindProbe(Agent agent) {
         this.agent = agent;
@@ -85,7 +87,7 @@ public final class MindProbe {
         }
         // the unifier now is the one that made the plan applicable (its body has not run yet)
         selections.add(new MindState.Selection(agent.clock().millis(), agent.cycles(), i.id(),
-                top.trigger().toString(), planHead(top.plan()), top.unifier().toString()));
+                top.trigger().toString(), intentions.headOf(top.plan()), top.unifier().toString()));
     }
 
     /** {@return the mind now; call between two reasoning cycles, on the agent's thread} */
@@ -107,46 +109,16 @@ public final class MindProbe {
     }
 
     private MindState state(long number, long cyclesDone, List<MindState.Selection> chosen) {
-        var beliefs = new ArrayList<MindState.Belief>();
-        var shown = new IdentityHashMap<Literal, MindState.Belief>();
-        for (BeliefBase.Entry e : agent.beliefBase().all()) {
-            // rules too, as Jason's inspector lists them with the facts
-            if (e.rule() != null) {
-                beliefs.add(new MindState.Belief(e.rule().toString(), List.of(), List.of()));
-                continue;
-            }
-            // a fact is an immutable literal: one the last capture showed is shown the same
-            MindState.Belief b = lastShown.get(e.literal());
-            if (b == null) {
-                b = belief(e.literal());
-            }
-            if (printsTheSame(e.literal())) {
-                shown.put(e.literal(), b);
-            }
-            beliefs.add(b);
-        }
-        lastShown = shown;
         Circumstance c = agent.circumstance();
         var events = new ArrayList<String>();
         for (Event e : c.eventList()) {
             events.add(e.trigger().toString() + (e.isExternal() ? "" : "  (intention " + e.intention().id() + ")"));
         }
-        var pendingReason = new HashMap<Intention, String>();
-        for (Map.Entry<String, Circumstance.Pending> p : c.pendingIntentions().entrySet()) {
-            pendingReason.put(p.getValue().intention(), "waiting: " + p.getValue().reason());
+        if (!events.equals(lastEvents)) {
+            lastEvents = List.copyOf(events);
         }
-        var intentions = new ArrayList<MindState.IntentionView>();
-        for (Intention i : c.allIntentions()) {
-            var stack = new ArrayList<MindState.Means>();
-            for (IntendedMeans im : i) {
-                stack.add(means(im));
-            }
-            String state = pendingReason.getOrDefault(i,
-                    i.isSuspended() ? "suspended" : c.hasRunningIntention(i) ? "running" : "waiting");
-            intentions.add(new MindState.IntentionView(i.id(), state, stack));
-        }
-        intentions.sort(Comparator.comparingInt(MindState.IntentionView::id));
-        return new MindState(agent.name(), number, agent.clock().millis(), cyclesDone, beliefs, events, intentions, chosen);
+        return new MindState(agent.name(), number, agent.clock().millis(), cyclesDone, beliefs.of(agent.beliefBase()),
+                lastEvents, intentions.of(c), chosen);
     }
 
     /** {@return the plan library as text, re-read only when its size changes (.add_plan, .remove_plan)} */
@@ -188,60 +160,4 @@ public final class MindProbe {
         return p.label() == null ? p.toString() : p.withLabel(p.label().withoutAnnots()).toString();
     }
 
-    /**
-     * {@return whether the literal's text cannot change: made of literals, numbers, strings, lists
-     * and variables only} (an object term prints its Java object, which may change)
-     */
-    private static boolean printsTheSame(Term t) {
-        if (t instanceof Literal l) {
-            for (Term a : l.args()) {
-                if (!printsTheSame(a)) {
-                    return false;
-                }
-            }
-            for (Term a : l.annots()) {
-                if (!printsTheSame(a)) {
-                    return false;
-                }
-            }
-            return true;
-        }
-        if (t instanceof ListTerm.Cons c) {
-            return printsTheSame(c.head()) && printsTheSame(c.tail());
-        }
-        return t instanceof NumberTerm || t instanceof StringTerm || t instanceof ListTerm.Empty || t instanceof Var;
-    }
-
-    static MindState.Belief belief(Literal l) {
-        var sources = new ArrayList<String>();
-        var annots = new ArrayList<String>();
-        for (Term a : l.annots()) {
-            if (a instanceof Literal s && s.functor().equals("source") && s.arity() == 1) {
-                sources.add(s.arg(0).toString());
-            } else {
-                annots.add(a.toString());
-            }
-        }
-        return new MindState.Belief(l.withoutAnnots().toString(), sources, annots);
-    }
-
-    private static MindState.Means means(IntendedMeans im) {
-        String current = im.currentStep() == null ? "" : im.currentStep().toString();
-        String all = im.remainingBody();
-        String rest = all.startsWith(current) ? all.substring(current.length()).replaceFirst("^;\\s*", "") : all;
-        return new MindState.Means(im.trigger().toString(), planHead(im.plan()), im.unifier().toString(), current, rest);
-    }
-
-    /** {@return {@code @label +trigger : context}, the plan without its body} */
-    static String planHead(Plan p) {
-        var out = new StringBuilder();
-        if (p.label() != null) {
-            out.append('@').append(p.label().withoutAnnots()).append(' ');
-        }
-        out.append(p.trigger());
-        if (p.context() != null) {
-            out.append(" : ").append(p.context());
-        }
-        return out.toString();
-    }
 }

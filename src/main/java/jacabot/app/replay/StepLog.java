@@ -5,8 +5,6 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.app.inspector.MindState;
 import jacabot.app.run.LagMeter;
 import jacabot.robot.link.Command;
@@ -14,28 +12,22 @@ import jacabot.robot.link.SensorInfo;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import java.io.BufferedReader;
-import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStreamReader;
-import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
-import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.function.Consumer;
-import java.util.stream.Collectors;
 import java.util.zip.GZIPInputStream;
-import java.util.zip.GZIPOutputStream;
 import java.util.zip.ZipException;
 
 /**
@@ -131,7 +123,7 @@ public final class StepLog {
      * mind's capture, readings and commands as the link made them), so the writer's thread can
      * print it later exactly as it was at the step.
      */
-    private record Pending(long timeMs, Body body, List<?> commands, List<?> readings, MindState mind,
+    record Pending(long timeMs, Body body, List<?> commands, List<?> readings, MindState mind,
             List<ObjectState> world, Lag lag) {
     }
 
@@ -148,7 +140,7 @@ public final class StepLog {
         private static final Pending END = new Pending(-1, null, List.of(), List.of(), null, null, null);
 
         private final Header header;
-        private final Encoder encoder;
+        private final StepEncoder encoder;
         private final BlockingQueue<Pending> queue;
         private final Thread thread;
         private volatile Throwable failure;
@@ -161,7 +153,7 @@ public final class StepLog {
         /** @param background false: every step written on the caller's thread (the tests' reference) */
         Writer(Path file, Header header, boolean background) throws IOException {
             this.header = header;
-            this.encoder = new Encoder(file, header);
+            this.encoder = new StepEncoder(file, header);
             if (background) {
                 queue = new ArrayBlockingQueue<>(QUEUE);
                 thread = new Thread(this::drain, "step log " + file.getFileName());
@@ -310,197 +302,6 @@ public final class StepLog {
                 }
             } finally {
                 encoder.close();
-            }
-        }
-    }
-
-    /**
-     * Turns steps into the file's bytes: the JSON lines, the mind's and the objects' changes, the
-     * gzip members. Not thread-safe: the writer's thread runs it.
-     */
-    private static final class Encoder implements Closeable {
-        private final OutputStream file;
-        private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
-        private long offset;
-        private long steps;
-        private long chunkFirstTime;
-        private long lastTime;
-        private volatile Consumer<Chunk> onChunk = c -> {
-        };
-        private volatile Consumer<Step> onStep;
-        private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
-        /** The last step's beliefs' texts, by identity. */
-        private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
-        private List<MindState.IntentionView> intentions = List.of();
-        private List<String> events = List.of();
-        private final Map<String, Moved> objects = new HashMap<>();
-
-        Encoder(Path file, Header header) throws IOException {
-            Files.createDirectories(file.toAbsolutePath().getParent());
-            this.file = Files.newOutputStream(file);
-            for (ObjectState o : header.start().objects()) {
-                objects.put(o.id(), moved(o));
-            }
-            line(JSON.valueToTree(header));
-            flushChunk();
-        }
-
-        /** Writes one step, its commands and readings as text (the writer's thread makes that text). */
-        void write(Pending s) {
-            long timeMs = s.timeMs();
-            Body body = s.body();
-            List<String> commands = s.commands().stream().map(Object::toString).collect(Collectors.toList());
-            List<String> readings = new ArrayList<>(s.readings().size());
-            for (Object r : s.readings()) {
-                readings.add(r instanceof SensorInfo info ? reading(info) : (String) r);
-            }
-            MindState mind = s.mind();
-            List<ObjectState> world = s.world();
-            Lag lag = s.lag();
-            boolean key = steps % CHUNK == 0;
-            if (key) {
-                chunkFirstTime = timeMs;
-                beliefs.clear(); // a key step holds the whole mind, and every movable object
-                intentions = null;
-                events = null;
-                objects.clear();
-            }
-            lastTime = timeMs;
-            ObjectNode n = JSON.createObjectNode();
-            n.put("t", timeMs);
-            if (key) {
-                n.put("key", true);
-            }
-            n.set("body", JSON.valueToTree(body));
-            if (!commands.isEmpty()) {
-                ArrayNode c = n.putArray("cmd");
-                commands.forEach(c::add);
-            }
-            if (!readings.isEmpty()) {
-                ArrayNode r = n.putArray("in");
-                readings.forEach(r::add);
-            }
-            Consumer<Step> stepSink = onStep;
-            Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
-            if (world != null) {
-                ObjectNode moved = null;
-                for (ObjectState o : world) {
-                    if (!o.movable()) {
-                        continue; // walls, boxes; the robot's pose is in its body
-                    }
-                    Moved now = moved(o);
-                    if (!now.equals(objects.get(o.id()))) {
-                        objects.put(o.id(), now);
-                        if (moved == null) {
-                            moved = n.putObject("moved");
-                        }
-                        moved.set(o.id(), JSON.valueToTree(now));
-                        if (movedNow != null) {
-                            movedNow.put(o.id(), now);
-                        }
-                    }
-                }
-            }
-            MindDelta written = null;
-            if (mind != null) {
-                MindDelta d = delta(mind);
-                if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
-                        || d.events() != null) {
-                    n.set("mind", JSON.valueToTree(d));
-                    written = d;
-                }
-            }
-            if (lag != null) {
-                n.set("lag", JSON.valueToTree(lag));
-            }
-            line(n);
-            if (stepSink != null) {
-                stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
-            }
-            steps++;
-            if (steps % CHUNK == 0) {
-                flushChunk();
-            }
-        }
-
-        /** Compresses the steps gathered into one gzip member, appends it to the file and announces it. */
-        private void flushChunk() {
-            if (chunk.size() == 0) {
-                return;
-            }
-            try {
-                var member = new ByteArrayOutputStream(chunk.size() / 4 + 64);
-                try (var gz = new GZIPOutputStream(member, 1 << 16)) {
-                    chunk.writeTo(gz);
-                }
-                file.write(member.toByteArray());
-                file.flush();
-                long first = steps == 0 ? -1 : (steps - 1) / CHUNK * CHUNK;
-                Chunk c = new Chunk(offset, first, first < 0 ? -1 : chunkFirstTime, lastTime);
-                offset += member.size();
-                chunk.reset();
-                if (first >= 0) {
-                    onChunk.accept(c);
-                }
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-
-        private static Moved moved(ObjectState o) {
-            return new Moved(o.pose().x(), o.pose().z(), o.pose().heading(), o.carriedBy());
-        }
-
-        private MindDelta delta(MindState mind) {
-            var added = new ArrayList<MindState.Belief>();
-            var now = new LinkedHashMap<String, MindState.Belief>();
-            // the probe gives a belief that did not change as the same object: its text is known
-            var texts = new IdentityHashMap<MindState.Belief, String>();
-            for (MindState.Belief b : mind.beliefs()) {
-                String key = beliefTexts.get(b);
-                if (key == null) {
-                    key = b.text();
-                }
-                texts.put(b, key);
-                now.put(key, b);
-                if (!beliefs.containsKey(key)) {
-                    added.add(b);
-                }
-            }
-            var removed = new ArrayList<String>();
-            for (String key : beliefs.keySet()) {
-                if (!now.containsKey(key)) {
-                    removed.add(key);
-                }
-            }
-            beliefs.clear();
-            beliefs.putAll(now);
-            beliefTexts = texts;
-            List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
-            intentions = mind.intentions();
-            List<String> evs = mind.events().equals(events) ? null : mind.events();
-            events = mind.events();
-            return new MindDelta(mind.cycle(), added.isEmpty() ? null : added, removed.isEmpty() ? null : removed,
-                    mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
-        }
-
-        private void line(JsonNode n) {
-            try {
-                JSON.writeValue(chunk, n);
-                chunk.write('\n');
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-
-        @Override
-        public void close() throws IOException {
-            try {
-                flushChunk();
-            } catch (UncheckedIOException e) {
-                throw e.getCause();
-            } finally {
-                file.close();
             }
         }
     }

@@ -8,6 +8,7 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Collections;
 import java.util.Comparator;
 import java.util.HashMap;
@@ -128,6 +129,9 @@ public final class BeliefBase {
         /** Its key in the map (kept with a spare group: the same predicate often comes back). */
         private Key key;
         private final ArrayDeque<Entry> entries = new ArrayDeque<>();
+        private final Collection<Entry> readOnly = Collections.unmodifiableCollection(entries);
+        /** The belief base's change count at this group's last change: no two states of a group share one. */
+        private long changedAt;
         private List<Entry> snapshot;
         /** The facts by their arguments: adding a known fact must not scan a large group. */
         private final FactIndex facts = new FactIndex();
@@ -222,6 +226,12 @@ public final class BeliefBase {
      */
     private Group parked;
     private int size;
+    /** Changes made so far (an entry added, removed or given other annotations): see {@link #changes()}. */
+    private long changes;
+
+    private void changed(Group g) {
+        g.changedAt = ++changes;
+    }
 
     /** The lookup key; the belief base is used by its agent's thread only. */
     private final Key probe = new Key(null, 0, false, null);
@@ -357,6 +367,27 @@ public final class BeliefBase {
         return e == null ? null : e.literal;
     }
 
+    /** Sees the belief base one predicate at a time (see {@link #forEachGroup}). */
+    public interface GroupVisitor {
+        /**
+         * @param group the predicate's group, an object of its own
+         * @param changedAt the belief base's change count at the group's last change: the same group
+         *        with the same count holds the same entries, in the same order, each with the same literal
+         * @param entries its entries in order, read only, as they are (not a snapshot)
+         */
+        void visit(Object group, long changedAt, Collection<Entry> entries);
+    }
+
+    /**
+     * Visits every group in order; {@link #all()} is their entries one after the other. The mind
+     * probe prints again only the groups whose count moved since its last capture.
+     */
+    public void forEachGroup(GroupVisitor v) {
+        for (Group g : groups.values()) {
+            v.visit(g, g.changedAt, g.readOnly);
+        }
+    }
+
     /** {@return every stored entry, group by group} */
     public List<Entry> all() {
         var out = new ArrayList<Entry>();
@@ -368,9 +399,20 @@ public final class BeliefBase {
         return size;
     }
 
+    /**
+     * {@return how many changes the belief base has had} The same count means the same entries in
+     * the same order, each with the same literal object (the mind probe walks the beliefs again
+     * only when it moved).
+     */
+    public long changes() {
+        return changes;
+    }
+
     public void addRule(Rule rule, boolean atEnd) {
-        groupFor(rule.head()).add(new Entry(rule), atEnd);
+        Group g = groupFor(rule.head());
+        g.add(new Entry(rule), atEnd);
         size++;
+        changed(g);
     }
 
     /**
@@ -382,12 +424,17 @@ public final class BeliefBase {
         int hash = FactIndex.hash(l.args());
         Entry known = group.facts.get(l.args(), hash);
         if (known != null) {
-            return merge(known, l);
+            Literal fresh = merge(known, l);
+            if (fresh != null) {
+                changed(group);
+            }
+            return fresh;
         }
         Entry e = new Entry(l);
         group.facts.add(e, hash);
         group.add(e, atEnd);
         size++;
+        changed(group);
         return l;
     }
 
@@ -498,6 +545,7 @@ public final class BeliefBase {
             return stored;
         }
         group.snapshot = null;
+        changed(group);
         var left = new ArrayList<Term>(stored.annots());
         left.removeAll(removal.annots());
         e.literal = stored.withAnnots(left);
@@ -542,6 +590,7 @@ public final class BeliefBase {
     private void removeFromGroup(Group group, Entry e, Literal stored) {
         group.remove(e);
         size--;
+        changed(group);
         if (group.entries.isEmpty()) {
             if (group == newest) {
                 parked = group;

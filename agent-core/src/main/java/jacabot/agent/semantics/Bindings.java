@@ -131,6 +131,19 @@ final class Bindings {
         return indexOf(v);
     }
 
+    /** {@return whether the pairs in use are those of {@code other} (a {@link #suffix}(0)), object for object} */
+    boolean samePairs(Object[] other) {
+        if (other.length != 2 * size) {
+            return false;
+        }
+        for (int i = 0; i < other.length; i++) {
+            if (pairs[i] != other[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** {@return the pairs bound since there were {@code mark}, to be {@link #append}ed later} */
     Object[] suffix(int mark) {
         // an internal action's unifier is an extension of the one it was given: never shorter

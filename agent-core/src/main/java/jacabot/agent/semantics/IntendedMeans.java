@@ -110,6 +110,14 @@ public final class IntendedMeans {
         return steps == null ? null : steps.head;
     }
 
+    /**
+     * {@return the steps still to run, or null: an immutable list, so the same object for as long
+     * as they are the same steps (the mind probe prints them again only when it changes)}
+     */
+    public StepList steps() {
+        return steps;
+    }
+
     /** {@return the steps still to run, as Jason prints a plan body: {@code a; b; c}} */
     public String remainingBody() {
         var sb = new StringBuilder();

@@ -116,6 +116,23 @@ public final class Unifier {
         return bindings.isEmpty();
     }
 
+    /**
+     * {@return the bindings now, for {@link #hasBindings} to tell later whether they changed} (the
+     * mind probe prints a unifier again only when they did)
+     */
+    public Object[] bindingsNow() {
+        return bindings.suffix(0);
+    }
+
+    /**
+     * {@return whether the bindings are still those {@link #bindingsNow} gave: the same variables
+     * bound to the same term objects, in the same order} Terms are immutable, so the unifier
+     * prints the same (but for an object term, whose Java object may change).
+     */
+    public boolean hasBindings(Object[] then) {
+        return bindings.samePairs(then);
+    }
+
     public Map<Var, Term> bindings() {
         return Collections.unmodifiableMap(bindings.asMap());
     }

@@ -1,0 +1,242 @@
+package jacabot.app.replay;
+
+import static jacabot.app.replay.StepLog.CHUNK;
+import static jacabot.app.replay.StepLog.JSON;
+import static jacabot.app.replay.StepLog.reading;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import jacabot.app.inspector.MindState;
+import jacabot.app.replay.StepLog.Body;
+import jacabot.app.replay.StepLog.Chunk;
+import jacabot.app.replay.StepLog.Header;
+import jacabot.app.replay.StepLog.Lag;
+import jacabot.app.replay.StepLog.MindDelta;
+import jacabot.app.replay.StepLog.Moved;
+import jacabot.app.replay.StepLog.Pending;
+import jacabot.app.replay.StepLog.Step;
+import jacabot.robot.link.SensorInfo;
+import jacabot.sim.engine.ObjectState;
+import java.io.ByteArrayOutputStream;
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import java.util.stream.Collectors;
+import java.util.zip.GZIPOutputStream;
+
+/**
+ * Turns steps into the file's bytes: the JSON lines, the mind's and the objects' changes, the
+ * gzip members. Not thread-safe: the writer's thread runs it.
+ */
+final class StepEncoder implements Closeable {
+    private final OutputStream file;
+    private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
+    private long offset;
+    private long steps;
+    private long chunkFirstTime;
+    private long lastTime;
+    volatile Consumer<Chunk> onChunk = c -> {
+    };
+    volatile Consumer<Step> onStep;
+    private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
+    /** The last step's beliefs' texts, by identity. */
+    private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
+    /** The last step's list of beliefs: the probe gives the same one while they do not change. */
+    private List<MindState.Belief> beliefList;
+    private List<MindState.IntentionView> intentions = List.of();
+    private List<String> events = List.of();
+    private final Map<String, Moved> objects = new HashMap<>();
+
+    StepEncoder(Path file, Header header) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        this.file = Files.newOutputStream(file);
+        for (ObjectState o : header.start().objects()) {
+            objects.put(o.id(), moved(o));
+        }
+        line(JSON.valueToTree(header));
+        flushChunk();
+    }
+
+    /** Writes one step, its commands and readings as text (the writer's thread makes that text). */
+    void write(Pending s) {
+        long timeMs = s.timeMs();
+        Body body = s.body();
+        List<String> commands = s.commands().stream().map(Object::toString).collect(Collectors.toList());
+        List<String> readings = new ArrayList<>(s.readings().size());
+        for (Object r : s.readings()) {
+            readings.add(r instanceof SensorInfo info ? reading(info) : (String) r);
+        }
+        MindState mind = s.mind();
+        List<ObjectState> world = s.world();
+        Lag lag = s.lag();
+        boolean key = steps % CHUNK == 0;
+        if (key) {
+            chunkFirstTime = timeMs;
+            beliefs.clear(); // a key step holds the whole mind, and every movable object
+            beliefList = null;
+            intentions = null;
+            events = null;
+            objects.clear();
+        }
+        lastTime = timeMs;
+        ObjectNode n = JSON.createObjectNode();
+        n.put("t", timeMs);
+        if (key) {
+            n.put("key", true);
+        }
+        n.set("body", JSON.valueToTree(body));
+        if (!commands.isEmpty()) {
+            ArrayNode c = n.putArray("cmd");
+            commands.forEach(c::add);
+        }
+        if (!readings.isEmpty()) {
+            ArrayNode r = n.putArray("in");
+            readings.forEach(r::add);
+        }
+        Consumer<Step> stepSink = onStep;
+        Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
+        if (world != null) {
+            ObjectNode moved = null;
+            for (ObjectState o : world) {
+                if (!o.movable()) {
+                    continue; // walls, boxes; the robot's pose is in its body
+                }
+                Moved now = moved(o);
+                if (!now.equals(objects.get(o.id()))) {
+                    objects.put(o.id(), now);
+                    if (moved == null) {
+                        moved = n.putObject("moved");
+                    }
+                    moved.set(o.id(), JSON.valueToTree(now));
+                    if (movedNow != null) {
+                        movedNow.put(o.id(), now);
+                    }
+                }
+            }
+        }
+        MindDelta written = null;
+        if (mind != null) {
+            MindDelta d = delta(mind);
+            if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
+                    || d.events() != null) {
+                n.set("mind", JSON.valueToTree(d));
+                written = d;
+            }
+        }
+        if (lag != null) {
+            n.set("lag", JSON.valueToTree(lag));
+        }
+        line(n);
+        if (stepSink != null) {
+            stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
+        }
+        steps++;
+        if (steps % CHUNK == 0) {
+            flushChunk();
+        }
+    }
+
+    /** Compresses the steps gathered into one gzip member, appends it to the file and announces it. */
+    private void flushChunk() {
+        if (chunk.size() == 0) {
+            return;
+        }
+        try {
+            var member = new ByteArrayOutputStream(chunk.size() / 4 + 64);
+            try (var gz = new GZIPOutputStream(member, 1 << 16)) {
+                chunk.writeTo(gz);
+            }
+            file.write(member.toByteArray());
+            file.flush();
+            long first = steps == 0 ? -1 : (steps - 1) / CHUNK * CHUNK;
+            Chunk c = new Chunk(offset, first, first < 0 ? -1 : chunkFirstTime, lastTime);
+            offset += member.size();
+            chunk.reset();
+            if (first >= 0) {
+                onChunk.accept(c);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static Moved moved(ObjectState o) {
+        return new Moved(o.pose().x(), o.pose().z(), o.pose().heading(), o.carriedBy());
+    }
+
+    private MindDelta delta(MindState mind) {
+        List<MindState.Belief> added = null;
+        List<String> removed = null;
+        // the probe gives the same list while the belief base does not change
+        if (mind.beliefs() != beliefList) {
+            added = new ArrayList<>();
+            removed = new ArrayList<>();
+            beliefsDelta(mind.beliefs(), added, removed);
+            beliefList = mind.beliefs();
+        }
+        List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
+        intentions = mind.intentions();
+        List<String> evs = mind.events().equals(events) ? null : mind.events();
+        events = mind.events();
+        return new MindDelta(mind.cycle(), added == null || added.isEmpty() ? null : added,
+                removed == null || removed.isEmpty() ? null : removed,
+                mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
+    }
+
+    /** Adds to {@code added} the beliefs not in the last step's, to {@code removed} the texts of those gone. */
+    private void beliefsDelta(List<MindState.Belief> now, List<MindState.Belief> added, List<String> removed) {
+        var byText = new LinkedHashMap<String, MindState.Belief>();
+        // the probe gives a belief that did not change as the same object: its text is known
+        var texts = new IdentityHashMap<MindState.Belief, String>();
+        for (MindState.Belief b : now) {
+            String key = beliefTexts.get(b);
+            if (key == null) {
+                key = b.text();
+            }
+            texts.put(b, key);
+            byText.put(key, b);
+            if (!beliefs.containsKey(key)) {
+                added.add(b);
+            }
+        }
+        for (String key : beliefs.keySet()) {
+            if (!byText.containsKey(key)) {
+                removed.add(key);
+            }
+        }
+        beliefs.clear();
+        beliefs.putAll(byText);
+        beliefTexts = texts;
+    }
+
+    private void line(JsonNode n) {
+        try {
+            JSON.writeValue(chunk, n);
+            chunk.write('\n');
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        try {
+            flushChunk();
+        } catch (UncheckedIOException e) {
+            throw e.getCause();
+        } finally {
+            file.close();
+        }
+    }
+}
