@@ -11,7 +11,9 @@ import java.net.InetAddress;
 
 /**
  * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
- * on a free port ({@link #start}): what tests and single-process runs use instead of two processes;
+ * on a free port ({@link #start}): what tests and single-process runs use instead of two processes.
+ * In lockstep the controller's simulation thread also takes the middleware's turn of each step
+ * ({@link MiddlewareLink#turnOnCaller}): the frames still cross the socket, but no thread wakes up;
  * or by the same frames in memory ({@link #inMemory}, lockstep only): what sweeps use, without the
  * socket's system calls and thread hand-offs. Stepping the world is left to the caller
  * ({@code controller().runner()}).
@@ -27,7 +29,8 @@ public final class InProcessLink implements AutoCloseable {
 
     /**
      * Opens the middleware on 127.0.0.1 and a free port, points the controller at it and starts it.
-     * The configs' addresses are overridden, and both ends get a fresh secret of this run's.
+     * The configs' addresses are overridden, and both ends get a fresh secret of this run's. A
+     * lockstep controller takes the middleware's turns ({@link RobotController#takeTurnsWith}).
      */
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig)
             throws IOException {
@@ -44,6 +47,9 @@ public final class InProcessLink implements AutoCloseable {
             RobotController controller = new RobotController(world,
                     controllerConfig.withAddress(InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
+            if (controllerConfig.lockstep()) {
+                controller.takeTurnsWith(link.turnOnCaller());
+            }
             controller.start();
             return new InProcessLink(link, controller);
         } catch (RuntimeException e) {

@@ -232,8 +232,10 @@ public final class LockstepCoordinator {
     }
 
     /**
-     * The agent side, run on the link's reading thread: collect a step's readings, call the agent
-     * at its marker, answer with the commands and the acknowledgement in one write.
+     * The agent side, run where the link reads the step: on the simulation thread, which takes the
+     * middleware's turn over the in-process socket ({@link InProcessLink}) or reads the in-memory
+     * link; on the link's reading thread for a remote controller. It collects a step's readings,
+     * calls the agent at its marker, answers with the commands and the acknowledgement in one write.
      */
     private final class Server implements Consumer<LinkEvent> {
         private final MiddlewareLink link;
