@@ -11,6 +11,7 @@ import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorDataWriter;
+import jacabot.robot.link.TurnWatch;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -315,7 +316,13 @@ final class RobotLink {
         LentReader l = lent;
         SocketAddress here = localAddress;
         if (l != null) {
-            boolean answered = turn != null && here != null && turn.take(here, step);
+            boolean answered = false;
+            if (turn != null && here != null && l.turns.takes()) {
+                answered = turn.take(here, step);
+                if (l.turns.taken()) {
+                    turn.release(); // a busy machine: the middleware's reading thread serves from now on
+                }
+            }
             l.readUntilAck(step, answered);
         }
     }
@@ -327,6 +334,8 @@ final class RobotLink {
     private final class LentReader {
         private final CommandReader reader;
         private final LockstepSpin spin = new LockstepSpin();
+        /** Whether the simulation thread still takes the middleware's turns (in one process). */
+        private final TurnWatch turns = new TurnWatch();
         private final LockstepSpin.Ready answerReady;
         private final CountDownLatch ended = new CountDownLatch(1);
         private volatile IOException failure;
