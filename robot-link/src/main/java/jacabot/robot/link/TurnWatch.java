@@ -12,15 +12,17 @@ import java.util.function.LongSupplier;
  * {@code bench sim} at load 33: the agent's run at 0.19 of the baseline's speed with the turns and
  * 0.86 with the two reading threads, for the same CPU time per step). So the thread measures the
  * share of a core it gets while taking turns, its CPU time over the wall time of each window of
- * {@link #WINDOW} turns; after two windows in a row below {@link #MIN_SHARE} it stops taking turns
- * for the rest of the connection. The run is the same either way, to the byte: only the thread
- * that reads the middleware's end changes.
+ * {@link #WINDOW} turns (long enough that a garbage collection's pause does not count); after two
+ * windows in a row below {@link #MIN_SHARE} it stops taking turns for the rest of the connection.
+ * The threshold is a judgement, not a measured crossover: a thread short of a core by more than
+ * that shares it with other work, and there the two threads were measured far ahead. The run is the
+ * same either way, to the byte: only the thread that reads the middleware's end changes.
  *
  * <p>One instance per simulation thread; not thread-safe.
  */
 public final class TurnWatch {
-    static final int WINDOW = 250;
-    static final double MIN_SHARE = 0.5;
+    static final int WINDOW = 1_000;
+    static final double MIN_SHARE = 0.7;
 
     private final LongSupplier threadCpuNanos;
     private final LongSupplier nanoTime;
