@@ -117,7 +117,9 @@ public final class MiddlewareLink implements AutoCloseable {
      * The controller is in this process and lockstep: its simulation thread, after writing each
      * step, reads the step from this end of the socket and answers it ({@link LockstepTurn}), so no
      * thread wakes up in a step. Call it before the controller connects, and give the turn to it
-     * ({@code RobotController.takeTurnsWith}); a connection of another process is never served so.
+     * ({@code RobotController.takeTurnsWith}). A turn serves only the connection its step was written
+     * on; another lockstep connection (it would have to prove the secret: an in-process run's is
+     * fresh) stays lent until a turn, not finding its own within 5 s, releases the turns.
      * {@return the turn}
      */
     public LockstepTurn turnOnCaller() {
