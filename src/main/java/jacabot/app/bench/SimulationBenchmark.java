@@ -31,6 +31,7 @@ public final class SimulationBenchmark {
     private final PrintStream out;
     private final int warmups;
     private final int measuredRuns;
+    private final boolean turns;
     /** The process's CPU time: on a loaded machine it tells what a run costs where its wall time does not. */
     private final OperatingSystemMXBean os = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
@@ -40,12 +41,19 @@ public final class SimulationBenchmark {
      * @param measuredRuns measured runs; the median one is reported
      */
     public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, PrintStream out) {
+        this(world, seconds, seed, warmups, measuredRuns, false, out);
+    }
+
+    /** @param turns the simulation thread takes the middleware's turns ({@link LockstepRun#takeTurns}) */
+    public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, boolean turns,
+            PrintStream out) {
         BenchRuns.check(warmups, measuredRuns);
         this.world = world;
         this.seconds = seconds;
         this.seed = seed;
         this.warmups = warmups;
         this.measuredRuns = measuredRuns;
+        this.turns = turns;
         this.out = out;
     }
 
@@ -155,7 +163,7 @@ public final class SimulationBenchmark {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
-        var result = run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
+        var result = run.stepLogs(false).takeTurns(turns).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
         run.close(); // its figures stay readable
         return new Measured(run, result, 0, 0);
     }

@@ -12,8 +12,9 @@ import java.net.InetAddress;
 /**
  * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
  * on a free port ({@link #start}): what tests and single-process runs use instead of two processes.
- * In lockstep the controller's simulation thread also takes the middleware's turn of each step
- * ({@link MiddlewareLink#turnOnCaller}): the frames still cross the socket, but no thread wakes up;
+ * On request, in lockstep, the controller's simulation thread also takes the middleware's turn of
+ * each step ({@link MiddlewareLink#turnOnCaller}): the frames still cross the socket, but no thread
+ * wakes up (off by default: measured slower on a loaded machine, docs/performance.md §8);
  * or by the same frames in memory ({@link #inMemory}, lockstep only): what sweeps use, without the
  * socket's system calls and thread hand-offs. Stepping the world is left to the caller
  * ({@code controller().runner()}).
@@ -29,8 +30,7 @@ public final class InProcessLink implements AutoCloseable {
 
     /**
      * Opens the middleware on 127.0.0.1 and a free port, points the controller at it and starts it.
-     * The configs' addresses are overridden, and both ends get a fresh secret of this run's. A
-     * lockstep controller takes the middleware's turns ({@link RobotController#takeTurnsWith}).
+     * The configs' addresses are overridden, and both ends get a fresh secret of this run's.
      */
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig)
             throws IOException {
@@ -40,6 +40,15 @@ public final class InProcessLink implements AutoCloseable {
     /** As {@link #start(SimWorld, ControllerConfig, LinkConfig)}, listening on {@code port} (0: a free one). */
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port)
             throws IOException {
+        return start(world, controllerConfig, linkConfig, port, false);
+    }
+
+    /**
+     * As {@link #start(SimWorld, ControllerConfig, LinkConfig, int)}; with {@code turns}, a lockstep
+     * controller takes the middleware's turns ({@link RobotController#takeTurnsWith}).
+     */
+    public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port,
+            boolean turns) throws IOException {
         LinkSecret secret = LinkSecret.random();
         MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(InetAddress.getLoopbackAddress())
                 .withPort(port).withSecret(secret));
@@ -47,7 +56,7 @@ public final class InProcessLink implements AutoCloseable {
             RobotController controller = new RobotController(world,
                     controllerConfig.withAddress(InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
-            if (controllerConfig.lockstep()) {
+            if (turns && controllerConfig.lockstep()) {
                 controller.takeTurnsWith(link.turnOnCaller());
             }
             controller.start();
