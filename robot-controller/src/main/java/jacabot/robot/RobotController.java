@@ -2,6 +2,7 @@ package jacabot.robot;
 import jacabot.robot.link.Readings;
 
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.LockstepTurn;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ReceivedCommand;
@@ -55,6 +56,8 @@ public final class RobotController implements AutoCloseable {
     private boolean failSafeTripped;
     private volatile long failSafeTrips;
     private volatile boolean started, closed;
+    /** The middleware's turn when it is in this process (lockstep over TCP), or null. */
+    private volatile LockstepTurn middlewareTurn;
 
     /** @throws IllegalArgumentException when the world has no robot of the configured name */
     public RobotController(SimWorld world, ControllerConfig config) {
@@ -109,6 +112,17 @@ public final class RobotController implements AutoCloseable {
         }
         link.start(new Protocol.Hello(Protocol.VERSION, robot.name(), world.name(), world.controlStep(),
                 config.lockstep(), sensors));
+    }
+
+    /**
+     * Lockstep over TCP with the middleware in this process: after writing each step, the simulation
+     * thread takes the middleware's turn ({@link LockstepTurn}: it reads the step from the
+     * middleware's end of the socket and answers it) before reading the answer, so no thread wakes
+     * up in a step. {@code turn} is released when this controller closes. Set it before {@link #start}.
+     */
+    public RobotController takeTurnsWith(LockstepTurn turn) {
+        this.middlewareTurn = turn;
+        return this;
     }
 
     /** {@return the runner that steps the world and calls {@link #controlStep} before each step} */
@@ -257,7 +271,7 @@ public final class RobotController implements AutoCloseable {
         if (s == null) {
             return;
         }
-        link.readAnswer(s.batch().step());
+        link.readAnswer(s.batch().step(), middlewareTurn);
         CommandInbox.AckResult ack = inbox.awaitAck(s.batch().step());
         synchronized (world) {
             if (ack == CommandInbox.AckResult.ACKED) {
@@ -319,7 +333,7 @@ public final class RobotController implements AutoCloseable {
                     return null;
                 }
                 link.send(out -> out.writeStep(batch, marker));
-                link.readAnswer(batch.step());
+                link.readAnswer(batch.step(), middlewareTurn);
                 switch (inbox.awaitAck(batch.step())) {
                     case ACKED:
                         return inbox.takeCommands();
@@ -377,5 +391,9 @@ public final class RobotController implements AutoCloseable {
         closed = true;
         inbox.close();
         link.close("controller stopped");
+        LockstepTurn t = middlewareTurn;
+        if (t != null) {
+            t.release(); // the middleware's thread reads our goodbye
+        }
     }
 }

@@ -5,11 +5,13 @@ import jacabot.robot.link.CommandReader;
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.LockstepSpin;
+import jacabot.robot.link.LockstepTurn;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import jacabot.robot.link.ProtocolException;
 import jacabot.robot.link.ReceivedCommand;
 import jacabot.robot.link.SensorDataWriter;
+import jacabot.robot.link.TurnWatch;
 import jacabot.robot.link.Uplink;
 import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
@@ -17,6 +19,7 @@ import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.net.SocketAddress;
 import java.net.SocketTimeoutException;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -53,6 +56,8 @@ final class RobotLink {
     private final CountDownLatch closed = new CountDownLatch(1);
     private final AtomicLong droppedFrames = new AtomicLong();
     private volatile Socket socket;
+    /** This end of the connection in use (what a {@link LockstepTurn} serves), null while none is. */
+    private volatile SocketAddress localAddress;
     private volatile SensorDataWriter writer;
     /** Lockstep over TCP: the connection's command stream, read by the simulation thread. */
     private volatile LentReader lent;
@@ -203,6 +208,7 @@ final class RobotLink {
             try {
                 s.connect(new InetSocketAddress(config.host(), config.port()), HANDSHAKE_TIMEOUT_MS);
                 socket = s;
+                localAddress = s.getLocalSocketAddress();
                 if (s instanceof SSLSocket tlsSocket) {
                     var params = tlsSocket.getSSLParameters();
                     params.setEndpointIdentificationAlgorithm("HTTPS"); // the certificate must name the host
@@ -246,6 +252,7 @@ final class RobotLink {
             } finally {
                 lent = null;
                 writer = null;
+                localAddress = null;
                 closeSocket();
                 if (up) {
                     inbox.connectionChanged(false);
@@ -299,14 +306,24 @@ final class RobotLink {
     }
 
     /**
-     * Lockstep over TCP, simulation thread, after writing step {@code step}: reads the middleware's
-     * commands up to its {@code STEP_ACK(step)}. Reading here rather than on the receiver thread saves
-     * a thread wake-up per step: the receiver's hand-off to this thread. A failure ends the connection; {@code awaitAck} then reports it.
+     * Lockstep over TCP, simulation thread, after writing step {@code step}: the middleware's turn
+     * on this thread when it is in this process ({@code turn}, or null), then reads its commands up
+     * to its {@code STEP_ACK(step)}. Reading here rather than on the receiver thread saves a thread
+     * wake-up per step: the receiver's hand-off to this thread; taking the middleware's turn here
+     * saves its reading thread's. A failure ends the connection; {@code awaitAck} then reports it.
      */
-    void readAnswer(long step) {
+    void readAnswer(long step, LockstepTurn turn) {
         LentReader l = lent;
+        SocketAddress here = localAddress;
         if (l != null) {
-            l.readUntilAck(step);
+            boolean answered = false;
+            if (turn != null && here != null && l.turns.takes()) {
+                answered = turn.take(here, step);
+                if (l.turns.taken()) {
+                    turn.release(); // a busy machine: the middleware's reading thread serves from now on
+                }
+            }
+            l.readUntilAck(step, answered);
         }
     }
 
@@ -317,6 +334,8 @@ final class RobotLink {
     private final class LentReader {
         private final CommandReader reader;
         private final LockstepSpin spin = new LockstepSpin();
+        /** Whether the simulation thread still takes the middleware's turns (in one process). */
+        private final TurnWatch turns = new TurnWatch();
         private final LockstepSpin.Ready answerReady;
         private final CountDownLatch ended = new CountDownLatch(1);
         private volatile IOException failure;
@@ -326,10 +345,13 @@ final class RobotLink {
             this.answerReady = reader::ready;
         }
 
-        void readUntilAck(long step) {
+        /** @param answered whether the answer has been written already (no spin then) */
+        void readUntilAck(long step, boolean answered) {
             try {
                 while (!inbox.hasAck(step) && ended.getCount() > 0) {
-                    spin.await(answerReady);
+                    if (!answered) {
+                        spin.await(answerReady);
+                    }
                     ReceivedCommand rc = reader.read();
                     if (rc == null) {
                         ended.countDown();

@@ -1,5 +1,6 @@
 package jacabot.app.bench;
 
+import com.sun.management.OperatingSystemMXBean;
 import jacabot.robot.Experiment;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepCoordinator;
@@ -8,6 +9,7 @@ import jacabot.robot.baseline.BaselineRunner;
 import jacabot.sim.SimWorld;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,6 +31,9 @@ public final class SimulationBenchmark {
     private final PrintStream out;
     private final int warmups;
     private final int measuredRuns;
+    private final boolean turns;
+    /** The process's CPU time: on a loaded machine it tells what a run costs where its wall time does not. */
+    private final OperatingSystemMXBean os = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
     /**
      * @param world        experiment 4's world file
@@ -36,12 +41,19 @@ public final class SimulationBenchmark {
      * @param measuredRuns measured runs; the median one is reported
      */
     public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, PrintStream out) {
+        this(world, seconds, seed, warmups, measuredRuns, false, out);
+    }
+
+    /** @param turns the simulation thread takes the middleware's turns ({@link LockstepRun#takeTurns}) */
+    public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, boolean turns,
+            PrintStream out) {
         BenchRuns.check(warmups, measuredRuns);
         this.world = world;
         this.seconds = seconds;
         this.seed = seed;
         this.warmups = warmups;
         this.measuredRuns = measuredRuns;
+        this.turns = turns;
         this.out = out;
     }
 
@@ -49,7 +61,7 @@ public final class SimulationBenchmark {
         Experiment e = Experiment.SUSPEND_RESUME;
         AgentSource source = AgentSource.packaged(e);
         // Warm-up: whole runs first, so that the measured ones run compiled code. On two cores the
-        // JIT compiler shares the machine with the run's two threads, and one run is not enough for it
+        // JIT compiler shares the machine with the run's thread, and one run is not enough for it
         // to finish: in runs of 10 simulated minutes the speed keeps rising until about the fourth.
         List<String> warm = new ArrayList<>();
         for (int i = 0; i < warmups; i++) {
@@ -59,18 +71,20 @@ public final class SimulationBenchmark {
         }
         List<Measured> runs = new ArrayList<>();
         for (int i = 0; i < measuredRuns; i++) {
+            long cpu0 = os.getProcessCpuTime();
             long t0 = System.nanoTime();
             Measured m = runAgent(world, source, seconds);
-            runs.add(m.timed(System.nanoTime() - t0));
+            runs.add(m.timed(System.nanoTime() - t0, os.getProcessCpuTime() - cpu0));
         }
-        Measured m = median(runs, Measured::wall); // the two threads' placement on the cores varies from run to run
+        Measured m = median(runs, Measured::wall); // runs vary with the JIT's progress and the machine's load
         long wall = m.wall();
         long[] sim = m.run().world().stepCost();
         long[] agent = m.run().agentSideCost();
         var c = m.result().controllerCosts();
         var mw = m.result().middlewareCosts();
         long serialization = c.encodingNanos() + mw.decodingNanos();
-        long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - agent[0] - agent[1];
+        long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - mw.writingNanos()
+                - agent[0] - agent[1];
         out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated per run: %d warm-up runs (%s), "
                 + "then %d measured runs (%s)%n", seed, seconds, warmups, String.join(" ", warm), measuredRuns,
                 runs.stream().map(r -> factor(r.wall())).collect(Collectors.joining(" ")));
@@ -87,37 +101,41 @@ public final class SimulationBenchmark {
         row("socket writes (the step's frame)", c.writingNanos(), wall, steps);
         row("artifact (middleware steps, operation threads)", agent[0], wall, steps);
         row("reasoning (agent cycles)", agent[1], wall, steps);
-        row("waiting: socket and thread wake-ups", rest, wall, steps);
-        out.printf(Locale.ROOT, "A control step took %.1f us in all. The agent side's answer writes took %.1f us per step"
-                + " (in waiting).%n", wall / 1e3 / steps, mw.writingNanos() / 1e3 / steps);
+        row("socket writes (the answer: commands and acknowledgement)", mw.writingNanos(), wall, steps);
+        row("the rest: socket reads, the link's bookkeeping, thread wake-ups", rest, wall, steps);
+        out.printf(Locale.ROOT, "A control step took %.1f us in all.%n", wall / 1e3 / steps);
         if (rest < 0) {
             // a write returns only after waking the reader's thread, which by then is at work on the other core
             out.println("The rows add up to more than the whole: each socket write wakes the other side's thread,"
                     + " whose work overlaps the end of the write.");
         }
-        long baselineWall = baseline(e);
-        out.printf(Locale.ROOT, "The agent's run at %.2f of the baseline's speed (median runs of this invocation).%n",
-                (double) baselineWall / wall);
+        long[] baseline = baseline(e);
+        out.printf(Locale.ROOT, "The process's CPU per simulated second, median runs: the agent's %.1f ms, the baseline's %.1f ms.%n",
+                m.cpu() / 1e6 / seconds, baseline[1] / 1e6 / seconds);
+        out.printf(Locale.ROOT, "The agent's run at %.2f of the baseline's speed (median runs of this invocation; by CPU time %.2f).%n",
+                (double) baseline[0] / wall, (double) baseline[1] / m.cpu());
     }
 
-    /** The procedural baseline, warmed up and measured the same way; {@return its median run's wall time} */
-    private long baseline(Experiment e) throws Exception {
+    /** The procedural baseline, warmed up and measured the same way; {@return its median run's wall and CPU time} */
+    private long[] baseline(Experiment e) throws Exception {
         for (int i = 0; i < warmups; i++) {
             BaselineRunner.execute(world, e, seed, seconds);
         }
-        List<long[]> runs = new ArrayList<>(); // wall, physics, devices
+        List<long[]> runs = new ArrayList<>(); // wall, physics, devices, CPU
         for (int i = 0; i < measuredRuns; i++) {
+            long cpu0 = os.getProcessCpuTime();
             long b0 = System.nanoTime();
             var baseline = BaselineRunner.execute(world, e, seed, seconds);
+            long wallNanos = System.nanoTime() - b0;
             long[] bsim = baseline.world().stepCost();
-            runs.add(new long[] {System.nanoTime() - b0, bsim[0], bsim[1]});
+            runs.add(new long[] {wallNanos, bsim[0], bsim[1], os.getProcessCpuTime() - cpu0});
         }
         String each = runs.stream().map(r -> factor(r[0])).collect(Collectors.joining(" "));
         long[] b = median(runs, r -> r[0]);
         out.printf(Locale.ROOT, "%nThe procedural baseline on the same world, %d measured runs (%s): the median %.2f s, %.0fx real time "
                 + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", measuredRuns, each, b[0] / 1e9, seconds / (b[0] / 1e9),
                 100.0 * b[1] / b[0], 100.0 * b[2] / b[0], 100.0 * (b[0] - b[1] - b[2]) / b[0]);
-        return b[0];
+        return new long[] {b[0], b[3]};
     }
 
     /** {@return the run of median wall time} */
@@ -131,9 +149,9 @@ public final class SimulationBenchmark {
         return String.format(Locale.ROOT, "%.0fx", seconds / (wallNanos / 1e9));
     }
 
-    private record Measured(LockstepRun run, LockstepCoordinator.Result result, long wall) {
-        Measured timed(long wallNanos) {
-            return new Measured(run, result, wallNanos);
+    private record Measured(LockstepRun run, LockstepCoordinator.Result result, long wall, long cpu) {
+        Measured timed(long wallNanos, long cpuNanos) {
+            return new Measured(run, result, wallNanos, cpuNanos);
         }
     }
 
@@ -145,8 +163,8 @@ public final class SimulationBenchmark {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
-        var result = run.stepLogs(false).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
+        var result = run.stepLogs(false).takeTurns(turns).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
         run.close(); // its figures stay readable
-        return new Measured(run, result, 0);
+        return new Measured(run, result, 0, 0);
     }
 }

@@ -128,6 +128,11 @@ final class BenchCommand implements Runnable {
         @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
+        @Option(names = "--turns", description = "the simulation thread also reads and answers the middleware's end of "
+                + "the socket, so no thread wakes up in a step (off by default: slower on a loaded machine; "
+                + "docs/performance.md section 9)")
+        private boolean turns;
+
         @Option(names = "--robots", paramLabel = "N", description = "instead: team-delivery with a team of N robots against "
                 + "one robot, runs alternated (worlds/team-delivery.json, its seed; default --duration 60s, --warmup 1)")
         private Integer robots;
@@ -147,7 +152,7 @@ final class BenchCommand implements Runnable {
             } catch (WorldFileException e) {
                 throw new UserError(e.getMessage());
             }
-            new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs,
+            new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs, turns,
                     ConsoleStreams.of(spec.commandLine().getOut())).run();
             return 0;
         }

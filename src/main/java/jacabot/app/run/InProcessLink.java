@@ -11,7 +11,10 @@ import java.net.InetAddress;
 
 /**
  * The controller and the middleware in one JVM, joined by the real protocol over a loopback socket
- * on a free port ({@link #start}): what tests and single-process runs use instead of two processes;
+ * on a free port ({@link #start}): what tests and single-process runs use instead of two processes.
+ * On request, in lockstep, the controller's simulation thread also takes the middleware's turn of
+ * each step ({@link MiddlewareLink#turnOnCaller}): the frames still cross the socket, but no thread
+ * wakes up (off by default: measured slower on a loaded machine, docs/performance.md §9);
  * or by the same frames in memory ({@link #inMemory}, lockstep only): what sweeps use, without the
  * socket's system calls and thread hand-offs. Stepping the world is left to the caller
  * ({@code controller().runner()}).
@@ -37,6 +40,15 @@ public final class InProcessLink implements AutoCloseable {
     /** As {@link #start(SimWorld, ControllerConfig, LinkConfig)}, listening on {@code port} (0: a free one). */
     public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port)
             throws IOException {
+        return start(world, controllerConfig, linkConfig, port, false);
+    }
+
+    /**
+     * As {@link #start(SimWorld, ControllerConfig, LinkConfig, int)}; with {@code turns}, a lockstep
+     * controller takes the middleware's turns ({@link RobotController#takeTurnsWith}).
+     */
+    public static InProcessLink start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, int port,
+            boolean turns) throws IOException {
         LinkSecret secret = LinkSecret.random();
         MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(InetAddress.getLoopbackAddress())
                 .withPort(port).withSecret(secret));
@@ -44,6 +56,9 @@ public final class InProcessLink implements AutoCloseable {
             RobotController controller = new RobotController(world,
                     controllerConfig.withAddress(InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
+            if (turns && controllerConfig.lockstep()) {
+                controller.takeTurnsWith(link.turnOnCaller());
+            }
             controller.start();
             return new InProcessLink(link, controller);
         } catch (RuntimeException e) {

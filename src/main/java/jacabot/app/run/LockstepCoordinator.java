@@ -64,6 +64,7 @@ public final class LockstepCoordinator {
     private int port;
     private boolean remote;
     private boolean inMemory;
+    private boolean turns;
     private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
@@ -122,6 +123,17 @@ public final class LockstepCoordinator {
         return this;
     }
 
+    /**
+     * Over the socket, the simulation thread also takes the middleware's turns
+     * ({@link InProcessLink#start(SimWorld, ControllerConfig, LinkConfig, int, boolean)}): no thread
+     * wakes up in a step. Off by default: on this project's loaded machine it was measured slower
+     * (docs/performance.md §9); the same run to the byte either way.
+     */
+    public LockstepCoordinator takeTurns(boolean on) {
+        this.turns = on;
+        return this;
+    }
+
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
     public int listeningPort() {
         MiddlewareLink m = remoteLink;
@@ -172,7 +184,7 @@ public final class LockstepCoordinator {
             cc = cc.withEventLog(controllerLogSink != null ? controllerLogSink : controllerLog::add);
         }
         LinkConfig lc = LinkConfig.defaults().withLog(log);
-        try (InProcessLink link = inMemory ? InProcessLink.inMemory(world, cc, lc) : InProcessLink.start(world, cc, lc, port)) {
+        try (InProcessLink link = inMemory ? InProcessLink.inMemory(world, cc, lc) : InProcessLink.start(world, cc, lc, port, turns)) {
             running = link;
             if (stopRequested) {
                 link.controller().close();
@@ -232,8 +244,10 @@ public final class LockstepCoordinator {
     }
 
     /**
-     * The agent side, run on the link's reading thread: collect a step's readings, call the agent
-     * at its marker, answer with the commands and the acknowledgement in one write.
+     * The agent side, run where the link reads the step: on the simulation thread, which takes the
+     * middleware's turn over the in-process socket ({@link InProcessLink}) or reads the in-memory
+     * link; on the link's reading thread for a remote controller. It collects a step's readings,
+     * calls the agent at its marker, answers with the commands and the acknowledgement in one write.
      */
     private final class Server implements Consumer<LinkEvent> {
         private final MiddlewareLink link;

@@ -48,6 +48,7 @@ public final class LockstepRun extends SteppedPlatform {
     private int port;
     private boolean remoteController;
     private boolean inMemory;
+    private boolean turns;
     private volatile LockstepCoordinator coordinator;
     /** The robot's agents, in the order they were made (each reasons every step, in this order). */
     private final List<Member> members = new ArrayList<>();
@@ -187,6 +188,12 @@ public final class LockstepRun extends SteppedPlatform {
         return this;
     }
 
+    /** Over the socket, the simulation thread takes the middleware's turns ({@link LockstepCoordinator#takeTurns}); off by default. */
+    public LockstepRun takeTurns(boolean on) {
+        this.turns = on;
+        return this;
+    }
+
     /** The link's frames go through memory, not a loopback socket ({@link LockstepCoordinator#inMemory}): sweeps. */
     public LockstepRun inMemory(boolean on) {
         this.inMemory = on;
@@ -234,7 +241,7 @@ public final class LockstepRun extends SteppedPlatform {
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
         var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
-                .remoteController(remoteController).inMemory(inMemory);
+                .remoteController(remoteController).inMemory(inMemory).takeTurns(turns);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
         }

@@ -49,6 +49,15 @@ class LockstepCoordinatorTest {
     }
 
     @Test
+    void withTheMiddlewaresTurnsOnTheSimulationThreadTheRunIsTheSameToTheByte() throws Exception {
+        var agent = new StopAtObstacle();
+        var threads = run(new StopAtObstacle());
+        var turns = new LockstepCoordinator(LinkTestSupport.world("navigation"), "khepera", agent).takeTurns(true).runFor(10);
+        assertEquals(threads.eventLog(), turns.eventLog());
+        assertTrue(agent.stoppedAt > 0, "the robot met red1 with the turns too");
+    }
+
+    @Test
     void anAgentSideThatFailsEndsTheRunWithItsFailure() throws Exception {
         SimWorld world = LinkTestSupport.world("navigation");
         var run = new LockstepCoordinator(world, "khepera", data -> {

@@ -10,9 +10,9 @@ import java.util.function.Consumer;
  * The controller attached to one link: which connection speaks for the robot now (the last one that
  * proved the secret), and what its frames become: {@link LinkEvent}s in the {@link EventQueue},
  * at rebased times ({@link ClockRebase}), and {@code APPLIED} reports for the {@link CommandStream}.
- * Every connection reports here ({@link RobotConnection.Owner}).
+ * Every connection reports here ({@link ConnectionOwner}).
  */
-final class ControllerSession implements RobotConnection.Owner {
+final class ControllerSession implements ConnectionOwner {
     private final Consumer<String> log;
     private final LinkTimings timings;
     private final LinkConfig config;

@@ -22,20 +22,22 @@ final class LinkListener {
     private final ServerSocket server;
     private final LinkConfig config;
     private final HandshakeGuard guard;
-    private final RobotConnection.Owner owner;
+    private final ConnectionOwner owner;
     private final LinkCosts costs;
+    private final CallerTurn turn;
     /** Connections not yet closed, shaking hands or attached. */
     private final Set<RobotConnection> live = ConcurrentHashMap.newKeySet();
     private final Thread acceptor = new Thread(this::acceptLoop, "middleware-acceptor");
     private volatile boolean closed;
 
-    LinkListener(ServerSocket server, LinkConfig config, HandshakeGuard guard, RobotConnection.Owner owner,
-            LinkCosts costs) {
+    LinkListener(ServerSocket server, LinkConfig config, HandshakeGuard guard, ConnectionOwner owner,
+            LinkCosts costs, CallerTurn turn) {
         this.server = server;
         this.config = config;
         this.guard = guard;
         this.owner = owner;
         this.costs = costs;
+        this.turn = turn;
         acceptor.setDaemon(true);
     }
 
@@ -108,7 +110,7 @@ final class LinkListener {
                     s.close(); // not even a thread for it
                     continue;
                 }
-                RobotConnection c = new RobotConnection(s, owner, config, costs);
+                RobotConnection c = new RobotConnection(s, owner, config, costs, turn);
                 live.add(c);
                 c.start();
             } catch (IOException e) {

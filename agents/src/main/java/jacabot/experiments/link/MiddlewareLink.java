@@ -4,6 +4,7 @@ import jacabot.robot.link.Command;
 import jacabot.robot.link.Handshake;
 import jacabot.robot.link.LinkClock;
 import jacabot.robot.link.LinkCosts;
+import jacabot.robot.link.LockstepTurn;
 import jacabot.robot.link.MemoryLink;
 import jacabot.robot.link.Protocol;
 import java.io.IOException;
@@ -27,7 +28,9 @@ import java.util.function.Consumer;
  *   <li>{@link EventQueue}: the {@link LinkEvent}s on their way to the middleware;</li>
  *   <li>{@link CommandStream}: the commands out and their {@code APPLIED} reports ({@link LinkTimings});</li>
  *   <li>{@link Heartbeat}, {@link StepAcknowledgement}: heartbeats and lockstep acknowledgements,
- *       only while the agent reasons ({@link AgentProbes}).</li>
+ *       only while the agent reasons ({@link AgentProbes});</li>
+ *   <li>{@link CallerTurn}: in one process, a lockstep connection read and answered on the
+ *       controller's simulation thread ({@link #turnOnCaller}).</li>
  * </ul>
  * Each link has its own parts, so one process serves several robots' links; {@link LinkRegistry}
  * knows them all.
@@ -56,6 +59,7 @@ public final class MiddlewareLink implements AutoCloseable {
     private final ControllerSession session;
     private final AgentProbes agent = LinkRegistry.probes();
     private final StepAcknowledgement acks = new StepAcknowledgement(agent, this::acknowledge);
+    private final CallerTurn turn = new CallerTurn();
     /** Null for an in-process link, as are the heartbeat and the watchdog. */
     private final LinkListener listener;
     private final Heartbeat heartbeat;
@@ -74,7 +78,7 @@ public final class MiddlewareLink implements AutoCloseable {
             watchdog = null;
             return;
         }
-        listener = new LinkListener(server, config, handshakes, session, costs);
+        listener = new LinkListener(server, config, handshakes, session, costs, turn);
         watchdog = new ConnectionWatchdog(config.guards(), listener.live(), handshakes);
         heartbeat = new Heartbeat(config, session::current, commands, agent, acks, () -> send(Command.heartbeat()));
     }
@@ -107,6 +111,23 @@ public final class MiddlewareLink implements AutoCloseable {
         memory.listen(hello -> RobotConnection.attachInMemory(memory, hello, link.session, config, link.costs));
         LinkRegistry.opened(link);
         return link;
+    }
+
+    /**
+     * The controller is in this process and lockstep: its simulation thread, after writing each
+     * step, reads the step from this end of the socket and answers it ({@link LockstepTurn}), so no
+     * thread wakes up in a step. Call it before the controller connects, and give the turn to it
+     * ({@code RobotController.takeTurnsWith}). A turn serves only the connection its step was written
+     * on; another lockstep connection (it would have to prove the secret: an in-process run's is
+     * fresh) stays lent until a turn, not finding its own within 5 s, releases the turns.
+     * {@return the turn}
+     */
+    public LockstepTurn turnOnCaller() {
+        if (listener == null) {
+            throw new UnsupportedOperationException("an in-process link reads on the controller's thread already");
+        }
+        turn.enable();
+        return turn;
     }
 
     /** {@return the port listened on (the chosen one when configured with 0); 0 for an in-process link} */
@@ -241,6 +262,7 @@ public final class MiddlewareLink implements AutoCloseable {
             listener.stopAccepting();
         }
         session.close("the middleware closed the link");
+        turn.release();
         if (listener != null) {
             listener.closeConnections("the middleware closed the link");
             heartbeat.stop();

@@ -19,6 +19,7 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
+import java.net.SocketAddress;
 import java.util.List;
 
 /**
@@ -27,33 +28,20 @@ import java.util.List;
  * malformed reading is dropped and reported ({@link ReadingCheck}); after {@code maxBadFrames} of them
  * the connection is closed. Every way the connection can end is reported once, with its reason.
  * Over an in-process link ({@link #attachInMemory}) the same checks run on the controller's thread,
- * with neither handshake nor reading thread.
+ * with neither handshake nor reading thread; over a socket in one process, a lockstep connection's
+ * stream is lent to the controller's thread between the handshake and the end ({@link CallerTurn}).
  */
 final class RobotConnection {
-    /** What the connection tells the link. */
-    interface Owner {
-        /** The handshake succeeded: this connection is the robot now. */
-        void attached(RobotConnection c);
-
-        void frame(RobotConnection c, Uplink frame);
-
-        /** A frame was dropped (malformed, or the link failed on it). */
-        void badFrame(RobotConnection c, String reason);
-
-        /** The handshake failed: the connection never became the robot's. */
-        void refused(RobotConnection c, String reason, boolean authentication);
-
-        /** The connection ended (reason for the log and {@code Disconnected}). */
-        void detached(RobotConnection c, String reason);
-    }
-
     /** Null for an in-process link. */
     private final Socket socket;
+    /** The controller's end of the socket; null for an in-process link. */
+    private final SocketAddress remote;
+    private final CallerTurn turn;
     /** Null for a socket. */
     private final MemoryLink memory;
     private volatile boolean memoryClosed;
     private ReadingCheck check;
-    private final Owner owner;
+    private final ConnectionOwner owner;
     private final SensorInfoFilter.Limits limits;
     private final LinkCosts costs;
     private final LinkSecret secret;
@@ -66,12 +54,15 @@ final class RobotConnection {
     private volatile boolean handshakeDone;
     private int badFrames;
 
-    RobotConnection(Socket socket, Owner owner, LinkConfig config, LinkCosts costs) {
-        this(socket, null, owner, config, costs);
+    RobotConnection(Socket socket, ConnectionOwner owner, LinkConfig config, LinkCosts costs, CallerTurn turn) {
+        this(socket, null, owner, config, costs, turn);
     }
 
-    private RobotConnection(Socket socket, MemoryLink memory, Owner owner, LinkConfig config, LinkCosts costs) {
+    private RobotConnection(Socket socket, MemoryLink memory, ConnectionOwner owner, LinkConfig config, LinkCosts costs,
+            CallerTurn turn) {
         this.socket = socket;
+        this.remote = socket == null ? null : socket.getRemoteSocketAddress();
+        this.turn = turn;
         this.memory = memory;
         this.owner = owner;
         this.limits = config.limits();
@@ -84,9 +75,9 @@ final class RobotConnection {
      * The controller of an in-process link, attached at once: no handshake (nothing but this
      * process reaches the link), and its frames are read on the controller's writing thread.
      */
-    static MemoryLink.Reader attachInMemory(MemoryLink memory, Protocol.Hello hello, Owner owner, LinkConfig config,
+    static MemoryLink.Reader attachInMemory(MemoryLink memory, Protocol.Hello hello, ConnectionOwner owner, LinkConfig config,
             LinkCosts costs) throws IOException {
-        RobotConnection c = new RobotConnection(null, memory, owner, config, costs);
+        RobotConnection c = new RobotConnection(null, memory, owner, config, costs, null);
         var r = new SensorDataReader(memory.middlewareIn(), c.limits); // the stream header is there already
         r.measure(costs);
         c.reader = r;
@@ -144,6 +135,14 @@ final class RobotConnection {
 
     Protocol.Hello hello() {
         return hello;
+    }
+
+    SocketAddress remote() {
+        return remote;
+    }
+
+    SensorDataReader reader() {
+        return reader;
     }
 
     boolean handshakeDone() {
@@ -205,6 +204,9 @@ final class RobotConnection {
         } catch (IOException e) {
             // closed anyway
         }
+        if (turn != null) {
+            turn.giveBack(this); // its thread reads the end and reports it
+        }
     }
 
     private void run() {
@@ -224,25 +226,19 @@ final class RobotConnection {
             check = new ReadingCheck(h.sensors());
             var r = new SensorDataReader(socket.getInputStream(), limits);
             r.measure(costs);
+            reader = r;
+            reason = h.lockstep() && turn != null ? turn.lend(this) : null; // the controller's thread reads meanwhile
             if (h.lockstep()) {
                 r.spinWith(new LockstepSpin()); // the controller waits for our answer, and we for its next step
             }
-            reader = r;
-            while (true) {
+            while (reason == null) {
                 reason = handle(r.read());
-                if (reason != null) {
-                    break;
-                }
             }
         } catch (AuthenticationException e) {
             reason = e.getMessage();
             authentication = true;
-        } catch (ProtocolException e) {
-            reason = e.getMessage();
-        } catch (IOException e) {
-            reason = "link dropped: " + e.getMessage();
-        } catch (RuntimeException e) {
-            reason = "link failed: " + e;
+        } catch (IOException | RuntimeException e) {
+            reason = endReason(e);
         }
         synchronized (this) {
             if (closeReason != null) {
@@ -259,8 +255,16 @@ final class RobotConnection {
         }
     }
 
+    /** {@return why reading the stream ended with {@code e}} */
+    static String endReason(Exception e) {
+        if (e instanceof ProtocolException) {
+            return e.getMessage();
+        }
+        return e instanceof IOException ? "link dropped: " + e.getMessage() : "link failed: " + e;
+    }
+
     /** Checks a frame and passes it on; {@return why the connection ends with it, or null} */
-    private String handle(Uplink frame) {
+    String handle(Uplink frame) {
         if (frame == null) {
             return "the controller closed the connection";
         }

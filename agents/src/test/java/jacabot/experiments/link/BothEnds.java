@@ -23,6 +23,15 @@ final class BothEnds implements AutoCloseable {
 
     /** Opens the middleware end, points the controller at it and starts the controller (not its world). */
     static BothEnds start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig) throws IOException {
+        return start(world, controllerConfig, linkConfig, false);
+    }
+
+    /**
+     * As {@link #start(SimWorld, ControllerConfig, LinkConfig)}; with {@code turns}, the lockstep
+     * controller takes the middleware's turns on its simulation thread ({@link MiddlewareLink#turnOnCaller}).
+     */
+    static BothEnds start(SimWorld world, ControllerConfig controllerConfig, LinkConfig linkConfig, boolean turns)
+            throws IOException {
         LinkSecret secret = LinkSecret.random();
         MiddlewareLink link = MiddlewareLink.open(linkConfig.withBindAddress(InetAddress.getLoopbackAddress())
                 .withPort(0).withSecret(secret));
@@ -30,6 +39,9 @@ final class BothEnds implements AutoCloseable {
             RobotController controller = new RobotController(world,
                     controllerConfig.withAddress(InetAddress.getLoopbackAddress().getHostAddress(), link.port())
                             .withSecret(secret));
+            if (turns) {
+                controller.takeTurnsWith(link.turnOnCaller());
+            }
             controller.start();
             return new BothEnds(link, controller);
         } catch (RuntimeException e) {
