@@ -1,0 +1,74 @@
+package jacabot.app.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.robot.Robot;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Team-delivery's charger (thesis Chapter 6; team-charger.asl, ChargerQueue): three robots start
+ * with low batteries, the neediest farthest from the charger, the least needy nearest. The
+ * charger's queue is ordered by need, so they charge in the order of their energy, not of their
+ * arrival (a first-come queue gives the nearest robot the charger first), and none waits at the
+ * charger for more than a minute.
+ */
+class TeamChargerOrderScenarioTest {
+    /** Three robots on a line towards the charger in the corner; no cylinders. */
+    private static final String WORLD = """
+            {
+              "name": "team-charger-order",
+              "arena": { "width": 1.4, "depth": 1.4, "wallThickness": 0.02, "wallHeight": 0.1 },
+              "basicTimeStep": 8, "controlStep": 40, "seed": 3,
+              "cylinders": [],
+              "storage": { "x": 0.55, "z": 0.55, "radius": 0.06 },
+              "charger": { "x": -0.55, "z": -0.55, "radius": 0.06, "power": 20 },
+              "robots": [
+                { "name": "khepera1", "model": "khepera", "x": -0.25, "z": -0.45, "heading": 180, "battery": 470 },
+                { "name": "khepera2", "model": "khepera", "x": 0.05, "z": -0.25, "heading": 180, "battery": 420 },
+                { "name": "khepera3", "model": "khepera", "x": 0.35, "z": 0.05, "heading": 180, "battery": 330 }
+              ]
+            }
+            """;
+    private static final double SECONDS = 120;
+
+    @Tag("long")
+    @Test
+    void theNeediestRobotChargesFirstAndNobodyWaitsLong() throws Exception {
+        SimWorld world = SimWorld.of(WorldFileReader.parse(WORLD, "team-charger-order.json"));
+        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        Map<String, Double> last = new HashMap<>();
+        List<String> charged = new ArrayList<>(); // the robots in the order their batteries first rose
+        double longestWait;
+        try (var run = new TeamLockstepRun(world, agent, 3, quiet)) {
+            run.stepLogs(false);
+            run.onStep(t -> {
+                for (Robot r : world.robots()) {
+                    double e = r.getBattery().energy();
+                    Double before = last.put(r.name(), e);
+                    if (before != null && e > before + 1e-6 && !charged.contains(r.name())) {
+                        charged.add(r.name());
+                    }
+                }
+            });
+            run.runFor(SECONDS);
+            assertTrue(run.agentFailure().isEmpty(), () -> "no agent failed: " + run.agentFailure());
+            longestWait = run.watch().longestChargerWait();
+        }
+        assertEquals(List.of("khepera3", "khepera2", "khepera1"), charged, "charged in the order of need");
+        assertTrue(longestWait <= 60, "the longest wait at the charger: " + longestWait + " s");
+        for (Robot r : world.robots()) {
+            assertTrue(r.robotContactTime() < 2, r.name() + " touched another robot for " + r.robotContactTime() + " s");
+        }
+    }
+}
