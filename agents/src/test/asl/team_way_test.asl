@@ -43,3 +43,15 @@ mock_operation(_, ok).
        !until(mock_called(stop), 3000);
        !assert_true(mock_called(setSpeeds(40, 40)));     // moves on, away from it
        -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_two_robots_in_a_queue_go_by_name
+    <- !forget_calls; -storageQueue(_); +storageQueue([team_way_test, khepera1]);
+       !!perceive(robotAt(zeta, 0.1, 0.3));              // not queued: it gives way to this robot
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(zeta, _, _);
+       !!perceive(robotAt(khepera1, 0.1, 0.3));          // queued too, an earlier name: this robot gives way
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(-40, -40)));
+       -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).

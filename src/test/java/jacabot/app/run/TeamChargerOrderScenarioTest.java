@@ -17,10 +17,11 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Team-delivery's charger (thesis Chapter 6; team-charger.asl, ChargerQueue): three robots start
- * with low batteries, the neediest farthest from the charger, the least needy nearest. The
- * charger's queue is ordered by need, so they charge in the order of their energy, not of their
- * arrival (a first-come queue gives the nearest robot the charger first), and none waits at the
- * charger for more than a minute.
+ * with low batteries, the neediest farthest from the charger, the least needy nearest. The nearest
+ * asks first, finds the charger free and takes it; the other two book their places while it
+ * charges. The queue is ordered by need, so the farthest, neediest robot charges next; a
+ * first-come queue (robots queueing as they arrive near the charger) gives it to the nearer one.
+ * Nobody waits at the charger for more than a minute, nor touches another robot for 2 s.
  */
 class TeamChargerOrderScenarioTest {
     /** Three robots on a line towards the charger in the corner; no cylinders. */
@@ -39,7 +40,7 @@ class TeamChargerOrderScenarioTest {
               ]
             }
             """;
-    private static final double SECONDS = 120;
+    private static final double SECONDS = 150;
 
     @Tag("long")
     @Test
@@ -65,7 +66,7 @@ class TeamChargerOrderScenarioTest {
             assertTrue(run.agentFailure().isEmpty(), () -> "no agent failed: " + run.agentFailure());
             longestWait = run.watch().longestChargerWait();
         }
-        assertEquals(List.of("khepera3", "khepera2", "khepera1"), charged, "charged in the order of need");
+        assertEquals(List.of("khepera1", "khepera3", "khepera2"), charged, "the first to ask, then by need");
         assertTrue(longestWait <= 60, "the longest wait at the charger: " + longestWait + " s");
         for (Robot r : world.robots()) {
             assertTrue(r.robotContactTime() < 2, r.name() + " touched another robot for " + r.robotContactTime() + " s");
