@@ -6,6 +6,9 @@
 // storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
+// a search goes on from anywhere: no way back to where the battery ran low; a look around first
+resumeAtCharger.
+lookFirst.
 
 !start.
 

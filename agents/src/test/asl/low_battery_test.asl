@@ -42,3 +42,18 @@ mock_operation(_, ok).
        -targetReached; !!perceive(targetReached);
        !until(not charging, 10000);
        !assert_false(charging).
+
+// an agent whose task goes on from anywhere (tidy-up) resumes at the charger
+@[test]
++!test_an_agent_that_resumes_at_the_charger_does_not_go_back_to_the_marked_point
+    <- !until(not charging, 10000); +resumeAtCharger; !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); !!perceive(charged);
+       !until(not charging, 10000);
+       !assert_false(charging);
+       !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.1)));  // no way back
+       -resumeAtCharger.

@@ -103,3 +103,48 @@ mock_operation(_, ok).
        !forget_calls; -+leftSensor(0); -+rightSensor(0);
        !alongWall(left);
        !assert_true(mock_called(setSpeeds(21, 70))).             // mirrored for the wall on the left
+
+@[test]
++!test_an_obstacle_met_when_the_sweep_comes_no_nearer_its_waypoint_starts_a_following_towards_it
+    <- .system_time(T); +searching; -+waypoint(-0.9, 0, T - 30000); -+closerAt(T - 30000);
+       -obstacle(true); +obstacle(true);
+       !until(followingWall(_, _, _), 1000);
+       !assert_true(followingWall(_, _, _) & followTarget(-0.9, 0) & followedTowards(-0.9, 0, 1, _));
+       -obstacle(true); -searching;                               // a cylinder found: the search ends
+       !until(not followingWall(_, _, _), 1000);
+       !assert_false(followingWall(_, _, _) | followTarget(_, _) | avoiding).
+
+@[test]
++!test_an_obstacle_met_while_the_sweep_comes_nearer_its_waypoint_is_left_to_avoidance
+    <- .system_time(T); +searching; -+waypoint(-0.9, 0, T); -+closerAt(T);
+       -obstacle(true); +obstacle(true);
+       .wait(100);
+       !assert_false(followingWall(_, _, _));
+       -obstacle(true); -searching.
+
+@[test]
++!test_the_second_following_towards_one_waypoint_takes_the_other_side
+    <- .system_time(T); +searching; -+waypoint(-0.9, 0, T - 30000); -+closerAt(T - 30000);
+       .abolish(followedTowards(_, _, _, _)); +followedTowards(-0.9, 0, 1, left);
+       -obstacle(true); +obstacle(true);
+       !until(followingWall(_, _, _), 1000);
+       !assert_true(followingWall(right, _, _) & followedTowards(-0.9, 0, 2, right));
+       -obstacle(true); -searching;
+       !until(not followingWall(_, _, _), 1000);
+       -+closerAt(T - 30000); +searching; +obstacle(true);        // two followings: no third
+       .wait(100);
+       !assert_false(followingWall(_, _, _));
+       -obstacle(true); -searching.
+
+@[test]
++!test_wedged_twice_along_a_wall_gives_the_following_up
+    <- .system_time(T); +delivering; -+detours(0); +avoiding; +followingWall(right, T, 1); -wedgedAlong;
+       +stuck;                                                    // the first time: back off, go on
+       !until(wedgedAlong, 3000);
+       -stuck; .wait(100);
+       !assert_true(followingWall(right, _, _) & wedgedAlong);
+       +stuck;                                                    // the second: not a wall, boxes
+       !until(not followingWall(_, _, _), 3000);
+       !assert_true(gaveUpSide(right));
+       !assert_false(followingWall(_, _, _) | avoiding);
+       -stuck; -delivering.

@@ -7,7 +7,8 @@ lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
 // Reads: charger(X, Z) (the world file).
-// Beliefs: charging, atCharger. Rules it extends: travelling, halted.
+// Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
+// point). Rules it extends: travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
 // energy-agent.asl's when it is another agent's.
@@ -45,7 +46,14 @@ forgetOnFall(atCharger).
        !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
-       -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
+       !backToTask(X, Y, Z, O).
+
+// back to the marked point, and the task resumes there (the thesis'); an agent whose task goes on
+// from anywhere (a search: tidy-up) believes resumeAtCharger and resumes where it charged
+@resumeAtCharger +!backToTask(_, _, _, O) : resumeAtCharger <- stop; .print("Resuming from the charger"); !resumeTask(O).
+@backToMarked
++!backToTask(X, Y, Z, O)
+    <- -+targetPoint(X, Z); setUpTargetPoint(X, Y, Z); -+detours(0); !computeGap; !!balance; !!steer;
        !reachMarked; stop; .print("Previous pt reached"); !resumeTask(O).
 
 // hooks for a robot that shares the charger (a team's skill: team-claims): its turn, then leave it

@@ -39,6 +39,6 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
        .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
        if (not sweep([_ | _])) { !planSweep };
        println("Looking again where a cylinder was seen"); +searching;
-       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000).
+       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 @searchingAlready +!searchFromMemory : searching.
 @searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.

@@ -27,6 +27,7 @@ setUpGoal(setUpSweep).
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
 // lastAvoid(T) (avoidance); maxSpeed(M).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
+// closerAt(T) (when the robot last came nearer its waypoint: way-round reads it),
 // lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot);
 // resumeSweep (the agent's, optional: a new search goes on where the last one stopped).
 // Needs: !balance (delivery), !escape (recovery). Include it after recovery, before random walk.
@@ -59,7 +60,7 @@ setUpGoal(setUpSweep).
 
 @nextWaypoint
 +!nextWaypoint : sweep([[X, Z] | Rest])
-    <- .concat(Rest, [[X, Z]], L); -+sweep(L); .system_time(T); -+waypoint(X, Z, T); -+closest(1000).
+    <- .concat(Rest, [[X, Z]], L); -+sweep(L); .system_time(T); -+waypoint(X, Z, T); -+closest(1000); -+closerAt(T).
 @noWaypoint +!nextWaypoint.
 
 // one step towards the waypoint: align, go 2 s
@@ -73,12 +74,15 @@ setUpGoal(setUpSweep).
 @waypointSkipped
 +!sweepStep : waypoint(X, Z, T0) & .system_time(T) & patience(P) & T - T0 > P
     <- !nextWaypoint.
+// closest(D) and closerAt(T): the nearest the robot has come to its waypoint, and when it came
+// progressStep nearer (0.1 m when off); the waypoint's own time is the progress's only when on
 @towardsWaypoint
-+!sweepStep : waypoint(X, Z, _) & location(Lx, _, Lz) & sweepSpeed(V)
-    <- .system_time(T);
-       if (progressStep(G) & .number(G) & closest(B)) {
-           Dist = math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz));
-           if (Dist < B - G) { -+closest(Dist); -+waypoint(X, Z, T) }
++!sweepStep : waypoint(X, Z, _) & location(Lx, _, Lz) & sweepSpeed(V) & closest(B)
+    <- .system_time(T); Dist = math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz));
+       if (progressStep(G) & .number(G)) { Step = G } else { Step = 0.1 };
+       if (Dist < B - Step) {
+           -+closest(Dist); -+closerAt(T);
+           if (progressStep(G2) & .number(G2)) { -+waypoint(X, Z, T) }
        };
        if (lastAvoid(A) & T - A < 3000) { forward; .wait(1500) };
        ?location(Lx2, _, Lz2); computeAngle(Lx2, Lz2, X, Z, D); -+desired(D); !balance; setSpeeds(V, V); .wait(2000).

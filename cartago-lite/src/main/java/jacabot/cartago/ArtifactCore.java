@@ -28,6 +28,8 @@ final class ArtifactCore {
     /** Declared out ports and the artifacts linked to each, in link order. */
     private final Map<String, List<ArtifactId>> ports = new ConcurrentHashMap<>();
     private volatile boolean disposed;
+    /** Made at the first operation recorded ({@link Workspace#recordOperations}). */
+    private volatile OperationHistory history;
 
     ArtifactCore(Artifact artifact, ArtifactId id, ArtifactType type, Workspace workspace) {
         this.artifact = artifact;
@@ -58,6 +60,27 @@ final class ArtifactCore {
     List<ArtifactId> linked(String port) {
         List<ArtifactId> linked = ports.get(port);
         return linked == null ? null : List.copyOf(linked);
+    }
+
+    /** Adds a completed operation to this artifact's log, keeping {@code lastN} per agent. */
+    void recordOperation(OperationRecord record, int lastN) {
+        OperationHistory h = history;
+        if (h == null) {
+            synchronized (this) {
+                h = history;
+                if (h == null) {
+                    h = new OperationHistory();
+                    history = h;
+                }
+            }
+        }
+        h.add(record, lastN);
+    }
+
+    /** {@return the operations recorded on this artifact, in completion order} */
+    List<OperationRecord> operationLog() {
+        OperationHistory h = history;
+        return h == null ? List.of() : h.records();
     }
 
     Artifact artifact() {

@@ -60,6 +60,8 @@ final class OpExecution implements Runnable {
     @Override
     public void run() {
         Scheduler scheduler = core.workspace().scheduler();
+        int logged = core.workspace().operationsKept();
+        long started = logged > 0 ? core.workspace().clock().nowMillis() : 0;
         OpOutcome outcome;
         try {
             enter(this::startable);
@@ -79,6 +81,11 @@ final class OpExecution implements Runnable {
                 core.rollback();
             }
             exit();
+        }
+        if (logged > 0) {
+            core.recordOperation(new OperationRecord(started, core.workspace().clock().nowMillis(),
+                    agent == null ? "" : agent.name(), op.name() + "/" + op.method().getParameterCount(), outcome.succeeded(),
+                    outcome instanceof OpOutcome.Failure f ? (f.reasonFunctor() != null ? f.reasonFunctor() : f.message()) : ""), logged);
         }
         report(outcome);
         scheduler.finished(this);

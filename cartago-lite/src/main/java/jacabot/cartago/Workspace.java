@@ -1,20 +1,14 @@
 package jacabot.cartago;
 
 import java.io.PrintStream;
-import java.lang.reflect.Method;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.ConcurrentSkipListMap;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A container of artifacts and the agents working with them, as in CArtAgO. It starts with the
@@ -26,15 +20,14 @@ import java.util.concurrent.atomic.AtomicInteger;
  * the operation, converts the arguments and reports the outcome to a callback; they perceive
  * through the {@link ArtifactObserver} they joined with. See {@link Builder} for the two execution
  * modes (threaded, stepped) and the thread bound.
+ *
+ * <p>Its parts: the artifacts it holds ({@link ArtifactRegistry}), the agents that joined and what
+ * each focuses ({@link FocusBook}), and how operations are resolved ({@link OpResolver}) and run
+ * ({@link Scheduler}); this class is the entry point that ties them together.
  */
 public final class Workspace implements AutoCloseable {
     /** How operations run: on parallel carriers, or one step at a time inside {@link #runPending()}. */
     public enum Mode { THREADED, STEPPED }
-
-    /** The workspace's own artifacts, which agents cannot dispose. */
-    private static final Set<String> RESERVED = Set.of("workspace", "console");
-    private static final Method DISPOSE_HOOK = hook("dispose");
-    private static final Method AGENT_LEFT_HOOK = hook("agentLeft", AgentId.class);
 
     private final String name;
     private final Mode mode;
@@ -42,13 +35,11 @@ public final class Workspace implements AutoCloseable {
     private final CartagoLogger logger;
     private final PrintStream console;
     private final Scheduler scheduler;
-    private final ArtifactFactory factory;
-    private final AtomicInteger ids = new AtomicInteger();
-    private final Set<String> names = ConcurrentHashMap.newKeySet();
-    private final Map<String, ArtifactCore> byName = new ConcurrentHashMap<>();
-    private final Map<Integer, ArtifactCore> byId = new ConcurrentSkipListMap<>();
     private final FocusBook agents;
+    private final ArtifactRegistry registry;
     private volatile boolean closed;
+    /** Completed operations kept per agent and artifact; 0: the operation log is off. */
+    private volatile int operationsKept;
 
     private Workspace(Builder b) {
         this.name = b.name;
@@ -56,8 +47,8 @@ public final class Workspace implements AutoCloseable {
         this.clock = b.clock;
         this.logger = b.logger;
         this.console = b.console;
-        this.factory = new ArtifactFactory(b.loader);
         this.agents = new FocusBook(name);
+        this.registry = new ArtifactRegistry(this, new ArtifactFactory(b.loader), agents);
         this.scheduler = mode == Mode.STEPPED
                 ? new SteppedScheduler(name, b.maxThreads, clock, logger)
                 : new ThreadedScheduler(name, b.maxThreads, clock, logger);
@@ -107,7 +98,7 @@ public final class Workspace implements AutoCloseable {
             return;
         }
         for (ArtifactId focused : entry.focused()) {
-            ArtifactCore core = byId.get(focused.id());
+            ArtifactCore core = registry.byId(focused.id());
             try {
                 if (core != null) {
                     agents.stopFocus(agent, core);
@@ -116,41 +107,12 @@ public final class Workspace implements AutoCloseable {
                 // Nothing to stop.
             }
         }
-        ArtifactCore body = byId.get(entry.body().id());
+        ArtifactCore body = registry.byId(entry.body().id());
         if (body != null) {
-            dispose(body);
+            registry.dispose(body);
         }
         agents.remove(agent);
-        for (ArtifactCore core : byId.values()) {
-            if (overridesAgentLeft(core.artifact().getClass())) {
-                tellAgentLeft(core, agent);
-            }
-        }
-    }
-
-    private void tellAgentLeft(ArtifactCore core, AgentId agent) {
-        core.lock().lock();
-        try {
-            if (!core.isDisposed()) {
-                OpExecution.hook(core, null).runHook(AGENT_LEFT_HOOK, new Object[] {agent});
-            }
-        } catch (RuntimeException | Error e) {
-            logger.warning(core.id().name(), "agentLeft(" + agent.name() + ") failed", e);
-        } finally {
-            core.lock().unlock();
-        }
-    }
-
-    private static boolean overridesAgentLeft(Class<?> type) {
-        for (Class<?> c = type; c != Artifact.class && c != null; c = c.getSuperclass()) {
-            try {
-                c.getDeclaredMethod("agentLeft", AgentId.class);
-                return true;
-            } catch (NoSuchMethodException e) {
-                // look further up
-            }
-        }
-        return false;
+        registry.tellAgentLeft(agent);
     }
 
     /** {@return the agents that have joined} */
@@ -256,7 +218,7 @@ public final class Workspace implements AutoCloseable {
      */
     public ArtifactId createArtifact(String artifactName, String className, Object... params) throws CartagoException {
         try {
-            return create(artifactName, factory.load(className), params, null);
+            return create(artifactName, registry.load(className), params, null);
         } catch (OpFailedException e) {
             throw new CartagoException(e.failure());
         }
@@ -275,7 +237,7 @@ public final class Workspace implements AutoCloseable {
     /** Disposes an artifact from Java code. @throws CartagoException if it does not exist */
     public void disposeArtifact(ArtifactId id) throws CartagoException {
         try {
-            dispose(resolve(id));
+            registry.dispose(registry.resolve(id));
         } catch (OpFailedException e) {
             throw new CartagoException(e.failure());
         }
@@ -288,8 +250,7 @@ public final class Workspace implements AutoCloseable {
 
     /** {@return the id of the live artifact called {@code artifactName}} */
     public Optional<ArtifactId> lookup(String artifactName) {
-        ArtifactCore core = byName.get(artifactName);
-        return core == null ? Optional.empty() : Optional.of(core.id());
+        return registry.lookup(artifactName);
     }
 
     /**
@@ -297,163 +258,46 @@ public final class Workspace implements AutoCloseable {
      * (e.g. a simulation runner collecting what an artifact produced); agents never get it}
      */
     public <T extends Artifact> Optional<T> artifactObject(ArtifactId id, Class<T> type) {
-        ArtifactCore core = byId.get(id.id());
+        ArtifactCore core = registry.byId(id.id());
         return core != null && type.isInstance(core.artifact()) ? Optional.of(type.cast(core.artifact())) : Optional.empty();
     }
 
     /** {@return the id of the live artifact numbered {@code id}} */
     public Optional<ArtifactId> artifact(int id) {
-        ArtifactCore core = byId.get(id);
+        ArtifactCore core = registry.byId(id);
         return core == null ? Optional.empty() : Optional.of(core.id());
     }
 
     /** {@return the live artifacts, oldest first} */
     public List<ArtifactId> artifacts() {
         List<ArtifactId> result = new ArrayList<>();
-        for (ArtifactCore core : byId.values()) {
+        for (ArtifactCore core : registry.all()) {
             result.add(core.id());
         }
         return result;
     }
 
     ArtifactId create(String artifactName, String className, Object[] params, AgentId creator) {
-        return create(artifactName, factory.load(className), params, creator);
+        return registry.create(artifactName, registry.load(className), params, creator);
     }
 
     ArtifactId create(String artifactName, Class<? extends Artifact> type, Object[] params, AgentId creator) {
-        if (closed) {
-            throw new OpFailedException("workspace " + name + " is closed", "workspace_closed");
-        }
-        if (artifactName == null || artifactName.isEmpty()) {
-            throw new OpFailedException("an artifact needs a non-empty name", "bad_argument", 1);
-        }
-        ArtifactType artifactType = factory.typeOf(type);
-        if (!names.add(artifactName)) {
-            throw new OpFailedException("an artifact called " + artifactName + " already exists in workspace " + name,
-                    "duplicate_name", artifactName);
-        }
-        try {
-            Artifact artifact = factory.instantiate(type);
-            ArtifactId id = new ArtifactId(ids.incrementAndGet(), artifactName, type.getName(), name, creator);
-            ArtifactCore core = new ArtifactCore(artifact, id, artifactType, this);
-            artifact.bind(core);
-            registerDuringInit(core);
-            try {
-                factory.init(core, params);
-            } catch (RuntimeException e) {
-                unregister(core);
-                core.lock().lock();
-                try {
-                    core.markDisposed();
-                    artifactsChanged();
-                } finally {
-                    core.lock().unlock();
-                }
-                throw e;
-            }
-            byName.put(artifactName, core);
-            artifactsChanged();
-            return id;
-        } catch (RuntimeException e) {
-            names.remove(artifactName);
-            throw e;
-        }
-    }
-
-    /** Internal operations started by {@code init} need the artifact findable by id only. */
-    private void registerDuringInit(ArtifactCore core) {
-        byId.put(core.id().id(), core);
-        artifactsChanged();
-    }
-
-    private void unregister(ArtifactCore core) {
-        byId.remove(core.id().id());
-        byName.remove(core.id().name(), core);
-        artifactsChanged();
-    }
-
-    /** Disposes {@code core}: runs its hook, ends its observers' focus and forgets it. */
-    void dispose(ArtifactCore core) {
-        core.lock().lock();
-        try {
-            if (core.isDisposed()) {
-                throw new OpFailedException("artifact " + core.id().name() + " is already disposed",
-                        "unknown_artifact", core.id().name());
-            }
-            try {
-                OpExecution.hook(core, null).runHook(DISPOSE_HOOK, new Object[0]);
-            } catch (RuntimeException | Error e) {
-                logger.warning(core.id().name(), "dispose() failed", e);
-            }
-            agents.forget(core.id(), core.markDisposed());
-            artifactsChanged();
-        } finally {
-            core.lock().unlock();
-        }
-        unregister(core);
-        names.remove(core.id().name());
+        return registry.create(artifactName, type, params, creator);
     }
 
     /** Disposal asked by an agent: the workspace's own artifacts and bodies are refused. */
     void disposeFor(Object ref) {
-        ArtifactCore core = resolve(ref);
-        if (RESERVED.contains(core.id().name()) && core.id().creator() == null || core.artifact() instanceof AgentBodyArtifact) {
-            throw new OpFailedException("artifact " + core.id().name() + " belongs to the workspace and cannot be disposed",
-                    "cannot_dispose", core.id().name());
-        }
-        dispose(core);
+        registry.disposeFor(ref);
     }
 
     /** {@return the live artifact an agent refers to: by ArtifactId, name or number} */
     ArtifactCore resolve(Object ref) {
-        ArtifactCore core = null;
-        if (ref instanceof ArtifactId) {
-            ArtifactId id = (ArtifactId) ref;
-            core = byId.get(id.id());
-            core = core != null && core.id().equals(id) ? core : null;
-        } else if (ref instanceof CharSequence) {
-            core = byName.get(ref.toString());
-        } else if (ref instanceof Number) {
-            core = byId.get(((Number) ref).intValue());
-        }
-        if (core == null || core.isDisposed()) {
-            throw new OpFailedException("no artifact " + ref + " in workspace " + name, "unknown_artifact", String.valueOf(ref));
-        }
-        return core;
+        return registry.resolve(ref);
     }
 
-    /**
-     * {@return live artifacts, oldest first} Every operation without a target asks for them
-     * ({@link OpResolver}), so the list is kept until an artifact comes or goes: it is stamped with
-     * the {@link #artifactsChanged} count read before it was made.
-     */
+    /** {@return live artifacts, oldest first (kept until an artifact comes or goes)} */
     List<ArtifactCore> cores() {
-        Live known = live;
-        long version = artifactsVersion;
-        if (known != null && known.version() == version) {
-            return known.cores();
-        }
-        List<ArtifactCore> cores = new ArrayList<>();
-        for (ArtifactCore core : byId.values()) {
-            if (!core.isDisposed() && byName.get(core.id().name()) == core) {
-                cores.add(core);
-            }
-        }
-        List<ArtifactCore> made = List.copyOf(cores);
-        live = new Live(version, made);
-        return made;
-    }
-
-    /** The live artifacts as of a count of {@link #artifactsChanged}. */
-    private record Live(long version, List<ArtifactCore> cores) {
-    }
-
-    private volatile Live live;
-    private volatile long artifactsVersion;
-
-    /** Called after each change to the artifacts {@link #cores} lists (made, named, disposed, forgotten). */
-    private synchronized void artifactsChanged() {
-        artifactsVersion++;
+        return registry.cores();
     }
 
     boolean hasJoined(AgentId agent) {
@@ -465,13 +309,13 @@ public final class Workspace implements AutoCloseable {
      * included), as name/arity, sorted; empty once it is disposed}
      */
     public List<String> operationsOf(ArtifactId id) {
-        ArtifactCore core = byId.get(id.id());
+        ArtifactCore core = registry.byId(id.id());
         return core == null ? List.of() : core.type().usageInterface();
     }
 
     /** {@return the agents observing {@code id}, in focus order} */
     public List<AgentId> observersOf(ArtifactId id) {
-        ArtifactCore core = byId.get(id.id());
+        ArtifactCore core = registry.byId(id.id());
         if (core == null) {
             return List.of();
         }
@@ -481,6 +325,35 @@ public final class Workspace implements AutoCloseable {
         } finally {
             core.lock().unlock();
         }
+    }
+
+    // ---- the operation log (a debugger's view; CArtAgO's loggers see every operation as it goes) ----
+
+    /**
+     * Keeps, from now on, the last {@code lastN} completed operations of each agent on each
+     * artifact ({@link #operationLog}); 0, the default, keeps none. Off, it costs one volatile read
+     * per operation; on, a clock reading and a record. It does not change how operations run.
+     */
+    public void recordOperations(int lastN) {
+        if (lastN < 0) {
+            throw new IllegalArgumentException("lastN must be 0 or more, not " + lastN);
+        }
+        operationsKept = lastN;
+    }
+
+    /** {@return whether {@link #recordOperations} is on} */
+    public boolean recordsOperations() {
+        return operationsKept > 0;
+    }
+
+    /** {@return the operations recorded on {@code id} so far, in the order they completed; empty once it is disposed} */
+    public List<OperationRecord> operationLog(ArtifactId id) {
+        ArtifactCore core = registry.byId(id.id());
+        return core == null ? List.of() : core.operationLog();
+    }
+
+    int operationsKept() {
+        return operationsKept;
     }
 
     // ---- configuration ----
@@ -522,14 +395,14 @@ public final class Workspace implements AutoCloseable {
             return;
         }
         closed = true;
-        List<ArtifactCore> all = new ArrayList<>(byId.values());
+        List<ArtifactCore> all = new ArrayList<>(registry.all());
         Collections.reverse(all);
         for (ArtifactCore core : all) {
             try {
                 if (core.lock().tryLock(1, TimeUnit.SECONDS)) {
                     try {
                         if (!core.isDisposed()) {
-                            dispose(core);
+                            registry.dispose(core);
                         }
                     } finally {
                         core.lock().unlock();
@@ -543,14 +416,6 @@ public final class Workspace implements AutoCloseable {
             }
         }
         scheduler.close();
-    }
-
-    private static Method hook(String name, Class<?>... parameters) {
-        try {
-            return Artifact.class.getDeclaredMethod(name, parameters);
-        } catch (NoSuchMethodException e) {
-            throw new ExceptionInInitializerError(e);
-        }
     }
 
     @Override

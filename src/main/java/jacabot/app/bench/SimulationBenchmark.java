@@ -36,9 +36,7 @@ public final class SimulationBenchmark {
      * @param measuredRuns measured runs; the median one is reported
      */
     public SimulationBenchmark(Path world, double seconds, long seed, int warmups, int measuredRuns, PrintStream out) {
-        if (warmups < 0 || measuredRuns < 1) {
-            throw new IllegalArgumentException("warm-up runs must be >= 0 and measured runs >= 1, got " + warmups + " and " + measuredRuns);
-        }
+        BenchRuns.check(warmups, measuredRuns);
         this.world = world;
         this.seconds = seconds;
         this.seed = seed;

@@ -45,9 +45,7 @@ public final class TeamSimulationBenchmark {
         if (robots < 1 || robots > world.robots().size()) {
             throw new IllegalArgumentException("a team of 1.." + world.robots().size() + " robots in this world, got " + robots);
         }
-        if (warmups < 0 || measuredRuns < 1) {
-            throw new IllegalArgumentException("warm-up runs must be >= 0 and measured runs >= 1, got " + warmups + " and " + measuredRuns);
-        }
+        BenchRuns.check(warmups, measuredRuns);
         this.world = world;
         this.agent = agent;
         this.robots = robots;

@@ -7,17 +7,9 @@ import jacabot.agent.semantics.Event;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
-import jacabot.cartago.AgentId;
 import jacabot.cartago.ArtifactId;
-import jacabot.cartago.ArtifactObserverAdapter;
 import jacabot.cartago.CartagoException;
-import jacabot.cartago.CartagoLogger;
-import jacabot.cartago.OpTarget;
-import jacabot.cartago.SimulatedClock;
-import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.CAgentArch;
-import jacabot.cartago.bridge.CartagoEnvironment;
-import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
 import jacabot.experiments.link.LatencyRecorder;
 import jacabot.experiments.link.LatencyStats;
@@ -39,23 +31,13 @@ import java.util.function.Consumer;
  * only then does the world advance. Agents, artifacts and the world all run in simulated time,
  * so a run is as fast as the machine allows and replays exactly under a seed. A robot may be
  * programmed by several agents sharing its middleware artifact ({@link RobotAgent}): all of them
- * reason every step until the system is idle.
+ * reason every step until the system is idle. Its clock, workspace and agents are the
+ * {@link SteppedPlatform}'s.
  */
-public final class LockstepRun implements AutoCloseable {
-    /** At most this many reasoning cycles per control step (a busy agent cannot stall the world). */
-    static final long CYCLES_PER_STEP = 20_000;
-
-    private final SimWorld world;
+public final class LockstepRun extends SteppedPlatform {
     private final String robotName;
-    /** The one simulated clock: the artifacts' await_time and the agents' .wait both read it. */
-    private final SimulatedClock clock = new SimulatedClock();
-    private final Workspace workspace;
-    private final LocalMAS mas;
-    private final JacaStepper stepper;
-    private final AgentId host;
     private final ArtifactId middlewareId;
     private final MiddlewareArtifact middleware;
-    private long cycles;
     /** Reactive time: from a step's readings reaching the middleware to the first plan they trigger. */
     private final LatencyRecorder reactive = new LatencyRecorder(1_000_000);
     private long deliveredNanos;
@@ -98,20 +80,15 @@ public final class LockstepRun implements AutoCloseable {
      */
     public LockstepRun(SimWorld world, String robotName, Experiment experiment, List<RobotAgent> agents,
             long seed, PrintStream console) throws AslSyntaxException, CartagoException {
+        super(world, seed, console);
         if (agents.isEmpty() || agents.stream().map(RobotAgent::name).distinct().count() != agents.size()) {
+            close();
             throw new IllegalArgumentException("a robot needs one or more agents with distinct names, got " + agents);
         }
-        this.world = world;
         this.robotName = robotName;
-        workspace = Workspace.builder("main").stepped().clock(clock).console(console)
-                .logger(CartagoLogger.console(console)).build();
-        mas = new LocalMAS(clock::nowMillis, console, seed);
-        mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
-        stepper = new JacaStepper(mas, workspace);
-        host = workspace.join("runner", new ArtifactObserverAdapter());
         // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
-        middlewareId = workspace.createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
-        middleware = workspace.artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
+        middlewareId = workspace().createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
+        middleware = workspace().artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
         for (RobotAgent agent : agents) {
             members.add(createAgent(agent, experiment));
         }
@@ -120,9 +97,9 @@ public final class LockstepRun implements AutoCloseable {
     private Member createAgent(RobotAgent agent, Experiment experiment) throws AslSyntaxException {
         AslParser parser = agent.source().parser();
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
-        AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world.spec(), experiment);
+        AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world().spec(), experiment);
         var member = new Member(agent.name(), new FailureWatch(program.goals()), program.goals());
-        mas.createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
+        mas().createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
             @Override
             public void sense(Agent a) { // the start of each reasoning cycle, on the run's thread
                 Consumer<Agent> hook = beforeCycle;
@@ -132,7 +109,7 @@ public final class LockstepRun implements AutoCloseable {
                 super.sense(a);
             }
         }).setPlanListener((event, plan) -> {
-            member.failures().planSelected(event, clock.nowMillis());
+            member.failures().planSelected(event, clock().nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;
                 reactive.record((System.nanoTime() - deliveredNanos) / 1000);
@@ -147,12 +124,12 @@ public final class LockstepRun implements AutoCloseable {
 
     /** {@return the artifact steps run so far (on an operation thread, or on this one when the operation never waits)} */
     public long artifactSteps() {
-        return stepper.artifactSteps();
+        return stepper().artifactSteps();
     }
 
     /** {@return wall-clock ns spent so far: artifact steps, reasoning cycles} */
     public long[] agentSideCost() {
-        return new long[] {stepper.artifactNanos() + inlineNanos, stepper.reasoningNanos()};
+        return new long[] {stepper().artifactNanos() + inlineNanos, stepper().reasoningNanos()};
     }
 
     /** {@return the reactive times measured so far (wall clock, microseconds)} */
@@ -181,23 +158,6 @@ public final class LockstepRun implements AutoCloseable {
      */
     public void beforeCycle(Consumer<Agent> hook) {
         this.beforeCycle = hook;
-    }
-
-    public SimWorld world() {
-        return world;
-    }
-
-    public LocalMAS mas() {
-        return mas;
-    }
-
-    /** {@return the run's workspace (read it, e.g. the inspector's artifacts panel; the run drives it)} */
-    public Workspace workspace() {
-        return workspace;
-    }
-
-    public long cycles() {
-        return cycles;
     }
 
     /** Whether the result keeps a line per step on both sides (on by default; see {@link LockstepCoordinator#stepLogs}). */
@@ -271,19 +231,9 @@ public final class LockstepRun implements AutoCloseable {
         }
     }
 
-    /**
-     * Disposes the run's artifacts and ends its workspace's operation threads (they would idle
-     * for 30 s otherwise, one per run of a sweep). The agent's state and the run's figures stay
-     * readable; the run cannot go on.
-     */
-    @Override
-    public void close() {
-        workspace.close();
-    }
-
     /** Runs {@code seconds} of simulated time. */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
-        var c = new LockstepCoordinator(world, robotName, this::step).stepLogs(stepLogs).port(port)
+        var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
                 .remoteController(remoteController).inMemory(inMemory);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
@@ -293,25 +243,21 @@ public final class LockstepRun implements AutoCloseable {
     }
 
     private List<Command> step(StepData data) {
-        long lag = data.simTimeMs() - clock.nowMillis();
-        if (lag > 0) {
-            clock.advance(lag);
-        }
+        advanceClockTo(data.simTimeMs());
+        LocalMAS mas = mas();
         if (!mas.isStopped()) {
             deliveredNanos = System.nanoTime();
             reactedThisStep = false;
-            // on this thread when it is the next step anyway: two thread hand-offs fewer per control step
             long t0 = System.nanoTime();
-            workspace.execOpInline(host, OpTarget.id(middlewareId), "deliverStep", new Object[] {data}, outcome -> {
-            });
+            deliverStep(middlewareId, data);
             inlineNanos += System.nanoTime() - t0;
-            cycles += stepper.runUntilQuiescent(CYCLES_PER_STEP);
+            reason(CYCLES_PER_STEP);
             if (!reasoned) {
                 reasoned = true;
                 members.forEach(m -> m.failures().firstReasoningDone(mas.agent(m.name()).planLibrary(), m.initialGoals()));
             }
             if (mas.isStopped()) {
-                members.forEach(m -> m.failures().systemStopped(clock.nowMillis()));
+                members.forEach(m -> m.failures().systemStopped(clock().nowMillis()));
             }
             LockstepCoordinator c = coordinator;
             if (agentFailure().isPresent() && c != null) {

@@ -7,15 +7,9 @@ import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.cartago.AgentId;
 import jacabot.cartago.ArtifactId;
-import jacabot.cartago.ArtifactObserverAdapter;
 import jacabot.cartago.CartagoException;
-import jacabot.cartago.CartagoLogger;
-import jacabot.cartago.OpTarget;
-import jacabot.cartago.SimulatedClock;
 import jacabot.cartago.Workspace;
 import jacabot.cartago.bridge.CAgentArch;
-import jacabot.cartago.bridge.CartagoEnvironment;
-import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.MiddlewareArtifact;
 import jacabot.experiments.SuspendResumeMiddleware;
 import jacabot.experiments.link.LinkConfig;
@@ -48,20 +42,15 @@ import java.util.function.Consumer;
  * middleware, in the world file's order; only then do the agents reason, together, until quiescent
  * (the barrier); then every robot's commands are answered and applied in the world file's order,
  * and the world advances one step. So a run is a pure function of the world file and the seed: the
- * same world and seed give every robot the same event log, to the byte.
+ * same world and seed give every robot the same event log, to the byte. Its clock, workspace and
+ * agents are the {@link SteppedPlatform}'s.
  */
-public final class TeamLockstepRun implements AutoCloseable {
+public final class TeamLockstepRun extends SteppedPlatform {
     /** The artifacts every agent of the team shares. */
     public static final String BOARD = "board", CHARGER = "charger";
     /** Two claims' places closer than this are one cylinder on the board, metres (rough camera estimates). */
     public static final double CLAIM_RADIUS = 0.2;
 
-    private final SimWorld world;
-    private final SimulatedClock clock = new SimulatedClock();
-    private final Workspace workspace;
-    private final LocalMAS mas;
-    private final JacaStepper stepper;
-    private final AgentId host;
     private final List<TeamMember> members = new ArrayList<>();
     private final TaskBoard board;
     private final ChargerQueue charger;
@@ -74,7 +63,6 @@ public final class TeamLockstepRun implements AutoCloseable {
     private volatile TeamRemoteLinks remoteLinks;
     private final Object arrivals = new Object();
     private final List<String> departures = new ArrayList<>();
-    private long cycles;
     private volatile boolean stopRequested;
     private RuntimeException failure;
     private Consumer<Long> onStep = t -> {
@@ -94,14 +82,10 @@ public final class TeamLockstepRun implements AutoCloseable {
      */
     public TeamLockstepRun(SimWorld world, AgentSource agent, long seed, PrintStream console)
             throws AslSyntaxException, CartagoException {
-        this.world = world;
-        workspace = Workspace.builder("main").stepped().clock(clock).console(console)
-                .logger(CartagoLogger.console(console)).build();
-        mas = new LocalMAS(clock::nowMillis, console, seed);
-        mas.setEnvironment(new CartagoEnvironment(workspace), List.of());
+        super(world, seed, console);
+        Workspace workspace = workspace();
+        LocalMAS mas = mas();
         mas.onAgentDied(this::agentDied);
-        stepper = new JacaStepper(mas, workspace);
-        host = workspace.join("runner", new ArtifactObserverAdapter());
         ArtifactId boardId = workspace.createArtifact(BOARD, TaskBoard.class.getName(), CLAIM_RADIUS);
         board = workspace.artifactObject(boardId, TaskBoard.class).orElseThrow();
         ArtifactId chargerId = workspace.createArtifact(CHARGER, ChargerQueue.class.getName());
@@ -116,7 +100,7 @@ public final class TeamLockstepRun implements AutoCloseable {
             List<Literal> goals = program.goals();
             FailureWatch failures = new FailureWatch(goals);
             mas.createAgent(name, program, parser, CAgentArch::new)
-                    .setPlanListener((event, plan) -> failures.planSelected(event, clock.nowMillis()));
+                    .setPlanListener((event, plan) -> failures.planSelected(event, clock().nowMillis()));
             members.add(new TeamMember(name, id, middleware, failures, goals, this::arrived));
         }
         watch = new TeamWatch(world, board, charger, members.stream().map(TeamMember::robot).toList());
@@ -140,23 +124,6 @@ public final class TeamLockstepRun implements AutoCloseable {
      */
     public void onAnswer(RobotStepListener listener) {
         this.onAnswer = listener;
-    }
-
-    public SimWorld world() {
-        return world;
-    }
-
-    public LocalMAS mas() {
-        return mas;
-    }
-
-    /** {@return the team's workspace (read it, e.g. the inspector's artifacts panel; the run drives it)} */
-    public Workspace workspace() {
-        return workspace;
-    }
-
-    public long cycles() {
-        return cycles;
     }
 
     /** {@return the team's robots, in the world file's order} */
@@ -220,7 +187,7 @@ public final class TeamLockstepRun implements AutoCloseable {
     @Override
     public void close() {
         members.forEach(TeamMember::closeLink);
-        workspace.close();
+        super.close();
     }
 
     // ---- two processes: the controllers in another ({@code jacabot controller --lockstep --world FILE}) ----
@@ -258,7 +225,7 @@ public final class TeamLockstepRun implements AutoCloseable {
         try (TeamRemoteLinks links = TeamRemoteLinks.open(members, port, linkLog::add)) {
             remoteLinks = links;
             long endAt = Math.round(seconds * 1000);
-            int controlStep = world.controlStep();
+            int controlStep = world().controlStep();
             while (!stopRequested && failure == null) {
                 long now = links.awaitSteps(arrivals, () -> stopRequested);
                 if (now < 0) {
@@ -289,7 +256,7 @@ public final class TeamLockstepRun implements AutoCloseable {
 
     /** An agent's reasoning threw (on the run's thread, inside the agents' turn): it is out of the system. */
     private void agentDied(String agent, Throwable why) {
-        mas.console("[" + agent + "] *** the agent died: " + why);
+        mas().console("[" + agent + "] *** the agent died: " + why);
     }
 
     /**
@@ -298,6 +265,8 @@ public final class TeamLockstepRun implements AutoCloseable {
      * ({@code agentLeft}), and its robot's link is closed, so its controller's fail-safe stops it.
      */
     private void departuresAfterReasoning(long now) {
+        LocalMAS mas = mas();
+        Workspace workspace = workspace();
         for (TeamMember m : members) {
             if (m.left() != null || (mas.agent(m.robot()) != null && !mas.agent(m.robot()).isStopped())) {
                 continue;
@@ -324,6 +293,7 @@ public final class TeamLockstepRun implements AutoCloseable {
             runRemote(seconds);
             return;
         }
+        SimWorld world = world();
         List<RobotController> controllers = new ArrayList<>();
         for (TeamMember m : members) {
             ControllerConfig cc = ControllerConfig.defaults().withRobot(m.robot()).withLockstep(true).withLog(linkLog::add);
@@ -362,18 +332,16 @@ public final class TeamLockstepRun implements AutoCloseable {
     }
 
     private void agentsTurn(long now) {
-        if (now > clock.nowMillis()) {
-            clock.advance(now - clock.nowMillis());
-        }
+        advanceClockTo(now);
+        LocalMAS mas = mas();
         for (TeamMember m : members) {
             StepData data = m.takeStep();
             if (data != null && !mas.isStopped()) {
-                workspace.execOpInline(host, OpTarget.id(m.middlewareId()), "deliverStep", new Object[] {data}, outcome -> {
-                });
+                deliverStep(m.middlewareId(), data);
             }
         }
         if (!mas.isStopped()) {
-            cycles += stepper.runUntilQuiescent(LockstepRun.CYCLES_PER_STEP * members.size());
+            reason(CYCLES_PER_STEP * members.size());
             departuresAfterReasoning(now);
             for (TeamMember m : members) {
                 m.firstReasoningDone(mas);
@@ -386,7 +354,7 @@ public final class TeamLockstepRun implements AutoCloseable {
 
     /** After every robot's answer: a failed agent ends the run; progress. */
     private void afterStep(long now) {
-        if (agentFailure().isPresent() || mas.isStopped()) {
+        if (agentFailure().isPresent() || mas().isStopped()) {
             stopRequested = true;
         }
         onStep.accept(now);

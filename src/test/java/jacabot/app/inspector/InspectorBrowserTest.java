@@ -89,6 +89,12 @@ class InspectorBrowserTest {
                 wait.until(b -> Browser.text(b, "artifacts").contains("acquireData/0"));
                 assertEquals("robot", ((JavascriptExecutor) browser).executeScript("return [...document.querySelectorAll("
                         + "'#artifacts tbody tr')].find(r => r.cells[0].textContent === 'middleware').cells[4].textContent"));
+                // its operation log, from the page's first look on: the runner delivering readings, the agent's own operations
+                wait.until(b -> {
+                    String log = String.valueOf(((JavascriptExecutor) b).executeScript("return [...document.querySelectorAll("
+                            + "'#artifacts tbody tr')].find(r => r.cells[0].textContent === 'middleware').cells[5].textContent"));
+                    return log.contains(" s runner deliverStep/1") && log.matches("(?s).*\\d s robot \\w+/\\d.*");
+                });
                 // on a loaded machine the time line may trail the beliefs by a push or two
                 wait.until(b -> Double.parseDouble(Browser.text(b, "time")) > t0);
                 double t1 = Double.parseDouble(Browser.text(browser, "time"));

@@ -21,6 +21,7 @@ import java.util.Map;
 final class MessageHandler {
     private final Agent ag;
     private final ReasoningCycle rc;
+    private final AskRuleVars askVars;
     private static final Var ANONYMOUS_SOURCE = new Var("_");
 
     /** {@code source(S)} by sender: a stream of messages from one agent shares one annotation. */
@@ -40,6 +41,7 @@ final class MessageHandler {
     MessageHandler(Agent ag, ReasoningCycle rc) {
         this.ag = ag;
         this.rc = rc;
+        this.askVars = new AskRuleVars(ag);
         ag.planLibrary().setKqmlPlans(KQML_PLANS);
     }
 
@@ -120,6 +122,9 @@ final class MessageHandler {
             return false;
         }
         Term content = received.arg(2);
+        if (p.functor().equals("askOne") || p.functor().equals("askAll")) {
+            askVars.ruleQuery(content);
+        }
         if (p.functor().equals("askOne") && content instanceof Literal l
                 && !ag.solver().solve(l, ag.newUnifier()).hasNext()
                 && ag.planLibrary().hasCandidate(new Trigger(Trigger.Op.ADD, Trigger.Type.TEST, l))) {
@@ -245,10 +250,13 @@ final class MessageHandler {
     }
 
     /** The answer to an ask: the belief found, with its annotations but {@code source(self)} (Jason's bel_no_source_self). */
-    private Term answerFor(Unifier u, Term content) {
+    private Term answerFor(Unifier u, Term content, boolean everySolution) {
         Term a = u.apply(content);
+        Literal fact = a instanceof Literal l && l.isGround() ? ag.beliefBase().fact(l) : null;
+        if (a instanceof Literal l) {
+            askVars.solution(l, fact, everySolution);
+        }
         if (a instanceof Literal l && l.isGround()) {
-            Literal fact = ag.beliefBase().fact(l);
             if (fact != null) {
                 return l.withAnnots(fact.annots().stream().filter(x -> !x.equals(Literal.SOURCE_SELF)).toList());
             }
@@ -275,13 +283,16 @@ final class MessageHandler {
         Iterator<Unifier> it = ag.solver().solve(content, ag.newUnifier());
         Message reply;
         if (m.performative().equals("askOne")) {
-            reply = it.hasNext()
-                    ? new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", answerFor(it.next(), content), m.id())
-                    : new Message(ag.nextMessageId(), ag.name(), m.sender(), "untell", content, m.id());
+            if (it.hasNext()) {
+                reply = new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", answerFor(it.next(), content, false), m.id());
+            } else {
+                askVars.unanswered(content);
+                reply = new Message(ag.nextMessageId(), ag.name(), m.sender(), "untell", content, m.id());
+            }
         } else {
             var answers = new ArrayList<Term>();
             while (it.hasNext()) {
-                answers.add(answerFor(it.next(), content));
+                answers.add(answerFor(it.next(), content, true));
             }
             reply = new Message(ag.nextMessageId(), ag.name(), m.sender(), "tell", ListTerm.of(answers), m.id());
         }
