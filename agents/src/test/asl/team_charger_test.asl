@@ -1,6 +1,7 @@
 // Skill tests of one charger for the team (skills/team-charger.asl, in team-delivery.asl): a
 // robot with a low battery first goes near the charger and only there queues for it; once
-// recharged it leaves the queue when it is away from the charger. Run: jacabot test agents/src/test/asl
+// recharged it leaves the queue when it is away from the charger; a low battery while another robot
+// has the charger books a place and the task goes on until its turn. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/team-delivery.asl") }
@@ -41,3 +42,19 @@ mock_operation(_, ok).
        -location(_, _, _); +location(-0.1, 0, 0.38);              // 0.28 m away
        !until(mock_called(leaveCharger), 5000);
        !assert_true(mock_called(leaveCharger)).
+
+@[test]
++!test_a_low_battery_while_another_has_the_charger_books_it_and_works_on
+    <- !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked;
+       -location(_, _, _); +location(0.3, 0, 0.2); -+battery(470); -chargerQueue(_); +chargerQueue([khepera9]);
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(requestCharger(470)), 5000);
+       !assert_true(chargerBooked);
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);                                  // no trip while another has its turn
+       !assert_false(mock_called(setThreshold(0.3)));
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]);   // its turn
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.3)), 5000);
+       !assert_true(charging);                                   // the trip starts
+       !assert_false(chargerBooked).

@@ -15,7 +15,7 @@ mock_operation(_, ok).
 
 @[test]
 +!test_the_place_is_published_once_a_second_at_most
-    <- !forget_calls;
+    <- !forget_calls; -+placeEvery(1000);                 // (a second: room for a loaded machine)
        !!perceive(location(0.1, 0, 0.2));
        !until(mock_called(at(0.1, 0.2)), 2000);
        !assert_true(mock_called(at(0.1, 0.2)));

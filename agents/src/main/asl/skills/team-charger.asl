@@ -1,28 +1,47 @@
 // Skill: one charger for the team (thesis Chapter 6, multi-robot coordination; not in the thesis),
-// the team's side of recharge's hooks (!awaitChargerTurn, !chargerDone). A robot whose battery
-// runs low goes near the charger (within chargerQueueRadius, per axis) and only there queues for it
-// (requestCharger, awaitCharger), standing still out of the way of the robot on the charger; the
-// queue's order is then the order of arrival, so nobody waits for a robot still far away. The robot
-// whose turn it is but that does not reach the charger within chargerTurnLimit lets the next one
-// go first (yieldCharger) and waits again. A robot recharged leaves the queue once it is
-// chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
+// the team's side of recharge's hooks (!awaitChargerTurn, !chargerDone). The charger's queue is
+// ordered by need (the robot with the least energy first; the one on the charger keeps it).
+// - A robot whose battery runs low while another robot has the charger books its place
+//   (requestCharger(Energy)) and goes on with its task; its trip starts when its turn comes (it
+//   heads the queue) or when its energy falls to chargerReserve, whichever is first. So robots
+//   low at once do not stand in a line at the charger while one charges.
+// - On its trip a robot queues by need (requestCharger(Energy)), goes near the charger (within
+//   chargerQueueRadius, per axis) and there waits its turn (awaitCharger), standing still out of
+//   the way of the robot on the charger, then goes on to it. The robot whose turn it is but that
+//   does not reach the charger within chargerTurnLimit lets the next one go first (yieldCharger).
+// - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
+//   to recharge-trip's chargedLevel when nobody waits). A robot recharged leaves the queue once it
+//   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
 chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger
 chargerLeaveDistance(0.2).   // m from the charger where a recharged robot leaves the queue
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
-// Beliefs: waitingCharger, yieldedCharger. Rules it extends: halted.
+chargerReserve(250).         // J: a robot booked for the charger works on above it (it uses about
+                             // 2 J a second moving: two minutes of work, the trip included)
+chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
+// Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted.
 // Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L) (the charger).
 // Needs: recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
 // (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
 // for -!reachCharger and the obstacles while waiting come first.
 
 halted :- waitingCharger.
+chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
 
+// a low battery while another robot has its turn: the place is booked, the task goes on (the
+// middleware signals lowBattery every control step while the battery is low: these two plans come
+// before recharge-trip's, which starts the trip once neither applies)
+@bookCharger[atomic]
++lowBattery : not charging & not chargerBooked & chargerBusy & battery(B) & chargerReserve(R) & B > R
+    <- +chargerBooked; requestCharger(B); .print("The charger is busy: booked at ", B, " J, working on").
+@workWhileBooked +lowBattery : not charging & chargerBooked & chargerBusy & battery(B) & chargerReserve(R) & B > R.
+
 @awaitChargerTurn
-+!awaitChargerTurn : chargerQueueRadius(W)
-    <- !approachCharger(W); stop; !queueForCharger; .print("The charger is mine"); !!watchChargerTurn.
++!awaitChargerTurn : chargerQueueRadius(W) & battery(B)
+    <- -chargerBooked; requestCharger(B); !approachCharger(W); stop; !queueForCharger; .print("The charger is mine");
+       !!watchChargerTurn.
 
 @nearChargerAlready +!approachCharger(W) : nearCharger(W).
 @approachCharger
@@ -48,6 +67,11 @@ nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W 
     <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
        !escape; !computeGap; !balance; !reachCharger.
 
+// another robot is queued: the charge is shared (the trip goes on as when charged)
+@shareCharger
++battery(B) : atCharger & chargerShare(S) & B >= S & .my_name(Me) & chargerQueue([Me, _ | _]) & .intend(waitCharged)
+    <- .print("Charged to ", B, " J: the next robot's turn"); .succeed_goal(waitCharged).
+
 @leaveChargerQueue +!chargerDone : chargerLeaveTimeout(N) <- !!leaveChargerAway(N).
 @leaveChargerAway
 +!leaveChargerAway(N) : N > 0 & chargerLeaveDistance(D) & nearCharger(D) <- .wait(250); !leaveChargerAway(N - 1).
@@ -55,7 +79,7 @@ nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W 
 // a recharge given up (a fallen cylinder drops every desire and forgets "charging") leaves the
 // queue too, else its robot held the charger for the rest of the run; with a cylinder being
 // delivered, recharge's own plan for -charging resumes the delivery (the queue is left already)
-@leaveChargerOnGiveUp -charging : not delivering <- -waitingCharger; leaveCharger.
+@leaveChargerOnGiveUp -charging : not delivering <- -waitingCharger; -chargerBooked; leaveCharger.
 
 // while waiting for its turn the robot stands still
 @obstacleWhileWaitingCharger +obstacle(true) : waitingCharger.

@@ -3,18 +3,22 @@
 // its robot and focuses its own middleware artifact (middleware_<name>), the team's task board
 // (board) and the charger's queue (charger), all made by the team's runner.
 // - A cylinder sighted far off is claimed on the board at its estimated place (from the robot's
-//   location, orientation and the sighting's offset and distance) before homing on it. A sighting
-//   is left alone while it lies near another robot's claim (only while it is claimed: a released
-//   claim's cylinder is anyone's again) or near a teammate (team-places: the cylinder it carries or
-//   is about to take); the board refuses a claim near another's (claimed_by), at once for all.
-// - A cylinder picked up is taken on the board where it was (take): whatever other claim named it
-//   is void, as the cylinder is this robot's in fact.
+//   location, orientation and the sighting's offset and distance) give or take how far off such an
+//   estimate may be (claimError: grows with the distance) before homing on it; every later sighting
+//   of it renews the claim, nearer and narrower. A sighting is left alone while its disc overlaps
+//   another robot's claim (only while it is claimed: a released claim's cylinder is anyone's again)
+//   or lies near a teammate (team-places: the cylinder it is about to take); the board refuses a
+//   claim whose disc overlaps another's (claimed_by) in the same operation that makes it.
+// - A cylinder picked up is taken on the board where it was (take): whatever other claim may name
+//   it is void, as the cylinder is this robot's in fact, and the claim follows the robot (the
+//   board moves it with the robot's published place) until the cylinder is let go (putDown).
 // - The claim is completed when the cylinder is put down in the storage area (stored(N) grows),
 //   released when the homing is given up (out of sight, chased too long) or the battery runs low.
 // Parameters:
-ignoreClaimed(0.3).   // m around another robot's claim where sightings are left alone (wider than
-                      // the board's 0.2 m: two estimates of one cylinder 0.25 m apart were two claims)
-gripReach(0.06).      // m from the robot's centre to a cylinder held in the gripper
+claimErrorBase(0.08).  // m: how far off a sighting's estimated place may be, at no distance ...
+claimErrorSlope(0.3).  // ... plus this much per metre of distance (measured on generated team
+                       // worlds: up to 0.45 m off at 1.4 m, 0.28 m at 0.75 m, 0.19 m at 0.4 m)
+gripReach(0.06).       // m from the robot's centre to a cylinder held in the gripper
 // Beliefs: myClaim(Id), claimRefused.
 // Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true)), delivery
 // (stored(N)), team-places (teammateNear). Include it FIRST (after team-places): its plans for
@@ -25,26 +29,29 @@ setUpGoal(setUpTeam).
 // where a sighting's cylinder lies, estimated from the robot's place and heading
 sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & A = (O + Off) * math.pi / 180
     & Cx = X + Dist * math.cos(A) & Cz = Z + Dist * math.sin(A).
-claimedByOther(X, Z) :- claimed(_, A, Cx, Cz) & not .my_name(A) & ignoreClaimed(R)
-    & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < R * R.
+claimError(Dist, R) :- claimErrorBase(B) & claimErrorSlope(S) & R = B + S * Dist.
+// the board's own rule: two discs that overlap may be one cylinder
+claimedByOther(X, Z, R) :- claimed(_, A, Cx, Cz, Rc) & not .my_name(A)
+    & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < (R + Rc) * (R + Rc).
 
 @findOwnMiddleware +!init(Id) : .my_name(Me) <- .concat("middleware_", Me, Name); lookupArtifact(Name, Id).
 @setUpTeam +!setUpTeam <- lookupArtifact("board", B); focus(B); lookupArtifact("charger", C); focus(C).
 
 /* Claims on the task board */
 
-@sightedClaimedByOther +!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & claimedByOther(Cx, Cz).
+@sightedClaimedByOther
++!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & claimError(Dist, R) & claimedByOther(Cx, Cz, R).
 @sightedNearTeammate +!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & teammateNear(Cx, Cz).
 @claimSighted
-+!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz)
-    <- -claimRefused; !claim(Cx, Cz);
++!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & claimError(Dist, R)
+    <- -claimRefused; !claim(Cx, Cz, R);
        if (not claimRefused) { !homeOn(Off, Dist) }.
 
-// the board gives the same claim back for a place near the caller's own; another is a new cylinder
-@claim +!claim(Cx, Cz) <- claim(Cx, Cz, Id); !dropOtherClaim(Id); -+myClaim(Id).
+// the board gives the same claim back for a disc that overlaps the caller's own; another is a new cylinder
+@claim +!claim(Cx, Cz, R) <- claim(Cx, Cz, R, Id); !dropOtherClaim(Id); -+myClaim(Id).
 @claimedByOther
--!claim(_, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
-@claimFailed -!claim(_, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
+-!claim(_, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
+@claimFailed -!claim(_, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
 @dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
 @keepClaim +!dropOtherClaim(_).
@@ -53,8 +60,12 @@ claimedByOther(X, Z) :- claimed(_, A, Cx, Cz) & not .my_name(A) & ignoreClaimed(
 @takePicked
 +picked(true) : location(X, _, Z) & orientation(O) & gripReach(G)
     <- A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
+// the cylinder let go (put down in the storage area, or fallen): its claim stays where it is
+@putDownClaim
+-picked(true) : myClaim(_) & location(X, _, Z) & orientation(O) & gripReach(G)
+    <- A = O * math.pi / 180; putDown(X + G * math.cos(A), Z + G * math.sin(A)).
 // a claim the board voided (another robot took the cylinder) is forgotten
-@claimVoided -claimed(Id, Me, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _) & not picked(true) <- -myClaim(Id).
+@claimVoided -claimed(Id, Me, _, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _, _) & not picked(true) <- -myClaim(Id).
 
 @completeClaim +stored(N) : N > 0 & myClaim(Id) <- -myClaim(Id); complete(Id); .print("Claim ", Id, " completed").
 // recovery plans that give a cylinder up give its claim up

@@ -1,10 +1,10 @@
 // Skill: where the teammates are (thesis Chapter 6, multi-robot coordination; not in the thesis).
 // A robot's distance sensors see another robot only as an obstacle, and its camera sees the red
 // cylinder another robot carries as a cylinder: every robot publishes its place on the team's task
-// board (at(X, Z): robotAt(Agent, X, Z) for all to perceive) about once a second, so that the
+// board (at(X, Z): robotAt(Agent, X, Z) for all to perceive) every placeEvery, so that the
 // others can tell a teammate (and what it carries or is about to take) from the rest.
 // Parameters:
-placeEvery(1000).          // ms between two publications of the robot's place
+placeEvery(400).           // ms between two publications of the robot's place (team-way reads them)
 teammateClearance(0.15).   // m: a sighting this near a teammate's last published place is the
                            // teammate's (a cylinder carried 6 cm ahead, a robot's second of travel)
 // Beliefs: placePublished(T). Reads: location(X, Y, Z) (the middleware), robotAt(A, X, Z) (the board).

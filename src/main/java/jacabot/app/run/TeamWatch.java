@@ -5,6 +5,7 @@ import jacabot.experiments.team.TaskBoard;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
+import jacabot.sim.world.AreaSpec;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -15,12 +16,16 @@ import java.util.Set;
  * What a team run's shared artifacts show, read after every control step against the world's
  * ground truth: how many claims were made, whether two robots ever held claims on one cylinder
  * (each claim names the cylinder its robot carries, else the one nearest its place when it was
- * placed there), and how long each robot waited in the charger's queue behind another (from
- * joining it to holding the charger).
+ * placed there), and how long each robot waited at the charger: queued behind another robot with
+ * its centre within {@link #AT_CHARGER} of the charger. A robot that booked its place from afar
+ * and works on meanwhile is queued, not waiting. Stricter than "waits while another sits charged
+ * on it": a wait behind a robot still charging counts too.
  */
 public final class TeamWatch {
     /** A claim farther than this from every cylinder names none, metres. */
     static final double CLAIM_REACH = 0.3;
+    /** A queued robot this near the charger (centre to centre, metres) is waiting at it. */
+    static final double AT_CHARGER = 0.5;
 
     private final SimWorld world;
     private final TaskBoard board;
@@ -59,11 +64,12 @@ public final class TeamWatch {
         List<String> queue = charger.queued();
         for (int i = 0; i < queue.size(); i++) {
             String r = queue.get(i);
-            if (i > 0 && !waitingSince.containsKey(r)) {
+            boolean waiting = i > 0 && nearCharger(r);
+            if (waiting && !waitingSince.containsKey(r)) {
                 waitingSince.put(r, nowMs);
                 chargerWaits++;
             }
-            if (i == 0) {
+            if (!waiting) {
                 stopWaiting(r, nowMs);
             }
         }
@@ -72,6 +78,12 @@ public final class TeamWatch {
                 stopWaiting(r, nowMs);
             }
         }
+    }
+
+    private boolean nearCharger(String robot) {
+        AreaSpec c = world.spec().charger();
+        return c != null && world.robots().stream().filter(r -> r.name().equals(robot))
+                .anyMatch(r -> Math.hypot(r.pose().x() - c.x(), r.pose().z() - c.z()) < AT_CHARGER);
     }
 
     private void stopWaiting(String robot, long nowMs) {
@@ -129,12 +141,12 @@ public final class TeamWatch {
         return doubleClaims;
     }
 
-    /** {@return how many times a robot queued behind another for the charger} */
+    /** {@return how many times a robot waited at the charger behind another} */
     public int chargerWaits() {
         return chargerWaits;
     }
 
-    /** {@return the longest a robot waited for the charger, seconds (0 when it never waited)} */
+    /** {@return the longest a robot waited at the charger behind another, seconds (0 when it never waited)} */
     public double longestChargerWait(String robot) {
         Long since = waitingSince.get(robot);
         double open = since == null ? 0 : (world.timeMs() - since) / 1000.0;

@@ -38,7 +38,7 @@ public final class TeamDeliveryRun {
      *
      * @param robots        every robot's summary, in the world file's order
      * @param claims        claims made on the task board (0 for the baseline, which has none)
-     * @param chargerWaits  how many times a robot queued behind another for the charger
+     * @param chargerWaits  how many times a robot waited at the charger behind another (TeamWatch)
      * @param linkLogs      every robot's controller event log: a line per reading, applied command and pose
      *                      (agents only, when kept)
      * @param agentFailure  the first agent that failed at its job, and why

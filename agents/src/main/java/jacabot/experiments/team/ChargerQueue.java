@@ -9,17 +9,21 @@ import java.util.List;
 /**
  * The queue for a team's one charger (thesis Chapter 6, coordination among robots): a robot whose
  * battery runs low asks for the charger and waits its turn, so that two robots never push each
- * other off the charging area. The queue is first come, first served; its head holds the charger
- * until it leaves the queue, or lets the next one go first when it cannot reach the charger.
+ * other off the charging area. The queue is ordered by need: the robot with the least energy
+ * first, equal needs in the order of arrival. Its head takes the charger when its wait ends and
+ * holds it until it leaves the queue (nobody is put before it then), or lets the next one go first
+ * when it cannot reach the charger; a head still on its way is overtaken by a needier robot.
  *
- * <p>Observable property: {@code chargerQueue(List)}, the agents in order (atoms), the holder
- * first. Operations: {@code requestCharger} (joins the tail; already queued, keeps its place),
- * {@code awaitCharger} (waits, without holding the artifact, until the caller is the head; joins
- * first if need be; fails if the caller leaves meanwhile), {@code yieldCharger} (the holder lets
- * the next one have the charger and waits behind it; alone, it keeps it), {@code leaveCharger}
- * (leaves the queue wherever the caller stands, the charger if it held it; not queued is fine). An
- * agent that leaves the workspace leaves the queue too ({@link #agentLeft}), so a robot whose
- * agent died never keeps the others from the charger.
+ * <p>Observable property: {@code chargerQueue(List)}, the agents in order (atoms), the head
+ * first. Operations: {@code requestCharger(Energy)} (joins by need; already queued, moves to the
+ * place its new need gives it), {@code requestCharger} (joins behind every need, in the order of
+ * arrival; already queued, keeps its place), {@code awaitCharger} (waits, without holding the
+ * artifact, until the caller is the head, then holds the charger; joins first if need be; fails if
+ * the caller leaves meanwhile), {@code yieldCharger} (the holder lets the next one have the charger
+ * and waits behind it; alone, it keeps it), {@code leaveCharger} (leaves the queue wherever the
+ * caller stands, the charger if it held it; not queued is fine). An agent that leaves the workspace
+ * leaves the queue too ({@link #agentLeft}), so a robot whose agent died never keeps the others
+ * from the charger.
  */
 public class ChargerQueue extends Artifact {
     private final TurnQueue queue = new TurnQueue();
@@ -28,10 +32,22 @@ public class ChargerQueue extends Artifact {
         defineObsProperty("chargerQueue", List.of());
     }
 
-    /** Joins the tail of the queue, unless the caller is queued already. */
+    /** Joins the queue behind every need, unless the caller is queued already (it keeps its place). */
     @OPERATION
     void requestCharger() {
-        if (queue.join(getCurrentOpAgentId())) {
+        AgentId me = getCurrentOpAgentId();
+        if (!queue.contains(me) && queue.join(me)) {
+            publish();
+        }
+    }
+
+    /** Joins the queue by need: before every robot with more energy than {@code energy} that does not hold the charger. */
+    @OPERATION
+    void requestCharger(double energy) {
+        if (!(energy >= 0)) {
+            failed("a robot's energy is a number of joules, at least 0; got " + energy, "bad_energy", energy);
+        }
+        if (queue.join(getCurrentOpAgentId(), energy)) {
             publish();
         }
     }
@@ -46,7 +62,7 @@ public class ChargerQueue extends Artifact {
         AgentId me = getCurrentOpAgentId();
         requestCharger();
         await("headOrGone", me);
-        if (!queue.contains(me)) {
+        if (!queue.take(me)) {
             failed(me.name() + " left the charger's queue while waiting", "not_queued");
         }
     }

@@ -7,9 +7,11 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.ObsProperty;
 import jacabot.cartago.OpFeedbackParam;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * A team's task board (thesis Chapter 6, coordination among robots; after the claims of Jason's
@@ -17,15 +19,22 @@ import java.util.Map;
  * estimated place on the floor, so that no other robot goes for it, and releases the claim when it
  * gives up or completes it when the cylinder is in the storage area.
  *
- * <p>A claim is a place: two places closer than the board's radius (0.1 m unless {@code init} says
- * otherwise) are the same cylinder, as a robot's estimate from its camera is rough. Claims are by
- * place because that is what a robot perceives ({@code cylinderSighted(Offset, Distance)} from
- * where it stands); a cylinder's name is the world file's, which no robot sees.
+ * <p>A claim is a disc: the estimated place and how far off the estimate may be (a camera's
+ * estimate of a cylinder 1.4 m away was 0.45 m off, one 0.2 m away a few centimetres). Two claims
+ * whose discs overlap may be one cylinder, so a claim is refused while it overlaps another agent's:
+ * whichever way two robots' estimates of one cylinder err, within their bounds they overlap.
+ * Claims are by place because that is what a robot perceives ({@code cylinderSighted(Offset,
+ * Distance)} from where it stands); a cylinder's name is the world file's, which no robot sees.
+ * A robot's claim shrinks as it comes nearer (its newer estimate, the same claim), and the
+ * cylinder it carries is claimed where the robot is ({@code at}), so that nobody claims it on its
+ * way to the storage area.
  *
- * <p>Observable properties: {@code claimed(Id, Agent, X, Z)}, one per claim (Agent an atom), and
- * {@code completed(N)}, the team's deliveries. Operations: {@code claim(X, Z)}, {@code claim(X, Z,
- * ?Id)}, {@code release(Id)}, {@code complete(Id)}, {@code releaseAll}. Every operation is one
- * artifact step, so two agents can never hold claims on one cylinder, however their calls
+ * <p>Observable properties: {@code claimed(Id, Agent, X, Z, R)}, one per claim (Agent an atom, R
+ * the disc's radius), and {@code completed(N)}, the team's deliveries. Operations:
+ * {@code claim(X, Z, R, ?Id)}, {@code claim(X, Z)} and {@code claim(X, Z, ?Id)} (R half the
+ * board's radius), {@code take(X, Z, ?Id)}, {@code putDown(X, Z)}, {@code release(Id)},
+ * {@code complete(Id)}, {@code releaseAll}. Every operation is one artifact step: the test and
+ * the claim are one, so two agents can never hold overlapping claims, however their calls
  * interleave. An agent that leaves the workspace (its process ended) loses its claims:
  * {@link #agentLeft} frees them and signals {@code claimsFreed(Agent, N)}.
  *
@@ -39,8 +48,11 @@ import java.util.Map;
 public class TaskBoard extends Artifact {
     /** Places closer than this are one cylinder, metres. */
     static final double DEFAULT_RADIUS = 0.1;
-    /** A cylinder picked up voids other agents' claims within this many radii of it. */
-    static final double TAKE_REACH = 1.5;
+    /**
+     * The disc of a carried cylinder's claim, metres: it is where its robot last published its
+     * place (about once a second, so up to a second of travel behind) and 6 cm ahead of that.
+     */
+    static final double CARRIED_RADIUS = 0.2;
 
     private record Claim(int id, AgentId agent, ObsProperty property) {
         double x() {
@@ -50,9 +62,23 @@ public class TaskBoard extends Artifact {
         double z() {
             return property.doubleValue(3);
         }
+
+        double r() {
+            return property.doubleValue(4);
+        }
+
+        boolean overlaps(double x, double z, double r) {
+            return Math.hypot(x() - x, z() - z) < r() + r;
+        }
+
+        void place(double x, double z, double r) {
+            property.updateValues(id, agent, x, z, r);
+        }
     }
 
     private final Map<Integer, Claim> claims = new LinkedHashMap<>();
+    /** The claims whose cylinder its robot carries: they follow the robot. */
+    private final Set<Integer> carried = new HashSet<>();
     private final Map<AgentId, ObsProperty> places = new LinkedHashMap<>();
     private final TurnQueue storage = new TurnQueue();
     private double radius;
@@ -85,6 +111,12 @@ public class TaskBoard extends Artifact {
         } else {
             p.updateValues(me, x, z);
         }
+        for (int id : carried) {
+            Claim c = claims.get(id);
+            if (c.agent().equals(me)) {
+                c.place(x, z, CARRIED_RADIUS);
+            }
+        }
     }
 
     /**
@@ -116,64 +148,94 @@ public class TaskBoard extends Artifact {
         }
     }
 
-    /** Claims the cylinder at (x, z) for the calling agent; see {@link #claim(double, double, OpFeedbackParam)}. */
+    /** Claims the cylinder at (x, z) for the calling agent; see {@link #claim(double, double, double, OpFeedbackParam)}. */
     @OPERATION
     void claim(double x, double z) {
-        claim(x, z, new OpFeedbackParam<>());
+        claim(x, z, radius / 2, new OpFeedbackParam<>());
+    }
+
+    /** Claims the cylinder at (x, z), give or take half the board's radius; see {@link #claim(double, double, double, OpFeedbackParam)}. */
+    @OPERATION
+    void claim(double x, double z, OpFeedbackParam<Integer> id) {
+        claim(x, z, radius / 2, id);
     }
 
     /**
-     * Claims the cylinder at (x, z) for the calling agent and gives the claim's id. Fails with
-     * {@code claimed_by(Agent, Id)} when another agent's claim lies within the radius. A claim of
-     * the caller's own there is the same claim: its id comes back and its place becomes (x, z),
-     * the newer estimate.
+     * Claims the cylinder estimated at (x, z), give or take r metres, for the calling agent and
+     * gives the claim's id. Fails with {@code claimed_by(Agent, Id)} when the disc overlaps another
+     * agent's claim. A claim of the caller's own that it overlaps (not the one of the cylinder it
+     * carries) is the same claim: its id comes back and it becomes (x, z, r), the newer estimate.
      */
     @OPERATION
-    void claim(double x, double z, OpFeedbackParam<Integer> id) {
+    void claim(double x, double z, double r, OpFeedbackParam<Integer> id) {
+        if (!(r > 0)) {
+            failed("a claim's radius must be positive, got " + r, "bad_radius", r);
+        }
         AgentId me = getCurrentOpAgentId();
         Claim mine = null;
         for (Claim c : claims.values()) {
-            if (Math.hypot(c.x() - x, c.z() - z) < radius) {
+            if (c.overlaps(x, z, r)) {
                 if (!c.agent().equals(me)) {
                     failed(c.agent().name() + " has claimed the cylinder at (" + c.x() + ", " + c.z() + ")",
                             "claimed_by", c.agent(), c.id());
                 }
-                mine = mine == null ? c : mine;
+                if (mine == null && !carried.contains(c.id())) {
+                    mine = c;
+                }
             }
         }
         if (mine != null) {
-            mine.property().updateValues(mine.id(), me, x, z);
+            mine.place(x, z, r);
             id.set(mine.id());
             return;
         }
-        id.set(newClaim(me, x, z));
+        id.set(newClaim(me, x, z, r));
     }
 
     /**
      * The caller has picked up the cylinder at (x, z): the cylinder is its own in fact, so every
-     * other agent's claim within {@link #TAKE_REACH} radii of it is void (dropped: two robots'
-     * estimates of one cylinder seen from afar may lie further apart than the radius), the caller's
-     * other claims are released (a robot carries one cylinder), and its claim within the radius
-     * there is given back with its place updated, made if need be.
+     * other agent's claim that may name it (its disc within half the board's radius of the place)
+     * is void, the caller's other claims are released (a robot carries one cylinder), and its
+     * claim there is given back, made if need be; from now on that claim follows the robot's
+     * published place ({@code at}) until {@code putDown}, with a disc of {@link #CARRIED_RADIUS}.
      */
     @OPERATION
     void take(double x, double z, OpFeedbackParam<Integer> id) {
         AgentId me = getCurrentOpAgentId();
         Claim kept = null;
         for (Claim c : List.copyOf(claims.values())) {
-            double d = Math.hypot(c.x() - x, c.z() - z);
-            if (d < radius && c.agent().equals(me) && kept == null) {
+            boolean there = c.overlaps(x, z, radius / 2);
+            if (there && c.agent().equals(me) && kept == null) {
                 kept = c;
-            } else if (d < TAKE_REACH * radius || c.agent().equals(me)) {
+            } else if (there || c.agent().equals(me)) {
                 drop(c);
             }
         }
+        int taken;
         if (kept != null) {
-            kept.property().updateValues(kept.id(), me, x, z);
-            id.set(kept.id());
-            return;
+            kept.place(x, z, CARRIED_RADIUS);
+            taken = kept.id();
+        } else {
+            taken = newClaim(me, x, z, CARRIED_RADIUS);
         }
-        id.set(newClaim(me, x, z));
+        carried.add(taken);
+        id.set(taken);
+    }
+
+    /**
+     * The caller has let its cylinder go at (x, z) (it fell, or it was put down): its carried claim
+     * stays there, half the board's radius wide, and no longer follows the robot (none is fine).
+     */
+    @OPERATION
+    void putDown(double x, double z) {
+        AgentId me = getCurrentOpAgentId();
+        for (int id : List.copyOf(carried)) {
+            Claim c = claims.get(id);
+            if (c.agent().equals(me)) {
+                carried.remove(id);
+                c.place(x, z, radius / 2);
+            }
+        }
     }
 
     /** Gives up the caller's claim {@code id}: another agent may claim that cylinder now. */
@@ -219,9 +281,9 @@ public class TaskBoard extends Artifact {
         }
     }
 
-    private int newClaim(AgentId agent, double x, double z) {
+    private int newClaim(AgentId agent, double x, double z, double r) {
         int next = ++lastId;
-        claims.put(next, new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z)));
+        claims.put(next, new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r)));
         return next;
     }
 
@@ -252,7 +314,8 @@ public class TaskBoard extends Artifact {
     }
 
     private void drop(Claim c) {
-        removeObsPropertyByTemplate("claimed", c.id(), null, null, null);
+        removeObsPropertyByTemplate("claimed", c.id(), null, null, null, null);
         claims.remove(c.id());
+        carried.remove(c.id());
     }
 }

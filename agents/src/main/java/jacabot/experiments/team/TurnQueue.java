@@ -5,56 +5,112 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A first-come-first-served queue of agents for one place that takes one robot at a time (the
- * charger, the storage area): the head has the turn until it leaves. Not an artifact: the team's
- * artifacts keep one each and publish it as an observable property after every change.
+ * A queue of agents for one place that takes one robot at a time (the charger, the storage area),
+ * ordered by need: an agent joins before the first one whose need is greater (a lower figure is a
+ * greater need: a battery's energy), after those with the same need, so that equal needs are served
+ * in the order of arrival (the storage area, where every need is the same). The head has the turn;
+ * once it has taken it ({@link #take}) it keeps it until it leaves or yields, and nobody is put
+ * before it: a robot on the charger is never sent off for a needier one. A head that has not taken
+ * its turn yet (a robot still on its way) is overtaken by a needier arrival.
+ * Not an artifact: the team's artifacts keep one each and publish it as an observable property
+ * after every change.
  */
 final class TurnQueue {
-    private final List<AgentId> queue = new ArrayList<>();
+    private record Place(AgentId agent, double need) {
+    }
 
-    /** Joins the tail; {@return whether the queue changed} (false when queued already) */
+    private final List<Place> queue = new ArrayList<>();
+    /** Whether the head has taken its turn (then it keeps the first place). */
+    private boolean taken;
+
+    /** Joins in the order of arrival (every need the same); {@return whether the queue changed} */
     boolean join(AgentId agent) {
-        if (queue.contains(agent)) {
+        return join(agent, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * Joins by need (lower first), or moves an agent queued already to the place its new need
+     * gives it (the head that has taken its turn keeps it); {@return whether the order changed}
+     */
+    boolean join(AgentId agent, double need) {
+        int at = indexOf(agent);
+        if (at == 0 && taken) {
+            queue.set(0, new Place(agent, need));
             return false;
         }
-        return queue.add(agent);
+        List<AgentId> before = agents();
+        if (at >= 0) {
+            queue.remove(at);
+        }
+        int i = taken ? 1 : 0;
+        while (i < queue.size() && queue.get(i).need() <= need) {
+            i++;
+        }
+        queue.add(i, new Place(agent, need));
+        return !agents().equals(before);
+    }
+
+    /** The head takes its turn: nobody is put before it until it leaves or yields; {@return whether it is the head} */
+    boolean take(AgentId agent) {
+        if (indexOf(agent) != 0) {
+            return false;
+        }
+        taken = true;
+        return true;
     }
 
     /** Leaves the queue wherever the agent stands; {@return whether the queue changed} */
     boolean leave(AgentId agent) {
-        return queue.remove(agent);
+        int at = indexOf(agent);
+        if (at < 0) {
+            return false;
+        }
+        queue.remove(at);
+        if (at == 0) {
+            taken = false;
+        }
+        return true;
     }
 
     /**
-     * The head lets the next one go first (a robot that cannot reach the place keeps the others
-     * from it otherwise); {@return whether the queue changed} (false unless the agent is the head
-     * and another is queued)
+     * The head lets the next one go first and stands second (a robot that cannot reach the place
+     * keeps the others from it otherwise); {@return whether the queue changed} (false unless the
+     * agent is the head and another is queued)
      */
     boolean yieldTurn(AgentId agent) {
-        if (queue.size() < 2 || !queue.get(0).equals(agent)) {
+        if (queue.size() < 2 || !queue.get(0).agent().equals(agent)) {
             return false;
         }
-        queue.set(0, queue.get(1));
-        queue.set(1, agent);
+        queue.add(1, queue.remove(0));
+        taken = false;
         return true;
     }
 
     /** {@return whether the agent has the turn, or is not queued (a wait for it ends either way)} */
     boolean headOrGone(AgentId agent) {
-        return queue.isEmpty() || queue.get(0).equals(agent) || !queue.contains(agent);
+        return queue.isEmpty() || indexOf(agent) <= 0;
     }
 
     boolean contains(AgentId agent) {
-        return queue.contains(agent);
+        return indexOf(agent) >= 0;
     }
 
     /** {@return the queued agents, the head first} */
     List<AgentId> agents() {
-        return List.copyOf(queue);
+        return queue.stream().map(Place::agent).toList();
     }
 
     /** {@return the queued agents' names, the head first} */
     List<String> names() {
-        return queue.stream().map(AgentId::name).toList();
+        return queue.stream().map(p -> p.agent().name()).toList();
+    }
+
+    private int indexOf(AgentId agent) {
+        for (int i = 0; i < queue.size(); i++) {
+            if (queue.get(i).agent().equals(agent)) {
+                return i;
+            }
+        }
+        return -1;
     }
 }

@@ -1,5 +1,6 @@
 package jacabot.experiments.team;
 
+import static jacabot.experiments.team.Ops.fails;
 import static jacabot.experiments.team.Ops.ok;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -14,7 +15,11 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
-/** The charger's queue: first come, first served; the head holds the charger until it leaves. */
+/**
+ * The charger's queue: ordered by need (the least energy first, equal needs first come, first
+ * served); the head holds the charger once its wait ends, until it leaves, and nobody is put
+ * before it then.
+ */
 class ChargerQueueTest {
     /** {@return whether the call completes within 200 ms} (used only where it must not: a wait that does not end) */
     private static boolean completesSoon(CompletableFuture<OpOutcome> call) {
@@ -82,6 +87,36 @@ class ChargerQueueTest {
             ok(ws, a, "charger", "yieldCharger");
             assertTrue(bWaits.join().succeeded(), "b holds the charger");
             assertEquals(List.of(List.of(List.of(b, a, c))), sees.values("chargerQueue"), "a second, before c");
+        }
+    }
+
+    /** The robot with the least energy goes first, whatever the order of the calls; the holder is never overtaken. */
+    @Test
+    void theQueueIsOrderedByNeedAndTheHolderKeepsTheCharger() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("charger", ChargerQueue.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher()),
+                    d = ws.join("d", new Ops.Watcher()), e = ws.join("e", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "w", "charger");
+
+            ok(ws, a, "charger", "requestCharger", 450.0);
+            ok(ws, a, "charger", "awaitCharger");                 // a holds the charger
+            ok(ws, b, "charger", "requestCharger", 400.0);
+            ok(ws, c, "charger", "requestCharger", 300.0);
+            ok(ws, d, "charger", "requestCharger", 400.0);        // as needy as b, later: behind b
+            assertEquals(List.of(List.of(List.of(a, c, b, d))), sees.values("chargerQueue"));
+            ok(ws, e, "charger", "requestCharger", 100.0);        // the neediest: before all but the holder
+            assertEquals(List.of(List.of(List.of(a, e, c, b, d))), sees.values("chargerQueue"));
+            ok(ws, d, "charger", "requestCharger", 250.0);        // d's need grew: it moves up
+            assertEquals(List.of(List.of(List.of(a, e, d, c, b))), sees.values("chargerQueue"));
+
+            ok(ws, a, "charger", "leaveCharger");                 // e's turn; still on its way
+            ok(ws, c, "charger", "requestCharger", 50.0);         // c is needier now: it overtakes e
+            assertEquals(List.of(List.of(List.of(c, e, d, b))), sees.values("chargerQueue"));
+            ok(ws, c, "charger", "awaitCharger");                 // c holds it
+            ok(ws, b, "charger", "requestCharger", 10.0);         // however needy, b waits for c
+            assertEquals(List.of(List.of(List.of(c, b, e, d))), sees.values("chargerQueue"));
+            fails("bad_energy", List.of(-1.0), ws, b, "charger", "requestCharger", -1.0);
         }
     }
 }

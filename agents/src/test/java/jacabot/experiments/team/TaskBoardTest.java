@@ -19,11 +19,20 @@ import java.util.Random;
 import java.util.concurrent.CompletableFuture;
 import org.junit.jupiter.api.Test;
 
-/** The team's task board: one claim per cylinder, released, completed, freed when its agent leaves. */
+/**
+ * The team's task board: one claim per cylinder (claims are discs: a place and how far off it may
+ * be, refused while they overlap another agent's), released, completed, freed when its agent
+ * leaves; a cylinder carried is claimed where its robot is.
+ */
 class TaskBoardTest {
     private static int claim(Workspace ws, AgentId agent, double x, double z) {
         OpOutcome.Success s = ok(ws, agent, "board", "claim", x, z, new OpFeedbackParam<Integer>());
         return ((Number) s.outputs().get(2)).intValue();
+    }
+
+    private static int claim(Workspace ws, AgentId agent, double x, double z, double r) {
+        OpOutcome.Success s = ok(ws, agent, "board", "claim", x, z, r, new OpFeedbackParam<Integer>());
+        return ((Number) s.outputs().get(3)).intValue();
     }
 
     @Test
@@ -37,7 +46,7 @@ class TaskBoardTest {
             fails("claimed_by", List.of(a, 1), ws, b, "board", "claim", 0.35, 0.20, new OpFeedbackParam<Integer>());
             assertEquals(2, claim(ws, b, 0.45, 0.20), "15 cm away: another cylinder");
             assertEquals(1, claim(ws, a, 0.31, 0.21), "a's own claim again: the same id, a newer place");
-            assertEquals(List.of(List.of(1, a, 0.31, 0.21), List.of(2, b, 0.45, 0.20)), sees.values("claimed"));
+            assertEquals(List.of(List.of(1, a, 0.31, 0.21, 0.05), List.of(2, b, 0.45, 0.20, 0.05)), sees.values("claimed"));
             assertEquals(List.of(List.of(0)), sees.values("completed"));
         }
     }
@@ -74,7 +83,7 @@ class TaskBoardTest {
             claim(ws, a, 1, 1);
             int bs = claim(ws, b, 0.5, 0.5);
             ok(ws, a, "board", "releaseAll");
-            assertEquals(List.of(List.of(bs, b, 0.5, 0.5)), cSees.values("claimed"));
+            assertEquals(List.of(List.of(bs, b, 0.5, 0.5, 0.05)), cSees.values("claimed"));
             claim(ws, a, 0, 0);
 
             ws.leave(a);
@@ -158,10 +167,59 @@ class TaskBoardTest {
             OpOutcome.Success took = ok(ws, a, "board", "take", 0.55, 0.5, new OpFeedbackParam<Integer>());
             int id = ((Number) took.outputs().get(2)).intValue(); // ...and picked b's up on the way
             assertTrue(id != bs && id != elsewhere, "a new claim for the cylinder in a's gripper");
-            assertEquals(List.of(List.of(id, a, 0.55, 0.5)), sees.values("claimed"), "b's claim void, a's other one released");
+            assertEquals(List.of(List.of(id, a, 0.55, 0.5, TaskBoard.CARRIED_RADIUS)), sees.values("claimed"),
+                    "b's claim void, a's other one released");
             fails("no_claim", List.of(bs), ws, b, "board", "release", bs);
             OpOutcome.Success again = ok(ws, a, "board", "take", 0.56, 0.5, new OpFeedbackParam<Integer>());
             assertEquals(id, ((Number) again.outputs().get(2)).intValue(), "its own claim there: the same claim");
+        }
+    }
+
+    /**
+     * Two robots' estimates of one cylinder seen from afar lie 0.35 m apart: their discs (how far
+     * off each may be) overlap, so the second is refused; a claim near its cylinder is narrow and
+     * leaves a neighbour 0.3 m away free; the claimer's nearer estimate is the same claim, narrower.
+     */
+    @Test
+    void claimsAreDiscsThatMustNotOverlapAnotherAgents() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            int far = claim(ws, a, 1.0, 1.0, 0.4);                        // seen from 1.1 m
+            fails("claimed_by", List.of(a, far), ws, b, "board", "claim", 1.35, 1.0, 0.3, new OpFeedbackParam<Integer>());
+            assertEquals(far, claim(ws, a, 1.05, 1.02, 0.1), "nearer: the same claim, narrower");
+            int neighbour = claim(ws, b, 1.35, 1.0, 0.15);                // now clear of a's disc
+            assertTrue(neighbour != far);
+            assertEquals(List.of(List.of(far, a, 1.05, 1.02, 0.1), List.of(neighbour, b, 1.35, 1.0, 0.15)), sees.values("claimed"));
+            fails("bad_radius", List.of(0.0), ws, a, "board", "claim", 0.0, 0.0, 0.0, new OpFeedbackParam<Integer>());
+        }
+    }
+
+    /**
+     * A cylinder carried away is claimed where its robot last said it was: another robot that
+     * sights it in the gripper cannot claim it on the way; once put down, the claim stays there.
+     */
+    @Test
+    void aCarriedCylindersClaimFollowsItsRobotUntilPutDown() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            OpOutcome.Success took = ok(ws, a, "board", "take", 0.0, 0.0, new OpFeedbackParam<Integer>());
+            int id = ((Number) took.outputs().get(2)).intValue();
+            ok(ws, a, "board", "at", 0.6, 0.4);                          // a carries it away
+            assertEquals(List.of(List.of(id, a, 0.6, 0.4, TaskBoard.CARRIED_RADIUS)), sees.values("claimed"));
+            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.75, 0.45, 0.1, new OpFeedbackParam<Integer>());
+            int left = claim(ws, b, 0.0, 0.0, 0.1);                       // where it was: free
+            assertTrue(left != id);
+            ok(ws, a, "board", "putDown", 0.65, 0.4);
+            ok(ws, a, "board", "at", 0.3, 0.4);                           // no longer follows a
+            assertEquals(List.of(List.of(id, a, 0.65, 0.4, 0.1), List.of(left, b, 0.0, 0.0, 0.1)), sees.values("claimed"));
+            ok(ws, b, "board", "putDown", 0.0, 0.0);                      // carries nothing: nothing changes
+            assertEquals(2, sees.values("claimed").size());
         }
     }
 

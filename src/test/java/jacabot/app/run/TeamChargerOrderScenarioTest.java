@@ -1,0 +1,73 @@
+package jacabot.app.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jacabot.sim.SimWorld;
+import jacabot.sim.io.WorldFileReader;
+import jacabot.sim.robot.Robot;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Team-delivery's charger (thesis Chapter 6; team-charger.asl, ChargerQueue): three robots start
+ * with low batteries, the neediest farthest from the charger, the least needy nearest. The nearest
+ * asks first, finds the charger free and takes it; the other two book their places while it
+ * charges. The queue is ordered by need, so the farthest, neediest robot charges next; a
+ * first-come queue (robots queueing as they arrive near the charger) gives it to the nearer one.
+ * Nobody touches another robot for 2 s. (The nearer robot, whose trip had started, waits at the
+ * charger meanwhile: 81 s here, see docs/teams.md "Known limits".)
+ */
+class TeamChargerOrderScenarioTest {
+    /** Three robots on a line towards the charger in the corner; no cylinders. */
+    private static final String WORLD = """
+            {
+              "name": "team-charger-order",
+              "arena": { "width": 1.4, "depth": 1.4, "wallThickness": 0.02, "wallHeight": 0.1 },
+              "basicTimeStep": 8, "controlStep": 40, "seed": 3,
+              "cylinders": [],
+              "storage": { "x": 0.55, "z": 0.55, "radius": 0.06 },
+              "charger": { "x": -0.55, "z": -0.55, "radius": 0.06, "power": 20 },
+              "robots": [
+                { "name": "khepera1", "model": "khepera", "x": -0.25, "z": -0.45, "heading": 180, "battery": 470 },
+                { "name": "khepera2", "model": "khepera", "x": 0.05, "z": -0.25, "heading": 180, "battery": 420 },
+                { "name": "khepera3", "model": "khepera", "x": 0.35, "z": 0.05, "heading": 180, "battery": 330 }
+              ]
+            }
+            """;
+    private static final double SECONDS = 120;
+
+    @Tag("long")
+    @Test
+    void afterTheFirstTheNeediestRobotChargesNext() throws Exception {
+        SimWorld world = SimWorld.of(WorldFileReader.parse(WORLD, "team-charger-order.json"));
+        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
+        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        Map<String, Double> last = new HashMap<>();
+        List<String> charged = new ArrayList<>(); // the robots in the order their batteries first rose
+        try (var run = new TeamLockstepRun(world, agent, 3, quiet)) {
+            run.stepLogs(false);
+            run.onStep(t -> {
+                for (Robot r : world.robots()) {
+                    double e = r.getBattery().energy();
+                    Double before = last.put(r.name(), e);
+                    if (before != null && e > before + 1e-6 && !charged.contains(r.name())) {
+                        charged.add(r.name());
+                    }
+                }
+            });
+            run.runFor(SECONDS);
+            assertTrue(run.agentFailure().isEmpty(), () -> "no agent failed: " + run.agentFailure());
+        }
+        assertEquals(List.of("khepera1", "khepera3", "khepera2"), charged, "the first to ask, then by need");
+        for (Robot r : world.robots()) {
+            assertTrue(r.robotContactTime() < 2, r.name() + " touched another robot for " + r.robotContactTime() + " s");
+        }
+    }
+}
