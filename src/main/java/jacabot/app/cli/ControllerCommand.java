@@ -163,15 +163,7 @@ final class ControllerCommand implements Callable<Integer> {
             } catch (IOException e) {
                 throw new UserError("--event-log " + eventLog + ": cannot write it (" + e.getMessage() + ")");
             }
-            BufferedWriter sink = events;
-            config = config.withEventLog(line -> {
-                try {
-                    sink.write(line);
-                    sink.write('\n');
-                } catch (IOException e) {
-                    throw new UncheckedIOException(e);
-                }
-            });
+            config = config.withEventLog(LineSink.into(events));
         }
         RobotController controller;
         try {

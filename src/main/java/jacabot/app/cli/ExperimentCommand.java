@@ -301,14 +301,7 @@ final class ExperimentCommand implements Callable<Integer> {
             if (linkLog) {
                 log.info("Link log: " + outDir.resolve("link-log.txt") + " (the controller's readings, applied commands "
                         + "and poses, a line each)");
-                run.controllerLogTo(line -> {
-                    try {
-                        linkFile.write(line);
-                        linkFile.write('\n');
-                    } catch (IOException e) {
-                        throw new UncheckedIOException(e);
-                    }
-                });
+                run.controllerLogTo(LineSink.into(linkFile));
             } else {
                 run.stepLogs(false); // not formatted at all: a tenth of a run's time
             }

@@ -9,7 +9,6 @@ import jacabot.robot.run.RunSummary;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -60,14 +59,7 @@ final class TeamControllerRun {
                 if (out != null && linkLogs) {
                     Writer w = writer(Files.createDirectories(out.resolve(robot)).resolve("link-log.txt"));
                     logs.add(w);
-                    cc = cc.withEventLog(line -> {
-                        try {
-                            w.write(line);
-                            w.write('\n');
-                        } catch (IOException e) {
-                            throw new UncheckedIOException(e);
-                        }
-                    });
+                    cc = cc.withEventLog(LineSink.into(w));
                 }
                 controllers.add(new RobotController(world, cc));
             }
