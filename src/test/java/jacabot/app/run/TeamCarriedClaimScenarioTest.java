@@ -6,9 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.experiments.team.TaskBoard;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectState;
-import jacabot.sim.io.WorldFileReader;
-import java.io.OutputStream;
-import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Tag;
@@ -41,13 +38,10 @@ class TeamCarriedClaimScenarioTest {
     @Tag("long")
     @Test
     void nobodyClaimsACylinderAnotherRobotCarries() throws Exception {
-        SimWorld world = SimWorld.of(WorldFileReader.parse(WORLD, "team-carry-past.json"));
-        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
-        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        SimWorld world = TeamScenarioRun.world(WORLD, "team-carry-past.json");
         List<String> onCarried = new ArrayList<>();
         long[] carriedSteps = {0};
-        try (var run = new TeamLockstepRun(world, agent, 5, quiet)) {
-            run.stepLogs(false);
+        try (var run = TeamScenarioRun.quiet(world, 5)) {
             run.onStep(t -> {
                 if (!"red1".equals(world.supervisor().carried("khepera1"))) {
                     return;

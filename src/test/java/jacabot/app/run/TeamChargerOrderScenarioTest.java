@@ -4,10 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.sim.SimWorld;
-import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
-import java.io.OutputStream;
-import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -46,13 +43,10 @@ class TeamChargerOrderScenarioTest {
     @Tag("long")
     @Test
     void afterTheFirstTheNeediestRobotChargesNext() throws Exception {
-        SimWorld world = SimWorld.of(WorldFileReader.parse(WORLD, "team-charger-order.json"));
-        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
-        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        SimWorld world = TeamScenarioRun.world(WORLD, "team-charger-order.json");
         Map<String, Double> last = new HashMap<>();
         List<String> charged = new ArrayList<>(); // the robots in the order their batteries first rose
-        try (var run = new TeamLockstepRun(world, agent, 3, quiet)) {
-            run.stepLogs(false);
+        try (var run = TeamScenarioRun.quiet(world, 3)) {
             run.onStep(t -> {
                 for (Robot r : world.robots()) {
                     double e = r.getBattery().energy();

@@ -5,11 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.sim.SimWorld;
 import jacabot.sim.geom.Pose;
-import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
 import jacabot.sim.world.AreaSpec;
-import java.io.OutputStream;
-import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -45,13 +42,10 @@ class TeamStorageTurnScenarioTest {
 
     @Test
     void twoRobotsDeliverInTurnsWithoutTouching() throws Exception {
-        SimWorld world = SimWorld.of(WorldFileReader.parse(WORLD, "team-storage-turns.json"));
-        AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "team-delivery.asl");
-        PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
+        SimWorld world = TeamScenarioRun.world(WORLD, "team-storage-turns.json");
         List<String> together = new ArrayList<>();
         AreaSpec storage = world.spec().storage();
-        try (var run = new TeamLockstepRun(world, agent, 5, quiet)) {
-            run.stepLogs(false);
+        try (var run = TeamScenarioRun.quiet(world, 5)) {
             run.onStep(t -> {
                 List<Robot> at = world.robots().stream().filter(r -> {
                     Pose p = r.pose();
