@@ -57,6 +57,9 @@ class MiddlewareLinkTest {
         try (var link = BothEnds.start(world("navigation"), cc, linkConfig())) {
             MiddlewareLink m = link.middleware();
             assertTrue(m.awaitConnected(LinkTestSupport.DEADLINE_S, TimeUnit.SECONDS));
+            // the middleware's side of the handshake ends first; a real-time step the controller
+            // takes before its own side has ended is dropped (no link yet), and would be step 0
+            waitFor(() -> link.controller().isConnected());
             link.controller().runner().start();
             List<LinkEvent> handled = new CopyOnWriteArrayList<>();
             waitFor(() -> m.simTimeMs() >= 400); // ten steps queue up before the hand-over
