@@ -449,7 +449,7 @@ final class ReasoningCycle {
             if (relevant) {
                 c.addEvent(failEvent);
             } else {
-                ag.warn("No failure event was generated for " + failEvent.trigger());
+                ag.warn("No failure event was generated for " + failEvent.trigger() + "\n" + i.jasonText());
                 ag.dropIntention(i);
             }
         } else {
