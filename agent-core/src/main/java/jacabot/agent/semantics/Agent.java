@@ -19,6 +19,7 @@ import java.util.PriorityQueue;
 import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A BDI agent: beliefs, plans, circumstance and the reasoning cycle that runs them. All of its
@@ -51,7 +52,8 @@ public final class Agent {
     private final AslParser parser;
     private Random random;
     private long freshSerial;
-    private int intentionSerial;
+    /** Intention numbers: one counter for the whole system, as Jason's is one per JVM. */
+    private AtomicInteger intentionSerial = new AtomicInteger();
     private long timerSerial;
     private int messageSerial;
     private long cycles;
@@ -377,7 +379,12 @@ public final class Agent {
     }
 
     int nextIntentionId() {
-        return ++intentionSerial;
+        return intentionSerial.incrementAndGet();
+    }
+
+    /** Numbers this agent's intentions from {@code counter}, shared with the other agents of its system. */
+    public void shareIntentionCounter(AtomicInteger counter) {
+        intentionSerial = counter;
     }
 
     public String nextMessageId() {
