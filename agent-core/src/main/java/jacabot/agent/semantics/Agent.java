@@ -74,6 +74,25 @@ public final class Agent {
         return planListener;
     }
 
+    /** Told of a goal that failed with no failure plan to handle it; runs on the agent's thread. */
+    public interface UnhandledFailureListener {
+        /**
+         * {@code failure} is the failed goal with its failure annotations ({@code error}, ...);
+         * {@code root} the first goal of its intention, which is dropped.
+         */
+        void failureUnhandled(Literal failure, Literal root);
+    }
+
+    private UnhandledFailureListener unhandledFailureListener;
+
+    public void setUnhandledFailureListener(UnhandledFailureListener listener) {
+        this.unhandledFailureListener = listener;
+    }
+
+    UnhandledFailureListener unhandledFailureListener() {
+        return unhandledFailureListener;
+    }
+
     private record Timer(long due, long seq, Runnable task) implements Comparable<Timer> {
         @Override
         public int compareTo(Timer o) {
