@@ -177,14 +177,21 @@ final class ReplayCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The address now, not when the process ends; then serves until Enter (or Ctrl-C without a terminal). */
-    private void awaitQuit() throws IOException, InterruptedException {
+    /**
+     * The address now, not when the process ends; then serves until Enter (or Ctrl-C without a
+     * terminal). An interrupt of the command's thread (a caller running it in-process) is a quit too.
+     */
+    private void awaitQuit() throws IOException {
         out.flush();
         commandSpec.commandLine().getOut().flush();
         if (System.console() != null) {
             System.in.read();
-        } else {
+            return;
+        }
+        try {
             new CountDownLatch(1).await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

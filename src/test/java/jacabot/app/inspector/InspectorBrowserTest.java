@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.cli.ServedReplay;
+import jacabot.app.replay.Replay;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepArchive;
 import jacabot.app.replay.SyntheticRun;
@@ -195,6 +197,52 @@ class InspectorBrowserTest {
                 assertEquals(SyntheticRun.x(412_040, 600_000), ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue(),
                         1e-9, "the world drawn at the line's instant");
                 Browser.screenshot(browser, "inspector-replay.png");
+            } finally {
+                browser.quit();
+            }
+        }
+    }
+
+    /**
+     * {@code jacabot replay RUN --headless --inspector}, the command itself, on a real recorded run:
+     * the page it prints opens in the browser, whose slider spans the run from its first step and
+     * whose canvas draws the robot where the step log puts it, at the start and at 20 s.
+     */
+    @Test
+    @Timeout(180)
+    void theReplayCommandServesARecordedRunToTheBrowser(@TempDir Path dir) throws Exception {
+        Path runDir = dir.resolve("run");
+        ServedReplay.record("navigation", "30s", 2, runDir);
+        Replay recorded = Replay.open(runDir);
+        try (ServedReplay served = ServedReplay.start(runDir)) {
+            WebDriver browser = Browser.open();
+            try {
+                browser.get(served.address().toString());
+                var wait = new WebDriverWait(browser, Duration.ofSeconds(40), Duration.ofMillis(100));
+                long last = recorded.frames().get(recorded.frames().size() - 1).timeMs();
+                wait.until(b -> Browser.script(b, "return window.drawnRobots && window.drawnRobots.length") != null
+                        && ((Number) Browser.script(b, "return Number(document.getElementById('slider').max)")).longValue() == last);
+                assertEquals(recorded.frames().get(0).timeMs(),
+                        ((Number) Browser.script(browser, "return Number(document.getElementById('slider').min)")).longValue(),
+                        "the slider reaches the run's first step");
+                for (long at : new long[] {0, 20_000}) {
+                    Replay.Frame f = recorded.frames().get(recorded.indexAt(Math.max(at, recorded.frames().get(0).timeMs())));
+                    Browser.script(browser, "const s = document.getElementById('slider'); s.value = arguments[0];"
+                            + " s.dispatchEvent(new Event('input'));", f.timeMs());
+                    wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs ?? -1")).longValue() == f.timeMs());
+                    assertEquals(f.body().x(), ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue(),
+                            1e-9, "x at " + at);
+                    assertEquals(f.body().z(), ((Number) Browser.script(browser, "return window.drawnRobots[0].z")).doubleValue(),
+                            1e-9, "z at " + at);
+                    String robot = (String) Browser.script(browser, "const v = window.inspectorView, r = window.drawnRobots[0];"
+                            + " const s = v.toScreen(r.x - 0.015, r.z - 0.015);"
+                            + " const d = document.getElementById('world').getContext('2d').getImageData(Math.round(s[0]), Math.round(s[1]), 1, 1).data;"
+                            + " return d[0] + ',' + d[1] + ',' + d[2];");
+                    String expected = (String) Browser.script(browser, "const c = (world.robots[0] || {}).color;"
+                            + " return c.red + ',' + c.green + ',' + c.blue;");
+                    assertEquals(expected, robot, "the robot's colour on the canvas at t=" + at);
+                }
+                Browser.screenshot(browser, "inspector-replay-command.png");
             } finally {
                 browser.quit();
             }
