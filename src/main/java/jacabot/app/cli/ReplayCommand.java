@@ -170,6 +170,7 @@ final class ReplayCommand implements Callable<Integer> {
     /** A team's run: every robot's agent in the page, its history read on demand (no what-if: a team's is not built). */
     private int serveTeam(Inspector inspector) throws Exception {
         var first = TeamRuns.show(inspector, dir);
+        inspector.console(ConsoleFile.of(dir)); // the team's console.txt: every agent's lines, named
         out.printf("The recorded team run, %d robots, %.1f s to %.1f s, is served at %s ; %s%n", TeamRuns.robotDirs(dir).size(),
                 first.firstTimeMs() / 1000.0, first.lastTimeMs() / 1000.0, inspector.address(),
                 System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
