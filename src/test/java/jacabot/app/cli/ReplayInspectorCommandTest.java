@@ -35,7 +35,7 @@ class ReplayInspectorCommandTest {
     @Timeout(120)
     void servesARecordedRunHeadlessBehindItsTokenAndQuitsCleanly(@TempDir Path dir) throws Exception {
         Path run = dir.resolve("run");
-        // 30 s: 750 steps, more than the inspector keeps in memory, so t = 0 is read from the step log
+        // 30 s, 750 steps: the command reads every instant on demand from the step log
         ServedReplay.record("navigation", "30s", 2, run);
         Replay recorded = Replay.open(run);
         var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
