@@ -35,8 +35,8 @@ class ReplayInspectorCommandTest {
     @Timeout(120)
     void servesARecordedRunHeadlessBehindItsTokenAndQuitsCleanly(@TempDir Path dir) throws Exception {
         Path run = dir.resolve("run");
-        // 30 s, 750 steps: the command reads every instant on demand from the step log
-        ServedReplay.record("navigation", "30s", 2, run);
+        // 10 s, 250 steps: the command reads every instant on demand from the step log
+        ServedReplay.record("navigation", "10s", 2, run);
         Replay recorded = Replay.open(run);
         var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
         URI address;
@@ -44,7 +44,7 @@ class ReplayInspectorCommandTest {
             address = served.address();
             assertEquals("127.0.0.1", address.getHost(), served.output());
             assertTrue(address.getQuery().matches("token=[0-9a-f]{48}"), address.toString());
-            assertTrue(served.output().contains("The recorded run, 0.0 s to 30.0 s, is served at "), served.output());
+            assertTrue(served.output().contains("The recorded run, 0.0 s to 10.0 s, is served at "), served.output());
             String base = "http://127.0.0.1:" + address.getPort() + "/";
             String token = address.getQuery();
 
@@ -61,25 +61,25 @@ class ReplayInspectorCommandTest {
             assertEquals(first.body().x(), atStart.get("robot").get("x").asDouble(), 1e-9);
             assertEquals(first.body().z(), atStart.get("robot").get("z").asDouble(), 1e-9);
 
-            // the mind at an instant: the step at or before 12 s, its beliefs and its reasoning cycle
-            Replay.Frame at12 = recorded.frames().get(recorded.indexAt(12_000));
-            JsonNode mind = json(get(client, base + "api/state?agent=robot&t=12000&" + token)).get("mind");
-            assertEquals(at12.timeMs(), mind.get("timeMs").asLong());
-            assertEquals(at12.mind().cycle(), mind.get("cycle").asLong());
-            assertEquals(at12.mind().beliefs().size(), mind.get("beliefs").size());
-            assertEquals(at12.mind().beliefs().get(0).literal(), mind.get("beliefs").get(0).get("literal").asText());
+            // the mind at an instant: the step at or before 6 s, its beliefs and its reasoning cycle
+            Replay.Frame at6 = recorded.frames().get(recorded.indexAt(6_000));
+            JsonNode mind = json(get(client, base + "api/state?agent=robot&t=6000&" + token)).get("mind");
+            assertEquals(at6.timeMs(), mind.get("timeMs").asLong());
+            assertEquals(at6.mind().cycle(), mind.get("cycle").asLong());
+            assertEquals(at6.mind().beliefs().size(), mind.get("beliefs").size());
+            assertEquals(at6.mind().beliefs().get(0).literal(), mind.get("beliefs").get(0).get("literal").asText());
 
             // the console: every line of the run's console file, by time
             List<String> file = Files.readAllLines(run.resolve(ConsoleFile.FILE));
             assertTrue(file.stream().anyMatch(l -> l.contains("[robot] ")), "the agent printed something: " + file);
-            JsonNode console = json(get(client, base + "api/console?from=0&to=30000&" + token));
+            JsonNode console = json(get(client, base + "api/console?from=0&to=10000&" + token));
             assertEquals(file.size(), console.get("lines").size(), console.toString());
             String firstAgentLine = file.stream().filter(l -> l.contains("[robot] ")).findFirst().orElseThrow();
             assertTrue(console.toString().contains(JSON.writeValueAsString(firstAgentLine.substring(firstAgentLine.indexOf(' ') + 1))),
                     console.toString());
 
             // without the token, or with it from another web page: refused, each of them
-            for (String path : List.of("", "api/agents", "api/state?agent=robot&t=0", "api/console?from=0&to=30000",
+            for (String path : List.of("", "api/agents", "api/state?agent=robot&t=0", "api/console?from=0&to=10000",
                     "api/stream", "help.html")) {
                 assertEquals(403, get(client, base + path).statusCode(), "no token: " + path);
                 var foreign = HttpRequest.newBuilder(URI.create(base + path + (path.contains("?") ? "&" : "?") + token))

@@ -192,13 +192,13 @@ class InspectorBrowserTest {
     /**
      * {@code jacabot replay RUN --headless --inspector}, the command itself, on a real recorded run:
      * the page it prints opens in the browser, whose slider spans the run from its first step and
-     * whose canvas draws the robot where the step log puts it, at the start and at 20 s.
+     * whose canvas draws the robot where the step log puts it, at the start and at 6 s.
      */
     @Test
     @Timeout(180)
     void theReplayCommandServesARecordedRunToTheBrowser(@TempDir Path dir) throws Exception {
         Path runDir = dir.resolve("run");
-        ServedReplay.record("navigation", "30s", 2, runDir);
+        ServedReplay.record("navigation", "10s", 2, runDir);
         Replay recorded = Replay.open(runDir);
         try (ServedReplay served = ServedReplay.start(runDir)) {
             WebDriver browser = Browser.open();
@@ -211,7 +211,7 @@ class InspectorBrowserTest {
                 assertEquals(recorded.frames().get(0).timeMs(),
                         ((Number) Browser.script(browser, "return Number(document.getElementById('slider').min)")).longValue(),
                         "the slider reaches the run's first step");
-                for (long at : new long[] {0, 20_000}) {
+                for (long at : new long[] {0, 6_000}) {
                     Replay.Frame f = recorded.frames().get(recorded.indexAt(Math.max(at, recorded.frames().get(0).timeMs())));
                     robotDrawnAt(browser, wait, f.timeMs(), f.body().x(), f.body().z());
                 }
