@@ -60,27 +60,12 @@ public final class Agent {
     private volatile boolean stopped;
     private PlanListener planListener;
 
-    /** Observes the deliberation (tracing, latency measurements); runs on the agent's thread. */
-    public interface PlanListener {
-        /** A plan was chosen for an event and its intended means is about to run. */
-        void planSelected(Event event, Plan plan);
-    }
-
     public void setPlanListener(PlanListener listener) {
         this.planListener = listener;
     }
 
     PlanListener planListener() {
         return planListener;
-    }
-
-    /** Told of a goal that failed with no failure plan to handle it; runs on the agent's thread. */
-    public interface UnhandledFailureListener {
-        /**
-         * {@code failure} is the failed goal with its failure annotations ({@code error}, ...);
-         * {@code root} the first goal of its intention, which is dropped.
-         */
-        void failureUnhandled(Literal failure, Literal root);
     }
 
     private UnhandledFailureListener unhandledFailureListener;
