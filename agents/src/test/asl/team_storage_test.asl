@@ -54,3 +54,14 @@ mock_operation(_, ok).
        !until(storageTurnMine, 5000);
        !assert_true(mock_called(awaitStorageTurn));
        !assert_false(mock_called(stop)).
+
+@[test]
++!test_an_earlier_turns_watch_does_not_end_a_later_turn
+    <- !forget_calls; -storageTurnMine; -+storageTurnLimit(600);
+       !storageTurnTaken; .wait(300);
+       !giveStorageTurn; !storageTurnTaken;                      // the next turn, 300 ms later
+       .wait(450);                                                // the first turn's watch is over
+       !assert_true(storageTurnMine);
+       !until(not storageTurnMine, 3000);                        // the second turn's watch ends it
+       !assert_false(storageTurnMine);
+       -+storageTurnLimit(60000).

@@ -12,7 +12,7 @@ storageQueueRadius(0.35).   // m from the storage point where a robot with a cyl
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
-// Beliefs: waitingStorage, storageTurnMine, storageLeaving(T). Rules it extends: halted.
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted.
 // Reads: delivering, insideArea, onErrand (delivery, recharge), storagePoint(X, Z) (the world).
 // Needs: delivery (computeGap, balance), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
@@ -37,11 +37,15 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 @storageTurnBusy
 +!storageTurn <- stop; .print("Waiting for the storage area"); awaitStorageTurn; !storageTurnTaken; !computeGap; !balance.
 @storageTurnLost -!storageTurn <- -waitingStorage.
-@storageTurnTaken +!storageTurnTaken <- +storageTurnMine; -waitingStorage; !!storageTurnWatch.
+@storageTurnTaken
++!storageTurnTaken : .system_time(T) <- +storageTurnMine; -+storageTurnSince(T); -waitingStorage; !!storageTurnWatch(T).
 
-@storageTurnWatch +!storageTurnWatch : storageTurnLimit(T) <- .wait(T); !storageTurnOver.
-@storageTurnOverdue +!storageTurnOver : storageTurnMine <- .print("Storage turn over: next robot"); !giveStorageTurn.
-@storageTurnOverAlready +!storageTurnOver.
+// the watch ends only the turn it was started for (an earlier turn's watch cut a later turn short,
+// and the next robot drove in on a robot still in the area)
+@storageTurnWatch +!storageTurnWatch(T0) : storageTurnLimit(T) <- .wait(T); !storageTurnOver(T0).
+@storageTurnOverdue
++!storageTurnOver(T0) : storageTurnMine & storageTurnSince(T0) <- .print("Storage turn over: next robot"); !giveStorageTurn.
+@storageTurnOverAlready +!storageTurnOver(_).
 
 @giveStorageTurn +!giveStorageTurn <- -storageTurnMine; storageDone.
 
