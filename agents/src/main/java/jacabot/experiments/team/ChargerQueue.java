@@ -99,6 +99,14 @@ public class ChargerQueue extends Artifact {
         return queue.names();
     }
 
+    /**
+     * {@return the names of the robots waiting at the charger behind the holder (they have called
+     * awaitCharger), in the queue's order; read it between two artifact steps}
+     */
+    public List<String> waiting() {
+        return queue.arrivedNames();
+    }
+
     @Override
     protected void agentLeft(AgentId agent) {
         leave(agent);

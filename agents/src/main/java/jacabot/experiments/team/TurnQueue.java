@@ -129,6 +129,11 @@ final class TurnQueue {
         return queue.stream().skip(1).filter(Place::arrived).map(Place::need).toList();
     }
 
+    /** {@return the names of the agents that have arrived, behind the head, in the queue's order} */
+    List<String> arrivedNames() {
+        return queue.stream().skip(1).filter(Place::arrived).map(p -> p.agent().name()).toList();
+    }
+
     /** {@return the queued agents' names, the head first} */
     List<String> names() {
         return queue.stream().map(p -> p.agent().name()).toList();
