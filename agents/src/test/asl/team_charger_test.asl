@@ -92,3 +92,16 @@ mock_operation(_, ok).
        !until(charging, 5000);
        !assert_true(charging);
        !assert_false(chargerBooked).
+
+@[test]
++!test_a_detour_begun_on_the_way_ends_on_the_charger
+    <- !forget_calls; -atCharger; -avoiding;
+       !!pretendDetour;                                           // a detour under way (forward, then re-align)
+       !until(.intend(detour(_)), 3000);
+       +atCharger;                                                // the robot is on the charger
+       .wait(300);                                                // a detour lasts a second at least
+       !assert_false(.intend(detour(_)));
+       !assert_false(avoiding);
+       -atCharger.
+
++!pretendDetour <- !detour(1).

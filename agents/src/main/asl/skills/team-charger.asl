@@ -92,6 +92,11 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
     <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
        !escape; !computeGap; !balance; !reachCharger.
 
+// on the charger, a detour begun on the way there is over: it went on (forward, re-align, cruise)
+// and drove the robot off the charger mid-charge, its turn held, until its battery ran empty
+// (world 5, four robots)
+@detourOverAtCharger +atCharger : .intend(detour(_)) <- .drop_intention(detour(_)); -avoiding; stop.
+
 // another robot is queued: the charge is shared (the trip goes on as when charged)
 @shareCharger
 +battery(B) : atCharger & chargerShare(S) & B >= S & .my_name(Me) & chargerQueue([Me, _ | _]) & .intend(waitCharged)
