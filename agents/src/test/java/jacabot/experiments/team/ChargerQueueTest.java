@@ -43,8 +43,9 @@ class ChargerQueueTest {
             ok(ws, a, "charger", "requestCharger"); // already queued: keeps its place
             ok(ws, a, "charger", "awaitCharger");   // the head: at once
             CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "charger", "awaitCharger");
-            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger");
             assertFalse(completesSoon(bWaits), "b waits while a holds the charger");
+            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger"); // c arrives after b
+            assertFalse(completesSoon(cWaits));
             assertEquals(List.of(List.of(List.of(a, b, c))), sees.values("chargerQueue"));
 
             ok(ws, a, "charger", "leaveCharger");
