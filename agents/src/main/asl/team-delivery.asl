@@ -2,7 +2,8 @@
 // arena's red cylinders to one storage area and share one charger. Every robot's agent is this
 // program, named as its robot; they coordinate through the team's artifacts (task board, charger
 // queue). The team's skills come first: team-storage (one robot at a time at the storage point),
-// team-places (where the teammates are), team-way (who gives way to whom), team-claims (who
+// team-places (where the teammates are), team-way (who gives way to whom), team-follow (a
+// following distance on the same way), team-claims (who
 // fetches which cylinder), team-charger (the charger by need, one at a time); the other skills
 // are experiment 4's. From the world file:
 // storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
@@ -14,6 +15,7 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 { include("skills/team-storage.asl") }
 { include("skills/team-places.asl") }
 { include("skills/team-way.asl") }
+{ include("skills/team-follow.asl") }
 { include("skills/team-claims.asl") }
 { include("skills/team-charger.asl") }
 { include("skills/initial-phase.asl") }

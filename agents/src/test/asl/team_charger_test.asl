@@ -22,11 +22,11 @@ mock_operation(_, ok).
        !until(mock_called(setThreshold(0.3)), 10000);
        !assert_true(mock_called(setUpTargetPoint(-0.38, 0, 0.38)));
        .wait(200);
-       !assert_false(mock_called(requestCharger));               // not queued while far
+       !assert_false(mock_called(awaitCharger));                 // not waiting at the charger while far
        -location(_, _, _); +location(-0.2, 0, 0.3);
        -targetReached; !!perceive(targetReached);                // near the charger
        !until(mock_called(awaitCharger), 10000);
-       !assert_true(mock_called(requestCharger));
+       !assert_true(mock_called(requestCharger(470)));           // its need, then it waits there
        !until(mock_called(setThreshold(0.03)), 10000);
        !assert_true(mock_called(setThreshold(0.03))).            // then onto the charger itself
 
@@ -58,3 +58,50 @@ mock_operation(_, ok).
        !until(mock_called(setThreshold(0.3)), 5000);
        !assert_true(charging);                                   // the trip starts
        !assert_false(chargerBooked).
+
+@[test]
++!test_the_robot_on_the_charger_leaves_early_for_a_needier_one_waiting_there
+    <- !forget_calls; -location(_, _, _); +location(-0.38, 0, 0.38);
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]); -chargerWaiting(_); +chargerWaiting([]);
+       -targetReached; !!perceive(targetReached);                // near the charger: waits, its turn
+       !until(mock_called(setThreshold(0.03)), 10000); .wait(300);
+       -targetReached; !!perceive(targetReached);                // on the charger
+       !until(.intend(waitCharged), 10000);
+       !assert_true(.intend(waitCharged));
+       -+battery(620); .wait(300);
+       !assert_true(.intend(waitCharged));                       // nobody waits at the charger yet
+       -chargerWaiting(_); +chargerWaiting([700]); -+battery(630); .wait(300);
+       !assert_true(.intend(waitCharged));                       // the one waiting is not needier
+       -chargerWaiting(_); +chargerWaiting([700, 400]); -+battery(640);
+       !until(not .intend(waitCharged), 3000);
+       !assert_false(.intend(waitCharged));                      // it gives the charger up at 640 J
+       -chargerWaiting(_); +chargerWaiting([]).
+
+@[test]
++!test_the_reserve_grows_with_the_way_to_the_charger_and_the_robots_ahead
+    <- !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked;
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(backToTask(_, _, _, _));
+       -chargerQueue(_); +chargerQueue([]);
+       -location(_, _, _); +location(-0.28, 0, 0.38);            // 0.1 m from the charger
+       !assert_true(chargerReserveNow(R1) & R1 < 120);
+       -location(_, _, _); +location(1.62, 0, 0.38);             // 2 m away
+       !assert_true(chargerReserveNow(R2) & R2 > 240);
+       -chargerQueue(_); +chargerQueue([khepera9, khepera8, team_charger_test]);
+       !assert_true(chargerReserveNow(R3) & R3 > R2 + 40);       // two robots ahead
+       -+battery(280); -lowBattery; !!perceive(lowBattery);       // 280 J is below it: the trip starts
+       !until(charging, 5000);
+       !assert_true(charging);
+       !assert_false(chargerBooked).
+
+@[test]
++!test_a_detour_begun_on_the_way_ends_on_the_charger
+    <- !forget_calls; -atCharger; -avoiding;
+       !!pretendDetour;                                           // a detour under way (forward, then re-align)
+       !until(.intend(detour(_)), 3000);
+       +atCharger;                                                // the robot is on the charger
+       .wait(300);                                                // a detour lasts a second at least
+       !assert_false(.intend(detour(_)));
+       !assert_false(avoiding);
+       -atCharger.
+
++!pretendDetour <- !detour(1).

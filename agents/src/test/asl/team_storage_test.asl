@@ -1,6 +1,7 @@
 // Skill tests of one robot at a time at the storage point (skills/team-storage.asl, in
 // team-delivery.asl): a robot with a cylinder asks its turn near the storage point, stops and waits
-// if another robot has it, and gives the turn up once out of the area. Run: jacabot test agents/src/test/asl
+// if another robot has it, and gives the turn up once 0.3 m out of the area (the area as the agent
+// sees it: storageClearance, 0.19 m here), not while it still turns to leave. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/team-delivery.asl") }
@@ -32,8 +33,16 @@ mock_operation(_, ok).
        !assert_false(waitingStorage).
 
 @[test]
-+!test_the_turn_is_given_up_out_of_the_area
-    <- !forget_calls; +insideArea; -insideArea;
++!test_the_turn_is_given_up_only_away_from_the_area
+    <- !forget_calls; +insideArea; -insideArea;                   // out of the area
+       -location(_, _, _); !!perceive(location(0.25, 0, -0.3));    // 0.19 m from the point: still turning to leave
+       .wait(400);
+       !assert_false(mock_called(storageDone));                    // the next robot is not let in yet
+       !assert_true(storageTurnMine);
+       -location(_, _, _); !!perceive(location(0.0, 0, -0.3));     // 0.42 m: 0.23 m out of the area
+       .wait(300);
+       !assert_false(mock_called(storageDone));
+       -location(_, _, _); !!perceive(location(0.0, 0, -0.1));     // 0.51 m: 0.32 m out
        !until(mock_called(storageDone), 5000);
        !assert_true(mock_called(storageDone));
        !assert_false(storageTurnMine).
@@ -45,3 +54,14 @@ mock_operation(_, ok).
        !until(storageTurnMine, 5000);
        !assert_true(mock_called(awaitStorageTurn));
        !assert_false(mock_called(stop)).
+
+@[test]
++!test_an_earlier_turns_watch_does_not_end_a_later_turn
+    <- !forget_calls; -storageTurnMine; -+storageTurnLimit(600);
+       !storageTurnTaken; .wait(300);
+       !giveStorageTurn; !storageTurnTaken;                      // the next turn, 300 ms later
+       .wait(450);                                                // the first turn's watch is over
+       !assert_true(storageTurnMine);
+       !until(not storageTurnMine, 3000);                        // the second turn's watch ends it
+       !assert_false(storageTurnMine);
+       -+storageTurnLimit(60000).

@@ -3,25 +3,37 @@
 // ordered by need (the robot with the least energy first; the one on the charger keeps it).
 // - A robot whose battery runs low while another robot has the charger books its place
 //   (requestCharger(Energy)) and goes on with its task; its trip starts when its turn comes (it
-//   heads the queue) or when its energy falls to chargerReserve, whichever is first. So robots
-//   low at once do not stand in a line at the charger while one charges.
+//   heads the queue) or when its energy falls to its reserve, whichever is first. So robots
+//   low at once do not stand in a line at the charger while one charges. The reserve grows with
+//   the way to the charger and the robots ahead in the queue (chargerReserveNow): a fixed one ran
+//   a battery empty when the trip was long and the queue slow.
+// - The queue ranks the robots waiting at the charger (awaitCharger) before those that booked
+//   from afar and have not arrived (the charger's queue does it): a robot at the charger does not
+//   wait while a needier one still travels.
 // - On its trip a robot queues by need (requestCharger(Energy)), goes near the charger (within
 //   chargerQueueRadius, per axis) and there waits its turn (awaitCharger), standing still out of
 //   the way of the robot on the charger, then goes on to it. The robot whose turn it is but that
 //   does not reach the charger within chargerTurnLimit lets the next one go first (yieldCharger).
 // - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
-//   to recharge-trip's chargedLevel when nobody waits). A robot recharged leaves the queue once it
+//   to recharge-trip's chargedLevel when nobody waits), and already at chargerShareFloor when a
+//   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
+//   energies). A robot recharged leaves the queue once it
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
 chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger
 chargerLeaveDistance(0.2).   // m from the charger where a recharged robot leaves the queue
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
-chargerReserve(250).         // J: a robot booked for the charger works on above it (it uses about
-                             // 2 J a second moving: two minutes of work, the trip included)
+chargerReserve(100).         // J: a robot booked for the charger works on above it, plus the way
+                             // and the queue ahead (below)
+tripEnergy(75).              // J per metre to the charger (2.5 W at 0.05 m/s is 50 J a metre in a
+                             // straight line; half as much again for the detours)
+queueEnergy(25).             // J per robot ahead in the queue (waits, and the last metres to the charger)
 chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
+chargerShareFloor(600).      // J: and at this one when a robot waiting at the charger is needier
 // Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted.
-// Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L) (the charger).
+// Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L),
+// chargerWaiting(L) (the charger), location, battery.
 // Needs: recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
 // (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
 // for -!reachCharger and the obstacles while waiting come first.
@@ -29,14 +41,23 @@ chargerShare(750).           // J: a robot on the charger leaves at this level w
 halted :- waitingCharger.
 chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
+// the energy a booked robot keeps for its trip: the reserve, the way (as the crow flies) and the
+// robots ahead of it in the queue
+chargerReserveNow(R) :- chargerReserve(R0) & tripEnergy(Em) & queueEnergy(Eq) & location(X, _, Z) & charger(Cx, Cz)
+    & .my_name(Me) & chargerQueue(L) & queuedAhead(L, Me, N)
+    & R = R0 + Em * math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)) + Eq * N.
+queuedAhead([], _, 0).
+queuedAhead([Me | _], Me, 0).
+queuedAhead([A | T], Me, N) :- A \== Me & queuedAhead(T, Me, N0) & N = N0 + 1.
+neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 
 // a low battery while another robot has its turn: the place is booked, the task goes on (the
 // middleware signals lowBattery every control step while the battery is low: these two plans come
 // before recharge-trip's, which starts the trip once neither applies)
 @bookCharger[atomic]
-+lowBattery : not charging & not chargerBooked & chargerBusy & battery(B) & chargerReserve(R) & B > R
++lowBattery : not charging & not chargerBooked & chargerBusy & battery(B) & chargerReserveNow(R) & B > R
     <- +chargerBooked; requestCharger(B); .print("The charger is busy: booked at ", B, " J, working on").
-@workWhileBooked +lowBattery : not charging & chargerBooked & chargerBusy & battery(B) & chargerReserve(R) & B > R.
+@workWhileBooked +lowBattery : not charging & chargerBooked & chargerBusy & battery(B) & chargerReserveNow(R) & B > R.
 
 @awaitChargerTurn
 +!awaitChargerTurn : chargerQueueRadius(W) & battery(B)
@@ -50,9 +71,13 @@ nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W 
        -+targetPoint(Cx, Cz); setUpTargetPoint(Cx, 0, Cz); !computeGap; !!balance; !!steer;
        !reachCharger; stop; .drop_intention(balance); stop.
 
+// at the charger: its need now, then it waits as a robot that has arrived (before the booked ones)
 @queueForCharger
++!queueForCharger : battery(B)
+    <- +waitingCharger; requestCharger(B); .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+@queueForChargerNoReading
 +!queueForCharger
-    <- +waitingCharger; requestCharger; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+    <- +waitingCharger; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
 @queueForChargerFailed -!queueForCharger <- -waitingCharger.
 
 // the turn given to a robot that does not reach the charger in time goes to the next one
@@ -67,10 +92,21 @@ nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W 
     <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
        !escape; !computeGap; !balance; !reachCharger.
 
+// on the charger, a detour begun on the way there is over: it went on (forward, re-align, cruise)
+// and drove the robot off the charger mid-charge, its turn held, until its battery ran empty
+// (world 5, four robots)
+@detourOverAtCharger +atCharger : .intend(detour(_)) <- .drop_intention(detour(_)); -avoiding; stop.
+
 // another robot is queued: the charge is shared (the trip goes on as when charged)
 @shareCharger
 +battery(B) : atCharger & chargerShare(S) & B >= S & .my_name(Me) & chargerQueue([Me, _ | _]) & .intend(waitCharged)
     <- .print("Charged to ", B, " J: the next robot's turn"); .succeed_goal(waitCharged).
+
+// a robot waiting at the charger is needier: it goes first, once this one has a working margin
+@shareChargerNeedier
++battery(B) : atCharger & chargerShareFloor(S) & B >= S & neediestWaiting(E) & E < B & .my_name(Me)
+              & chargerQueue([Me, _ | _]) & .intend(waitCharged)
+    <- .print("Charged to ", B, " J: a needier robot waits (", E, " J)"); .succeed_goal(waitCharged).
 
 @leaveChargerQueue +!chargerDone : chargerLeaveTimeout(N) <- !!leaveChargerAway(N).
 @leaveChargerAway

@@ -67,7 +67,12 @@ claimedByOther(X, Z, R) :- claimed(_, A, Cx, Cz, Rc) & not .my_name(A)
 // a claim the board voided (another robot took the cylinder) is forgotten
 @claimVoided -claimed(Id, Me, _, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _, _) & not picked(true) <- -myClaim(Id).
 
-@completeClaim +stored(N) : N > 0 & myClaim(Id) <- -myClaim(Id); complete(Id); .print("Claim ", Id, " completed").
+// an intention of its own: a claim no longer on the board must not end the delivery that stored
+// the cylinder (the robot stood in the storage area, its turn kept, for a minute)
+@completeClaim +stored(N) : N > 0 & myClaim(Id) <- -myClaim(Id); !!completeClaim(Id).
+@completeClaimOnBoard +!completeClaim(Id) <- complete(Id); .print("Claim ", Id, " completed").
+@claimGoneAtCompletion
+-!completeClaim(Id)[error_msg(M)] <- .print("Claim ", Id, " not completed: ", M).
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
 -homing(_) : myClaim(Id) & not picked(true) & not picking <- !releaseClaim(Id); .print("Claim ", Id, " released").

@@ -16,10 +16,12 @@ import java.util.Set;
  * What a team run's shared artifacts show, read after every control step against the world's
  * ground truth: how many claims were made, whether two robots ever held claims on one cylinder
  * (each claim names the cylinder its robot carries, else the one nearest its place when it was
- * placed there), and how long each robot waited at the charger: queued behind another robot with
- * its centre within {@link #AT_CHARGER} of the charger. A robot that booked its place from afar
- * and works on meanwhile is queued, not waiting. Stricter than "waits while another sits charged
- * on it": a wait behind a robot still charging counts too.
+ * placed there), and how long each robot waited at the charger: waiting in the queue behind
+ * another robot (it has arrived: {@link ChargerQueue#waiting}) with its centre within
+ * {@link #AT_CHARGER} of the charger. A robot that booked its place and works on meanwhile is
+ * queued, not waiting, wherever it works (counted while it was near the charger before: a robot
+ * booked and searching beside the charger for 85 s counted as waiting). Stricter than "waits
+ * while another sits charged on it": a wait behind a robot still charging counts too.
  */
 public final class TeamWatch {
     /** A claim farther than this from every cylinder names none, metres. */
@@ -62,9 +64,10 @@ public final class TeamWatch {
             named.keySet().retainAll(held.stream().map(TaskBoard.Held::id).toList());
         }
         List<String> queue = charger.queued();
+        List<String> arrived = charger.waiting();
         for (int i = 0; i < queue.size(); i++) {
             String r = queue.get(i);
-            boolean waiting = i > 0 && nearCharger(r);
+            boolean waiting = i > 0 && arrived.contains(r) && nearCharger(r);
             if (waiting && !waitingSince.containsKey(r)) {
                 waitingSince.put(r, nowMs);
                 chargerWaits++;

@@ -18,8 +18,10 @@ import org.junit.jupiter.api.Test;
  * asks first, finds the charger free and takes it; the other two book their places while it
  * charges. The queue is ordered by need, so the farthest, neediest robot charges next; a
  * first-come queue (robots queueing as they arrive near the charger) gives it to the nearer one.
- * Nobody touches another robot for 2 s. (The nearer robot, whose trip had started, waits at the
- * charger meanwhile: 81 s here, see docs/teams.md "Known limits".)
+ * Nobody touches another robot for 2 s, and no robot waits at the charger behind another for
+ * 60 s or more (TeamWatch: arrived at the charger and queued behind another; the robots waiting
+ * there go before the booked ones). A booked robot works on meanwhile, here searching beside the
+ * charger: TeamWatch counted that as waiting until it asked the queue who had arrived (85 s).
  */
 class TeamChargerOrderScenarioTest {
     /** Three robots on a line towards the charger in the corner; no cylinders. */
@@ -46,6 +48,7 @@ class TeamChargerOrderScenarioTest {
         SimWorld world = TeamScenarioRun.world(WORLD, "team-charger-order.json");
         Map<String, Double> last = new HashMap<>();
         List<String> charged = new ArrayList<>(); // the robots in the order their batteries first rose
+        Map<String, Double> waited = new HashMap<>();
         try (var run = TeamScenarioRun.quiet(world, 3)) {
             run.onStep(t -> {
                 for (Robot r : world.robots()) {
@@ -58,10 +61,14 @@ class TeamChargerOrderScenarioTest {
             });
             run.runFor(SECONDS);
             assertTrue(run.agentFailure().isEmpty(), () -> "no agent failed: " + run.agentFailure());
+            for (Robot r : world.robots()) {
+                waited.put(r.name(), run.watch().longestChargerWait(r.name()));
+            }
         }
         assertEquals(List.of("khepera1", "khepera3", "khepera2"), charged, "the first to ask, then by need");
         for (Robot r : world.robots()) {
             assertTrue(r.robotContactTime() < 2, r.name() + " touched another robot for " + r.robotContactTime() + " s");
+            assertTrue(waited.get(r.name()) < 60, r.name() + " waited at the charger for " + waited.get(r.name()) + " s");
         }
     }
 }

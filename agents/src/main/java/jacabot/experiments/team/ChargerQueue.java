@@ -12,12 +12,18 @@ import java.util.List;
  * other off the charging area. The queue is ordered by need: the robot with the least energy
  * first, equal needs in the order of arrival. Its head takes the charger when its wait ends and
  * holds it until it leaves the queue (nobody is put before it then), or lets the next one go first
- * when it cannot reach the charger; a head still on its way is overtaken by a needier robot.
+ * when it cannot reach the charger; a head still on its way is overtaken by a needier robot. A
+ * robot waiting at the charger ({@code awaitCharger}) ranks before every robot that booked its
+ * place from afar and has not arrived yet, whatever their needs: it does not wait while another
+ * travels to a charger that stands free.
  *
- * <p>Observable property: {@code chargerQueue(List)}, the agents in order (atoms), the head
- * first. Operations: {@code requestCharger(Energy)} (joins by need; already queued, moves to the
+ * <p>Observable properties: {@code chargerQueue(List)}, the agents in order (atoms), the head
+ * first; {@code chargerWaiting(List)}, the energies of the robots waiting at the charger behind the
+ * head, in the queue's order (so that the robot on it can see a needier one). Operations:
+ * {@code requestCharger(Energy)} (joins by need; already queued, moves to the
  * place its new need gives it), {@code requestCharger} (joins behind every need, in the order of
- * arrival; already queued, keeps its place), {@code awaitCharger} (waits, without holding the
+ * arrival; already queued, keeps its place), {@code awaitCharger} (the caller has arrived: it ranks
+ * before those that have not; waits, without holding the
  * artifact, until the caller is the head, then holds the charger; joins first if need be; fails if
  * the caller leaves meanwhile), {@code yieldCharger} (the holder lets the next one have the charger
  * and waits behind it; alone, it keeps it), {@code leaveCharger} (leaves the queue wherever the
@@ -30,6 +36,7 @@ public class ChargerQueue extends Artifact {
 
     void init() {
         defineObsProperty("chargerQueue", List.of());
+        defineObsProperty("chargerWaiting", List.of());
     }
 
     /** Joins the queue behind every need, unless the caller is queued already (it keeps its place). */
@@ -47,9 +54,8 @@ public class ChargerQueue extends Artifact {
         if (!(energy >= 0)) {
             failed("a robot's energy is a number of joules, at least 0; got " + energy, "bad_energy", energy);
         }
-        if (queue.join(getCurrentOpAgentId(), energy)) {
-            publish();
-        }
+        queue.join(getCurrentOpAgentId(), energy);
+        publish();
     }
 
     /**
@@ -60,11 +66,13 @@ public class ChargerQueue extends Artifact {
     @OPERATION
     void awaitCharger() {
         AgentId me = getCurrentOpAgentId();
-        requestCharger();
+        queue.arrive(me);
+        publish();
         await("headOrGone", me);
         if (!queue.take(me)) {
             failed(me.name() + " left the charger's queue while waiting", "not_queued");
         }
+        publish();
     }
 
     @GUARD
@@ -91,6 +99,14 @@ public class ChargerQueue extends Artifact {
         return queue.names();
     }
 
+    /**
+     * {@return the names of the robots waiting at the charger behind the holder (they have called
+     * awaitCharger), in the queue's order; read it between two artifact steps}
+     */
+    public List<String> waiting() {
+        return queue.arrivedNames();
+    }
+
     @Override
     protected void agentLeft(AgentId agent) {
         leave(agent);
@@ -102,7 +118,15 @@ public class ChargerQueue extends Artifact {
         }
     }
 
+    /** Updates the properties that changed (an unchanged value is not signalled again). */
     private void publish() {
-        getObsProperty("chargerQueue").updateValue(queue.agents());
+        List<AgentId> agents = queue.agents();
+        if (!agents.equals(getObsProperty("chargerQueue").getValue())) {
+            getObsProperty("chargerQueue").updateValue(agents);
+        }
+        List<Double> waiting = queue.arrivedNeeds();
+        if (!waiting.equals(getObsProperty("chargerWaiting").getValue())) {
+            getObsProperty("chargerWaiting").updateValue(waiting);
+        }
     }
 }

@@ -195,7 +195,9 @@ public class TaskBoard extends Artifact {
     /**
      * The caller has picked up the cylinder at (x, z): the cylinder is its own in fact, so every
      * other agent's claim that may name it (its disc within half the board's radius of the place)
-     * is void, the caller's other claims are released (a robot carries one cylinder), and its
+     * is void, except a claim on a cylinder another robot carries (that one is in its gripper,
+     * not here: voiding it made that robot's delivery fail to complete its claim), the caller's
+     * other claims are released (a robot carries one cylinder), and its
      * claim there is given back, made if need be; from now on that claim follows the robot's
      * published place ({@code at}) until {@code putDown}, with a disc of {@link #CARRIED_RADIUS}.
      */
@@ -207,7 +209,7 @@ public class TaskBoard extends Artifact {
             boolean there = c.overlaps(x, z, radius / 2);
             if (there && c.agent().equals(me) && kept == null) {
                 kept = c;
-            } else if (there || c.agent().equals(me)) {
+            } else if (c.agent().equals(me) || there && !carried.contains(c.id())) {
                 drop(c);
             }
         }

@@ -12,11 +12,19 @@ import java.util.List;
  * once it has taken it ({@link #take}) it keeps it until it leaves or yields, and nobody is put
  * before it: a robot on the charger is never sent off for a needier one. A head that has not taken
  * its turn yet (a robot still on its way) is overtaken by a needier arrival.
+ * An agent that has {@linkplain #arrive arrived} (a robot waiting at the place) ranks before every
+ * one that has not (a robot that booked its place from afar and still has to travel), by need among
+ * each group: a needier robot far away does not keep the ones standing at the charger waiting while
+ * it travels.
  * Not an artifact: the team's artifacts keep one each and publish it as an observable property
  * after every change.
  */
 final class TurnQueue {
-    private record Place(AgentId agent, double need) {
+    private record Place(AgentId agent, double need, boolean arrived) {
+        /** Whether this place goes before {@code other} (arrived first, then the lower need). */
+        boolean before(Place other) {
+            return arrived != other.arrived ? arrived : need < other.need;
+        }
     }
 
     private final List<Place> queue = new ArrayList<>();
@@ -34,8 +42,24 @@ final class TurnQueue {
      */
     boolean join(AgentId agent, double need) {
         int at = indexOf(agent);
+        return place(agent, new Place(agent, need, at >= 0 && queue.get(at).arrived()));
+    }
+
+    /**
+     * The agent stands at the place now: it ranks before every agent that has not arrived (joining
+     * behind every need if it was not queued); {@return whether the order changed}
+     */
+    boolean arrive(AgentId agent) {
+        int at = indexOf(agent);
+        double need = at >= 0 ? queue.get(at).need() : Double.POSITIVE_INFINITY;
+        return place(agent, new Place(agent, need, true));
+    }
+
+    /** Puts the agent's place where it ranks (the head that has taken its turn keeps it). */
+    private boolean place(AgentId agent, Place p) {
+        int at = indexOf(agent);
         if (at == 0 && taken) {
-            queue.set(0, new Place(agent, need));
+            queue.set(0, p);
             return false;
         }
         List<AgentId> before = agents();
@@ -43,10 +67,10 @@ final class TurnQueue {
             queue.remove(at);
         }
         int i = taken ? 1 : 0;
-        while (i < queue.size() && queue.get(i).need() <= need) {
+        while (i < queue.size() && !p.before(queue.get(i))) {
             i++;
         }
-        queue.add(i, new Place(agent, need));
+        queue.add(i, p);
         return !agents().equals(before);
     }
 
@@ -98,6 +122,16 @@ final class TurnQueue {
     /** {@return the queued agents, the head first} */
     List<AgentId> agents() {
         return queue.stream().map(Place::agent).toList();
+    }
+
+    /** {@return the needs of the agents that have arrived, behind the head, in the queue's order} */
+    List<Double> arrivedNeeds() {
+        return queue.stream().skip(1).filter(Place::arrived).map(Place::need).toList();
+    }
+
+    /** {@return the names of the agents that have arrived, behind the head, in the queue's order} */
+    List<String> arrivedNames() {
+        return queue.stream().skip(1).filter(Place::arrived).map(p -> p.agent().name()).toList();
     }
 
     /** {@return the queued agents' names, the head first} */

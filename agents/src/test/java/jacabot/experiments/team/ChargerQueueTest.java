@@ -43,8 +43,9 @@ class ChargerQueueTest {
             ok(ws, a, "charger", "requestCharger"); // already queued: keeps its place
             ok(ws, a, "charger", "awaitCharger");   // the head: at once
             CompletableFuture<OpOutcome> bWaits = Ops.start(ws, b, "charger", "awaitCharger");
-            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger");
             assertFalse(completesSoon(bWaits), "b waits while a holds the charger");
+            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger"); // c arrives after b
+            assertFalse(completesSoon(cWaits));
             assertEquals(List.of(List.of(List.of(a, b, c))), sees.values("chargerQueue"));
 
             ok(ws, a, "charger", "leaveCharger");
@@ -117,6 +118,44 @@ class ChargerQueueTest {
             ok(ws, b, "charger", "requestCharger", 10.0);         // however needy, b waits for c
             assertEquals(List.of(List.of(List.of(c, b, e, d))), sees.values("chargerQueue"));
             fails("bad_energy", List.of(-1.0), ws, b, "charger", "requestCharger", -1.0);
+        }
+    }
+
+    /**
+     * A robot waiting at the charger goes before the robots that booked from afar, however needy:
+     * it does not wait while they travel; among those waiting, by need. The energies of the
+     * robots waiting behind the holder are published for it.
+     */
+    @Test
+    void robotsWaitingAtTheChargerGoBeforeTheBookedOnes() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("charger", ChargerQueue.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher()), c = ws.join("c", new Ops.Watcher()),
+                    d = ws.join("d", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "w", "charger");
+
+            ok(ws, a, "charger", "requestCharger", 450.0);
+            ok(ws, a, "charger", "awaitCharger");                 // a holds the charger
+            ok(ws, b, "charger", "requestCharger", 100.0);        // booked from afar, very needy
+            ok(ws, c, "charger", "requestCharger", 400.0);
+            assertEquals(List.of(List.of(List.of(a, b, c))), sees.values("chargerQueue"));
+            assertEquals(List.of(List.of(List.of())), sees.values("chargerWaiting"), "nobody waits at the charger");
+            CompletableFuture<OpOutcome> cWaits = Ops.start(ws, c, "charger", "awaitCharger"); // c arrives
+            assertFalse(completesSoon(cWaits));
+            assertEquals(List.of(List.of(List.of(a, c, b))), sees.values("chargerQueue"), "c waits there: before b");
+            assertEquals(List.of(List.of(List.of(400.0))), sees.values("chargerWaiting"));
+            ok(ws, d, "charger", "requestCharger", 300.0);        // d arrives later, needier than c
+            CompletableFuture<OpOutcome> dWaits = Ops.start(ws, d, "charger", "awaitCharger");
+            assertFalse(completesSoon(dWaits));
+            assertEquals(List.of(List.of(List.of(a, d, c, b))), sees.values("chargerQueue"), "by need among those waiting");
+            assertEquals(List.of(List.of(List.of(300.0, 400.0))), sees.values("chargerWaiting"));
+            ok(ws, b, "charger", "requestCharger", 50.0);         // b still on its way: behind them
+            assertEquals(List.of(List.of(List.of(a, d, c, b))), sees.values("chargerQueue"));
+
+            ok(ws, a, "charger", "leaveCharger");
+            assertTrue(dWaits.join().succeeded(), "d holds the charger");
+            assertFalse(completesSoon(cWaits), "c waits for d");
+            assertEquals(List.of(List.of(List.of(400.0))), sees.values("chargerWaiting"));
         }
     }
 }

@@ -176,6 +176,22 @@ class TaskBoardTest {
     }
 
     /**
+     * A robot picking a cylinder next to a robot that carries one does not void the carried
+     * cylinder's claim: that one is in the other's gripper, and its robot completes it on delivery.
+     */
+    @Test
+    void aTakeBesideAnotherRobotLeavesTheClaimOfTheCylinderItCarries() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            OpOutcome.Success aTook = ok(ws, a, "board", "take", 0.50, 0.50, new OpFeedbackParam<Integer>());
+            int carried = ((Number) aTook.outputs().get(2)).intValue();
+            ok(ws, b, "board", "take", 0.55, 0.50, new OpFeedbackParam<Integer>()); // b picks one 5 cm away
+            ok(ws, a, "board", "complete", carried);                                  // a delivers its own
+        }
+    }
+
+    /**
      * Two robots' estimates of one cylinder seen from afar lie 0.35 m apart: their discs (how far
      * off each may be) overlap, so the second is refused; a claim near its cylinder is narrow and
      * leaves a neighbour 0.3 m away free; the claimer's nearer estimate is the same claim, narrower.
