@@ -40,7 +40,18 @@ import picocli.CommandLine.Spec;
 @Command(name = "replay", mixinStandardHelpOptions = true,
         description = {"Plays a recorded run (runs/NAME-SEED, written by every headless experiment) back: "
                 + "the viewer with play/pause/step/speed and a time slider, and the mind inspector at the same instant.",
-                "Headless (no display, or --headless): prints a summary, the mind at --at T, and --frames N as PNG."})
+                "Headless (no display, or --headless): prints a summary, the mind at --at T, and --frames N as PNG."},
+        footer = {"", "Debugging a failing run (more in the page's help and docs/running.md):",
+                "  1. Find the moment: jacabot replay runs/NAME-SEED --headless --inspector;",
+                "     open the address it prints, find a line the robot printed in the",
+                "     console panel and click it: the header's t= is the instant.",
+                "  2. Break there: jacabot experiment NAME --headless --break 't=60s'",
+                "     (or 'label:PLAN', '+!goal', 'failure'); the run halts and reads",
+                "     commands: Enter continue, s step, n cycle, p print, q no more halts.",
+                "  3. Change a plan in a copy of the agent (edited.asl), or in the page's",
+                "     What if panel.",
+                "  4. What if: jacabot replay runs/NAME-SEED --what-if 60s --agent edited.asl",
+                "     then: jacabot plot runs/NAME-SEED runs/NAME-SEED-whatif-60s --out both.png"})
 final class ReplayCommand implements Callable<Integer> {
     @Spec
     private CommandSpec commandSpec;
@@ -170,6 +181,7 @@ final class ReplayCommand implements Callable<Integer> {
     /** A team's run: every robot's agent in the page, its history read on demand (no what-if: a team's is not built). */
     private int serveTeam(Inspector inspector) throws Exception {
         var first = TeamRuns.show(inspector, dir);
+        inspector.console(ConsoleFile.of(dir)); // the team's console.txt: every agent's lines, named
         out.printf("The recorded team run, %d robots, %.1f s to %.1f s, is served at %s ; %s%n", TeamRuns.robotDirs(dir).size(),
                 first.firstTimeMs() / 1000.0, first.lastTimeMs() / 1000.0, inspector.address(),
                 System.console() != null ? "press Enter to quit." : "Ctrl-C to quit.");
@@ -177,14 +189,21 @@ final class ReplayCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The address now, not when the process ends; then serves until Enter (or Ctrl-C without a terminal). */
-    private void awaitQuit() throws IOException, InterruptedException {
+    /**
+     * The address now, not when the process ends; then serves until Enter (or Ctrl-C without a
+     * terminal). An interrupt of the command's thread (a caller running it in-process) is a quit too.
+     */
+    private void awaitQuit() throws IOException {
         out.flush();
         commandSpec.commandLine().getOut().flush();
         if (System.console() != null) {
             System.in.read();
-        } else {
+            return;
+        }
+        try {
             new CountDownLatch(1).await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

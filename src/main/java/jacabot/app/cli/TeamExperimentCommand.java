@@ -3,6 +3,8 @@ package jacabot.app.cli;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.ConsoleFile;
+import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.replay.StepLog;
@@ -29,6 +31,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -130,17 +133,27 @@ final class TeamExperimentCommand implements Callable<Integer> {
         if (baseline) {
             outcome = TeamDeliveryRun.baseline(spec, runSeed, seconds);
         } else {
-            PrintStream console = log.agents();
+            // every agent's lines, each with its robot's name, by simulated time: the team's console.txt
+            var world = new AtomicReference<SimWorld>();
+            ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, () -> world.get() == null ? 0 : world.get().timeMs());
+            PrintStream console = consoleFile.tee(log.agents());
             long every = 60_000;
             inspector = inspectorOptions.start(false, "team-delivery, " + n + " robots, seed " + runSeed,
                     ConsoleLog.lines(log::result));
             Inspector page = inspector;
-            try { // every robot's step log (DIR/ROBOT/steps.jsonl.gz) and mind in the inspector
+            if (inspector != null) {
+                inspector.console(ConsoleFile.of(outDir));
+            }
+            try (consoleFile) { // every robot's step log (DIR/ROBOT/steps.jsonl.gz) and mind in the inspector
                 outcome = TeamDeliveryRun.agents(spec, source, runSeed, seconds, console, linkLog, t -> {
+                    consoleFile.events(List.of()); // on disk at each control step
                     if (t > 0 && t % every == 0) {
                         log.info(String.format(Locale.ROOT, "t=%d s", t / 1000));
                     }
-                }, run -> TeamTap.attach(run, page, outDir, WorldGenerator.TEAM_DELIVERY, source.name()));
+                }, run -> {
+                    world.set(run.world());
+                    return TeamTap.attach(run, page, outDir, WorldGenerator.TEAM_DELIVERY, source.name());
+                });
             } catch (AslSyntaxException e) {
                 throw UserError.located(e.getMessage());
             } catch (CartagoException e) {
@@ -152,7 +165,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         write(outDir, outcome, text);
         log.info("");
         text.forEach(log::result);
-        log.result("Written: " + outDir.resolve("summary.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt"
+        log.result("Written: " + outDir.resolve("summary.txt") + (baseline ? "" : ", console.txt") + ", and per robot ROBOT/summary.json, ROBOT/event-log.txt"
                 + (linkLog && !baseline ? ", ROBOT/link-log.txt" : "")
                 + (baseline ? "" : ", ROBOT/" + StepLog.FILE + " (jacabot replay " + outDir + " --headless --inspector)"));
         if (!baseline) {

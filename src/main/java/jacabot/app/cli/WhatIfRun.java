@@ -73,7 +73,7 @@ final class WhatIfRun {
         }
         Files.writeString(target.resolve("event-log.txt"), r.recorder().summary("agent").eventLog());
         RunPlots.writeAll(target, console);
-        console.printf("Plans swapped at t=%.2f s. Written: %s, event-log.txt; compare with: jacabot plot %s %s%n",
+        console.printf("Plans swapped at t=%.2f s. Written: %s, event-log.txt, console.txt; compare with: jacabot plot %s %s%n",
                 r.swappedAtMs() / 1000.0, target.resolve(StepLog.FILE), dir, target);
         return r.swappedAtMs() < 0 ? 1 : 0;
     }

@@ -1,7 +1,6 @@
 package jacabot.app.plot;
 
-import java.util.ArrayList;
-import java.util.List;
+import java.util.Arrays;
 
 /**
  * A time series thinned to what a chart of a given width can show: the steps split into as many
@@ -12,46 +11,40 @@ import java.util.List;
  *
  * <p>Why: XChart finds the ticks of an X axis whose values are equally spaced (every control step)
  * by formatting and measuring every value again for each candidate spacing, which took most of a
- * run's plotting time; the envelope has few points, not equally spaced once a value moves.
+ * run's plotting time; the envelope has few points, not equally spaced once a column has more than
+ * four steps.
  */
-final class Envelope {
-    final List<Double> x = new ArrayList<>();
-    final List<Double> y = new ArrayList<>();
-
-    private Envelope() {
-    }
-
-    /** {@return the envelope of the points (x[i], y[i]), at most four points for each of {@code columns}} */
-    static Envelope of(List<Double> xs, List<Double> ys, int columns) {
-        Envelope e = new Envelope();
-        int n = Math.min(xs.size(), ys.size());
+record Envelope(double[] x, double[] y) {
+    /** {@return the envelope of the points (xs[i], ys[i]), at most four points for each of {@code columns}} */
+    static Envelope of(double[] xs, double[] ys, int columns) {
+        int n = Math.min(xs.length, ys.length);
         if (n <= 4 * columns) {
-            e.x.addAll(xs.subList(0, n));
-            e.y.addAll(ys.subList(0, n));
-            return e;
+            return new Envelope(Arrays.copyOf(xs, n), Arrays.copyOf(ys, n));
         }
+        double[] ex = new double[4 * columns], ey = new double[4 * columns];
+        int size = 0;
         for (int c = 0; c < columns; c++) {
             int from = (int) ((long) n * c / columns), to = (int) ((long) n * (c + 1) / columns); // [from, to), never empty
             int low = -1, high = -1;
             for (int i = from; i < to; i++) {
-                double v = ys.get(i);
+                double v = ys[i];
                 if (!Double.isNaN(v)) {
-                    low = low < 0 || v < ys.get(low) ? i : low;
-                    high = high < 0 || v > ys.get(high) ? i : high;
+                    low = low < 0 || v < ys[low] ? i : low;
+                    high = high < 0 || v > ys[high] ? i : high;
                 }
             }
-            int last = to - 1;
-            int[] picked = {from, Math.min(low < 0 ? from : low, high < 0 ? from : high),
-                    Math.max(low < 0 ? from : low, high < 0 ? from : high), last};
+            low = low < 0 ? from : low;
+            high = high < 0 ? from : high;
             int previous = -1;
-            for (int i : picked) {
+            for (int i : new int[] {from, Math.min(low, high), Math.max(low, high), to - 1}) {
                 if (i != previous) { // in time order, each point once
-                    e.x.add(xs.get(i));
-                    e.y.add(ys.get(i));
+                    ex[size] = xs[i];
+                    ey[size] = ys[i];
+                    size++;
                     previous = i;
                 }
             }
         }
-        return e;
+        return new Envelope(Arrays.copyOf(ex, size), Arrays.copyOf(ey, size));
     }
 }

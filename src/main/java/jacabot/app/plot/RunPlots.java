@@ -12,6 +12,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.function.Consumer;
@@ -131,14 +132,16 @@ public final class RunPlots {
      * log's writer writes them (the same steps, so the same columns).
      */
     public static final class Series implements Consumer<StepLog.Step> {
-        final List<Double> t = new ArrayList<>();
-        final List<Double> x = new ArrayList<>();
-        final List<Double> z = new ArrayList<>();
-        final List<Double> battery = new ArrayList<>();
-        final List<Double> left = new ArrayList<>();
-        final List<Double> right = new ArrayList<>();
-        final List<Double> speed = new ArrayList<>();
-        final List<MindState.Selection> selections = new ArrayList<>();
+        // a step's values in primitive columns (56 bytes a step): a long run keeps no boxed copy of its steps
+        final Column t = new Column();
+        final Column x = new Column();
+        final Column z = new Column();
+        final Column battery = new Column();
+        final Column left = new Column();
+        final Column right = new Column();
+        final Column speed = new Column();
+        /** The plan selections worth a mark (failures, low battery, resumes), not every selection of the run. */
+        final List<Mark> selectionMarks = new ArrayList<>();
         /** Times (s) at which an intention was about to run the {@code mark} action. */
         final List<Double> markActions = new ArrayList<>();
         final WorldSnapshot start;
@@ -182,7 +185,12 @@ public final class RunPlots {
             pz = b.z();
             pt = now;
             if (step.mind() != null && step.mind().selections() != null) {
-                selections.addAll(step.mind().selections());
+                for (MindState.Selection sel : step.mind().selections()) {
+                    String kind = selectionKind(sel.event());
+                    if (kind != null) {
+                        selectionMarks.add(new Mark(sel.timeMs() / 1000.0, kind, sel.event()));
+                    }
+                }
             }
             if (step.mind() != null && step.mind().intentions() != null && aboutToMark(step.mind().intentions())) {
                 markActions.add(now);
@@ -206,6 +214,11 @@ public final class RunPlots {
                 out.add(new double[] {x.get(i), z.get(i)});
             }
             return out;
+        }
+
+        /** {@return how many steps} */
+        int size() {
+            return t.size();
         }
 
         int indexAt(double time) {
@@ -248,27 +261,61 @@ public final class RunPlots {
         for (double t : s.markActions) {
             out.add(new Mark(t, "mark", "mark"));
         }
-        for (MindState.Selection sel : s.selections) {
-            String e = sel.event().toLowerCase(Locale.ROOT);
-            String head = e.replaceAll("[\\[(].*", "");
-            String kind = head.startsWith("-!") ? "failure"
-                    : head.contains("battery") ? "low battery"
-                    : head.startsWith("-charg") || head.contains("resum") || head.contains("restor") ? "resume" : null;
-            if (kind != null) {
-                out.add(new Mark(sel.timeMs() / 1000.0, kind, sel.event()));
-            }
-        }
+        out.addAll(s.selectionMarks);
         return out;
     }
 
+    /** {@return the mark a plan selected for {@code event} earns (failure, low battery, resume), or null} */
+    static String selectionKind(String event) {
+        String head = event.toLowerCase(Locale.ROOT).replaceAll("[\\[(].*", "");
+        return head.startsWith("-!") ? "failure"
+                : head.contains("battery") ? "low battery"
+                : head.startsWith("-charg") || head.contains("resum") || head.contains("restor") ? "resume" : null;
+    }
+
+    /** A growing column of doubles, one per step. */
+    static final class Column {
+        private double[] values = new double[1024];
+        private int size;
+
+        void add(double v) {
+            if (size == values.length) {
+                values = Arrays.copyOf(values, size * 2);
+            }
+            values[size++] = v;
+        }
+
+        double get(int i) {
+            return values[i];
+        }
+
+        int size() {
+            return size;
+        }
+
+        /** {@return a copy of the values, as the charts take them} */
+        double[] values() {
+            return Arrays.copyOf(values, size);
+        }
+
+        boolean allNaN() {
+            for (int i = 0; i < size; i++) {
+                if (!Double.isNaN(values[i])) {
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
+
     static Optional<XYChart> battery(Series s, List<Mark> marks) {
-        if (s.battery.stream().allMatch(v -> v.isNaN())) {
+        if (s.battery.allNaN()) {
             return Optional.empty();
         }
         XYChart c = new XYChartBuilder().width(WIDTH).height(420).title("Battery").xAxisTitle("simulated time (s)")
                 .yAxisTitle("energy (J)").build();
-        Envelope battery = Envelope.of(s.t, s.battery, WIDTH);
-        c.addSeries("battery", battery.x, battery.y).setMarker(SeriesMarkers.NONE).setLineColor(new Color(40, 110, 60));
+        Envelope battery = Envelope.of(s.t.values(), s.battery.values(), WIDTH);
+        c.addSeries("battery", battery.x(), battery.y()).setMarker(SeriesMarkers.NONE).setLineColor(new Color(40, 110, 60));
         for (String kind : List.of("low battery", "recharge", "charged", "resume", "mark")) {
             var xs = new ArrayList<Double>();
             var ys = new ArrayList<Double>();
@@ -289,10 +336,11 @@ public final class RunPlots {
     static XYChart speed(Series s) {
         XYChart c = new XYChartBuilder().width(WIDTH).height(420).title("Speed and wheel commands")
                 .xAxisTitle("simulated time (s)").yAxisTitle("wheel speed (units) / robot speed (mm/s)").build();
+        double[] t = s.t.values();
         for (var series : List.of(Map.entry("left wheel", s.left), Map.entry("right wheel", s.right),
                 Map.entry("robot speed (mm/s)", s.speed))) {
-            Envelope e = Envelope.of(s.t, series.getValue(), WIDTH);
-            c.addSeries(series.getKey(), e.x, e.y).setMarker(SeriesMarkers.NONE);
+            Envelope e = Envelope.of(t, series.getValue().values(), WIDTH);
+            c.addSeries(series.getKey(), e.x(), e.y()).setMarker(SeriesMarkers.NONE);
         }
         return c;
     }

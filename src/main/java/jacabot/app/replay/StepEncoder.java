@@ -40,8 +40,12 @@ import java.util.zip.GZIPOutputStream;
  * gzip members. Not thread-safe: the writer's thread runs it.
  */
 final class StepEncoder implements Closeable {
+    /** The member buffer's usual capacity; one grown past {@link #CHUNK_KEPT} (deep intention stacks) is let go after it. */
+    private static final int CHUNK_BUFFER = 1 << 16;
+    private static final int CHUNK_KEPT = 1 << 20;
     private final OutputStream file;
-    private final ByteArrayOutputStream chunk = new ByteArrayOutputStream(1 << 16);
+    /** A gzip member's text before compression: its capacity is that of the largest member so far, unless let go. */
+    private ByteArrayOutputStream chunk = new ByteArrayOutputStream(CHUNK_BUFFER);
     private long offset;
     private long steps;
     private long chunkFirstTime;
@@ -162,7 +166,11 @@ final class StepEncoder implements Closeable {
             long first = steps == 0 ? -1 : (steps - 1) / CHUNK * CHUNK;
             Chunk c = new Chunk(offset, first, first < 0 ? -1 : chunkFirstTime, lastTime);
             offset += member.size();
-            chunk.reset();
+            if (chunk.size() > CHUNK_KEPT) {
+                chunk = new ByteArrayOutputStream(CHUNK_BUFFER); // a 10-minute run kept a 16 MB buffer after one such stretch
+            } else {
+                chunk.reset();
+            }
             if (first >= 0) {
                 onChunk.accept(c);
             }

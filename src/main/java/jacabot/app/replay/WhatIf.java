@@ -5,6 +5,7 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.PlanLibrary;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Plan;
+import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
 import jacabot.robot.Experiment;
@@ -45,18 +46,23 @@ public final class WhatIf {
         } catch (AslSyntaxException e) {
             throw new IllegalArgumentException(e.getMessage());
         }
-        var run = new LockstepRun(world, null, experiment, original, seed, console);
+        Files.createDirectories(outDir);
+        // its console by simulated time, as a lockstep experiment's: the inspector's console panel reads it
+        ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, world::timeMs);
+        var run = new LockstepRun(world, null, experiment, original, seed, consoleFile.tee(console));
         var recorder = RunRecorder.attach(world, world.robots().get(0).name());
         long[] swapped = {-1};
-        Files.createDirectories(outDir);
-        try (RunTap tap = RunTap.attach(run, null, outDir, experiment, original.name() + " then " + edited.name())) {
+        try (consoleFile; RunTap tap = RunTap.attach(run, null, outDir, experiment, original.name() + " then " + edited.name())) {
             run.onStep(data -> { // on the run's thread, the agent idle: its plans can change
                 if (swapped[0] < 0 && data.simTimeMs() >= atMs) {
                     swapPlans(run.mas().agent("robot"), program);
                     swapped[0] = data.simTimeMs();
+                    consoleFile.line(data.simTimeMs(), "what-if: the edited agent's plans from here on");
                 }
+                consoleFile.events(recorder.events());
             });
             String log = run.runFor(seconds).eventLog();
+            consoleFile.events(recorder.events());
             return new Result(log, swapped[0], recorder);
         }
     }

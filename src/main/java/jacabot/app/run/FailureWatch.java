@@ -23,7 +23,9 @@ import java.util.Set;
  * <li>the system stopped ({@code .stopMAS}) before the run's end, e.g. by the initial phase's
  *     {@code -!start} after an action that does not exist;</li>
  * <li>a failure storm: one goal failing with the same error at least {@link #STORM_PER_SECOND}
- *     times in one simulated second (a failure plan that re-posts the goal at once, every cycle).</li>
+ *     times in one simulated second (a failure plan that re-posts the goal at once, every cycle);</li>
+ * <li>a failure no plan handles, of an initial goal's intention (the agent dropped what it was
+ *     started for) or of an action that does not exist (an unknown artifact operation).</li>
  * </ul>
  * Fed on the agent's thread by the plan listener ({@link #planSelected}); the run driver asks
  * {@link #verdict} after each control step.
@@ -91,6 +93,26 @@ public final class FailureWatch {
                         + g + ": it has nothing to do; the run stops here";
                 return;
             }
+        }
+    }
+
+    /**
+     * On the agent's thread: goal {@code failure} failed at {@code nowMs} and no failure plan
+     * handles it; its intention, started by goal {@code root}, is dropped.
+     */
+    public void failureUnhandled(Literal failure, Literal root, long nowMs) {
+        lastFailure = failure;
+        if (verdict != null) {
+            return;
+        }
+        boolean initial = initialGoals.contains(key(root));
+        Literal reason = failure.getAnnot("env_failure_reason");
+        boolean unknownAction = reason != null && reason.arity() == 1 && reason.arg(0) instanceof Literal r
+                && r.functor().equals("unknown_operation");
+        if (initial || unknownAction) {
+            verdict = String.format(Locale.ROOT, "goal !%s failed at t=%.1f s and no plan handles its failure (%s): %s; "
+                    + "the run stops here", goal(failure), nowMs / 1000.0, why(failure),
+                    unknownAction ? "the action does not exist" : "the agent dropped its initial goal !" + goal(root));
         }
     }
 

@@ -100,7 +100,7 @@ public final class LockstepRun extends SteppedPlatform {
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world().spec(), experiment);
         var member = new Member(agent.name(), new FailureWatch(program.goals()), program.goals());
-        mas().createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
+        Agent robot = mas().createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
             @Override
             public void sense(Agent a) { // the start of each reasoning cycle, on the run's thread
                 Consumer<Agent> hook = beforeCycle;
@@ -109,7 +109,9 @@ public final class LockstepRun extends SteppedPlatform {
                 }
                 super.sense(a);
             }
-        }).setPlanListener((event, plan) -> {
+        });
+        robot.setUnhandledFailureListener((failure, root) -> member.failures().failureUnhandled(failure, root, clock().nowMillis()));
+        robot.setPlanListener((event, plan) -> {
             member.failures().planSelected(event, clock().nowMillis());
             if (!reactedThisStep && event.isExternal() && isPercept(event)) {
                 reactedThisStep = true;

@@ -2,6 +2,7 @@ package jacabot.app.run;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
+import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.semantics.Event;
 import jacabot.agent.syntax.Literal;
@@ -75,7 +76,9 @@ public final class RealTimeRun implements AutoCloseable {
         var program = WorldBeliefs.inject(agent.parse(parser), world.spec(), experiment);
         // reactive time: a reading that changed a percept, from its sampling to the plan it triggers
         failures = new FailureWatch(program.goals());
-        mas.createAgent("robot", program, parser, CAgentArch::new).setPlanListener((event, plan) -> {
+        Agent robot = mas.createAgent("robot", program, parser, CAgentArch::new);
+        robot.setUnhandledFailureListener((failure, root) -> failures.failureUnhandled(failure, root, world.timeMs()));
+        robot.setPlanListener((event, plan) -> {
             failures.planSelected(event, world.timeMs());
             timeReaction(event);
             if (event.isExternal() && event.trigger().literal() instanceof Literal l

@@ -3,6 +3,7 @@ package jacabot.app.run;
 import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.LocalMAS;
+import jacabot.agent.semantics.Agent;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.cartago.AgentId;
@@ -99,8 +100,9 @@ public final class TeamLockstepRun extends SteppedPlatform {
             AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec(), Experiment.SUSPEND_RESUME);
             List<Literal> goals = program.goals();
             FailureWatch failures = new FailureWatch(goals);
-            mas.createAgent(name, program, parser, CAgentArch::new)
-                    .setPlanListener((event, plan) -> failures.planSelected(event, clock().nowMillis()));
+            Agent agentOfRobot = mas.createAgent(name, program, parser, CAgentArch::new);
+            agentOfRobot.setPlanListener((event, plan) -> failures.planSelected(event, clock().nowMillis()));
+            agentOfRobot.setUnhandledFailureListener((failure, root) -> failures.failureUnhandled(failure, root, clock().nowMillis()));
             members.add(new TeamMember(name, id, middleware, failures, goals, this::arrived));
         }
         watch = new TeamWatch(world, board, charger, members.stream().map(TeamMember::robot).toList());

@@ -14,8 +14,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * An agent that fails at its job ends its experiment at once with exit 1 and one line saying why,
- * at every console level (FailureWatch): an action that does not exist, no plan for its first
- * goal, a failure storm. The run's folder is still written.
+ * at every console level (FailureWatch): an action that does not exist (with or without a failure
+ * plan), no plan for its first goal, a failure storm, an initial goal failed and not handled. The run's folder is still written.
  */
 class FailingAgentExitTest {
     /** The initial phase's own recovery: an unknown action fails !start, whose failure plan stops the system. */
@@ -23,6 +23,17 @@ class FailingAgentExitTest {
             !start.
             +!start <- setSpeed(1, 2).
             -!start[error_msg(M)] <- println("the robot cannot start: ", M); .stopMAS.
+            """;
+    /** No failure plan at all: the unknown action's failure drops the intention of !start. */
+    static final String UNKNOWN_ACTION_UNHANDLED = """
+            !start.
+            +!start <- setSpeed(1, 2).
+            """;
+    /** An initial goal failed with nobody to handle it, though every action exists. */
+    static final String INITIAL_GOAL_DROPPED = """
+            !start.
+            +!start <- !look.
+            +!look <- ?landmark(nowhere).
             """;
     static final String NO_PLAN = """
             !start.
@@ -64,6 +75,20 @@ class FailingAgentExitTest {
         assertFailsWith(dir, UNKNOWN_ACTION, "the agent stopped the system (.stopMAS) at t=0.0 s, before the run's end, "
                 + "after goal !start failed (error action_failed, error_msg \"no artifact in workspace main has operation setSpeed/2\", "
                 + "at agent.asl:2)");
+    }
+
+    @Test
+    void anActionThatDoesNotExistWithNoFailurePlan(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, UNKNOWN_ACTION_UNHANDLED, "goal !start failed at t=0.0 s and no plan handles its failure "
+                + "(error action_failed, error_msg \"no artifact in workspace main has operation setSpeed/2\", at agent.asl:2): "
+                + "the action does not exist");
+    }
+
+    @Test
+    void anInitialGoalFailedWithNoFailurePlan(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, INITIAL_GOAL_DROPPED, "goal !look failed at t=0.0 s and no plan handles its failure "
+                + "(error test_goal_failed, error_msg \"Failed to test 'landmark(nowhere)'\", at agent.asl:3): "
+                + "the agent dropped its initial goal !start");
     }
 
     @Test

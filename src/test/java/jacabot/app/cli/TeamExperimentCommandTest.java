@@ -3,8 +3,14 @@ package jacabot.app.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -25,6 +31,32 @@ class TeamExperimentCommandTest {
         }
         assertTrue(Files.readString(dir.resolve("summary.txt")).startsWith("team-delivery, 2 robots, seed 21"));
         assertTrue(Files.size(dir.resolve("trajectory.png")) > 0, "every robot's trajectory");
+        // the team's console: every agent's lines, named, at their control step's simulated time, in the order printed
+        List<String> console = Files.readAllLines(dir.resolve("console.txt"));
+        for (String l : console) {
+            assertTrue(l.matches("t=\\d+\\.\\d{3} \\[\\w+\\] .*"), l);
+            long t = Math.round(Double.parseDouble(l.substring(2, l.indexOf(' '))) * 1000);
+            assertTrue(t % 40 == 0 && t <= 3000, l);
+        }
+        assertTrue(console.stream().anyMatch(l -> l.contains(" [khepera1] ")) && console.stream().anyMatch(l -> l.contains(" [khepera2] ")),
+                console.toString());
+        List<String> texts = console.stream().map(l -> l.substring(l.indexOf(' ') + 1)).toList();
+        List<String> printed = out.lines().filter(l -> l.startsWith("[khepera") && !l.matches("\\[\\w+\\] picks \\d+, deliveries .*"))
+                .toList(); // the agents' lines, not the summaries per robot
+        assertTrue(printed.size() >= 2, out);
+        int at = 0; // the printed lines (repeats folded) in the file, in order
+        for (String p : printed) {
+            while (at < texts.size() && !texts.get(at).equals(p)) {
+                at++;
+            }
+            assertTrue(at < texts.size(), "printed, in console.txt in order: " + p + "\n" + console);
+        }
+        try (ServedReplay served = ServedReplay.start(dir)) { // the team's page serves it
+            var client = HttpClient.newHttpClient();
+            String answer = client.send(HttpRequest.newBuilder(URI.create(served.address().toString()
+                    .replace("/?", "/api/console?from=0&to=3000&"))).build(), HttpResponse.BodyHandlers.ofString()).body();
+            assertEquals(console.size(), new ObjectMapper().readTree(answer).get("lines").size(), answer);
+        }
 
         // the team's folder in the tools: plotted again, one robot replayed, the whole team only in the inspector
         Files.delete(dir.resolve("trajectory.png"));

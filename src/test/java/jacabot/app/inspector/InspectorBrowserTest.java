@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.cli.ServedReplay;
+import jacabot.app.replay.Replay;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepArchive;
 import jacabot.app.replay.SyntheticRun;
@@ -163,21 +165,7 @@ class InspectorBrowserTest {
                 assertEquals(40L, ((Number) Browser.script(browser, "return Number(document.getElementById('slider').min)")).longValue(),
                         "the slider reaches the run's first step");
                 for (long t : new long[] {40, 300_000}) {
-                    Browser.script(browser, "const s = document.getElementById('slider'); s.value = arguments[0];"
-                            + " s.dispatchEvent(new Event('input'));", t);
-                    wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs || -1")).longValue() == t);
-                    double x = ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue();
-                    double z = ((Number) Browser.script(browser, "return window.drawnRobots[0].z")).doubleValue();
-                    assertEquals(SyntheticRun.x(t, 600_000), x, 1e-9, "x at " + t);
-                    assertEquals(SyntheticRun.z(t), z, 1e-9, "z at " + t);
-                    // the canvas has the robot's colour there (behind its heading line), and the floor's far from it
-                    String robot = (String) Browser.script(browser, "const v = window.inspectorView, r = window.drawnRobots[0];"
-                            + " const s = v.toScreen(r.x - 0.015, r.z - 0.015);"
-                            + " const d = document.getElementById('world').getContext('2d').getImageData(Math.round(s[0]), Math.round(s[1]), 1, 1).data;"
-                            + " return d[0] + ',' + d[1] + ',' + d[2];");
-                    String expected = (String) Browser.script(browser, "const c = (world.robots[0] || {}).color;"
-                            + " return c.red + ',' + c.green + ',' + c.blue;");
-                    assertEquals(expected, robot, "the robot's colour on the canvas at t=" + t);
+                    robotDrawnAt(browser, wait, t, SyntheticRun.x(t, 600_000), SyntheticRun.z(t));
                 }
                 // the console panel: lines around the instant shown (300 s); a click on one goes to its instant
                 wait.until(b -> Browser.script(b, "return document.querySelector('#console tr[data-t=\"261000\"]')") != null);
@@ -199,6 +187,58 @@ class InspectorBrowserTest {
                 browser.quit();
             }
         }
+    }
+
+    /**
+     * {@code jacabot replay RUN --headless --inspector}, the command itself, on a real recorded run:
+     * the page it prints opens in the browser, whose slider spans the run from its first step and
+     * whose canvas draws the robot where the step log puts it, at the start and at 6 s.
+     */
+    @Test
+    @Timeout(180)
+    void theReplayCommandServesARecordedRunToTheBrowser(@TempDir Path dir) throws Exception {
+        Path runDir = dir.resolve("run");
+        ServedReplay.record("navigation", "10s", 2, runDir);
+        Replay recorded = Replay.open(runDir);
+        try (ServedReplay served = ServedReplay.start(runDir)) {
+            WebDriver browser = Browser.open();
+            try {
+                browser.get(served.address().toString());
+                var wait = new WebDriverWait(browser, Duration.ofSeconds(40), Duration.ofMillis(100));
+                long last = recorded.frames().get(recorded.frames().size() - 1).timeMs();
+                wait.until(b -> Browser.script(b, "return window.drawnRobots && window.drawnRobots.length") != null
+                        && ((Number) Browser.script(b, "return Number(document.getElementById('slider').max)")).longValue() == last);
+                assertEquals(recorded.frames().get(0).timeMs(),
+                        ((Number) Browser.script(browser, "return Number(document.getElementById('slider').min)")).longValue(),
+                        "the slider reaches the run's first step");
+                for (long at : new long[] {0, 6_000}) {
+                    Replay.Frame f = recorded.frames().get(recorded.indexAt(Math.max(at, recorded.frames().get(0).timeMs())));
+                    robotDrawnAt(browser, wait, f.timeMs(), f.body().x(), f.body().z());
+                }
+                Browser.screenshot(browser, "inspector-replay-command.png");
+            } finally {
+                browser.quit();
+            }
+        }
+    }
+
+    /**
+     * Moves the slider to {@code t} (ms) and checks the robot is drawn at ({@code x}, {@code z}):
+     * the page's drawn position, and the robot's colour on the canvas there (behind its heading line).
+     */
+    private static void robotDrawnAt(WebDriver browser, WebDriverWait wait, long t, double x, double z) {
+        Browser.script(browser, "const s = document.getElementById('slider'); s.value = arguments[0];"
+                + " s.dispatchEvent(new Event('input'));", t);
+        wait.until(b -> ((Number) Browser.script(b, "return window.shownTimeMs ?? -1")).longValue() == t);
+        assertEquals(x, ((Number) Browser.script(browser, "return window.drawnRobots[0].x")).doubleValue(), 1e-9, "x at " + t);
+        assertEquals(z, ((Number) Browser.script(browser, "return window.drawnRobots[0].z")).doubleValue(), 1e-9, "z at " + t);
+        String robot = (String) Browser.script(browser, "const v = window.inspectorView, r = window.drawnRobots[0];"
+                + " const s = v.toScreen(r.x - 0.015, r.z - 0.015);"
+                + " const d = document.getElementById('world').getContext('2d').getImageData(Math.round(s[0]), Math.round(s[1]), 1, 1).data;"
+                + " return d[0] + ',' + d[1] + ',' + d[2];");
+        String expected = (String) Browser.script(browser, "const c = (world.robots[0] || {}).color;"
+                + " return c.red + ',' + c.green + ',' + c.blue;");
+        assertEquals(expected, robot, "the robot's colour on the canvas at t=" + t);
     }
 
     private static String query(WebDriver b, String css) {

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.Debugger;
 import jacabot.app.inspector.Inspector;
 import jacabot.app.run.AgentSource;
@@ -55,6 +56,10 @@ class WhatIfTest {
         }
         var r = WhatIf.run(world(), EXPERIMENT, 1, agent("breaker.asl"), agent("breaker-edited.asl"), AT, 6, whatIf, quiet);
         assertEquals(AT, r.swappedAtMs());
+        // its console by simulated time, the swap marked at its instant
+        List<String> console = Files.readAllLines(whatIf.resolve(ConsoleFile.FILE));
+        assertTrue(console.contains("t=3.000 what-if: the edited agent's plans from here on"), console.toString());
+        assertTrue(console.containsAll(r.recorder().events()), "the event log's lines too: " + r.recorder().events() + " in " + console);
 
         List<String> a = steps(recorded), b = steps(whatIf);
         int upTo = 0;

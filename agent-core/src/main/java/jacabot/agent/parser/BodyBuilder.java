@@ -2,6 +2,7 @@ package jacabot.agent.parser;
 
 import jacabot.agent.parser.AgentSpeakParser.*;
 import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyStep.Kind;
 import jacabot.agent.syntax.BodyTerm;
@@ -114,7 +115,8 @@ final class BodyBuilder {
             if (t instanceof Literal l) {
                 return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
             }
-            if (t instanceof Var || t instanceof AnnotatedVar) {
+            if (t instanceof Var || t instanceof AnnotatedVar || t instanceof ArithFunction) {
+                // a function call written as a formula is, as in Jason, an action for the environment
                 return new BodyStep(Kind.ACTION, t, src);
             }
             if (t instanceof RelExpr || t instanceof LogExpr) {

@@ -108,6 +108,8 @@ public final class LocalMAS {
 
     /** The p__N numbers of unnamed plans go on from agent to agent in load order, as in Jason. */
     private final AtomicInteger planLabels = new AtomicInteger();
+    /** So do the numbers of intentions, in the order they are created. */
+    private final AtomicInteger intentionIds = new AtomicInteger();
 
     /**
      * Creates an agent running a program. {@code archFactory} may wrap the local architecture
@@ -126,6 +128,7 @@ public final class LocalMAS {
         Map<String, InternalAction> ias = Stdlib.defaults();
         Agent ag = new Agent(name, arch, ias, agentSeed(seed, agents.size()), parser);
         ag.planLibrary().shareLabelCounter(planLabels);
+        ag.shareIntentionCounter(intentionIds);
         agents.put(name, ag);
         wakers.put(name, new Waker(ag));
         ag.load(program);

@@ -19,6 +19,7 @@ import java.util.PriorityQueue;
 import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A BDI agent: beliefs, plans, circumstance and the reasoning cycle that runs them. All of its
@@ -51,18 +52,13 @@ public final class Agent {
     private final AslParser parser;
     private Random random;
     private long freshSerial;
-    private int intentionSerial;
+    /** Intention numbers: one counter for the whole system, as Jason's is one per JVM. */
+    private AtomicInteger intentionSerial = new AtomicInteger();
     private long timerSerial;
     private int messageSerial;
     private long cycles;
     private volatile boolean stopped;
     private PlanListener planListener;
-
-    /** Observes the deliberation (tracing, latency measurements); runs on the agent's thread. */
-    public interface PlanListener {
-        /** A plan was chosen for an event and its intended means is about to run. */
-        void planSelected(Event event, Plan plan);
-    }
 
     public void setPlanListener(PlanListener listener) {
         this.planListener = listener;
@@ -70,6 +66,16 @@ public final class Agent {
 
     PlanListener planListener() {
         return planListener;
+    }
+
+    private UnhandledFailureListener unhandledFailureListener;
+
+    public void setUnhandledFailureListener(UnhandledFailureListener listener) {
+        this.unhandledFailureListener = listener;
+    }
+
+    UnhandledFailureListener unhandledFailureListener() {
+        return unhandledFailureListener;
     }
 
     private record Timer(long due, long seq, Runnable task) implements Comparable<Timer> {
@@ -377,7 +383,12 @@ public final class Agent {
     }
 
     int nextIntentionId() {
-        return ++intentionSerial;
+        return intentionSerial.incrementAndGet();
+    }
+
+    /** Numbers this agent's intentions from {@code counter}, shared with the other agents of its system. */
+    public void shareIntentionCounter(AtomicInteger counter) {
+        intentionSerial = counter;
     }
 
     public String nextMessageId() {

@@ -42,6 +42,10 @@ public final class BeliefBase {
             this.ground = false;
         }
 
+        void setLiteral(Literal l) {
+            literal = l;
+        }
+
         public Literal literal() {
             return literal;
         }
@@ -424,7 +428,7 @@ public final class BeliefBase {
         int hash = FactIndex.hash(l.args());
         Entry known = group.facts.get(l.args(), hash);
         if (known != null) {
-            Literal fresh = merge(known, l);
+            Literal fresh = BeliefAnnotations.merge(known, l);
             if (fresh != null) {
                 changed(group);
             }
@@ -436,73 +440,6 @@ public final class BeliefBase {
         size++;
         changed(group);
         return l;
-    }
-
-    /**
-     * Adds the annotations of {@code l} to a stored belief. {@return the literal with only the new
-     * annotations, which the event announces as Jason does, or null when there is none} Each new
-     * one is inserted in the sorted annotations: a belief told by a thousand agents has a thousand
-     * sources, and merging them all again at every message was quadratic in the number of senders.
-     */
-    private static Literal merge(Entry known, Literal l) {
-        Literal merged = known.literal;
-        List<Term> more = l.annots();
-        List<Term> fresh = null;
-        for (int i = 0, n = more.size(); i < n; i++) {
-            Term a = more.get(i);
-            int at = find(merged.annots(), a);
-            if (at >= 0) {
-                continue;
-            }
-            if (at == UNORDERED) {
-                return mergeAll(known, l);
-            }
-            merged = merged.addAnnot(a);
-            if (fresh == null) {
-                fresh = new ArrayList<>(n - i);
-            }
-            fresh.add(a);
-        }
-        if (fresh == null) {
-            return null;
-        }
-        known.literal = merged;
-        return fresh.size() == more.size() ? l : l.withAnnots(fresh);
-    }
-
-    /** As {@link #merge}, by sorting all annotations again (terms the order does not tell apart). */
-    private static Literal mergeAll(Entry known, Literal l) {
-        var fresh = new ArrayList<Term>(l.annots());
-        fresh.removeAll(known.literal.annots());
-        if (fresh.isEmpty()) {
-            return null;
-        }
-        known.literal = known.literal.addAnnots(l.annots());
-        return l.withAnnots(fresh);
-    }
-
-    /** A term of the standard order's rank that equals none of the terms it ranks equal to. */
-    private static final int UNORDERED = Integer.MIN_VALUE;
-
-    /**
-     * {@return the position of {@code t} in sorted annotations, a negative number when it is not
-     * there, or {@link #UNORDERED} when another term takes its place in the order}
-     */
-    private static int find(List<Term> sorted, Term t) {
-        int lo = 0;
-        int hi = sorted.size() - 1;
-        while (lo <= hi) {
-            int mid = (lo + hi) >>> 1;
-            int c = sorted.get(mid).compareTo(t);
-            if (c < 0) {
-                lo = mid + 1;
-            } else if (c > 0) {
-                hi = mid - 1;
-            } else {
-                return sorted.get(mid).equals(t) ? mid : UNORDERED;
-            }
-        }
-        return -1;
     }
 
     /**
@@ -532,7 +469,7 @@ public final class BeliefBase {
             return null;
         }
         Entry e = group.fact(removal.args());
-        if (e == null || !containsAll(e.literal.annots(), removal.annots())) {
+        if (e == null || !BeliefAnnotations.containsAll(e.literal.annots(), removal.annots())) {
             return null;
         }
         return removeAnnots(group, e, removal);
@@ -540,7 +477,7 @@ public final class BeliefBase {
 
     private Literal removeAnnots(Group group, Entry e, Literal removal) {
         Literal stored = e.literal;
-        if (!keepsSource(stored.annots(), removal.annots())) {
+        if (!BeliefAnnotations.keepsSource(stored.annots(), removal.annots())) {
             removeFromGroup(group, e, stored);
             return stored;
         }
@@ -550,26 +487,6 @@ public final class BeliefBase {
         left.removeAll(removal.annots());
         e.literal = stored.withAnnots(left);
         return removal;
-    }
-
-    /** {@code all.containsAll(some)} by index, without iterators (annotation lists are short). */
-    private static boolean containsAll(List<Term> all, List<Term> some) {
-        for (int i = 0, n = some.size(); i < n; i++) {
-            if (!all.contains(some.get(i))) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** {@return whether some source annotation of {@code annots} is not among those removed} */
-    private static boolean keepsSource(List<Term> annots, List<Term> removed) {
-        for (int i = 0, n = annots.size(); i < n; i++) {
-            if (annots.get(i) instanceof Literal a && a.functor().equals("source") && !removed.contains(a)) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** Removes a stored entry (belief or rule) entirely. */

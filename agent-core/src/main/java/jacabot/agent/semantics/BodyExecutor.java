@@ -1,6 +1,7 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.ListTerm;
@@ -100,6 +101,11 @@ final class BodyExecutor {
 
     private void action(Intention i, IntendedMeans im, Term term) {
         Term applied = im.unifier().apply(term);
+        if (applied instanceof ArithFunction f) {
+            // a function that could not be evaluated goes to the environment as the structure it
+            // is written as (Jason's); one that evaluates gives a number, which is no action
+            applied = Literal.of(f.name(), f.args());
+        }
         if (!(applied instanceof Literal l)) {
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_not_literal",
                     "'" + applied + "' is not an action"));

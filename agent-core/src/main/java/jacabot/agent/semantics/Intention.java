@@ -161,4 +161,31 @@ public final class Intention implements Iterable<IntendedMeans> {
         }
         return sb.toString();
     }
+
+    /**
+     * {@return the intention as Jason's warnings print it: its number, then a line per intended
+     * means, top first, with what is left of its body and its unifier}
+     */
+    public String jasonText() {
+        var sb = new StringBuilder("intention ").append(id).append(": \n");
+        int shown = 0;
+        for (IntendedMeans im : stack) {
+            String body = im.remainingBody();
+            sb.append("    ").append(im.trigger()).append(" <- ").append(body.isEmpty() ? "." : "... " + body)
+                    .append(" / ").append(unifierText(im.unifier())).append('\n');
+            if (shown++ > 40) {
+                sb.append("... more ").append(stack.size() - 40).append(" intended means!\n");
+                break;
+            }
+        }
+        return sb.toString();
+    }
+
+    private static String unifierText(Unifier u) {
+        var sb = new StringBuilder("{");
+        for (var e : JasonHashOrder.of(u.bindings())) {
+            sb.append(sb.length() > 1 ? ", " : "").append(e.getKey()).append('=').append(e.getValue());
+        }
+        return sb.append('}').toString();
+    }
 }

@@ -449,7 +449,15 @@ final class ReasoningCycle {
             if (relevant) {
                 c.addEvent(failEvent);
             } else {
-                ag.warn("No failure event was generated for " + failEvent.trigger());
+                ag.warn("No failure event was generated for " + failEvent.trigger() + "\n" + i.jasonText());
+                var listener = ag.unhandledFailureListener();
+                if (listener != null && failEvent.trigger().literal() instanceof Literal failed) {
+                    IntendedMeans root = im;
+                    for (IntendedMeans each : i) {
+                        root = each;
+                    }
+                    listener.failureUnhandled(failed, root.trigger().literal() instanceof Literal r ? r : failed);
+                }
                 ag.dropIntention(i);
             }
         } else {

@@ -4,6 +4,7 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.Circumstance;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.IntendedMeans;
+import jacabot.agent.semantics.JasonHashOrder;
 import jacabot.agent.semantics.Intention;
 import jacabot.agent.semantics.Renamer;
 import jacabot.agent.semantics.Unifier;

@@ -57,6 +57,21 @@ class LocalMASTest {
                 "[alice] [stock(3)[source(bob)],stock(4)[source(bob)]]"), lines());
     }
 
+    /** As Jason's, whose counter is one per JVM (recorded from Jason 3.2.0: 1, 2, 3). */
+    @Test
+    void intentionsAreNumberedByOneCounterForTheWholeSystem() throws Exception {
+        agent("a", """
+                !start.
+                +!start <- .intention(I, running); .print(I); .send(b, achieve, go).
+                +done <- .intention(I, running); .print(I).
+                """);
+        agent("b", """
+                +!go <- .intention(I, running); .print(I); .send(a, tell, done).
+                """);
+        mas.runUntilQuiescent(10_000);
+        assertEquals(List.of("[a] 1", "[b] 2", "[a] 3"), lines());
+    }
+
     /** Stepping: an agent whose cycle throws is taken out when asked to be (a team's host), else the throw ends the step. */
     @Test
     void anAgentWhoseCycleThrowsIsTakenOutAndTheOthersGoOn() throws Exception {

@@ -62,6 +62,23 @@ class ReasoningCycleTest {
     }
 
     @Test
+    void theUnhandledFailureWarningShowsTheIntentionAsJasonPrintsIt() {
+        var a = new TestAgent("""
+                !top.
+                +!top <- X = 1; !g(X); .print(never).
+                +!g(N) <- Y = N + 1; .fail; .print(never).
+                """);
+        a.cycles(20);
+        String[] lines = a.printed().get(0).split("\n", -1);
+        // recorded from Jason 3.2.0: a line per intended means, top first, what is left of its body and its
+        // unifier in the order of Jason's hash map
+        assertEquals("intention 1: ", lines[1]);
+        assertEquals("    +!g(1)[source(self)] <- ... .fail; .print(never) / {Y=2, N=1}", lines[2]);
+        assertEquals("    +!top[source(self)] <- ... !g(X); .print(never) / {X=1}", lines[3]);
+        assertEquals("", lines[4]);
+    }
+
+    @Test
     void environmentActionsWaitForFeedbackAndFailWithActionFailed() {
         var a = new TestAgent("""
                 !g.

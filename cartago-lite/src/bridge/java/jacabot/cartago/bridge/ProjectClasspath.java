@@ -11,6 +11,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.CharStreams;
@@ -69,6 +71,7 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
         for (Path p : extra) {
             addEntry(p.toAbsolutePath(), p.toString(), "--classpath", entries, sources);
         }
+        leaveOutJasonApiSources(sources, warnings);
         return new ProjectClasspath(new ArrayList<>(entries), new ArrayList<>(sources), warnings);
     }
 
@@ -111,6 +114,45 @@ public record ProjectClasspath(List<Path> entries, List<Path> sources, List<Stri
             }
         }
         return false;
+    }
+
+    private static final Pattern JASON_IMPORT = Pattern.compile("(?m)^\\s*import\\s+(?:static\\s+)?(jason\\.[\\w.]*\\*?)");
+
+    /**
+     * A source written against Jason's own Java API (an internal action extending Jason's
+     * {@code DefaultInternalAction}, an agent architecture, an environment) cannot compile here,
+     * where that API does not exist: it is left out with one warning, as Jason leaves out a class
+     * it cannot load, and the program runs without it (an action it would have defined goes to the
+     * environment).
+     */
+    private static void leaveOutJasonApiSources(Set<Path> sources, List<String> warnings) throws Problem {
+        for (var it = sources.iterator(); it.hasNext(); ) {
+            Path source = it.next();
+            String text;
+            try {
+                text = Files.readString(source, StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new Problem(source + ": " + e.getMessage());
+            }
+            Matcher m = JASON_IMPORT.matcher(text);
+            if (m.find()) {
+                it.remove();
+                Path cwd = Path.of("").toAbsolutePath();
+                Path shown = source.startsWith(cwd) ? cwd.relativize(source) : source;
+                warnings.add(shown + ":" + lineOf(text, m.start(1)) + ": warning: imports " + m.group(1)
+                        + " of Jason's own Java API, which jacabot does not provide: not compiled, its classes are missing");
+            }
+        }
+    }
+
+    private static int lineOf(String text, int offset) {
+        int line = 1;
+        for (int i = 0; i < offset; i++) {
+            if (text.charAt(i) == '\n') {
+                line++;
+            }
+        }
+        return line;
     }
 
     private static List<Path> javaFilesUnder(Path dir) throws Problem {

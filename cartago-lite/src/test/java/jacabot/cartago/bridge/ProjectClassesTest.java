@@ -63,6 +63,23 @@ class ProjectClassesTest {
         assertTrue(e.lines().get(0).matches(".*Broken\\.java:3: incompatible types: .*"), e.lines().get(0));
     }
 
+    /** Jason's own demos ship internal actions written against Jason's Java API, which does not exist here. */
+    @Test
+    void aSourceUsingJasonsJavaApiIsLeftOutWithAWarningAndTheRestRuns(@TempDir Path dir) throws Exception {
+        ProjectRun.write(dir, Map.of("src/java/my/tools/Tally.java", TALLY,
+                "src/java/mylib/twice.java", "package mylib;\n\nimport jason.asSemantics.*;\nimport jason.asSyntax.*;\n"
+                        + "public class twice extends DefaultInternalAction {}\n",
+                "t.mas2j", MAS.formatted(""), "a.asl", AGENT));
+        var cp = ProjectClasses.prepare(dir.resolve("t.mas2j"), List.of()).classpath();
+        assertEquals(1, cp.sources().size(), cp.sources().toString());
+        assertTrue(cp.sources().get(0).endsWith("Tally.java"), cp.sources().toString());
+        assertEquals(1, cp.warnings().size(), cp.warnings().toString());
+        assertTrue(cp.warnings().get(0).matches(".*twice\\.java:3: warning: imports jason\\.asSemantics\\.\\* of Jason's own Java API.*"),
+                cp.warnings().get(0));
+        ProjectRun run = ProjectRun.run(dir.resolve("t.mas2j"), 0, 90_000);
+        assertEquals("[a] tally 9\n", run.output);
+    }
+
     @Test
     void aMissingMas2jEntryIsAWarningAMissingCommandLineEntryAnError(@TempDir Path dir) throws Exception {
         ProjectRun.write(dir, Map.of("t.mas2j", MAS.formatted("classpath: \"../../lib/cartago.jar\";"), "a.asl", AGENT));

@@ -1,4 +1,4 @@
-package jacabot.agent.stdlib;
+package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
@@ -10,19 +10,21 @@ import java.util.Map;
 /**
  * The order in which Jason's {@code Unifier} lists its bindings: a {@code java.util.HashMap} keyed by
  * variable, whose hash is its name's, so the order is that of the names' buckets (insertion order
- * within one). Programs print it through {@code .intention}, so it is reproduced, not guessed.
+ * within one). Programs print it through {@code .intention}, and Jason's warning for an unhandled
+ * failure prints it, so it is reproduced, not guessed. (A map Jason cloned has fewer buckets; the
+ * order of its bindings then differs, which is not followed.)
  */
-final class JasonHashOrder {
+public final class JasonHashOrder {
     private JasonHashOrder() {
     }
 
     /** {@return the variable's name in Jason: as written, or {@code _N} for an unnamed or fresh one} */
-    static String jasonName(Var v) {
+    public static String jasonName(Var v) {
         return v.toString();
     }
 
     /** {@return the bindings, given in insertion order, in the order Jason's hash map iterates them} */
-    static List<Map.Entry<Var, Term>> of(Map<Var, Term> bindings) {
+    public static List<Map.Entry<Var, Term>> of(Map<Var, Term> bindings) {
         int n = bindings.size();
         // a map that grew by insertion has 16 buckets up to 12 entries, and doubles past 3/4 full
         int buckets = 16;
