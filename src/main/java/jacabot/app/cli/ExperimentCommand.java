@@ -312,8 +312,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 throw new IllegalStateException(port != 0 ? "cannot listen on port " + port + " (" + e.getMessage()
                         + "); choose another with --port" : e.getMessage(), e);
             }
-            // the summary's factor is the run's: the world, the link and the agent, up to the last step
-            double runWall = (System.nanoTime() - start) / 1e9;
+            double runWall = (System.nanoTime() - start) / 1e9; // the summary's factor: world, link and agent only
             linkFile.flush();
             tap.close();
             consoleFile.events(recorder.events());
