@@ -312,6 +312,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 throw new IllegalStateException(port != 0 ? "cannot listen on port " + port + " (" + e.getMessage()
                         + "); choose another with --port" : e.getMessage(), e);
             }
+            double runWall = (System.nanoTime() - start) / 1e9; // the summary's factor: world, link and agent only
             linkFile.flush();
             tap.close();
             consoleFile.events(recorder.events());
@@ -331,7 +332,10 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), simWorld, outDir, wall, run.cycles(), files(worldFile, sourceName));
+            report(log, recorder.summary("agent"), simWorld, outDir, runWall, run.cycles(), files(worldFile, sourceName));
+            if (wall - runWall >= 0.05) { // the step log's writer catching up: a recording, not the run
+                log.result(String.format(Locale.ROOT, "The recordings (step log, console) were finished %.1f s after the last step.", wall - runWall));
+            }
             if (robotAgents.size() > 1) {
                 log.result(RobotAgents.wheelSummary(run.middleware().wheelLease()));
             }

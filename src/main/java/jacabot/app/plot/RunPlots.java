@@ -45,6 +45,8 @@ public final class RunPlots {
     /** Reactive and response times of the run, one {@code kind,microseconds} per line. */
     public static final String LATENCY = "latency.csv";
     public static final List<String> FILES = List.of("battery.png", "speed.png", "events.png", "latency.png");
+    /** The charts' width in pixels; the time series are thinned to their envelope at this many columns. */
+    private static final int WIDTH = 900;
 
     private static final Pattern EVENT = Pattern.compile("t=([0-9.]+) (.*)");
     /** The mark action, with or without arguments or a namespace ({@code mark}, {@code mark(P)}, {@code .mw::mark}). */
@@ -310,9 +312,10 @@ public final class RunPlots {
         if (s.battery.allNaN()) {
             return Optional.empty();
         }
-        XYChart c = new XYChartBuilder().width(900).height(420).title("Battery").xAxisTitle("simulated time (s)")
+        XYChart c = new XYChartBuilder().width(WIDTH).height(420).title("Battery").xAxisTitle("simulated time (s)")
                 .yAxisTitle("energy (J)").build();
-        c.addSeries("battery", s.t.values(), s.battery.values()).setMarker(SeriesMarkers.NONE).setLineColor(new Color(40, 110, 60));
+        Envelope battery = Envelope.of(s.t.values(), s.battery.values(), WIDTH);
+        c.addSeries("battery", battery.x(), battery.y()).setMarker(SeriesMarkers.NONE).setLineColor(new Color(40, 110, 60));
         for (String kind : List.of("low battery", "recharge", "charged", "resume", "mark")) {
             var xs = new ArrayList<Double>();
             var ys = new ArrayList<Double>();
@@ -331,12 +334,14 @@ public final class RunPlots {
     }
 
     static XYChart speed(Series s) {
-        XYChart c = new XYChartBuilder().width(900).height(420).title("Speed and wheel commands")
+        XYChart c = new XYChartBuilder().width(WIDTH).height(420).title("Speed and wheel commands")
                 .xAxisTitle("simulated time (s)").yAxisTitle("wheel speed (units) / robot speed (mm/s)").build();
         double[] t = s.t.values();
-        c.addSeries("left wheel", t, s.left.values()).setMarker(SeriesMarkers.NONE);
-        c.addSeries("right wheel", t, s.right.values()).setMarker(SeriesMarkers.NONE);
-        c.addSeries("robot speed (mm/s)", t, s.speed.values()).setMarker(SeriesMarkers.NONE);
+        for (var series : List.of(Map.entry("left wheel", s.left), Map.entry("right wheel", s.right),
+                Map.entry("robot speed (mm/s)", s.speed))) {
+            Envelope e = Envelope.of(t, series.getValue().values(), WIDTH);
+            c.addSeries(series.getKey(), e.x(), e.y()).setMarker(SeriesMarkers.NONE);
+        }
         return c;
     }
 
@@ -382,7 +387,7 @@ public final class RunPlots {
         for (int i = 0; i < edges.length - 1; i++) {
             labels.add(label(edges[i]));
         }
-        CategoryChart c = new CategoryChartBuilder().width(900).height(420)
+        CategoryChart c = new CategoryChartBuilder().width(WIDTH).height(420)
                 .title("Reactive and response times (wall clock, " + reactive.size() + " / " + response.size() + " samples)")
                 .xAxisTitle("from (us)").yAxisTitle("samples").build();
         c.getStyler().setOverlapped(false);

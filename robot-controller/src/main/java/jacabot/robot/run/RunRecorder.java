@@ -221,14 +221,18 @@ public final class RunRecorder implements WorldListener {
         if (charger != null) {
             boolean was = onCharger;
             onCharger = inside(charger, at, was);
-            String energy = robot.hasBattery() ? f(" (%.1f J)", robot.getBattery().energy()) : "";
             if (onCharger && !was) {
                 chargerVisits++;
-                log(nowMs, "reached charger" + energy);
+                log(nowMs, "reached charger" + energy());
             } else if (was && !onCharger) {
-                log(nowMs, "left charger" + energy);
+                log(nowMs, "left charger" + energy());
             }
         }
+    }
+
+    /** The battery's energy for an event's text, made only when there is an event (formatting costs at every step). */
+    private String energy() {
+        return robot.hasBattery() ? f(" (%.1f J)", robot.getBattery().energy()) : "";
     }
 
     /** Inside an area, with hysteresis: a robot already in stays in until EXIT_MARGIN beyond the rim. */

@@ -55,6 +55,7 @@ final class Physics {
         world.getSettings().setStepFrequency(basicTimeStepMs / 1000.0);
         world.getSettings().setAtRestDetectionEnabled(false);
         world.setTimeOfImpactDetector(new BoundedAdvancement());
+        BroadPhases.install(world);
     }
 
     void step() {
