@@ -91,8 +91,11 @@ class JcmProjectTest {
                     <- .print(Me, " sees ", N, " step ", S, " limit ", L); .send(carol, tell, reported(Me)).
                 """, "watcher.asl", """
                 !look.
-                +!look <- lookupArtifact("c", C); .print("found c in tools").
-                +reported(_) : .count(reported(_), 2) <- .stopMAS.
+                +!look <- lookupArtifact("c", C); .print("found c in tools"); +looked; !finish.
+                +reported(_) <- !finish.
+                // stops once it has looked and both bobs reported, in whatever order they come
+                +!finish : looked & .count(reported(_), 2) <- .stopMAS.
+                +!finish.
                 """));
         List<String> lines = ProjectRun.run(dir.resolve("p.jcm"), 0, 60_000).lines();
         assertEquals(List.of("[bob1] bob1 sees 0 step 2 limit 7", "[bob2] bob2 sees 0 step 2 limit 7", "[carol] found c in tools"),
