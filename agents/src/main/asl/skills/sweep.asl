@@ -48,29 +48,15 @@ setUpGoal(setUpSweep).
 
 // an agent that believes resumeSweep goes on along the lanes it had not yet driven
 @planSweepResumed +!planSweep : resumeSweep & sweep([_ | _]) <- !nextWaypoint.
-// Lanes along the arena's shorter side, stepping along its longer one: a wall that splits the
-// arena (across its longer side, with one doorway) is then crossed once, between two lanes,
-// instead of by every lane; the lanes along the longer side sent the robot into the wall at each
-// lane's end, and the far room was reached after 442-558 s (wide generated worlds). The first
-// lane is at the end away from the storage point (the floor around it is seen on every
-// delivery), begun at the end nearer the robot.
 @planSweep
-+!planSweep : arena(W, D) & sweepSpacing(S) & location(Lx, _, Lz) & storagePoint(Sx, Sz)
-    <- if (W >= D) { Ha = W / 2 - S / 2; Hl = D / 2 - S / 2; Pa = -Sx; Pl = Lz }
-       else { Ha = D / 2 - S / 2; Hl = W / 2 - S / 2; Pa = -Sz; Pl = Lx };
-       if (Pa > 0) { Sa = -1 } else { Sa = 1 };
-       if (Pl > 0) { Sl = 1 } else { Sl = -1 };
-       N = math.floor(2 * Ha / S);
-       .findall([A, L], .range(I, 0, N) & A = Sa * (-Ha + I * S)
-                        & ((I mod 2 == 0 & (E = 1 | E = -1)) | (I mod 2 == 1 & (E = -1 | E = 1))) & L = Sl * E * Hl, Lanes);
-       .findall([X1, Z1], .member([A1, L1], Lanes) & lanePoint(W, D, A1, L1, X1, Z1), All);
++!planSweep : arena(W, D) & sweepSpacing(S)
+    <- Hx = W / 2 - S / 2; Hz = D / 2 - S / 2; N = math.floor(2 * Hz / S);
+       .findall(lane(I, Z), .range(I, 0, N) & Z = -Hz + I * S, Lanes);
+       .findall([X1, Z1], .member(lane(I1, Z1), Lanes) & ((I1 mod 2 == 0 & (X1 = -Hx | X1 = Hx)) | (I1 mod 2 == 1 & (X1 = Hx | X1 = -Hx))), All);
        // not into the storage area
        ?storagePoint(Sx, Sz); ?storageClearance(C);
        .findall([X2, Z2], .member([X2, Z2], All) & (X2 - Sx) * (X2 - Sx) + (Z2 - Sz) * (Z2 - Sz) > (C + 0.1) * (C + 0.1), Ws);
        -+sweep(Ws); !nextWaypoint.
-// a lane's point (A along the longer side, L along the shorter) on the arena's axes
-lanePoint(W, D, A, L, A, L) :- W >= D.
-lanePoint(W, D, A, L, L, A) :- W < D.
 
 @nextWaypoint
 +!nextWaypoint : sweep([[X, Z] | Rest])
@@ -102,10 +88,8 @@ lanePoint(W, D, A, L, L, A) :- W < D.
        ?location(Lx2, _, Lz2); computeAngle(Lx2, Lz2, X, Z, D); -+desired(D); !balance; setSpeeds(V, V); .wait(2000).
 @noSweepStep +!sweepStep <- !nextWaypoint; .wait(100).
 
-// stuck (the middleware's progress percept) while searching: escape, and on towards the same
-// waypoint: skipping it here skipped the waypoint beyond a wall before the robot had stalled long
-// enough to follow the wall (way-round); the waypoint's patience still skips it
+// stuck (the middleware's progress percept) while searching: escape, and on to the next waypoint
 @stuckEscape
 +stuck : not avoiding
-    <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding.
+    <- println("No progress: escaping"); +avoiding; .succeed_goal(move(_)); stop; !escape; -avoiding; !nextWaypoint.
 @stuckAvoiding +stuck.
