@@ -64,6 +64,11 @@ public final class Intention implements Iterable<IntendedMeans> {
         return top;
     }
 
+    /** {@return the intended means at the bottom of the stack (the goal the intention was started for), or null} */
+    public IntendedMeans bottom() {
+        return stack.peekLast();
+    }
+
     public int size() {
         return stack.size();
     }

@@ -452,10 +452,7 @@ final class ReasoningCycle {
                 ag.warn("No failure event was generated for " + failEvent.trigger() + "\n" + i.jasonText());
                 var listener = ag.unhandledFailureListener();
                 if (listener != null && failEvent.trigger().literal() instanceof Literal failed) {
-                    IntendedMeans root = im;
-                    for (IntendedMeans each : i) {
-                        root = each;
-                    }
+                    IntendedMeans root = i.bottom();
                     listener.failureUnhandled(failed, root.trigger().literal() instanceof Literal r ? r : failed);
                 }
                 ag.dropIntention(i);
