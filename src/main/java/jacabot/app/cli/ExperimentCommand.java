@@ -9,20 +9,16 @@ import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.inspector.DebugConsole;
 import jacabot.app.inspector.Debugger;
-import jacabot.app.inspector.MindWatch;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.plot.TrajectoryPlot;
 import jacabot.app.replay.BaselineTap;
-import jacabot.app.replay.RealTimeTap;
 import jacabot.app.replay.PageEdits;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepLog;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.ExperimentMatch;
-import jacabot.app.run.LagMeter;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
-import jacabot.app.run.RealTimeRun;
 import jacabot.app.run.RobotAgent;
 import jacabot.app.world.Landmarks;
 import jacabot.cartago.CartagoException;
@@ -36,11 +32,8 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
-import jacabot.sim.viewer.WorldViewer;
 import jacabot.sim.world.WorldSpec;
 import java.awt.GraphicsEnvironment;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
@@ -51,20 +44,15 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
-import javax.swing.JFrame;
-import javax.swing.SwingUtilities;
-import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
@@ -229,7 +217,8 @@ final class ExperimentCommand implements Callable<Integer> {
         if (viewer) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
                     + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, worldFile, source, runSeed, seconds, log, outDir);
+            return new RealTimeExperiment(experiment, speed, port, inspectorOptions).run(simWorld, worldFile, source, runSeed, seconds,
+                    log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
@@ -446,15 +435,15 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** The world and agent files a run used, as the summary names them (agent null: the baseline). */
-    private record RunFiles(String world, String agent) {
+    record RunFiles(String world, String agent) {
     }
 
-    private static RunFiles files(Object world, String agent) {
+    static RunFiles files(Object world, String agent) {
         return new RunFiles(world.toString(), agent);
     }
 
     /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
-    private static void report(ConsoleLog log, RunSummary summary,
+    static void report(ConsoleLog log, RunSummary summary,
             SimWorld world, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
         Files.createDirectories(outDir);
         var mapper = new ObjectMapper();
@@ -476,93 +465,6 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
                 + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : "")
                 + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
-    }
-
-    /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
-            ConsoleLog log, Path outDir) throws Exception {
-        // the step log as in a headless run; its steps come from the controller's event log
-        var tap = RealTimeTap.open(simWorld, outDir, experiment, source.name());
-        var recorder = RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
-        long start = System.nanoTime();
-        List<LagMeter.Episode> lags = List.of();
-        Optional<String> agentFailure = Optional.empty();
-        try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
-                port, tap.controllerEvents())) {
-            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
-                    ConsoleLog.lines(log::result));
-            tap.inspect(inspector);
-            var watches = new ArrayList<MindWatch>();
-            for (String name : run.mas().agentNames()) {
-                boolean robot = name.equals("robot");
-                if (robot || inspector != null) { // the robot's mind also goes to the step log
-                    var watch = MindWatch.attach(inspector, run.mas().agent(name),
-                            robot ? RunTap.robotView(simWorld) : null);
-                    watches.add(robot ? watch.alsoTo(tap.minds()) : watch);
-                }
-            }
-            AutoCloseable sampling = MindWatch.sampleEvery(watches, 200);
-            run.lag().addListener(tap.lags()).addListener(LagMeter.firstWarning(log::warn));
-            run.start();
-            var closed = new CountDownLatch(1);
-            SwingUtilities.invokeLater(() -> {
-                JFrame frame = WorldViewer.open(run.runner(), run.lag()::status);
-                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new WindowAdapter() {
-                    @Override
-                    public void windowClosed(WindowEvent e) {
-                        closed.countDown();
-                    }
-                });
-            });
-            while (!closed.await(200, TimeUnit.MILLISECONDS)) {
-                if (simWorld.time() >= seconds || run.agentFailure().isPresent()) {
-                    break;
-                }
-            }
-            agentFailure = run.agentFailure();
-            run.lag().close(); // an episode still open ends here, and is written with the next step
-            tap.awaitLagNotes(1000);
-            run.runner().stop();
-            sampling.close();
-            lags = run.lag().episodes();
-            var failure = tap.closeLog();
-            if (failure != null) {
-                log.warn("the step log " + outDir.resolve(StepLog.FILE) + " stopped early: " + failure.getMessage());
-            }
-            if (inspector != null) {
-                inspector.close();
-            }
-        } catch (AslSyntaxException e) {
-            tap.close();
-            throw UserError.located(e.getMessage());
-        } catch (CartagoException e) {
-            tap.close();
-            throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
-                    + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
-        }
-        log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
-        recorder.detach();
-        report(log, recorder.summary("agent"), simWorld, outDir, (System.nanoTime() - start) / 1e9, -1,
-                files(worldFile, source.name()));
-        if (!lags.isEmpty()) {
-            var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
-            lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));
-            text.toString().lines().forEach(log::result);
-            Files.writeString(outDir.resolve("summary.txt"), text, StandardOpenOption.APPEND);
-        }
-        log.result("Step log: " + outDir.resolve(StepLog.FILE) + " (jacabot replay " + outDir + ")");
-        RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
-        if (agentFailure.isPresent()) {
-            throw new RunFailure(agentFailure.get());
-        }
-        return 0;
-    }
-
-    static String lagSummary(List<LagMeter.Episode> lags, double simulatedSeconds) {
-        long ms = lags.stream().mapToLong(e -> e.endMs() - e.startMs()).sum();
-        return String.format(Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
-                lags.size(), lags.size() == 1 ? "" : "s", ms / 1000.0, simulatedSeconds);
     }
 
     /** {@return the seconds of a --duration} @throws UserError when it is not one */
