@@ -70,13 +70,19 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up")
     private Experiment experiment;
 
-    @Option(names = "--headless", description = "no viewer: lockstep, as fast as possible (the default without a display)")
+    @Option(names = "--headless", description = "no viewer: lockstep, as fast as possible (the default without a display); "
+            + "with --real-time: real time without the viewer")
     private boolean headless;
 
     @Option(names = "--lockstep", description = "advance the world only when the agent is idle (always on when headless)")
     private boolean lockstep;
 
-    @Option(names = "--speed", paramLabel = "X", description = "with the viewer: real time x this factor (default ${DEFAULT-VALUE})")
+    @Option(names = "--real-time", description = "real time (x --speed), the agent running free as in the thesis, also "
+            + "without the viewer: with --headless or no display, a server's run watched on the inspector's page (on by default), "
+            + "which can apply edited plans to the running agent; --duration or Ctrl-C ends it")
+    private boolean realTime;
+
+    @Option(names = "--speed", paramLabel = "X", description = "in real time: real time x this factor (default ${DEFAULT-VALUE})")
     private double speed = 1;
 
     @Option(names = "--seed", paramLabel = "N", description = "seed of the world and the agent (default: the world file's)")
@@ -139,6 +145,11 @@ final class ExperimentCommand implements Callable<Integer> {
         double seconds = duration(duration);
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new UserError("--speed must be a positive number, got " + speed);
+        }
+        if (realTime && (lockstep || agentNames != null || remoteController || !breaks.isEmpty() || linkLog || baseline)) {
+            throw new UserError("--real-time runs one agent with the world in this process; "
+                    + (lockstep ? "--lockstep" : agentNames != null ? "--agents" : remoteController ? "--remote-controller"
+                    : linkLog ? "--link-log" : baseline ? "--baseline" : "--break") + " is for lockstep runs: drop one of them");
         }
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
@@ -212,13 +223,13 @@ final class ExperimentCommand implements Callable<Integer> {
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
-        // the real-time run with the viewer hosts one agent; several run in lockstep
+        // a real-time run hosts one agent; several run in lockstep
         boolean viewer = !headless && !lockstep && agentNames == null && !GraphicsEnvironment.isHeadless();
-        if (viewer) {
-            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
-                    + " with the viewer (close the window to stop).");
-            return new RealTimeExperiment(experiment, speed, port, inspectorOptions).run(simWorld, worldFile, source, runSeed, seconds,
-                    log, outDir);
+        if (viewer || realTime) {
+            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed + (viewer
+                    ? " with the viewer (close the window to stop)." : ", " + duration + ", headless (Ctrl-C to stop)."));
+            return new RealTimeExperiment(experiment, speed, port, inspectorOptions, viewer).run(simWorld, worldFile, source,
+                    runSeed, seconds, log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;

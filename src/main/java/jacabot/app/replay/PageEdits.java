@@ -89,9 +89,14 @@ public final class PageEdits implements RunEdits {
     }
 
     @Override
-    public void reload(String program) throws Exception {
+    public Reload reloads() {
+        return live == null || debugger == null ? Reload.NONE : Reload.AT_HALT;
+    }
+
+    @Override
+    public String reload(String program) throws Exception {
         if (live == null || debugger == null) {
-            RunEdits.super.reload(program);
+            return RunEdits.super.reload(program);
         }
         AgentProgram edited;
         try {
@@ -100,6 +105,7 @@ public final class PageEdits implements RunEdits {
             throw new IllegalArgumentException(e.getMessage());
         }
         debugger.atHalt(() -> WhatIf.swapPlans(live, edited)).get(30, TimeUnit.SECONDS);
+        return "the halted run has the edited plans; continue or step it";
     }
 
     /**
