@@ -234,16 +234,20 @@ final class ExperimentCommand implements Callable<Integer> {
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         // the agents' console with its simulated times, for the inspector's console panel (the world is here only)
-        ConsoleRecorder consoleFile = remoteController ? null : ConsoleRecorder.open(outDir, simWorld::timeMs);
+        // (with a remote controller the world is the other process's: the times are those of the steps it sends)
+        LockstepRun[] made = new LockstepRun[1];
+        ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, !remoteController ? simWorld::timeMs
+                : () -> made[0] == null ? 0 : made[0].mas().clock().millis());
         try {
-            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile == null ? console : consoleFile.tee(console));
+            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile.tee(console));
+            made[0] = run;
         } catch (AslSyntaxException e) {
             throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
         if (remoteController) {
-            return runWithRemoteController(run, seconds, log);
+            return runWithRemoteController(run, seconds, log, consoleFile, outDir);
         }
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
@@ -361,7 +365,8 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** The agent side of the two-process lockstep set-up: the world, its summary and its logs are the controller's. */
-    private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log) throws Exception {
+    private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log, ConsoleRecorder consoleFile,
+            Path outDir) throws Exception {
         int listen = port != 0 ? port : Protocol.DEFAULT_PORT;
         try {
             LinkSecret.useInThisProcess(secretFile != null ? LinkSecret.loadOrCreate(secretFile)
@@ -370,14 +375,23 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
         log.info("Waiting for `jacabot controller --lockstep --port " + listen + "` with the same world file.");
+        run.onStep(data -> consoleFile.events(List.of())); // on disk at each step, for the inspector or a tail
         LockstepCoordinator.Result result;
         try {
             result = run.stepLogs(false).port(listen).remoteController(true).runFor(seconds);
         } catch (IOException e) {
             throw new IllegalStateException("cannot listen on port " + listen + " (" + e.getMessage() + "); choose another with --port", e);
+        } finally {
+            try {
+                consoleFile.close();
+            } catch (UncheckedIOException e) {
+                log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
+            }
         }
         log.result(String.format("%d steps (%.1f s simulated) with the remote controller, %d reasoning cycles.", result.steps(),
                 result.steps() * run.world().controlStep() / 1000.0, run.cycles()));
+        log.result("Written: " + outDir.resolve(ConsoleFile.FILE) + " (the agents' console by simulated time; the world's "
+                + "summary and logs are the controller's)");
         return 0;
     }
 

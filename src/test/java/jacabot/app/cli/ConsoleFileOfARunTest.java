@@ -16,6 +16,7 @@ import java.util.ArrayList;
 import java.util.List;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -93,6 +94,35 @@ class ConsoleFileOfARunTest {
         assertEquals(2, lines.size(), lines.toString());
         assertTrue(lines.get(0).timeMs() >= 1000 && lines.get(0).timeMs() <= 1080, lines.toString());
         assertTrue(lines.get(1).timeMs() >= 3000 && lines.get(1).timeMs() <= 3160, lines.toString());
+    }
+
+    /**
+     * A real-time run (here without the viewer: the same run) writes console.txt as a lockstep run
+     * does: the agent's lines at the simulated time they were printed, the event log's among them.
+     */
+    @Test
+    void aRealTimeRunWritesItsConsoleByItsSimulatedTimeToo(@TempDir Path dir) throws Exception {
+        Path agent = dir.resolve("waits.asl");
+        Files.writeString(agent, "!go.\n+!go <- .wait(1000); .print(\"after one second\"); .wait(2000); .print(\"after three\").\n");
+        // experiment 1's world with its first event (a box moved) at 2 s instead of 20 s
+        var world = (ObjectNode) new ObjectMapper().readTree(ROOT.resolve("worlds/obstacle-avoidance.json").toFile());
+        ((ObjectNode) world.get("events").get(0)).put("at", 2);
+        Path worldFile = Files.writeString(dir.resolve("obstacle-avoidance.json"), world.toString());
+        Path run = dir.resolve("run");
+        String[] r = CliRun.run("experiment", "obstacle-avoidance", "--real-time", "--headless", "--no-inspector",
+                "--duration", "4s", "--agent", agent.toString(), "--world", worldFile.toString(), "--out", run.toString());
+        assertEquals("0", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains(", console.txt"), "the run names it among what it wrote: " + r[1]);
+        var lines = ConsoleFile.of(run).between(0, Long.MAX_VALUE, 1000);
+        var said = lines.stream().filter(l -> l.text().startsWith("[robot] after")).toList();
+        assertEquals(2, said.size(), lines.toString());
+        // the world goes on while the agent wakes: a step or a few later in real time
+        assertTrue(said.get(0).timeMs() >= 1000 && said.get(0).timeMs() <= 1400, said.toString());
+        assertTrue(said.get(1).timeMs() >= 3000 && said.get(1).timeMs() <= 3400, said.toString());
+        List<String> file = Files.readAllLines(run.resolve(ConsoleFile.FILE));
+        List<String> events = Files.readAllLines(run.resolve(ConsoleFile.EVENT_LOG));
+        assertTrue(!events.isEmpty(), "the run has events");
+        assertEquals(events, file.stream().filter(events::contains).toList(), "the event log's lines, in order, among them");
     }
 
     private static JsonNode get(HttpClient client, String url) throws Exception {
