@@ -251,7 +251,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
-                ConsoleLog.lines(log::result));
+                ConsoleLog.lines(log::result), log::warn);
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
         if (inspector != null) {
             inspector.console(ConsoleFile.of(outDir));

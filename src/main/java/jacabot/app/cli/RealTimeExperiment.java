@@ -91,7 +91,7 @@ final class RealTimeExperiment {
         try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, consoleFile.tee(log.agents()),
                 port, controllerEvents)) {
             inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed
-                    + (viewer ? "" : ", real time"), ConsoleLog.lines(log::result));
+                    + (viewer ? "" : ", real time"), ConsoleLog.lines(log::result), log::warn);
             tap.inspect(inspector);
             if (inspector != null) {
                 inspector.console(ConsoleFile.of(outDir));

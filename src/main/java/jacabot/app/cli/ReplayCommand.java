@@ -122,7 +122,7 @@ final class ReplayCommand implements Callable<Integer> {
         if (!window) {
             return headlessReplay(replay);
         }
-        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out, this::warn);
         var history = inspector == null ? null : inspector.add("robot");
         if (inspector != null) {
             inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
@@ -150,9 +150,15 @@ final class ReplayCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** A warning line on the command's error stream (as a run's {@code warning: ...}). */
+    private void warn(String line) {
+        err.println("warning: " + line);
+        err.flush();
+    }
+
     /** Headless with {@code --inspector}: the recorded run in the inspector's page, read on demand, until Enter or Ctrl-C. */
     private int serve() throws Exception {
-        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out, this::warn);
         try {
             if (!TeamRuns.robotDirs(dir).isEmpty()) {
                 return serveTeam(inspector);

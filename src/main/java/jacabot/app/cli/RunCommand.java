@@ -180,7 +180,7 @@ final class RunCommand implements Callable<Integer> {
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
         // off by default: console programs end in moments; --inspector shows their minds
         var results = ConsoleLog.lines(log::result);
-        var inspector = inspectorOptions.start(false, "jacabot run " + file, results);
+        var inspector = inspectorOptions.start(false, "jacabot run " + file, results, log::warn);
         AutoCloseable sampling = () -> {
         };
         if (inspector != null) {
