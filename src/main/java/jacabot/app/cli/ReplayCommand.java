@@ -49,7 +49,8 @@ import picocli.CommandLine.Spec;
                 "     (or 'label:PLAN', '+!goal', 'failure'); the run halts and reads",
                 "     commands: Enter continue, s step, n cycle, p print, q no more halts.",
                 "  3. Change a plan in a copy of the agent (edited.asl), or in the page's",
-                "     What if panel.",
+                "     What if panel; a live run takes it from there too, halted in lockstep,",
+                "     or running: jacabot experiment NAME --real-time --headless",
                 "  4. What if: jacabot replay runs/NAME-SEED --what-if 60s --agent edited.asl",
                 "     then: jacabot plot runs/NAME-SEED runs/NAME-SEED-whatif-60s --out both.png"})
 final class ReplayCommand implements Callable<Integer> {
