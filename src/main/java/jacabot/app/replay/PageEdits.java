@@ -78,7 +78,15 @@ public final class PageEdits implements RunEdits {
     }
 
     @Override
+    public String whatIfRefusal() {
+        return header.realTime() ? WhatIf.REAL_TIME_REFUSAL : null;
+    }
+
+    @Override
     public void whatIf(WhatIfJob job, String program) throws Exception {
+        if (header.realTime()) {
+            throw new IllegalStateException(WhatIf.REAL_TIME_REFUSAL);
+        }
         AgentSource edited = original.withText(program);
         Path target = Path.of(runDir.toAbsolutePath().normalize() + "-whatif-" + count.incrementAndGet());
         WhatIf.Result r = WhatIf.run(world.call(), experiment, header.seed(), original, edited, job.getAtMs(),

@@ -55,9 +55,7 @@ public final class RealTimeEdits implements RunEdits {
 
     @Override
     public String whatIfRefusal() {
-        return "a what-if needs a lockstep run's step log (a real-time run cannot be run again step for step): "
-                + "run the experiment with --headless --inspector and start the what-if there, or edit this run's plans "
-                + "with \"apply to the running agent\"";
+        return WhatIf.REAL_TIME_REFUSAL + "; this run's plans can change as it runs: \"apply these plans to the running agent\"";
     }
 
     @Override

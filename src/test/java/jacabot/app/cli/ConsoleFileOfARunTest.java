@@ -1,10 +1,13 @@
 package jacabot.app.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.Inspector;
+import jacabot.app.replay.PageEdits;
+import jacabot.app.replay.StepArchive;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -37,6 +40,8 @@ class ConsoleFileOfARunTest {
                 "--agent", PUBLISHED, "--out", run.toString());
         assertEquals("0", r[0], r[1] + r[2]);
         List<String> file = Files.readAllLines(run.resolve(ConsoleFile.FILE));
+        assertFalse(StepArchive.open(run, (t, x, z) -> {
+        }).header().realTime(), "a lockstep run's step log");
         List<String> printed = r[1].lines().filter(l -> l.startsWith("[robot] ")).toList();
         assertTrue(printed.size() >= 4, r[1]);
         // every line the agent printed, in order, each with a time
@@ -123,6 +128,18 @@ class ConsoleFileOfARunTest {
         List<String> events = Files.readAllLines(run.resolve(ConsoleFile.EVENT_LOG));
         assertTrue(!events.isEmpty(), "the run has events");
         assertEquals(events, file.stream().filter(events::contains).toList(), "the event log's lines, in order, among them");
+        // its step log says it was in real time: no what-if from it (it could not be made again step for step)
+        String[] whatIf = CliRun.run("replay", run.toString(), "--what-if", "1s", "--agent", agent.toString());
+        assertEquals("2", whatIf[0], whatIf[1] + whatIf[2]);
+        assertTrue(whatIf[2].startsWith("error: ") && whatIf[2].contains("a what-if needs a lockstep run's step log")
+                && whatIf[2].strip().lines().count() == 1, whatIf[2]);
+        try (Inspector inspector = Inspector.startOnFreePort()) { // nor from its page under replay --inspector
+            var h = StepArchive.open(run, (t, x, z) -> {
+            }).header();
+            assertTrue(h.realTime());
+            String refusal = PageEdits.recorded(inspector, run, h, () -> null).whatIfRefusal();
+            assertTrue(refusal != null && refusal.contains("lockstep run's step log"), refusal);
+        }
     }
 
     private static JsonNode get(HttpClient client, String url) throws Exception {
