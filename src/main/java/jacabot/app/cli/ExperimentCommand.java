@@ -55,8 +55,11 @@ import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.TypeConversionException;
 
 /** {@code jacabot experiment NAME}: runs one of the four experiments of the thesis' Chapter 4, or tidy-up (composed of their skills). */
@@ -125,18 +128,18 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "with --remote-controller: the link secret shared with the controller (default ~/.jacabot/link-secret)")
     private Path secretFile;
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
     @Option(names = "--break", paramLabel = "SPEC", description = "lockstep: halt after the control step where SPEC "
             + "holds, print the mind and read commands (label:NAME, +!goal, -belief(_), belief:PATTERN, failure, t=60s)")
     private List<String> breaks = new ArrayList<>();
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    @Spec
+    private CommandSpec commandSpec;
 
     @Override
     public Integer call() throws Exception {

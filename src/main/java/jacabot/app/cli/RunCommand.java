@@ -34,6 +34,7 @@ import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
 import javax.net.ssl.SSLContext;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -88,10 +89,10 @@ final class RunCommand implements Callable<Integer> {
             description = "with --tls-store: the address to listen on, e.g. this machine's address on the lab network (default ${DEFAULT-VALUE})")
     private String tlsAddress = "127.0.0.1";
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
     @Spec
