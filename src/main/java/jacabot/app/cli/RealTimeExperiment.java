@@ -50,6 +50,8 @@ final class RealTimeExperiment {
     private final int port;
     private final InspectorOptions inspectorOptions;
     private final boolean viewer;
+    /** Ctrl-C, SIGTERM or (in-process) an interrupt: the run ends at once and writes what there is. */
+    private final AtomicBoolean signalled = new AtomicBoolean();
 
     /** @param viewer with the Swing viewer (closing it ends the run); without it, the inspector shows the run */
     RealTimeExperiment(Experiment experiment, double speed, int port, InspectorOptions inspectorOptions, boolean viewer) {
@@ -62,6 +64,30 @@ final class RealTimeExperiment {
 
     /** Runs it; {@return the exit code} @throws RunFailure when the agent failed at its job */
     int run(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
+            ConsoleLog log, Path outDir) throws Exception {
+        var done = new CountDownLatch(1);
+        Thread hook = new Thread(() -> { // Ctrl-C or SIGTERM: end now, write what there is, then let the JVM go
+            signalled.set(true);
+            try {
+                done.await(10, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "real-time-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            return runAndWrite(simWorld, worldFile, source, runSeed, seconds, log, outDir);
+        } finally {
+            done.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running: it waited for done
+            }
+        }
+    }
+
+    private int runAndWrite(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
             ConsoleLog log, Path outDir) throws Exception {
         // the step log as in a headless run; its steps come from the controller's event log
         var tap = RealTimeTap.open(simWorld, outDir, experiment, source.name());
@@ -76,17 +102,6 @@ final class RealTimeExperiment {
         long start = System.nanoTime();
         List<LagMeter.Episode> lags = List.of();
         Optional<String> agentFailure = Optional.empty();
-        var signalled = new AtomicBoolean();
-        var done = new CountDownLatch(1);
-        Thread hook = new Thread(() -> { // Ctrl-C or SIGTERM: end now, write what there is
-            signalled.set(true);
-            try {
-                done.await(5, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "real-time-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
         Inspector inspector = null;
         try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, consoleFile.tee(log.agents()),
                 port, controllerEvents)) {
@@ -156,12 +171,6 @@ final class RealTimeExperiment {
             if (inspector != null && (viewer || signalled.get())) {
                 inspector.close();
             }
-            done.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is running: it waits for done
-            }
         }
         log.result(String.format(signalled.get() ? "Stopped by a signal at t=%.1f s of simulated time; writing what there is."
                 : "Stopped at t=%.1f s of simulated time.", simWorld.time()));
@@ -175,7 +184,11 @@ final class RealTimeExperiment {
             Files.writeString(outDir.resolve("summary.txt"), text, StandardOpenOption.APPEND);
         }
         log.result("Step log: " + outDir.resolve(StepLog.FILE) + " (jacabot replay " + outDir + ")");
-        RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+        if (signalled.get()) { // the JVM is going: drawing could start what a shutdown refuses (AWT, temporary files)
+            log.result("Plots: not drawn after a signal; draw them with: jacabot plot " + outDir);
+        } else {
+            RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
+        }
         if (inspector != null && !viewer && !signalled.get()) { // a headless run's page stays while asked for
             inspector.showPlots(outDir);
             inspectorOptions.linger(inspector, ConsoleLog.lines(log::result));
