@@ -9,20 +9,16 @@ import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.inspector.DebugConsole;
 import jacabot.app.inspector.Debugger;
-import jacabot.app.inspector.MindWatch;
 import jacabot.app.plot.RunPlots;
 import jacabot.app.plot.TrajectoryPlot;
 import jacabot.app.replay.BaselineTap;
-import jacabot.app.replay.RealTimeTap;
 import jacabot.app.replay.PageEdits;
 import jacabot.app.replay.RunTap;
 import jacabot.app.replay.StepLog;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.ExperimentMatch;
-import jacabot.app.run.LagMeter;
 import jacabot.app.run.LockstepCoordinator;
 import jacabot.app.run.LockstepRun;
-import jacabot.app.run.RealTimeRun;
 import jacabot.app.run.RobotAgent;
 import jacabot.app.world.Landmarks;
 import jacabot.cartago.CartagoException;
@@ -36,11 +32,8 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
 import jacabot.sim.robot.Robot;
-import jacabot.sim.viewer.WorldViewer;
 import jacabot.sim.world.WorldSpec;
 import java.awt.GraphicsEnvironment;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
@@ -51,24 +44,22 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
-import javax.swing.JFrame;
-import javax.swing.SwingUtilities;
-import javax.swing.WindowConstants;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.TypeConversionException;
 
 /** {@code jacabot experiment NAME}: runs one of the four experiments of the thesis' Chapter 4, or tidy-up (composed of their skills). */
@@ -82,13 +73,19 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "obstacle-avoidance | object-picking | navigation | suspend-resume | tidy-up")
     private Experiment experiment;
 
-    @Option(names = "--headless", description = "no viewer: lockstep, as fast as possible (the default without a display)")
+    @Option(names = "--headless", description = "no viewer: lockstep, as fast as possible (the default without a display); "
+            + "with --real-time: real time without the viewer")
     private boolean headless;
 
     @Option(names = "--lockstep", description = "advance the world only when the agent is idle (always on when headless)")
     private boolean lockstep;
 
-    @Option(names = "--speed", paramLabel = "X", description = "with the viewer: real time x this factor (default ${DEFAULT-VALUE})")
+    @Option(names = "--real-time", description = "real time (x --speed), the agent running free as in the thesis, also "
+            + "without the viewer: with --headless or no display, a server's run watched on the inspector's page (on by default), "
+            + "which can apply edited plans to the running agent; --duration or Ctrl-C ends it")
+    private boolean realTime;
+
+    @Option(names = "--speed", paramLabel = "X", description = "in real time: real time x this factor (default ${DEFAULT-VALUE})")
     private double speed = 1;
 
     @Option(names = "--seed", paramLabel = "N", description = "seed of the world and the agent (default: the world file's)")
@@ -131,18 +128,18 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "with --remote-controller: the link secret shared with the controller (default ~/.jacabot/link-secret)")
     private Path secretFile;
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
     @Option(names = "--break", paramLabel = "SPEC", description = "lockstep: halt after the control step where SPEC "
             + "holds, print the mind and read commands (label:NAME, +!goal, -belief(_), belief:PATTERN, failure, t=60s)")
     private List<String> breaks = new ArrayList<>();
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
-    @picocli.CommandLine.Spec
-    private picocli.CommandLine.Model.CommandSpec commandSpec;
+    @Spec
+    private CommandSpec commandSpec;
 
     @Override
     public Integer call() throws Exception {
@@ -151,6 +148,11 @@ final class ExperimentCommand implements Callable<Integer> {
         double seconds = duration(duration);
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new UserError("--speed must be a positive number, got " + speed);
+        }
+        if (realTime && (lockstep || agentNames != null || remoteController || !breaks.isEmpty() || linkLog || baseline)) {
+            throw new UserError("--real-time runs one agent with the world in this process; "
+                    + (lockstep ? "--lockstep" : agentNames != null ? "--agents" : remoteController ? "--remote-controller"
+                    : linkLog ? "--link-log" : baseline ? "--baseline" : "--break") + " is for lockstep runs: drop one of them");
         }
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
@@ -224,30 +226,35 @@ final class ExperimentCommand implements Callable<Integer> {
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
-        // the real-time run with the viewer hosts one agent; several run in lockstep
+        // a real-time run hosts one agent; several run in lockstep
         boolean viewer = !headless && !lockstep && agentNames == null && !GraphicsEnvironment.isHeadless();
-        if (viewer) {
-            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed
-                    + " with the viewer (close the window to stop).");
-            return runWithViewer(simWorld, worldFile, source, runSeed, seconds, log, outDir);
+        if (viewer || realTime) {
+            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed + (viewer
+                    ? " with the viewer (close the window to stop)." : ", " + duration + ", headless (Ctrl-C to stop)."));
+            return new RealTimeExperiment(experiment, speed, port, inspectorOptions, viewer).run(simWorld, worldFile, source,
+                    runSeed, seconds, log, outDir);
         }
         log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
         LockstepRun run;
         // the agents' console with its simulated times, for the inspector's console panel (the world is here only)
-        ConsoleRecorder consoleFile = remoteController ? null : ConsoleRecorder.open(outDir, simWorld::timeMs);
+        // (with a remote controller the world is the other process's: the times are those of the steps it sends)
+        LockstepRun[] made = new LockstepRun[1];
+        ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, !remoteController ? simWorld::timeMs
+                : () -> made[0] == null ? 0 : made[0].mas().clock().millis());
         try {
-            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile == null ? console : consoleFile.tee(console));
+            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile.tee(console));
+            made[0] = run;
         } catch (AslSyntaxException e) {
             throw UserError.located(e.getMessage());
         } catch (CartagoException e) {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage(), e);
         }
         if (remoteController) {
-            return runWithRemoteController(run, seconds, log);
+            return runWithRemoteController(run, seconds, log, consoleFile, outDir);
         }
         Robot robot = simWorld.robots().get(0);
         var inspector = inspectorOptions.start(false, "experiment " + experiment.id() + ", seed " + runSeed,
-                ConsoleLog.lines(log::result));
+                ConsoleLog.lines(log::result), log::warn);
         var tap = RunTap.attach(run, inspector, outDir, experiment, sourceName);
         if (inspector != null) {
             inspector.console(ConsoleFile.of(outDir));
@@ -361,7 +368,8 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** The agent side of the two-process lockstep set-up: the world, its summary and its logs are the controller's. */
-    private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log) throws Exception {
+    private int runWithRemoteController(LockstepRun run, double seconds, ConsoleLog log, ConsoleRecorder consoleFile,
+            Path outDir) throws Exception {
         int listen = port != 0 ? port : Protocol.DEFAULT_PORT;
         try {
             LinkSecret.useInThisProcess(secretFile != null ? LinkSecret.loadOrCreate(secretFile)
@@ -370,14 +378,23 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError(e.getMessage() + (secretFile == null ? " (or pass --secret-file FILE)" : ""));
         }
         log.info("Waiting for `jacabot controller --lockstep --port " + listen + "` with the same world file.");
+        run.onStep(data -> consoleFile.events(List.of())); // on disk at each step, for the inspector or a tail
         LockstepCoordinator.Result result;
         try {
             result = run.stepLogs(false).port(listen).remoteController(true).runFor(seconds);
         } catch (IOException e) {
             throw new IllegalStateException("cannot listen on port " + listen + " (" + e.getMessage() + "); choose another with --port", e);
+        } finally {
+            try {
+                consoleFile.close();
+            } catch (UncheckedIOException e) {
+                log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
+            }
         }
         log.result(String.format("%d steps (%.1f s simulated) with the remote controller, %d reasoning cycles.", result.steps(),
                 result.steps() * run.world().controlStep() / 1000.0, run.cycles()));
+        log.result("Written: " + outDir.resolve(ConsoleFile.FILE) + " (the agents' console by simulated time; the world's "
+                + "summary and logs are the controller's)");
         return 0;
     }
 
@@ -446,15 +463,15 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** The world and agent files a run used, as the summary names them (agent null: the baseline). */
-    private record RunFiles(String world, String agent) {
+    record RunFiles(String world, String agent) {
     }
 
-    private static RunFiles files(Object world, String agent) {
+    static RunFiles files(Object world, String agent) {
         return new RunFiles(world.toString(), agent);
     }
 
     /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
-    private static void report(ConsoleLog log, RunSummary summary,
+    static void report(ConsoleLog log, RunSummary summary,
             SimWorld world, Path outDir, double wallSeconds, long cycles, RunFiles files) throws IOException {
         Files.createDirectories(outDir);
         var mapper = new ObjectMapper();
@@ -476,93 +493,6 @@ final class ExperimentCommand implements Callable<Integer> {
         log.result("Written: " + outDir.resolve("summary.json") + ", summary.txt, event-log.txt, trajectory.png"
                 + (Files.exists(outDir.resolve(StepLog.FILE)) ? ", " + StepLog.FILE : "")
                 + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
-    }
-
-    /** Real time with the Swing viewer, the agent running free as in the thesis. */
-    private int runWithViewer(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
-            ConsoleLog log, Path outDir) throws Exception {
-        // the step log as in a headless run; its steps come from the controller's event log
-        var tap = RealTimeTap.open(simWorld, outDir, experiment, source.name());
-        var recorder = RunRecorder.attach(simWorld, simWorld.robots().get(0).name());
-        long start = System.nanoTime();
-        List<LagMeter.Episode> lags = List.of();
-        Optional<String> agentFailure = Optional.empty();
-        try (var run = new RealTimeRun(simWorld, experiment, source, runSeed, speed, log.agents(),
-                port, tap.controllerEvents())) {
-            var inspector = inspectorOptions.start(true, "experiment " + experiment.id() + ", seed " + runSeed,
-                    ConsoleLog.lines(log::result));
-            tap.inspect(inspector);
-            var watches = new ArrayList<MindWatch>();
-            for (String name : run.mas().agentNames()) {
-                boolean robot = name.equals("robot");
-                if (robot || inspector != null) { // the robot's mind also goes to the step log
-                    var watch = MindWatch.attach(inspector, run.mas().agent(name),
-                            robot ? RunTap.robotView(simWorld) : null);
-                    watches.add(robot ? watch.alsoTo(tap.minds()) : watch);
-                }
-            }
-            AutoCloseable sampling = MindWatch.sampleEvery(watches, 200);
-            run.lag().addListener(tap.lags()).addListener(LagMeter.firstWarning(log::warn));
-            run.start();
-            var closed = new CountDownLatch(1);
-            SwingUtilities.invokeLater(() -> {
-                JFrame frame = WorldViewer.open(run.runner(), run.lag()::status);
-                frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-                frame.addWindowListener(new WindowAdapter() {
-                    @Override
-                    public void windowClosed(WindowEvent e) {
-                        closed.countDown();
-                    }
-                });
-            });
-            while (!closed.await(200, TimeUnit.MILLISECONDS)) {
-                if (simWorld.time() >= seconds || run.agentFailure().isPresent()) {
-                    break;
-                }
-            }
-            agentFailure = run.agentFailure();
-            run.lag().close(); // an episode still open ends here, and is written with the next step
-            tap.awaitLagNotes(1000);
-            run.runner().stop();
-            sampling.close();
-            lags = run.lag().episodes();
-            var failure = tap.closeLog();
-            if (failure != null) {
-                log.warn("the step log " + outDir.resolve(StepLog.FILE) + " stopped early: " + failure.getMessage());
-            }
-            if (inspector != null) {
-                inspector.close();
-            }
-        } catch (AslSyntaxException e) {
-            tap.close();
-            throw UserError.located(e.getMessage());
-        } catch (CartagoException e) {
-            tap.close();
-            throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
-                    + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
-        }
-        log.result(String.format("Stopped at t=%.1f s of simulated time.", simWorld.time()));
-        recorder.detach();
-        report(log, recorder.summary("agent"), simWorld, outDir, (System.nanoTime() - start) / 1e9, -1,
-                files(worldFile, source.name()));
-        if (!lags.isEmpty()) {
-            var text = new StringBuilder(lagSummary(lags, simWorld.time())).append('\n');
-            lags.forEach(e -> text.append("  ").append(e.describe()).append('\n'));
-            text.toString().lines().forEach(log::result);
-            Files.writeString(outDir.resolve("summary.txt"), text, StandardOpenOption.APPEND);
-        }
-        log.result("Step log: " + outDir.resolve(StepLog.FILE) + " (jacabot replay " + outDir + ")");
-        RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
-        if (agentFailure.isPresent()) {
-            throw new RunFailure(agentFailure.get());
-        }
-        return 0;
-    }
-
-    static String lagSummary(List<LagMeter.Episode> lags, double simulatedSeconds) {
-        long ms = lags.stream().mapToLong(e -> e.endMs() - e.startMs()).sum();
-        return String.format(Locale.ROOT, "Lagged behind real time: %d episode%s, %.1f s of %.1f s simulated:",
-                lags.size(), lags.size() == 1 ? "" : "s", ms / 1000.0, simulatedSeconds);
     }
 
     /** {@return the seconds of a --duration} @throws UserError when it is not one */

@@ -3,6 +3,7 @@ package jacabot.app.cli;
 import jacabot.app.inspector.Inspector;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.util.function.Consumer;
 import picocli.CommandLine.Option;
 
 /**
@@ -34,13 +35,18 @@ final class InspectorOptions {
         return Boolean.TRUE.equals(inspector);
     }
 
-    /** Starts the inspector if wanted and prints its address. {@return it, or null} */
-    Inspector start(boolean byDefault, String title, PrintStream out) throws IOException {
+    /**
+     * Starts the inspector if wanted and prints its address. {@return it, or null}
+     *
+     * @param warnings where each refused request is told, a line each (the command's warnings: the user sees who knocked)
+     */
+    Inspector start(boolean byDefault, String title, PrintStream out, Consumer<String> warnings) throws IOException {
         if (!wanted(byDefault)) {
             return null;
         }
         Inspector i = Inspector.start(address, port);
         i.title(title);
+        i.logRefusals(warnings);
         out.println("Mind inspector: " + i.address());
         return i;
     }

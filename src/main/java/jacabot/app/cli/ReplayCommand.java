@@ -49,7 +49,8 @@ import picocli.CommandLine.Spec;
                 "     (or 'label:PLAN', '+!goal', 'failure'); the run halts and reads",
                 "     commands: Enter continue, s step, n cycle, p print, q no more halts.",
                 "  3. Change a plan in a copy of the agent (edited.asl), or in the page's",
-                "     What if panel.",
+                "     What if panel; a live run takes it from there too, halted in lockstep,",
+                "     or running: jacabot experiment NAME --real-time --headless",
                 "  4. What if: jacabot replay runs/NAME-SEED --what-if 60s --agent edited.asl",
                 "     then: jacabot plot runs/NAME-SEED runs/NAME-SEED-whatif-60s --out both.png"})
 final class ReplayCommand implements Callable<Integer> {
@@ -122,7 +123,7 @@ final class ReplayCommand implements Callable<Integer> {
         if (!window) {
             return headlessReplay(replay);
         }
-        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out, this::warn);
         var history = inspector == null ? null : inspector.add("robot");
         if (inspector != null) {
             inspector.showPlots(Files.isDirectory(dir) ? dir : dir.getParent());
@@ -150,9 +151,15 @@ final class ReplayCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** A warning line on the command's error stream (as a run's {@code warning: ...}). */
+    private void warn(String line) {
+        err.println("warning: " + line);
+        err.flush();
+    }
+
     /** Headless with {@code --inspector}: the recorded run in the inspector's page, read on demand, until Enter or Ctrl-C. */
     private int serve() throws Exception {
-        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out);
+        Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out, this::warn);
         try {
             if (!TeamRuns.robotDirs(dir).isEmpty()) {
                 return serveTeam(inspector);

@@ -34,6 +34,7 @@ import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
 import javax.net.ssl.SSLContext;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -88,10 +89,10 @@ final class RunCommand implements Callable<Integer> {
             description = "with --tls-store: the address to listen on, e.g. this machine's address on the lab network (default ${DEFAULT-VALUE})")
     private String tlsAddress = "127.0.0.1";
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private InspectorOptions inspectorOptions = new InspectorOptions();
 
-    @picocli.CommandLine.Mixin
+    @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
     @Spec
@@ -180,7 +181,7 @@ final class RunCommand implements Callable<Integer> {
         var watch = new AgentWatch(mas, RealTimeRun.STALL_MS);
         // off by default: console programs end in moments; --inspector shows their minds
         var results = ConsoleLog.lines(log::result);
-        var inspector = inspectorOptions.start(false, "jacabot run " + file, results);
+        var inspector = inspectorOptions.start(false, "jacabot run " + file, results, log::warn);
         AutoCloseable sampling = () -> {
         };
         if (inspector != null) {

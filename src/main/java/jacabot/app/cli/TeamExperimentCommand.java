@@ -139,7 +139,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
             PrintStream console = consoleFile.tee(log.agents());
             long every = 60_000;
             inspector = inspectorOptions.start(false, "team-delivery, " + n + " robots, seed " + runSeed,
-                    ConsoleLog.lines(log::result));
+                    ConsoleLog.lines(log::result), log::warn);
             Inspector page = inspector;
             if (inspector != null) {
                 inspector.console(ConsoleFile.of(outDir));

@@ -40,6 +40,9 @@ final class WhatIfRun {
             throw new UserError(e.getMessage());
         }
         StepLog.Header h = recorded.header();
+        if (h.realTime()) {
+            throw new UserError(dir + ": " + WhatIf.REAL_TIME_REFUSAL);
+        }
         Experiment experiment = Experiment.parse(h.experiment())
                 .orElseThrow(() -> new UserError(dir + ": unknown experiment '" + h.experiment() + "' in its step log"));
         Path worldFile = worldOption != null ? worldOption : Installation.resolve(experiment.worldFile());

@@ -177,7 +177,10 @@ public final class Inspector implements AutoCloseable {
         Debugger.Halt h = s == null ? null : s.halted();
         out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason(), "mind", h.mind()));
         out.put("breakpoints", s == null ? List.of() : s.breakpoints());
-        out.put("editable", edits != null);
+        RunEdits e = edits;
+        out.put("editable", e != null);
+        out.put("reload", e == null ? RunEdits.Reload.NONE : e.reloads());
+        out.put("whatIfRefusal", e == null ? null : e.whatIfRefusal());
         out.put("whatIfs", List.copyOf(whatIfs));
         return out;
     }
@@ -209,7 +212,7 @@ public final class Inspector implements AutoCloseable {
         sendJson(ex, debugState());
     }
 
-    /** Lets the page start what-ifs from any instant (and reload plans into a halted live run). */
+    /** Lets the page start what-ifs from any instant (and reload plans into a live run). */
     public void edits(RunEdits e) {
         this.edits = e;
     }
@@ -233,6 +236,10 @@ public final class Inspector implements AutoCloseable {
             sendText(ex, 409, "this run has no step log to start a what-if from");
             return;
         }
+        if (e.whatIfRefusal() != null) {
+            sendText(ex, 409, e.whatIfRefusal());
+            return;
+        }
         long at = time(query(ex).get("t")), seconds = time(query(ex).get("seconds"));
         if (at < 0 || seconds <= 0) {
             sendText(ex, 400, "a what-if needs t (ms, at least 0) and seconds (more than 0)");
@@ -253,7 +260,10 @@ public final class Inspector implements AutoCloseable {
         sendJson(ex, job);
     }
 
-    /** {@code POST /api/reload} with a program as the body: its plans replace the halted live run's. */
+    /**
+     * {@code POST /api/reload} with a program as the body: its plans replace the live run's (a
+     * lockstep run's at its halt, a real-time run's at the agent's next cycle); the answer says what happened.
+     */
     private void reload(HttpExchange ex) throws IOException {
         RunEdits e = edits;
         if (!ex.getRequestMethod().equals("POST") || e == null) {
@@ -261,8 +271,8 @@ public final class Inspector implements AutoCloseable {
             return;
         }
         try {
-            e.reload(body(ex));
-            sendJson(ex, debugState());
+            String what = e.reload(body(ex));
+            sendJson(ex, Map.of("message", what, "debug", debugState()));
         } catch (IllegalStateException | IllegalArgumentException x) {
             sendText(ex, 409, x.getMessage());
         } catch (Exception x) {

@@ -78,7 +78,15 @@ public final class PageEdits implements RunEdits {
     }
 
     @Override
+    public String whatIfRefusal() {
+        return header.realTime() ? WhatIf.REAL_TIME_REFUSAL : null;
+    }
+
+    @Override
     public void whatIf(WhatIfJob job, String program) throws Exception {
+        if (header.realTime()) {
+            throw new IllegalStateException(WhatIf.REAL_TIME_REFUSAL);
+        }
         AgentSource edited = original.withText(program);
         Path target = Path.of(runDir.toAbsolutePath().normalize() + "-whatif-" + count.incrementAndGet());
         WhatIf.Result r = WhatIf.run(world.call(), experiment, header.seed(), original, edited, job.getAtMs(),
@@ -89,9 +97,14 @@ public final class PageEdits implements RunEdits {
     }
 
     @Override
-    public void reload(String program) throws Exception {
+    public Reload reloads() {
+        return live == null || debugger == null ? Reload.NONE : Reload.AT_HALT;
+    }
+
+    @Override
+    public String reload(String program) throws Exception {
         if (live == null || debugger == null) {
-            RunEdits.super.reload(program);
+            return RunEdits.super.reload(program);
         }
         AgentProgram edited;
         try {
@@ -100,6 +113,7 @@ public final class PageEdits implements RunEdits {
             throw new IllegalArgumentException(e.getMessage());
         }
         debugger.atHalt(() -> WhatIf.swapPlans(live, edited)).get(30, TimeUnit.SECONDS);
+        return "the halted run has the edited plans; continue or step it";
     }
 
     /**

@@ -63,7 +63,7 @@ public final class RealTimeTap implements Closeable {
     public static RealTimeTap open(SimWorld world, Path outDir, Experiment experiment, String agentFile) throws IOException {
         WorldSnapshot start = world.snapshot();
         var header = new StepLog.Header(StepLog.FORMAT, experiment.id(), world.name(), world.seed(), world.controlStep(),
-                world.robots().get(0).name(), agentFile, start, null);
+                world.robots().get(0).name(), agentFile, start, null, StepLog.Header.REAL_TIME);
         var log = new StepLog.Writer(outDir.resolve(StepLog.FILE), header);
         return new RealTimeTap(world, log, outDir.resolve(StepLog.FILE), header);
     }

@@ -1,5 +1,6 @@
 package jacabot.app.replay;
 
+import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.annotation.JsonInclude;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
@@ -61,10 +62,25 @@ public final class StepLog {
 
     /**
      * Run facts for the header; {@code plans}: the agent's plan library at the start, as the
-     * inspector shows it (null: no agent, or not known when the log opened).
+     * inspector shows it (null: no agent, or not known when the log opened); {@code pacing}:
+     * {@value #REAL_TIME} for a real-time run, whose steps cannot be made again step for step
+     * (null: lockstep, reproducible under its seed).
      */
     public record Header(String format, String experiment, String world, long seed, int controlStep, String robot,
-            String agentFile, WorldSnapshot start, List<String> plans) {
+            String agentFile, WorldSnapshot start, List<String> plans, String pacing) {
+        public static final String REAL_TIME = "real-time";
+
+        /** A lockstep run's header. */
+        public Header(String format, String experiment, String world, long seed, int controlStep, String robot,
+                String agentFile, WorldSnapshot start, List<String> plans) {
+            this(format, experiment, world, seed, controlStep, robot, agentFile, start, plans, null);
+        }
+
+        /** {@return whether the run was in real time (no what-if from it: it needs a lockstep run's step log)} */
+        @JsonIgnore
+        public boolean realTime() {
+            return REAL_TIME.equals(pacing);
+        }
     }
 
     /** A robot's body in one step. {@code battery} is null without a battery. */

@@ -28,6 +28,10 @@ public final class WhatIf {
     public record Result(String eventLog, long swappedAtMs, RunRecorder recorder) {
     }
 
+    /** Why a real-time run starts no what-if. */
+    public static final String REAL_TIME_REFUSAL = "a what-if needs a lockstep run's step log (a real-time run cannot be "
+            + "made again step for step): run the experiment with --headless (lockstep) and start the what-if from that run";
+
     private WhatIf() {
     }
 

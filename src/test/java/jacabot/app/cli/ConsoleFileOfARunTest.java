@@ -1,10 +1,13 @@
 package jacabot.app.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.Inspector;
+import jacabot.app.replay.PageEdits;
+import jacabot.app.replay.StepArchive;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -16,6 +19,7 @@ import java.util.ArrayList;
 import java.util.List;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -36,6 +40,8 @@ class ConsoleFileOfARunTest {
                 "--agent", PUBLISHED, "--out", run.toString());
         assertEquals("0", r[0], r[1] + r[2]);
         List<String> file = Files.readAllLines(run.resolve(ConsoleFile.FILE));
+        assertFalse(StepArchive.open(run, (t, x, z) -> {
+        }).header().realTime(), "a lockstep run's step log");
         List<String> printed = r[1].lines().filter(l -> l.startsWith("[robot] ")).toList();
         assertTrue(printed.size() >= 4, r[1]);
         // every line the agent printed, in order, each with a time
@@ -93,6 +99,47 @@ class ConsoleFileOfARunTest {
         assertEquals(2, lines.size(), lines.toString());
         assertTrue(lines.get(0).timeMs() >= 1000 && lines.get(0).timeMs() <= 1080, lines.toString());
         assertTrue(lines.get(1).timeMs() >= 3000 && lines.get(1).timeMs() <= 3160, lines.toString());
+    }
+
+    /**
+     * A real-time run (here without the viewer: the same run) writes console.txt as a lockstep run
+     * does: the agent's lines at the simulated time they were printed, the event log's among them.
+     */
+    @Test
+    void aRealTimeRunWritesItsConsoleByItsSimulatedTimeToo(@TempDir Path dir) throws Exception {
+        Path agent = dir.resolve("waits.asl");
+        Files.writeString(agent, "!go.\n+!go <- .wait(1000); .print(\"after one second\"); .wait(2000); .print(\"after three\").\n");
+        // experiment 1's world with its first event (a box moved) at 2 s instead of 20 s
+        var world = (ObjectNode) new ObjectMapper().readTree(ROOT.resolve("worlds/obstacle-avoidance.json").toFile());
+        ((ObjectNode) world.get("events").get(0)).put("at", 2);
+        Path worldFile = Files.writeString(dir.resolve("obstacle-avoidance.json"), world.toString());
+        Path run = dir.resolve("run");
+        String[] r = CliRun.run("experiment", "obstacle-avoidance", "--real-time", "--headless", "--no-inspector",
+                "--duration", "4s", "--agent", agent.toString(), "--world", worldFile.toString(), "--out", run.toString());
+        assertEquals("0", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains(", console.txt"), "the run names it among what it wrote: " + r[1]);
+        var lines = ConsoleFile.of(run).between(0, Long.MAX_VALUE, 1000);
+        var said = lines.stream().filter(l -> l.text().startsWith("[robot] after")).toList();
+        assertEquals(2, said.size(), lines.toString());
+        // the world goes on while the agent wakes: a step or a few later in real time
+        assertTrue(said.get(0).timeMs() >= 1000 && said.get(0).timeMs() <= 1400, said.toString());
+        assertTrue(said.get(1).timeMs() >= 3000 && said.get(1).timeMs() <= 3400, said.toString());
+        List<String> file = Files.readAllLines(run.resolve(ConsoleFile.FILE));
+        List<String> events = Files.readAllLines(run.resolve(ConsoleFile.EVENT_LOG));
+        assertTrue(!events.isEmpty(), "the run has events");
+        assertEquals(events, file.stream().filter(events::contains).toList(), "the event log's lines, in order, among them");
+        // its step log says it was in real time: no what-if from it (it could not be made again step for step)
+        String[] whatIf = CliRun.run("replay", run.toString(), "--what-if", "1s", "--agent", agent.toString());
+        assertEquals("2", whatIf[0], whatIf[1] + whatIf[2]);
+        assertTrue(whatIf[2].startsWith("error: ") && whatIf[2].contains("a what-if needs a lockstep run's step log")
+                && whatIf[2].strip().lines().count() == 1, whatIf[2]);
+        try (Inspector inspector = Inspector.startOnFreePort()) { // nor from its page under replay --inspector
+            var h = StepArchive.open(run, (t, x, z) -> {
+            }).header();
+            assertTrue(h.realTime());
+            String refusal = PageEdits.recorded(inspector, run, h, () -> null).whatIfRefusal();
+            assertTrue(refusal != null && refusal.contains("lockstep run's step log"), refusal);
+        }
     }
 
     private static JsonNode get(HttpClient client, String url) throws Exception {

@@ -95,6 +95,16 @@ class LauncherErrorsTest {
     }
 
     @Test
+    void realTimeWithALockstepOptionIsAUserError(@TempDir Path dir) {
+        String out = dir.resolve("o").toString();
+        assertOneLine(experiment("--real-time", "--lockstep", "--out", out), "2",
+                "--real-time runs one agent with the world in this process; --lockstep is for lockstep runs: drop one of them");
+        assertOneLine(experiment("--real-time", "--break", "t=1s", "--out", out), "2", "--break is for lockstep runs");
+        assertOneLine(experiment("--real-time", "--baseline", "--out", out), "2", "--baseline is for lockstep runs");
+        assertOneLine(experiment("--real-time", "--remote-controller", "--out", out), "2", "--remote-controller is for lockstep runs");
+    }
+
+    @Test
     void badNumbersAreUserErrors() {
         assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");
         assertOneLine(CliRun.run("compare", "--duration", "abc"), "2", "--duration: bad duration");

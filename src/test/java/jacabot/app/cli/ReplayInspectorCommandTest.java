@@ -86,6 +86,14 @@ class ReplayInspectorCommandTest {
                         .header("Origin", "http://evil.example").build();
                 assertEquals(403, client.send(foreign, HttpResponse.BodyHandlers.discarding()).statusCode(), "another origin: " + path);
             }
+            // each refusal told to the user on the command's own output, a line each, no stack trace
+            List<String> refusals = served.output().lines().filter(l -> l.contains("refused")).toList();
+            assertEquals(12, refusals.size(), served.output());
+            assertTrue(refusals.stream().allMatch(l -> l.matches("warning: inspector: refused GET /\\S* from 127\\.0\\.0\\.1: .+")),
+                    refusals.toString());
+            assertTrue(refusals.get(0).endsWith("no token (open the address printed at the start, with its ?token=...)"), refusals.get(0));
+            assertTrue(refusals.get(1).contains("another origin (http://evil.example)"), refusals.get(1));
+            assertTrue(!served.output().contains("\tat ") && !served.output().contains("Exception"), served.output());
             assertEquals(-1, served.exitCode(), "still serving");
             served.close();
             assertEquals(0, served.exitCode(), "a quit is a clean end: " + served.output());

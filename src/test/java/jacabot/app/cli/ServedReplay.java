@@ -9,12 +9,14 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * {@code jacabot replay RUN --headless --inspector} run in-process through the launcher's own
- * command line, on a thread of its own: the address it prints is read from its output, and
- * {@link #close} quits it as a user would (an interrupt stands for Ctrl-C) and waits for it to end.
+ * {@code jacabot replay RUN --headless --inspector} (or a live {@code jacabot experiment ... --inspector})
+ * run in-process through the launcher's own command line, on a thread of its own: the address it
+ * prints is read from its output, and {@link #close} quits it as a user would (an interrupt stands
+ * for Ctrl-C) and waits for it to end.
  */
 public final class ServedReplay implements AutoCloseable {
     private static final Pattern SERVED = Pattern.compile("is served at (http://\\S+) ;");
+    private static final Pattern LIVE = Pattern.compile("Mind inspector: (http://\\S+)");
 
     private final StringWriter out = new StringWriter();
     private final StringWriter err = new StringWriter();
@@ -22,7 +24,7 @@ public final class ServedReplay implements AutoCloseable {
     private final Thread thread;
     private final URI address;
 
-    private ServedReplay(String... args) throws InterruptedException {
+    private ServedReplay(Pattern served, String... args) throws InterruptedException {
         var cl = JacabotCommand.commandLine(args);
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
@@ -31,7 +33,7 @@ public final class ServedReplay implements AutoCloseable {
         thread.start();
         URI found = null;
         for (long end = System.nanoTime() + 60_000_000_000L; found == null && System.nanoTime() < end && thread.isAlive(); ) {
-            Matcher m = SERVED.matcher(out.toString());
+            Matcher m = served.matcher(out.toString());
             if (m.find()) {
                 found = URI.create(m.group(1));
             } else {
@@ -53,7 +55,15 @@ public final class ServedReplay implements AutoCloseable {
         args[2] = "--headless";
         args[3] = "--inspector";
         System.arraycopy(more, 0, args, 4, more.length);
-        return new ServedReplay(args);
+        return new ServedReplay(SERVED, args);
+    }
+
+    /** Starts {@code jacabot experiment ARGS} (with {@code --inspector} among them) and waits for the address it prints. */
+    public static ServedReplay experiment(String... args) throws InterruptedException {
+        String[] all = new String[1 + args.length];
+        all[0] = "experiment";
+        System.arraycopy(args, 0, all, 1, args.length);
+        return new ServedReplay(LIVE, all);
     }
 
     /** Records a short real run: {@code jacabot experiment NAME --headless --duration D --seed S --out OUT}. */

@@ -57,6 +57,12 @@ class TwoProcessLockstepCliTest {
             String actual = Files.readString(log);
             assertTrue(actual.contains(" apply "), "the agent drove");
             assertEquals(expected, actual, "the controller's event log is the one-process run's link log");
+            // the agent side's console by simulated time: the one-process run's, without the world's event log
+            assertTrue(said.contains("console.txt"), said);
+            var events = Files.readAllLines(dir.resolve("one/event-log.txt"));
+            var oneConsole = Files.readAllLines(dir.resolve("one/console.txt")).stream().filter(l -> !events.contains(l)).toList();
+            assertTrue(!oneConsole.isEmpty(), "the agent's console has lines");
+            assertEquals(oneConsole, Files.readAllLines(dir.resolve("two/console.txt")));
         } finally {
             agent.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
         }

@@ -159,8 +159,9 @@ class InspectorServerTest {
                 }
 
                 @Override
-                public void reload(String program) {
+                public String reload(String program) {
                     received.add("reload: " + program);
+                    return "applied";
                 }
             });
             String foreign = other.url("x").replaceAll(".*token=", "");
@@ -183,6 +184,66 @@ class InspectorServerTest {
             assertEquals("done", inspector.whatIfs().get(0).getState());
             assertTrue(get(client, inspector.url("api/debug")).contains("\"divergesAtMs\":1040"), "the page is told where it differs");
         }
+    }
+
+    /**
+     * A real-time run's edits: a what-if is refused with why (it needs a lockstep run's step log), a
+     * reload answers what happened, a bad program is refused with its location; the page is told which.
+     */
+    @Test
+    void aRealTimeRunsEditsSayWhatHappened() throws Exception {
+        var client = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
+        var received = new CopyOnWriteArrayList<String>();
+        try (Inspector inspector = Inspector.startOnFreePort()) {
+            inspector.edits(new RunEdits() {
+                @Override
+                public String source() {
+                    return "!start.";
+                }
+
+                @Override
+                public void whatIf(WhatIfJob job, String program) {
+                    received.add("what-if");
+                }
+
+                @Override
+                public String whatIfRefusal() {
+                    return "a what-if needs a lockstep run's step log";
+                }
+
+                @Override
+                public Reload reloads() {
+                    return Reload.AT_NEXT_CYCLE;
+                }
+
+                @Override
+                public String reload(String program) {
+                    if (program.contains("bad")) {
+                        throw new IllegalArgumentException("edited.asl:1:4: no plan here");
+                    }
+                    received.add("reload");
+                    return "applied to the running agent at t = 4.20 s";
+                }
+            });
+            String debug = get(client, inspector.url("api/debug"));
+            assertTrue(debug.contains("\"reload\":\"AT_NEXT_CYCLE\"") && debug.contains("lockstep run's step log"), debug);
+            var whatIf = send(client, inspector.url("api/whatif?t=1000&seconds=5"), "+!go <- move.");
+            assertEquals(409, whatIf.statusCode());
+            assertEquals("a what-if needs a lockstep run's step log", whatIf.body().trim());
+            var bad = send(client, inspector.url("api/reload"), "bad");
+            assertEquals(409, bad.statusCode());
+            assertTrue(bad.body().contains("edited.asl:1:4"), bad.body());
+            var good = send(client, inspector.url("api/reload"), "+!go <- move.");
+            assertEquals(200, good.statusCode());
+            assertTrue(good.body().contains("\"message\":\"applied to the running agent at t = 4.20 s\""), good.body());
+            assertEquals(List.of("reload"), received, "no what-if started, one reload applied");
+            assertTrue(inspector.whatIfs().isEmpty());
+        }
+    }
+
+    private static HttpResponse<String> send(HttpClient c, String url, String body) throws Exception {
+        return c.send(HttpRequest.newBuilder(URI.create(url)).timeout(Duration.ofSeconds(10))
+                .POST(HttpRequest.BodyPublishers.ofString(body)).build(), HttpResponse.BodyHandlers.ofString());
     }
 
     @Test

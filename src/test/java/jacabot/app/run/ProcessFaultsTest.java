@@ -268,4 +268,38 @@ class ProcessFaultsTest {
             p.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
         }
     }
+
+    /** A real-time run without the viewer (a server's) ended by SIGTERM writes what a finished run writes, the plots aside. */
+    @Test
+    void sigtermEndsARealTimeRunWritingItsSummaryAndConsole(@TempDir Path dir) throws Exception {
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Path agent = Files.writeString(dir.resolve("tick.asl"), "!tick.\n+!tick <- .print(\"tick\"); .wait(300); !tick.\n");
+        Path out = dir.resolve("run");
+        Path said = dir.resolve("said.txt");
+        Process p = new ProcessBuilder(java, "-Xmx256m", "-cp", System.getProperty("java.class.path"),
+                "jacabot.app.cli.JacabotCommand", "experiment", "obstacle-avoidance", "--real-time", "--headless",
+                "--no-inspector", "--duration", "10m", "--agent", agent.toString(), "--out", out.toString())
+                .directory(ROOT.toFile()).redirectErrorStream(true).redirectOutput(said.toFile()).start();
+        try {
+            waitLong(() -> {
+                try {
+                    return Files.readString(said).contains("[robot] tick");
+                } catch (IOException e) {
+                    return false;
+                }
+            });
+            p.destroy(); // SIGTERM
+            assertTrue(p.waitFor(30, TimeUnit.SECONDS), "SIGTERM did not end the run");
+            String text = Files.readString(said);
+            assertTrue(text.contains("Stopped by a signal at t="), text);
+            for (String f : List.of("summary.json", "summary.txt", "event-log.txt", "trajectory.png", "steps.jsonl.gz",
+                    "console.txt")) {
+                assertTrue(Files.exists(out.resolve(f)), f + " written: " + text);
+            }
+            assertTrue(Files.readString(out.resolve("console.txt")).contains("[robot] tick"));
+            assertTrue(text.contains("Plots: not drawn after a signal; draw them with: jacabot plot " + out), text);
+        } finally {
+            p.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
+    }
 }
