@@ -1,6 +1,12 @@
 package jacabot.app.inspector;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
+import static jacabot.app.inspector.Replies.json;
+import static jacabot.app.inspector.Replies.query;
+import static jacabot.app.inspector.Replies.send;
+import static jacabot.app.inspector.Replies.sendJson;
+import static jacabot.app.inspector.Replies.sendText;
+import static jacabot.app.inspector.Replies.time;
+
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpHandler;
 import com.sun.net.httpserver.HttpServer;
@@ -11,19 +17,17 @@ import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.URI;
-import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.BiFunction;
@@ -41,7 +45,7 @@ import java.util.function.Supplier;
  * {@link Debugger}'s controls ({@code /api/debug}), the time views over the whole run
  * ({@code /api/timeline}, {@code /api/belief}, {@code /api/artifacts}: {@link TimeViews}) and, when
  * the run allows it ({@link RunEdits}), what-ifs and plan reloads ({@code /api/whatif},
- * {@code /api/reload}), and the run's console by simulated time ({@code /api/console}, read from
+ * {@code /api/reload}; both {@link RunControls}), and the run's console by simulated time ({@code /api/console}, read from
  * its file: {@link ConsoleFile}). Every agent added is a history of its own: a team's robots, or a what-if
  * beside the run it came from.
  *
@@ -60,17 +64,13 @@ public final class Inspector implements AutoCloseable {
     /** At most this many pushes per second per page (the run may be much faster than real time). */
     static final int PUSHES_PER_SECOND = 5;
 
-    private static final ObjectMapper JSON = new ObjectMapper();
-
     private final HttpServer server;
     private final ExecutorService threads;
     private final PageGuard guard;
     private volatile Consumer<String> refusals = System.err::println;
     private volatile Object world;
-    private volatile Debugger debugger;
-    private volatile RunEdits edits;
+    private final RunControls controls;
     private volatile Supplier<Map<String, ArtifactInfo>> workspace = Map::of;
-    private final List<WhatIfJob> whatIfs = new CopyOnWriteArrayList<>();
     private final Map<String, MindHistory> agents = new LinkedHashMap<>();
     private final List<String> paths = new ArrayList<>();
     private volatile Path plotDir;
@@ -87,6 +87,7 @@ public final class Inspector implements AutoCloseable {
             return t;
         });
         server.setExecutor(threads);
+        this.controls = new RunControls(threads);
         context("/", this::page);
         context("/help.html", ex -> send(ex, 200, "text/html; charset=utf-8", resource("help.html")));
         context("/api/agents", ex -> sendJson(ex, agentNames()));
@@ -96,16 +97,16 @@ public final class Inspector implements AutoCloseable {
         context("/api/world", ex -> sendJson(ex, world));
         context("/api/path", ex -> withHistory(ex, (h, t) -> h.pathUpTo(t)));
         context("/api/selections", ex -> withHistory(ex, (h, t) -> h.selectionsUpTo(t, SELECTIONS)));
-        context("/api/debug", this::debug);
+        context("/api/debug", controls::debug);
         context("/api/failures", ex -> sendJson(ex, historyOf(ex).map(MindHistory::failures).orElse(Map.of())));
         context("/api/stream", this::stream);
         context("/api/timeline", ex -> withHistory(ex, (h, t) -> timeline(h)));
         context("/api/belief", ex -> withHistory(ex, (h, t) -> beliefHistory(h, query(ex).getOrDefault("name", ""))));
         context("/api/artifacts", ex -> sendJson(ex, artifacts(time(query(ex).get("t")))));
         context("/api/workspace", ex -> sendJson(ex, workspace.get()));
-        context("/api/source", ex -> sendJson(ex, Map.of("text", edits == null ? "" : edits.source())));
-        context("/api/whatif", this::whatIf);
-        context("/api/reload", this::reload);
+        context("/api/source", ex -> sendJson(ex, Map.of("text", controls.source())));
+        context("/api/whatif", controls::whatIf);
+        context("/api/reload", controls::reload);
         context("/api/console", this::console);
         context("/plots/", this::plot);
         server.start();
@@ -163,136 +164,17 @@ public final class Inspector implements AutoCloseable {
 
     /** Lets the page halt, step and continue the run, and set breakpoints. */
     public void debugger(Debugger d) {
-        this.debugger = d;
-    }
-
-    /** The debugger's state: where the run is halted (or null) and the breakpoints. */
-    private Map<String, Object> debugState() {
-        Debugger d = debugger;
-        var out = new LinkedHashMap<String, Object>();
-        out.put("available", d != null);
-        Debugger.State s = d == null ? null : d.state();
-        // the page shows no state older than the one it shows (a command's answer may come after a push)
-        out.put("version", s == null ? 0 : s.version());
-        Debugger.Halt h = s == null ? null : s.halted();
-        out.put("halted", h == null ? null : Map.of("timeMs", h.timeMs(), "reason", h.reason(), "mind", h.mind()));
-        out.put("breakpoints", s == null ? List.of() : s.breakpoints());
-        RunEdits e = edits;
-        out.put("editable", e != null);
-        out.put("reload", e == null ? RunEdits.Reload.NONE : e.reloads());
-        out.put("whatIfRefusal", e == null ? null : e.whatIfRefusal());
-        out.put("whatIfs", List.copyOf(whatIfs));
-        return out;
-    }
-
-    /** {@code GET /api/debug}: the state; {@code POST /api/debug?cmd=continue|step|pause|break|delete[&spec=S]}: a command. */
-    private void debug(HttpExchange ex) throws IOException {
-        Debugger d = debugger;
-        if (ex.getRequestMethod().equals("POST")) {
-            if (d == null) {
-                send(ex, 409, "text/plain", "this run cannot halt (lockstep runs only)".getBytes(StandardCharsets.UTF_8));
-                return;
-            }
-            String cmd = query(ex).getOrDefault("cmd", ""), spec = query(ex).getOrDefault("spec", "");
-            try {
-                switch (cmd) {
-                    case "continue" -> d.resume();
-                    case "step" -> d.step();
-                    case "cycle" -> d.stepCycle();
-                    case "pause" -> d.pause();
-                    case "break" -> d.add(spec);
-                    case "delete" -> d.remove(spec);
-                    default -> throw new IllegalArgumentException("unknown command '" + cmd + "'");
-                }
-            } catch (IllegalArgumentException e) {
-                send(ex, 400, "text/plain", e.getMessage().getBytes(StandardCharsets.UTF_8));
-                return;
-            }
-        }
-        sendJson(ex, debugState());
+        controls.debugger = d;
     }
 
     /** Lets the page start what-ifs from any instant (and reload plans into a live run). */
     public void edits(RunEdits e) {
-        this.edits = e;
+        controls.edits = e;
     }
 
     /** {@return the what-ifs started from the page} */
     public List<WhatIfJob> whatIfs() {
-        return List.copyOf(whatIfs);
-    }
-
-    /**
-     * {@code POST /api/whatif?t=MS&seconds=S} with the edited program as the body: starts a
-     * what-if on a thread of its own; its history appears as another agent once it has run.
-     */
-    private void whatIf(HttpExchange ex) throws IOException {
-        if (!ex.getRequestMethod().equals("POST")) {
-            sendJson(ex, whatIfs());
-            return;
-        }
-        RunEdits e = edits;
-        if (e == null) {
-            sendText(ex, 409, "this run has no step log to start a what-if from");
-            return;
-        }
-        if (e.whatIfRefusal() != null) {
-            sendText(ex, 409, e.whatIfRefusal());
-            return;
-        }
-        long at = time(query(ex).get("t")), seconds = time(query(ex).get("seconds"));
-        if (at < 0 || seconds <= 0) {
-            sendText(ex, 400, "a what-if needs t (ms, at least 0) and seconds (more than 0)");
-            return;
-        }
-        String program = body(ex);
-        var job = new WhatIfJob("what-if " + (whatIfs.size() + 1) + " from " + at / 1000.0 + " s", at, seconds);
-        whatIfs.add(job);
-        threads.execute(() -> {
-            try {
-                e.whatIf(job, program);
-            } catch (IllegalArgumentException x) {
-                job.failed(x.getMessage());
-            } catch (Exception x) {
-                job.failed(x.toString());
-            }
-        });
-        sendJson(ex, job);
-    }
-
-    /**
-     * {@code POST /api/reload} with a program as the body: its plans replace the live run's (a
-     * lockstep run's at its halt, a real-time run's at the agent's next cycle); the answer says what happened.
-     */
-    private void reload(HttpExchange ex) throws IOException {
-        RunEdits e = edits;
-        if (!ex.getRequestMethod().equals("POST") || e == null) {
-            sendText(ex, 409, "POST a program to a live run's inspector");
-            return;
-        }
-        try {
-            String what = e.reload(body(ex));
-            sendJson(ex, Map.of("message", what, "debug", debugState()));
-        } catch (IllegalStateException | IllegalArgumentException x) {
-            sendText(ex, 409, x.getMessage());
-        } catch (Exception x) {
-            sendText(ex, 500, x.toString());
-        }
-    }
-
-    /** {@return the request's body as text (at most 1 MB: an agent program)} */
-    private static String body(HttpExchange ex) throws IOException {
-        byte[] b = ex.getRequestBody().readNBytes(1 << 20);
-        return new String(b, StandardCharsets.UTF_8);
-    }
-
-    /** {@return a time given in a query (ms), -1 when missing or not a number} */
-    private static long time(String text) {
-        try {
-            return text == null ? -1 : Long.parseLong(text);
-        } catch (NumberFormatException e) {
-            return -1;
-        }
+        return List.copyOf(controls.whatIfs);
     }
 
     /** The timeline read last, per agent, and up to when: a recorded run's is read once. */
@@ -499,7 +381,7 @@ public final class Inspector implements AutoCloseable {
             String debugSeen = "";
             while (!closed) {
                 boolean sent = false;
-                String debugNow = JSON.writeValueAsString(debugState());
+                String debugNow = json(controls.debugState());
                 if (!debugNow.equals(debugSeen)) {
                     debugSeen = debugNow;
                     out.write(("event: debug\ndata: " + debugNow + "\n\n").getBytes(StandardCharsets.UTF_8));
@@ -517,7 +399,7 @@ public final class Inspector implements AutoCloseable {
                         long t = latest.mind().timeMs();
                         var push = Map.of("agent", name, "frame", latest, "range", h.range(), "selections",
                                 h.selectionsUpTo(t, SELECTIONS), "failures", h.failures().get("count"));
-                        out.write(("event: frame\ndata: " + JSON.writeValueAsString(push) + "\n\n").getBytes(StandardCharsets.UTF_8));
+                        out.write(("event: frame\ndata: " + json(push) + "\n\n").getBytes(StandardCharsets.UTF_8));
                         sent = true;
                     }
                 }
@@ -556,41 +438,9 @@ public final class Inspector implements AutoCloseable {
 
     // ---- plumbing -------------------------------------------------------------------------------------
 
-    private static Map<String, String> query(HttpExchange ex) {
-        var out = new HashMap<String, String>();
-        String q = ex.getRequestURI().getRawQuery();
-        if (q != null) {
-            for (String pair : q.split("&")) {
-                int eq = pair.indexOf('=');
-                if (eq > 0) {
-                    out.put(URLDecoder.decode(pair.substring(0, eq), StandardCharsets.UTF_8),
-                            URLDecoder.decode(pair.substring(eq + 1), StandardCharsets.UTF_8));
-                }
-            }
-        }
-        return out;
-    }
-
     private static byte[] resource(String name) throws IOException {
         try (InputStream in = Inspector.class.getResourceAsStream(name)) {
             return in.readAllBytes();
-        }
-    }
-
-    private static void sendText(HttpExchange ex, int status, String text) throws IOException {
-        send(ex, status, "text/plain; charset=utf-8", text.getBytes(StandardCharsets.UTF_8));
-    }
-
-    private static void sendJson(HttpExchange ex, Object value) throws IOException {
-        send(ex, 200, "application/json; charset=utf-8", JSON.writeValueAsBytes(value));
-    }
-
-    private static void send(HttpExchange ex, int status, String type, byte[] body) throws IOException {
-        ex.getResponseHeaders().set("Content-Type", type);
-        ex.getResponseHeaders().set("Cache-Control", "no-store");
-        ex.sendResponseHeaders(status, body.length == 0 ? -1 : body.length);
-        try (OutputStream out = ex.getResponseBody()) {
-            out.write(body);
         }
     }
 
