@@ -23,27 +23,25 @@ class FailureWatchTest {
         return new Event(new Trigger(op, Trigger.Type.ACHIEVE, goal), null);
     }
 
-    @Test
-    void anInitialGoalAPlanWasChosenForIsStarted() {
+    /** A watch of !start told of the plans chosen for {@code chosen}, then of the first reasoning's end. */
+    private static FailureWatch afterFirstReasoning(Event... chosen) {
         var watch = new FailureWatch(List.of(START));
-        watch.planSelected(achieve(Trigger.Op.ADD, START), 0);
+        for (Event e : chosen) {
+            watch.planSelected(e, 0);
+        }
         watch.firstReasoningDone(new PlanLibrary(), List.of(START));
-        assertEquals(Optional.empty(), watch.verdict());
+        return watch;
     }
 
     @Test
-    void aFailurePlanForItCountsToo() {
-        var watch = new FailureWatch(List.of(START));
-        watch.planSelected(achieve(Trigger.Op.DEL, START), 0);
-        watch.firstReasoningDone(new PlanLibrary(), List.of(START));
-        assertEquals(Optional.empty(), watch.verdict());
+    void anInitialGoalAPlanOrAFailurePlanWasChosenForIsStarted() {
+        assertEquals(Optional.empty(), afterFirstReasoning(achieve(Trigger.Op.ADD, START)).verdict());
+        assertEquals(Optional.empty(), afterFirstReasoning(achieve(Trigger.Op.DEL, START)).verdict());
     }
 
     @Test
     void anInitialGoalNoPlanWasChosenForBeforeTheFirstReasoningEndsTheRun() {
-        var watch = new FailureWatch(List.of(START));
-        watch.planSelected(achieve(Trigger.Op.ADD, Literal.of("move", new NumberTerm(1))), 0);
-        watch.firstReasoningDone(new PlanLibrary(), List.of(START));
+        var watch = afterFirstReasoning(achieve(Trigger.Op.ADD, Literal.of("move", new NumberTerm(1))));
         assertTrue(watch.verdict().orElseThrow().startsWith("no relevant plan for the agent's initial goal !start"),
                 watch.verdict().toString());
         watch.planSelected(achieve(Trigger.Op.ADD, START), 40); // too late, and the verdict stays
@@ -52,9 +50,7 @@ class FailureWatchTest {
 
     @Test
     void failuresAreStillCountedAfterTheFirstReasoning() {
-        var watch = new FailureWatch(List.of(START));
-        watch.planSelected(achieve(Trigger.Op.ADD, START), 0);
-        watch.firstReasoningDone(new PlanLibrary(), List.of(START));
+        var watch = afterFirstReasoning(achieve(Trigger.Op.ADD, START));
         Literal failed = Literal.of("go", new NumberTerm(3));
         for (int i = 0; i < FailureWatch.STORM_PER_SECOND; i++) {
             watch.planSelected(achieve(Trigger.Op.DEL, failed), 5_000);
