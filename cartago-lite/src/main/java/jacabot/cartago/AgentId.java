@@ -17,6 +17,17 @@ public record AgentId(String name) {
         return name;
     }
 
+    // written out, with the values the record's generated methods give (see ArtifactId)
+    @Override
+    public boolean equals(Object o) {
+        return o == this || o instanceof AgentId a && name.equals(a.name);
+    }
+
+    @Override
+    public int hashCode() {
+        return name.hashCode();
+    }
+
     @Override
     public String toString() {
         return name;

@@ -39,6 +39,21 @@ public record ArtifactId(int id, String name, String type, String workspace, Age
         return creator;
     }
 
+    // written out, with the values the record's generated methods give (so hashed collections
+    // keep their order): every percept update looks its artifact up by id, and the generated
+    // methods go through method handles that stay slow until compiled
+    @Override
+    public boolean equals(Object o) {
+        return o == this || o instanceof ArtifactId a && id == a.id && name.equals(a.name) && type.equals(a.type)
+                && workspace.equals(a.workspace) && Objects.equals(creator, a.creator);
+    }
+
+    @Override
+    public int hashCode() {
+        return (((Integer.hashCode(id) * 31 + name.hashCode()) * 31 + type.hashCode()) * 31 + workspace.hashCode()) * 31
+                + Objects.hashCode(creator);
+    }
+
     /** Prints as JaCa prints artifact ids. */
     @Override
     public String toString() {

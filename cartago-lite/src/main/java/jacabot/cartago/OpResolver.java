@@ -149,8 +149,11 @@ final class OpResolver {
     /** Uses the first method whose parameters accept the arguments (exact arity before varargs). */
     private static OpExecution bind(ArtifactCore core, List<OpMethod> methods, Object[] args, AgentId agent,
             OpCallback callback) {
-        List<OpMethod> ordered = new ArrayList<>(methods);
-        ordered.sort(Comparator.comparing(m -> m.method().isVarArgs())); // stable: keeps kind preference
+        List<OpMethod> ordered = methods;
+        if (methods.size() > 1) { // nearly always one: nothing to order
+            ordered = new ArrayList<>(methods);
+            ordered.sort(Comparator.comparing(m -> m.method().isVarArgs())); // stable: keeps kind preference
+        }
         ArgConverter.Mismatch first = null;
         for (OpMethod m : ordered) {
             try {

@@ -2,6 +2,8 @@ package jacabot.cartago;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.cartago.awaiting.Waiters;
@@ -53,6 +55,15 @@ class AwaitAnalysisTest {
         assertTrue(type.neverWaits(type.operations("plain", OpMethod.Kind.OPERATION).get(0)));
         assertFalse(type.neverWaits(type.operations("guarded", OpMethod.Kind.OPERATION).get(0)));
         assertFalse(type.neverWaits(type.operations("direct", OpMethod.Kind.OPERATION).get(0)));
+    }
+
+    @Test
+    void everyWorkspaceSharesOneAnalysisOfAClass() {
+        // the class files are read once per JVM, not once per workspace (per run of a sweep)
+        ArtifactType first = new ArtifactFactory(Waiters.class.getClassLoader()).typeOf(Waiters.class);
+        ArtifactType second = new ArtifactFactory(ClassLoader.getSystemClassLoader()).typeOf(Waiters.class);
+        assertSame(first, second);
+        assertNotSame(first, new ArtifactFactory(Waiters.class.getClassLoader()).typeOf(WaitingSubclass.class));
     }
 
     @Test

@@ -168,12 +168,12 @@ final class DeviceSampler {
             }
             out.add(new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), levels));
             if (cameraImage) {
-                int[] image = camera.getImage();
-                int[] framed = new int[image.length + 2];
+                // width, height, then the pixels: one array made per image, the reading's own
+                int[] framed = new int[camera.getWidth() * camera.getHeight() + 2];
                 framed[0] = camera.getWidth();
                 framed[1] = camera.getHeight();
-                System.arraycopy(image, 0, framed, 2, image.length);
-                out.add(new SensorInfo(SensorKind.CAMERA_IMAGE.id(), framed));
+                camera.copyImageInto(framed, 2);
+                out.add(SensorInfo.owning(SensorKind.CAMERA_IMAGE.id(), framed));
             }
         }
         if (robot.model().gps() && robot.getGps("gps").hasValue()) {

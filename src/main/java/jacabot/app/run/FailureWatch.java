@@ -39,7 +39,9 @@ public final class FailureWatch {
     public static final int STORM_PER_SECOND = 1000;
 
     private final Set<String> initialGoals = new LinkedHashSet<>();
+    /** The goals a plan was chosen for, until {@link #firstReasoningDone}, their only reader: no key is made after it. */
     private final Set<String> started = new LinkedHashSet<>();
+    private boolean firstReasoningDone;
     private final Map<String, Integer> counts = new HashMap<>();
     private long second = -1;
     private Literal lastFailure;
@@ -56,11 +58,12 @@ public final class FailureWatch {
         if (!(t.literal() instanceof Literal lit) || !t.isGoal()) {
             return;
         }
+        if (!firstReasoningDone) {
+            started.add(key(lit)); // a plan for it, or a failure plan for it, ran: the goal was handled
+        }
         if (t.isAddition()) {
-            started.add(key(lit));
             return;
         }
-        started.add(key(lit)); // a failure plan for it ran: the goal was handled
         lastFailure = lit;
         if (verdict != null) {
             return;
@@ -83,6 +86,7 @@ public final class FailureWatch {
      * took, relevant or applicable, left the agent with nothing to do.
      */
     public void firstReasoningDone(PlanLibrary plans, List<Literal> goals) {
+        firstReasoningDone = true;
         if (verdict != null) {
             return;
         }

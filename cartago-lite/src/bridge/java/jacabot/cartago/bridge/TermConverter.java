@@ -89,10 +89,11 @@ public final class TermConverter {
     }
 
     public static List<Term> toTerms(List<Object> values) {
-        var out = new ArrayList<Term>(values.size());
+        Term[] out = new Term[values.size()];
+        int i = 0;
         for (Object o : values) {
-            out.add(toTerm(o));
+            out[i++] = toTerm(o);
         }
-        return out;
+        return List.of(out); // immutable: a literal keeps it as it is (every percept update makes one)
     }
 }

@@ -59,6 +59,15 @@ public final class SensorInfo implements Serializable {
         this(id, 0, NO_INTS, 0, 0, 0, values.clone());
     }
 
+    /**
+     * An int-array reading that takes {@code values} as its own, without the copy the constructor
+     * makes: for a sampler that fills a new array for each reading (a camera image, every control
+     * step) and never touches it again.
+     */
+    public static SensorInfo owning(int id, int[] values) {
+        return new SensorInfo(id, 0, values, 0, 0, 0, NO_DOUBLES);
+    }
+
     /** A reading as the compact codec read it (null arrays: empty); the arrays are not copied. */
     static SensorInfo decoded(int id, double value, int[] ints, double x, double y, double z, double[] doubles) {
         return new SensorInfo(id, value, ints == null ? NO_INTS : ints, x, y, z, doubles == null ? NO_DOUBLES : doubles);

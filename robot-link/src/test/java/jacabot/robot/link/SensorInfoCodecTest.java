@@ -1,5 +1,6 @@
 package jacabot.robot.link;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -67,6 +68,20 @@ class SensorInfoCodecTest {
                 SensorInfoFilter.Limits.DEFAULT).read();
         assertEquals(readings, batch.readings());
         assertEquals(Double.doubleToRawLongBits(-0.0), Double.doubleToRawLongBits(batch.readings().get(readings.size() - 6).getVal()));
+    }
+
+    @Test
+    void aReadingOwningItsArrayIsTheReadingOfACopy() throws IOException {
+        int[] image = {4, 2, 0xC81E1E, 0x000000, 0xFFFFFF, 7, 8, 9, 10, 11};
+        SensorInfo owning = SensorInfo.owning(SensorKind.CAMERA_IMAGE.id(), image);
+        SensorInfo copied = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), image.clone());
+        assertEquals(copied, owning);
+        assertArrayEquals(image, owning.getIntValues());
+        var a = new ByteArrayOutputStream();
+        var b = new ByteArrayOutputStream();
+        new SensorDataWriter(a, 100).writeStep(new Uplink.Batch(3, 120, 0, List.of(owning)), new Uplink.StepMarker(3, 120, true));
+        new SensorDataWriter(b, 100).writeStep(new Uplink.Batch(3, 120, 0, List.of(copied)), new Uplink.StepMarker(3, 120, true));
+        assertArrayEquals(b.toByteArray(), a.toByteArray());
     }
 
     @Test

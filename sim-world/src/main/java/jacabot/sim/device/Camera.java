@@ -71,6 +71,18 @@ public final class Camera extends Sensor {
         return hasValue() ? image.clone() : null;
     }
 
+    /**
+     * Copies the last image into {@code dst} from {@code offset} on (as {@link #getImage()} gives it,
+     * without an array of its own). {@return whether there was an image}
+     */
+    public boolean copyImageInto(int[] dst, int offset) {
+        if (!hasValue()) {
+            return false;
+        }
+        System.arraycopy(image, 0, dst, offset, image.length);
+        return true;
+    }
+
     /** {@return the red level 0..255 of pixel (x, y) of an image from {@link #getImage()}} */
     public static int imageGetRed(int[] image, int width, int x, int y) {
         return (image[y * width + x] >> 16) & 0xFF;

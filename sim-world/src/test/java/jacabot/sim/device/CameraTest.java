@@ -1,5 +1,6 @@
 package jacabot.sim.device;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -9,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.sim.geom.Rgb;
 import jacabot.sim.SimWorld;
 import jacabot.sim.TestWorlds;
+import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -82,6 +84,20 @@ class CameraTest {
         // at 0.025 / tan(3.28°) = 0.44 m, the top row (+3.28°) meets the 10 cm wall at 7.8 cm
         assertEquals(140, Camera.imageGetRed(img, 64, 32, 7));
         assertEquals(255, Camera.imageGetGreen(img, 64, 32, 0));
+    }
+
+    @Test
+    void anImageCopiedIntoAnArrayIsTheImageGiven() {
+        Camera cam = cameraSeeingCylinderAt(10);
+        int[] framed = new int[cam.getWidth() * cam.getHeight() + 3];
+        framed[0] = -1;
+        framed[framed.length - 1] = -2;
+        assertTrue(cam.copyImageInto(framed, 2));
+        assertArrayEquals(cam.getImage(), Arrays.copyOfRange(framed, 2, framed.length - 1));
+        assertEquals(-1, framed[0]);
+        assertEquals(-2, framed[framed.length - 1]);
+        Camera blind = TestWorlds.khepera(0, 0, 0, "").robot("k").getCamera("camera");
+        assertFalse(blind.copyImageInto(new int[blind.getWidth() * blind.getHeight()], 0));
     }
 
     @Test
