@@ -57,3 +57,17 @@ mock_operation(_, ok).
        !assert_false(charging);
        !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.1)));  // no way back
        -resumeAtCharger.
+
+// an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
+// the charger before the trip; once it is over, the next lowBattery starts the trip
+@[test]
++!test_an_agent_that_delivers_first_goes_to_the_charger_once_the_delivery_is_over
+    <- !until(not charging, 10000); +deliverFirst(300); +~delivered; !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.3); -+battery(470);
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);                                      // the storage point is nearer
+       !assert_false(mock_called(mark));
+       -lowBattery; -~delivered; !!perceive(lowBattery);             // delivered: the trip
+       !until(charging, 2000);
+       !assert_true(charging);
+       -deliverFirst(300).

@@ -8,6 +8,7 @@
 
 location(0, 0, 0).
 orientation(0).
+arena(3, 3).
 storagePoint(-1, -1).
 storageClearance(0.15).
 
@@ -37,6 +38,26 @@ mock_operation(_, ok).
        .wait(100);
        !assert_false(seenCylinder(_, _));
        -cylinderSighted(90, 0.5); -+location(0, 0, 0).
+
+@[test]
++!test_a_sighting_beyond_a_wall_is_put_at_the_wall
+    <- .abolish(seenCylinder(_, _)); -+location(1, 0, 0);
+       +cylinderSighted(0, 1.5);                        // 1.5 m ahead: 1 m beyond the wall at x = 1.5
+       !until(seenCylinder(_, _), 500);
+       ?seenCylinder(X, Z); !assert_equals(X, 1.45, 0.001); !assert_equals(Z, 0, 0.001);
+       -cylinderSighted(0, 1.5); -+location(0, 0, 0).
+
+@[test]
++!test_a_sighting_through_the_storage_area_after_a_delivery_is_not_remembered
+    <- .abolish(seenCylinder(_, _)); -+location(-1, 0, 0); -+orientation(270); +stored(1);
+       +cylinderSighted(0, 1.5);                        // towards the storage point 1 m away, seen 1.5 m off
+       .wait(100);
+       !assert_false(seenCylinder(_, _));
+       -cylinderSighted(0, 1.5); -stored(1);
+       +cylinderSighted(0, 0.5);                        // nothing stored yet: a cylinder on the way
+       !until(seenCylinder(_, _), 500);
+       !assert_true(seenCylinder(_, _));
+       -cylinderSighted(0, 0.5); -+location(0, 0, 0); -+orientation(0).
 
 @[test]
 +!test_picking_a_cylinder_forgets_it

@@ -6,9 +6,11 @@
 lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
-// Reads: charger(X, Z) (the world file).
+// Reads: charger(X, Z), storagePoint(X, Z) (the world file); delivering, ~delivered (delivery).
 // Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
-// point). Rules it extends: travelling, halted.
+// point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
+// point than the charger ends first while the battery holds over Reserve J). Rules it extends:
+// travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
 // energy-agent.asl's when it is another agent's.
@@ -37,6 +39,14 @@ forgetOnFall(atCharger).
 // One trip per low battery: lowBattery comes every control step while the battery is low, and the
 // signals queued meanwhile must find the robot charging already. The plan that believes "charging"
 // is atomic, so no other lowBattery is considered before it (else each one started a trip).
+// An agent whose task is a delivery that can wait no longer than the battery (tidy-up) finishes
+// one under way first when the storage point is nearer than the charger: the way via the storage
+// point to the charger is then the shorter, and a trip begun in the storage area left the robot
+// halted there (insideArea) without steering, to run the battery empty against a wall. lowBattery
+// comes again at the next control step, so the trip starts once the delivery is over.
+@rechargeAfterDelivery
++lowBattery : deliverFirst(R) & ~delivered & not charging & battery(B) & B > R & location(X, _, Z)
+              & storagePoint(Sx, Sz) & charger(Cx, Cz) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
 @rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- +charging; !!rechargeTrip(X, Y, Z, O).

@@ -7,22 +7,31 @@
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
-// Reads: location, orientation; storagePoint(X, Z), storageClearance(C) (delivery: the cylinders
-// stored there are not to be looked for); searching, sweep(L) (sweep).
+// Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
+// (delivery: the cylinders stored there are not to be looked for); searching, sweep(L) (sweep).
 // Beliefs: seenCylinder(X, Z).
 // Needs: sweep (!planSweep, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep.
 
-// where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right
-sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & H = (O + Off) * math.pi / 180
-    & Cx = X + Dist * math.cos(H) & Cz = Z + Dist * math.sin(H).
+// where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right, and on the
+// floor: the distance comes from the apparent width (a column of the image is 1.5 m, two 0.75 m),
+// so a far sighting can fall beyond a wall; it is put at the wall (a waypoint out of the arena
+// held the search against the wall until the waypoint's patience ran out)
+onFloor(V, Half, F) :- F = math.max(0.05 - Half, math.min(Half - 0.05, V)).
+sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
+    & onFloor(X + Dist * math.cos(H), W / 2, Cx) & onFloor(Z + Dist * math.sin(H), D / 2, Cz).
+// a sighting whose line passes the storage area before twice its distance: a cylinder stored there
+// (the middleware leaves out only those whose distance matches)
+towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & storagePoint(Sx, Sz)
+    & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
+    & Along > 0 & Along < 2 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
 nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
 seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
 /* Remembering and forgetting */
 
 @rememberSighting
-+cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & sameSighting(R)
++cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
