@@ -1,15 +1,15 @@
 // Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
 // needed, then park on the charger. Written from skills alone (suspend-resume's, the way round, a
 // search memory) and the plans of its own that decide when the task is done and when to search.
-// From the world file: cylinders(N) (how many there are to store), storagePoint(X, Z),
-// storageRadius(R), charger(X, Z), arena(W, D).
+// From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
-// a search goes on from anywhere: no way back to where the battery ran low; a look around first;
-// a delivery under way ends first while the battery holds over 300 J (the worst scripted drain)
+// a search goes on from anywhere (no way back after a recharge), a look around first; a delivery
+// under way ends first over 300 J (the worst drain); a wall: three obstacles met near each other
 resumeAtCharger.
 lookFirst.
 deliverFirst(300).
+rehitsToFollow(2).
 
 !start.
 

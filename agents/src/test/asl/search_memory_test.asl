@@ -82,3 +82,13 @@ mock_operation(_, ok).
     <- .abolish(seenCylinder(_, _)); -searching; -sweepPlanned;
        !searchFromMemory;
        !assert_true(searching & sweepPlanned).
+
+@[test]
++!test_the_sweep_goes_to_the_nearest_cylinder_remembered_before_its_next_lane
+    <- .abolish(seenCylinder(_, _)); +searching; -+sweep([[0.5, 0.5]]);
+       +seenCylinder(-1, 1); +seenCylinder(0.2, 0.4);
+       !nextWaypoint;
+       !assert_true(waypoint(0.2, 0.4, _));
+       !assert_false(seenCylinder(0.2, 0.4));
+       !assert_true(sweep([[0.5, 0.5]]));               // the lanes wait
+       -searching.
