@@ -6,7 +6,8 @@
 lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
-// Reads: charger(X, Z), storagePoint(X, Z) (the world file); delivering, ~delivered (delivery).
+// Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
+// stored(N) (delivery).
 // Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
 // point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger ends first while the battery holds over Reserve J). Rules it extends:
@@ -24,6 +25,10 @@ tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not
 
 travelling :- charging.
 halted :- atCharger.
+// deliverFirst: the storage point nearer than the charger; the last cylinder to store
+storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
+    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
+lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.
 setUpGoal(setUpRecharge).
 forgetOnFall(atCharger).
 
@@ -44,9 +49,10 @@ forgetOnFall(atCharger).
 // point to the charger is then the shorter, and a trip begun in the storage area left the robot
 // halted there (insideArea) without steering, to run the battery empty against a wall. lowBattery
 // comes again at the next control step, so the trip starts once the delivery is over.
+// The last cylinder of a task that ends at the charger (tidy-up: cylinders(N) known) is delivered
+// first wherever the robot is: the trip after it is the one to the charger anyway.
 @rechargeAfterDelivery
-+lowBattery : deliverFirst(R) & ~delivered & not charging & battery(B) & B > R & location(X, _, Z)
-              & storagePoint(Sx, Sz) & charger(Cx, Cz) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
++lowBattery : deliverFirst(R) & ~delivered & not charging & battery(B) & B > R & (storageNearer | lastToStore).
 @rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- +charging; !!rechargeTrip(X, Y, Z, O).
