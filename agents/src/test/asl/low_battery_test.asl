@@ -66,6 +66,16 @@ mock_operation(_, ok).
        !!perceive(lowBattery); .wait(300);
        !assert_false(charging);
        !assert_false(mock_called(mark));
+       // 80 J over the reserve no longer cover the 2.1 m to the storage point and the charger: the trip
+       -lowBattery; -+battery(380); !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       !assert_true(charging);
+       -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -charged; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
        -lowBattery; -+stored(0); -cylinders(2); -~delivered; -deliverFirst(300).
 
 // an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
