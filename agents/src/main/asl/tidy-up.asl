@@ -1,14 +1,15 @@
 // Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
-// needed, then park on the charger. Written from the skills of the four experiments alone: the
-// skills of suspend-resume, a search memory, and the plans of its own that decide when the task is
-// done and when to search.
-// From the world file: cylinders(N) (how many there are to store), storagePoint(X, Z),
-// storageRadius(R), charger(X, Z), arena(W, D).
+// needed, then park on the charger. Written from skills alone (suspend-resume's, the way round, a
+// search memory) and the plans of its own that decide when the task is done and when to search.
+// From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
-// a search goes on from anywhere: no way back to where the battery ran low; a look around first
+// a search goes on from anywhere (no way back after a recharge), a look around first; a delivery
+// under way ends first over 300 J (the worst drain); a wall: three obstacles met near each other
 resumeAtCharger.
 lookFirst.
+deliverFirst(300).
+rehitsToFollow(2).
 
 !start.
 
@@ -25,9 +26,9 @@ lookFirst.
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
 
-// after each delivery and each recharge: is every cylinder stored?
-@doneDelivering -~delivered <- !parkIfDone.
-@doneRecharging -charging <- !parkIfDone.
+// after each delivery and each recharge: is every cylinder stored? If not, a look around first
+@doneDelivering -~delivered <- +lookFirst; !parkIfDone.
+@doneRecharging -charging <- +lookFirst; !parkIfDone.
 // parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
 +!parkIfDone : stored(N) & cylinders(N) & not charging

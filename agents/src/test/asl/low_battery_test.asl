@@ -57,3 +57,37 @@ mock_operation(_, ok).
        !assert_false(charging);
        !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.1)));  // no way back
        -resumeAtCharger.
+
+// the last cylinder of a task that ends at the charger is delivered first wherever the robot is
+@[test]
++!test_an_agent_that_delivers_first_delivers_the_last_cylinder_before_the_trip
+    <- !until(not charging, 10000); +deliverFirst(300); +~delivered; +cylinders(2); -+stored(1); !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(-0.3, 0, 0.3); -+battery(470);  // nearer the charger
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       // 80 J over the reserve no longer cover the 2.1 m to the storage point and the charger: the trip
+       -lowBattery; -+battery(380); !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       !assert_true(charging);
+       -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -charged; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       -lowBattery; -+stored(0); -cylinders(2); -~delivered; -deliverFirst(300).
+
+// an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
+// the charger before the trip; once it is over, the next lowBattery starts the trip
+@[test]
++!test_an_agent_that_delivers_first_goes_to_the_charger_once_the_delivery_is_over
+    <- !until(not charging, 10000); +deliverFirst(300); +~delivered; !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.3); -+battery(470);
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);                                      // the storage point is nearer
+       !assert_false(mock_called(mark));
+       -lowBattery; -~delivered; !!perceive(lowBattery);             // delivered: the trip
+       !until(charging, 2000);
+       !assert_true(charging);
+       -deliverFirst(300).

@@ -8,6 +8,7 @@
 
 location(0, 0, 0).
 orientation(0).
+arena(3, 3).
 storagePoint(-1, -1).
 storageClearance(0.15).
 
@@ -39,6 +40,26 @@ mock_operation(_, ok).
        -cylinderSighted(90, 0.5); -+location(0, 0, 0).
 
 @[test]
++!test_a_sighting_beyond_a_wall_is_put_at_the_wall
+    <- .abolish(seenCylinder(_, _)); -+location(1, 0, 0);
+       +cylinderSighted(0, 1.5);                        // 1.5 m ahead: 1 m beyond the wall at x = 1.5
+       !until(seenCylinder(_, _), 500);
+       ?seenCylinder(X, Z); !assert_equals(X, 1.45, 0.001); !assert_equals(Z, 0, 0.001);
+       -cylinderSighted(0, 1.5); -+location(0, 0, 0).
+
+@[test]
++!test_a_sighting_through_the_storage_area_after_a_delivery_is_not_remembered
+    <- .abolish(seenCylinder(_, _)); -+location(-1, 0, 0); -+orientation(270); +stored(1);
+       +cylinderSighted(0, 1.5);                        // towards the storage point 1 m away, seen 1.5 m off
+       .wait(100);
+       !assert_false(seenCylinder(_, _));
+       -cylinderSighted(0, 1.5); -stored(1);
+       +cylinderSighted(0, 0.5);                        // nothing stored yet: a cylinder on the way
+       !until(seenCylinder(_, _), 500);
+       !assert_true(seenCylinder(_, _));
+       -cylinderSighted(0, 0.5); -+location(0, 0, 0); -+orientation(0).
+
+@[test]
 +!test_picking_a_cylinder_forgets_it
     <- .abolish(seenCylinder(_, _)); +seenCylinder(0.1, 0); +seenCylinder(1, 1);
        +picked(true);
@@ -61,3 +82,13 @@ mock_operation(_, ok).
     <- .abolish(seenCylinder(_, _)); -searching; -sweepPlanned;
        !searchFromMemory;
        !assert_true(searching & sweepPlanned).
+
+@[test]
++!test_the_sweep_goes_to_the_nearest_cylinder_remembered_before_its_next_lane
+    <- .abolish(seenCylinder(_, _)); +searching; -+sweep([[0.5, 0.5]]);
+       +seenCylinder(-1, 1); +seenCylinder(0.2, 0.4);
+       !nextWaypoint;
+       !assert_true(waypoint(0.2, 0.4, _));
+       !assert_false(seenCylinder(0.2, 0.4));
+       !assert_true(sweep([[0.5, 0.5]]));               // the lanes wait
+       -searching.

@@ -54,6 +54,21 @@ mock_operation(_, ok).
        !assert_false(followingWall(_, _, _));
        -delivering; -obstacle(true).
 
+// an agent that believes rehitsToFollow(2) detours round an obstacle met once near here before,
+// and follows at the third
+@[test]
++!test_an_agent_may_ask_for_more_obstacles_met_near_here_before_following
+    <- +rehitsToFollow(2); +delivering; -+detours(0); -+detours(1);
+       +obstacle(true);
+       .wait(100);
+       !assert_false(followingWall(_, _, _));                    // one met before: a detour
+       -obstacle(true); -+location(0.55, 0, 0.05); -+detours(2);   // the next, 7 cm on
+       +obstacle(true);
+       !until(followingWall(_, _, _), 1000);
+       !assert_true(followingWall(_, _, _));                     // two: a wall
+       -delivering; -obstacle(true); -rehitsToFollow(2); -+location(0.5, 0, 0);
+       !until(not followingWall(_, _, _), 1000).
+
 @[test]
 +!test_a_side_given_up_on_this_trip_is_not_chosen_again
     <- -+detours(0); +delivering;

@@ -6,9 +6,14 @@
 lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
-// Reads: charger(X, Z) (the world file).
+wayEnergy(50).          // J a metre at full speed (the Khepera: 2.5 W at 5 cm/s), for deliverFirst
+// Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
+// stored(N) (delivery).
 // Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
-// point). Rules it extends: travelling, halted.
+// point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
+// point than the charger, or the last, ends first while the battery less Reserve J covers the way
+// via the storage point to the charger). Rules it extends:
+// travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
 // energy-agent.asl's when it is another agent's.
@@ -22,6 +27,13 @@ tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not
 
 travelling :- charging.
 halted :- atCharger.
+// deliverFirst: the storage point nearer than the charger, or the last cylinder to store, and the
+// battery less the reserve covers the straight way to the storage point and on to the charger
+wayCovered(R) :- battery(B) & location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz) & wayEnergy(E)
+    & B - R > E * (math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) + math.sqrt((Sx - Cx) * (Sx - Cx) + (Sz - Cz) * (Sz - Cz))).
+storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
+    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
+lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.
 setUpGoal(setUpRecharge).
 forgetOnFall(atCharger).
 
@@ -37,6 +49,16 @@ forgetOnFall(atCharger).
 // One trip per low battery: lowBattery comes every control step while the battery is low, and the
 // signals queued meanwhile must find the robot charging already. The plan that believes "charging"
 // is atomic, so no other lowBattery is considered before it (else each one started a trip).
+// An agent whose task is a delivery that can wait no longer than the battery (tidy-up) finishes
+// one under way first when the storage point is nearer than the charger: the way via the storage
+// point to the charger is then the shorter, and a trip begun in the storage area left the robot
+// halted there (insideArea) without steering, to run the battery empty against a wall. lowBattery
+// comes again at the next control step, so the trip starts once the delivery is over.
+// The last cylinder of a task that ends at the charger (tidy-up: cylinders(N) known) is delivered
+// first wherever the robot is: the trip after it is the one to the charger anyway. Either only
+// while the battery less the reserve (the worst drain) covers the way on to the charger.
+@rechargeAfterDelivery
++lowBattery : deliverFirst(R) & ~delivered & not charging & (storageNearer | lastToStore) & wayCovered(R).
 @rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- +charging; !!rechargeTrip(X, Y, Z, O).

@@ -1,28 +1,38 @@
 // Skill: a search memory, not in the thesis. A cylinder the camera showed but the robot did not go
 // for (it was avoiding, on a recharge trip, ignoring one it had given up, or going round an
-// obstacle) is remembered where it was seen; a search (after a delivery, say) goes first to the
-// nearest one remembered and looks around there, and the sweep goes on along the lanes it had not
-// yet driven (sweep.asl's resumeSweep) instead of starting them again.
+// obstacle) is remembered where it was seen; a search (after a delivery, say), and the sweep at
+// each waypoint, goes first to the nearest one remembered and looks around there, and the sweep
+// goes on along the lanes it had not yet driven (sweep.asl's resumeSweep) instead of starting
+// them again.
 // Parameters:
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
-// Reads: location, orientation; storagePoint(X, Z), storageClearance(C) (delivery: the cylinders
-// stored there are not to be looked for); searching, sweep(L) (sweep).
+// Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
+// (delivery: the cylinders stored there are not to be looked for); searching, sweep(L) (sweep).
 // Beliefs: seenCylinder(X, Z).
 // Needs: sweep (!planSweep, waypoint, closest). Include it after far sight (its sighting plan
-// takes only the sightings far sight leaves) and before sweep.
+// takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
-// where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right
-sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & H = (O + Off) * math.pi / 180
-    & Cx = X + Dist * math.cos(H) & Cz = Z + Dist * math.sin(H).
+// where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right, and on the
+// floor: the distance comes from the apparent width (a column of the image is 1.5 m, two 0.75 m),
+// so a far sighting can fall beyond a wall; it is put at the wall (a waypoint out of the arena
+// held the search against the wall until the waypoint's patience ran out)
+onFloor(V, Half, F) :- F = math.max(0.05 - Half, math.min(Half - 0.05, V)).
+sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
+    & onFloor(X + Dist * math.cos(H), W / 2, Cx) & onFloor(Z + Dist * math.sin(H), D / 2, Cz).
+// a sighting whose line passes the storage area before twice its distance: a cylinder stored there
+// (the middleware leaves out only those whose distance matches)
+towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & storagePoint(Sx, Sz)
+    & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
+    & Along > 0 & Along < 2 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
 nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
 seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
 /* Remembering and forgetting */
 
 @rememberSighting
-+cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & sameSighting(R)
++cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
@@ -34,11 +44,18 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 
 @recallNearest
-+!searchFromMemory : seenCylinder(_, _) & location(X, _, Z)
-    <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
-       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
-       if (not sweep([_ | _])) { !planSweep };
-       println("Looking again where a cylinder was seen"); +searching;
-       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
++!searchFromMemory : seenCylinder(_, _)
+    <- if (not sweep([_ | _])) { !planSweep }; +searching; !lookAgain.
 @searchingAlready +!searchFromMemory : searching.
 @searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.
+
+// on the sweep too, the next waypoint is the nearest cylinder remembered before the next lane's
+// (one lost from sight while homing, behind a box, was left for the lanes across the arena)
+@nextRemembered +!nextWaypoint : searching & seenCylinder(_, _) <- !lookAgain.
+
+@lookAgain
++!lookAgain : location(X, _, Z)
+    <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
+       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
+       println("Looking again where a cylinder was seen");
+       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
