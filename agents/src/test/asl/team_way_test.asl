@@ -1,7 +1,9 @@
 // Skill tests of the right of way between teammates (skills/team-way.asl, in team-delivery.asl):
 // the robot whose name comes later gives way to a teammate too close (backs off from one ahead),
 // the earlier one goes on; a teammate standing in the storage area's queue is given way whatever
-// its name. The agent under test is named team_way_test: khepera1 comes before it, zeta after it.
+// its name, the one whose turn it is before every other, and one that carries a cylinder before
+// one that does not; a robot waiting for the charger gives way, one on it does not; a robot that
+// waits does not cruise. The agent under test is named team_way_test: khepera1 comes before it, zeta after it.
 // Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -46,7 +48,7 @@ mock_operation(_, ok).
 
 @[test]
 +!test_two_robots_in_a_queue_go_by_name
-    <- !forget_calls; -storageQueue(_); +storageQueue([team_way_test, khepera1]);
+    <- !forget_calls; -storageQueue(_); +storageQueue([zeta2, team_way_test, khepera1]);
        !!perceive(robotAt(zeta, 0.1, 0.3));              // not queued: it gives way to this robot
        .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
@@ -55,3 +57,56 @@ mock_operation(_, ok).
        !until(mock_called(stop), 3000);
        !assert_true(mock_called(setSpeeds(-40, -40)));
        -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_the_robot_whose_turn_it_is_goes_on_before_an_earlier_name
+    <- !forget_calls; -storageQueue(_); +storageQueue([team_way_test, khepera1]);   // this robot's turn
+       !!perceive(robotAt(khepera1, 0.1, 0.3));
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_a_robot_waiting_for_the_charger_gives_way_to_the_one_whose_turn_it_is
+    <- !forget_calls; -location(_, _, _); +location(-0.2, 0, 0.3); -chargerQueue(_);
+       +chargerQueue([zeta, team_way_test]); +waitingCharger;
+       !!perceive(robotAt(zeta, -0.2, 0.4));             // 10 cm ahead, on its way to the charger
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(-40, -40)));   // the waiting robot backs off
+       !assert_true(waitingCharger);                     // and still waits
+       -robotAt(zeta, _, _); -waitingCharger; -chargerQueue(_); +chargerQueue([]);
+       -location(_, _, _); +location(0.1, 0, 0.2).
+
+@[test]
++!test_a_robot_on_the_charger_does_not_move_for_anyone
+    <- !forget_calls; -location(_, _, _); +location(-0.38, 0, 0.38); -chargerQueue(_);
+       +chargerQueue([zeta, team_way_test]); +atCharger;
+       !!perceive(robotAt(zeta, -0.38, 0.48));
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(zeta, _, _); -atCharger; -chargerQueue(_); +chargerQueue([]);
+       -location(_, _, _); +location(0.1, 0, 0.2).
+
+@[test]
++!test_a_teammate_that_carries_a_cylinder_is_given_way
+    <- !forget_calls; +claimed(7, zeta, 0.1, 0.3, 0.1);   // the board keeps a carried claim on its robot
+       !!perceive(robotAt(zeta, 0.1, 0.3));              // 10 cm ahead, a later name that carries
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(-40, -40)));
+       -robotAt(zeta, _, _); -claimed(7, _, _, _, _);
+       !forget_calls;
+       +claimed(8, zeta, 0.5, 0.5, 0.1);                 // a claim elsewhere: zeta carries nothing
+       !!perceive(robotAt(zeta, 0.1, 0.3));
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(zeta, _, _); -claimed(8, _, _, _, _).
+
+@[test]
++!test_a_robot_that_starts_to_wait_stands_still_and_does_not_cruise
+    <- !forget_calls; +waitingStorage;
+       !cruise;                                          // a re-alignment ending while it waits
+       !assert_true(mock_called(stop));
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -waitingStorage; !forget_calls;
+       !cruise;                                          // not waiting: it goes on
+       !assert_true(mock_called(setSpeeds(_, _))).
