@@ -22,7 +22,7 @@ mock_operation(_, ok).
     <- !forget_calls; +location(0.1, 0, 0.2); +orientation(90); +storageQueue([]); +chargerQueue([]);
        !!perceive(robotAt(khepera1, 0.1, 0.3));          // 10 cm ahead, an earlier name
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
        !assert_false(givingWay);
        -robotAt(khepera1, _, _).
 
@@ -43,7 +43,7 @@ mock_operation(_, ok).
     <- !forget_calls; -storageQueue(_); +storageQueue([khepera1, zeta]);
        !!perceive(robotAt(zeta, 0.1, 0.1));              // 10 cm behind, waiting for the storage area
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(40, 40)));     // moves on, away from it
+       !assert_true(mock_called(setSpeeds(L, R)) & L > 0 & L == R);     // moves on, away from it
        -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).
 
 @[test]
@@ -55,7 +55,7 @@ mock_operation(_, ok).
        -robotAt(zeta, _, _);
        !!perceive(robotAt(khepera1, 0.1, 0.3));          // queued too, an earlier name: this robot gives way
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
        -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
 
 @[test]
@@ -72,7 +72,7 @@ mock_operation(_, ok).
        +chargerQueue([zeta, team_way_test]); +waitingCharger;
        !!perceive(robotAt(zeta, -0.2, 0.4));             // 10 cm ahead, on its way to the charger
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));   // the waiting robot backs off
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);   // the waiting robot backs off
        !assert_true(waitingCharger);                     // and still waits
        -robotAt(zeta, _, _); -waitingCharger; -chargerQueue(_); +chargerQueue([]);
        -location(_, _, _); +location(0.1, 0, 0.2).
@@ -92,7 +92,7 @@ mock_operation(_, ok).
     <- !forget_calls; +claimed(7, zeta, 0.1, 0.3, 0.1);   // the board keeps a carried claim on its robot
        !!perceive(robotAt(zeta, 0.1, 0.3));              // 10 cm ahead, a later name that carries
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
        -robotAt(zeta, _, _); -claimed(7, _, _, _, _);
        !forget_calls;
        +claimed(8, zeta, 0.5, 0.5, 0.1);                 // a claim elsewhere: zeta carries nothing
