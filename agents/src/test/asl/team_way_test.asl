@@ -1,9 +1,9 @@
 // Skill tests of the right of way between teammates (skills/team-way.asl, in team-delivery.asl):
 // the robot whose name comes later gives way to a teammate too close (backs off from one ahead),
 // the earlier one goes on; a teammate standing in the storage area's queue is given way whatever
-// its name, the one whose turn it is before every other, and one that carries a cylinder before
-// one that does not; a robot waiting for the charger gives way, one on it does not; a robot that
-// waits does not cruise. The agent under test is named team_way_test: khepera1 comes before it, zeta after it.
+// its name, the one whose turn it is before every other; a robot waiting for the charger gives
+// way, one on it does not; a robot that waits does not cruise. The agent under test is named
+// team_way_test: khepera1 comes before it, zeta after it.
 // Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -86,20 +86,6 @@ mock_operation(_, ok).
        !assert_false(mock_called(setSpeeds(_, _)));
        -robotAt(zeta, _, _); -atCharger; -chargerQueue(_); +chargerQueue([]);
        -location(_, _, _); +location(0.1, 0, 0.2).
-
-@[test]
-+!test_a_teammate_that_carries_a_cylinder_is_given_way
-    <- !forget_calls; +claimed(7, zeta, 0.1, 0.3, 0.1);   // the board keeps a carried claim on its robot
-       !!perceive(robotAt(zeta, 0.1, 0.3));              // 10 cm ahead, a later name that carries
-       !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
-       -robotAt(zeta, _, _); -claimed(7, _, _, _, _);
-       !forget_calls;
-       +claimed(8, zeta, 0.5, 0.5, 0.1);                 // a claim elsewhere: zeta carries nothing
-       !!perceive(robotAt(zeta, 0.1, 0.3));
-       .wait(300);
-       !assert_false(mock_called(setSpeeds(_, _)));
-       -robotAt(zeta, _, _); -claimed(8, _, _, _, _).
 
 @[test]
 +!test_a_robot_that_starts_to_wait_stands_still_and_does_not_cruise

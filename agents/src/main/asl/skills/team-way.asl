@@ -6,8 +6,9 @@
 // whose name comes later gives way. Ranks, highest first: the robot whose turn it is (the head of
 // the storage area's queue; the head of the charger's queue near the charger, arriving, charging
 // or leaving it), a robot standing in a queue for its turn (waiting near the charger, or for the
-// storage area), a robot that carries a cylinder (its claim follows it on the board: it cannot
-// back off without pushing its cylinder, and others are free), any other robot. (Tried: the robot
+// storage area), any other robot. (Tried: a robot that carries a cylinder ranked above one that
+// does not; it drove on at travel speed into a searching robot backing off from it, head-on, for
+// 2.6 s: held-out world 42, two robots.) (Tried: the robot
 // whose turn it is at the storage area ranked as any robot; it then gave way to a robot not
 // queued that followed it, and they touched for 29 s, world 6 with four robots.) Giving way is one
 // atomic manoeuvre (no other plan drives the wheels meanwhile): back off from a teammate ahead, or
@@ -26,7 +27,7 @@ wayClearance(0.13).   // m between two robots' centres (a Khepera is 5.7 cm wide
 wayTime(600).         // ms of the manoeuvre
 waySpeed(40).         // wheel speed of the manoeuvre
 wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (team-charger)
-// Beliefs: givingWay. Reads: robotAt(A, X, Z), claimed(Id, A, X, Z, R), storageQueue(L) (the board),
+// Beliefs: givingWay. Reads: robotAt(A, X, Z), storageQueue(L) (the board),
 // chargerQueue(L) (the charger), charger(X, Z) (the world), location, orientation, atCharger,
 // insideArea. Rules it offers: rightOfWay(A), standing(A), aheadOfMe(X, Z); the rule waitingTurn,
 // which the skills that make a robot wait extend (team-storage, team-follow, team-charger).
@@ -35,17 +36,14 @@ wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (
 
 // the rule both robots follow (never both give way): the higher rank, else the earlier name
 rightOfWay(A) :- .my_name(Me) & A \== Me & wayRank(A, Ra) & wayRank(Me, Rm) & (Ra > Rm | Ra == Rm & A < Me).
-wayRank(A, 3) :- turnHolder(A).
-wayRank(A, 2) :- not turnHolder(A) & standing(A).
-wayRank(A, 1) :- not turnHolder(A) & not standing(A) & carrying(A).
-wayRank(A, 0) :- not turnHolder(A) & not standing(A) & not carrying(A).
+wayRank(A, 2) :- turnHolder(A).
+wayRank(A, 1) :- not turnHolder(A) & standing(A).
+wayRank(A, 0) :- not turnHolder(A) & not standing(A).
 turnHolder(A) :- storageQueue([A | _]).
 turnHolder(A) :- chargerQueue([A | _]) & inChargerReach(A).
 standing(A) :- storageQueue(L) & .member(A, L).
 standing(A) :- chargerQueue(L) & .member(A, L) & inChargerReach(A).
 inChargerReach(A) :- robotAt(A, X, Z) & charger(Cx, Cz) & wayQueueReach(Q) & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < Q * Q.
-// the board moves a carried cylinder's claim to its robot's place with every publication
-carrying(A) :- robotAt(A, X, Z) & claimed(_, A, X, Z, _).
 // a robot that only waits may give way (it stands again after); one charging or putting down may not
 cannotGiveWay :- halted & not waitingTurn.
 cannotGiveWay :- atCharger.
