@@ -39,7 +39,10 @@ mock_operation(_, ok).
        -+battery(950); !!perceive(charged);
        .wait(600);
        !assert_false(mock_called(leaveCharger));                 // still on it
-       -location(_, _, _); +location(-0.1, 0, 0.38);              // 0.28 m away
+       -location(_, _, _); +location(-0.1, 0, 0.38);              // 0.28 m away: it still has its turn
+       .wait(600);
+       !assert_false(mock_called(leaveCharger));
+       -location(_, _, _); +location(-0.04, 0, 0.38);             // 0.34 m away
        !until(mock_called(leaveCharger), 5000);
        !assert_true(mock_called(leaveCharger)).
 

@@ -1,7 +1,9 @@
 // Skill tests of the right of way between teammates (skills/team-way.asl, in team-delivery.asl):
 // the robot whose name comes later gives way to a teammate too close (backs off from one ahead),
 // the earlier one goes on; a teammate standing in the storage area's queue is given way whatever
-// its name. The agent under test is named team_way_test: khepera1 comes before it, zeta after it.
+// its name, the one whose turn it is before every other; a robot waiting for the charger gives
+// way, one on it does not; a robot that waits does not cruise. The agent under test is named
+// team_way_test: khepera1 comes before it, zeta after it.
 // Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -20,7 +22,7 @@ mock_operation(_, ok).
     <- !forget_calls; +location(0.1, 0, 0.2); +orientation(90); +storageQueue([]); +chargerQueue([]);
        !!perceive(robotAt(khepera1, 0.1, 0.3));          // 10 cm ahead, an earlier name
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
        !assert_false(givingWay);
        -robotAt(khepera1, _, _).
 
@@ -41,17 +43,56 @@ mock_operation(_, ok).
     <- !forget_calls; -storageQueue(_); +storageQueue([khepera1, zeta]);
        !!perceive(robotAt(zeta, 0.1, 0.1));              // 10 cm behind, waiting for the storage area
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(40, 40)));     // moves on, away from it
+       !assert_true(mock_called(setSpeeds(L, R)) & L > 0 & L == R);     // moves on, away from it
        -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).
 
 @[test]
 +!test_two_robots_in_a_queue_go_by_name
-    <- !forget_calls; -storageQueue(_); +storageQueue([team_way_test, khepera1]);
+    <- !forget_calls; -storageQueue(_); +storageQueue([zeta2, team_way_test, khepera1]);
        !!perceive(robotAt(zeta, 0.1, 0.3));              // not queued: it gives way to this robot
        .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
        -robotAt(zeta, _, _);
        !!perceive(robotAt(khepera1, 0.1, 0.3));          // queued too, an earlier name: this robot gives way
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(-40, -40)));
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
        -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_the_robot_whose_turn_it_is_goes_on_before_an_earlier_name
+    <- !forget_calls; -storageQueue(_); +storageQueue([team_way_test, khepera1]);   // this robot's turn
+       !!perceive(robotAt(khepera1, 0.1, 0.3));
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_a_robot_waiting_for_the_charger_gives_way_to_the_one_whose_turn_it_is
+    <- !forget_calls; -location(_, _, _); +location(-0.2, 0, 0.3); -chargerQueue(_);
+       +chargerQueue([zeta, team_way_test]); +waitingCharger;
+       !!perceive(robotAt(zeta, -0.2, 0.4));             // 10 cm ahead, on its way to the charger
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);   // the waiting robot backs off
+       !assert_true(waitingCharger);                     // and still waits
+       -robotAt(zeta, _, _); -waitingCharger; -chargerQueue(_); +chargerQueue([]);
+       -location(_, _, _); +location(0.1, 0, 0.2).
+
+@[test]
++!test_a_robot_on_the_charger_does_not_move_for_anyone
+    <- !forget_calls; -location(_, _, _); +location(-0.38, 0, 0.38); -chargerQueue(_);
+       +chargerQueue([zeta, team_way_test]); +atCharger;
+       !!perceive(robotAt(zeta, -0.38, 0.48));
+       .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -robotAt(zeta, _, _); -atCharger; -chargerQueue(_); +chargerQueue([]);
+       -location(_, _, _); +location(0.1, 0, 0.2).
+
+@[test]
++!test_a_robot_that_starts_to_wait_stands_still_and_does_not_cruise
+    <- !forget_calls; +waitingStorage;
+       !cruise;                                          // a re-alignment ending while it waits
+       !assert_true(mock_called(stop));
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -waitingStorage; !forget_calls;
+       !cruise;                                          // not waiting: it goes on
+       !assert_true(mock_called(setSpeeds(_, _))).

@@ -22,7 +22,8 @@
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
 chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger
-chargerLeaveDistance(0.2).   // m from the charger where a recharged robot leaves the queue
+chargerLeaveDistance(0.3).   // m from the charger where a recharged robot leaves the queue (holding its turn,
+                             // it has the right of way through the robots waiting there)
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
 chargerReserve(100).         // J: a robot booked for the charger works on above it, plus the way
                              // and the queue ahead (below)
@@ -31,14 +32,15 @@ tripEnergy(75).              // J per metre to the charger (2.5 W at 0.05 m/s is
 queueEnergy(25).             // J per robot ahead in the queue (waits, and the last metres to the charger)
 chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
 chargerShareFloor(600).      // J: and at this one when a robot waiting at the charger is needier
-// Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted.
+// Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted, waitingTurn.
 // Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L),
 // chargerWaiting(L) (the charger), location, battery.
-// Needs: recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
+// Needs: team-way (!standStill), recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
 // (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
 // for -!reachCharger and the obstacles while waiting come first.
 
 halted :- waitingCharger.
+waitingTurn :- waitingCharger.
 chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
 // the energy a booked robot keeps for its trip: the reserve, the way (as the crow flies) and the
@@ -74,10 +76,10 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 // at the charger: its need now, then it waits as a robot that has arrived (before the booked ones)
 @queueForCharger
 +!queueForCharger : battery(B)
-    <- +waitingCharger; requestCharger(B); .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+    <- +waitingCharger; !standStill; requestCharger(B); .print("Waiting for the charger"); awaitCharger; -waitingCharger.
 @queueForChargerNoReading
 +!queueForCharger
-    <- +waitingCharger; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+    <- +waitingCharger; !standStill; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
 @queueForChargerFailed -!queueForCharger <- -waitingCharger.
 
 // the turn given to a robot that does not reach the charger in time goes to the next one

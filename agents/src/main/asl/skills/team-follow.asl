@@ -16,14 +16,15 @@ followTime(5000).      // ms a robot waits behind a teammate that does not stand
 followTimeStanding(30000). // ms it waits behind one that does
 followAgain(8000).     // ms during which a teammate waited for that long is not waited for again
 followPoll(200).       // ms between two looks at the places while waiting
-// Beliefs: following(A), followedOut(A). Rules it extends: halted. Rules it offers: followBehind(A).
+// Beliefs: following(A), followedOut(A). Rules it extends: halted, waitingTurn. Rules it offers: followBehind(A).
 // Reads: robotAt(A, X, Z) (the board), targetPoint(X, Z), delivering, onErrand, avoiding, givingWay,
 // waitingStorage, storageTurnMine, location, orientation.
-// Needs: team-places (the places), team-way (aheadOfMe, standing), heading (computeGap, balance,
+// Needs: team-places (the places), team-way (aheadOfMe, standing, !standStill), heading (computeGap, balance,
 // steer). Include it after team-way (a teammate too close is given way first) and before heading:
 // its plans for obstacles while following come first.
 
 halted :- following(_).
+waitingTurn :- following(_).
 forgetOnFall(following(_)).
 
 // a teammate nearer the target, ahead, too close; the one with the storage turn drives on
@@ -35,7 +36,7 @@ followBehind(A) :- delivering & not onErrand & not storageTurnMine & targetPoint
 
 @followTeammate[atomic]
 +robotAt(_, _, _) : not halted & not avoiding & not givingWay & not following(_) & followBehind(A)
-    <- +following(A); .drop_intention(balance); stop; .print("Keeping my distance behind ", A); !!followWait(A, 0).
+    <- +following(A); !standStill; .print("Keeping my distance behind ", A); !!followWait(A, 0).
 
 @followEndsOffTheWay +!followWait(A, _) : not delivering | onErrand | waitingStorage <- -following(A).
 @followEnds +!followWait(A, _) : not followBehind(A) <- -following(A); !followResume.

@@ -12,13 +12,14 @@ storageQueueRadius(0.35).   // m from the storage point where a robot with a cyl
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
-// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted.
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn.
 // Reads: delivering, insideArea, onErrand (delivery, recharge), storagePoint(X, Z) (the world).
-// Needs: delivery (computeGap, balance), the board focused (team-claims). Include it first (its
+// Needs: team-way (!standStill), delivery (computeGap, balance), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
 // delivery, heading and avoidance: its plans for obstacles while waiting come first.
 
 halted :- waitingStorage.
+waitingTurn :- waitingStorage.
 awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLeaveClearance(L)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) >= (C + L) * (C + L).
 
@@ -35,7 +36,7 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 
 @storageTurnFree +!storageTurn : storageQueue([]) <- awaitStorageTurn; !storageTurnTaken.
 @storageTurnBusy
-+!storageTurn <- stop; .print("Waiting for the storage area"); awaitStorageTurn; !storageTurnTaken; !computeGap; !balance.
++!storageTurn <- !standStill; .print("Waiting for the storage area"); awaitStorageTurn; !storageTurnTaken; !computeGap; !balance.
 @storageTurnLost -!storageTurn <- -waitingStorage.
 @storageTurnTaken
 +!storageTurnTaken : .system_time(T) <- +storageTurnMine; -+storageTurnSince(T); -waitingStorage; !!storageTurnWatch(T).

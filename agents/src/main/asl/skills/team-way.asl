@@ -1,39 +1,66 @@
 // Skill: right of way between teammates (thesis Chapter 6, multi-robot coordination; not in the
 // thesis). A robot's distance sensors see another robot as an obstacle, and when two robots meet
-// both avoid at once, often into each other. Both robots of a pair apply one rule to the places
-// on the task board (team-places): when two robots are within wayClearance of each other, the one
-// whose name comes later in the alphabet gives way and the other goes on as it was; but a robot
-// that is in a queue for its turn (the storage area's, or the charger's and near it: waiting, or on
-// the charger) is given way by every robot that is not. (Tried: the robot whose turn it is at the
-// storage area not counted as standing; it then gave way to a robot not queued that followed it,
-// and they touched for 29 s, world 6 with four robots.) Giving way is
-// one atomic manoeuvre (no other plan drives the wheels meanwhile): back off from a teammate ahead,
-// or move on away from one behind, for wayTime, then stop and let the skills steer again. A robot
-// standing for its turn (halted: the charger, the storage area) does not move for it; a robot
-// picking does (a cylinder next to a teammate is most often the one it carries).
+// both avoid at once, often into each other. Both robots of a pair apply one rule to what the
+// team's artifacts show (team-places, the queues): when two robots are within wayClearance of each
+// other, the one of lower rank gives way and the other goes on as it was; of equal rank, the one
+// whose name comes later gives way. Ranks, highest first: the robot whose turn it is (the head of
+// the storage area's queue; the head of the charger's queue near the charger, arriving, charging
+// or leaving it), a robot standing in a queue for its turn (waiting near the charger, or for the
+// storage area), any other robot. (Tried: a robot that carries a cylinder ranked above one that
+// does not; it drove on at travel speed into a searching robot backing off from it, head-on, for
+// 2.6 s: held-out world 42, two robots.) (Tried: the robot
+// whose turn it is at the storage area ranked as any robot; it then gave way to a robot not
+// queued that followed it, and they touched for 29 s, world 6 with four robots.) Giving way is one
+// atomic manoeuvre (no other plan drives the wheels meanwhile): back off from a teammate ahead, or
+// move on away from one behind, for wayTime, then stop and let the skills steer again. A robot
+// that waits for its turn or behind a teammate gives way too, then stands again (waiting robots
+// that never moved were driven into by the one whose turn had come); one on the charger or in
+// the storage area does not move for it; a robot picking does (a cylinder next to a teammate is
+// most often the one it carries).
+// A robot that starts to wait (for its turn, behind a teammate) stands still: a detour or a
+// re-alignment begun on the way is over (!standStill), and a re-alignment ending while it waits
+// does not drive it on (the detour's last step cruised a robot waiting at the charger into the
+// corner, pushing the teammate on the charger's edge for 20 s: world 3, four robots).
 // Parameters:
 wayClearance(0.13).   // m between two robots' centres (a Khepera is 5.7 cm wide, its gripper and a
                       // cylinder held reach 9 cm ahead of its centre)
 wayTime(600).         // ms of the manoeuvre
 waySpeed(40).         // wheel speed of the manoeuvre
 wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (team-charger)
-// Beliefs: givingWay. Reads: robotAt(A, X, Z), storageQueue(L) (the board), chargerQueue(L) (the
-// charger), charger(X, Z) (the world), location, orientation.
+// Beliefs: givingWay. Reads: robotAt(A, X, Z), storageQueue(L) (the board),
+// chargerQueue(L) (the charger), charger(X, Z) (the world), location, orientation, atCharger,
+// insideArea. Rules it offers: rightOfWay(A), standing(A), aheadOfMe(X, Z); the rule waitingTurn,
+// which the skills that make a robot wait extend (team-storage, team-follow, team-charger).
 // Needs: team-places (the places published), halted (heading, and the skills that extend it).
+// Include it before delivery (heading): its plan for !cruise comes first.
 
-// the rule both robots follow (never both give way): a robot in a queue before one that is not,
-// else the earlier name
-rightOfWay(A) :- .my_name(Me) & A \== Me & standing(A) & not standing(Me).
-rightOfWay(A) :- .my_name(Me) & A \== Me & A < Me & (standing(A) | not standing(Me)).
+// the rule both robots follow (never both give way): the higher rank, else the earlier name
+rightOfWay(A) :- .my_name(Me) & A \== Me & wayRank(A, Ra) & wayRank(Me, Rm) & (Ra > Rm | Ra == Rm & A < Me).
+wayRank(A, 2) :- turnHolder(A).
+wayRank(A, 1) :- not turnHolder(A) & standing(A).
+wayRank(A, 0) :- not turnHolder(A) & not standing(A).
+turnHolder(A) :- storageQueue([A | _]).
+turnHolder(A) :- chargerQueue([A | _]) & inChargerReach(A).
 standing(A) :- storageQueue(L) & .member(A, L).
-standing(A) :- chargerQueue(L) & .member(A, L) & robotAt(A, X, Z) & charger(Cx, Cz) & wayQueueReach(Q)
-    & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < Q * Q.
+standing(A) :- chargerQueue(L) & .member(A, L) & inChargerReach(A).
+inChargerReach(A) :- robotAt(A, X, Z) & charger(Cx, Cz) & wayQueueReach(Q) & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < Q * Q.
+// a robot that only waits may give way (it stands again after); one charging or putting down may not
+cannotGiveWay :- halted & not waitingTurn.
+cannotGiveWay :- atCharger.
+cannotGiveWay :- insideArea.
 tooClose(Ax, Az) :- location(X, _, Z) & wayClearance(C) & (Ax - X) * (Ax - X) + (Az - Z) * (Az - Z) < C * C.
 aheadOfMe(Ax, Az) :- location(X, _, Z) & orientation(O) & R = O * math.pi / 180
     & (Ax - X) * math.cos(R) + (Az - Z) * math.sin(R) > 0.
 
 @giveWay[atomic]
-+robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not halted & waySpeed(V) & wayTime(T)
++robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
     <- +givingWay; .print("Giving way to ", A);
        if (aheadOfMe(Ax, Az)) { setSpeeds(-V, -V) } else { setSpeeds(V, V) };
        .wait(T); stop; -givingWay.
+
+// a robot that starts to wait stands still: what was driving it on its way is over
+@standStill
++!standStill
+    <- .drop_intention(balance); if (.intend(detour(_))) { .drop_intention(detour(_)); -avoiding }; stop.
+// a re-alignment that ends while the robot waits (its own, or one left over) does not drive it on
+@noCruiseWhileWaiting +!cruise : waitingTurn <- stop.
