@@ -323,11 +323,7 @@ final class ExperimentCommand implements Callable<Integer> {
             linkFile.flush();
             tap.close();
             consoleFile.events(recorder.events());
-            try {
-                consoleFile.close();
-            } catch (UncheckedIOException e) {
-                log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
-            }
+            consoleFile.close(log::warn);
             if (terminated.get()) {
                 log.result(String.format("Stopped by a signal at t=%.2f s; writing what there is.", simWorld.timeMs() / 1000.0));
             } else if (run.agentFailure().isPresent()) {
@@ -385,11 +381,7 @@ final class ExperimentCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new IllegalStateException("cannot listen on port " + listen + " (" + e.getMessage() + "); choose another with --port", e);
         } finally {
-            try {
-                consoleFile.close();
-            } catch (UncheckedIOException e) {
-                log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
-            }
+            consoleFile.close(log::warn);
         }
         log.result(String.format("%d steps (%.1f s simulated) with the remote controller, %d reasoning cycles.", result.steps(),
                 result.steps() * run.world().controlStep() / 1000.0, run.cycles()));

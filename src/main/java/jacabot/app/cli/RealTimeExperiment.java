@@ -21,7 +21,6 @@ import jacabot.sim.SimWorld;
 import jacabot.sim.viewer.WorldViewer;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -167,7 +166,7 @@ final class RealTimeExperiment {
             throw new IllegalStateException("cannot make the middleware: " + e.getMessage()
                     + (port != 0 ? "; is port " + port + " free? choose another with --port" : ""), e);
         } finally {
-            closeQuietly(consoleFile, outDir, log);
+            consoleFile.close(log::warn);
             if (inspector != null && (viewer || signalled.get())) {
                 inspector.close();
             }
@@ -198,14 +197,6 @@ final class RealTimeExperiment {
             throw new RunFailure(agentFailure.get());
         }
         return 0;
-    }
-
-    private static void closeQuietly(ConsoleRecorder consoleFile, Path outDir, ConsoleLog log) {
-        try {
-            consoleFile.close();
-        } catch (UncheckedIOException e) {
-            log.warn(outDir.resolve(ConsoleFile.FILE) + ": " + e.getMessage());
-        }
     }
 
     static String lagSummary(List<LagMeter.Episode> lags, double simulatedSeconds) {

@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 
 /**
@@ -22,13 +23,15 @@ import java.util.function.LongSupplier;
  * control step ({@link #events}) and at {@link #close}.
  */
 public final class ConsoleRecorder implements Closeable {
+    private final Path file;
     private final BufferedWriter out;
     private final LongSupplier clockMs;
     private int eventsWritten;
     private IOException failure;
 
-    private ConsoleRecorder(BufferedWriter out, LongSupplier clockMs) {
-        this.out = out;
+    private ConsoleRecorder(Path file, LongSupplier clockMs) throws IOException {
+        this.file = file;
+        this.out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
         this.clockMs = clockMs;
     }
 
@@ -38,7 +41,7 @@ public final class ConsoleRecorder implements Closeable {
      * @param clockMs the run's simulated time, read when an agent prints
      */
     public static ConsoleRecorder open(Path runDir, LongSupplier clockMs) throws IOException {
-        return new ConsoleRecorder(Files.newBufferedWriter(runDir.resolve(ConsoleFile.FILE), StandardCharsets.UTF_8), clockMs);
+        return new ConsoleRecorder(runDir.resolve(ConsoleFile.FILE), clockMs);
     }
 
     /** {@return a console stream that prints to {@code console} and writes each line here too, with its time} */
@@ -95,6 +98,15 @@ public final class ConsoleRecorder implements Closeable {
         }
         if (failure != null) {
             throw new UncheckedIOException("cannot write the console file: " + failure.getMessage(), failure);
+        }
+    }
+
+    /** Puts the rest on disk; a write that failed, now or during the run, is told to {@code warn} with the file's path. */
+    public void close(Consumer<String> warn) {
+        try {
+            close();
+        } catch (UncheckedIOException e) {
+            warn.accept(file + ": " + e.getMessage());
         }
     }
 }
