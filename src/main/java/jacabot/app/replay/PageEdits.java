@@ -1,6 +1,5 @@
 package jacabot.app.replay;
 
-import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.app.inspector.Debugger;
@@ -106,12 +105,7 @@ public final class PageEdits implements RunEdits {
         if (live == null || debugger == null) {
             return RunEdits.super.reload(program);
         }
-        AgentProgram edited;
-        try {
-            edited = original.withText(program).parse(original.parser());
-        } catch (AslSyntaxException e) {
-            throw new IllegalArgumentException(e.getMessage());
-        }
+        AgentProgram edited = WhatIf.parseEdited(original.withText(program)); // nothing is applied when it does not parse
         debugger.atHalt(() -> WhatIf.swapPlans(live, edited)).get(30, TimeUnit.SECONDS);
         return "the halted run has the edited plans; continue or step it";
     }

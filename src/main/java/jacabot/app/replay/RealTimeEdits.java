@@ -1,6 +1,5 @@
 package jacabot.app.replay;
 
-import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.app.inspector.ConsoleRecorder;
@@ -70,12 +69,7 @@ public final class RealTimeEdits implements RunEdits {
 
     @Override
     public String reload(String program) throws Exception {
-        AgentProgram edited;
-        try {
-            edited = original.withText(program).parse(original.parser());
-        } catch (AslSyntaxException e) {
-            throw new IllegalArgumentException(e.getMessage()); // nothing is applied
-        }
+        AgentProgram edited = WhatIf.parseEdited(original.withText(program)); // nothing is applied when it does not parse
         var state = new AtomicInteger(WAITING);
         var applied = new CompletableFuture<String>();
         agent.runAtBeginOfNextCycle(() -> { // on the agent's thread, between two cycles: its plans can change

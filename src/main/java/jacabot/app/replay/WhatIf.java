@@ -44,12 +44,7 @@ public final class WhatIf {
      */
     public static Result run(SimWorld world, Experiment experiment, long seed, AgentSource original, AgentSource edited,
             long atMs, double seconds, Path outDir, PrintStream console) throws Exception {
-        AgentProgram program;
-        try {
-            program = edited.parse(edited.parser());
-        } catch (AslSyntaxException e) {
-            throw new IllegalArgumentException(e.getMessage());
-        }
+        AgentProgram program = parseEdited(edited);
         Files.createDirectories(outDir);
         // its console by simulated time, as a lockstep experiment's: the inspector's console panel reads it
         ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, world::timeMs);
@@ -72,6 +67,19 @@ public final class WhatIf {
     }
 
     /** Replaces the agent's own plans by the program's (the communication plans every agent has stay). */
+    /**
+     * {@return an edited agent's program, its includes read from where the run's agent came from}
+     *
+     * @throws IllegalArgumentException when it does not parse (its file:line:col): nothing is to change
+     */
+    static AgentProgram parseEdited(AgentSource edited) {
+        try {
+            return edited.parse(edited.parser());
+        } catch (AslSyntaxException e) {
+            throw new IllegalArgumentException(e.getMessage());
+        }
+    }
+
     static void swapPlans(Agent agent, AgentProgram program) {
         PlanLibrary library = agent.planLibrary();
         for (Plan p : new ArrayList<>(library.plans())) {
