@@ -6,7 +6,7 @@
 lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
-wayEnergy(50).          // J a metre at full speed (the Khepera: 2.5 W at 5 cm/s), for deliverFirst
+wayEnergy(50).          // J a metre at full speed (the Khepera: 2.5 W at 5 cm/s): deliverFirst, team-charger
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
 // stored(N) (delivery).
 // Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked

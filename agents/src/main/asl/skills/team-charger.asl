@@ -27,13 +27,13 @@ chargerLeaveDistance(0.3).   // m from the charger where a recharged robot leave
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
 chargerReserve(100).         // J: a robot booked for the charger works on above it, plus the way
                              // and the queue ahead (below)
-tripEnergy(75).              // J per metre to the charger (2.5 W at 0.05 m/s is 50 J a metre in a
-                             // straight line; half as much again for the detours)
+tripDetours(1.5).            // the energy per metre to the charger, as a share of the straight
+                             // line's (recharge-trip's wayEnergy): half as much again for the detours
 queueEnergy(25).             // J per robot ahead in the queue (waits, and the last metres to the charger)
 chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
 chargerShareFloor(600).      // J: and at this one when a robot waiting at the charger is needier
 // Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted, waitingTurn.
-// Reads: charger(X, Z) (the world), charging, atCharger (recharge-trip), chargerQueue(L),
+// Reads: charger(X, Z) (the world), charging, atCharger, wayEnergy (recharge-trip), chargerQueue(L),
 // chargerWaiting(L) (the charger), location, battery.
 // Needs: team-way (!standStill), recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
 // (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
@@ -45,6 +45,7 @@ chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
 // the energy a booked robot keeps for its trip: the reserve, the way (as the crow flies) and the
 // robots ahead of it in the queue
+tripEnergy(E) :- wayEnergy(W) & tripDetours(F) & E = W * F.
 chargerReserveNow(R) :- chargerReserve(R0) & tripEnergy(Em) & queueEnergy(Eq) & location(X, _, Z) & charger(Cx, Cz)
     & .my_name(Me) & chargerQueue(L) & queuedAhead(L, Me, N)
     & R = R0 + Em * math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)) + Eq * N.
