@@ -17,7 +17,6 @@ import org.dyn4j.collision.narrowphase.Gjk;
 import org.dyn4j.collision.narrowphase.Raycast;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
-import org.dyn4j.dynamics.ContinuousDetectionMode;
 import org.dyn4j.geometry.Circle;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
@@ -48,51 +47,15 @@ final class Physics {
     /** How much a fan's broad phase grows each bounding circle, in metres: more than the rectangles' margin. */
     private static final double REACH_MARGIN = 2 * GJK_MARGIN;
 
-    /**
-     * How many times a robot's top speed a body may reach: a robot pushing a light object gives it
-     * its own speed (the contacts have no restitution); twice that for a margin.
-     */
-    static final double PUSHED_SPEED_FACTOR = 2;
-
     private final World<Body> world = new World<>();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
-    private final double stepSeconds;
-    /** The fastest robot's top speed, in metres per second. */
-    private double topSpeed;
 
     Physics(int basicTimeStepMs) {
-        stepSeconds = basicTimeStepMs / 1000.0;
         world.setGravity(World.ZERO_GRAVITY);
-        world.getSettings().setStepFrequency(stepSeconds);
+        world.getSettings().setStepFrequency(basicTimeStepMs / 1000.0);
         world.getSettings().setAtRestDetectionEnabled(false);
         world.setTimeOfImpactDetector(new BoundedAdvancement());
         BroadPhases.install(world);
-        chooseContinuousDetection();
-    }
-
-    /**
-     * Continuous collision detection (dyn4j's time-of-impact step, the largest part of a sweep's
-     * physics) only in a world where a body can be fast: one that may cross, in one physics step,
-     * half of the thinnest half-width or radius of the world's objects (walls, boxes, cylinders,
-     * robots), through which the discrete step alone could let it pass. A body goes at most
-     * {@link #PUSHED_SPEED_FACTOR} times the fastest robot's top speed; a Khepera (5 cm/s) moves
-     * 0.4 mm in an 8 ms step, against a 2 cm wall's 5 mm. Slow worlds are stepped without it (the
-     * trajectories differ from the continuous ones only where a body presses against another:
-     * dyn4j then no longer moves it back to the time of impact); a fast world keeps it for all.
-     */
-    private void chooseContinuousDetection() {
-        double thinnest = Double.POSITIVE_INFINITY;
-        for (SimObject o : objects.values()) {
-            thinnest = Math.min(thinnest, Math.min(o.sizeX, o.sizeZ) / 2);
-        }
-        double stepTravel = PUSHED_SPEED_FACTOR * topSpeed * stepSeconds;
-        world.getSettings().setContinuousDetectionMode(stepTravel > thinnest / 2 ? ContinuousDetectionMode.ALL
-                : ContinuousDetectionMode.NONE);
-    }
-
-    /** {@return whether the world is stepped with continuous collision detection} */
-    boolean continuousDetection() {
-        return world.getSettings().getContinuousDetectionMode() != ContinuousDetectionMode.NONE;
     }
 
     void step() {
@@ -148,9 +111,7 @@ final class Physics {
      * A robot body: a disc whose rotation only the wheels change (infinite inertia), heavy enough
      * that pushing boxes and cylinders does not slow it, frictionless against walls.
      */
-    SimObject addRobot(String name, double radius, double height, Rgb color, double reflectance, double topSpeed,
-            double x, double z, double heading) {
-        this.topSpeed = Math.max(this.topSpeed, topSpeed);
+    SimObject addRobot(String name, double radius, double height, Rgb color, double reflectance, double x, double z, double heading) {
         Body body = new Body();
         BodyFixture f = body.addFixture(Geometry.createCircle(radius));
         f.setFriction(0);
@@ -168,7 +129,6 @@ final class Physics {
         o.place(x, z, heading);
         objects.put(o.id, o);
         world.addBody(o.body);
-        chooseContinuousDetection();
         return o;
     }
 
@@ -176,7 +136,6 @@ final class Physics {
         SimObject o = objects.remove(id);
         if (o != null) {
             world.removeBody(o.body);
-            chooseContinuousDetection();
         }
         return o;
     }

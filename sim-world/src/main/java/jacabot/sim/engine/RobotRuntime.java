@@ -36,8 +36,7 @@ final class RobotRuntime implements RobotHost, GraspHost {
     RobotRuntime(Engine engine, Physics physics, RobotSpec spec, RobotModel model) {
         this.engine = engine;
         this.physics = physics;
-        this.body = physics.addRobot(spec.name(), model.radius(), model.height(), model.color(), model.shellReflectance(),
-                model.maxSpeed() * model.speedUnit(), spec.x(), spec.z(), spec.heading());
+        this.body = physics.addRobot(spec.name(), model.radius(), model.height(), model.color(), model.shellReflectance(), spec.x(), spec.z(), spec.heading());
         this.rayCaster = physics.rayCaster(body);
         this.robot = new Robot(spec.name(), model, this, spec.battery());
         trajectory.add(pose());

@@ -34,7 +34,7 @@ class FanCastTest {
                         rnd.nextDouble() * 360, 0.05, i % 2 == 0, 0.2, new Rgb(0, 0, 255)), ObjectKind.BOX);
             }
         }
-        SimObject robot = physics.addRobot("k", 0.035, 0.05, new Rgb(0, 255, 0), 0.9, 0.05, 0, 0, 0);
+        SimObject robot = physics.addRobot("k", 0.035, 0.05, new Rgb(0, 255, 0), 0.9, 0, 0, 0);
         RayCaster caster = physics.rayCaster(robot);
         int hitsSeen = 0, nearHits = 0;
         for (int pose = 0; pose < 400; pose++) {

@@ -66,7 +66,7 @@ class SensorRaysTest {
                         i % 2 == 0 ? 0 : rnd.nextDouble() * 360, 0.05, i % 4 == 1, 0.2, new Rgb(0, 0, 255)), ObjectKind.BOX);
             }
         }
-        SimObject robot = physics.addRobot("k", 0.035, 0.05, new Rgb(0, 255, 0), 0.9, 0.05, 0, 0, 0);
+        SimObject robot = physics.addRobot("k", 0.035, 0.05, new Rgb(0, 255, 0), 0.9, 0, 0, 0);
         RayCaster caster = physics.rayCaster(robot);
         int hits = 0, turnedBoxHits = 0;
         for (int pose = 0; pose < 300; pose++) {
