@@ -33,6 +33,12 @@ mock_operation(_, ok).
        !assert_false(mock_called(obstacleLevels(_, _))).
 
 @[test]
++!test_set_up_in_a_narrow_arena_gives_closer_obstacle_levels
+    <- !forget_calls; -+arena(0.8, 2.4); !setUpCoverage; -+arena(3, 3);
+       !assert_true(mock_called(obstacleLevels(480, 300)));
+       !assert_true(mock_called(deltaLimit(150))).
+
+@[test]
 +!test_an_obstacle_on_the_left_turns_right_then_veers_away
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(40);
        !until(mock_called(setSpeeds(100, V)) & V < 100 & V > 0, 2000);

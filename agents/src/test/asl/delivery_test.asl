@@ -141,6 +141,18 @@ mock_operation(_, ok).
        !assert_true(mock_called(computeAngle(_, _, 0.4, -0.4, _)));
        !assert_false(avoiding).
 
+// carried into the area past the storage point (a wall following), the robot is halted there: no
+// progress means turning to the storage point and going on
+@[test]
++!test_no_progress_in_the_storage_area_with_the_cylinder_heads_for_the_storage_point
+    <- !forget_calls; -escaped; +delivering; +insideArea;
+       !!perceive(stuck);
+       !until(mock_called(setSpeeds(100, 100)), 4000);
+       -stuck; -insideArea; -delivering;
+       !assert_true(mock_called(computeAngle(_, _, 0.4, -0.4, _)));
+       !assert_true(mock_called(setSpeeds(100, 100)));
+       !assert_false(escaped).
+
 @[test]
 +!test_random_motion_waits_while_delivering
     <- -moved(_); +delivering; +~delivered;

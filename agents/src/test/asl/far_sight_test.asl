@@ -77,3 +77,19 @@ mock_operation(_, ok).
        !assert_true(ignoring);
        !until(not ignoring, 6000);
        !assert_false(ignoring).
+
+// an agent that believes homingProgress goes on past homingGiveUp while its cylinder still comes
+// nearer, and gives up once no nearer sighting came for that long
+@[test]
++!test_a_homing_still_coming_nearer_is_not_given_up
+    <- !until(not ignoring, 3000); !forget_calls; -escaped; .system_time(T); -+homing(T - 60000);  // a minute
+       +homingProgress(1000);
+       !sighting(0, 0.38); .wait(100); !sighting(0, 0.3);          // nearer than before
+       .wait(200);
+       !assert_false(escaped);
+       !assert_true(homing(_));
+       .wait(1200); !sighting(0, 0.3);                              // no nearer sighting for 1.2 s
+       !until(escaped, 2000);
+       !assert_true(escaped);
+       !assert_false(homing(_));
+       -homingProgress(1000).

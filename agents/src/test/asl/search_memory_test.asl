@@ -14,8 +14,11 @@ storageClearance(0.15).
 
 mock_operation(_, ok).
 
+maxSpeed(100).
+
 // what the skill needs of sweep
 +!planSweep <- +sweepPlanned; -+sweep([[0.5, 0.5]]).
++!lookAround <- +lookedAround.
 
 @[test]
 +!test_a_sighting_is_remembered_where_it_puts_the_cylinder_once
@@ -92,3 +95,20 @@ mock_operation(_, ok).
        !assert_false(seenCylinder(0.2, 0.4));
        !assert_true(sweep([[0.5, 0.5]]));               // the lanes wait
        -searching.
+
+// a cylinder knocked out of the gripper lies beside the robot: the look around after the fall
+// starts a little back from it, with sightings on; after a delivery there is no backing off
+@[test]
++!test_after_a_cylinder_lost_on_the_way_the_look_around_starts_backed_off_with_sightings_on
+    <- !forget_calls; -lookedAround; +ignoring;
+       +delivering; -delivering;                        // the delivery ended outside the storage area
+       !until(lostBeside, 500);
+       +lookFirst; !move(0.5);
+       !assert_true(mock_called(setSpeeds(-50, -50)));
+       !assert_true(lookedAround);
+       !assert_false(ignoring);
+       !assert_false(lostBeside);
+       !forget_calls; -lookedAround; +insideArea; +delivering; -delivering;   // delivered
+       .wait(100);
+       !assert_false(lostBeside);
+       -insideArea.

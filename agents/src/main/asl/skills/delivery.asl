@@ -96,6 +96,13 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 
 /* No progress though the wheels turn (the middleware's "stuck"): escape, then carry on */
 
+// Recovery, not in the thesis: in the area with the cylinder, short of the storage point, and no
+// progress: nothing steers there (halted), and a wall following that carried the robot in past the
+// point left it turning on the spot until the run's end; it turns to its target point (the storage
+// point, or the charger on a trip begun there) and goes on
+@stuckInsideArea
++stuck : insideArea & delivering & not picking
+    <- println("No progress in the storage area: heading for the target point again"); !computeGap; !balance.
 @stuckIgnored +stuck : picking | insideArea.
 { include("heading.asl") }
 // near the storage area without a cylinder: away from it, not backwards into it

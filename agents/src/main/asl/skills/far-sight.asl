@@ -18,7 +18,9 @@ lostSightIgnore(5000).  // ms a cylinder lost from sight is ignored: the sweep's
 goRoundTime(2500).      // ms to go on past an obstacle met on the way (steering straight back
                         // drove into the same box until homingGiveUp)
 setUpGoal(setUpFarSight).
-// Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound.
+// Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound; nearestSighted(Since,
+// D, At) (with homingProgress(Ms), the agent's, optional: a homing still coming nearer goes on past
+// homingGiveUp while a sighting nearer than any before came in the last Ms).
 // Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding.
 // Needs: !escape (recovery). Include it after picking, before recovery.
 
@@ -30,9 +32,19 @@ setUpGoal(setUpFarSight).
     <- !sighted(Off, Dist).
 // what a sighting leads to: homing on it (a team's skill first claims the cylinder: team-claims)
 @sightedHome +!sighted(Off, Dist) <- !homeOn(Off, Dist).
+// the nearest this homing has seen its cylinder, and when (homingProgress)
+@homeOnNearer
++!homeOn(Off, Dist) : homingProgress(_) & homing(T0) & not (nearestSighted(T0, N, _) & Dist >= N)
+    <- .system_time(T); .abolish(nearestSighted(_, _, _)); +nearestSighted(T0, Dist, T);
+       -+lastSighted(T); -+sightDistance(Dist); !home(Off).
 @homeOn +!homeOn(Off, Dist) <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); !home(Off).
 
 @homeStart +!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
+// Recovery, not in the thesis: homingGiveUp ran out 9-15 cm from a cylinder approached at
+// approachSpeed all the way; with homingProgress the homing goes on while it still comes nearer
+@homeNearing
++!home(Off) : homingProgress(P) & homing(T0) & nearestSighted(T0, _, At) & .system_time(T) & T - At < P
+    <- !steerTo(Off).
 @homeGiveUp
 +!home(_) : homing(T0) & homingGiveUp(G) & .system_time(T) & T - T0 > G & ignoreFor(I)
     <- println("The cylinder in sight cannot be reached: looking elsewhere");

@@ -9,9 +9,11 @@ sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
-// (delivery: the cylinders stored there are not to be looked for); searching, sweep(L) (sweep).
-// Beliefs: seenCylinder(X, Z).
-// Needs: sweep (!planSweep, waypoint, closest). Include it after far sight (its sighting plan
+// (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
+// a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
+// ended for the look around after a fall).
+// Beliefs: seenCylinder(X, Z), lostBeside.
+// Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
 // where a sighting puts the cylinder: Dist ahead of the robot, Off degrees to the right, and on the
@@ -40,6 +42,16 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 
 // the cylinder picked is no longer to be looked for
 @forgetPicked +picked(true) : location(X, _, Z) & takenRadius(R) <- !forgetNear(X, Z, R).
+
+// a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
+// lies beside the robot. The look around after the fall (delivery's lookFirst) starts 5 cm back from
+// it, sightings on (met at once as an obstacle, the cylinder turned the robot away, and far sight
+// still ignored sightings for a homing that had ended with the pick: it was found again minutes
+// later, if ever)
+@lostBeside -delivering : not insideArea <- +lostBeside.
+@backOffFirst
++!move(_) : lookFirst & lostBeside & maxSpeed(M)
+    <- -lostBeside; -lookFirst; setSpeeds(-M / 2, -M / 2); .wait(2000); stop; -ignoring; !lookAround.
 
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 

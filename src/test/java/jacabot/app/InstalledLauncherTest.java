@@ -3,6 +3,7 @@ package jacabot.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.bench.InterpreterBenchmark;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -66,6 +67,19 @@ class InstalledLauncherTest {
             }
         }
         assertEquals("[hello] hello world\n", run(moved.resolve("bin/jacabot"), null, dir, "run", "hello.asl"));
+    }
+
+    /** AgentSpeak programs start with C1 only, as the interpreter bench measures them; other commands keep C2. */
+    @Test
+    void runAndTestStartWithTheBenchsJitOptionAndTheOtherCommandsWithout(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("hello.asl"), "!start.\n+!start <- .print(\"hello world\"); .stopMAS.\n");
+        String flags = "-XX:+PrintCommandLineFlags";
+        String run = run(launcher(), flags, dir, "--debug", "run", "hello.asl");
+        assertTrue(run.contains(InterpreterBenchmark.RUN_JIT) && run.contains("[hello] hello world"), run);
+        String test = run(launcher(), flags, dir, "test", "--help");
+        assertTrue(test.contains(InterpreterBenchmark.RUN_JIT), test);
+        String world = run(launcher(), flags, dir, "world", "generate", "navigation", "--seed", "1", "--out", "w.json");
+        assertTrue(world.contains("-XX:") && !world.contains("TieredStopAtLevel"), world);
     }
 
     @Test

@@ -67,6 +67,12 @@ public final class InterpreterBenchmark {
         static final Run NONE = new Run(Double.NaN, Double.NaN, 0, 0, true);
     }
 
+    /**
+     * The JIT option {@code bin/jacabot} gives {@code run} and {@code test} (the start script's,
+     * {@code agentSpeakJit} in the build): C1 only, so that a run of seconds does not pay C2's compiling.
+     */
+    public static final String RUN_JIT = "-XX:TieredStopAtLevel=1";
+
     private final String ourClasspath;
     /** The JVM options our runs add: the launcher's class-data sharing archive, when usable. */
     private final List<String> ourJavaOptions;
@@ -261,9 +267,10 @@ public final class InterpreterBenchmark {
         return timedOut ? "–" : String.format(Locale.ROOT, "%.2f", value / atHundred / (length / 100.0));
     }
 
-    /** Runs a project (a {@code .mas2j}) in its directory, as its user would. */
+    /** Runs a project (a {@code .mas2j}) in its directory, as its user would with {@code bin/jacabot run}. */
     private Run ours(Path project) throws IOException, InterruptedException {
         var args = new ArrayList<>(ourJavaOptions);
+        args.add(RUN_JIT);
         args.addAll(List.of("-cp", ourClasspath, "jacabot.app.cli.JacabotCommand", "run", "--stats", project.getFileName().toString()));
         return measure("our interpreter", project, args);
     }

@@ -1,5 +1,9 @@
 package jacabot.app.world;
 
+import static jacabot.app.world.Floor.num;
+import static jacabot.app.world.Floor.round2;
+import static jacabot.app.world.Floor.round3;
+
 import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileException;
 import jacabot.sim.io.WorldFileReader;
@@ -117,9 +121,8 @@ public final class WorldGenerator {
 
     private SplittableRandom random;
     private RobotModel model;
+    private Floor floor;
     private double halfW, halfD, gap;
-    private final List<Footprint> placed = new ArrayList<>();
-    private final List<double[]> free = new ArrayList<>(); // circles (x, z, r) kept clear of obstacles
 
     public WorldGenerator(Experiment experiment, long seed) {
         this(new Recipe(experiment, experiment.id(), experiment.id(), "experiment " + experiment.number(), experiment.ordinal() + 1L, 1,
@@ -169,6 +172,7 @@ public final class WorldGenerator {
     public Generated generate() {
         // one draw mixes the seed: SplittableRandom(seed * gamma) made seed k's second draw seed k+1's first
         random = new SplittableRandom(new SplittableRandom(seed ^ recipe.salt() * 0xD1B54A32D192ED03L).nextLong());
+        floor = new Floor(random);
         if (profile == Profile.CLASSIC) {
             return build();
         }
@@ -185,18 +189,17 @@ public final class WorldGenerator {
     /** One draw of the world; in the wide profile null when something could not be placed reachably. */
     private Generated build() {
         boolean wide = profile == Profile.WIDE;
-        placed.clear();
-        free.clear();
         model = experiment == Experiment.OBSTACLE_AVOIDANCE ? RobotModel.MYBOT : RobotModel.KHEPERA;
         // passages at least twice the Khepera's width: a gap the robot's own sensors read as a wall on
         // both sides is a dead end, not a passage
         gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
         double minSide = wide && experiment != null ? WIDE_MIN_SIDE : recipe.minSide();
         double largest = maxSide != null ? maxSide : profile.defaultMaxSide();
-        double width = round2(uniform(minSide, largest));
-        double depth = round2(uniform(minSide, largest));
+        double width = round2(floor.uniform(minSide, largest));
+        double depth = round2(floor.uniform(minSide, largest));
         halfW = width / 2;
         halfD = depth / 2;
+        floor.clear(halfW, halfD, gap);
         String name = recipe.id() + (wide ? "-wide-" : "-gen-") + seed;
         Json j = new Json();
         j.open().field("name", name)
@@ -216,25 +219,25 @@ public final class WorldGenerator {
         double areaRadius = 0.06;
         double[] storage = null, charger = null;
         if (needsStorage) {
-            storage = wide ? anywhere(areaRadius, null) : landmark(areaRadius, null);
+            storage = wide ? floor.anywhere(areaRadius, null) : floor.landmark(areaRadius, null);
             if (storage == null) {
                 return null;
             }
-            free.add(new double[] {storage[0], storage[1], areaRadius + gap});
+            floor.keepFree(storage[0], storage[1], areaRadius + gap);
         }
         if (needsCharger) {
-            charger = wide ? anywhere(areaRadius, storage) : landmark(areaRadius, storage);
+            charger = wide ? floor.anywhere(areaRadius, storage) : floor.landmark(areaRadius, storage);
             if (charger == null) {
                 return null;
             }
-            free.add(new double[] {charger[0], charger[1], areaRadius + gap});
+            floor.keepFree(charger[0], charger[1], areaRadius + gap);
         }
         // the robots first, with room around each
         List<String> robots = new ArrayList<>();
         double[] first = null;
         int slots = experiment != null ? 1 : Math.max(recipe.robots(), TEAM_SLOTS);
         for (int i = 0; i < slots; i++) {
-            double[] robot = spot(model.radius(), model.radius() + 0.02, 0.05);
+            double[] robot = floor.spot(model.radius(), model.radius() + 0.02, 0.05);
             if (robot == null && wide) {
                 return null;
             }
@@ -243,8 +246,8 @@ public final class WorldGenerator {
             }
             double heading = Math.round(random.nextDouble(0, 360));
             first = first == null ? robot : first;
-            placed.add(Footprint.circle(robot[0], robot[1], model.radius()));
-            free.add(new double[] {robot[0], robot[1], model.radius() + gap});
+            floor.place(Footprint.circle(robot[0], robot[1], model.radius()));
+            floor.keepFree(robot[0], robot[1], model.radius() + gap);
             String battery = experiment != null && needsCharger ? ", \"battery\": 560"
                     : experiment == null ? ", \"battery\": " + num(10 * Math.round(random.nextDouble(45, 70))) : "";
             if (i < recipe.robots()) {
@@ -270,9 +273,9 @@ public final class WorldGenerator {
         };
         for (int i = 0; i < nCylinders; i++) {
             double r = 0.0125;
-            double[] p = spot(r, gap, 0.0);
+            double[] p = floor.spot(r, gap, 0.0);
             for (int again = 0; wide && p != null && !reach.canReach(p[0], p[1], reachOf()) && again < 50; again++) {
-                p = spot(r, gap, 0.0);
+                p = floor.spot(r, gap, 0.0);
             }
             if (wide && (p == null || !reach.canReach(p[0], p[1], reachOf()))) {
                 return null;
@@ -280,8 +283,8 @@ public final class WorldGenerator {
             if (p == null) {
                 break;
             }
-            placed.add(Footprint.circle(p[0], p[1], r));
-            free.add(new double[] {p[0], p[1], r + gap});
+            floor.place(Footprint.circle(p[0], p[1], r));
+            floor.keepFree(p[0], p[1], r + gap);
             String id = "red" + (i + 1);
             cylinderIds.add(id);
             cylinders.add("{ \"id\": \"" + id + "\", \"x\": " + num(p[0]) + ", \"z\": " + num(p[1]) + ", \"color\": \"red\" }");
@@ -289,23 +292,23 @@ public final class WorldGenerator {
 
         // obstacles: density = the share of the floor they cover, sparse (1 %) to dense (6 %, three
         // times the default worlds' 2 %; 12 % made mazes of 80 boxes that no controller crossed)
-        double density = uniform(MIN_DENSITY, MAX_DENSITY);
+        double density = floor.uniform(MIN_DENSITY, MAX_DENSITY);
         double target = density * width * depth;
         double covered = 0;
         List<String> boxes = new ArrayList<>();
         List<double[]> boxSpots = new ArrayList<>();
         for (int attempt = 0; attempt < 400 && covered < target; attempt++) {
-            double sx = round3(uniform(0.04, 0.10));
-            double sz = random.nextInt(3) == 0 ? round3(uniform(0.04, 0.12)) : sx;
+            double sx = round3(floor.uniform(0.04, 0.10));
+            double sz = random.nextInt(3) == 0 ? round3(floor.uniform(0.04, 0.12)) : sx;
             double h = random.nextInt(2) == 0 ? 0 : Math.round(random.nextDouble(0, 90));
-            double x = round3(uniform(-halfW + gap + 0.06, halfW - gap - 0.06));
-            double z = round3(uniform(-halfD + gap + 0.06, halfD - gap - 0.06));
+            double x = round3(floor.uniform(-halfW + gap + 0.06, halfW - gap - 0.06));
+            double z = round3(floor.uniform(-halfD + gap + 0.06, halfD - gap - 0.06));
             Footprint f = Footprint.rectangle(x, z, sx, sz, h);
             Footprint grown = Footprint.rectangle(x, z, sx + 2 * gap, sz + 2 * gap, h);
-            if (!grown.inside(halfW, halfD) || !clear(grown, f)) {
+            if (!grown.inside(halfW, halfD) || !floor.isClear(grown, f)) {
                 continue;
             }
-            placed.add(f);
+            floor.place(f);
             boxSpots.add(new double[] {x, z, sx, sz, h});
             boolean movable = random.nextInt(5) == 0;
             String id = "box" + (boxes.size() + 1);
@@ -315,7 +318,7 @@ public final class WorldGenerator {
             covered += sx * sz;
         }
 
-        List<String> events = new ArrayList<>(experiment == null ? List.of() : faults(boxSpots, cylinderIds));
+        List<String> events = new ArrayList<>(experiment == null ? List.of() : ScriptedFaults.draw(experiment, model, floor, random, boxSpots, cylinderIds));
         if (wide) {
             slidingBoxes(boxes, events);
             j.array("walls", walls);
@@ -389,11 +392,11 @@ public final class WorldGenerator {
         }
         boolean acrossX = halfW >= halfD; // the wall stands at x = at and spans z
         double along = acrossX ? halfW : halfD, span = acrossX ? halfD : halfW;
-        double thickness = kind < 0.65 ? 0.02 : round3(uniform(0.2, Math.min(0.6, along * 0.5)));
-        double at = round3(uniform(-along * 0.4, along * 0.4));
+        double thickness = kind < 0.65 ? 0.02 : round3(floor.uniform(0.2, Math.min(0.6, along * 0.5)));
+        double at = round3(floor.uniform(-along * 0.4, along * 0.4));
         // even millimetres, so that a segment's centre and length are exact in the file's four decimals
-        double door = 2 * round3((kind < 0.93 ? uniform(MIN_DOOR, MAX_DOOR) : uniform(0.03, 2 * model.radius() - 0.01)) / 2);
-        double centre = round3(uniform(-span + door / 2 + 0.05, span - door / 2 - 0.05));
+        double door = 2 * round3((kind < 0.93 ? floor.uniform(MIN_DOOR, MAX_DOOR) : floor.uniform(0.03, 2 * model.radius() - 0.01)) / 2);
+        double centre = round3(floor.uniform(-span + door / 2 + 0.05, span - door / 2 - 0.05));
         double[][] parts = {{-span, centre - door / 2}, {centre + door / 2, span}};
         for (double[] part : parts) {
             double length = part[1] - part[0];
@@ -403,23 +406,11 @@ public final class WorldGenerator {
             double mid = (part[0] + part[1]) / 2;
             double x = acrossX ? at : mid, z = acrossX ? mid : at;
             double sx = acrossX ? thickness : length, sz = acrossX ? length : thickness;
-            placed.add(Footprint.rectangle(x, z, sx, sz, 0));
+            floor.place(Footprint.rectangle(x, z, sx, sz, 0));
             blocks.add(new Reachability.Block(x, z, sx, sz, 0));
             walls.add("{ \"id\": \"wall" + (walls.size() + 1) + "\", \"x\": " + Json.num4(x) + ", \"z\": " + Json.num4(z)
                     + ", \"size\": [" + Json.num4(sx) + ", " + Json.num4(sz) + "], \"height\": 0.1 }");
         }
-    }
-
-    /** A free place for an area anywhere on the floor (half the time at a wall or in a corner), far from {@code other}. */
-    private double[] anywhere(double r, double[] other) {
-        for (int attempt = 0; attempt < 200; attempt++) {
-            double[] p = random.nextBoolean() ? landmark(r, other) : spot(r, gap, 0.0);
-            if (p != null && clear(Footprint.circle(p[0], p[1], r + gap), Footprint.circle(p[0], p[1], r))
-                    && (other == null || Math.hypot(p[0] - other[0], p[1] - other[1]) >= 0.5)) {
-                return p;
-            }
-        }
-        return null;
     }
 
     /**
@@ -431,19 +422,19 @@ public final class WorldGenerator {
         int n = random.nextInt(3);
         for (int m = 0; m < n; m++) {
             for (int attempt = 0; attempt < 100; attempt++) {
-                double size = round3(uniform(0.04, 0.08));
+                double size = round3(floor.uniform(0.04, 0.08));
                 boolean alongX = random.nextBoolean();
-                double travel = round3(uniform(0.2, 0.6));
-                double x = round3(uniform(-halfW + gap, halfW - gap));
-                double z = round3(uniform(-halfD + gap, halfD - gap));
+                double travel = round3(floor.uniform(0.2, 0.6));
+                double x = round3(floor.uniform(-halfW + gap, halfW - gap));
+                double z = round3(floor.uniform(-halfD + gap, halfD - gap));
                 double mx = alongX ? x + travel / 2 : x, mz = alongX ? z : z + travel / 2;
                 double lx = alongX ? travel + size : size, lz = alongX ? size : travel + size;
                 Footprint lane = Footprint.rectangle(mx, mz, lx, lz, 0);
                 Footprint grown = Footprint.rectangle(mx, mz, lx + 2 * gap, lz + 2 * gap, 0);
-                if (!grown.inside(halfW, halfD) || !clear(grown, lane)) {
+                if (!grown.inside(halfW, halfD) || !floor.isClear(grown, lane)) {
                     continue;
                 }
-                placed.add(lane);
+                floor.place(lane);
                 String id = "box" + (boxes.size() + 1);
                 boxes.add("{ \"id\": \"" + id + "\", \"x\": " + num(x) + ", \"z\": " + num(z) + ", \"size\": " + num(size) + " }");
                 for (double t = SLIDE_EVERY; t <= SLIDE_UNTIL; t += SLIDE_EVERY) {
@@ -455,145 +446,5 @@ public final class WorldGenerator {
                 break;
             }
         }
-    }
-
-    /** Scripted faults at random times: 0 to 3 of those that make sense for the experiment. */
-    private List<String> faults(List<double[]> boxes, List<String> cylinders) {
-        List<String> kinds = new ArrayList<>();
-        if (!boxes.isEmpty()) {
-            kinds.add("move-box");
-        }
-        if (!cylinders.isEmpty()) {
-            kinds.add("move-cylinder-in-grip");
-            kinds.add("knock");
-        }
-        if (experiment.needsCharger()) {
-            kinds.add("drain");
-        }
-        List<String> events = new ArrayList<>();
-        int n = kinds.isEmpty() ? 0 : random.nextInt(4);
-        for (int i = 0; i < n; i++) {
-            String kind = kinds.get(random.nextInt(kinds.size()));
-            double at = Math.round(random.nextDouble(20, 480));
-            String robot = experiment.robot();
-            switch (kind) {
-                case "move-box" -> {
-                    int b = random.nextInt(boxes.size());
-                    double[] box = boxes.get(b);
-                    double[] to = spotForBox(box);
-                    if (to != null) {
-                        events.add("{ \"at\": " + num(at) + ", \"do\": \"move\", \"object\": \"box" + (b + 1) + "\", \"x\": "
-                                + num(to[0]) + ", \"z\": " + num(to[1]) + " }");
-                    }
-                }
-                case "move-cylinder-in-grip" -> {
-                    // when the robot is about to take hold of it (centres within reach), the cylinder jumps away
-                    String c = cylinders.get(random.nextInt(cylinders.size()));
-                    double[] to = spot(0.0125, gap, 0.0);
-                    if (to != null) {
-                        placed.add(Footprint.circle(to[0], to[1], 0.0125));
-                        events.add("{ \"when\": { \"robot\": \"" + robot + "\", \"near\": \"" + c + "\", \"within\": "
-                                + num(model.radius() + 0.03) + " }, \"after\": " + num(round2(uniform(0.2, 2.0)))
-                                + ", \"do\": \"move\", \"object\": \"" + c + "\", \"x\": " + num(to[0]) + ", \"z\": " + num(to[1]) + " }");
-                    }
-                }
-                case "knock" -> {
-                    // some seconds after the robot reached a cylinder: knocked out if it carries it then
-                    String c = cylinders.get(random.nextInt(cylinders.size()));
-                    events.add("{ \"when\": { \"robot\": \"" + robot + "\", \"near\": \"" + c + "\", \"within\": "
-                            + num(model.radius() + 0.03) + " }, \"after\": " + num(Math.round(random.nextDouble(4, 20)))
-                            + ", \"do\": \"knock\", \"robot\": \"" + robot + "\" }");
-                }
-                default -> events.add("{ \"at\": " + num(at) + ", \"do\": \"drain\", \"robot\": \"" + robot + "\", \"amount\": "
-                        + num(Math.round(random.nextDouble(100, 300))) + " }");
-            }
-        }
-        return events;
-    }
-
-    /** A corner or a place along a wall for an area of radius r, far from {@code other}. */
-    private double[] landmark(double r, double[] other) {
-        double inset = r + 0.02;
-        for (int attempt = 0; attempt < 200; attempt++) {
-            double x, z;
-            int wall = random.nextInt(4);
-            boolean corner = random.nextBoolean();
-            double along = corner ? (random.nextBoolean() ? 1 : -1) : uniform(-0.8, 0.8);
-            switch (wall) {
-                case 0 -> { x = halfW - inset; z = along * (halfD - inset); }
-                case 1 -> { x = -(halfW - inset); z = along * (halfD - inset); }
-                case 2 -> { z = halfD - inset; x = along * (halfW - inset); }
-                default -> { z = -(halfD - inset); x = along * (halfW - inset); }
-            }
-            x = round3(x);
-            z = round3(z);
-            if (other == null || Math.hypot(x - other[0], z - other[1]) >= 0.5) {
-                return new double[] {x, z};
-            }
-        }
-        throw new IllegalStateException("no room for a landmark (a bug: arenas are at least 1 m a side)");
-    }
-
-    /** A random free centre for a circle of radius r keeping {@code clearance} from the walls and every object. */
-    private double[] spot(double r, double clearance, double extra) {
-        for (int attempt = 0; attempt < 500; attempt++) {
-            double m = r + clearance + extra;
-            double x = round3(uniform(-halfW + m, halfW - m));
-            double z = round3(uniform(-halfD + m, halfD - m));
-            Footprint grown = Footprint.circle(x, z, r + clearance);
-            if (clear(grown, Footprint.circle(x, z, r))) {
-                return new double[] {x, z};
-            }
-        }
-        return null;
-    }
-
-    /** A free place for a box of {@code box}'s size (for a "move" fault). */
-    private double[] spotForBox(double[] box) {
-        for (int attempt = 0; attempt < 200; attempt++) {
-            double x = round3(uniform(-halfW + gap + 0.06, halfW - gap - 0.06));
-            double z = round3(uniform(-halfD + gap + 0.06, halfD - gap - 0.06));
-            Footprint grown = Footprint.rectangle(x, z, box[2] + 2 * gap, box[3] + 2 * gap, box[4]);
-            Footprint body = Footprint.rectangle(x, z, box[2], box[3], box[4]);
-            if (grown.inside(halfW, halfD) && clear(grown, body)) {
-                placed.add(body);
-                return new double[] {x, z};
-            }
-        }
-        return null;
-    }
-
-    /** Whether {@code grown} (the new object with its clearance) overlaps no placed object and {@code body} no kept-free circle. */
-    private boolean clear(Footprint grown, Footprint body) {
-        for (Footprint p : placed) {
-            if (p.overlaps(grown)) {
-                return false;
-            }
-        }
-        for (double[] c : free) {
-            if (body.overlaps(Footprint.circle(c[0], c[1], c[2]))) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private double uniform(double lo, double hi) {
-        return lo >= hi ? lo : random.nextDouble(lo, hi);
-    }
-
-    private static double round2(double v) {
-        return Math.round(v * 100) / 100.0;
-    }
-
-    private static double round3(double v) {
-        return Math.round(v * 1000) / 1000.0;
-    }
-
-    private static String num(double v) {
-        if (v == Math.rint(v) && Math.abs(v) < 1e9) {
-            return Long.toString((long) v);
-        }
-        return String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
     }
 }
