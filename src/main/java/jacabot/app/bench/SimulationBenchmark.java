@@ -72,9 +72,11 @@ public final class SimulationBenchmark {
         List<Measured> runs = new ArrayList<>();
         for (int i = 0; i < measuredRuns; i++) {
             long cpu0 = os.getProcessCpuTime();
+            long jit0 = CompilerThreads.cpuNanos();
             long t0 = System.nanoTime();
             Measured m = runAgent(world, source, seconds);
-            runs.add(m.timed(System.nanoTime() - t0, os.getProcessCpuTime() - cpu0));
+            long cpu = os.getProcessCpuTime() - cpu0;
+            runs.add(m.timed(System.nanoTime() - t0, cpu, jit0 < 0 ? -1 : CompilerThreads.cpuNanos() - jit0));
         }
         Measured m = median(runs, Measured::wall); // runs vary with the JIT's progress and the machine's load
         long wall = m.wall();
@@ -114,28 +116,44 @@ public final class SimulationBenchmark {
                 m.cpu() / 1e6 / seconds, baseline[1] / 1e6 / seconds);
         out.printf(Locale.ROOT, "The agent's run at %.2f of the baseline's speed (median runs of this invocation; by CPU time %.2f).%n",
                 (double) baseline[0] / wall, (double) baseline[1] / m.cpu());
+        if (m.jit() >= 0 && baseline[2] >= 0) {
+            // compiling and the step's own cost apart: a run still young for the JIT pays for both
+            long agentOwn = m.cpu() - m.jit();
+            long baselineOwn = baseline[1] - baseline[2];
+            out.printf(Locale.ROOT, "Of that CPU the JIT compilers took %.1f ms per simulated second in the agent's run (%.0f%%), "
+                    + "%.1f ms in the baseline's (%.0f%%); without them the agent's %.1f ms, the baseline's %.1f ms: "
+                    + "by CPU without the JIT %.2f of the baseline's speed.%n",
+                    m.jit() / 1e6 / seconds, 100.0 * m.jit() / Math.max(1, m.cpu()), baseline[2] / 1e6 / seconds,
+                    100.0 * baseline[2] / Math.max(1, baseline[1]), agentOwn / 1e6 / seconds, baselineOwn / 1e6 / seconds,
+                    (double) baselineOwn / Math.max(1, agentOwn));
+        }
     }
 
-    /** The procedural baseline, warmed up and measured the same way; {@return its median run's wall and CPU time} */
+    /**
+     * The procedural baseline, warmed up and measured the same way. {@return its median run's wall time,
+     * CPU time and the JIT compilers' CPU time in it (-1 where not known)}
+     */
     private long[] baseline(Experiment e) throws Exception {
         for (int i = 0; i < warmups; i++) {
             BaselineRunner.execute(world, e, seed, seconds);
         }
-        List<long[]> runs = new ArrayList<>(); // wall, physics, devices, CPU
+        List<long[]> runs = new ArrayList<>(); // wall, physics, devices, CPU, the JIT's CPU
         for (int i = 0; i < measuredRuns; i++) {
             long cpu0 = os.getProcessCpuTime();
+            long jit0 = CompilerThreads.cpuNanos();
             long b0 = System.nanoTime();
             var baseline = BaselineRunner.execute(world, e, seed, seconds);
             long wallNanos = System.nanoTime() - b0;
             long[] bsim = baseline.world().stepCost();
-            runs.add(new long[] {wallNanos, bsim[0], bsim[1], os.getProcessCpuTime() - cpu0});
+            long jit = jit0 < 0 ? -1 : CompilerThreads.cpuNanos() - jit0;
+            runs.add(new long[] {wallNanos, bsim[0], bsim[1], os.getProcessCpuTime() - cpu0, jit});
         }
         String each = runs.stream().map(r -> factor(r[0])).collect(Collectors.joining(" "));
         long[] b = median(runs, r -> r[0]);
         out.printf(Locale.ROOT, "%nThe procedural baseline on the same world, %d measured runs (%s): the median %.2f s, %.0fx real time "
                 + "(physics %.0f%%, devices %.0f%%, controller %.0f%%)%n", measuredRuns, each, b[0] / 1e9, seconds / (b[0] / 1e9),
                 100.0 * b[1] / b[0], 100.0 * b[2] / b[0], 100.0 * (b[0] - b[1] - b[2]) / b[0]);
-        return new long[] {b[0], b[3]};
+        return new long[] {b[0], b[3], b[4]};
     }
 
     /** {@return the run of median wall time} */
@@ -149,9 +167,10 @@ public final class SimulationBenchmark {
         return String.format(Locale.ROOT, "%.0fx", seconds / (wallNanos / 1e9));
     }
 
-    private record Measured(LockstepRun run, LockstepCoordinator.Result result, long wall, long cpu) {
-        Measured timed(long wallNanos, long cpuNanos) {
-            return new Measured(run, result, wallNanos, cpuNanos);
+    /** @param jit the JIT compilers' CPU time in the run, -1 where not known */
+    private record Measured(LockstepRun run, LockstepCoordinator.Result result, long wall, long cpu, long jit) {
+        Measured timed(long wallNanos, long cpuNanos, long jitNanos) {
+            return new Measured(run, result, wallNanos, cpuNanos, jitNanos);
         }
     }
 
@@ -165,6 +184,6 @@ public final class SimulationBenchmark {
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
         var result = run.stepLogs(false).takeTurns(turns).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
         run.close(); // its figures stay readable
-        return new Measured(run, result, 0, 0);
+        return new Measured(run, result, 0, 0, -1);
     }
 }

@@ -15,6 +15,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Objects;
 
 /**
  * The belief base: beliefs and rules grouped by predicate (functor, arity, negation), each group
@@ -502,6 +503,45 @@ public final class BeliefBase {
             }
         }
         return false;
+    }
+
+    /**
+     * {@link #removeEntry removeEntry(stored)} then {@link #add add(l, false)} in one step, where the
+     * stored fact is the only entry of its predicate and {@code l} is of the same predicate (an
+     * observable property's new value): the group stays, and moves to the end of the groups' order
+     * as removing and adding would (the newest group stays where it is), with the same change
+     * count. {@return true when done; false when it is not that case, and nothing changed}
+     */
+    public boolean replace(Literal stored, Literal l) {
+        Group group = group(stored);
+        Entry e = group == null || group.entries.size() != 1 ? null : group.entries.peekFirst();
+        if (e == null || e.rule != null || !samePredicate(stored, l) || (e.literal != stored && !e.literal.equals(stored))) {
+            return false;
+        }
+        group.remove(e);
+        changed(group);
+        if (group != newest) {
+            // removing the last entry takes the group out of the map (and the empty newest group
+            // parked there goes when a group is added): adding puts it back as the newest, at the end
+            groups.remove(group.key);
+            if (parked != null) {
+                groups.remove(parked.key);
+                spare = parked;
+                parked = null;
+            }
+            groups.put(group.key, group);
+            newest = group;
+        }
+        Entry fresh = new Entry(l);
+        group.facts.add(fresh, FactIndex.hash(l.args()));
+        group.add(fresh, false);
+        changed(group);
+        return true;
+    }
+
+    private static boolean samePredicate(Literal a, Literal b) {
+        return a.arity() == b.arity() && a.negated() == b.negated() && a.functor().equals(b.functor())
+                && Objects.equals(a.ns(), b.ns());
     }
 
     private void removeFromGroup(Group group, Entry e, Literal stored) {

@@ -10,6 +10,7 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.TermOrder;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -101,11 +102,11 @@ class NamespaceTest {
 
     @Test
     void aModuleIncludedAtRunTimeGetsItsNamespace(@TempDir Path dir) throws Exception {
-        java.nio.file.Files.writeString(dir.resolve("m.asl"), """
+        Files.writeString(dir.resolve("m.asl"), """
                 n(1).
                 +!go : n(X) <- .print(in(this_ns, X)); +::done.
                 """);
-        java.nio.file.Files.writeString(dir.resolve("main.asl"), """
+        Files.writeString(dir.resolve("main.asl"), """
                 !start.
                 +!start <- .include("m.asl", x); !x::go; .include("m.asl", V); !V::go; .print(V).
                 +x::done <- .print(x_done).

@@ -132,13 +132,45 @@ public class CAgentArch extends LocalArch {
 
     /**
      * Removes the belief of one property (several may share a name: the values tell them apart).
-     * The belief is found by name and arguments among those the artifact's properties became: all
-     * carry the same annotations, so it need not be made anew to be compared.
      */
     private void remove(Agent ag, ArtifactId id, PropertySnapshot p) {
         List<Literal> of = beliefs.get(id);
-        if (of == null) {
+        int k = indexOf(of, p);
+        if (k >= 0) {
+            ag.removePercept(of.remove(k));
+        }
+    }
+
+    /**
+     * A property's new value: as {@link #remove} of the old then {@link #add} of the new, with the
+     * same events in the same order, and the belief replaced in one step of the belief base where
+     * it is the only belief of its predicate (the usual case: {@code BeliefBase.replace}).
+     */
+    private void update(Agent ag, ArtifactId id, PropertySnapshot old, PropertySnapshot now) {
+        List<Literal> of = beliefs.get(id);
+        int k = indexOf(of, old);
+        Literal l = belief(id, now);
+        if (k >= 0 && ag.beliefBase().replace(of.get(k), l)) {
+            // the beliefs of a name and values are equal, so the list's order among them does not matter
+            Literal gone = of.set(k, l);
+            ag.circumstance().addBeliefEvent(Trigger.Op.DEL, gone);
+            ag.circumstance().addBeliefEvent(Trigger.Op.ADD, l);
             return;
+        }
+        if (k >= 0) {
+            ag.removePercept(of.remove(k));
+        }
+        beliefs.computeIfAbsent(id, x -> new ArrayList<>()).add(l);
+        ag.addPercept(l);
+    }
+
+    /**
+     * {@return where the belief of property {@code p} is among the artifact's, or -1} It is found by
+     * name and arguments: all carry the same annotations, so it need not be made anew to be compared.
+     */
+    private static int indexOf(List<Literal> of, PropertySnapshot p) {
+        if (of == null) {
+            return -1;
         }
         List<Term> args = null;
         for (int k = 0, n = of.size(); k < n; k++) {
@@ -148,12 +180,11 @@ public class CAgentArch extends LocalArch {
                     args = TermConverter.toTerms(p.values());
                 }
                 if (l.args().equals(args)) {
-                    of.remove(k);
-                    ag.removePercept(l);
-                    return;
+                    return k;
                 }
             }
         }
+        return -1;
     }
 
     /** Receives the workspace's notifications on artifact threads and queues them. */
@@ -170,10 +201,7 @@ public class CAgentArch extends LocalArch {
 
         @Override
         public void propertyUpdated(ArtifactId artifact, PropertySnapshot oldValue, PropertySnapshot newValue) {
-            queue(ag -> {
-                remove(ag, artifact, oldValue);
-                add(ag, artifact, newValue);
-            });
+            queue(ag -> update(ag, artifact, oldValue, newValue));
         }
 
         @Override

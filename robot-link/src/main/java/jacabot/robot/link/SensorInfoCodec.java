@@ -3,6 +3,7 @@ package jacabot.robot.link;
 import java.io.DataInput;
 import java.io.DataOutput;
 import java.io.IOException;
+import java.nio.ByteBuffer;
 
 /**
  * The compact encoding of one {@link SensorInfo} on the sensor data stream (protocol version 3):
@@ -43,9 +44,11 @@ public final class SensorInfoCodec {
         if ((flags & INTS) != 0) {
             int[] v = info.ints();
             out.writeInt(v.length);
-            for (int i : v) {
-                out.writeInt(i);
-            }
+            // the bytes writeInt would write one int at a time (big-endian), in one call: the
+            // camera image is 514 ints a control step
+            byte[] bytes = new byte[4 * v.length];
+            ByteBuffer.wrap(bytes).asIntBuffer().put(v);
+            out.write(bytes);
         }
         if ((flags & DOUBLES) != 0) {
             double[] v = info.doubles();
@@ -90,9 +93,9 @@ public final class SensorInfoCodec {
             bytes += 4 + 4L * n;
             within(bytes, limits, budget);
             ints = new int[n];
-            for (int i = 0; i < n; i++) {
-                ints[i] = in.readInt();
-            }
+            byte[] raw = new byte[4 * n];
+            in.readFully(raw); // as n readInt calls, in one
+            ByteBuffer.wrap(raw).asIntBuffer().get(ints);
         }
         double[] doubles = null;
         if ((flags & DOUBLES) != 0) {

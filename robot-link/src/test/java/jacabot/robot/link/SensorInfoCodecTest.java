@@ -84,6 +84,44 @@ class SensorInfoCodecTest {
         assertArrayEquals(b.toByteArray(), a.toByteArray());
     }
 
+    /**
+     * The int arrays are written and read in one call each (SensorInfoCodec): the stream's bytes
+     * must be those of writing each int, whatever the block boundaries of the object stream.
+     */
+    @Test
+    void anIntArrayGoesOnTheStreamAsItsIntsOneByOneWouldAndReadsBack() throws IOException {
+        for (int prefix = 0; prefix < 7; prefix++) {
+            for (int n : new int[] {1, 2, 255, 256, 257, 300, 514, 1025}) {
+                int[] v = new int[n];
+                for (int i = 0; i < n; i++) {
+                    v[i] = i * 0x01020304 ^ -i;
+                }
+                var bulk = new ByteArrayOutputStream();
+                var single = new ByteArrayOutputStream();
+                try (var a = new ObjectOutputStream(bulk); var b = new ObjectOutputStream(single)) {
+                    for (int k = 0; k < prefix * 97; k++) { // move the array across the 1 024-byte blocks
+                        a.writeByte(k);
+                        b.writeByte(k);
+                    }
+                    SensorInfoCodec.write(a, new SensorInfo(SensorKind.CAMERA_IMAGE.id(), v));
+                    b.writeInt(SensorKind.CAMERA_IMAGE.id());
+                    b.writeByte(SensorInfoCodec.INTS);
+                    b.writeInt(n);
+                    for (int i : v) {
+                        b.writeInt(i);
+                    }
+                }
+                assertArrayEquals(single.toByteArray(), bulk.toByteArray(), "prefix " + prefix * 97 + ", " + n + " ints");
+                try (var in = new ObjectInputStream(new ByteArrayInputStream(bulk.toByteArray()))) {
+                    in.skipBytes(prefix * 97);
+                    var read = SensorInfoCodec.read(in, SensorInfoFilter.Limits.DEFAULT, Long.MAX_VALUE);
+                    assertArrayEquals(v, read.info().getIntValues());
+                    assertEquals(9 + 4L * n, read.bytes());
+                }
+            }
+        }
+    }
+
     @Test
     void anObjectInAReadingsPlaceIsNeverBuilt() throws IOException {
         var e = rejected(batchWith(new Foreign()), SensorInfoFilter.Limits.DEFAULT);
