@@ -15,9 +15,10 @@
 // (a turn away from it, then forward: out of its line), or a move on away from one behind, then
 // stop and let the skills steer again. (Backing off from a teammate ahead at 0.02 m/s while it came
 // on at 0.05 m/s kept them touching 2-4 s, head-on on the way between storage area and charger.)
-// The robot with the right of way, travelling or putting its cylinder down, stops a moment while
-// a teammate giving way is right ahead of it (wayStop), so that it does not push that teammate
-// along (into the storage area's corner: world 6 with four robots), for wayStopLimit at most. A robot
+// The robot with the right of way, travelling or driving into the storage area, stops a moment
+// while a teammate giving way is right ahead of it (wayStop), so that it does not push that
+// teammate along (into the storage area's corner: world 6 with four robots), for wayStopLimit at
+// most. (Tried: stopping too while it leaves the storage area; worse on worlds 1-8.) A robot
 // that waits for its turn or behind a teammate gives way too, then stands again (waiting robots
 // that never moved were driven into by the one whose turn had come); one on the charger or in
 // the storage area does not move for it; a robot picking does (a cylinder next to a teammate is
@@ -36,13 +37,14 @@ asideTurn(450).       // ms of its turn (about 50 degrees)
 asideTime(800).       // ms forward after it (4 cm)
 wayStop(0.1).         // m: the robot with the right of way stops while a teammate giving way is this near, ahead
 wayStopTime(400).     // ms of one such stop
-wayStopLimit(3000).   // ms it stops for one teammate at most (one boxed in is then gone round) ...
+wayStopLimit(3000).   // ms it stops for one teammate at most (then it drives on: its detours go round) ...
 wayStopAgain(10000).  // ... and not again for that teammate during this long
 wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (team-charger)
 // Beliefs: givingWay, stoppedFor(A, Since). Reads: robotAt(A, X, Z), storageQueue(L) (the board),
 // chargerQueue(L) (the charger), charger(X, Z) (the world), location, orientation, atCharger,
-// insideArea, travelling, delivering, avoiding (delivery, heading). Rules it offers: rightOfWay(A), standing(A), aheadOfMe(X, Z); the rule waitingTurn,
-// which the skills that make a robot wait extend (team-storage, team-follow, team-charger).
+// insideArea, travelling, delivering, avoiding (delivery, heading). Rules it offers: rightOfWay(A),
+// standing(A), aheadOfMe(X, Z); the rule waitingTurn, which the skills that make a robot wait
+// extend (team-storage, team-follow, team-charger).
 // Needs: team-places (the places published), halted (heading, and the skills that extend it).
 // Include it before delivery (heading): its plan for !cruise comes first.
 
