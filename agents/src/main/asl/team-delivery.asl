@@ -9,6 +9,9 @@
 // storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
+// recharged, a robot goes on from the charger (recharge-trip): the way back to the point marked
+// when the battery went low crossed the arena empty, and could end in the storage area's corner
+resumeAtCharger.
 
 !start.
 

@@ -105,3 +105,37 @@ mock_operation(_, ok).
        !assert_true(homing(_));                                // the new claim stands, the homing goes on
        !assert_true(myClaim(3));
        !assert_false(myClaim(14)).
+
+@[test]
++!test_a_sighting_in_the_line_of_a_teammate_that_carries_is_left_alone
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _); -+picked(false);
+       // khepera3 carries (its claim sits on its place) 1 m straight ahead; the sighting is
+       // estimated 0.3 m ahead, 0.7 m short of it: its distance is the rough part
+       +robotAt(khepera3, 0.1, 1.2); +claimed(9, khepera3, 0.1, 1.2, 0.2);
+       !!perceive(cylinderSighted(2, 0.3));
+       .wait(300);
+       !assert_false(mock_called(claim(_, _, _, _)));
+       !assert_false(homing(_));
+       -claimed(9, khepera3, 0.1, 1.2, 0.2);                   // it has put its cylinder down: a teammate
+       -cylinderSighted(_, _); !!perceive(cylinderSighted(2, 0.3));   // that carries nothing hides nothing
+       !until(homing(_), 5000);
+       !assert_true(mock_called(claim(_, _, _, 3)));
+       -robotAt(khepera3, 0.1, 1.2).
+
+@[test]
++!test_a_sighting_in_the_line_of_the_stored_pile_is_left_alone
+    <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _); -+picked(false);
+       -+orientation(297);                                     // facing the storage point, 0.68 m away: a sighting
+       !!perceive(cylinderSighted(0, 0.3));                    // straight ahead is in its line
+       !until(homing(_), 5000);
+       !assert_true(mock_called(claim(_, _, _, 3)));           // nothing stored yet: a cylinder there is one
+       -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
+       -+completed(1);                                         // the team has stored one: it may be the pile
+       !!perceive(cylinderSighted(0, 0.3));
+       .wait(300);
+       !assert_false(mock_called(claim(_, _, _, _)));
+       !assert_false(homing(_));
+       -cylinderSighted(_, _); !!perceive(cylinderSighted(25, 0.3));  // another bearing: claimed
+       !until(homing(_), 5000);
+       !assert_true(mock_called(claim(_, _, _, 3)));
+       -completed(1); -+orientation(90).

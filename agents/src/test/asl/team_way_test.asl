@@ -1,6 +1,7 @@
 // Skill tests of the right of way between teammates (skills/team-way.asl, in team-delivery.asl):
-// the robot whose name comes later gives way to a teammate too close (backs off from one ahead),
-// the earlier one goes on; a teammate standing in the storage area's queue is given way whatever
+// the robot whose name comes later gives way to a teammate too close (steps aside from one ahead:
+// a turn away from it, then forward), the earlier one goes on, and stops a moment while the other
+// is right ahead of it when it drives on its way; a teammate standing in the storage area's queue is given way whatever
 // its name, the one whose turn it is before every other; a robot waiting for the charger gives
 // way, one on it does not; a robot that waits does not cruise. The agent under test is named
 // team_way_test: khepera1 comes before it, zeta after it.
@@ -18,12 +19,17 @@ mock_operation(lookupArtifact(_, middleware), ok).
 mock_operation(_, ok).
 
 @[test]
-+!test_the_later_name_backs_off_from_a_teammate_ahead
++!test_the_later_name_steps_aside_from_a_teammate_ahead
     <- !forget_calls; +location(0.1, 0, 0.2); +orientation(90); +storageQueue([]); +chargerQueue([]);
-       !!perceive(robotAt(khepera1, 0.1, 0.3));          // 10 cm ahead, an earlier name
+       !!perceive(robotAt(khepera1, 0.12, 0.3));         // 10 cm ahead, a little to the lesser angle, an earlier name
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
+       !assert_true(mock_called(setSpeeds(L, R)) & L > 0 & R == -L);   // turns away from it (the heading grows)
+       !assert_true(mock_called(setSpeeds(V, V)) & V > 0);             // then goes on, out of its line
        !assert_false(givingWay);
+       -robotAt(khepera1, _, _); !forget_calls;
+       !!perceive(robotAt(khepera1, 0.08, 0.3));         // a little to the greater angle: the other way
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(L2, R2)) & L2 < 0 & R2 == -L2);
        -robotAt(khepera1, _, _).
 
 @[test]
@@ -55,7 +61,7 @@ mock_operation(_, ok).
        -robotAt(zeta, _, _);
        !!perceive(robotAt(khepera1, 0.1, 0.3));          // queued too, an earlier name: this robot gives way
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);
+       !assert_true(mock_called(setSpeeds(L, R)) & R == -L);
        -robotAt(khepera1, _, _); -storageQueue(_); +storageQueue([]).
 
 @[test]
@@ -72,7 +78,7 @@ mock_operation(_, ok).
        +chargerQueue([zeta, team_way_test]); +waitingCharger;
        !!perceive(robotAt(zeta, -0.2, 0.4));             // 10 cm ahead, on its way to the charger
        !until(mock_called(stop), 3000);
-       !assert_true(mock_called(setSpeeds(L, R)) & L < 0 & L == R);   // the waiting robot backs off
+       !assert_true(mock_called(setSpeeds(L, R)) & R == -L);          // the waiting robot steps aside
        !assert_true(waitingCharger);                     // and still waits
        -robotAt(zeta, _, _); -waitingCharger; -chargerQueue(_); +chargerQueue([]);
        -location(_, _, _); +location(0.1, 0, 0.2).
@@ -96,3 +102,17 @@ mock_operation(_, ok).
        -waitingStorage; !forget_calls;
        !cruise;                                          // not waiting: it goes on
        !assert_true(mock_called(setSpeeds(_, _))).
+
+@[test]
++!test_the_robot_with_the_right_of_way_stops_while_the_other_is_right_ahead
+    <- !forget_calls; -location(_, _, _); +location(0.1, 0, 0.2); -orientation(_); +orientation(90);
+       +delivering;                                      // on its way to the storage point
+       !!perceive(robotAt(zeta, 0.1, 0.28));             // 8 cm ahead, a later name: it gives way
+       !until(mock_called(stop), 3000);
+       !until(mock_called(setSpeeds(_, _)), 3000);
+       !assert_true(mock_called(setSpeeds(V, V)) & V > 0);   // a moment later it drives on
+       -robotAt(zeta, _, _); !forget_calls;
+       !!perceive(robotAt(zeta, 0.18, 0.2));             // 8 cm beside: not in its way
+       .wait(300);
+       !assert_false(mock_called(stop));
+       -robotAt(zeta, _, _); -delivering; -stoppedFor(_, _).

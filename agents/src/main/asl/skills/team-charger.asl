@@ -117,8 +117,11 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 @leaveChargerNow +!leaveChargerAway(_) <- leaveCharger.
 // a recharge given up (a fallen cylinder drops every desire and forgets "charging") leaves the
 // queue too, else its robot held the charger for the rest of the run; with a cylinder being
-// delivered, recharge's own plan for -charging resumes the delivery (the queue is left already)
-@leaveChargerOnGiveUp -charging : not delivering <- -waitingCharger; -chargerBooked; leaveCharger.
+// delivered, recharge's own plan for -charging resumes the delivery (the queue is left already).
+// A robot recharged that goes on from the charger (resumeAtCharger) ends "charging" there: it
+// leaves the queue once away (leaveChargerAway), not while it still sits on the charger.
+@leaveChargerOnGiveUp
+-charging : not delivering & not .intend(leaveChargerAway(_)) <- -waitingCharger; -chargerBooked; leaveCharger.
 
 // while waiting for its turn the robot stands still
 @obstacleWhileWaitingCharger +obstacle(true) : waitingCharger.
