@@ -175,23 +175,18 @@ final class ControllerCommand implements Callable<Integer> {
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
                 lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
         final BufferedWriter eventsFile = events;
-        Thread hook = new Thread(() -> {
+        ExitHook hook = ExitHook.install("controller-shutdown", () -> {
             controller.close();
             closeQuietly(eventsFile);
-        }, "controller-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
+        });
         try {
             controller.start();
             run(controller.runner());
         } finally {
             controller.close();
             closeQuietly(eventsFile);
-            try {
-                controller.runner().stop();
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException alreadyShuttingDown) {
-                // the hook is running
-            }
+            controller.runner().stop();
+            hook.remove();
         }
         stdout.println(String.format(Locale.ROOT, "controller: stopped at t=%.2f s after %d steps",
                 simWorld.time(), controller.steps()));

@@ -291,7 +291,7 @@ final class ExperimentCommand implements Callable<Integer> {
         });
         var done = new CountDownLatch(1);
         var terminated = new AtomicBoolean();
-        Thread hook = new Thread(() -> {
+        ExitHook hook = ExitHook.install("experiment-shutdown", () -> {
             terminated.set(true);
             run.stop(); // SIGTERM: end at this step, write what we have (summaries first, the PNG last)
             try {
@@ -299,8 +299,7 @@ final class ExperimentCommand implements Callable<Integer> {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
-        }, "experiment-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
+        });
         // the link log (off unless asked for) goes to disk as it is made: a long run keeps no copy of it in memory
         try (var linkFile = linkLog ? Files.newBufferedWriter(outDir.resolve("link-log.txt"), StandardCharsets.UTF_8)
                 : Writer.nullWriter()) {
@@ -354,11 +353,7 @@ final class ExperimentCommand implements Callable<Integer> {
             }
         } finally {
             done.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is running: it waits for done
-            }
+            hook.remove();
         }
         return 0;
     }

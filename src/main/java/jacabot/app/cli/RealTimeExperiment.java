@@ -65,24 +65,19 @@ final class RealTimeExperiment {
     int run(SimWorld simWorld, Path worldFile, AgentSource source, long runSeed, double seconds,
             ConsoleLog log, Path outDir) throws Exception {
         var done = new CountDownLatch(1);
-        Thread hook = new Thread(() -> { // Ctrl-C or SIGTERM: end now, write what there is, then let the JVM go
+        ExitHook hook = ExitHook.install("real-time-shutdown", () -> { // Ctrl-C or SIGTERM: end now, write what there is, then let the JVM go
             signalled.set(true);
             try {
                 done.await(10, TimeUnit.SECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
-        }, "real-time-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
+        });
         try {
             return runAndWrite(simWorld, worldFile, source, runSeed, seconds, log, outDir);
         } finally {
             done.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is running: it waited for done
-            }
+            hook.remove();
         }
     }
 

@@ -72,11 +72,10 @@ final class TeamControllerRun {
         stdout.println(String.format(Locale.ROOT, "controller: a team of %d robots (%s) of world '%s', lockstep; their middlewares at %s:%d..%d",
                 n, String.join(", ", world.robots().stream().map(r -> r.name()).toList()), world.name(), host, port, port + n - 1));
         stdout.flush();
-        Thread hook = new Thread(() -> {
+        ExitHook hook = ExitHook.install("controller-shutdown", () -> {
             team.close();
             closeAll(logs);
-        }, "controller-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
+        });
         try {
             controllers.forEach(RobotController::start);
             if (!awaitAgents(team)) {
@@ -89,11 +88,7 @@ final class TeamControllerRun {
         } finally {
             team.close();
             closeAll(logs);
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException alreadyShuttingDown) {
-                // the hook is running
-            }
+            hook.remove();
         }
         List<RunSummary> summaries = TeamDeliveryRun.summaries(recorders, TeamDeliveryRun.AGENTS);
         for (RunSummary s : summaries) {
