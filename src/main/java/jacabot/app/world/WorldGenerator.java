@@ -34,7 +34,7 @@ import java.util.SplittableRandom;
  * cylinders: their runs compare.
  *
  * <p>Reachability by construction: every obstacle keeps more than a robot's diameter
- * ({@link #gap}) from every other obstacle, from the walls and from the areas, so the floor the
+ * (the passage {@code gap}) from every other obstacle, from the walls and from the areas, so the floor the
  * robot's centre can reach is one connected region holding every cylinder, the storage point and
  * the charger. Nothing starts on the robot or on another object; moved obstacles go to places that
  * were free at start (the robot may stand there by then: physics pushes, as in Webots). The text is
@@ -122,7 +122,6 @@ public final class WorldGenerator {
     private SplittableRandom random;
     private RobotModel model;
     private Floor floor;
-    private double halfW, halfD, gap;
 
     public WorldGenerator(Experiment experiment, long seed) {
         this(new Recipe(experiment, experiment.id(), experiment.id(), "experiment " + experiment.number(), experiment.ordinal() + 1L, 1,
@@ -192,14 +191,13 @@ public final class WorldGenerator {
         model = experiment == Experiment.OBSTACLE_AVOIDANCE ? RobotModel.MYBOT : RobotModel.KHEPERA;
         // passages at least twice the Khepera's width: a gap the robot's own sensors read as a wall on
         // both sides is a dead end, not a passage
-        gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
+        double gap = Math.max(2 * model.radius() + 0.03, MIN_GAP);
         double minSide = wide && experiment != null ? WIDE_MIN_SIDE : recipe.minSide();
         double largest = maxSide != null ? maxSide : profile.defaultMaxSide();
         double width = round2(floor.uniform(minSide, largest));
         double depth = round2(floor.uniform(minSide, largest));
-        halfW = width / 2;
-        halfD = depth / 2;
-        floor.clear(halfW, halfD, gap);
+        floor.clear(width / 2, depth / 2, gap);
+        double halfW = floor.halfW(), halfD = floor.halfD();
         String name = recipe.id() + (wide ? "-wide-" : "-gen-") + seed;
         Json j = new Json();
         j.open().field("name", name)
@@ -387,6 +385,7 @@ public final class WorldGenerator {
      */
     private void partition(List<String> walls, List<Reachability.Block> blocks) {
         double kind = random.nextDouble();
+        double halfW = floor.halfW(), halfD = floor.halfD();
         if (kind < 0.3 || experiment == null || Math.max(halfW, halfD) < 0.5) {
             return;
         }
@@ -420,6 +419,7 @@ public final class WorldGenerator {
      */
     private void slidingBoxes(List<String> boxes, List<String> events) {
         int n = random.nextInt(3);
+        double halfW = floor.halfW(), halfD = floor.halfD(), gap = floor.gap();
         for (int m = 0; m < n; m++) {
             for (int attempt = 0; attempt < 100; attempt++) {
                 double size = round3(floor.uniform(0.04, 0.08));
