@@ -15,7 +15,6 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Objects;
 
 /**
  * The belief base: beliefs and rules grouped by predicate (functor, arity, negation), each group
@@ -515,7 +514,7 @@ public final class BeliefBase {
     public boolean replace(Literal stored, Literal l) {
         Group group = group(stored);
         Entry e = group == null || group.entries.size() != 1 ? null : group.entries.peekFirst();
-        if (e == null || e.rule != null || !samePredicate(stored, l) || (e.literal != stored && !e.literal.equals(stored))) {
+        if (e == null || e.rule != null || !probe.set(l).equals(group.key) || (e.literal != stored && !e.literal.equals(stored))) {
             return false;
         }
         group.remove(e);
@@ -537,11 +536,6 @@ public final class BeliefBase {
         group.add(fresh, false);
         changed(group);
         return true;
-    }
-
-    private static boolean samePredicate(Literal a, Literal b) {
-        return a.arity() == b.arity() && a.negated() == b.negated() && a.functor().equals(b.functor())
-                && Objects.equals(a.ns(), b.ns());
     }
 
     private void removeFromGroup(Group group, Entry e, Literal stored) {
