@@ -20,6 +20,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 
 /**
@@ -39,7 +40,7 @@ class DocsTest {
     }
 
     @Test
-    void aMovedPathAClassThatIsGoneAndABadOptionAreCaught(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
+    void aMovedPathAClassThatIsGoneAndABadOptionAreCaught(@TempDir Path dir) throws IOException {
         Files.createDirectories(dir.resolve("docs"));
         Files.createDirectories(dir.resolve("robot-link/src/main/java/jacabot/robot/link"));
         Files.writeString(dir.resolve("robot-link/src/main/java/jacabot/robot/link/SensorInfo.java"), "class SensorInfo {}");

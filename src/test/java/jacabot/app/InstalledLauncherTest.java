@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -62,7 +63,7 @@ class InstalledLauncherTest {
             Files.createDirectories(moved.resolve(sub));
             try (var files = Files.list(home.resolve(sub))) {
                 for (Path f : files.toList()) {
-                    Files.copy(f, moved.resolve(sub).resolve(f.getFileName()), java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
+                    Files.copy(f, moved.resolve(sub).resolve(f.getFileName()), StandardCopyOption.COPY_ATTRIBUTES);
                 }
             }
         }

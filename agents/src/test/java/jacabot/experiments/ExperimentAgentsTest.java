@@ -7,9 +7,12 @@ import jacabot.agent.parser.AslParser;
 import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.semantics.ActionExec;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.ObjectTerm;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -39,7 +42,7 @@ class ExperimentAgentsTest {
         for (String name : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume")) {
             String text;
             try (var in = loader.getResourceAsStream("asl/" + name + ".asl")) {
-                text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+                text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
             }
             var program = new AslParser(SourceResolver.resources(loader))
                     .parse(new SourceResolver.Source("agents/src/main/asl/" + name + ".asl", text, "asl/" + name + ".asl"));
@@ -78,8 +81,8 @@ class ExperimentAgentsTest {
                 u.bind(id, new ObjectTerm("cobj_1"));
             } else if (a.action().functor().equals("exploreTurn") && a.action().arg(1) instanceof Var side
                     && a.action().arg(2) instanceof Var ms) {
-                u.bind(side, new jacabot.agent.syntax.StringTerm("left"));
-                u.bind(ms, new jacabot.agent.syntax.NumberTerm(500));
+                u.bind(side, new StringTerm("left"));
+                u.bind(ms, new NumberTerm(500));
             }
         };
         robot.environment = a -> !a.action().functor().equals("lookupArtifact");

@@ -16,6 +16,7 @@ import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
@@ -29,7 +30,7 @@ class MiddlewareTest {
     private static final class Bench {
         final Workspace ws = Workspace.builder("main").stepped().build();
         final List<String> signals = new ArrayList<>();
-        final Map<String, Object> properties = new java.util.HashMap<>();
+        final Map<String, Object> properties = new HashMap<>();
         final AgentId agent;
         final ArtifactId id;
         final MiddlewareArtifact middleware;

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
+import jacabot.agent.parser.SourceResolver;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
@@ -39,9 +40,9 @@ class SkillLibraryTest {
         return out;
     }
 
-    private static jacabot.agent.parser.SourceResolver.Source noIncludes(String file,
-            jacabot.agent.parser.SourceResolver.Source from) {
-        return new jacabot.agent.parser.SourceResolver.Source(file, "", null);
+    private static SourceResolver.Source noIncludes(String file,
+            SourceResolver.Source from) {
+        return new SourceResolver.Source(file, "", null);
     }
 
     /** A plan without its label: what two files would share if one copied the other. */

@@ -4,6 +4,7 @@ import jacabot.experiments.link.StepData;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.link.Command;
@@ -67,7 +68,7 @@ class LockstepCoordinatorTest {
             return List.of();
         });
         // an Error on the link's reading thread, not only an exception, reaches the caller
-        var e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class, () -> run.runFor(10));
+        var e = assertThrows(IllegalStateException.class, () -> run.runFor(10));
         assertTrue(e.getMessage().contains("the agent side broke"), e.getMessage());
     }
 

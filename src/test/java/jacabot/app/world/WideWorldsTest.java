@@ -3,6 +3,7 @@ package jacabot.app.world;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.app.world.WorldGenerator.Profile;
@@ -111,7 +112,7 @@ class WideWorldsTest {
         assertTrue(small.arena().width() <= 1.2 && small.arena().depth() <= 1.2);
         assertEquals(Profile.WIDE, Profile.parse("wide"));
         assertEquals("unknown world profile 'huge' (expected classic or wide)",
-                org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> Profile.parse("huge")).getMessage());
+                assertThrows(IllegalArgumentException.class, () -> Profile.parse("huge")).getMessage());
     }
 
     @Test

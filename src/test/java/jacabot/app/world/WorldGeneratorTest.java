@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.Experiment;
@@ -140,7 +141,7 @@ class WorldGeneratorTest {
     @Test
     void aTeamHasOneToEightRobots() {
         assertEquals("a team has 1 to 8 robots, got 0",
-                org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(0, 1)).getMessage());
-        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(9, 1));
+                assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(0, 1)).getMessage());
+        assertThrows(IllegalArgumentException.class, () -> WorldGenerator.team(9, 1));
     }
 }
