@@ -17,6 +17,7 @@ import jacabot.app.replay.StepLog.Moved;
 import jacabot.app.replay.StepLog.Pending;
 import jacabot.app.replay.StepLog.Step;
 import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
 import jacabot.sim.engine.ObjectState;
 import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
@@ -26,6 +27,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
@@ -61,6 +63,9 @@ final class StepEncoder implements Closeable {
     private List<MindState.IntentionView> intentions = List.of();
     private List<String> events = List.of();
     private final Map<String, Moved> objects = new HashMap<>();
+    /** The last camera image written (the link's own array, never changed) and its text. */
+    private int[] image;
+    private String imageText;
 
     StepEncoder(Path file, Header header) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
@@ -76,15 +81,33 @@ final class StepEncoder implements Closeable {
     void write(Pending s) {
         long timeMs = s.timeMs();
         Body body = s.body();
+        boolean key = steps % CHUNK == 0;
         List<String> commands = s.commands().stream().map(Object::toString).collect(Collectors.toList());
         List<String> readings = new ArrayList<>(s.readings().size());
+        Consumer<Step> stepSink = onStep;
+        // the readings as a reader gives them back, a "same" image resolved (for the sink)
+        List<String> resolved = stepSink == null ? null : new ArrayList<>(s.readings().size());
         for (Object r : s.readings()) {
-            readings.add(r instanceof SensorInfo info ? reading(info) : (String) r);
+            String text;
+            boolean same = false;
+            if (r instanceof SensorInfo info && info.kind().orElse(null) == SensorKind.CAMERA_IMAGE) {
+                same = !key && image != null && Arrays.equals(info.getIntValues(), image);
+                if (!same) {
+                    image = info.getIntValues();
+                    imageText = reading(info);
+                }
+                text = imageText;
+            } else {
+                text = r instanceof SensorInfo info ? reading(info) : (String) r;
+            }
+            readings.add(same ? ImageText.SAME : text);
+            if (resolved != null) {
+                resolved.add(text);
+            }
         }
         MindState mind = s.mind();
         List<ObjectState> world = s.world();
         Lag lag = s.lag();
-        boolean key = steps % CHUNK == 0;
         if (key) {
             chunkFirstTime = timeMs;
             beliefs.clear(); // a key step holds the whole mind, and every movable object
@@ -108,7 +131,6 @@ final class StepEncoder implements Closeable {
             ArrayNode r = n.putArray("in");
             readings.forEach(r::add);
         }
-        Consumer<Step> stepSink = onStep;
         Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
         if (world != null) {
             ObjectNode moved = null;
@@ -143,7 +165,7 @@ final class StepEncoder implements Closeable {
         }
         line(n);
         if (stepSink != null) {
-            stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
+            stepSink.accept(new Step(timeMs, body, commands, resolved, movedNow, written, lag, key));
         }
         steps++;
         if (steps % CHUNK == 0) {
