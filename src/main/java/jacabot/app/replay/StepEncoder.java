@@ -4,9 +4,10 @@ import static jacabot.app.replay.StepLog.CHUNK;
 import static jacabot.app.replay.StepLog.JSON;
 import static jacabot.app.replay.StepLog.reading;
 
+import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.databind.ObjectWriter;
+import com.fasterxml.jackson.databind.SerializationFeature;
 import jacabot.app.inspector.MindState;
 import jacabot.app.replay.StepLog.Body;
 import jacabot.app.replay.StepLog.Chunk;
@@ -45,6 +46,8 @@ final class StepEncoder implements Closeable {
     /** The member buffer's usual capacity; one grown past {@link #CHUNK_KEPT} (deep intention stacks) is let go after it. */
     private static final int CHUNK_BUFFER = 1 << 16;
     private static final int CHUNK_KEPT = 1 << 20;
+    /** The step log's mapper, for values inside a line being written (no flush after each). */
+    private static final ObjectWriter VALUES = JSON.writer().without(SerializationFeature.FLUSH_AFTER_WRITE_VALUE);
     private final OutputStream file;
     /** A gzip member's text before compression: its capacity is that of the largest member so far, unless let go. */
     private ByteArrayOutputStream chunk = new ByteArrayOutputStream(CHUNK_BUFFER);
@@ -117,53 +120,61 @@ final class StepEncoder implements Closeable {
             objects.clear();
         }
         lastTime = timeMs;
-        ObjectNode n = JSON.createObjectNode();
-        n.put("t", timeMs);
-        if (key) {
-            n.put("key", true);
-        }
-        n.set("body", JSON.valueToTree(body));
-        if (!commands.isEmpty()) {
-            ArrayNode c = n.putArray("cmd");
-            commands.forEach(c::add);
-        }
-        if (!readings.isEmpty()) {
-            ArrayNode r = n.putArray("in");
-            readings.forEach(r::add);
-        }
         Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
-        if (world != null) {
-            ObjectNode moved = null;
-            for (ObjectState o : world) {
-                if (!o.movable()) {
-                    continue; // walls, boxes; the robot's pose is in its body
-                }
-                Moved now = moved(o);
-                if (!now.equals(objects.get(o.id()))) {
-                    objects.put(o.id(), now);
-                    if (moved == null) {
-                        moved = n.putObject("moved");
-                    }
-                    moved.set(o.id(), JSON.valueToTree(now));
-                    if (movedNow != null) {
-                        movedNow.put(o.id(), now);
-                    }
-                }
-            }
-        }
         MindDelta written = null;
-        if (mind != null) {
-            MindDelta d = delta(mind);
-            if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
-                    || d.events() != null) {
-                n.set("mind", JSON.valueToTree(d));
-                written = d;
+        // streamed field by field, as a tree of the same fields would print (no tree made per step)
+        try (JsonGenerator g = JSON.getFactory().createGenerator(chunk)) {
+            g.writeStartObject();
+            g.writeNumberField("t", timeMs);
+            if (key) {
+                g.writeBooleanField("key", true);
             }
+            g.writeFieldName("body");
+            VALUES.writeValue(g, body);
+            strings(g, "cmd", commands);
+            strings(g, "in", readings);
+            if (world != null) {
+                boolean anyMoved = false;
+                for (ObjectState o : world) {
+                    if (!o.movable()) {
+                        continue; // walls, boxes; the robot's pose is in its body
+                    }
+                    Moved now = moved(o);
+                    if (!now.equals(objects.get(o.id()))) {
+                        objects.put(o.id(), now);
+                        if (!anyMoved) {
+                            g.writeObjectFieldStart("moved");
+                            anyMoved = true;
+                        }
+                        g.writeFieldName(o.id());
+                        VALUES.writeValue(g, now);
+                        if (movedNow != null) {
+                            movedNow.put(o.id(), now);
+                        }
+                    }
+                }
+                if (anyMoved) {
+                    g.writeEndObject();
+                }
+            }
+            if (mind != null) {
+                MindDelta d = delta(mind);
+                if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
+                        || d.events() != null) {
+                    g.writeFieldName("mind");
+                    VALUES.writeValue(g, d);
+                    written = d;
+                }
+            }
+            if (lag != null) {
+                g.writeFieldName("lag");
+                VALUES.writeValue(g, lag);
+            }
+            g.writeEndObject();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
-        if (lag != null) {
-            n.set("lag", JSON.valueToTree(lag));
-        }
-        line(n);
+        chunk.write('\n');
         if (stepSink != null) {
             stepSink.accept(new Step(timeMs, body, commands, resolved, movedNow, written, lag, key));
         }
@@ -248,6 +259,18 @@ final class StepEncoder implements Closeable {
         beliefs.clear();
         beliefs.putAll(byText);
         beliefTexts = texts;
+    }
+
+    /** Writes {@code name: [texts]}, or nothing for no text. */
+    private static void strings(JsonGenerator g, String name, List<String> texts) throws IOException {
+        if (texts.isEmpty()) {
+            return;
+        }
+        g.writeArrayFieldStart(name);
+        for (String t : texts) {
+            g.writeString(t);
+        }
+        g.writeEndArray();
     }
 
     private void line(JsonNode n) {
