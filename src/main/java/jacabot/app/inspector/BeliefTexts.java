@@ -5,6 +5,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.IdentityHashMap;
 import java.util.List;
@@ -53,12 +54,23 @@ final class BeliefTexts {
         }
     }
 
+    /** Annotation texts kept at most; past this the memory starts anew. */
+    static final int ANNOTS_KEPT = 4096;
+    /** The texts of the annotations (and sources) of facts shown, by term object. */
+    private final IdentityHashMap<Term, String> annotTexts = new IdentityHashMap<>();
     /** The belief base's change count at the last capture. */
     private long changes = -1;
     private List<MindState.Belief> last = List.of();
     /** Whether some group of the last list holds an entry printed anew at every capture. */
     private boolean holdsObjects;
-    private IdentityHashMap<Object, Shown> groups = new IdentityHashMap<>();
+    /**
+     * The last capture's groups in order, and how each was shown. A capture finds a group where the
+     * last one had it, or a little further on (a changed property's group moves to the end): an
+     * array read, not a hash lookup, for each of the base's predicates.
+     */
+    private Object[] groups = new Object[0];
+    private Shown[] shown = new Shown[0];
+    private int count;
 
     /** {@return the beliefs and rules, in the belief base's order} */
     List<MindState.Belief> of(BeliefBase base) {
@@ -66,26 +78,70 @@ final class BeliefTexts {
             return last;
         }
         var beliefs = new ArrayList<MindState.Belief>(base.size());
-        var now = new IdentityHashMap<Object, Shown>();
-        boolean[] objects = {false};
+        var walk = new Walk(Math.max(count + 4, 16));
         base.forEachGroup((group, changedAt, entries) -> {
-            Shown was = groups.get(group);
+            Shown was = walk.find(group);
             Shown s = was != null && was.changedAt() == changedAt && was.stable() ? was : show(changedAt, entries, was);
-            now.put(group, s);
+            walk.add(group, s);
             for (MindState.Belief b : s.beliefs()) {
                 beliefs.add(b);
             }
-            objects[0] |= !s.stable();
+            walk.objects |= !s.stable();
         });
-        groups = now;
+        groups = walk.groups;
+        shown = walk.shown;
+        count = walk.count;
         changes = base.changes();
-        holdsObjects = objects[0];
+        holdsObjects = walk.objects;
         last = List.copyOf(beliefs);
         return last;
     }
 
+    /** One capture's walk of the groups: where it is in the last capture's, and what it has seen. */
+    private final class Walk {
+        Object[] groups;
+        Shown[] shown;
+        int count;
+        boolean objects;
+        /** The last capture's group expected next. */
+        private int next;
+
+        Walk(int capacity) {
+            groups = new Object[capacity];
+            shown = new Shown[capacity];
+        }
+
+        /** {@return how the last capture showed {@code group}, or null} */
+        Shown find(Object group) {
+            Object[] before = BeliefTexts.this.groups;
+            int n = BeliefTexts.this.count;
+            for (int k = next; k < n; k++) { // in place, or past groups that moved or went
+                if (before[k] == group) {
+                    next = k + 1;
+                    return BeliefTexts.this.shown[k];
+                }
+            }
+            for (int k = 0; k < next && k < n; k++) { // moved to the end since
+                if (before[k] == group) {
+                    return BeliefTexts.this.shown[k];
+                }
+            }
+            return null;
+        }
+
+        void add(Object group, Shown s) {
+            if (count == groups.length) {
+                groups = Arrays.copyOf(groups, count * 2);
+                shown = Arrays.copyOf(shown, count * 2);
+            }
+            groups[count] = group;
+            shown[count] = s;
+            count++;
+        }
+    }
+
     /** {@return a group's entries as beliefs, those {@code was} showed (if any) as the same objects} */
-    private static Shown show(long changedAt, Collection<BeliefBase.Entry> entries, Shown was) {
+    private Shown show(long changedAt, Collection<BeliefBase.Entry> entries, Shown was) {
         var keys = new Object[entries.size()];
         var beliefs = new MindState.Belief[entries.size()];
         boolean stable = true;
@@ -94,7 +150,7 @@ final class BeliefTexts {
             Object key = e.rule() != null ? e.rule() : e.literal();
             MindState.Belief b = was == null ? null : was.find(key);
             if (b == null) {
-                b = e.rule() != null ? rule(e.rule()) : belief(e.literal());
+                b = e.rule() != null ? rule(e.rule()) : belief(e.literal(), annotTexts);
                 if (e.rule() != null ? !StableText.of(e.rule().head()) || !StableText.of(e.rule().body())
                         : !StableText.of(e.literal())) {
                     stable = false;
@@ -114,15 +170,41 @@ final class BeliefTexts {
 
     /** {@return a fact as the inspector shows it: its literal, its sources, its other annotations} */
     static MindState.Belief belief(Literal l) {
+        return belief(l, null);
+    }
+
+    /**
+     * As {@link #belief(Literal)}, each annotation's text taken from {@code texts} (by term object)
+     * when it is there, and kept there when its term is stable: a property's new value carries
+     * its artifact's annotation terms, the same objects at every step.
+     */
+    private static MindState.Belief belief(Literal l, IdentityHashMap<Term, String> texts) {
         var sources = new ArrayList<String>();
         var annots = new ArrayList<String>();
         for (Term a : l.annots()) {
             if (a instanceof Literal s && s.functor().equals("source") && s.arity() == 1) {
-                sources.add(s.arg(0).toString());
+                sources.add(text(s.arg(0), texts));
             } else {
-                annots.add(a.toString());
+                annots.add(text(a, texts));
             }
         }
         return new MindState.Belief(l.withoutAnnots().toString(), sources, annots);
+    }
+
+    private static String text(Term t, IdentityHashMap<Term, String> texts) {
+        if (texts == null) {
+            return t.toString();
+        }
+        String s = texts.get(t);
+        if (s == null) {
+            s = t.toString();
+            if (StableText.of(t)) {
+                if (texts.size() >= ANNOTS_KEPT) {
+                    texts.clear();
+                }
+                texts.put(t, s);
+            }
+        }
+        return s;
     }
 }

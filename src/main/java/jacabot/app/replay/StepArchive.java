@@ -207,11 +207,18 @@ public final class StepArchive implements MindArchive {
                     StandardCharsets.UTF_8));
             String line;
             long step = c.firstStep();
+            var images = new ImageText.Resolver(); // a member starts with a key step: its image is whole
             while ((line = in.readLine()) != null) {
                 if (line.startsWith("{\"format\"")) {
                     continue; // a log of one member starts with its header
                 }
-                if (!each.step(step++, StepLog.parse(line))) {
+                StepLog.Step s = StepLog.parse(line);
+                try {
+                    s = s.withReadings(images.resolve(s.readings()));
+                } catch (IllegalArgumentException e) {
+                    throw new IOException(file + ": step " + step + ": " + e.getMessage());
+                }
+                if (!each.step(step++, s)) {
                     return;
                 }
             }

@@ -4,9 +4,10 @@ import static jacabot.app.replay.StepLog.CHUNK;
 import static jacabot.app.replay.StepLog.JSON;
 import static jacabot.app.replay.StepLog.reading;
 
+import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.databind.ObjectWriter;
+import com.fasterxml.jackson.databind.SerializationFeature;
 import jacabot.app.inspector.MindState;
 import jacabot.app.replay.StepLog.Body;
 import jacabot.app.replay.StepLog.Chunk;
@@ -17,6 +18,7 @@ import jacabot.app.replay.StepLog.Moved;
 import jacabot.app.replay.StepLog.Pending;
 import jacabot.app.replay.StepLog.Step;
 import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
 import jacabot.sim.engine.ObjectState;
 import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
@@ -26,6 +28,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
@@ -43,6 +46,8 @@ final class StepEncoder implements Closeable {
     /** The member buffer's usual capacity; one grown past {@link #CHUNK_KEPT} (deep intention stacks) is let go after it. */
     private static final int CHUNK_BUFFER = 1 << 16;
     private static final int CHUNK_KEPT = 1 << 20;
+    /** The step log's mapper, for values inside a line being written (no flush after each). */
+    private static final ObjectWriter VALUES = JSON.writer().without(SerializationFeature.FLUSH_AFTER_WRITE_VALUE);
     private final OutputStream file;
     /** A gzip member's text before compression: its capacity is that of the largest member so far, unless let go. */
     private ByteArrayOutputStream chunk = new ByteArrayOutputStream(CHUNK_BUFFER);
@@ -61,6 +66,9 @@ final class StepEncoder implements Closeable {
     private List<MindState.IntentionView> intentions = List.of();
     private List<String> events = List.of();
     private final Map<String, Moved> objects = new HashMap<>();
+    /** The last camera image written (the link's own array, never changed) and its text. */
+    private int[] image;
+    private String imageText;
 
     StepEncoder(Path file, Header header) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
@@ -76,15 +84,33 @@ final class StepEncoder implements Closeable {
     void write(Pending s) {
         long timeMs = s.timeMs();
         Body body = s.body();
+        boolean key = steps % CHUNK == 0;
         List<String> commands = s.commands().stream().map(Object::toString).collect(Collectors.toList());
         List<String> readings = new ArrayList<>(s.readings().size());
+        Consumer<Step> stepSink = onStep;
+        // the readings as a reader gives them back, a "same" image resolved (for the sink)
+        List<String> resolved = stepSink == null ? null : new ArrayList<>(s.readings().size());
         for (Object r : s.readings()) {
-            readings.add(r instanceof SensorInfo info ? reading(info) : (String) r);
+            String text;
+            boolean same = false;
+            if (r instanceof SensorInfo info && info.kind().orElse(null) == SensorKind.CAMERA_IMAGE) {
+                same = !key && image != null && Arrays.equals(info.getIntValues(), image);
+                if (!same) {
+                    image = info.getIntValues();
+                    imageText = reading(info);
+                }
+                text = imageText;
+            } else {
+                text = r instanceof SensorInfo info ? reading(info) : (String) r;
+            }
+            readings.add(same ? ImageText.SAME : text);
+            if (resolved != null) {
+                resolved.add(text);
+            }
         }
         MindState mind = s.mind();
         List<ObjectState> world = s.world();
         Lag lag = s.lag();
-        boolean key = steps % CHUNK == 0;
         if (key) {
             chunkFirstTime = timeMs;
             beliefs.clear(); // a key step holds the whole mind, and every movable object
@@ -94,56 +120,63 @@ final class StepEncoder implements Closeable {
             objects.clear();
         }
         lastTime = timeMs;
-        ObjectNode n = JSON.createObjectNode();
-        n.put("t", timeMs);
-        if (key) {
-            n.put("key", true);
-        }
-        n.set("body", JSON.valueToTree(body));
-        if (!commands.isEmpty()) {
-            ArrayNode c = n.putArray("cmd");
-            commands.forEach(c::add);
-        }
-        if (!readings.isEmpty()) {
-            ArrayNode r = n.putArray("in");
-            readings.forEach(r::add);
-        }
-        Consumer<Step> stepSink = onStep;
         Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
-        if (world != null) {
-            ObjectNode moved = null;
-            for (ObjectState o : world) {
-                if (!o.movable()) {
-                    continue; // walls, boxes; the robot's pose is in its body
-                }
-                Moved now = moved(o);
-                if (!now.equals(objects.get(o.id()))) {
-                    objects.put(o.id(), now);
-                    if (moved == null) {
-                        moved = n.putObject("moved");
-                    }
-                    moved.set(o.id(), JSON.valueToTree(now));
-                    if (movedNow != null) {
-                        movedNow.put(o.id(), now);
-                    }
-                }
-            }
-        }
         MindDelta written = null;
-        if (mind != null) {
-            MindDelta d = delta(mind);
-            if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
-                    || d.events() != null) {
-                n.set("mind", JSON.valueToTree(d));
-                written = d;
+        // streamed field by field, as a tree of the same fields would print (no tree made per step)
+        try (JsonGenerator g = JSON.getFactory().createGenerator(chunk)) {
+            g.writeStartObject();
+            g.writeNumberField("t", timeMs);
+            if (key) {
+                g.writeBooleanField("key", true);
             }
+            g.writeFieldName("body");
+            VALUES.writeValue(g, body);
+            strings(g, "cmd", commands);
+            strings(g, "in", readings);
+            if (world != null) {
+                boolean anyMoved = false;
+                for (ObjectState o : world) {
+                    if (!o.movable()) {
+                        continue; // walls, boxes; the robot's pose is in its body
+                    }
+                    Moved now = moved(o);
+                    if (!now.equals(objects.get(o.id()))) {
+                        objects.put(o.id(), now);
+                        if (!anyMoved) {
+                            g.writeObjectFieldStart("moved");
+                            anyMoved = true;
+                        }
+                        g.writeFieldName(o.id());
+                        VALUES.writeValue(g, now);
+                        if (movedNow != null) {
+                            movedNow.put(o.id(), now);
+                        }
+                    }
+                }
+                if (anyMoved) {
+                    g.writeEndObject();
+                }
+            }
+            if (mind != null) {
+                MindDelta d = delta(mind);
+                if (d.added() != null || d.removed() != null || d.selections() != null || d.intentions() != null
+                        || d.events() != null) {
+                    g.writeFieldName("mind");
+                    VALUES.writeValue(g, d);
+                    written = d;
+                }
+            }
+            if (lag != null) {
+                g.writeFieldName("lag");
+                VALUES.writeValue(g, lag);
+            }
+            g.writeEndObject();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
-        if (lag != null) {
-            n.set("lag", JSON.valueToTree(lag));
-        }
-        line(n);
+        chunk.write('\n');
         if (stepSink != null) {
-            stepSink.accept(new Step(timeMs, body, commands, readings, movedNow, written, lag, key));
+            stepSink.accept(new Step(timeMs, body, commands, resolved, movedNow, written, lag, key));
         }
         steps++;
         if (steps % CHUNK == 0) {
@@ -226,6 +259,18 @@ final class StepEncoder implements Closeable {
         beliefs.clear();
         beliefs.putAll(byText);
         beliefTexts = texts;
+    }
+
+    /** Writes {@code name: [texts]}, or nothing for no text. */
+    private static void strings(JsonGenerator g, String name, List<String> texts) throws IOException {
+        if (texts.isEmpty()) {
+            return;
+        }
+        g.writeArrayFieldStart(name);
+        for (String t : texts) {
+            g.writeString(t);
+        }
+        g.writeEndArray();
     }
 
     private void line(JsonNode n) {

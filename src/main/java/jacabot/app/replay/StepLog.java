@@ -10,6 +10,7 @@ import jacabot.app.inspector.MindState;
 import jacabot.app.run.LagMeter;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorInfo;
+import jacabot.robot.link.SensorKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.engine.WorldSnapshot;
 import java.io.BufferedReader;
@@ -45,7 +46,10 @@ import java.util.zip.ZipException;
  */
 public final class StepLog {
     public static final String FILE = "steps.jsonl.gz";
-    public static final String FORMAT = "jacabot-steps/1";
+    /** The format written: 2 writes the camera image compactly ({@link ImageText}); 1 as decimal text. */
+    public static final String FORMAT = "jacabot-steps/2";
+    /** The formats read. */
+    static final List<String> READS = List.of("jacabot-steps/1", FORMAT);
     /** Steps per gzip member; each member starts with a key step (4 s of a 40 ms control step). */
     public static final int CHUNK = 100;
 
@@ -110,6 +114,11 @@ public final class StepLog {
      */
     public record Step(long timeMs, Body body, List<String> commands, List<String> readings, Map<String, Moved> moved,
             MindDelta mind, Lag lag, boolean key) {
+        /** {@return this step with {@code readings} instead of its own (the same step when they are its own)} */
+        Step withReadings(List<String> readings) {
+            return readings == this.readings ? this
+                    : new Step(timeMs, body, commands, readings, moved, mind, lag, key);
+        }
     }
 
     /** A gzip member of steps: where it starts in the file, its first step's number (from 0) and time. */
@@ -322,8 +331,17 @@ public final class StepLog {
         }
     }
 
-    /** {@return a reading as the step log writes it: {@code KIND value}} */
+    /**
+     * {@return a reading as the step log writes it: {@code KIND value}; the camera image as
+     * {@link ImageText#encode} writes it}
+     */
     static String reading(SensorInfo s) {
+        if (s.kind().orElse(null) == SensorKind.CAMERA_IMAGE) {
+            String image = ImageText.encode(s.getIntValues());
+            if (image != null) {
+                return image;
+            }
+        }
         var sb = new StringBuilder().append(s.kind().map(Enum::name).orElse("#" + s.getId())).append(' ');
         if (s.getIntValues().length > 0) {
             sb.append(Arrays.toString(s.getIntValues()));
@@ -342,6 +360,9 @@ public final class StepLog {
     public static final class Reader implements Closeable {
         private final BufferedReader in;
         private final Header header;
+        private final Path file;
+        private final ImageText.Resolver images = new ImageText.Resolver();
+        private long line = 1;
 
         public Reader(Path file) throws IOException {
             try {
@@ -360,9 +381,12 @@ public final class StepLog {
                 in.close();
                 throw new IOException(file + ":1: not a jacabot step log: " + e.getOriginalMessage());
             }
-            if (!FORMAT.equals(header.format())) {
-                throw new IOException(file + ":1: not a jacabot step log (format '" + header.format() + "')");
+            if (!READS.contains(header.format())) {
+                in.close();
+                throw new IOException(file + ":1: not a step log this jacabot reads (format '" + header.format()
+                        + "'; it reads " + String.join(" and ", READS) + ")");
             }
+            this.file = file;
         }
 
         public Header header() {
@@ -371,8 +395,17 @@ public final class StepLog {
 
         /** {@return the next step, or null at the end} */
         public Step next() throws IOException {
-            String line = in.readLine();
-            return line == null ? null : parse(line);
+            String text = in.readLine();
+            if (text == null) {
+                return null;
+            }
+            line++;
+            Step s = parse(text);
+            try {
+                return s.withReadings(images.resolve(s.readings()));
+            } catch (IllegalArgumentException e) {
+                throw new IOException(file + ":" + line + ": " + e.getMessage());
+            }
         }
 
         @Override

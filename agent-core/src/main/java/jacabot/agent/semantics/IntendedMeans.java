@@ -5,6 +5,7 @@ import jacabot.agent.syntax.Plan;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -53,22 +54,33 @@ public final class IntendedMeans {
     }
 
     /**
-     * Makes intended means, keeping the last plan's steps and atomic option: the steps are an
-     * immutable list, so every intended means of a plan may start with the same one, and a loop
-     * of subgoals adopts the same plan again and again.
+     * Makes intended means, keeping each plan's first step list: the steps are an immutable list,
+     * so every intended means of a plan may start with the same one. A robot's agent adopts a few
+     * plans in turn every control step; each new list was a node per step made, and printed anew
+     * by the mind probe (which keeps a list's text by object).
      */
     static final class Start {
+        /** Plans whose steps are kept at most (a library reloaded many times); past this it starts anew. */
+        static final int KEPT = 4096;
+        private final Map<Plan, StepList> steps = new IdentityHashMap<>();
         private Plan plan;
-        private StepList steps;
+        private StepList last;
         private boolean atomic;
 
         IntendedMeans of(Plan p, Trigger trigger, Unifier unif) {
             if (p != plan) {
-                steps = StepList.of(p.body().steps(), null);
+                last = steps.get(p);
+                if (last == null) {
+                    if (steps.size() >= KEPT) {
+                        steps.clear();
+                    }
+                    last = StepList.of(p.body().steps(), null);
+                    steps.put(p, last);
+                }
                 atomic = p.isAtomic();
                 plan = p;
             }
-            return new IntendedMeans(p, trigger, unif, steps, atomic);
+            return new IntendedMeans(p, trigger, unif, last, atomic);
         }
     }
 

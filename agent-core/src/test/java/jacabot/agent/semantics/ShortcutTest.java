@@ -1,7 +1,10 @@
 package jacabot.agent.semantics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 
+import jacabot.agent.syntax.Plan;
 import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -89,5 +92,25 @@ class ShortcutTest {
                 +!c(b) <- .print(b).
                 +!c(X) <- .print(any(X)).
                 """));
+    }
+
+    @Test
+    void everyIntendedMeansOfAPlanStartsFromItsFirstStepListWhenPlansTakeTurns() {
+        var a = new TestAgent("""
+                +!a <- .print(a); .print(b).
+                +!b <- .print(c).
+                """);
+        var start = new IntendedMeans.Start();
+        var plans = a.agent.planLibrary().plans();
+        Plan pa = plans.get(0);
+        Plan pb = plans.get(1);
+        var first = start.of(pa, pa.trigger(), new Unifier());
+        var other = start.of(pb, pb.trigger(), new Unifier());
+        var again = start.of(pa, pa.trigger(), new Unifier());
+        assertSame(first.steps(), again.steps(), "plan a's steps, after plan b's");
+        assertNotSame(first.steps(), other.steps());
+        assertEquals(".print(a)", again.steps().head().toString());
+        assertEquals(".print(b)", again.steps().next().head().toString());
+        assertEquals(null, again.steps().next().next());
     }
 }
