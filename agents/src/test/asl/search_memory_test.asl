@@ -19,6 +19,8 @@ maxSpeed(100).
 // what the skill needs of sweep
 +!planSweep <- +sweepPlanned; -+sweep([[0.5, 0.5]]).
 +!lookAround <- +lookedAround.
++!sweepStep.
++!nextWaypoint <- .abolish(waypoint(_, _, _)); +waypoint(0.5, 0.5, 0).
 
 @[test]
 +!test_a_sighting_is_remembered_where_it_puts_the_cylinder_once
@@ -112,3 +114,29 @@ maxSpeed(100).
        .wait(100);
        !assert_false(lostBeside);
        -insideArea.
+
+// a place looked for again, straight ahead and near, with no sighting for 2 s: nothing is there, and
+// the search goes on to the next place (the sweep's waypoint, here) instead of driving to it
+@[test]
++!test_a_remembered_place_in_view_and_empty_is_left_for_the_next
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(0);
+       +seenCylinder(0.6, 0.1);                         // 0.61 m ahead, 9.5 degrees to the right
+       +searching; !lookAgain;
+       !assert_true(waypoint(0.6, 0.1, _));
+       !sweepStep;                                       // in view: from now on
+       !assert_true(lookingAgain(0.6, 0.1, _));
+       !assert_true(waypoint(0.6, 0.1, _));
+       .wait(2100); !sweepStep;                          // still in view, and no sighting took the robot away
+       !assert_false(waypoint(0.6, 0.1, _));
+       !assert_false(lookingAgain(_, _, _));
+       -searching.
+
+// the place looked for again out of view (behind the robot) is driven to as before
+@[test]
++!test_a_remembered_place_out_of_view_is_still_driven_to
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(180);
+       +seenCylinder(0.6, 0.1); +searching; !lookAgain;
+       !sweepStep; .wait(2100); !sweepStep;
+       !assert_true(waypoint(0.6, 0.1, _));
+       !assert_true(lookingAgain(0.6, 0.1, 0));
+       -searching.
