@@ -140,3 +140,17 @@ maxSpeed(100).
        !assert_true(waypoint(0.6, 0.1, _));
        !assert_true(lookingAgain(0.6, 0.1, 0));
        -searching.
+
+// a homing that lost sight of its cylinder remembers it where it was last seen, and a search goes
+// there; a homing stale since the last pick does not
+@[test]
++!test_a_cylinder_lost_from_sight_while_homing_is_remembered_and_looked_for
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(90);
+       -+lastFound(-300000); -+lastSighted(-100000); -+sightDistance(0.5);
+       +homing(-200000); -homing(_);                     // lost from sight (far sight's move plan)
+       !until(seenCylinder(_, _), 500);
+       ?seenCylinder(X, Z); !assert_equals(X, 0, 0.001); !assert_equals(Z, 0.5, 0.001);
+       .abolish(seenCylinder(_, _));
+       +homing(-400000); -homing(_); .wait(200);          // began before the last pick: stale
+       !assert_false(seenCylinder(_, _));
+       .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)).

@@ -39,6 +39,15 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
+// a homing that lost sight of its cylinder (far sight then looks away a while): the cylinder is
+// remembered where it was last seen, ahead at the last sighting's distance, and looked for again
+// (one lost behind a box 0.2 m away was left for the lanes for minutes); not a homing stale since
+// the last pick, nor one given up (its last sighting is recent)
+@lostFromSight
+-homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & sightDistance(D)
+              & not picking & not picked(true) & sightedAt(0, D, Cx, Cz) & not nearStored(Cx, Cz) & sameSighting(R)
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
+
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for
