@@ -19,6 +19,8 @@ maxSpeed(100).
 // what the skill needs of sweep
 +!planSweep <- +sweepPlanned; -+sweep([[0.5, 0.5]]).
 +!lookAround <- +lookedAround.
++!sweepStep.
++!nextWaypoint <- .abolish(waypoint(_, _, _)); +waypoint(0.5, 0.5, 0).
 
 @[test]
 +!test_a_sighting_is_remembered_where_it_puts_the_cylinder_once
@@ -112,3 +114,43 @@ maxSpeed(100).
        .wait(100);
        !assert_false(lostBeside);
        -insideArea.
+
+// a place looked for again, straight ahead and near, with no sighting for 2 s: nothing is there, and
+// the search goes on to the next place (the sweep's waypoint, here) instead of driving to it
+@[test]
++!test_a_remembered_place_in_view_and_empty_is_left_for_the_next
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(0);
+       +seenCylinder(0.6, 0.1);                         // 0.61 m ahead, 9.5 degrees to the right
+       +searching; !lookAgain;
+       !assert_true(waypoint(0.6, 0.1, _));
+       !sweepStep;                                       // in view: from now on
+       !assert_true(lookingAgain(0.6, 0.1, _));
+       !assert_true(waypoint(0.6, 0.1, _));
+       .wait(2100); !sweepStep;                          // still in view, and no sighting took the robot away
+       !assert_false(waypoint(0.6, 0.1, _));
+       !assert_false(lookingAgain(_, _, _));
+       -searching.
+
+// the place looked for again out of view (behind the robot) is driven to as before
+@[test]
++!test_a_remembered_place_out_of_view_is_still_driven_to
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(180);
+       +seenCylinder(0.6, 0.1); +searching; !lookAgain;
+       !sweepStep; .wait(2100); !sweepStep;
+       !assert_true(waypoint(0.6, 0.1, _));
+       !assert_true(lookingAgain(0.6, 0.1, 0));
+       -searching.
+
+// a homing that lost sight of its cylinder remembers it where it was last seen, and a search goes
+// there; a homing stale since the last pick does not
+@[test]
++!test_a_cylinder_lost_from_sight_while_homing_is_remembered_and_looked_for
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(90);
+       -+lastFound(-300000); -+lastSighted(-100000); -+sightDistance(0.5);
+       +homing(-200000); -homing(_);                     // lost from sight (far sight's move plan)
+       !until(seenCylinder(_, _), 500);
+       ?seenCylinder(X, Z); !assert_equals(X, 0, 0.001); !assert_equals(Z, 0.5, 0.001);
+       .abolish(seenCylinder(_, _));
+       +homing(-400000); -homing(_); .wait(200);          // began before the last pick: stale
+       !assert_false(seenCylinder(_, _));
+       .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)).

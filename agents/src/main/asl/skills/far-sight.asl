@@ -18,12 +18,18 @@ lostSightIgnore(5000).  // ms a cylinder lost from sight is ignored: the sweep's
 goRoundTime(2500).      // ms to go on past an obstacle met on the way (steering straight back
                         // drove into the same box until homingGiveUp)
 setUpGoal(setUpFarSight).
+// everyRedRun (the agent's, optional): every red run of the image is a sighting, widest first.
 // Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound; nearestSighted(Since,
 // D, At) (with homingProgress(Ms), the agent's, optional: a homing still coming nearer goes on past
 // homingGiveUp while a sighting nearer than any before came in the last Ms).
 // Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding.
 // Needs: !escape (recovery). Include it after picking, before recovery.
 
+// an agent that believes everyRedRun (tidy-up) is shown a cylinder beside the storage area's pile
+// too: every red run of the image is looked at, not only the widest (the middleware's filter left
+// out the pile's, and with it anything else in view)
+@setUpFarSightEveryRun
++!setUpFarSight : everyRedRun & sightingEvery(E) & cameraFov(F) <- scanForCylinders(E, F); sightEveryRedRun.
 @setUpFarSight +!setUpFarSight : sightingEvery(E) & cameraFov(F) <- scanForCylinders(E, F).
 
 @homeOnSighting

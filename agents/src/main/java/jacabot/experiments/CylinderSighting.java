@@ -1,5 +1,8 @@
 package jacabot.experiments;
 
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Optional;
 
 /**
@@ -18,40 +21,47 @@ public record CylinderSighting(double offset, int columns, double distance) {
     static final double CYLINDER_RADIUS = 0.0125;
 
     /**
-     * {@return the widest red run of an image framed as {width, height, pixels...}, or empty}
+     * {@return the widest red run of an image framed as {width, height, pixels...}, or empty}: the
+     * first of {@link #all}
      *
      * @param fov the camera's horizontal field of view, degrees
      */
     public static Optional<CylinderSighting> find(int[] framed, double fov) {
+        return all(framed, fov).stream().findFirst();
+    }
+
+    /**
+     * {@return every red run of an image framed as {width, height, pixels...}, the widest first (of
+     * runs as wide, the leftmost)}: the storage area's pile is the widest in view near it, and a
+     * lone cylinder beside it is another run
+     *
+     * @param fov the camera's horizontal field of view, degrees
+     */
+    public static List<CylinderSighting> all(int[] framed, double fov) {
+        List<CylinderSighting> runs = new ArrayList<>();
         if (framed.length < 2) {
-            return Optional.empty();
+            return runs;
         }
         int width = framed[0], height = framed[1];
         if (width <= 0 || height <= 0 || framed.length != 2 + (long) width * height) {
-            return Optional.empty();
+            return runs;
         }
-        int bestFrom = -1, bestLength = 0, runFrom = -1;
+        double perColumn = fov / width;
+        int runFrom = -1;
         for (int c = 0; c <= width; c++) {
             boolean red = c < width && redColumn(framed, width, height, c);
             if (red && runFrom < 0) {
                 runFrom = c;
             } else if (!red && runFrom >= 0) {
-                if (c - runFrom > bestLength) {
-                    bestFrom = runFrom;
-                    bestLength = c - runFrom;
-                }
+                int length = c - runFrom;
+                double offset = (runFrom + length / 2.0 - width / 2.0) * perColumn;
+                double distance = CYLINDER_RADIUS / Math.tan(Math.toRadians(length * perColumn / 2));
+                runs.add(new CylinderSighting(offset, length, distance));
                 runFrom = -1;
             }
         }
-        if (bestLength == 0) {
-            return Optional.empty();
-        }
-        double perColumn = fov / width;
-        double centre = bestFrom + bestLength / 2.0;
-        double offset = (centre - width / 2.0) * perColumn;
-        double halfAngle = Math.toRadians(bestLength * perColumn / 2);
-        double distance = CYLINDER_RADIUS / Math.tan(halfAngle);
-        return Optional.of(new CylinderSighting(offset, bestLength, distance));
+        runs.sort(Comparator.comparingInt(CylinderSighting::columns).reversed()); // stable: the leftmost first
+        return runs;
     }
 
     private static boolean redColumn(int[] framed, int width, int height, int c) {

@@ -8,6 +8,7 @@ import jacabot.robot.link.SensorKind;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 
 /**
@@ -61,6 +62,8 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private long lastSightingMs = Long.MIN_VALUE / 2;
     private double fov = 60;
     private final List<double[]> excluded = new ArrayList<>();
+    // every red run is a sighting, not only the widest (sightEveryRedRun): the first not excluded
+    private boolean everyRun;
     /** The last GPS position (x, z) and compass heading (the thesis' orientation, degrees), when known. */
     private double[] position;
     private double heading = Double.NaN;
@@ -86,6 +89,16 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         send(Command.enableSensor(SensorKind.CAMERA_IMAGE, 40));
     }
 
+    /**
+     * Looks at every red run of the image, widest first, and signals the first one outside the
+     * excluded areas (not in the thesis): with the widest alone, the pile in the storage area hid a
+     * lone cylinder in the same image.
+     */
+    @OPERATION
+    void sightEveryRedRun() {
+        everyRun = true;
+    }
+
     /** Cylinders seen inside this circle are not signalled (e.g. those already delivered). */
     @OPERATION
     void ignoreCylindersNear(double x, double z, double radius) {
@@ -107,7 +120,10 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 || simTimeMs() - lastSightingMs < sightingEvery) {
             return; // before the image is copied: most readings end here
         }
-        CylinderSighting.find(camera.getIntValues(), fov).filter(s -> !excluded(s)).ifPresent(s -> {
+        Optional<CylinderSighting> sighting = everyRun
+                ? CylinderSighting.all(camera.getIntValues(), fov).stream().filter(s -> !excluded(s)).findFirst()
+                : CylinderSighting.find(camera.getIntValues(), fov).filter(s -> !excluded(s));
+        sighting.ifPresent(s -> {
             lastSightingMs = simTimeMs();
             signal("cylinderSighted", Math.round(s.offset() * 10) / 10.0, Math.round(s.distance() * 100) / 100.0);
         });

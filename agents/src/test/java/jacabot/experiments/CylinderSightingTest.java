@@ -37,6 +37,19 @@ class CylinderSightingTest {
     }
 
     @Test
+    void everyRedRunComesWidestFirst() {
+        int[] img = image(RED, 40, 43);
+        img[2 + 3 * 64 + 5] = RED;
+        img[2 + 3 * 64 + 20] = RED;
+        var all = CylinderSighting.all(img, 60);
+        assertEquals(3, all.size());
+        assertEquals(CylinderSighting.find(img, 60).orElseThrow(), all.get(0), "the widest, as find gives it");
+        assertEquals(3, all.get(0).columns());
+        assertTrue(all.get(1).offset() < all.get(2).offset(), "of runs as wide, the leftmost first");
+        assertTrue(CylinderSighting.all(image(BEIGE, 10, 30), 60).isEmpty());
+    }
+
+    @Test
     void aRedRunLeftOfCentreHasANegativeOffset() {
         assertTrue(CylinderSighting.find(image(RED, 0, 2), 60).orElseThrow().offset() < -25);
     }

@@ -152,6 +152,30 @@ class MiddlewareTest {
         assertEquals(1, other.signals.size(), "an area off the line of sight hides nothing: " + other.signals);
     }
 
+    /** The storage area's pile ahead (the widest run) and a lone cylinder to the left: only every red run shows the lone one. */
+    @Test
+    void aCylinderBesideAnIgnoredAreaIsSignalledWhenEveryRedRunIsLookedAt() throws Exception {
+        int[] framed = CylinderSightingTest.image(0xC81E1E, 30, 34);
+        for (int x = 4; x < 6; x++) {
+            framed[2 + 3 * 64 + x] = 0xC81E1E;
+        }
+        var image = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), framed);
+        var gps = new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0);
+        var compass = new SensorInfo(SensorKind.COMPASS.id(), 1.0, 0.0, 0.0);
+        var widest = new Bench(NavigationMiddleware.class);
+        widest.op("scanForCylinders", new Object[] {400.0, 60.0});
+        widest.op("ignoreCylindersNear", new Object[] {0.35, 0.0, 0.1});
+        widest.deliver(gps, compass, image);
+        assertTrue(widest.signals.isEmpty(), "the widest run is the pile's: " + widest.signals);
+        var every = new Bench(NavigationMiddleware.class);
+        every.op("scanForCylinders", new Object[] {400.0, 60.0});
+        every.op("ignoreCylindersNear", new Object[] {0.35, 0.0, 0.1});
+        every.op("sightEveryRedRun", new Object[0]);
+        every.deliver(gps, compass, image);
+        assertEquals(1, every.signals.size(), every.signals.toString());
+        assertTrue(every.signals.get(0).startsWith("cylinderSighted[-25."), "the lone one, to the left: " + every.signals);
+    }
+
     @Test
     void exploreTurnNeedsOdometryThenProposesATurnTimedForTheWheelSpeed() throws Exception {
         var b = new Bench(ObstacleAvoidanceMiddleware.class);

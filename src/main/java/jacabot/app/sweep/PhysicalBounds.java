@@ -27,7 +27,8 @@ import java.util.Locale;
  * <li>{@code deliveries}: how many deliveries the shortest tour allows (start, nearest cylinder, storage,
  *     then storage and back for the next nearest), for navigation and suspend/resume;</li>
  * <li>{@code storable} and {@code parkable}: for tidy-up, how many cylinders that tour stores, and
- *     whether the drive to the charger after the last still fits (recharging time not counted).</li>
+ *     whether the drive to the charger after the last still fits; a tour that needs more energy than
+ *     the robot starts with also pays for a visit to the charger on the way and the charge's time.</li>
  * </ul>
  * Cylinders behind a passage narrower than the robot are never asked for: the generator puts none
  * there, and a hand-made world's are left out of the tour (so out of what is required).
@@ -50,7 +51,6 @@ public record PhysicalBounds(double coverage, int deliveries, int storable, bool
             return NONE;
         }
         Reachability reach = Reachability.of(world, model.radius(), r.x(), r.z());
-        double drive = ATTAINABLE * SuccessCriteria.NOMINAL_S * model.speedUnit() * model.maxSpeed();
         double cell = RunRecorder.CELL_SIZE;
         int cells = Math.max(1, (int) Math.round(world.arena().width() / cell))
                 * Math.max(1, (int) Math.round(world.arena().depth() / cell));
@@ -61,35 +61,88 @@ public record PhysicalBounds(double coverage, int deliveries, int storable, bool
         }
         double within = model.radius() + 0.03;
         AreaSpec storage = world.storage();
+        AreaSpec charger = world.charger();
         Reachability fromStorage = reach.from(storage.x(), storage.z());
-        List<double[]> legs = new ArrayList<>(); // per reachable cylinder: start -> it, storage -> it
+        Reachability fromCharger = charger == null ? null : reach.from(charger.x(), charger.z());
+        List<double[]> legs = new ArrayList<>(); // per reachable cylinder: start -> it, storage -> it, charger -> it
         for (CylinderSpec c : world.cylinders()) {
             double a = reach.distanceTo(c.x(), c.z(), within), b = fromStorage.distanceTo(c.x(), c.z(), within);
             if (a < Double.POSITIVE_INFINITY && b < Double.POSITIVE_INFINITY) {
-                legs.add(new double[] {a, b});
+                legs.add(new double[] {a, b, fromCharger == null ? Double.POSITIVE_INFINITY : fromCharger.distanceTo(c.x(), c.z(), within)});
             }
         }
         // the first: the cheapest start -> cylinder -> storage; then the nearest to the storage area, there and back
         legs.sort((p, q) -> Double.compare(p[0] + p[1], q[0] + q[1]));
-        double used = 0;
-        int delivered = 0;
-        if (!legs.isEmpty() && legs.get(0)[0] + legs.get(0)[1] <= drive) {
-            used = legs.get(0)[0] + legs.get(0)[1];
-            delivered = 1;
+        if (legs.size() > 1) {
             List<double[]> rest = new ArrayList<>(legs.subList(1, legs.size()));
             rest.sort((p, q) -> Double.compare(p[1], q[1]));
-            for (double[] leg : rest) {
-                if (used + 2 * leg[1] > drive) {
-                    break;
-                }
-                used += 2 * leg[1];
-                delivered++;
-            }
+            legs = new ArrayList<>(legs.subList(0, 1));
+            legs.addAll(rest);
         }
-        AreaSpec charger = world.charger();
+        Recharge recharge = Recharge.of(experiment == Experiment.TIDY_UP ? world.charger() : null, model, r, reach, fromStorage);
         double toCharger = charger == null ? 0 : fromStorage.distanceTo(charger.x(), charger.z(), charger.radius() / 2);
-        boolean parkable = delivered == legs.size() && used + toCharger <= drive;
+        double used = 0;
+        int delivered = 0;
+        double detour = Double.POSITIVE_INFINITY; // the cheapest visit to the charger on the tour so far
+        for (int k = 0; k < legs.size(); k++) {
+            double[] leg = legs.get(k);
+            double more = k == 0 ? leg[0] + leg[1] : 2 * leg[1];
+            double d = Math.min(detour, recharge.insertion(leg, k == 0));
+            if (used + more > recharge.drive(used + more, d)) {
+                break;
+            }
+            used += more;
+            detour = d;
+            delivered++;
+        }
+        boolean parkable = delivered == legs.size() && used + toCharger <= recharge.drive(used + toCharger, detour);
         return new PhysicalBounds(coverage, delivered, delivered, parkable);
+    }
+
+    /**
+     * The battery's part of a tidy-up tour. A tour that needs more energy than the robot starts with
+     * must visit the charger before its end (parking comes too late to help): the cheapest such visit
+     * is a detour on one of the tour's legs, and the charge itself takes time at the charger's power.
+     * Both come out of the drive the run leaves. Energy: the idle power for the whole run and the
+     * motors' power at full speed while driving (the model's battery); a robot without battery, a
+     * world without charger, or another experiment than tidy-up (whose task includes the charger)
+     * drives as far as the run allows.
+     */
+    private record Recharge(double drive, double speed, double needBase, double motorPower, double start, double chargerPower,
+                            double startToCharger, double storageToCharger) {
+        static Recharge of(AreaSpec charger, RobotModel model, RobotSpec r, Reachability reach, Reachability fromStorage) {
+            double speed = model.speedUnit() * model.maxSpeed();
+            double drive = ATTAINABLE * SuccessCriteria.NOMINAL_S * speed;
+            RobotModel.BatteryDef battery = model.battery();
+            if (battery == null || charger == null || !(charger.power() > 0)) {
+                return new Recharge(drive, speed, 0, 0, Double.POSITIVE_INFINITY, 1, 0, 0);
+            }
+            double start = Double.isNaN(r.battery()) ? battery.maxEnergy() : Math.min(r.battery(), battery.maxEnergy());
+            return new Recharge(drive, speed, battery.idlePower() * SuccessCriteria.NOMINAL_S, battery.motorPower(), start,
+                    charger.power(), reach.distanceTo(charger.x(), charger.z(), charger.radius() / 2),
+                    fromStorage.distanceTo(charger.x(), charger.z(), charger.radius() / 2));
+        }
+
+        /** {@return the extra metres of visiting the charger on a leg (start -> it -> storage for the first, else storage -> it -> storage)} */
+        double insertion(double[] leg, boolean first) {
+            double out = first ? leg[0] : leg[1];
+            double viaOut = (first ? startToCharger : storageToCharger) + leg[2];
+            double viaBack = leg[2] + storageToCharger;
+            return Math.min(viaOut - out, viaBack - leg[1]);
+        }
+
+        /** {@return the drive the run leaves for a tour of {@code metres}, the charger {@code detour} m off it} */
+        double drive(double metres, double detour) {
+            double need = needBase + motorPower * metres / speed;
+            if (need <= start) {
+                return drive;
+            }
+            if (detour == Double.POSITIVE_INFINITY) {
+                return 0;
+            }
+            double charging = (need + motorPower * detour / speed - start) / chargerPower;
+            return ATTAINABLE * (SuccessCriteria.NOMINAL_S - charging) * speed - detour;
+        }
     }
 
     /** {@return the bounds as one line, e.g. "physical bound: coverage 28%, 3 deliveries"} */

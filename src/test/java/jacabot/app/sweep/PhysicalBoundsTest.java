@@ -59,4 +59,34 @@ class PhysicalBoundsTest {
             assertTrue(PhysicalBounds.of(Experiment.NAVIGATION, w).deliveries() >= SuccessCriteria.MIN_DELIVERIES, w.name());
         }
     }
+
+    private static WorldSpec tidyHall(double chargerX, double chargerZ, double battery) throws Exception {
+        StringBuilder cylinders = new StringBuilder();
+        for (int i = 0; i < 6; i++) {
+            cylinders.append(i == 0 ? "" : ", ").append("{ \"id\": \"red").append(i).append("\", \"x\": ").append(0.6 - 0.05 * i)
+                    .append(", \"z\": 1.3 }");
+        }
+        return WorldFileReader.parse("{ \"name\": \"hall\", \"arena\": { \"width\": 3, \"depth\": 3 }, \"walls\": [], \"boxes\": [], "
+                + "\"cylinders\": [" + cylinders + "], \"storage\": { \"x\": -1.3, \"z\": 1.3, \"radius\": 0.06 }, "
+                + "\"charger\": { \"x\": " + chargerX + ", \"z\": " + chargerZ + ", \"radius\": 0.06, \"power\": 20 }, "
+                + "\"robots\": [ { \"name\": \"r\", \"model\": \"khepera\", \"x\": 0, \"z\": 0, \"battery\": " + battery + " } ] }", "hall.json");
+    }
+
+    /**
+     * Six cylinders 1.6-1.9 m from the storage point: about 21 m of tour, over 1 000 J at the Khepera's
+     * 0.5 W idle and 2 W driving, so a charge on the way whatever the battery at the start. With the
+     * charger beside the storage point the charge costs only its time; with the charger in the far
+     * corner the way there too, and one cylinder fewer fits (the bound as it was asked for all six).
+     */
+    @Test
+    void aTourThatOutrunsTheBatteryPaysForTheChargeAndTheWayToTheCharger() throws Exception {
+        PhysicalBounds near = PhysicalBounds.of(Experiment.TIDY_UP, tidyHall(-1.2, 1.3, 560));
+        PhysicalBounds far = PhysicalBounds.of(Experiment.TIDY_UP, tidyHall(1.3, -1.3, 560));
+        assertEquals(6, near.storable());
+        assertTrue(near.parkable());
+        assertEquals(5, far.storable(), "the way to the far charger and the charge leave no time for the sixth");
+        assertFalse(far.parkable());
+        // another experiment's bound does not count the charger (its task does not include it)
+        assertEquals(6, PhysicalBounds.of(Experiment.NAVIGATION, tidyHall(1.3, -1.3, 560)).deliveries());
+    }
 }
