@@ -20,7 +20,7 @@ routeNear(0.3).
 // boundary following stands aside), aim(X, Z) (the point headed for now).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
 // delivery (heading's +!aimAt plans come after its own). No default agent includes it: on the wide
-// generated worlds it measured no gain over heading and way-round (docs/comparison.md, "The way
+// generated worlds it measured no clear gain over heading and way-round (docs/comparison.md, "The way
 // through the robot's own map").
 
 routePlanning.
