@@ -19,6 +19,7 @@ mock_operation(_, ok).
 
 // what the skill needs of delivery and recovery
 +!balance <- +balanced.
++!aimAt(X, Z) <- -+aim(X, Z).   // heading's: the straight way
 +!escape <- +escaped.
 
 // the look around of a waypoint reached is long (6.8 s): a test stops it once it has started

@@ -12,7 +12,8 @@ speedOnTheWay(100) :- not travelSpeed(_).
 // Reads: targetPoint(X, Z) (the skill that sends the robot: delivery, recharge); location, orientation,
 // delta (the middleware); travelling, halted, insideArea (rules of the skills that send the robot),
 // avoiding (avoidance).
-// Beliefs: desired(Degrees), firstTime, ~around (delivery reads them).
+// Beliefs: desired(Degrees), firstTime, ~around (delivery reads them), aim(X, Z) (the point headed
+// for: the target point, or route.asl's point on the way to it).
 // Needs: avoidance (!avoid), recovery (!escape). Included by delivery (between its "+stuck" plans:
 // picking and the storage area come first); an agent without delivery includes it before avoidance.
 
@@ -37,9 +38,11 @@ speedOnTheWay(100) :- not travelSpeed(_).
 
 /* Heading towards the target point with the compass (Chapter 4 §3.1) */
 
+// the heading for the target point, or for the point on the way to it that route.asl gives
 @computeGap
 +!computeGap : location(X, Y, Z) & targetPoint(Tx, Tz)
-    <- computeAngle(X, Z, Tx, Tz, Desired); -+desired(Desired).
+    <- !aimAt(Tx, Tz); ?aim(Ax, Az); computeAngle(X, Z, Ax, Az, Desired); -+desired(Desired).
+@aimStraight +!aimAt(Tx, Tz) <- -+aim(Tx, Tz).
 
 @balanced
 +!balance : desired(D) & orientation(O) & O > D - 0.6 & O < D + 0.6
@@ -58,16 +61,29 @@ speedOnTheWay(100) :- not travelSpeed(_).
 // the balance plans end by going on at travelSpeed (the thesis: forward)
 @cruise +!cruise : speedOnTheWay(V) <- setSpeeds(V, V).
 
-// while travelling: re-align when the heading is off by more than 10 degrees
+// while travelling: re-align when the heading is off by more than 10 degrees (more often while
+// the way to the target bends: route.asl)
+bending :- aim(Ax, Az) & targetPoint(Tx, Tz) & (Ax \== Tx | Az \== Tz).
+steerNow(T) :- bending & routeSteerEvery(T).
+steerNow(T) :- steerEvery(T).
+// degrees off before a re-alignment: more along a route that bends (its point on the way moves a
+// cell to and fro at every plan, and each turn on the spot stopped the robot)
+offBy(A) :- bending & routeTolerance(A).
+offBy(10).
 @steer
-+!steer : travelling & not halted & steerEvery(T)
++!steer : travelling & not halted & steerNow(T)
     <- .wait(T);
        if (not avoiding & not .intend(balance) & not halted & travelling & location(X, _, Z) & targetPoint(Tx, Tz)) {
-           computeAngle(X, Z, Tx, Tz, D); ?orientation(O);
-           if (math.abs(O - D) > 10 & math.abs(O - D) < 350) { -+desired(D); !balance }
+           !aimAt(Tx, Tz); ?aim(Ax, Az); computeAngle(X, Z, Ax, Az, D); ?orientation(O);
+           ?offBy(A);
+           if (math.abs(O - D) > A & math.abs(O - D) < 360 - A) { -+desired(D); !realign }
        };
        !steer.
 @steerDone +!steer.
+// along a route that bends (route.asl) the turn is an intention of its own, so that a detour that
+// drops it (.drop_intention(balance)) does not end the steering too, as it does here otherwise
+@realignOnRoute +!realign : bending <- !!balance.
+@realign +!realign <- !balance.
 @steerRetry -!steer <- .wait(500); !steer.
 
 /* No progress though the wheels turn, on the way */

@@ -30,7 +30,7 @@ setUpGoal(setUpSweep).
 // closerAt(T) (when the robot last came nearer its waypoint: way-round reads it),
 // lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot);
 // resumeSweep (the agent's, optional: a new search goes on where the last one stopped).
-// Needs: !balance (delivery), !escape (recovery). Include it after recovery, before random walk.
+// Needs: !balance, !aimAt (delivery's heading; route.asl's way round what was met), !escape (recovery). Include it after recovery, before random walk.
 
 @setUpSweep +!setUpSweep <- .system_time(Now); +lastFound(Now); +lastLook(Now); !!searchClock.
 
@@ -85,7 +85,8 @@ setUpGoal(setUpSweep).
            if (progressStep(G2) & .number(G2)) { -+waypoint(X, Z, T) }
        };
        if (lastAvoid(A) & T - A < 3000) { forward; .wait(1500) };
-       ?location(Lx2, _, Lz2); computeAngle(Lx2, Lz2, X, Z, D); -+desired(D); !balance; setSpeeds(V, V); .wait(2000).
+       ?location(Lx2, _, Lz2); !aimAt(X, Z); ?aim(Ax, Az); computeAngle(Lx2, Lz2, Ax, Az, D); -+desired(D); !balance;
+       setSpeeds(V, V); .wait(2000).
 @noSweepStep +!sweepStep <- !nextWaypoint; .wait(100).
 
 // stuck (the middleware's progress percept) while searching: escape, and on to the next waypoint

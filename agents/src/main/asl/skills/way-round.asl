@@ -33,6 +33,7 @@ sweepFollows(2).      // followings towards one waypoint at most (the second on 
 // (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
 // gaveUpSide(Side), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
 // (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it).
+// An agent with route.asl (routePlanning) plans its way round what it met instead: no following.
 // Needs: !computeGap, !balance (heading), !nextWaypoint (sweep). Include it after recharge, before
 // delivery (its obstacle and stuck plans come before heading's) and before sweep (its +!sweepStep
 // plan comes first).
@@ -74,7 +75,7 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 /* A wall met again: follow it */
 
 @followOnRehit[atomic]
-+obstacle(true) : goingTo(_, _) & not insideArea & not followingWall(_, _, _) & not followingOff & metHereBefore
++obstacle(true) : not routePlanning & goingTo(_, _) & not insideArea & not followingWall(_, _, _) & not followingOff & metHereBefore
                 & targetDistance(Dist) & leaveNear(Near) & Dist > Near
     <- .drop_intention(balance); .drop_intention(detour(_)); !startFollowing(Dist, S).
 @startFollowing
@@ -88,7 +89,7 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 // met head on, as on a trip (a following begun mid-turn left at once: the waypoint lay on the
 // free side); the second following towards one waypoint takes the other side
 @followOnStall[atomic]
-+obstacle(true) : sweepStalled(X, Z) & not avoiding & not followingWall(_, _, _) & not followingOff & not insideArea
++obstacle(true) : not routePlanning & sweepStalled(X, Z) & not avoiding & not followingWall(_, _, _) & not followingOff & not insideArea
                 & location(Lx, _, Lz) & leaveNear(Near) & math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz)) > Near
     <- .succeed_goal(move(_)); Dist = math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz)); .abolish(gaveUpSide(_));
        if (followedTowards(X, Z, N, Side)) { -followedTowards(X, Z, N, Side); +gaveUpSide(Side); N2 = N + 1 } else { N2 = 1 };

@@ -4,6 +4,8 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
+import java.util.EnumMap;
+import java.util.Map;
 
 /**
  * Experiment 3's middleware (thesis Chapter 4 §3.2): {@code location(X,Y,Z)} from the GPS
@@ -24,6 +26,10 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     private boolean targetSignalled;
     private boolean inArea;
     private boolean waitingExit;
+    /** The map of obstacles met and the route to a target point (not in the thesis), once the agent asked for it. */
+    private RouteMap routes;
+    private double[] here;
+    private double compass = Double.NaN;
 
     @Override
     protected void defineProperties() {
@@ -65,11 +71,95 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         waitingExit = true;
     }
 
+    /**
+     * Starts the map of obstacles the robot meets (not in the thesis) for an arena of {@code width} by
+     * {@code depth} metres; an obstacle stays on it {@code memoryMs} after it was last seen.
+     */
+    @OPERATION
+    void routeMap(double width, double depth, double memoryMs) {
+        if (!(width > RouteMap.CELL) || !(depth > RouteMap.CELL) || !(memoryMs > 0)) {
+            failed("routeMap(Width, Depth, MemoryMs) needs an arena over " + RouteMap.CELL + " m a side and a memory > 0, got "
+                    + width + ", " + depth + ", " + memoryMs);
+            return;
+        }
+        routes = new RouteMap(width, depth, KHEPERA_RADIUS + ROUTE_MARGIN, (long) memoryMs);
+    }
+
+    /**
+     * The point to head for on the way to (tx, tz) (not in the thesis): the target itself when the straight
+     * way is free of obstacles met, or no way round them is known; else the farthest point of the route
+     * round them that the robot can reach in a straight line. Observable: {@code route(Wx, Wz, Cells)}
+     * (Cells: the route's length in cells, 0 for the straight way). Without {@code routeMap}: the target.
+     */
+    @OPERATION
+    void routeTo(double tx, double tz, OpFeedbackParam<Double> wx, OpFeedbackParam<Double> wz) {
+        double[] w = routes == null || here == null ? new double[] {tx, tz} : routes.waypoint(here[0], here[1], tx, tz, simTimeMs());
+        double x = Math.round(w[0] * 1000) / 1000.0, z = Math.round(w[1] * 1000) / 1000.0;
+        wx.set(x);
+        wz.set(z);
+        int cells = routes == null ? 0 : routes.lastRoute().size();
+        if (hasObsProperty("route")) {
+            getObsProperty("route").updateValues(x, z, cells);
+        } else {
+            defineObsProperty("route", x, z, cells);
+        }
+    }
+
+    /** The Khepera's body radius and its distance sensors' bearings (degrees, positive to the right). */
+    static final double KHEPERA_RADIUS = 0.0285;
+    private static final Map<SensorKind, Double> SENSOR_BEARING = new EnumMap<>(Map.of(
+            SensorKind.LEFT_DISTANCE, -90.0, SensorKind.FRONT_LEFT_DISTANCE, -45.0, SensorKind.CENTRAL_DISTANCE, 0.0,
+            SensorKind.FRONT_RIGHT_DISTANCE, 45.0, SensorKind.RIGHT_DISTANCE, 90.0));
+    /** How far from the body a route keeps, metres, beyond the body's radius. */
+    static final double ROUTE_MARGIN = 0.01;
+    /** A reading over this is an obstacle put on the map (about 5 cm from the body). */
+    static final double MAP_LEVEL = 100;
+    /** The Khepera's infra-red calibration, reading to metres from the body: {reading, distance} pairs, readings falling. */
+    private static final double[][] CALIBRATION = {{1000, 0}, {480, 0.015}, {350, 0.025}, {200, 0.04}, {0, 0.06}};
+    /** The held cylinder's centre, metres ahead of the robot's, and the radius round it where no obstacle is mapped. */
+    private static final double HOLD_AHEAD = 0.05, HOLD_RADIUS = 0.03;
+
+    /** {@return the distance from the body, metres, of an obstacle giving the reading {@code value}} */
+    static double rangeOf(double value) {
+        for (int k = 1; k < CALIBRATION.length; k++) {
+            double[] hi = CALIBRATION[k - 1], lo = CALIBRATION[k];
+            if (value >= lo[0]) {
+                double f = (hi[0] - Math.min(value, hi[0])) / (hi[0] - lo[0]);
+                return hi[1] + f * (lo[1] - hi[1]);
+            }
+        }
+        return CALIBRATION[CALIBRATION.length - 1][1];
+    }
+
+    /** Puts what a distance sensor sees on the route map: the point of the obstacle's surface. */
+    private void mapReading(SensorKind kind, double value) {
+        if (routes == null) {
+            return; // no map asked for: nothing more per reading
+        }
+        Double bearing = SENSOR_BEARING.get(kind);
+        if (bearing == null || here == null || Double.isNaN(compass) || !(value > MAP_LEVEL)) {
+            return;
+        }
+        double a = Math.toRadians(compass + bearing), d = KHEPERA_RADIUS + rangeOf(value);
+        double px = here[0] + d * Math.cos(a), pz = here[1] + d * Math.sin(a);
+        if (getObsProperty("caught").booleanValue()) {
+            double h = Math.toRadians(compass);
+            if (Math.hypot(px - here[0] - HOLD_AHEAD * Math.cos(h), pz - here[1] - HOLD_AHEAD * Math.sin(h)) < HOLD_RADIUS) {
+                return; // the cylinder in the gripper
+            }
+        }
+        routes.obstacle(px, pz, simTimeMs());
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         switch (kind) {
             case GPS:
                 double[] c = info.getCoord();
+                if (routes != null) {
+                    here = new double[] {c[0], c[2]};
+                    routes.standing(c[0], c[2]);
+                }
                 checkProgress(c[0], c[2]);
                 double x = trunc(c[0]);
                 double y = trunc(c[1]);
@@ -81,9 +171,13 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             case COMPASS:
                 double[] n = info.getCoord();
                 noteCompass(n);
+                if (routes != null) {
+                    compass = orientation(n);
+                }
                 getObsProperty("orientation").updateValue(Math.round(orientation(n) * 10) / 10.0);
                 break;
             default:
+                mapReading(kind, info.getVal());
                 super.onReading(info, kind);
         }
     }

@@ -44,6 +44,11 @@ class MiddlewareTest {
                 }
 
                 @Override
+                public void propertyAdded(ArtifactId a, PropertySnapshot p) {
+                    properties.put(p.name(), p.values().size() == 1 ? p.value() : p.values());
+                }
+
+                @Override
                 public void propertyUpdated(ArtifactId a, PropertySnapshot old, PropertySnapshot now) {
                     properties.put(now.name(), now.values().size() == 1 ? now.value() : now.values());
                 }
@@ -223,6 +228,30 @@ class MiddlewareTest {
         b.deliver(new SensorInfo(SensorKind.GPS.id(), 0.40, 0.0, -0.40));
         assertTrue(b.signals.contains("targetReached"), b.signals.toString());
         assertTrue(b.signals.contains("noAccess"), "near the storage area: " + b.signals);
+    }
+
+    @Test
+    void whatTheDistanceSensorsSeeIsMappedAndTheRouteGoesRoundIt() throws Exception {
+        var b = new Bench(NavigationMiddleware.class);
+        assertTrue(b.op("routeMap", new Object[] {2.0, 2.0, 60_000.0}).succeeded());
+        assertTrue(!b.op("routeMap", new Object[] {0.0, 2.0, 60_000.0}).succeeded(), "an arena has a size");
+        // at the centre, heading 90 degrees (towards +z): the right-hand sensor looks towards -x
+        var gps = new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0);
+        var compass = new SensorInfo(SensorKind.COMPASS.id(), Math.cos(Math.toRadians(90)), 0.0, -Math.sin(Math.toRadians(90)));
+        b.deliver(gps, compass);
+        var wx = new OpFeedbackParam<Double>();
+        var wz = new OpFeedbackParam<Double>();
+        assertTrue(b.op("routeTo", new Object[] {-0.3, 0.0, wx, wz}).succeeded());
+        assertEquals(List.of(-0.3, 0.0, 0), b.properties.get("route"), "nothing seen: the straight way");
+        // a wall 2.5 cm from the right-hand sensor (350), seen while the robot turns it past (the whole wall, z -0.1..0.1)
+        for (double z = -0.1; z <= 0.1; z += 0.01) {
+            b.deliver(new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, z), compass, value(SensorKind.RIGHT_DISTANCE, 350));
+        }
+        b.deliver(gps, compass);
+        assertTrue(b.op("routeTo", new Object[] {-0.3, 0.0, wx, wz}).succeeded());
+        assertTrue(wx.get() > -0.04 && Math.abs(wz.get()) > 0.005, "towards an end of the wall seen at x = -0.05, not through it: "
+                + wx.get() + ", " + wz.get());
+        assertTrue((Integer) ((List<?>) b.properties.get("route")).get(2) > 0);
     }
 
     @Test

@@ -1,0 +1,35 @@
+// Skill: the way to a target point through a map the robot makes itself, not in the thesis (its
+// robots head for a point by the compass and go round what they meet, heading.asl). The middleware
+// puts every obstacle its distance sensors see on a grid of the arena (routeMap), forgets it when
+// the robot stands where it was or routeMemory ms after it was last seen (boxes move), and plans
+// round what is on the grid, the floor never seen taken as free (routeTo: A* over the grid). The
+// robot heads for the farthest point of that route it can reach in a straight line: the target
+// itself while nothing met is in the way, and also when no way round is known (today's heading).
+// Each re-alignment plans again (heading's detour after an obstacle met, its steering every
+// routeSteerEvery ms while the route bends; the sweep's every step), so a wall met is learnt and
+// gone round, a doorway found is remembered, and the way back from the charger takes the way out.
+// Parameters:
+routeMemory(180000).   // ms an obstacle seen stays on the map
+routeSteerEvery(1000). // ms between re-alignments while the route bends (heading's steerEvery otherwise)
+routeTolerance(25).    // degrees off the route before a re-alignment (heading's 10 otherwise)
+// m: this near the target the robot heads for it straight (the storage area and the charger are
+// entered with the distance sensors off and no steering: a point beside the target took it past)
+routeNear(0.3).
+// Reads: arena(W, D) (the world).
+// Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
+// boundary following stands aside), aim(X, Z) (the point headed for now).
+// Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
+// delivery (heading's +!aimAt plans come after its own). No default agent includes it: on the wide
+// generated worlds it measured no clear gain over heading and way-round (docs/comparison.md, "The way
+// through the robot's own map").
+
+routePlanning.
+setUpGoal(setUpRoute).
+
+@setUpRoute +!setUpRoute : arena(W, D) & routeMemory(M) <- routeMap(W, D, M).
+
+// the point to head for on the way to (Tx, Tz): the route's, believed as aim(X, Z)
+@aimNearTarget
++!aimAt(Tx, Tz) : routePlanning & location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N
+    <- -+aim(Tx, Tz).
+@aimOnRoute +!aimAt(Tx, Tz) : routePlanning <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).

@@ -1,0 +1,267 @@
+package jacabot.experiments;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.PriorityQueue;
+
+/**
+ * The way to a target point through a map the robot makes itself (not in the thesis: its robots
+ * head for a point by the compass and go round what they meet). The arena is a grid of
+ * {@value #CELL} m cells. A cell where a distance sensor saw an obstacle is blocked until
+ * {@code memoryMs} after its last sighting, or until the robot's centre stands in it (boxes move);
+ * cells within the robot's clearance of a blocked cell or of the arena's boundary cost more to
+ * cross; cells never seen are free (the robot learns a wall by meeting it). A* over the grid gives
+ * the route; the robot heads for the farthest cell of the route's first {@value #LOOKAHEAD} m it can
+ * reach in a straight line over free cells, and for the target itself when the straight way is free
+ * or no route is known.
+ * Coordinates are the GPS's (x, z), the arena centred on 0.
+ */
+final class RouteMap {
+    static final double CELL = 0.025;
+    /** The extra cost of crossing a cell within the clearance of an obstacle, in cells of path. */
+    static final double NEAR_COST = 20;
+    /**
+     * Beside an obstacle: within this many clearances of it a cell costs {@link #BESIDE_COST} more, and the
+     * point to head for is not taken there (the robot, beside a wall it follows, heads along the route's
+     * next cells, not for the place past the wall's end seen where the route turns through the part of
+     * the wall not seen yet: it turned into the wall at every plan).
+     */
+    static final double BESIDE = 1.6, BESIDE_COST = 0.5;
+    /**
+     * How far along a route that bends the point to head for may lie, metres: the robot keeps to the route
+     * round an obstacle's end it has seen, along the obstacle, where heading for a point beyond the end cut
+     * the corner into the part of the obstacle not seen yet.
+     */
+    static final double LOOKAHEAD = 0.2;
+
+    private final int cols, rows;
+    private final double halfW, halfD, clearance;
+    private final long memoryMs;
+    /** Per cell: the simulated time of the last sighting of an obstacle there, or {@link #NEVER}. */
+    private final long[] seenAt;
+    private static final long NEVER = Long.MIN_VALUE;
+    /** The route of the last plan, cell centres from the robot to the target (for the inspector and tests). */
+    private List<double[]> lastRoute = List.of();
+
+    /**
+     * @param width     the arena's side along x, metres
+     * @param depth     the arena's side along z, metres
+     * @param clearance how near an obstacle the robot's centre should not come, metres (its radius and a margin)
+     * @param memoryMs  how long an obstacle seen once stays on the map, simulated ms
+     */
+    RouteMap(double width, double depth, double clearance, long memoryMs) {
+        if (!(width > CELL) || !(depth > CELL) || !(clearance >= 0) || memoryMs <= 0) {
+            throw new IllegalArgumentException("route map needs an arena over " + CELL + " m a side, a clearance >= 0 and a memory > 0, got "
+                    + width + " x " + depth + ", " + clearance + ", " + memoryMs);
+        }
+        halfW = width / 2;
+        halfD = depth / 2;
+        cols = (int) Math.ceil(width / CELL);
+        rows = (int) Math.ceil(depth / CELL);
+        this.clearance = clearance;
+        this.memoryMs = memoryMs;
+        seenAt = new long[cols * rows];
+        Arrays.fill(seenAt, NEVER);
+    }
+
+    /** An obstacle's surface seen at (x, z) at simulated time {@code nowMs}. */
+    void obstacle(double x, double z, long nowMs) {
+        int c = cell(x, z);
+        if (c >= 0) {
+            seenAt[c] = nowMs;
+        }
+    }
+
+    /** The robot's centre stands at (x, z): nothing is there now (a box seen there has moved). */
+    void standing(double x, double z) {
+        int c = cell(x, z);
+        if (c >= 0) {
+            seenAt[c] = NEVER;
+        }
+    }
+
+    /** {@return whether an obstacle is on the map at (x, z) at {@code nowMs}} */
+    boolean blocked(double x, double z, long nowMs) {
+        int c = cell(x, z);
+        return c >= 0 && live(c, nowMs);
+    }
+
+    /** {@return the route of the last {@link #waypoint} call, cell centres {x, z} from the robot to the target (empty: the straight way)} */
+    List<double[]> lastRoute() {
+        return lastRoute;
+    }
+
+    /**
+     * {@return the point to head for, {x, z}, from the robot at (x, z) to the target (tx, tz)}: the
+     * target when the straight way is free or no route is known, else the farthest cell of the
+     * route seen in a straight line.
+     */
+    double[] waypoint(double x, double z, double tx, double tz, long nowMs) {
+        int start = cell(x, z), goal = cell(tx, tz);
+        lastRoute = List.of();
+        if (start < 0 || goal < 0 || start == goal) {
+            return new double[] {tx, tz};
+        }
+        double[] near = nearCosts(nowMs);
+        if (clear(x, z, tx, tz, near, nowMs)) {
+            return new double[] {tx, tz};
+        }
+        List<Integer> route = plan(start, goal, near, nowMs);
+        if (route.isEmpty()) {
+            return new double[] {tx, tz};
+        }
+        List<double[]> points = new ArrayList<>();
+        for (int c : route) {
+            points.add(centre(c));
+        }
+        points.set(points.size() - 1, new double[] {tx, tz});
+        lastRoute = Collections.unmodifiableList(points);
+        int ahead = Math.min(points.size() - 1, (int) Math.round(LOOKAHEAD / CELL));
+        for (int i = ahead; i > 0; i--) {
+            double[] p = points.get(i);
+            if (clear(x, z, p[0], p[1], near, nowMs)) {
+                return p;
+            }
+        }
+        return points.get(Math.min(1, points.size() - 1));
+    }
+
+    private boolean live(int c, long nowMs) {
+        return seenAt[c] != NEVER && nowMs - seenAt[c] < memoryMs;
+    }
+
+    /**
+     * Per cell, the extra cost of crossing it: {@link #NEAR_COST} within the clearance of an obstacle or the
+     * boundary, {@link #BESIDE_COST} within {@link #BESIDE} times the clearance, else 0.
+     */
+    private double[] nearCosts(long nowMs) {
+        double[] near = new double[cols * rows];
+        double beside = BESIDE * clearance;
+        int r = (int) Math.ceil(beside / CELL);
+        for (int i = 0; i < cols; i++) {
+            for (int j = 0; j < rows; j++) {
+                double[] p = centre(index(i, j));
+                double edge = Math.min(halfW - Math.abs(p[0]), halfD - Math.abs(p[1]));
+                if (edge < beside) {
+                    raise(near, index(i, j), edge < clearance ? NEAR_COST : BESIDE_COST);
+                }
+                if (!live(index(i, j), nowMs)) {
+                    continue;
+                }
+                for (int di = -r; di <= r; di++) {
+                    for (int dj = -r; dj <= r; dj++) {
+                        int a = i + di, b = j + dj;
+                        double d = Math.hypot(di, dj) * CELL;
+                        if (a >= 0 && b >= 0 && a < cols && b < rows && d <= beside) {
+                            raise(near, index(a, b), d <= clearance ? NEAR_COST : BESIDE_COST);
+                        }
+                    }
+                }
+            }
+        }
+        return near;
+    }
+
+    private static void raise(double[] near, int c, double cost) {
+        near[c] = Math.max(near[c], cost);
+    }
+
+    /**
+     * Whether the straight way from (x, z) to (tx, tz) meets no obstacle and no cell beside one, but in
+     * the robot's own cell and near the target (it may lie by a wall). Near the robot too, a point
+     * just past the end of a wall seen, along it, would count as clear and the robot turn into the
+     * part of the wall not seen yet, again at every step.
+     */
+    private boolean clear(double x, double z, double tx, double tz, double[] near, long nowMs) {
+        double length = Math.hypot(tx - x, tz - z);
+        int steps = (int) Math.ceil(length / (CELL / 2));
+        for (int k = 0; k <= steps; k++) {
+            double f = steps == 0 ? 0 : (double) k / steps;
+            double px = x + f * (tx - x), pz = z + f * (tz - z);
+            int c = cell(px, pz);
+            if (c < 0) {
+                return false;
+            }
+            boolean atEnd = f * length <= CELL || (1 - f) * length <= clearance + CELL;
+            if (live(c, nowMs) && !(k == 0 || k == steps) || near[c] > 0 && !atEnd) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** A* over the 8-connected grid; blocked cells are walls, a diagonal step does not cut a blocked corner. */
+    private List<Integer> plan(int start, int goal, double[] near, long nowMs) {
+        int n = cols * rows;
+        double[] cost = new double[n];
+        Arrays.fill(cost, Double.POSITIVE_INFINITY);
+        int[] from = new int[n];
+        Arrays.fill(from, -1);
+        boolean[] done = new boolean[n];
+        PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
+        cost[start] = 0;
+        open.add(new double[] {heuristic(start, goal), start});
+        while (!open.isEmpty()) {
+            int c = (int) open.poll()[1];
+            if (done[c]) {
+                continue;
+            }
+            if (c == goal) {
+                return trace(from, start, goal);
+            }
+            done[c] = true;
+            int ci = c % cols, cj = c / cols;
+            for (int di = -1; di <= 1; di++) {
+                for (int dj = -1; dj <= 1; dj++) {
+                    int a = ci + di, b = cj + dj;
+                    if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= cols || b >= rows) {
+                        continue;
+                    }
+                    int next = index(a, b);
+                    if (done[next] || (next != goal && live(next, nowMs))) {
+                        continue;
+                    }
+                    if (di != 0 && dj != 0 && (live(index(ci + di, cj), nowMs) || live(index(ci, cj + dj), nowMs))) {
+                        continue;
+                    }
+                    double g = cost[c] + (di != 0 && dj != 0 ? Math.sqrt(2) : 1) + near[next];
+                    if (g < cost[next]) {
+                        cost[next] = g;
+                        from[next] = c;
+                        open.add(new double[] {g + heuristic(next, goal), next});
+                    }
+                }
+            }
+        }
+        return List.of();
+    }
+
+    private List<Integer> trace(int[] from, int start, int goal) {
+        List<Integer> route = new ArrayList<>();
+        for (int c = goal; c != start; c = from[c]) {
+            route.add(c);
+        }
+        route.add(start);
+        Collections.reverse(route);
+        return route;
+    }
+
+    private double heuristic(int a, int b) {
+        return Math.hypot(a % cols - b % cols, a / cols - b / cols);
+    }
+
+    private int cell(double x, double z) {
+        int i = (int) Math.floor((x + halfW) / CELL), j = (int) Math.floor((z + halfD) / CELL);
+        return i < 0 || j < 0 || i >= cols || j >= rows ? -1 : index(i, j);
+    }
+
+    private int index(int i, int j) {
+        return j * cols + i;
+    }
+
+    private double[] centre(int c) {
+        return new double[] {-halfW + (c % cols + 0.5) * CELL, -halfD + (c / cols + 0.5) * CELL};
+    }
+}

@@ -1,0 +1,89 @@
+package jacabot.experiments;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class RouteMapTest {
+    /** A 2 m square arena, the Khepera's clearance, obstacles remembered for a minute. */
+    private final RouteMap map = new RouteMap(2, 2, 0.04, 60_000);
+
+    /** A wall seen along x = 0 from z = -1 to 1, but for a doorway from {@code from} to {@code to}. */
+    private void wallWithDoorway(double from, double to, long nowMs) {
+        for (double z = -1; z <= 1; z += 0.01) {
+            if (z < from || z > to) {
+                map.obstacle(0.001, z, nowMs);
+            }
+        }
+    }
+
+    @Test
+    void theStraightWayWhenNothingIsInIt() {
+        assertArrayEquals(new double[] {0.8, 0.5}, map.waypoint(-0.8, -0.5, 0.8, 0.5, 0), 1e-9);
+        assertTrue(map.lastRoute().isEmpty());
+    }
+
+    @Test
+    void throughTheDoorwayOfAWallSeenAcrossTheArena() {
+        wallWithDoorway(0.50, 0.65, 0);
+        double[] w = map.waypoint(-0.6, -0.5, 0.6, -0.5, 1000);
+        List<double[]> route = map.lastRoute();
+        assertFalse(route.isEmpty());
+        double[] crossing = route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow();
+        assertTrue(crossing[1] > 0.5 && crossing[1] < 0.65, "the route crosses the wall in the doorway, at z = " + crossing[1]);
+        // the first point to head for is on the robot's side, towards the doorway
+        assertTrue(w[0] < 0.0 + RouteMap.CELL && w[1] > -0.5, "heads for the doorway first: " + w[0] + ", " + w[1]);
+        // and from the doorway on, the straight way to the target
+        assertArrayEquals(new double[] {0.6, -0.5}, map.waypoint(0.06, 0.575, 0.6, -0.5, 2000), 1e-9);
+    }
+
+    @Test
+    void aBoxThatMovedIsForgottenWhereTheRobotStandsOrOnceItsMemoryIsOver() {
+        for (double z = -0.05; z <= 0.05; z += 0.01) {
+            map.obstacle(0, z, 0);
+        }
+        assertTrue(map.blocked(0, 0, 1000));
+        double[] w = map.waypoint(-0.5, 0, 0.5, 0, 1000);
+        assertTrue(Math.abs(w[1]) > 0.02, "round the box, not through it: " + w[1]);
+        // the robot's centre stood where the box was: the box has moved
+        map.standing(0, 0);
+        assertFalse(map.blocked(0, 0, 1000));
+        // the rest of it is forgotten a minute after it was last seen
+        assertTrue(map.blocked(0, 0.04, 59_999));
+        assertArrayEquals(new double[] {0.5, 0}, map.waypoint(-0.5, 0, 0.5, 0, 60_000), 1e-9);
+        assertFalse(map.blocked(0, 0.04, 60_000));
+    }
+
+    @Test
+    void noRouteKnownGivesTheTargetItself() {
+        // the target enclosed by obstacles seen all round it
+        for (double a = 0; a < 2 * Math.PI; a += 0.02) {
+            map.obstacle(0.5 + 0.1 * Math.cos(a), 0.5 + 0.1 * Math.sin(a), 0);
+        }
+        assertArrayEquals(new double[] {0.5, 0.5}, map.waypoint(-0.5, -0.5, 0.5, 0.5, 100), 1e-9);
+        assertTrue(map.lastRoute().isEmpty());
+    }
+
+    @Test
+    void aWallWithoutADoorwaySeenIsGoneRoundAtItsUnseenEnd() {
+        // only the part of the wall the robot has met: z from -0.6 to 0.3
+        for (double z = -0.6; z <= 0.3; z += 0.01) {
+            map.obstacle(0.001, z, 0);
+        }
+        map.waypoint(-0.4, 0, 0.4, 0, 100);
+        double[] crossing = map.lastRoute().stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow();
+        assertTrue(crossing[1] > 0.3, "round the nearer unseen end, at z = " + crossing[1]);
+    }
+
+    @Test
+    void badArenasAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> new RouteMap(0, 2, 0.04, 1000));
+        assertThrows(IllegalArgumentException.class, () -> new RouteMap(2, 2, 0.04, 0));
+        assertEquals(0.0, new RouteMap(1, 1, 0, 1).lastRoute().size());
+    }
+}
