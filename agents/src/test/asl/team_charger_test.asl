@@ -108,3 +108,33 @@ mock_operation(_, ok).
        -atCharger.
 
 +!pretendDetour <- !detour(1).
+
+// a delivery under way nearer the storage point than the free charger ends first (deliverFirst)
+@[test]
++!test_a_delivery_near_the_storage_point_ends_before_the_trip
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked;
+       -chargerQueue(_); +chargerQueue([]); +~delivered;
+       -location(_, _, _); +location(0.3, 0, -0.3); -+battery(470);      // 0.16 m from the storage point
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       -~delivered; -lowBattery; !!perceive(lowBattery);                  // delivered: the trip
+       !until(charging, 3000);
+       !assert_true(charging).
+
+// the charger tried again after a timeout: an obstacle met while the robot re-aligns (heading's
+// detour drops every intention with a balance goal) must not drop the trip itself
+@[test]
++!test_an_obstacle_while_trying_the_charger_again_keeps_the_trip
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -chargerQueue(_); +chargerQueue([]); -+tripTimeout(400); -+delta(300); -obstacle(_);
+       -location(_, _, _); +location(0.3, 0, 0.2); -+orientation(0); -+battery(470);
+       -lowBattery; !!perceive(lowBattery);
+       !until(.intend(escape), 5000);                             // the charger not reached in time
+       !until(not .intend(escape), 5000);                         // escaped: re-aligning to the charger
+       .wait(100);
+       !!perceive(obstacle(true));                                // an obstacle on the way
+       .wait(500);
+       !assert_true(.intend(rechargeTrip(0.3, 0, 0.2, 0)));       // the trip goes on
+       -obstacle(true); -+tripTimeout(150000); -+orientation(90);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); .drop_desire(detour(_)); -charging.

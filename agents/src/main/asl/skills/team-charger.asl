@@ -93,7 +93,7 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 @chargerTurnYielded
 -!reachCharger : yieldedCharger
     <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
-       !escape; !computeGap; !balance; !reachCharger.
+       !escape; !computeGap; !!balance; !reachCharger.
 
 // on the charger, a detour begun on the way there is over: it went on (forward, re-align, cruise)
 // and drove the robot off the charger mid-charge, its turn held, until its battery ran empty
