@@ -138,3 +138,21 @@ mock_operation(_, ok).
        !assert_true(.intend(rechargeTrip(0.3, 0, 0.2, 0)));       // the trip goes on
        -obstacle(true); -+tripTimeout(150000); -+orientation(90);
        .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); .drop_desire(detour(_)); -charging.
+
+// the robot whose turn it is but that comes no nearer the charger lets one waiting there go first
+@[test]
++!test_a_turn_holder_that_comes_no_nearer_lets_the_one_waiting_go_first
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -+chargerProgressTime(800); -+tripTimeout(150000);
+       -chargerQueue(_); +chargerQueue([]); -chargerWaiting(_); +chargerWaiting([]);
+       -location(_, _, _); +location(-0.2, 0, 0.3); -+orientation(90); -+battery(470);   // near the charger
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.03)), 5000);             // its turn: on to the charger
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]);
+       -chargerWaiting(_); +chargerWaiting([300]);                 // another robot waits there
+       .wait(200);
+       !assert_false(mock_called(yieldCharger));
+       !until(mock_called(yieldCharger), 3000);                   // no nearer after 0.8 s: it yields
+       !assert_true(mock_called(yieldCharger));
+       -+chargerProgressTime(12000); -chargerWaiting(_); +chargerWaiting([]);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging; -yieldedCharger; -waitingCharger.
