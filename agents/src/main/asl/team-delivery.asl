@@ -4,8 +4,7 @@
 // queue). The team's skills come first: team-storage (one robot at a time at the storage point),
 // team-places (where the teammates are), team-way (who gives way to whom), team-follow (a
 // following distance on the same way), team-claims (who
-// fetches which cylinder), team-charger (the charger by need, one at a time), team-sweep (each
-// robot's share of the sweep's lanes); the other skills
+// fetches which cylinder), team-charger (the charger by need, one at a time); the other skills
 // are experiment 4's. From the world file:
 // storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
@@ -26,7 +25,6 @@ deliverFirst(300).
 { include("skills/team-follow.asl") }
 { include("skills/team-claims.asl") }
 { include("skills/team-charger.asl") }
-{ include("skills/team-sweep.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }
