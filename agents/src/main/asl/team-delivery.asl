@@ -12,6 +12,10 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // recharged, a robot goes on from the charger (recharge-trip): the way back to the point marked
 // when the battery went low crossed the arena empty, and could end in the storage area's corner
 resumeAtCharger.
+// a delivery under way nearer the storage point than the charger ends first (recharge-trip) while the
+// battery less 300 J covers the way on to the charger: a trip begun in the storage area left the
+// robot believing itself in it, halted and blind, against a wall (team world 2, four robots)
+deliverFirst(300).
 
 !start.
 

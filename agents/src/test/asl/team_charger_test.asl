@@ -108,3 +108,51 @@ mock_operation(_, ok).
        -atCharger.
 
 +!pretendDetour <- !detour(1).
+
+// a delivery under way nearer the storage point than the free charger ends first (deliverFirst)
+@[test]
++!test_a_delivery_near_the_storage_point_ends_before_the_trip
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked;
+       -chargerQueue(_); +chargerQueue([]); +~delivered;
+       -location(_, _, _); +location(0.3, 0, -0.3); -+battery(470);      // 0.16 m from the storage point
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       -~delivered; -lowBattery; !!perceive(lowBattery);                  // delivered: the trip
+       !until(charging, 3000);
+       !assert_true(charging).
+
+// the charger tried again after a timeout: an obstacle met while the robot re-aligns (heading's
+// detour drops every intention with a balance goal) must not drop the trip itself
+@[test]
++!test_an_obstacle_while_trying_the_charger_again_keeps_the_trip
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -chargerQueue(_); +chargerQueue([]); -+tripTimeout(400); -+delta(300); -obstacle(_);
+       -location(_, _, _); +location(0.3, 0, 0.2); -+orientation(0); -+battery(470);
+       -lowBattery; !!perceive(lowBattery);
+       !until(.intend(escape), 5000);                             // the charger not reached in time
+       !until(not .intend(escape), 5000);                         // escaped: re-aligning to the charger
+       .wait(100);
+       !!perceive(obstacle(true));                                // an obstacle on the way
+       .wait(500);
+       !assert_true(.intend(rechargeTrip(0.3, 0, 0.2, 0)));       // the trip goes on
+       -obstacle(true); -+tripTimeout(150000); -+orientation(90);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); .drop_desire(detour(_)); -charging.
+
+// the robot whose turn it is but that comes no nearer the charger lets one waiting there go first
+@[test]
++!test_a_turn_holder_that_comes_no_nearer_lets_the_one_waiting_go_first
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -+chargerProgressTime(800); -+tripTimeout(150000);
+       -chargerQueue(_); +chargerQueue([]); -chargerWaiting(_); +chargerWaiting([]);
+       -location(_, _, _); +location(-0.2, 0, 0.3); -+orientation(90); -+battery(470);   // near the charger
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.03)), 5000);             // its turn: on to the charger
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]);
+       -chargerWaiting(_); +chargerWaiting([300]);                 // another robot waits there
+       .wait(200);
+       !assert_false(mock_called(yieldCharger));
+       !until(mock_called(yieldCharger), 3000);                   // no nearer after 0.8 s: it yields
+       !assert_true(mock_called(yieldCharger));
+       -+chargerProgressTime(12000); -chargerWaiting(_); +chargerWaiting([]);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging; -yieldedCharger; -waitingCharger.

@@ -65,3 +65,14 @@ mock_operation(_, ok).
        !until(not storageTurnMine, 3000);                        // the second turn's watch ends it
        !assert_false(storageTurnMine);
        -+storageTurnLimit(60000).
+
+@[test]
++!test_no_progress_after_the_put_down_turns_the_robot_to_the_arenas_centre
+    <- !forget_calls; -delivering; -picking; -waitingStorage; -+orientation(90);
+       +insideArea; -location(_, _, _); +location(0.47, 0, -0.47);   // beyond the point, in the corner
+       !!perceive(stuck);
+       !until(mock_called(forward), 5000);
+       !assert_true(mock_called(computeAngle(0.47, -0.47, 0, 0, _)));   // towards the centre
+       !assert_true(desired(90));
+       !assert_true(mock_called(forward));
+       -insideArea; -stuck.

@@ -13,7 +13,8 @@
 // - On its trip a robot queues by need (requestCharger(Energy)), goes near the charger (within
 //   chargerQueueRadius, per axis) and there waits its turn (awaitCharger), standing still out of
 //   the way of the robot on the charger, then goes on to it. The robot whose turn it is but that
-//   does not reach the charger within chargerTurnLimit lets the next one go first (yieldCharger).
+//   does not reach the charger within chargerTurnLimit, or comes no nearer it for chargerProgressTime
+//   while another robot waits at the charger, lets the next one go first (yieldCharger).
 // - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
 //   to recharge-trip's chargedLevel when nobody waits), and already at chargerShareFloor when a
 //   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
@@ -21,7 +22,9 @@
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
-chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger
+chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger ...
+chargerProgressTime(12000).  // ... or to come chargerProgressStep nearer it while another robot waits there
+chargerProgressStep(0.05).   // m
 chargerLeaveDistance(0.3).   // m from the charger where a recharged robot leaves the queue (holding its turn,
                              // it has the right of way through the robots waiting there)
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
@@ -42,6 +45,7 @@ chargerShareFloor(600).      // J: and at this one when a robot waiting at the c
 halted :- waitingCharger.
 waitingTurn :- waitingCharger.
 chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
+chargerDistance(D) :- location(X, _, Z) & charger(Cx, Cz) & D = math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)).
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
 // the energy a booked robot keeps for its trip: the reserve, the way (as the crow flies) and the
 // robots ahead of it in the queue
@@ -84,7 +88,21 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 @queueForChargerFailed -!queueForCharger <- -waitingCharger.
 
 // the turn given to a robot that does not reach the charger in time goes to the next one
-@watchChargerTurn +!watchChargerTurn : chargerTurnLimit(T) <- .wait(T); !checkChargerTurn.
+// ... and so does the one that has come no nearer the charger by chargerProgressStep for
+// chargerProgressTime while a robot waits at the charger: a turn held the whole chargerTurnLimit by
+// a robot boxed in beside the charger kept the ones waiting there for 80 s (team world 3, four robots)
+@watchChargerTurn
++!watchChargerTurn : chargerTurnLimit(T) & .system_time(Now) & chargerDistance(D) <- !watchChargerTurn(Now + T, D, Now).
+@watchChargerTurnBlind +!watchChargerTurn : chargerTurnLimit(T) <- .wait(T); !checkChargerTurn.
+@chargerTurnUsed +!watchChargerTurn(_, _, _) : atCharger | not charging.
+@chargerTurnNearer
++!watchChargerTurn(Until, Best, _) : chargerDistance(D) & chargerProgressStep(S) & D < Best - S & .system_time(Now)
+    <- !watchChargerTurn(Until, D, Now).
+@chargerTurnOverdue +!watchChargerTurn(Until, _, _) : .system_time(Now) & Now >= Until <- !checkChargerTurn.
+@chargerTurnStalled
++!watchChargerTurn(_, _, Since) : chargerWaiting([_ | _]) & chargerProgressTime(P) & .system_time(Now) & Now - Since >= P
+    <- !checkChargerTurn.
+@chargerTurnWatched +!watchChargerTurn(Until, Best, Since) <- .wait(500); !watchChargerTurn(Until, Best, Since).
 @yieldChargerTurn
 +!checkChargerTurn : charging & not atCharger & .intend(reachCharger) & .my_name(Me) & chargerQueue([Me, _ | _])
     <- .print("Charger not reached in time: the next robot goes first"); +yieldedCharger; yieldCharger;
@@ -93,7 +111,7 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 @chargerTurnYielded
 -!reachCharger : yieldedCharger
     <- -yieldedCharger; stop; !queueForCharger; .print("The charger is mine again"); !!watchChargerTurn;
-       !escape; !computeGap; !balance; !reachCharger.
+       !escape; !computeGap; !!balance; !reachCharger.
 
 // on the charger, a detour begun on the way there is over: it went on (forward, re-align, cruise)
 // and drove the robot off the charger mid-charge, its turn held, until its battery ran empty

@@ -13,8 +13,9 @@ storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
 // Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn.
-// Reads: delivering, insideArea, onErrand (delivery, recharge), storagePoint(X, Z) (the world).
-// Needs: team-way (!standStill), delivery (computeGap, balance), the board focused (team-claims). Include it first (its
+// Reads: delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
+// location; the middleware's stuck.
+// Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
 // delivery, heading and avoidance: its plans for obstacles while waiting come first.
 
@@ -57,6 +58,16 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 @storageNotReached -delivering : storageTurnMine & not insideArea <- !giveStorageTurn.
 @storageChargingFirst +charging : storageTurnMine & not insideArea <- !giveStorageTurn.
 @storageWaitCharging +charging : waitingStorage <- storageDone; -waitingStorage.
+
+// a way out of the storage corner: after the put-down the robot turns back and drives out blind
+// (delivery: no distance sensing in the area, no progress ignored there); one that came in at a
+// slant, or was pushed on its way in, faced a wall of the corner and drove into it until its
+// battery ran low (team world 2, four robots: 220 s). No progress there after the put-down: it
+// turns to the arena's centre, away from the walls, and drives on out
+@stuckLeavingStorage
++stuck : insideArea & not delivering & not picking & not waitingStorage & location(X, _, Z)
+    <- println("No progress leaving the storage area: out towards the arena's centre");
+       computeAngle(X, Z, 0, 0, A); -+desired(A); !balance; forward.
 
 // while waiting for its turn the robot stands still: obstacles (a robot leaving the area) and the
 // missing progress are no reason to move

@@ -15,7 +15,8 @@ import java.util.List;
  * when it cannot reach the charger; a head still on its way is overtaken by a needier robot. A
  * robot waiting at the charger ({@code awaitCharger}) ranks before every robot that booked its
  * place from afar and has not arrived yet, whatever their needs: it does not wait while another
- * travels to a charger that stands free.
+ * travels to a charger that stands free. The robots waiting at the charger are served in the order
+ * they arrived, so that none waits there while needier ones arriving after it go first.
  *
  * <p>Observable properties: {@code chargerQueue(List)}, the agents in order (atoms), the head
  * first; {@code chargerWaiting(List)}, the energies of the robots waiting at the charger behind the

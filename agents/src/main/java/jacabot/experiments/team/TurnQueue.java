@@ -13,17 +13,22 @@ import java.util.List;
  * before it: a robot on the charger is never sent off for a needier one. A head that has not taken
  * its turn yet (a robot still on its way) is overtaken by a needier arrival.
  * An agent that has {@linkplain #arrive arrived} (a robot waiting at the place) ranks before every
- * one that has not (a robot that booked its place from afar and still has to travel), by need among
- * each group: a needier robot far away does not keep the ones standing at the charger waiting while
- * it travels.
+ * one that has not (a robot that booked its place from afar and still has to travel): a needier
+ * robot far away does not keep the ones standing at the charger waiting while it travels. Those not
+ * arrived are ordered by need, those arrived by their arrival: a robot standing at the charger is
+ * not overtaken by needier robots arriving after it (one waited 141 s there while two needier ones
+ * went first, team world 3 with four robots; a robot waiting stands still and spends 0.5 W).
  * Not an artifact: the team's artifacts keep one each and publish it as an observable property
  * after every change.
  */
 final class TurnQueue {
     private record Place(AgentId agent, double need, boolean arrived) {
-        /** Whether this place goes before {@code other} (arrived first, then the lower need). */
+        /**
+         * Whether this place, placed now, goes before {@code other}: arrived first; among those not
+         * arrived the lower need; among those arrived nobody (the order of arrival).
+         */
         boolean before(Place other) {
-            return arrived != other.arrived ? arrived : need < other.need;
+            return arrived != other.arrived ? arrived : !arrived && need < other.need;
         }
     }
 

@@ -123,7 +123,8 @@ class ChargerQueueTest {
 
     /**
      * A robot waiting at the charger goes before the robots that booked from afar, however needy:
-     * it does not wait while they travel; among those waiting, by need. The energies of the
+     * it does not wait while they travel; those waiting in the order they arrived, a needier one
+     * arriving later behind them (else a robot waiting there was overtaken again and again). The energies of the
      * robots waiting behind the holder are published for it.
      */
     @Test
@@ -147,15 +148,15 @@ class ChargerQueueTest {
             ok(ws, d, "charger", "requestCharger", 300.0);        // d arrives later, needier than c
             CompletableFuture<OpOutcome> dWaits = Ops.start(ws, d, "charger", "awaitCharger");
             assertFalse(completesSoon(dWaits));
-            assertEquals(List.of(List.of(List.of(a, d, c, b))), sees.values("chargerQueue"), "by need among those waiting");
-            assertEquals(List.of(List.of(List.of(300.0, 400.0))), sees.values("chargerWaiting"));
+            assertEquals(List.of(List.of(List.of(a, c, d, b))), sees.values("chargerQueue"), "in the order of arrival");
+            assertEquals(List.of(List.of(List.of(400.0, 300.0))), sees.values("chargerWaiting"));
             ok(ws, b, "charger", "requestCharger", 50.0);         // b still on its way: behind them
-            assertEquals(List.of(List.of(List.of(a, d, c, b))), sees.values("chargerQueue"));
+            assertEquals(List.of(List.of(List.of(a, c, d, b))), sees.values("chargerQueue"));
 
             ok(ws, a, "charger", "leaveCharger");
-            assertTrue(dWaits.join().succeeded(), "d holds the charger");
-            assertFalse(completesSoon(cWaits), "c waits for d");
-            assertEquals(List.of(List.of(List.of(400.0))), sees.values("chargerWaiting"));
+            assertTrue(cWaits.join().succeeded(), "c holds the charger");
+            assertFalse(completesSoon(dWaits), "d waits for c");
+            assertEquals(List.of(List.of(List.of(300.0))), sees.values("chargerWaiting"));
         }
     }
 }
