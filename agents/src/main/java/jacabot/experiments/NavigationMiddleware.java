@@ -28,8 +28,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     private boolean waitingExit;
     /** The map of obstacles met and the route to a target point (not in the thesis), once the agent asked for it. */
     private RouteMap routes;
-    private double[] here;
-    private double compass = Double.NaN;
 
     @Override
     protected void defineProperties() {
@@ -93,6 +91,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
      */
     @OPERATION
     void routeTo(double tx, double tz, OpFeedbackParam<Double> wx, OpFeedbackParam<Double> wz) {
+        double[] here = position();
         double[] w = routes == null || here == null ? new double[] {tx, tz} : routes.waypoint(here[0], here[1], tx, tz, simTimeMs());
         double x = Math.round(w[0] * 1000) / 1000.0, z = Math.round(w[1] * 1000) / 1000.0;
         wx.set(x);
@@ -137,6 +136,8 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             return; // no map asked for: nothing more per reading
         }
         Double bearing = SENSOR_BEARING.get(kind);
+        double[] here = position();
+        double compass = heading();
         if (bearing == null || here == null || Double.isNaN(compass) || !(value > MAP_LEVEL)) {
             return;
         }
@@ -157,7 +158,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             case GPS:
                 double[] c = info.getCoord();
                 if (routes != null) {
-                    here = new double[] {c[0], c[2]};
                     routes.standing(c[0], c[2]);
                 }
                 checkProgress(c[0], c[2]);
@@ -171,10 +171,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             case COMPASS:
                 double[] n = info.getCoord();
                 noteCompass(n);
-                if (routes != null) {
-                    compass = orientation(n);
-                }
-                getObsProperty("orientation").updateValue(Math.round(orientation(n) * 10) / 10.0);
+                getObsProperty("orientation").updateValue(Math.round(heading() * 10) / 10.0);
                 break;
             default:
                 mapReading(kind, info.getVal());

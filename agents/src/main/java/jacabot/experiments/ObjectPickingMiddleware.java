@@ -115,6 +115,16 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         heading = orientation(n);
     }
 
+    /** {@return the last GPS position (x, z), or null before the first} */
+    protected double[] position() {
+        return position;
+    }
+
+    /** {@return the last compass heading as the thesis' orientation (degrees), NaN before the first} */
+    protected double heading() {
+        return heading;
+    }
+
     private void sight(SensorInfo camera) {
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
