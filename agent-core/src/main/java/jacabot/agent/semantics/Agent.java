@@ -15,7 +15,6 @@ import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
-import java.util.PriorityQueue;
 import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -44,17 +43,13 @@ public final class Agent {
     private final ReasoningCycle cycle = new ReasoningCycle(this);
     private final Map<String, InternalAction> internalActions;
     private final ArithEvaluator arith = new ArithEvaluator(this);
-    private final ConcurrentLinkedQueue<Runnable> beginOfCycle = new ConcurrentLinkedQueue<>();
-    private final PriorityQueue<Timer> timers = new PriorityQueue<>();
-    /** Whether {@code timers} may hold a timer: every cycle checks it without taking the lock. */
-    private volatile boolean hasTimers;
+    private final CycleTasks cycleTasks = new CycleTasks();
     private final Set<Literal> perceptBeliefs = new HashSet<>();
     private final AslParser parser;
     private Random random;
     private long freshSerial;
     /** Intention numbers: one counter for the whole system, as Jason's is one per JVM. */
     private AtomicInteger intentionSerial = new AtomicInteger();
-    private long timerSerial;
     private int messageSerial;
     private long cycles;
     private volatile boolean stopped;
@@ -76,13 +71,6 @@ public final class Agent {
 
     UnhandledFailureListener unhandledFailureListener() {
         return unhandledFailureListener;
-    }
-
-    private record Timer(long due, long seq, Runnable task) implements Comparable<Timer> {
-        @Override
-        public int compareTo(Timer o) {
-            return due != o.due ? Long.compare(due, o.due) : Long.compare(seq, o.seq);
-        }
     }
 
     public Agent(String name, AgentArch arch, Map<String, InternalAction> internalActions, long seed,
@@ -181,7 +169,7 @@ public final class Agent {
             return !circumstance.hasFeedbackAction() && !circumstance.hasMessage();
         }
         return !circumstance.hasEvent() && !circumstance.hasRunningIntention() && !circumstance.hasFeedbackAction()
-                && !circumstance.hasMessage() && beginOfCycle.isEmpty() && arch.canSleep();
+                && !circumstance.hasMessage() && cycleTasks.isEmpty() && arch.canSleep();
     }
 
     /** Posts an external event from any thread (e.g. {@code +jag_shutting_down(T)}); it joins E at the next sense. */
@@ -203,7 +191,7 @@ public final class Agent {
                 && (circumstance.hasEvent() || circumstance.hasRunningIntention())) {
             return false;
         }
-        if (!beginOfCycle.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()
+        if (!cycleTasks.isEmpty() || circumstance.hasMessage() || circumstance.hasFeedbackAction()
                 || !arch.canSleep()) {
             return false;
         }
@@ -217,9 +205,8 @@ public final class Agent {
     }
 
     /** {@return when the earliest timer is due, or {@code Long.MAX_VALUE}} */
-    public synchronized long nextTimerDue() {
-        Timer t = timers.peek();
-        return t == null ? Long.MAX_VALUE : t.due;
+    public long nextTimerDue() {
+        return cycleTasks.nextDue();
     }
 
     public long cycles() {
@@ -236,46 +223,22 @@ public final class Agent {
 
     /** Schedules a task for the start of the next cycle's deliberation (any thread). */
     public void runAtBeginOfNextCycle(Runnable task) {
-        beginOfCycle.add(task);
+        cycleTasks.add(task);
         arch.wake();
     }
 
     void runBeginOfCycleTasks() {
-        Runnable r;
-        while ((r = beginOfCycle.poll()) != null) {
-            r.run();
-        }
+        cycleTasks.runAll();
     }
 
     /** Runs {@code task} at the start of a cycle once the clock reaches {@code due} (ms). */
-    public synchronized void schedule(long due, Runnable task) {
-        timers.add(new Timer(due, timerSerial++, task));
-        hasTimers = true;
+    public void schedule(long due, Runnable task) {
+        cycleTasks.schedule(due, task);
     }
 
     /** Fires the timers that are due: their tasks run at the start of this cycle's deliberation. */
     void fireDueTimers() {
-        if (!hasTimers) {
-            return;
-        }
-        synchronized (this) {
-            if (timers.isEmpty()) {
-                hasTimers = false;
-                return;
-            }
-        }
-        long now = clock().millis();
-        while (true) {
-            Timer t;
-            synchronized (this) {
-                t = timers.peek();
-                if (t == null || t.due > now) {
-                    return;
-                }
-                timers.poll();
-            }
-            beginOfCycle.add(t.task);
-        }
+        cycleTasks.fireDue(clock());
     }
 
     // ---- architecture callbacks (thread-safe) ------------------------------------------------
