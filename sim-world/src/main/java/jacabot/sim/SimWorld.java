@@ -81,13 +81,17 @@ public final class SimWorld {
         return engine.spec().seed();
     }
 
-    /** {@return the simulated time in ms} */
-    public synchronized long timeMs() {
+    /**
+     * {@return the simulated time in ms} Read without the world's lock: a thread that stamps a
+     * console line with it may hold the console's lock, which a step's listener also takes while
+     * the world's lock is held (a fail-safe's warning), and the two would wait for each other.
+     */
+    public long timeMs() {
         return engine.nowMs();
     }
 
-    /** {@return the simulated time in seconds} */
-    public synchronized double time() {
+    /** {@return the simulated time in seconds} Without the lock, as {@link #timeMs}. */
+    public double time() {
         return engine.nowMs() / 1000.0;
     }
 

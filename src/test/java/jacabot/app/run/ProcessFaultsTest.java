@@ -289,9 +289,11 @@ class ProcessFaultsTest {
                 }
             });
             p.destroy(); // SIGTERM
-            assertTrue(p.waitFor(30, TimeUnit.SECONDS), "SIGTERM did not end the run");
+            // the run's shutdown hook gives it 10 s to write; a dump after 8 s shows what it waits for
+            String dump = p.waitFor(8, TimeUnit.SECONDS) ? "" : threads(p);
+            assertTrue(p.waitFor(30, TimeUnit.SECONDS), () -> "SIGTERM did not end the run; its threads after 8 s:\n" + dump);
             String text = Files.readString(said);
-            assertTrue(text.contains("Stopped by a signal at t="), text);
+            assertTrue(text.contains("Stopped by a signal at t="), () -> text + "\nits threads 8 s after the signal:\n" + dump);
             for (String f : List.of("summary.json", "summary.txt", "event-log.txt", "trajectory.png", "steps.jsonl.gz",
                     "console.txt")) {
                 assertTrue(Files.exists(out.resolve(f)), f + " written: " + text);
@@ -300,6 +302,19 @@ class ProcessFaultsTest {
             assertTrue(text.contains("Plots: not drawn after a signal; draw them with: jacabot plot " + out), text);
         } finally {
             p.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
+    }
+
+    /** {@return the thread dump of a process still running (jstack), to tell why it did not end} */
+    private static String threads(Process p) {
+        try {
+            Path jstack = Path.of(System.getProperty("java.home"), "bin", "jstack");
+            Process dump = new ProcessBuilder(jstack.toString(), Long.toString(p.pid())).redirectErrorStream(true).start();
+            String text = new String(dump.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            dump.waitFor(30, TimeUnit.SECONDS);
+            return text;
+        } catch (IOException | InterruptedException e) {
+            return "(no thread dump: " + e + ")";
         }
     }
 }

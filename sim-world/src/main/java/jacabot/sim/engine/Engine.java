@@ -27,7 +27,8 @@ public final class Engine {
     private final Map<String, RobotRuntime> robots = new LinkedHashMap<>();
     private final EventScheduler events;
     private final List<WorldListener> listeners = new CopyOnWriteArrayList<>();
-    private long nowMs;
+    /** Volatile: other threads read the clock without the world's lock (console time stamps, heartbeats). */
+    private volatile long nowMs;
 
     /** Builds the world of a checked spec. */
     public Engine(WorldSpec spec) {
