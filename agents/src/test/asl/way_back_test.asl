@@ -35,6 +35,13 @@ mock_operation(_, ok).
        -charging.
 
 @[test]
++!test_a_trail_blocked_by_obstacles_gone_round_on_it_is_left
+    <- !forget_calls; +charging; -+detours(12); !computeGap;
+       !assert_false(mock_called(trailTo(_, _, _, _)));
+       !assert_true(desired(24));
+       -charging; -+detours(0).
+
+@[test]
 +!test_a_trip_heads_for_its_target_until_a_wall_is_met
     <- !forget_calls; +delivering; -+detours(0); !computeGap;
        !assert_false(mock_called(trailTo(_, _, _, _)));
@@ -49,6 +56,7 @@ mock_operation(_, ok).
        !assert_true(onTrail & aim(0.2, -0.3));
        !assert_false(followingWall(_, _, _));
        -obstacle(true); -+detours(0);
+       !until(not onTrail, 1000);
        !assert_false(onTrail);                  // a new trip: the target first again
        -delivering.
 

@@ -10,29 +10,37 @@
 // Otherwise (no trail near the robot and the target) the target itself, as heading.asl.
 // Reads: targetPoint(X, Z), travelling (heading, delivery, recharge-trip); charging, charger(X, Z)
 // (recharge-trip, the world).
-// Beliefs: onTrail (this trip goes along the trail); routePlanning while on it (way-round's boundary
-// following stands aside), aim(X, Z) (heading's: the point headed for).
+// Beliefs: onTrail (this trip goes along the trail), trailSince(N) (heading's detours(N) when it began);
+// routePlanning while on it (way-round's boundary following stands aside), aim(X, Z) (heading's:
+// the point headed for).
 // Needs: a middleware with the GPS (NavigationMiddleware: keepTrail, trailTo), heading.asl. Include
 // it before way-round and delivery (its !aimAt and !wallMet plans come before theirs).
 
+// Parameters:
+trailDetours(12).   // obstacles gone round on the trail in one trip before it is taken for blocked (a box moved onto it)
 setUpGoal(setUpTrail).
 
 @setUpTrail +!setUpTrail <- keepTrail.
 
 // the way back from the charger: recharge-trip's target is the marked point, not the charger
 returning :- charging & targetPoint(X, Z) & charger(Cx, Cz) & (X \== Cx | Z \== Cz).
-routePlanning :- onTrail & travelling.
+// the trail is blocked on this trip once trailDetours obstacles were gone round on it (heading's
+// detours count the trip's; the way back starts at 0)
+trailSince(0).
+trailBlocked :- trailSince(D) & detours(N) & trailDetours(K) & N - D >= K.
+byTrail :- (onTrail | returning) & not trailBlocked.
+routePlanning :- onTrail & travelling & not trailBlocked.
 
-// a new trip: the trail only once a wall is met again (or on the way back)
-@trailNewTrip +detours(0) <- -onTrail.
+// a new trip (way-round's hook): the trail only once a wall is met again (or on the way back)
+@trailNewTrip +!tripBegun <- -onTrail; -+trailSince(0).
 
 @aimAlongTrail
-+!aimAt(Tx, Tz) : onTrail | returning <- trailTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).
++!aimAt(Tx, Tz) : byTrail <- trailTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).
 
 // a wall between the robot and its target: back along the trail when it knows a way there
 @wallMetTrail
-+!wallMet(Dist) : travelling & targetPoint(Tx, Tz) <- trailTo(Tx, Tz, Wx, Wz); !trailOrFollow(Tx, Tz, Wx, Wz, Dist).
++!wallMet(Dist) : travelling & targetPoint(Tx, Tz) & not trailBlocked <- trailTo(Tx, Tz, Wx, Wz); !trailOrFollow(Tx, Tz, Wx, Wz, Dist).
 @noTrailThere +!trailOrFollow(Tx, Tz, Tx, Tz, Dist) <- !startFollowing(Dist, _).
 @alongTrail
 +!trailOrFollow(_, _, _, _, _)
-    <- +onTrail; -avoiding; println("A wall between the robot and its target: the way it came"); !computeGap; !!balance.
+    <- +onTrail; ?detours(D); -+trailSince(D); -avoiding; println("A wall between the robot and its target: the way it came"); !computeGap; !!balance.

@@ -70,7 +70,9 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 
 /* Where obstacles were met on this trip (heading counts them: detours) */
 
-@newTrip +detours(0) <- .abolish(hitPoint(_, _)); .abolish(gaveUpSide(_)).
+@newTrip +detours(0) <- .abolish(hitPoint(_, _)); .abolish(gaveUpSide(_)); !tripBegun.
+// the hook for a skill that keeps something per trip (way-back.asl)
+@tripBegunHere +!tripBegun.
 @noteHit +detours(N) : N > 0 & location(X, _, Z) <- +hitPoint(X, Z).
 
 /* A wall met again: follow it */

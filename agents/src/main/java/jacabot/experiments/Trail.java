@@ -25,7 +25,7 @@ final class Trail {
     /** The trail must have passed this near the robot and the target to give a way, metres. */
     static final double REACH = 0.2;
     /** How far along the way the point to head for lies, metres of path. */
-    static final double AHEAD = 0.15;
+    static final double AHEAD = 0.25;
     /** How far the straight way to the point headed for may pass from the trail's points before it, metres. */
     static final double BEND = 0.025;
 
@@ -49,17 +49,18 @@ final class Trail {
      * the way's end lies within {@value #AHEAD} m of path; before a bend, the last point before it.
      */
     double[] waypoint(double x, double z, double tx, double tz) {
-        int start = nearest(x, z), goal = nearest(tx, tz);
-        if (start < 0 || goal < 0) {
+        int goal = nearest(tx, tz, REACH), start = nearest(x, z, REACH);
+        if (goal < 0 || start < 0) {
             return null;
         }
-        int[] from = shortestFrom(start, goal);
-        if (from == null) {
+        double[] toGoal = new double[points.size()];
+        int[] next = towards(goal, toGoal);
+        if (Double.isInfinite(toGoal[start])) {
             return null;
         }
         List<Integer> way = new ArrayList<>();
-        for (int c = goal; c != start; c = from[c]) {
-            way.add(0, c);
+        for (int c = start; c != goal; c = next[c]) {
+            way.add(next[c]);
         }
         // the farthest point within AHEAD m of path whose chord from the robot keeps within BEND of the
         // points passed on the way (round a box's corner the chord would cut into the box)
@@ -91,10 +92,10 @@ final class Trail {
         return true;
     }
 
-    /** The index of the point nearest (x, z) within {@value #REACH} m, or -1. */
-    private int nearest(double x, double z) {
+    /** The index of the point nearest (x, z) within {@code reach} m, or -1. */
+    private int nearest(double x, double z, double reach) {
         int best = -1;
-        double bestD = REACH;
+        double bestD = reach;
         for (int i = 0; i < points.size(); i++) {
             double d = distance(points.get(i), x, z);
             if (d <= bestD) {
@@ -105,41 +106,40 @@ final class Trail {
         return best;
     }
 
-    /** Dijkstra from {@code start}: each point's predecessor on its shortest way, or null when {@code goal} is not joined. */
-    private int[] shortestFrom(int start, int goal) {
+    /**
+     * Dijkstra from {@code goal} over the whole trail: fills {@code toGoal} with each point's way left
+     * (infinite: not joined) and {@return each point's next point on its shortest way to the goal}
+     */
+    private int[] towards(int goal, double[] toGoal) {
         int n = points.size();
         Map<Long, List<Integer>> cells = new HashMap<>();
         for (int i = 0; i < n; i++) {
             cells.computeIfAbsent(key(points.get(i)), k -> new ArrayList<>()).add(i);
         }
-        double[] cost = new double[n];
-        Arrays.fill(cost, Double.POSITIVE_INFINITY);
-        int[] from = new int[n];
-        Arrays.fill(from, -1);
+        Arrays.fill(toGoal, Double.POSITIVE_INFINITY);
+        int[] next = new int[n];
+        Arrays.fill(next, -1);
         boolean[] done = new boolean[n];
         PriorityQueue<double[]> open = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
-        cost[start] = 0;
-        open.add(new double[] {0, start});
+        toGoal[goal] = 0;
+        open.add(new double[] {0, goal});
         while (!open.isEmpty()) {
             int c = (int) open.poll()[1];
             if (done[c]) {
                 continue;
             }
-            if (c == goal) {
-                return from;
-            }
             done[c] = true;
             double[] p = points.get(c);
-            for (int next : neighbours(c, p, cells)) {
-                double g = cost[c] + Math.hypot(points.get(next)[0] - p[0], points.get(next)[1] - p[1]);
-                if (!done[next] && g < cost[next]) {
-                    cost[next] = g;
-                    from[next] = c;
-                    open.add(new double[] {g, next});
+            for (int k : neighbours(c, p, cells)) {
+                double g = toGoal[c] + Math.hypot(points.get(k)[0] - p[0], points.get(k)[1] - p[1]);
+                if (!done[k] && g < toGoal[k]) {
+                    toGoal[k] = g;
+                    next[k] = c;
+                    open.add(new double[] {g, k});
                 }
             }
         }
-        return null;
+        return next;
     }
 
     /** The points joined to point {@code c}: the one before, the one after, and every point within {@value #JOIN} m. */
