@@ -38,11 +38,6 @@ final class Trail {
         }
     }
 
-    /** {@return how many points the trail holds} */
-    int size() {
-        return points.size();
-    }
-
     /**
      * {@return the point to head for, {x, z}, on the way the robot has come from (x, z) to (tx, tz),
      * or null when the trail has not passed within {@value #REACH} m of both} The target itself once
