@@ -5,6 +5,8 @@
 // and back to the marked point.
 // Parameters:
 steerEvery(2500).   // ms between heading checks on the way
+bendSteerEvery(1000). // ms between them while the way bends (route.asl, way-back.asl: aim is not the target)
+bendTolerance(25).  // degrees off a way that bends before a re-alignment (10 otherwise)
 detours(0).         // obstacles met on this trip: each detour goes round longer
 // the wheel speed on the way: far sight's travelSpeed when the agent has it
 speedOnTheWay(V) :- travelSpeed(V).
@@ -64,11 +66,11 @@ speedOnTheWay(100) :- not travelSpeed(_).
 // while travelling: re-align when the heading is off by more than 10 degrees (more often while
 // the way to the target bends: route.asl)
 bending :- aim(Ax, Az) & targetPoint(Tx, Tz) & (Ax \== Tx | Az \== Tz).
-steerNow(T) :- bending & routeSteerEvery(T).
+steerNow(T) :- bending & bendSteerEvery(T).
 steerNow(T) :- steerEvery(T).
 // degrees off before a re-alignment: more along a route that bends (its point on the way moves a
 // cell to and fro at every plan, and each turn on the spot stopped the robot)
-offBy(A) :- bending & routeTolerance(A).
+offBy(A) :- bending & bendTolerance(A).
 offBy(10).
 @steer
 +!steer : travelling & not halted & steerNow(T)

@@ -6,12 +6,10 @@
 // robot heads for the farthest point of that route it can reach in a straight line: the target
 // itself while nothing met is in the way, and also when no way round is known (today's heading).
 // Each re-alignment plans again (heading's detour after an obstacle met, its steering every
-// routeSteerEvery ms while the route bends; the sweep's every step), so a wall met is learnt and
+// heading's bendSteerEvery ms while the route bends; the sweep's every step), so a wall met is learnt and
 // gone round, a doorway found is remembered, and the way back from the charger takes the way out.
 // Parameters:
 routeMemory(180000).   // ms an obstacle seen stays on the map
-routeSteerEvery(1000). // ms between re-alignments while the route bends (heading's steerEvery otherwise)
-routeTolerance(25).    // degrees off the route before a re-alignment (heading's 10 otherwise)
 // m: this near the target the robot heads for it straight (the storage area and the charger are
 // entered with the distance sensors off and no steering: a point beside the target took it past)
 routeNear(0.3).

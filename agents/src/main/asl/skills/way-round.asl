@@ -33,7 +33,8 @@ sweepFollows(2).      // followings towards one waypoint at most (the second on 
 // (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
 // gaveUpSide(Side), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
 // (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it).
-// An agent with route.asl (routePlanning) plans its way round what it met instead: no following.
+// An agent with route.asl (routePlanning) plans its way round what it met instead: no following;
+// one with way-back.asl goes back the way it came when its trail knows one (the hook !wallMet).
 // Needs: !computeGap, !balance (heading), !nextWaypoint (sweep). Include it after recharge, before
 // delivery (its obstacle and stuck plans come before heading's) and before sweep (its +!sweepStep
 // plan comes first).
@@ -69,7 +70,9 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 
 /* Where obstacles were met on this trip (heading counts them: detours) */
 
-@newTrip +detours(0) <- .abolish(hitPoint(_, _)); .abolish(gaveUpSide(_)).
+@newTrip +detours(0) <- .abolish(hitPoint(_, _)); .abolish(gaveUpSide(_)); !tripBegun.
+// the hook for a skill that keeps something per trip (way-back.asl)
+@tripBegunHere +!tripBegun.
 @noteHit +detours(N) : N > 0 & location(X, _, Z) <- +hitPoint(X, Z).
 
 /* A wall met again: follow it */
@@ -77,7 +80,9 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @followOnRehit[atomic]
 +obstacle(true) : not routePlanning & goingTo(_, _) & not insideArea & not followingWall(_, _, _) & not followingOff & metHereBefore
                 & targetDistance(Dist) & leaveNear(Near) & Dist > Near
-    <- .drop_intention(balance); .drop_intention(detour(_)); !startFollowing(Dist, S).
+    <- .drop_intention(balance); .drop_intention(detour(_)); !wallMet(Dist).
+// the hook a skill that knows a way round supplies first (way-back.asl): here, the following
+@followTheWall +!wallMet(Dist) <- !startFollowing(Dist, _).
 @startFollowing
 +!startFollowing(Dist, S)
     <- +avoiding; -wedgedAlong; stop; !chooseSide(S); .system_time(T); +followingWall(S, T, Dist);

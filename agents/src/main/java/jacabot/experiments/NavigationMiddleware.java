@@ -28,6 +28,8 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     private boolean waitingExit;
     /** The map of obstacles met and the route to a target point (not in the thesis), once the agent asked for it. */
     private RouteMap routes;
+    /** The way the robot has come (not in the thesis), once the agent asked for it. */
+    private Trail trail;
 
     @Override
     protected void defineProperties() {
@@ -104,6 +106,28 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         }
     }
 
+    /** Keeps the way the robot drives from now on (not in the thesis): {@code trailTo} goes back along it. */
+    @OPERATION
+    void keepTrail() {
+        if (trail == null) {
+            trail = new Trail();
+        }
+    }
+
+    /**
+     * The point to head for on the way to (tx, tz) along the way the robot has come (not in the thesis):
+     * when its trail passed near both the robot and the target, a point a little ahead on the shortest way
+     * through the trail; else (or without {@code keepTrail}) the target itself.
+     */
+    @OPERATION
+    void trailTo(double tx, double tz, OpFeedbackParam<Double> wx, OpFeedbackParam<Double> wz) {
+        double[] here = position();
+        double[] w = trail == null || here == null ? null : trail.waypoint(here[0], here[1], tx, tz);
+        boolean target = w == null || (w[0] == tx && w[1] == tz);
+        wx.set(target ? tx : Math.round(w[0] * 1000) / 1000.0);
+        wz.set(target ? tz : Math.round(w[1] * 1000) / 1000.0);
+    }
+
     /** The Khepera's body radius and its distance sensors' bearings (degrees, positive to the right). */
     static final double KHEPERA_RADIUS = 0.0285;
     private static final Map<SensorKind, Double> SENSOR_BEARING = new EnumMap<>(Map.of(
@@ -159,6 +183,9 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
                 double[] c = info.getCoord();
                 if (routes != null) {
                     routes.standing(c[0], c[2]);
+                }
+                if (trail != null) {
+                    trail.at(c[0], c[2]);
                 }
                 checkProgress(c[0], c[2]);
                 double x = trunc(c[0]);

@@ -255,6 +255,26 @@ class MiddlewareTest {
     }
 
     @Test
+    void theTrailKeptGivesTheWayBackTheRobotCame() throws Exception {
+        var b = new Bench(NavigationMiddleware.class);
+        var wx = new OpFeedbackParam<Double>();
+        var wz = new OpFeedbackParam<Double>();
+        assertTrue(b.op("trailTo", new Object[] {-0.5, 0.0, wx, wz}).succeeded());
+        assertEquals(List.of(-0.5, 0.0), List.of(wx.get(), wz.get()), "no trail kept: the target");
+        assertTrue(b.op("keepTrail", new Object[] {}).succeeded());
+        // out from (-0.5, 0) north to (-0.5, 0.5), east to (0, 0.5), south to (0, 0)
+        double[][] way = {{-0.5, 0}, {-0.5, 0.5}, {0, 0.5}, {0, 0}};
+        for (int i = 1; i < way.length; i++) {
+            for (double f = 0; f <= 1; f += 0.02) {
+                b.deliver(new SensorInfo(SensorKind.GPS.id(), way[i - 1][0] + f * (way[i][0] - way[i - 1][0]), 0.0,
+                        way[i - 1][1] + f * (way[i][1] - way[i - 1][1])));
+            }
+        }
+        assertTrue(b.op("trailTo", new Object[] {-0.5, 0.0, wx, wz}).succeeded());
+        assertTrue(Math.abs(wx.get()) < 0.01 && wz.get() > 0.05, "back north along the way out, not west across: " + wx.get() + ", " + wz.get());
+    }
+
+    @Test
     void lowBatterySignalsAndCommandsQueueInLockstep() throws Exception {
         var b = new Bench(SuspendResumeMiddleware.class);
         b.deliver(value(SensorKind.BATTERY, 500));
