@@ -83,7 +83,7 @@ final class Physics {
     }
 
     SimObject addBox(BoxSpec b, ObjectKind kind) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createRectangle(b.sizeX(), b.sizeZ()));
         if (b.movable()) {
             f.setDensity(b.mass() / (b.sizeX() * b.sizeZ()));
@@ -97,7 +97,7 @@ final class Physics {
     }
 
     SimObject addCylinder(CylinderSpec c) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createCircle(c.radius()));
         f.setDensity(c.mass() / (Math.PI * c.radius() * c.radius()));
         body.setMass(MassType.NORMAL);
@@ -112,7 +112,7 @@ final class Physics {
      * that pushing boxes and cylinders does not slow it, frictionless against walls.
      */
     SimObject addRobot(String name, double radius, double height, Rgb color, double reflectance, double x, double z, double heading) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createCircle(radius));
         f.setFriction(0);
         f.setDensity(50.0 / (Math.PI * radius * radius));
