@@ -47,7 +47,7 @@ final class Physics {
     /** How much a fan's broad phase grows each bounding circle, in metres: more than the rectangles' margin. */
     private static final double REACH_MARGIN = 2 * GJK_MARGIN;
 
-    private final World<Body> world = new World<>();
+    private final World<Body> world = new Dyn4jWorld();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
 
     Physics(int basicTimeStepMs) {

@@ -25,9 +25,9 @@ import org.junit.jupiter.api.Test;
 class BroadPhasesTest {
     private static final int STEPS = 1_500;
 
-    /** A world as {@link Physics} sets it up, with dyn4j's broad phases or ours, and the same bodies. */
+    /** A world as {@link Physics} sets it up ({@link Dyn4jWorld}, its broad phases), or dyn4j's as it comes, with the same bodies. */
     private static World<Body> arena(boolean ours) {
-        World<Body> world = new World<>();
+        World<Body> world = ours ? new Dyn4jWorld() : new World<>();
         world.setGravity(World.ZERO_GRAVITY);
         world.getSettings().setStepFrequency(0.008);
         world.getSettings().setAtRestDetectionEnabled(false);
@@ -122,6 +122,8 @@ class BroadPhasesTest {
             }
         }
         assertTrue(contacts > 500, "the discs touched something in " + contacts + " body-steps");
+        long impacts = ((Dyn4jWorld) ours).impacts();
+        assertTrue(impacts > 20, "the time-of-impact pass moved a body back " + impacts + " times");
         // the teleported box was seen where it went: something touched it afterwards
         List<Body> touching = new ArrayList<>(ours.getInContactBodies(ours.getBody(5), false));
         assertEquals(new ArrayList<>(plain.getInContactBodies(plain.getBody(5), false)).size(), touching.size());
