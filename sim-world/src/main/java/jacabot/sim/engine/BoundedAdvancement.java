@@ -39,15 +39,24 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
     @Override
     public boolean getTimeOfImpact(Convex convex1, Transform transform1, Vector2 dp1, double da1,
             Convex convex2, Transform transform2, Vector2 dp2, double da2, double t1, double t2, TimeOfImpact toi) {
-        double rx = dp1.x - dp2.x;
-        double ry = dp1.y - dp2.y;
-        double speed = Math.sqrt(rx * rx + ry * ry) + (convex1.getRadius() * Math.abs(da1) + convex2.getRadius() * Math.abs(da2));
-        double reach = ((t2 - t1) * (1 + RELATIVE_SLACK) + ABSOLUTE_SLACK) * speed * (1 + RELATIVE_SLACK);
-        if (clearance(convex1, transform1, convex2, transform2) - ABSOLUTE_SLACK > reach) {
+        if (cannotMeet(convex1, transform1, dp1.x, dp1.y, da1, convex2, transform2, dp2.x, dp2.y, da2, t1, t2)) {
             skipped++;
             return false;
         }
         return exact.getTimeOfImpact(convex1, transform1, dp1, da1, convex2, transform2, dp2, da2, t1, t2, toi);
+    }
+
+    /**
+     * {@return whether the test above answers {@code false} for the pair: then so does
+     * {@link #getTimeOfImpact}, for this interval and every interval inside it}
+     */
+    static boolean cannotMeet(Convex convex1, Transform transform1, double dp1x, double dp1y, double da1,
+            Convex convex2, Transform transform2, double dp2x, double dp2y, double da2, double t1, double t2) {
+        double rx = dp1x - dp2x;
+        double ry = dp1y - dp2y;
+        double speed = Math.sqrt(rx * rx + ry * ry) + (convex1.getRadius() * Math.abs(da1) + convex2.getRadius() * Math.abs(da2));
+        double reach = ((t2 - t1) * (1 + RELATIVE_SLACK) + ABSOLUTE_SLACK) * speed * (1 + RELATIVE_SLACK);
+        return clearance(convex1, transform1, convex2, transform2) - ABSOLUTE_SLACK > reach;
     }
 
     /** {@return how many pairs the test answered without a GJK distance} */

@@ -28,7 +28,8 @@ import org.dyn4j.world.World;
  * <li>the continuous collision broad phase keeps only a fixed body with a moving one: its time of
  * impact step skips two fixed bodies, and two dynamic bodies unless one is a bullet (none is);</li>
  * <li>the pair filter asks for the joints' consent only when the world has joints (it has none);</li>
- * <li>a fixed body that has not moved is not measured again at every step ({@link StillFixedBodies});</li>
+ * <li>a fixed body that has not moved is not measured again at every step, and the trees' questions
+ * about one body are answered from the body ({@link StillFixedBodies}, {@link TrackedBody});</li>
  * <li>a pair kept apart by its bounding circles or edge lines gets no GJK test ({@link BoundedGjk}).</li>
  * </ul>
  * The pairs left are those dyn4j keeps, found in the same order, so contacts are solved in the same
@@ -50,7 +51,18 @@ final class BroadPhases {
         BroadphaseDetector<CollisionItem<Body, BodyFixture>> contacts = new StillFixedBodies<>(new DynamicAABBTree<>(
                 (a, b) -> a != b && a.getBody() != b.getBody() && !(fixed(a.getBody()) && fixed(b.getBody())),
                 new CollisionItemAABBProducer<>(), new StaticValueAABBExpansionMethod<>(EXPANSION),
-                World.DEFAULT_INITIAL_BODY_CAPACITY), CollisionItem::getBody);
+                World.DEFAULT_INITIAL_BODY_CAPACITY), CollisionItem::getBody, new StillFixedBodies.Slot<>() {
+                    @Override
+                    @SuppressWarnings("unchecked")
+                    public StillFixedBodies.Entry<CollisionItem<Body, BodyFixture>> get(CollisionItem<Body, BodyFixture> item) {
+                        return (StillFixedBodies.Entry<CollisionItem<Body, BodyFixture>>) tracked(item.getBody()).contactEntry;
+                    }
+
+                    @Override
+                    public void set(CollisionItem<Body, BodyFixture> item, StillFixedBodies.Entry<CollisionItem<Body, BodyFixture>> entry) {
+                        tracked(item.getBody()).contactEntry = entry;
+                    }
+                });
         CollisionItemBroadphaseDetector<Body, BodyFixture> adapter = new CollisionItemBroadphaseDetectorAdapter<>(contacts);
         adapter.setUpdateTrackingEnabled(true);
         world.setBroadphaseDetector(adapter);
@@ -58,12 +70,30 @@ final class BroadPhases {
         BroadphaseDetector<Body> continuous = new StillFixedBodies<>(new DynamicAABBTree<>(
                 (a, b) -> a != b && fixed(a) != fixed(b),
                 new PhysicsBodySweptAABBProducer<>(), new StaticValueAABBExpansionMethod<>(EXPANSION),
-                World.DEFAULT_INITIAL_BODY_CAPACITY), body -> body);
+                World.DEFAULT_INITIAL_BODY_CAPACITY), body -> body, new StillFixedBodies.Slot<>() {
+                    @Override
+                    @SuppressWarnings("unchecked")
+                    public StillFixedBodies.Entry<Body> get(Body body) {
+                        return (StillFixedBodies.Entry<Body>) tracked(body).continuousEntry;
+                    }
+
+                    @Override
+                    public void set(Body body, StillFixedBodies.Entry<Body> entry) {
+                        tracked(body).continuousEntry = entry;
+                    }
+                });
         continuous.setUpdateTrackingEnabled(true);
         world.setContinuousCollisionDetectionBroadphaseDetector(continuous);
 
         world.setBroadphaseCollisionDataFilter(new PairFilter(world));
         world.setNarrowphaseDetector(new BoundedGjk());
+    }
+
+    private static TrackedBody tracked(Body body) {
+        if (body instanceof TrackedBody t) {
+            return t;
+        }
+        throw new IllegalArgumentException("a body of this world is a TrackedBody, not a " + body.getClass().getSimpleName());
     }
 
     /** {@return whether the body has infinite mass: a wall or a fixed box} */

@@ -8,6 +8,7 @@ import jacabot.sim.world.ArenaSpec;
 import jacabot.sim.world.BoxSpec;
 import jacabot.sim.world.CylinderSpec;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.LinkedHashMap;
@@ -47,7 +48,7 @@ final class Physics {
     /** How much a fan's broad phase grows each bounding circle, in metres: more than the rectangles' margin. */
     private static final double REACH_MARGIN = 2 * GJK_MARGIN;
 
-    private final World<Body> world = new World<>();
+    private final World<Body> world = new Dyn4jWorld();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
 
     Physics(int basicTimeStepMs) {
@@ -83,7 +84,7 @@ final class Physics {
     }
 
     SimObject addBox(BoxSpec b, ObjectKind kind) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createRectangle(b.sizeX(), b.sizeZ()));
         if (b.movable()) {
             f.setDensity(b.mass() / (b.sizeX() * b.sizeZ()));
@@ -97,7 +98,7 @@ final class Physics {
     }
 
     SimObject addCylinder(CylinderSpec c) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createCircle(c.radius()));
         f.setDensity(c.mass() / (Math.PI * c.radius() * c.radius()));
         body.setMass(MassType.NORMAL);
@@ -112,7 +113,7 @@ final class Physics {
      * that pushing boxes and cylinders does not slow it, frictionless against walls.
      */
     SimObject addRobot(String name, double radius, double height, Rgb color, double reflectance, double x, double z, double heading) {
-        Body body = new Body();
+        Body body = new TrackedBody();
         BodyFixture f = body.addFixture(Geometry.createCircle(radius));
         f.setFriction(0);
         f.setDensity(50.0 / (Math.PI * radius * radius));
@@ -282,11 +283,15 @@ final class Physics {
             reach[near.size()] = r;
             near.add(o);
         }
+        int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near.size()) : null;
         List<List<RayHit>> fan = new ArrayList<>(n);
         for (int k = 0; k < n; k++) {
             Beam beam = new Beam(origin, bearingsDeg[k]);
             List<RayHit> hits = new ArrayList<>(4);
-            for (int i = 0; i < near.size(); i++) {
+            int[] mine = candidates == null ? null : candidates[k];
+            int count = mine == null ? near.size() : mine[0];
+            for (int j = 0; j < count; j++) {
+                int i = mine == null ? j : mine[j + 1];
                 double ex = cx[i] - beam.sx, ez = cz[i] - beam.sy;
                 double along = ex * beam.dx + ez * beam.dy, across = ex * beam.dy - ez * beam.dx;
                 if (Math.abs(across) <= reach[i] && along >= -reach[i] && along <= length + reach[i]) {
@@ -296,5 +301,80 @@ final class Physics {
             fan.add(hits);
         }
         return fan;
+    }
+
+    /** From this many rays on, a fan sorts its objects into the rays' sectors first ({@link #sectors}). */
+    static final int SECTOR_FAN = 8;
+
+    /** Slack on the sectors' angles, in radians: far above their rounding; a wider sector only costs a test. */
+    private static final double SECTOR_SLACK = 1e-6;
+
+    /**
+     * For each ray of a fan, the objects whose bounding circle the ray can cross, as
+     * {@code {count, index...}} in the objects' order; null when the rays' bearings do not grow
+     * from the first (then every ray tries every object). Every ray starts on the line through the
+     * origin along its bearing, so it meets the grown circle of radius r around a centre at distance
+     * D only when its bearing is within {@code asin(r / D)} of the centre's; a centre nearer than
+     * {@code sqrt(r² + (r + BACKOFF)²)} may be met behind the origin, and goes to every ray. The
+     * test in {@link #castFan} then runs on these candidates as before, so the casts are the same.
+     */
+    private static int[][] sectors(double ox, double oz, double[] bearingsDeg, double[] cx, double[] cz, double[] reach, int objects) {
+        int n = bearingsDeg.length;
+        double first = Math.toRadians(bearingsDeg[0]);
+        double[] offset = new double[n]; // each ray's bearing after the first's, radians
+        for (int k = 0; k < n; k++) {
+            offset[k] = Math.toRadians(bearingsDeg[k]) - first;
+            if (k > 0 && !(offset[k] >= offset[k - 1]) || offset[k] > Math.PI / 2) {
+                return null;
+            }
+        }
+        int[][] out = new int[n][];
+        for (int i = 0; i < objects; i++) {
+            double ex = cx[i] - ox, ez = cz[i] - oz, r = reach[i];
+            double d = Math.sqrt(ex * ex + ez * ez);
+            int from = 0, to = n - 1;
+            if (d * (1 - SECTOR_SLACK) > Math.sqrt(r * r + (r + BACKOFF) * (r + BACKOFF)) + SECTOR_SLACK) {
+                double half = Math.asin(Math.min(1, r / d)) + SECTOR_SLACK;
+                double at = Math.atan2(ez, ex) - first; // the centre's bearing after the first ray's, in (-3π, 3π)
+                at -= 2 * Math.PI * Math.floor((at + Math.PI) / (2 * Math.PI)); // into [-π, π)
+                if (at + half < offset[0] - SECTOR_SLACK || at - half > offset[n - 1] + SECTOR_SLACK) {
+                    if (at + 2 * Math.PI - half > offset[n - 1] + SECTOR_SLACK && at - 2 * Math.PI + half < offset[0] - SECTOR_SLACK) {
+                        continue; // no ray's bearing comes within the sector, nor a turn later or earlier
+                    }
+                    at += at < 0 ? 2 * Math.PI : -2 * Math.PI;
+                }
+                from = firstAtLeast(offset, at - half);
+                to = firstAtLeast(offset, Math.nextUp(at + half)) - 1;
+            }
+            for (int k = from; k <= to; k++) {
+                int[] list = out[k];
+                if (list == null) {
+                    list = out[k] = new int[Math.min(objects, 8) + 1];
+                } else if (list[0] + 1 == list.length) {
+                    list = out[k] = Arrays.copyOf(list, Math.min(objects + 1, 2 * list.length));
+                }
+                list[++list[0]] = i;
+            }
+        }
+        for (int k = 0; k < n; k++) {
+            if (out[k] == null) {
+                out[k] = new int[1];
+            }
+        }
+        return out;
+    }
+
+    /** {@return the first index whose value is at least {@code x}, or the length} */
+    private static int firstAtLeast(double[] sorted, double x) {
+        int lo = 0, hi = sorted.length;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (sorted[mid] < x) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
     }
 }

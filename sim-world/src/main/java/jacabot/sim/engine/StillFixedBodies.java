@@ -1,9 +1,8 @@
 package jacabot.sim.engine;
 
+import java.util.ArrayList;
 import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Function;
 import org.dyn4j.collision.CollisionPair;
 import org.dyn4j.collision.broadphase.AABBExpansionMethod;
@@ -25,25 +24,73 @@ import org.dyn4j.geometry.Vector2;
  * changes nothing. Here the items are updated in the tree's own order (the order they were added),
  * each moving body as before and a fixed body only when its transform, or the previous transform a
  * swept box is made from, differs from its last update's (the supervisor may teleport a fixed box).
- * Every other call goes to the tree as is.
+ * The tree's questions about one item (does it hold it, was it updated in this step, do two items'
+ * boxes overlap), which dyn4j asks for every pair it keeps at every step, are answered from the
+ * item's entry, which its body holds ({@link TrackedBody}), with the tree's answers. Every other call
+ * goes to the tree as is.
  */
 final class StillFixedBodies<T> implements BroadphaseDetector<T> {
     private final BroadphaseDetector<T> tree;
     private final Function<T, Body> bodyOf;
-    /** Every item in the order the tree holds it, with the transforms of a fixed body's last update (null for the others). */
-    private final Map<T, Transform[]> items = new LinkedHashMap<>();
+    private final Slot<T> slot;
+    /** Every item in the order the tree holds it (the order it was added). */
+    private final List<Entry<T>> entries = new ArrayList<>();
+    /** Counts the tree's {@link #clearUpdates()}: an entry updated in this round holds the current count. */
+    private long round;
 
-    StillFixedBodies(BroadphaseDetector<T> tree, Function<T, Body> bodyOf) {
+    /**
+     * @param slot where a body keeps its entry in this tree ({@link TrackedBody}): the questions below
+     *             are answered from the entry, without the tree's hash lookups
+     */
+    StillFixedBodies(BroadphaseDetector<T> tree, Function<T, Body> bodyOf, Slot<T> slot) {
         this.tree = tree;
         this.bodyOf = bodyOf;
+        this.slot = slot;
     }
 
+    /** Where a body keeps its entry of one tree. */
+    interface Slot<T> {
+        Entry<T> get(T item);
+
+        void set(T item, Entry<T> entry);
+    }
+
+    /**
+     * One item of the tree: its box there (the tree's own object, which it resets in place when it
+     * moves the item), whether the tree counts it as updated in this round, and for a fixed body the
+     * transforms of its last update.
+     */
+    static final class Entry<T> {
+        final T item;
+        final Body body;
+        /** The transform and previous transform of the last update; null for a moving body. */
+        final Transform[] last;
+        AABB box;
+        long updatedRound = -1;
+
+        Entry(T item, Body body, Transform[] last) {
+            this.item = item;
+            this.body = body;
+            this.last = last;
+        }
+    }
+
+    /**
+     * Updates each moving item as dyn4j does and each fixed item that moved, in the tree's order. The
+     * tree re-inserts an item (and counts it as updated) exactly when it gives it a new box, which is
+     * when the box's bounds change: a box that still holds the item is kept as it is.
+     */
     @Override
     public void update() {
-        for (Map.Entry<T, Transform[]> e : items.entrySet()) {
-            Transform[] last = e.getValue();
-            if (last == null || moved(bodyOf.apply(e.getKey()), last)) {
-                tree.update(e.getKey());
+        for (int i = 0, n = entries.size(); i < n; i++) {
+            Entry<T> e = entries.get(i);
+            if (e.last == null || moved(e.body, e.last)) {
+                AABB box = e.box;
+                double minX = box.getMinX(), minY = box.getMinY(), maxX = box.getMaxX(), maxY = box.getMaxY();
+                tree.update(e.item);
+                if (box.getMinX() != minX || box.getMinY() != minY || box.getMaxX() != maxX || box.getMaxY() != maxY) {
+                    e.updatedRound = round;
+                }
             }
         }
     }
@@ -62,13 +109,25 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
                 && a.getCost() == b.getCost() && a.getSint() == b.getSint();
     }
 
+    /** {@return the item's entry, or null when the tree does not hold it} */
+    private Entry<T> entry(T item) {
+        Entry<T> e = slot.get(item);
+        return e != null && item.equals(e.item) ? e : null;
+    }
+
+    /** After the tree was asked to add or update an item: its entry, made if new, and what the tree says of it. */
     private void track(T item) {
-        if (!items.containsKey(item)) {
+        Entry<T> e = entry(item);
+        if (e == null) {
             Body body = bodyOf.apply(item);
-            items.put(item, BroadPhases.fixed(body)
+            e = new Entry<>(item, body, BroadPhases.fixed(body)
                     ? new Transform[] {body.getTransform().copy(), body.getPreviousTransform().copy()}
                     : null);
+            entries.add(e);
+            slot.set(item, e);
         }
+        e.box = tree.getAABB(item);
+        e.updatedRound = tree.isUpdated(item) ? round : -1;
     }
 
     @Override
@@ -85,39 +144,57 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
 
     @Override
     public boolean remove(T object) {
-        items.remove(object);
+        Entry<T> e = entry(object);
+        if (e != null) {
+            entries.remove(e);
+            slot.set(object, null);
+        }
         return tree.remove(object);
     }
 
     @Override
     public void clear() {
-        items.clear();
+        for (Entry<T> e : entries) {
+            slot.set(e.item, null);
+        }
+        entries.clear();
         tree.clear();
     }
 
     @Override
     public void setUpdated(T object) {
         tree.setUpdated(object);
+        Entry<T> e = entry(object);
+        if (e != null) {
+            e.updatedRound = tree.isUpdated(object) ? round : -1;
+        }
     }
 
+    /** As the tree answers: held, and updated since the last {@link #clearUpdates()}. */
     @Override
     public boolean isUpdated(T object) {
-        return tree.isUpdated(object);
+        if (!tree.isUpdateTrackingEnabled()) {
+            return tree.isUpdated(object);
+        }
+        Entry<T> e = entry(object);
+        return e != null && e.updatedRound == round;
     }
 
     @Override
     public void clearUpdates() {
         tree.clearUpdates();
+        round++;
     }
 
     @Override
     public AABB getAABB(T object) {
-        return tree.getAABB(object);
+        Entry<T> e = entry(object);
+        return e != null ? e.box : tree.getAABB(object);
     }
 
     @Override
     public boolean contains(T object) {
-        return tree.contains(object);
+        return entry(object) != null;
     }
 
     @Override
@@ -165,9 +242,11 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
         return tree.raycastIterator(ray, length);
     }
 
+    /** As the tree answers for two items it holds: whether their boxes overlap. */
     @Override
     public boolean detect(T a, T b) {
-        return tree.detect(a, b);
+        Entry<T> ea = entry(a), eb = entry(b);
+        return ea != null && eb != null ? ea.box.overlaps(eb.box) : tree.detect(a, b);
     }
 
     @Override
@@ -202,16 +281,27 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
 
     @Override
     public void setUpdateTrackingEnabled(boolean flag) {
+        if (tree.isUpdateTrackingEnabled() != flag) {
+            round++; // the tree forgets its updates when tracking stops; none are counted when it starts again
+        }
         tree.setUpdateTrackingEnabled(flag);
     }
 
     @Override
     public void optimize() {
         tree.optimize();
+        refreshBoxes();
     }
 
     @Override
     public void shift(Vector2 shift) {
         tree.shift(shift);
+        refreshBoxes();
+    }
+
+    private void refreshBoxes() {
+        for (Entry<T> e : entries) {
+            e.box = tree.getAABB(e.item);
+        }
     }
 }

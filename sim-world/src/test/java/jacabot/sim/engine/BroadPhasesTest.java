@@ -19,15 +19,15 @@ import org.junit.jupiter.api.Test;
 /**
  * The same cluttered arena stepped twice, by dyn4j as it comes and with {@link BroadPhases}: every
  * body's transform and velocity must be the same to the bit at every step, while discs driven at
- * random push boxes and cylinders into fixed boxes and walls and one fixed box is teleported into
- * their way. The broad phases must keep dyn4j's pairs, in its order, less the pairs of two fixed bodies.
+ * random push boxes and cylinders into fixed boxes and walls, one box is removed and one fixed box is
+ * teleported into their way. The broad phases must keep dyn4j's pairs, in its order, less the pairs of two fixed bodies.
  */
 class BroadPhasesTest {
     private static final int STEPS = 1_500;
 
-    /** A world as {@link Physics} sets it up, with dyn4j's broad phases or ours, and the same bodies. */
+    /** A world as {@link Physics} sets it up ({@link Dyn4jWorld}, its broad phases), or dyn4j's as it comes, with the same bodies. */
     private static World<Body> arena(boolean ours) {
-        World<Body> world = new World<>();
+        World<Body> world = ours ? new Dyn4jWorld() : new World<>();
         world.setGravity(World.ZERO_GRAVITY);
         world.getSettings().setStepFrequency(0.008);
         world.getSettings().setAtRestDetectionEnabled(false);
@@ -37,15 +37,15 @@ class BroadPhasesTest {
         }
         Random rnd = new Random(3);
         for (double[] w : new double[][] {{1.01, 0, 0.02, 2.04}, {-1.01, 0, 0.02, 2.04}, {0, 1.01, 2.0, 0.02}, {0, -1.01, 2.0, 0.02}}) {
-            world.addBody(box(w[0], w[1], w[2], w[3], 0, false));
+            world.addBody(box(ours, w[0], w[1], w[2], w[3], 0, false));
         }
         for (int i = 0; i < 60; i++) {
             boolean movable = i % 4 == 0;
-            world.addBody(box(rnd.nextDouble() * 1.8 - 0.9, rnd.nextDouble() * 1.8 - 0.9, 0.03 + rnd.nextDouble() * 0.08,
+            world.addBody(box(ours, rnd.nextDouble() * 1.8 - 0.9, rnd.nextDouble() * 1.8 - 0.9, 0.03 + rnd.nextDouble() * 0.08,
                     0.03 + rnd.nextDouble() * 0.08, rnd.nextDouble() * Math.PI, movable));
         }
         for (int i = 0; i < 6; i++) {
-            Body c = new Body();
+            Body c = body(ours);
             c.addFixture(Geometry.createCircle(0.02)).setDensity(0.1 / (Math.PI * 0.0004));
             c.setMass(MassType.NORMAL);
             c.setLinearDamping(Physics.FLOOR_DAMPING);
@@ -54,7 +54,7 @@ class BroadPhasesTest {
             world.addBody(c);
         }
         for (int i = 0; i < 3; i++) {
-            Body robot = new Body();
+            Body robot = body(ours);
             robot.addFixture(Geometry.createCircle(0.035)).setFriction(0);
             robot.getFixture(0).setDensity(50 / (Math.PI * 0.035 * 0.035));
             robot.setMass(MassType.FIXED_ANGULAR_VELOCITY);
@@ -66,8 +66,13 @@ class BroadPhasesTest {
         return world;
     }
 
-    private static Body box(double x, double y, double w, double h, double angle, boolean movable) {
-        Body b = new Body();
+    /** A body as dyn4j makes it, or as {@link Physics} does for its broad phases. */
+    private static Body body(boolean ours) {
+        return ours ? new TrackedBody() : new Body();
+    }
+
+    private static Body box(boolean ours, double x, double y, double w, double h, double angle, boolean movable) {
+        Body b = body(ours);
         b.addFixture(Geometry.createRectangle(w, h)).setDensity(0.3 / (w * h));
         if (movable) {
             b.setMass(MassType.NORMAL);
@@ -94,6 +99,10 @@ class BroadPhasesTest {
                     ours.getBody(r).setLinearVelocity(vx, vy);
                 }
             }
+            if (step == STEPS / 3) { // the supervisor removes a box: its pairs go
+                plain.removeBody(10);
+                ours.removeBody(10);
+            }
             if (step == STEPS / 2) { // the supervisor teleports a fixed box next to a disc
                 for (World<Body> w : List.of(plain, ours)) {
                     Body robot = w.getBody(w.getBodyCount() - 1);
@@ -113,6 +122,8 @@ class BroadPhasesTest {
             }
         }
         assertTrue(contacts > 500, "the discs touched something in " + contacts + " body-steps");
+        long impacts = ((Dyn4jWorld) ours).impacts();
+        assertTrue(impacts > 20, "the time-of-impact pass moved a body back " + impacts + " times");
         // the teleported box was seen where it went: something touched it afterwards
         List<Body> touching = new ArrayList<>(ours.getInContactBodies(ours.getBody(5), false));
         assertEquals(new ArrayList<>(plain.getInContactBodies(plain.getBody(5), false)).size(), touching.size());

@@ -1,0 +1,125 @@
+package jacabot.sim.engine;
+
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.dyn4j.collision.CollisionPair;
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.dynamics.ContinuousDetectionMode;
+import org.dyn4j.geometry.Transform;
+import org.dyn4j.geometry.Vector2;
+import org.dyn4j.world.World;
+
+/**
+ * dyn4j's world, whose time-of-impact pass drops first the pairs that cannot meet within the step.
+ *
+ * <p>At every physics step dyn4j walks every pair of its continuous broad phase (a fixed body and a
+ * moving one whose grown boxes once overlapped, {@link BroadPhases}), keeps or drops it from that
+ * list, then asks five questions of each pair (two of them lookups in its constraint graph) before it
+ * groups the pairs by moving body and asks the time-of-impact detector about each. Most pairs are
+ * centimetres apart and move a millimetre a step: the detector's own test
+ * ({@link BoundedAdvancement#cannotMeet}) answers {@code false} for them. Here that test comes
+ * first, on the inputs dyn4j gives the detector (the bodies' previous transforms and their motion in
+ * the step), and a pair it clears is not grouped: in dyn4j its every fixture pair would get
+ * {@code false}, which changes nothing. The list is kept exactly as dyn4j keeps it, the other pairs
+ * are grouped as dyn4j groups them and solved by dyn4j's own per-body step. Each group's solution
+ * moves only its body (the other bodies of its pairs are fixed), so the groups' order does not
+ * matter. With time-of-impact listeners, another detector or another mode, dyn4j's own pass runs.
+ * {@code BroadPhasesTest} steps worlds with impacts both ways and compares every body at every step.
+ */
+final class Dyn4jWorld extends World<Body> {
+    private long impacts;
+
+    @Override
+    protected boolean solveTOI(ContinuousDetectionMode mode) {
+        if (mode != ContinuousDetectionMode.ALL || !timeOfImpactListeners.isEmpty()
+                || !(getTimeOfImpactDetector() instanceof BoundedAdvancement)) {
+            return super.solveTOI(mode);
+        }
+        Iterator<CollisionPair<Body>> found = ccdBroadphase.detectIterator();
+        while (found.hasNext()) {
+            ccdCollisionData.add(found.next().copy()); // the broad phase reuses its pair object
+        }
+        double dt = timeStep.getDeltaTime();
+        Map<Body, List<Body>> groups = null;
+        for (Iterator<CollisionPair<Body>> it = ccdCollisionData.iterator(); it.hasNext(); ) {
+            CollisionPair<Body> pair = it.next();
+            Body body1 = pair.getFirst(), body2 = pair.getSecond();
+            if (!ccdBroadphase.contains(body1) || !ccdBroadphase.contains(body2)) {
+                it.remove();
+                continue;
+            }
+            if ((ccdBroadphase.isUpdated(body1) || ccdBroadphase.isUpdated(body2)) && !ccdBroadphase.detect(body1, body2)) {
+                it.remove();
+                continue;
+            }
+            Body mover = body1.isDynamic() ? body1 : body2.isDynamic() ? body2 : null;
+            if (mover == null) {
+                continue; // two fixed bodies: dyn4j skips them below
+            }
+            Body other = mover == body1 ? body2 : body1;
+            if (cannotMeet(mover, other, dt)) {
+                continue;
+            }
+            // dyn4j's questions, in its order
+            if (!body1.isEnabled() || !body2.isEnabled()) {
+                continue;
+            }
+            if (body1.isDynamic() && body2.isDynamic() && !body1.isBullet() && !body2.isBullet()) {
+                continue;
+            }
+            if (body1.getMass().isInfinite() && body2.getMass().isInfinite()) {
+                continue;
+            }
+            if (body1.isAtRest() && body2.isAtRest()) {
+                continue;
+            }
+            if (!isJointCollisionAllowed(body1, body2) || isInContact(body1, body2)) {
+                continue;
+            }
+            if (groups == null) {
+                groups = new LinkedHashMap<>();
+            }
+            groups.computeIfAbsent(mover, b -> new ArrayList<>()).add(other);
+        }
+        boolean solved = false;
+        if (groups != null) {
+            for (Map.Entry<Body, List<Body>> g : groups.entrySet()) {
+                if (solveTOI(g.getKey(), g.getValue(), timeOfImpactListeners)) {
+                    solved = true;
+                    impacts++;
+                }
+            }
+        }
+        return solved;
+    }
+
+    /**
+     * {@return whether the detector answers {@code false} for every fixture pair of the two bodies in
+     * this step} The motion is formed as dyn4j forms it for the detector ({@code velocity.product(dt)}).
+     */
+    private static boolean cannotMeet(Body mover, Body other, double dt) {
+        Vector2 v1 = mover.getLinearVelocity(), v2 = other.getLinearVelocity();
+        double dp1x = v1.x * dt, dp1y = v1.y * dt, dp2x = v2.x * dt, dp2y = v2.y * dt;
+        double da1 = mover.getAngularVelocity() * dt, da2 = other.getAngularVelocity() * dt;
+        Transform tx1 = mover.getPreviousTransform(), tx2 = other.getPreviousTransform();
+        for (int k = 0, n2 = other.getFixtureCount(); k < n2; k++) {
+            BodyFixture f2 = other.getFixture(k);
+            for (int j = 0, n1 = mover.getFixtureCount(); j < n1; j++) {
+                BodyFixture f1 = mover.getFixture(j);
+                if (!BoundedAdvancement.cannotMeet(f1.getShape(), tx1, dp1x, dp1y, da1, f2.getShape(), tx2, dp2x, dp2y, da2, 0.0, 1.0)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** {@return how many moving bodies the time-of-impact pass moved back so far} */
+    long impacts() {
+        return impacts;
+    }
+}

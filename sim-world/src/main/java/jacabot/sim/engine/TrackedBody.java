@@ -1,0 +1,14 @@
+package jacabot.sim.engine;
+
+import org.dyn4j.dynamics.Body;
+
+/**
+ * A dyn4j body that holds its own entry in each of the world's two broad phases
+ * ({@link StillFixedBodies}), so that the questions dyn4j asks about a body at every physics step
+ * for every pair it keeps (is it still in the tree, did it move in this step) are a field read, not
+ * a hash lookup of the body and its fixture. Every body of a {@link Physics} world is one.
+ */
+final class TrackedBody extends Body {
+    StillFixedBodies.Entry<?> contactEntry;
+    StillFixedBodies.Entry<?> continuousEntry;
+}
