@@ -116,6 +116,16 @@ public final class Solver {
             this.proof = proof;
         }
 
+        /**
+         * {@return the same text for every object} A {@code for} loop carries its answers in its
+         * step, which the mind's capture and the inspector print: an identity hash there would make
+         * the step log of one seed differ from run to run.
+         */
+        @Override
+        public String toString() {
+            return "answers";
+        }
+
         /** {@return whether there is another solution; {@code into} then holds it (else it is left as it was)} */
         public boolean next(Unifier into) {
             if (!proof.next()) {

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslParser;
+import jacabot.agent.syntax.ObjectTerm;
+import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
 import java.util.ArrayList;
@@ -94,6 +96,17 @@ class SolverTest {
         assertEquals(Set.of(new Var("Y")), u.bindings().keySet());
         assertFalse(a.agent.solver().believes(new AslParser().parseTerm("ancestor(4, Y)"), u = new Unifier()));
         assertTrue(u.isEmpty());
+    }
+
+    @Test
+    void aLoopsAnswersPrintTheSameEveryTimeSoACapturedIntentionIsStable() throws Exception {
+        var a = new TestAgent(ANCESTOR + "parent(1, 2).");
+        a.cycles(5);
+        Term formula = new AslParser().parseTerm("ancestor(1, Y)");
+        String one = new ObjectTerm(a.agent.solver().solve(formula, new Unifier())).toString();
+        String other = new ObjectTerm(a.agent.solver().solve(formula, new Unifier())).toString();
+        assertEquals(one, other);
+        assertFalse(one.contains("@"), one);
     }
 
     @Test
