@@ -91,3 +91,13 @@ mock_operation(_, ok).
        !until(charging, 2000);
        !assert_true(charging);
        -deliverFirst(300).
+
+// on the charger nothing turns the robot: a re-alignment begun as the charger was reached drove it
+// off the charger mid-charge
+@[test]
++!test_no_turn_on_the_charger
+    <- +atCharger; -+desired(0); -+orientation(90); !forget_calls;
+       !!balance; .wait(300);
+       !assert_true(mock_called(stop));
+       !assert_false(mock_called(setSpeeds(_, _)));
+       .drop_intention(balance); -atCharger.

@@ -41,6 +41,10 @@ forgetOnFall(atCharger).
 +!setUpRecharge : lowBatteryLevel(L) & chargedLevel(C) <- batteryLevels(L, C).
 
 @stuckAtCharger +stuck : atCharger.
+// on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
+// the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
+// the charger mid-charge (tidy-up, generated world 3)
+@stayOnCharger +!balance : atCharger <- stop.
 
 /* Low battery: suspend, recharge, come back, resume (Chapter 4 §4.1) */
 
