@@ -1,7 +1,6 @@
 // Skill tests of one charger for the team (skills/team-charger.asl, in team-delivery.asl): a
 // robot with a low battery first goes near the charger and only there queues for it; once
-// recharged it leaves the queue when it is away from the charger (driving off first while another
-// is queued); a low battery while another robot
+// recharged it leaves the queue when it is away from the charger; a low battery while another robot
 // has the charger books a place and the task goes on until its turn. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -157,24 +156,3 @@ mock_operation(_, ok).
        !assert_true(mock_called(yieldCharger));
        -+chargerProgressTime(12000); -chargerWaiting(_); +chargerWaiting([]);
        .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging; -yieldedCharger; -waitingCharger.
-
-// recharged while another robot is queued, the robot drives off the charger towards the arena's
-// centre before its task resumes; alone, it resumes where it is
-@[test]
-+!test_a_recharged_robot_drives_off_the_charger_first_while_another_is_queued
-    <- !forget_calls; -charging; -atCharger; -waitingCharger;
-       -location(_, _, _); +location(-0.38, 0, 0.38); -+orientation(90);
-       -chargerQueue(_); +chargerQueue([team_charger_test]);      // alone
-       !chargerDone;
-       !assert_false(mock_called(setUpTargetPoint(_, _, _)));
-       !forget_calls;
-       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]);
-       !!chargerDone;
-       !until(mock_called(setUpTargetPoint(_, _, _)), 3000);
-       ?mock_called(setUpTargetPoint(X, _, Z));
-       !assert_true(X > -0.14 & X < -0.12 & Z > 0.12 & Z < 0.14); // 0.35 m towards the centre
-       !assert_true(.intend(clearCharger(_, _, _)));                // the task waits meanwhile
-       -targetReached; !!perceive(targetReached);
-       !until(not .intend(clearCharger(_, _, _)), 3000);
-       !assert_false(.intend(clearCharger(_, _, _)));
-       .drop_desire(leaveChargerAway(_)); .drop_desire(balance); -chargerQueue(_); +chargerQueue([]).

@@ -18,10 +18,7 @@
 // - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
 //   to recharge-trip's chargedLevel when nobody waits), and already at chargerShareFloor when a
 //   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
-//   energies). A robot recharged while another is queued drives off the charger first, towards the
-//   arena's centre (chargerClearance), and only then resumes its task (restores its heading, looks
-//   round): on the charger those held the next robot off for 20-30 s each, and one robot waited
-//   100 s behind two (team world 3, four robots). A robot recharged leaves the queue once it
+//   energies). A robot recharged leaves the queue once it
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
@@ -31,9 +28,6 @@ chargerProgressStep(0.05).   // m
 chargerLeaveDistance(0.3).   // m from the charger where a recharged robot leaves the queue (holding its turn,
                              // it has the right of way through the robots waiting there)
 chargerLeaveTimeout(40).     // quarter-seconds a recharged robot may take to go that far
-chargerClearance(0.35).      // m towards the arena's centre a recharged robot drives off the charger while
-                             // another is queued, before its task resumes ...
-chargerClearTime(15000).     // ... in this many ms at most
 chargerReserve(100).         // J: a robot booked for the charger works on above it, plus the way
                              // and the queue ahead (below)
 tripDetours(1.5).            // the energy per metre to the charger, as a share of the straight
@@ -135,20 +129,7 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
               & chargerQueue([Me, _ | _]) & .intend(waitCharged)
     <- .print("Charged to ", B, " J: a needier robot waits (", E, " J)"); .succeed_goal(waitCharged).
 
-othersQueued :- .my_name(Me) & chargerQueue(L) & .member(A, L) & A \== Me.
-// the point chargerClearance from the charger towards the arena's centre (the world's origin)
-clearOfCharger(Tx, Tz) :- charger(Cx, Cz) & chargerClearance(D) & N = math.sqrt(Cx * Cx + Cz * Cz) & N > D
-    & Tx = Cx - D * Cx / N & Tz = Cz - D * Cz / N.
-
-@driveOffCharger
-+!chargerDone : othersQueued & chargerLeaveTimeout(N) & clearOfCharger(Tx, Tz) & chargerClearTime(T)
-    <- !!leaveChargerAway(N); .print("Leaving the charger to the next robot"); !clearCharger(Tx, Tz, T).
 @leaveChargerQueue +!chargerDone : chargerLeaveTimeout(N) <- !!leaveChargerAway(N).
-@clearCharger
-+!clearCharger(Tx, Tz, T)
-    <- -avoiding; -+detours(0); stop; setThreshold(0.05); -+targetPoint(Tx, Tz); setUpTargetPoint(Tx, 0, Tz);
-       !computeGap; !!balance; !!steer; .wait({+targetReached}, T); .drop_intention(balance); stop.
-@chargerNotCleared -!clearCharger(_, _, _) <- .drop_intention(balance); stop; .print("Charger not cleared in time: going on").
 @leaveChargerAway
 +!leaveChargerAway(N) : N > 0 & chargerLeaveDistance(D) & nearCharger(D) <- .wait(250); !leaveChargerAway(N - 1).
 @leaveChargerNow +!leaveChargerAway(_) <- leaveCharger.
