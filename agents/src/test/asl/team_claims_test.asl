@@ -1,6 +1,6 @@
 // Skill tests of the team's claims (skills/team-claims.asl, in team-delivery.asl): a cylinder
 // sighted is claimed on the task board at its estimated place, give or take an error that grows
-// with its distance, before the robot homes on it; one whose disc overlaps another robot's claim
+// with its distance, swept on along the sighting's bearing beyond it, before the robot homes on it; one whose disc overlaps another robot's claim
 // is left alone only while that claim stands; one near a teammate is left alone; a cylinder
 // picked up is taken on the board, and put down where it is let go. Artifact operations are mocked (see
 // agents/README.md "Testing skills"). Run: jacabot test agents/src/test/asl
@@ -14,7 +14,7 @@ storageRadius(0.1).
 charger(-0.38, 0.38).
 
 mock_operation(lookupArtifact(_, middleware), ok).
-mock_operation(claim(_, _, _, 3), ok).
+mock_operation(claimAlong(_, _, _, _, _, 3), ok).
 mock_operation(take(_, _, 7), ok).
 mock_operation(putDown(_, _), ok).
 mock_operation(_, ok).
@@ -24,9 +24,10 @@ mock_operation(_, ok).
     <- +location(0.1, 0, 0.2); +orientation(90);
        !!perceive(cylinderSighted(0, 0.5));              // straight ahead, half a metre away
        !until(homing(_), 5000);
-       ?mock_called(claim(X, Z, R, 3));
+       ?mock_called(claimAlong(X, Z, R, Fx, Fz, 3));
        !assert_true(X > 0.09 & X < 0.11 & Z > 0.69 & Z < 0.71);
        !assert_true(R > 0.22 & R < 0.24);                 // 0.08 m + 0.3 m per metre of distance
+       !assert_true(Fx > 0.09 & Fx < 0.11 & Fz > 1.15 & Fz < 1.17);   // swept on along the bearing: 2 R beyond
        !assert_true(myClaim(3)).
 
 @[test]
@@ -35,12 +36,12 @@ mock_operation(_, ok).
        +claimed(5, khepera2, 0.12, 0.75, 0.1);           // near the place of a sighting straight ahead
        !!perceive(cylinderSighted(0, 0.5));
        .wait(300);
-       !assert_false(mock_called(claim(_, _, _, _)));    // not even asked for
+       !assert_false(mock_called(claimAlong(_, _, _, _, _, _)));    // not even asked for
        !assert_false(homing(_));
        -claimed(5, khepera2, 0.12, 0.75, 0.1);           // khepera2 released it
        -cylinderSighted(_, _); !!perceive(cylinderSighted(0, 0.5));
        !until(homing(_), 5000);
-       !assert_true(mock_called(claim(_, _, _, 3))).    // anyone's again
+       !assert_true(mock_called(claimAlong(_, _, _, _, _, 3))).    // anyone's again
 
 @[test]
 +!test_a_far_sighting_overlaps_a_claim_a_near_one_does_not
@@ -48,25 +49,25 @@ mock_operation(_, ok).
        +claimed(8, khepera3, 0.5, 1.3, 0.1);             // 0.4 m beside the far sighting's place
        !!perceive(cylinderSighted(0, 1.1));              // at (0.1, 1.3), give or take 0.41 m
        .wait(300);
-       !assert_false(mock_called(claim(_, _, _, _)));    // may be khepera3's cylinder: left alone
+       !assert_false(mock_called(claimAlong(_, _, _, _, _, _)));    // may be khepera3's cylinder: left alone
        -claimed(8, khepera3, 0.5, 1.3, 0.1);
        +claimed(8, khepera3, 0.5, 0.6, 0.1);             // 0.4 m beside a near sighting's place
        -cylinderSighted(_, _); !!perceive(cylinderSighted(0, 0.4));   // at (0.1, 0.6), give or take 0.2 m
        !until(homing(_), 5000);
-       !assert_true(mock_called(claim(_, _, _, 3)));    // another cylinder: claimed
+       !assert_true(mock_called(claimAlong(_, _, _, _, _, 3)));    // another cylinder: claimed
        -claimed(8, khepera3, 0.5, 0.6, 0.1).
 
 @[test]
 +!test_the_board_refusing_a_claim_stops_the_homing
     <- -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
-       +mock_operation(claim(_, _, _, _), fail("khepera3 has claimed it", claimed_by(khepera3, 6)));
-       .abolish(mock_operation(claim(_, _, _, 3), ok));
+       +mock_operation(claimAlong(_, _, _, _, _, _), fail("khepera3 has claimed it", claimed_by(khepera3, 6)));
+       .abolish(mock_operation(claimAlong(_, _, _, _, _, 3), ok));
        !!perceive(cylinderSighted(-10, 0.8));
        !until(claimRefused, 5000);
        !assert_true(claimRefused);
        !assert_false(homing(_));
        !assert_false(myClaim(_));
-       .abolish(mock_operation(claim(_, _, _), _)); +mock_operation(claim(_, _, _, 3), ok).
+       .abolish(mock_operation(claimAlong(_, _, _, _, _, _), _)); +mock_operation(claimAlong(_, _, _, _, _, 3), ok).
 
 @[test]
 +!test_a_cylinder_next_to_a_teammate_is_left_alone
@@ -74,7 +75,7 @@ mock_operation(_, ok).
        +robotAt(khepera4, 0.1, 0.65);                      // 5 cm from the sighting's place: it carries it
        !!perceive(cylinderSighted(0, 0.5));
        .wait(300);
-       !assert_false(mock_called(claim(_, _, _, _)));
+       !assert_false(mock_called(claimAlong(_, _, _, _, _, _)));
        !assert_false(homing(_));
        -robotAt(khepera4, 0.1, 0.65).
 
@@ -114,12 +115,12 @@ mock_operation(_, ok).
        +robotAt(khepera3, 0.1, 1.2); +claimed(9, khepera3, 0.1, 1.2, 0.2);
        !!perceive(cylinderSighted(2, 0.3));
        .wait(300);
-       !assert_false(mock_called(claim(_, _, _, _)));
+       !assert_false(mock_called(claimAlong(_, _, _, _, _, _)));
        !assert_false(homing(_));
        -claimed(9, khepera3, 0.1, 1.2, 0.2);                   // it has put its cylinder down: a teammate
        -cylinderSighted(_, _); !!perceive(cylinderSighted(2, 0.3));   // that carries nothing hides nothing
        !until(homing(_), 5000);
-       !assert_true(mock_called(claim(_, _, _, 3)));
+       !assert_true(mock_called(claimAlong(_, _, _, _, _, 3)));
        -robotAt(khepera3, 0.1, 1.2).
 
 @[test]
@@ -128,14 +129,14 @@ mock_operation(_, ok).
        -+orientation(297);                                     // facing the storage point, 0.68 m away: a sighting
        !!perceive(cylinderSighted(0, 0.3));                    // straight ahead is in its line
        !until(homing(_), 5000);
-       !assert_true(mock_called(claim(_, _, _, 3)));           // nothing stored yet: a cylinder there is one
+       !assert_true(mock_called(claimAlong(_, _, _, _, _, 3)));           // nothing stored yet: a cylinder there is one
        -homing(_); -myClaim(_); !forget_calls; -cylinderSighted(_, _);
        -+completed(1);                                         // the team has stored one: it may be the pile
        !!perceive(cylinderSighted(0, 0.3));
        .wait(300);
-       !assert_false(mock_called(claim(_, _, _, _)));
+       !assert_false(mock_called(claimAlong(_, _, _, _, _, _)));
        !assert_false(homing(_));
        -cylinderSighted(_, _); !!perceive(cylinderSighted(25, 0.3));  // another bearing: claimed
        !until(homing(_), 5000);
-       !assert_true(mock_called(claim(_, _, _, 3)));
+       !assert_true(mock_called(claimAlong(_, _, _, _, _, 3)));
        -completed(1); -+orientation(90).

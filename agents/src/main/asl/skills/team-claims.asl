@@ -5,7 +5,11 @@
 // - A cylinder sighted far off is claimed on the board at its estimated place (from the robot's
 //   location, orientation and the sighting's offset and distance) give or take how far off such an
 //   estimate may be (claimError: grows with the distance) before homing on it; every later sighting
-//   of it renews the claim, nearer and narrower. A sighting is left alone while its disc overlaps
+//   of it renews the claim, nearer and narrower. The claim is that disc swept on along the
+//   sighting's bearing, claimBeyond times its radius beyond the estimate (claimAlong): a cylinder
+//   half hidden seems nearer than it is (one 0.69 m away estimated at 0.39 m, behind a box), and
+//   two robots' discs round such estimates of one cylinder, from two sides, missed each other
+//   (team world 12, four robots: a double claim). A sighting is left alone while its disc overlaps
 //   another robot's claim (only while it is claimed: a released claim's cylinder is anyone's again)
 //   or lies near a teammate (team-places: the cylinder it is about to take); the board refuses a
 //   claim whose disc overlaps another's (claimed_by) in the same operation that makes it.
@@ -23,6 +27,7 @@
 claimErrorBase(0.08).  // m: how far off a sighting's estimated place may be, at no distance ...
 claimErrorSlope(0.3).  // ... plus this much per metre of distance (measured on generated team
                        // worlds: up to 0.45 m off at 1.4 m, 0.28 m at 0.75 m, 0.19 m at 0.4 m)
+claimBeyond(2).        // the claim reaches this many times its radius beyond the estimate, on the bearing
 gripReach(0.06).       // m from the robot's centre to a cylinder held in the gripper
 sightCone(15).         // degrees either side of a sighting's bearing where a carried cylinder or the
                        // stored pile may be what was sighted
@@ -38,6 +43,9 @@ setUpGoal(setUpTeam).
 sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & A = (O + Off) * math.pi / 180
     & Cx = X + Dist * math.cos(A) & Cz = Z + Dist * math.sin(A).
 claimError(Dist, R) :- claimErrorBase(B) & claimErrorSlope(S) & R = B + S * Dist.
+// the far end of a sighting's claim, on its bearing beyond the estimate
+claimEnd(Off, Dist, R, Fx, Fz) :- location(X, _, Z) & orientation(O) & claimBeyond(K) & A = (O + Off) * math.pi / 180
+    & Fx = X + (Dist + K * R) * math.cos(A) & Fz = Z + (Dist + K * R) * math.sin(A).
 // the board's own rule: two discs that overlap may be one cylinder
 claimedByOther(X, Z, R) :- claimed(_, A, Cx, Cz, Rc) & not .my_name(A)
     & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < (R + Rc) * (R + Rc).
@@ -61,15 +69,15 @@ storedPileInSight(Off) :- completed(N) & N > 0 & storagePoint(Sx, Sz) & inSightL
 @sightedCarriedCylinder +!sighted(Off, _) : carrierInSight(Off).
 @sightedStoredPile +!sighted(Off, _) : storedPileInSight(Off).
 @claimSighted
-+!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & claimError(Dist, R)
-    <- -claimRefused; !claim(Cx, Cz, R);
++!sighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & claimError(Dist, R) & claimEnd(Off, Dist, R, Fx, Fz)
+    <- -claimRefused; !claim(Cx, Cz, R, Fx, Fz);
        if (not claimRefused) { !homeOn(Off, Dist) }.
 
 // the board gives the same claim back for a disc that overlaps the caller's own; another is a new cylinder
-@claim +!claim(Cx, Cz, R) <- claim(Cx, Cz, R, Id); !dropOtherClaim(Id); -+myClaim(Id).
+@claim +!claim(Cx, Cz, R, Fx, Fz) <- claimAlong(Cx, Cz, R, Fx, Fz, Id); !dropOtherClaim(Id); -+myClaim(Id).
 @claimedByOther
--!claim(_, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
-@claimFailed -!claim(_, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
+-!claim(_, _, _, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
+@claimFailed -!claim(_, _, _, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
 @dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
 @keepClaim +!dropOtherClaim(_).

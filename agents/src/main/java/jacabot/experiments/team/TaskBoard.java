@@ -32,7 +32,8 @@ import java.util.Set;
  * <p>Observable properties: {@code claimed(Id, Agent, X, Z, R)}, one per claim (Agent an atom, R
  * the disc's radius), and {@code completed(N)}, the team's deliveries. Operations:
  * {@code claim(X, Z, R, ?Id)}, {@code claim(X, Z)} and {@code claim(X, Z, ?Id)} (R half the
- * board's radius), {@code take(X, Z, ?Id)}, {@code putDown(X, Z)}, {@code release(Id)},
+ * board's radius), {@code claimAlong(X, Z, R, ToX, ToZ, ?Id)} (a sighting's disc swept on along its
+ * bearing: the board tests the whole shape, the property shows the disc), {@code take(X, Z, ?Id)}, {@code putDown(X, Z)}, {@code release(Id)},
  * {@code complete(Id)}, {@code releaseAll}. Every operation is one artifact step: the test and
  * the claim are one, so two agents can never hold overlapping claims, however their calls
  * interleave. An agent that leaves the workspace (its process ended) loses its claims:
@@ -54,7 +55,33 @@ public class TaskBoard extends Artifact {
      */
     static final double CARRIED_RADIUS = 0.2;
 
-    private record Claim(int id, AgentId agent, ObsProperty property) {
+    /**
+     * A claim: the disc of radius r round the estimated place (x, z), swept on to (fx, fz) when the
+     * claim is a sighting's (its far end on the sighting's bearing); the property shows the disc.
+     */
+    private static final class Claim {
+        private final int id;
+        private final AgentId agent;
+        private final ObsProperty property;
+        private double fx;
+        private double fz;
+
+        Claim(int id, AgentId agent, ObsProperty property) {
+            this.id = id;
+            this.agent = agent;
+            this.property = property;
+            this.fx = x();
+            this.fz = z();
+        }
+
+        int id() {
+            return id;
+        }
+
+        AgentId agent() {
+            return agent;
+        }
+
         double x() {
             return property.doubleValue(2);
         }
@@ -68,11 +95,21 @@ public class TaskBoard extends Artifact {
         }
 
         boolean overlaps(double x, double z, double r) {
-            return Math.hypot(x() - x, z() - z) < r() + r;
+            return overlaps(x, z, x, z, r);
+        }
+
+        boolean overlaps(double x, double z, double toX, double toZ, double r) {
+            return Segments.distance(x(), z(), fx, fz, x, z, toX, toZ) < r() + r;
         }
 
         void place(double x, double z, double r) {
+            place(x, z, x, z, r);
+        }
+
+        void place(double x, double z, double toX, double toZ, double r) {
             property.updateValues(id, agent, x, z, r);
+            fx = toX;
+            fz = toZ;
         }
     }
 
@@ -168,13 +205,26 @@ public class TaskBoard extends Artifact {
      */
     @OPERATION
     void claim(double x, double z, double r, OpFeedbackParam<Integer> id) {
+        claimAlong(x, z, r, x, z, id);
+    }
+
+    /**
+     * Claims a cylinder sighted at the estimated place (x, z) that may lie farther on the
+     * sighting's bearing, up to (toX, toZ): the claim is the disc of radius r round (x, z) swept on
+     * to (toX, toZ). A camera's bearing is good and its distance is not, and a cylinder half hidden
+     * seems nearer than it is (one 0.7 m away estimated at 0.39 m): two robots' estimates of one
+     * such cylinder, from two sides, missed each other's discs. Otherwise as
+     * {@link #claim(double, double, double, OpFeedbackParam)}, every test against the swept shape.
+     */
+    @OPERATION
+    void claimAlong(double x, double z, double r, double toX, double toZ, OpFeedbackParam<Integer> id) {
         if (!(r > 0)) {
             failed("a claim's radius must be positive, got " + r, "bad_radius", r);
         }
         AgentId me = getCurrentOpAgentId();
         Claim mine = null;
         for (Claim c : claims.values()) {
-            if (c.overlaps(x, z, r)) {
+            if (c.overlaps(x, z, toX, toZ, r)) {
                 if (!c.agent().equals(me)) {
                     failed(c.agent().name() + " has claimed the cylinder at (" + c.x() + ", " + c.z() + ")",
                             "claimed_by", c.agent(), c.id());
@@ -185,11 +235,13 @@ public class TaskBoard extends Artifact {
             }
         }
         if (mine != null) {
-            mine.place(x, z, r);
+            mine.place(x, z, toX, toZ, r);
             id.set(mine.id());
             return;
         }
-        id.set(newClaim(me, x, z, r));
+        Claim made = newClaim(me, x, z, r);
+        made.place(x, z, toX, toZ, r);
+        id.set(made.id());
     }
 
     /**
@@ -218,7 +270,7 @@ public class TaskBoard extends Artifact {
             kept.place(x, z, CARRIED_RADIUS);
             taken = kept.id();
         } else {
-            taken = newClaim(me, x, z, CARRIED_RADIUS);
+            taken = newClaim(me, x, z, CARRIED_RADIUS).id();
         }
         carried.add(taken);
         id.set(taken);
@@ -283,10 +335,11 @@ public class TaskBoard extends Artifact {
         }
     }
 
-    private int newClaim(AgentId agent, double x, double z, double r) {
+    private Claim newClaim(AgentId agent, double x, double z, double r) {
         int next = ++lastId;
-        claims.put(next, new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r)));
-        return next;
+        Claim c = new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r));
+        claims.put(next, c);
+        return c;
     }
 
     private void publishStorage() {

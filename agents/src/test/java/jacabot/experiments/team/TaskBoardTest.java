@@ -214,6 +214,46 @@ class TaskBoardTest {
     }
 
     /**
+     * One cylinder, at (0.52, 0.069), half hidden from one robot by a box: seen from (0.844, 0.676)
+     * it was estimated at (0.663, 0.334), 0.39 m away (it is 0.69 m), and seen from (0.907, 0.022)
+     * at (0.617, -0.107): discs of 0.194 and 0.173 m round the estimates miss each other and two
+     * robots held a claim on it at once (team world 12, four robots). Swept on along each bearing,
+     * the first claim reaches the cylinder and the second is refused; a cylinder well off the
+     * first bearing stays free, and the swept claim's own nearer estimate is the same claim.
+     */
+    @Test
+    void aSightingsClaimIsSweptAlongItsBearingSoThatAnUnderestimatedDistanceStillMeetsTheOther() throws CartagoException {
+        try (Workspace ws = Ops.workspace()) {
+            ws.createArtifact("board", TaskBoard.class);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+
+            claim(ws, a, 0.663, 0.334, 0.194);                            // as discs, both pass: the double claim
+            claim(ws, b, 0.617, -0.107, 0.173);
+            ok(ws, a, "board", "releaseAll");
+            ok(ws, b, "board", "releaseAll");
+            double[] aLine = sweep(0.844, 0.676, 0.663, 0.334, 0.194);
+            double[] bLine = sweep(0.907, 0.022, 0.617, -0.107, 0.173);
+            int first = claimAlong(ws, a, 0.663, 0.334, 0.194, aLine);
+            assertTrue(Segments.toSegment(0.52, 0.069, 0.663, 0.334, aLine[0], aLine[1]) < 0.194, "the sweep reaches the cylinder");
+            fails("claimed_by", List.of(a, first), ws, b, "board", "claimAlong", 0.617, -0.107, 0.173, bLine[0], bLine[1],
+                    new OpFeedbackParam<Integer>());                      // swept, the second is refused
+            claimAlong(ws, b, 0.2, 0.9, 0.1, sweep(0.6, 1.2, 0.2, 0.9, 0.1)); // far off a's bearing: another cylinder
+            assertEquals(first, claimAlong(ws, a, 0.55, 0.12, 0.1, sweep(0.844, 0.676, 0.55, 0.12, 0.1)), "nearer: the same claim");
+        }
+    }
+
+    /** {@return the far end of a sighting's claim from (x, z) estimated at (ex, ez): twice r beyond the estimate} */
+    private static double[] sweep(double x, double z, double ex, double ez, double r) {
+        double d = Math.hypot(ex - x, ez - z);
+        return new double[] {ex + (ex - x) / d * 2 * r, ez + (ez - z) / d * 2 * r};
+    }
+
+    private static int claimAlong(Workspace ws, AgentId agent, double x, double z, double r, double[] to) {
+        OpOutcome.Success s = ok(ws, agent, "board", "claimAlong", x, z, r, to[0], to[1], new OpFeedbackParam<Integer>());
+        return ((Number) s.outputs().get(5)).intValue();
+    }
+
+    /**
      * A cylinder carried away is claimed where its robot last said it was: another robot that
      * sights it in the gripper cannot claim it on the way; once put down, the claim stays there.
      */
