@@ -66,6 +66,9 @@ final class TeamSweepCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "where runs.csv and report.md go (default ${DEFAULT-VALUE})")
     private Path out = Path.of("runs", "sweep-team-delivery");
 
+    @Option(names = "--no-progress", description = "no line per finished run (as the single-robot sweep's progress bar)")
+    private boolean noProgress;
+
     @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -109,8 +112,11 @@ final class TeamSweepCommand implements Callable<Integer> {
                         futures.add(pool.submit(() -> {
                             var o = c.equals("baseline") ? TeamDeliveryRun.baseline(team, seed, seconds)
                                     : TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
-                            log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %d deliveries%s", world, seed,
-                                    n, n == 1 ? "" : "s", c, o.deliveries(), o.verdict().success() ? "" : " (" + o.verdict().reason() + ")"));
+                            if (!noProgress) {
+                                log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %d deliveries%s", world,
+                                        seed, n, n == 1 ? "" : "s", c, o.deliveries(),
+                                        o.verdict().success() ? "" : " (" + o.verdict().reason() + ")"));
+                            }
                             return new Row(world, n, c, seed, o);
                         }));
                     }

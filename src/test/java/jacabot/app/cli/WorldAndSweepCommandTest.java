@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.sim.io.WorldFileReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -40,6 +41,21 @@ class WorldAndSweepCommandTest {
         assertEquals("error: --robots is for team-delivery only; navigation has one robot", notATeam[2].strip());
         assertEquals("error: unknown experiment 'flying' (expected one of obstacle-avoidance, object-picking, navigation, "
                 + "suspend-resume, tidy-up, team-delivery)", CliRun.run("world", "generate", "flying", "--seed", "1")[2].strip());
+    }
+
+    @Test
+    void aTeamSweepTakesNoProgressAsTheSingleRobotSweepDoes(@TempDir Path dir) {
+        String[] args = {"sweep", "team-delivery", "--robots", "1", "--world-seeds", "1", "--seeds", "1", "--duration", "4s",
+            "--controllers", "baseline", "--out", dir.toString()};
+        var withLines = CliRun.run(args);
+        assertEquals("0", withLines[0], withLines[2]);
+        assertTrue(withLines[1].contains("world 1 seed 1, 1 robot, baseline:"), withLines[1]);
+        String[] quiet = Arrays.copyOf(args, args.length + 1);
+        quiet[args.length] = "--no-progress";
+        var without = CliRun.run(quiet);
+        assertEquals("0", without[0], without[2]);
+        assertFalse(without[1].contains("world 1 seed 1"), without[1]);
+        assertTrue(without[1].contains("Written: "), without[1]);
     }
 
     @Test
