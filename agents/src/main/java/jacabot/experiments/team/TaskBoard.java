@@ -108,6 +108,11 @@ public class TaskBoard extends Artifact {
 
         void place(double x, double z, double toX, double toZ, double r) {
             property.updateValues(id, agent, x, z, r);
+            sweepTo(toX, toZ);
+        }
+
+        /** Sweeps the disc on to (toX, toZ); the property, the disc, stays as it is. */
+        void sweepTo(double toX, double toZ) {
             fx = toX;
             fz = toZ;
         }
@@ -240,7 +245,7 @@ public class TaskBoard extends Artifact {
             return;
         }
         Claim made = newClaim(me, x, z, r);
-        made.place(x, z, toX, toZ, r);
+        made.sweepTo(toX, toZ);
         id.set(made.id());
     }
 
