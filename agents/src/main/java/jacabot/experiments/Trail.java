@@ -1,5 +1,6 @@
 package jacabot.experiments;
 
+import jacabot.experiments.geom.Segments;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -77,10 +78,8 @@ final class Trail {
 
     /** Whether every point passed lies within {@value #BEND} m of the chord from (x, z) to {@code p}. */
     private static boolean chordKeepsTo(double x, double z, double[] p, List<double[]> passed) {
-        double dx = p[0] - x, dz = p[1] - z, len2 = dx * dx + dz * dz;
         for (double[] q : passed) {
-            double f = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((q[0] - x) * dx + (q[1] - z) * dz) / len2));
-            if (distance(q, x + f * dx, z + f * dz) > BEND) {
+            if (Segments.toSegment(q[0], q[1], x, z, p[0], p[1]) > BEND) {
                 return false;
             }
         }

@@ -8,7 +8,7 @@ class ArchitectureTest {
     @Test
     void packagesDependOneWayAndNeverUpwards() {
         // the middleware artifacts: CArtAgO's API and the robot link, nothing of the controller or the world
-        PackageLayers.of("jacabot.experiments", "link", "team", "")
+        PackageLayers.of("jacabot.experiments", "geom", "link", "team", "")
                 .mustNotUse("jacabot.app..", "jacabot.agent..", "jacabot.robot", "jacabot.robot.baseline..", "jacabot.robot.run..", "jacabot.sim..").check();
     }
 }

@@ -6,6 +6,7 @@ import jacabot.cartago.GUARD;
 import jacabot.cartago.OPERATION;
 import jacabot.cartago.ObsProperty;
 import jacabot.cartago.OpFeedbackParam;
+import jacabot.experiments.geom.Segments;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;

@@ -10,6 +10,7 @@ import jacabot.cartago.CartagoException;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.cartago.OpOutcome;
 import jacabot.cartago.Workspace;
+import jacabot.experiments.geom.Segments;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.HashMap;

@@ -1,12 +1,12 @@
-package jacabot.experiments.team;
+package jacabot.experiments.geom;
 
 /** The distance between two line segments of the floor (a point is a segment of no length). */
-final class Segments {
+public final class Segments {
     private Segments() {
     }
 
     /** {@return the least distance between segment (ax, az)-(bx, bz) and segment (cx, cz)-(dx, dz)} */
-    static double distance(double ax, double az, double bx, double bz, double cx, double cz, double dx, double dz) {
+    public static double distance(double ax, double az, double bx, double bz, double cx, double cz, double dx, double dz) {
         if (cross(ax, az, bx, bz, cx, cz, dx, dz)) {
             return 0;
         }
@@ -15,7 +15,7 @@ final class Segments {
     }
 
     /** {@return the distance from (px, pz) to segment (ax, az)-(bx, bz)} */
-    static double toSegment(double px, double pz, double ax, double az, double bx, double bz) {
+    public static double toSegment(double px, double pz, double ax, double az, double bx, double bz) {
         double ux = bx - ax, uz = bz - az;
         double len2 = ux * ux + uz * uz;
         double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((px - ax) * ux + (pz - az) * uz) / len2));

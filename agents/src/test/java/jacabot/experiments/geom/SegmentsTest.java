@@ -1,4 +1,4 @@
-package jacabot.experiments.team;
+package jacabot.experiments.geom;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
