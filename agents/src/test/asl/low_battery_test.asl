@@ -78,6 +78,28 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        -lowBattery; -+stored(0); -cylinders(2); -~delivered; -deliverFirst(300).
 
+// a task that ends at a known time (tidy-up) makes no trip while the battery covers the time left
+// at full power (2.5 W): 470 J cover 100 s, not 300 s
+@[test]
++!test_no_trip_while_the_battery_covers_the_time_left
+    <- !until(not charging, 10000); !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       .system_time(T); +taskEnd(T + 100000);
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       -taskEnd(_); .system_time(T2); +taskEnd(T2 + 300000);                 // 300 s left: the trip
+       -lowBattery; !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       !assert_true(charging);
+       -taskEnd(_); -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -charged; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       -lowBattery.
+
 // an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
 // the charger before the trip; once it is over, the next lowBattery starts the trip
 @[test]
