@@ -1,15 +1,15 @@
 // Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
 // needed, then park on the charger. Written from skills alone (suspend-resume's, the way round, a
 // search memory) and the plans of its own that decide when the task is done and when to search.
-// From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
+// From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D);
+// from the run: taskEnd(Ms), its end (no trip to the charger while the battery covers the time left).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // a search goes on from anywhere (no way back after a recharge), a look around first; a delivery
 // under way ends first over 300 J (the worst drain); a wall: three obstacles met near each other; a
 // homing still coming nearer goes on past far sight's time limit (a nearer sighting in the last 15 s);
-// a cylinder beside the storage area's pile is seen too (every red run of the image); the task ends
-// at 600 s (the run's ten minutes): no trip to the charger while the battery covers the time left
-resumeAtCharger. lookFirst. deliverFirst(300). rehitsToFollow(2). homingProgress(15000). everyRedRun. taskEnd(600000).
+// a cylinder beside the storage area's pile is seen too (every red run of the image)
+resumeAtCharger. lookFirst. deliverFirst(300). rehitsToFollow(2). homingProgress(15000). everyRedRun.
 
 !start.
 

@@ -13,8 +13,8 @@ fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
 // Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
 // point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
-// via the storage point to the charger); taskEnd(T) (the agent's, optional: the task's end, ms on the
-// agent's clock: no trip while the battery covers the time left at full power). Rules it extends:
+// via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
+// the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,

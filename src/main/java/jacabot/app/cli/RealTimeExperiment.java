@@ -118,7 +118,7 @@ final class RealTimeExperiment {
             }
             AutoCloseable sampling = MindWatch.sampleEvery(watches, 200);
             run.lag().addListener(tap.lags()).addListener(LagMeter.firstWarning(log::warn));
-            run.start();
+            run.start(seconds);
             var closed = new CountDownLatch(1);
             if (viewer) {
                 SwingUtilities.invokeLater(() -> {

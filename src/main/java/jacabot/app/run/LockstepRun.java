@@ -36,6 +36,7 @@ import java.util.function.Consumer;
  */
 public final class LockstepRun extends SteppedPlatform {
     private final String robotName;
+    private final Experiment experiment;
     private final ArtifactId middlewareId;
     private final MiddlewareArtifact middleware;
     /** Reactive time: from a step's readings reaching the middleware to the first plan they trigger. */
@@ -87,6 +88,7 @@ public final class LockstepRun extends SteppedPlatform {
             throw new IllegalArgumentException("a robot needs one or more agents with distinct names, got " + agents);
         }
         this.robotName = robotName;
+        this.experiment = experiment;
         // made before the agent starts, so its !init finds it (thesis Chapter 4 §5)
         middlewareId = workspace().createArtifact("middleware", Middlewares.of(experiment).getName(), 0, "lockstep");
         middleware = workspace().artifactObject(middlewareId, MiddlewareArtifact.class).orElseThrow();
@@ -240,8 +242,12 @@ public final class LockstepRun extends SteppedPlatform {
         }
     }
 
-    /** Runs {@code seconds} of simulated time. */
+    /** Runs {@code seconds} of simulated time (the first run's end is the task's: {@link WorldBeliefs#taskEnd}). */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
+        if (!reasoned) { // before the agents' first reasoning cycle, as an initial belief
+            long endMs = world().timeMs() + Math.round(seconds * 1000);
+            WorldBeliefs.taskEnd(experiment, endMs).ifPresent(b -> members.forEach(m -> mas().agent(m.name()).addBelief(b, false)));
+        }
         var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
                 .remoteController(remoteController).inMemory(inMemory).takeTurns(turns);
         if (controllerLogSink != null) {

@@ -38,6 +38,7 @@ public final class RealTimeRun implements AutoCloseable {
     private Thread agents;
     private final LagMeter lag;
     private final FailureWatch failures;
+    private final Experiment experiment;
 
     /** An agent stuck in one reasoning cycle this long stops the heartbeats (and so the robot). */
     public static final long STALL_MS = 100;
@@ -61,6 +62,7 @@ public final class RealTimeRun implements AutoCloseable {
             double speed, PrintStream console, int port, Consumer<String> controllerEvents)
             throws AslSyntaxException, CartagoException {
         this.world = world;
+        this.experiment = experiment;
         // both ends are in this process: a fresh secret of this run's, no file needed
         LinkSecret.useInThisProcess(LinkSecret.random());
         workspace = Workspace.builder("main").console(console).logger(CartagoLogger.console(console)).build();
@@ -139,7 +141,17 @@ public final class RealTimeRun implements AutoCloseable {
         return middleware.link().timings();
     }
 
-    /** Starts the agents and the controller; the caller runs the simulation ({@link #runner()}). */
+    /**
+     * Starts the agents and the controller, telling the agents that their task ends in {@code seconds}
+     * ({@link WorldBeliefs#taskEnd}); the caller runs the simulation that long ({@link #runner()}).
+     */
+    public void start(double seconds) {
+        long endMs = world.timeMs() + Math.round(seconds * 1000);
+        WorldBeliefs.taskEnd(experiment, endMs).ifPresent(b -> mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false)));
+        start();
+    }
+
+    /** Starts the agents and the controller, a run with no set end; the caller runs the simulation ({@link #runner()}). */
     public void start() {
         agents = new Thread(() -> {
             try {

@@ -7,6 +7,7 @@ import jacabot.robot.Experiment;
 import jacabot.sim.world.WorldSpec;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * What the robot is told about its world when it starts (not in the thesis: the agents take their landmarks from the world, so other worlds work): the landmarks of the world
@@ -45,6 +46,19 @@ public final class WorldBeliefs {
             out.add(Literal.of("cylinders", NumberTerm.of(spec.cylinders().size())));
         }
         return out;
+    }
+
+    /**
+     * {@return when the experiment's task ends, as a belief of the agent's (simulated) clock:
+     * tidy-up's {@code taskEnd(Ms)}, the end of the run, so that no recharge trip is made that the
+     * battery does not need before then (skills/recharge-trip.asl); empty for the other experiments,
+     * whose recharge episodes are the task itself}
+     * @param endMs the run's end, milliseconds of simulated time
+     */
+    public static Optional<Literal> taskEnd(Experiment experiment, long endMs) {
+        return experiment == Experiment.TIDY_UP
+                ? Optional.of(Literal.of("taskEnd", NumberTerm.of(endMs)).addAnnot(Literal.SOURCE_SELF))
+                : Optional.empty();
     }
 
     /** {@return the program with the world's beliefs first, replacing the program's own of the same name and arity} */

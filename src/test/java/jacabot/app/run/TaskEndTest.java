@@ -1,0 +1,35 @@
+package jacabot.app.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import jacabot.agent.syntax.Literal;
+import jacabot.robot.Experiment;
+import jacabot.sim.SimWorld;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/**
+ * Tidy-up's agent is told when its task ends (the end of the run, whatever its duration), so its
+ * recharge-trip skill makes no trip the battery does not need; an experiment whose recharge
+ * episodes are the task itself is told nothing.
+ */
+class TaskEndTest {
+    private static final double SECONDS = 2.5;
+
+    @ParameterizedTest
+    @EnumSource(value = Experiment.class, names = {"TIDY_UP", "SUSPEND_RESUME"})
+    void theTaskEndsWithTheRunOnlyForTidyUp(Experiment e) throws Exception {
+        SimWorld w = SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), e.worldFile()));
+        try (var run = new LockstepRun(w, null, e, AgentSource.packaged(e), w.seed(),
+                new PrintStream(OutputStream.nullOutputStream())).inMemory(true)) {
+            run.runFor(SECONDS);
+            List<String> taskEnd = run.mas().agent(RobotAgent.ALONE).beliefBase().beliefs().stream()
+                    .filter(b -> b.functor().equals("taskEnd")).map(Literal::toString).toList();
+            assertEquals(e == Experiment.TIDY_UP ? List.of("taskEnd(2500)[source(self)]") : List.of(), taskEnd);
+        }
+    }
+}
