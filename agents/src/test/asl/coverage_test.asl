@@ -112,3 +112,64 @@ mock_operation(_, ok).
        !until(mock_called(setSpeeds(100, 100)), 2000);
        .drop_desire(move(_));
        !assert_true(mock_called(setSpeeds(100, 100))).
+
+@[test]
++!test_a_covered_room_in_a_larger_arena_sends_the_robot_to_the_nearest_frontier
+    <- !forget_calls; -+obstacleTimes([]); -seeking(_); -soughtAt(_); -stale; -+seekWindow(1); // the test's clock is young
+       +seekShare(0.3);                                                               // the agent turns seeking on
+       +mock_operation(freshCells(1, 2), ok); +mock_operation(visitedArea(1.2), ok);  // 1.2 of 9 m2
+       +mock_operation(frontierTurn(100, "right", 50, 0.1), ok);                      // a waypoint 10 cm away
+       !!move(0.8);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       !assert_true(seeking(_));
+       .drop_desire(move(_));
+       -mock_operation(freshCells(1, 2), ok); -mock_operation(visitedArea(1.2), ok);
+       -mock_operation(frontierTurn(100, "right", 50, 0.1), ok);
+       -+seekWindow(30000); -seeking(_); -seekShare(_);
+       !assert_true(mock_called(setSpeeds(100, -100)));                                // the turn towards it
+       !assert_false(mock_called(exploreTurn(_, _, _))).
+
+@[test]
++!test_seeking_ends_when_there_is_no_frontier
+    <- !forget_calls; -+obstacleTimes([]); -soughtAt(_); .system_time(T); +seeking(T + 10000);
+       +mock_operation(frontierTurn(100, "none", 0, 0), ok);
+       !!move(0.2);
+       !until(not seeking(_), 2000);
+       .drop_desire(move(_));
+       -mock_operation(frontierTurn(100, "none", 0, 0), ok);
+       !assert_false(seeking(_));
+       !assert_true(soughtAt(_));
+       -soughtAt(_).
+
+@[test]
++!test_no_seeking_while_new_floor_still_comes_or_most_of_the_arena_is_crossed
+    <- !forget_calls; -+obstacleTimes([]); -seeking(_); -soughtAt(_); -stale; -+seekWindow(1); // the test's clock is young
+       +seekShare(0.3);                                                               // the agent turns seeking on
+       +mock_operation(freshCells(1, 20), ok); +mock_operation(visitedArea(1.2), ok);
+       +mock_operation(exploreTurn(100, "left", 50), ok); +mock_operation(staleTime(0), ok);
+       !!move(0.8);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       .drop_desire(move(_));
+       -mock_operation(freshCells(1, 20), ok); -soughtAt(_);
+       !assert_false(seeking(_));
+       !forget_calls; +mock_operation(freshCells(1, 2), ok); +mock_operation(visitedArea(5), ok); // 5 of 9 m2
+       !!move(0.8);
+       !until(mock_called(freshCells(_, _)), 2000);
+       .wait(100);
+       .drop_desire(move(_));
+       -mock_operation(freshCells(1, 2), ok); -mock_operation(visitedArea(5), ok); -soughtAt(_);
+       -+seekWindow(30000); -seekShare(_);
+       !assert_false(seeking(_)).
+
+@[test]
++!test_no_seeking_in_an_agent_that_does_not_turn_it_on
+    <- !forget_calls; -+obstacleTimes([]); -seeking(_); -soughtAt(_); -stale; -+seekWindow(1);
+       +mock_operation(freshCells(1, 2), ok); +mock_operation(visitedArea(1.2), ok);
+       +mock_operation(exploreTurn(100, "left", 50), ok); +mock_operation(staleTime(0), ok);
+       !!move(0.8);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       .drop_desire(move(_));
+       -mock_operation(freshCells(1, 2), ok); -mock_operation(visitedArea(1.2), ok);
+       -+seekWindow(30000);
+       !assert_false(mock_called(freshCells(_, _)));
+       !assert_false(seeking(_)).

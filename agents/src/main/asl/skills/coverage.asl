@@ -37,6 +37,19 @@ exploreHorizon(0.6).
 // and 2; the default 1 m world keeps the thesis' levels)
 closeArea(2).
 narrowSide(1).
+// seeking, not in the thesis, and on only in an agent that believes seekShare(S) (S = 0.3 was
+// measured: docs/comparison.md, "Users' arenas"): once fewer than seekBelow cells were new in the
+// last seekWindow ms while the floor crossed (dead reckoning) is under seekShare of the arena, the
+// robot's room is covered and the rest of the arena lies behind a wall whose doorway the random walk
+// seldom meets (wide world 60: one room of two, 24 %). Then for seekTime ms, legs to the nearest
+// frontier of the robot's own map (the middleware's frontierTurn: floor not crossed, open beyond,
+// reached along floor crossed), a waypoint at a time; with no frontier, or after it, seekWindow ms
+// of random motion before the next look.
+seekWindow(30000).
+seekBelow(6).
+seekTime(40000).
+seekLookEvery(5000).          // while new floor still comes, the next look at its rate
+flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
@@ -45,8 +58,9 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
-// Reads: arena(W, D) (the world); maxSpeed(M). Needs: !clear (recovery). Include it before recovery
-// (its escape, a turn on the spot, is the one this robot uses).
+// Reads: arena(W, D) (the world); maxSpeed(M); seekShare(S) (the agent's, if any); its own
+// seeking(Until) and soughtAt(T). Needs: !clear (recovery). Include it before recovery (its escape,
+// a turn on the spot, is the one this robot uses).
 
 @setUpCoverage
 +!setUpCoverage : wheelGeometry(U, A)
@@ -89,6 +103,26 @@ pausedUntil("-veering") :- veering.
 
 @movePaused +!move(N) : pausedUntil(E) <- .wait(E); !move(N).
 @coverAvoidStill +!move(N) : obstacle(true) & delta(V) <- +avoiding; stop; !noteObstacle; !avoid(V).
+// seeking (seekWindow above): the turn towards the next waypoint to the frontier, then the leg there
+// (just after an obstacle, the plans below: no turn on the spot then)
+@moveSeek
++!move(_) : seeking(Until) & .system_time(T) & T < Until & flankTime(FT)
+          & not (obstacleTimes([L | _]) & T - L < FT) & turnSpeed(S) & cruiseSpeed(V) & wheelGeometry(U, _)
+    <- frontierTurn(S, Side, Ms, D);
+       if (Side == "none") { -seeking(Until); +soughtAt(T) }
+       else {
+           if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
+           setSpeeds(V, V); .wait(D / (V * U) * 1000)
+       }.
+@moveSeekEnd +!move(N) : seeking(U) & .system_time(T) & T >= U <- -seeking(U); +soughtAt(T); !move(N).
+@moveSeekStart
++!move(N) : N > 0.3 & seekShare(_) & not seeking(_) & seekWindow(W) & .system_time(T) & T > W & not (soughtAt(F) & T - F < W)
+    <- freshCells(W, C); visitedArea(Crossed); ?arena(AW, AD); ?seekShare(Share); ?seekBelow(K);
+       if (C < K & Crossed < Share * AW * AD) {
+           ?seekTime(D); -soughtAt(_); +seeking(T + D);
+           println("Covered ground: seeking the nearest frontier")
+       } else { ?seekLookEvery(E); -+soughtAt(T - W + E) };
+       !move(N).
 // straight legs at cruiseSpeed, not forward; turns on the spot, not along the listing's arcs
 // (turnLeft/turnRight), whose inner flank swept blind into boxes beside the robot
 @moveStraight +!move(N) : N <= 0.3 & not stale <- !straightLeg.
@@ -96,7 +130,7 @@ pausedUntil("-veering") :- veering.
 @moveRedraw +!move(N) : N <= 0.3 & stale <- .random(R); !move(R).
 // just after an obstacle, no turn on the spot: the robot may still touch it at its flank, out of
 // the sensors' sight; a straight leg leaves
-@moveAway +!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & Now - T < 2000 <- !straightLeg.
+@moveAway +!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & flankTime(FT) & Now - T < FT <- !straightLeg.
 // the turn towards the floor not yet crossed (exploreTurn, from dead reckoning), then a leg
 @moveExplore
 +!move(N) : N > 0.3 & turnSpeed(S)

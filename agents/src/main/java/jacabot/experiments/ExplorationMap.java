@@ -1,6 +1,12 @@
 package jacabot.experiments;
 
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -25,6 +31,7 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
+    private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
      * @param speedUnit metres per second of one wheel speed unit
@@ -59,6 +66,7 @@ final class ExplorationMap {
             heading += w * dt;
             if (visit()) {
                 lastFreshMs = nowMs;
+                freshTimes.addLast(nowMs);
             }
         }
         lastMs = nowMs;
@@ -111,6 +119,76 @@ final class ExplorationMap {
         return Math.max(0, nowMs - lastFreshMs);
     }
 
+    /** How far past a frontier cell the floor must be open (not crossed, no obstacle met), cells. */
+    static final int OPEN_DEPTH = 3;
+    /** How far along the path to a frontier the next waypoint lies, cells. */
+    static final int WAYPOINT = 4;
+
+    /**
+     * The way to the nearest frontier (not in the thesis): the nearest cell not crossed yet, reached
+     * through crossed cells only, which and {@value #OPEN_DEPTH} more cells straight on beyond it are
+     * not crossed and have no obstacle met in them or beside them across the way: a doorway out of a
+     * covered room (two cells wide at least), not the margin along its walls, where obstacles were met. {@return {turn in degrees, left positive; distance in metres} to a waypoint up to
+     * {@value #WAYPOINT} cells along that way, or null when there is none}
+     */
+    double[] frontierWaypoint() {
+        long start = key(x, z);
+        Map<Long, Long> parent = new HashMap<>();
+        Deque<Long> queue = new ArrayDeque<>();
+        parent.put(start, start);
+        queue.add(start);
+        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        while (!queue.isEmpty()) {
+            long k = queue.poll();
+            int i = (int) (k >> 32), j = (int) k;
+            for (int[] d : steps) {
+                long n = key(i + d[0], j + d[1]);
+                if (parent.containsKey(n) || blocked.contains(n)) {
+                    continue;
+                }
+                parent.put(n, k);
+                if (visited.contains(n)) {
+                    queue.add(n);
+                } else if (openBeyond(i + d[0], j + d[1], d)) {
+                    return waypoint(parent, n, start);
+                }
+            }
+        }
+        return null;
+    }
+
+    private boolean openBeyond(int i, int j, int[] d) {
+        for (int s = 0; s <= OPEN_DEPTH; s++) {
+            int a = i + s * d[0], b = j + s * d[1];
+            if ((s > 0 && visited.contains(key(a, b))) || blocked.contains(key(a, b))
+                    || blocked.contains(key(a + d[1], b + d[0])) || blocked.contains(key(a - d[1], b - d[0]))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private double[] waypoint(Map<Long, Long> parent, long target, long start) {
+        List<Long> path = new ArrayList<>();
+        for (long k = target; k != start; k = parent.get(k)) {
+            path.add(0, k);
+        }
+        long w = path.get(Math.min(WAYPOINT, path.size()) - 1);
+        double wx = ((int) (w >> 32) + 0.5) * CELL, wz = ((int) w + 0.5) * CELL;
+        double turn = Math.toDegrees(Math.atan2(wz - z, wx - x) - heading);
+        turn = ((turn % 360) + 540) % 360 - 180;
+        return new double[] {turn, Math.hypot(wx - x, wz - z)};
+    }
+
+    /** {@return how many cells the centre crossed for the first time after {@code sinceMs}} */
+    int freshCellsSince(long sinceMs) {
+        int n = 0;
+        for (var it = freshTimes.descendingIterator(); it.hasNext() && it.next() > sinceMs; ) {
+            n++;
+        }
+        return n;
+    }
+
     /** {@return how long a turn of {@code degrees} on the spot takes, wheels at ±{@code wheelSpeed}, in ms} */
     long turnMillis(double degrees, double wheelSpeed) {
         double degreesPerSecond = Math.toDegrees(2 * wheelSpeed * speedUnit / axle);
@@ -135,7 +213,10 @@ final class ExplorationMap {
     }
 
     private static long key(double px, double pz) {
-        long i = (long) Math.floor(px / CELL), j = (long) Math.floor(pz / CELL);
-        return (i << 32) ^ (j & 0xFFFFFFFFL);
+        return key((int) Math.floor(px / CELL), (int) Math.floor(pz / CELL));
+    }
+
+    private static long key(int i, int j) {
+        return ((long) i << 32) ^ (j & 0xFFFFFFFFL);
     }
 }

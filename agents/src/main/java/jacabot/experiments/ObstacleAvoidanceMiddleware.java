@@ -120,6 +120,57 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         ms.set((double) map.staleMillis(simTimeMs()));
     }
 
+    /**
+     * How many cells the robot crossed for the first time in the last {@code windowMs} ms (not in the
+     * thesis): a rate of new floor that falls tells the agent its random walk covers old ground. Fails
+     * before {@code odometry}.
+     */
+    @OPERATION
+    void freshCells(double windowMs, OpFeedbackParam<Double> cells) {
+        if (map == null) {
+            failed("freshCells needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        cells.set((double) map.freshCellsSince(simTimeMs() - Math.round(windowMs)));
+    }
+
+    /**
+     * The turn on the spot towards the way to the nearest frontier (not in the thesis,
+     * {@code ExplorationMap.frontierWaypoint}): {@code side} "left", "right" or "none" (no frontier),
+     * how long to turn at wheel speeds ±{@code speed}, and how far the waypoint is then, in metres.
+     * Fails before {@code odometry}.
+     */
+    @OPERATION
+    void frontierTurn(double speed, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms, OpFeedbackParam<Double> metres) {
+        if (map == null || !(speed > 0)) {
+            failed("frontierTurn needs odometry(SpeedUnit, AxleLength) first and a positive speed");
+            return;
+        }
+        double[] way = map.frontierWaypoint();
+        if (way == null) {
+            side.set("none");
+            ms.set(0.0);
+            metres.set(0.0);
+            return;
+        }
+        side.set(way[0] >= 0 ? "left" : "right");
+        ms.set((double) map.turnMillis(way[0], speed));
+        metres.set(way[1]);
+    }
+
+    /**
+     * The floor the robot's centre has crossed, in m² (its 10 cm cells, not in the thesis). Fails before
+     * {@code odometry}.
+     */
+    @OPERATION
+    void visitedArea(OpFeedbackParam<Double> squareMetres) {
+        if (map == null) {
+            failed("visitedArea needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        squareMetres.set(map.cellsVisited() * ExplorationMap.CELL * ExplorationMap.CELL);
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         if (kind == SensorKind.WHEEL_SPEEDS && map != null) {

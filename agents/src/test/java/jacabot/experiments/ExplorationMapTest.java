@@ -1,6 +1,7 @@
 package jacabot.experiments;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -57,6 +58,44 @@ class ExplorationMapTest {
         assertTrue(map.staleMillis(5500) >= 2000, "over old floor since 3 s, got " + map.staleMillis(5500));
         drive(5500, 9000, -100); // past the start: new floor again
         assertTrue(map.staleMillis(9000) < 1000, "fresh floor behind the start, got " + map.staleMillis(9000));
+    }
+
+    @Test
+    void freshCellsSinceCountsOnlyCellsFirstCrossedAfterThatTime() {
+        drive(0, 3000, 100);     // 30 cm out: three new cells by 3 s
+        drive(3000, 5500, -100); // 25 cm back over them: none new
+        assertEquals(0, map.freshCellsSince(3500), "none new on the way back");
+        assertEquals(3, map.freshCellsSince(0), 1);
+        drive(5500, 9000, -100); // past the start: new floor again
+        assertEquals(3, map.freshCellsSince(5500), 1);
+    }
+
+    @Test
+    void theWayToAFrontierGoesAlongFloorCrossedToADoorwayNotIntoAWall() {
+        // a lane of ten cells along x, crossed; obstacles met all round it (the walls met at 13 cm
+        // leave cells between them, as here), except a doorway three cells wide in its right side
+        drive(0, 9_500, 100);
+        for (int i = -1; i <= 11; i++) {
+            mark(i, 1);
+            if (i < 4 || i > 6) {
+                mark(i, -1);
+            }
+        }
+        mark(-1, 0);
+        mark(11, 0);
+        double[] way = map.frontierWaypoint();
+        assertTrue(way != null, "the doorway is a frontier");
+        // the robot at the lane's far end (cell 9): the way runs back along the lane, 4 cells to cell 5
+        assertTrue(Math.abs(way[0]) > 150, "back along the lane, got " + way[0]);
+        assertEquals(0.4, way[1], 0.05);
+        mark(5, -1); // the doorway closed: every cell out of the lane is next to an obstacle met
+        assertNull(map.frontierWaypoint());
+    }
+
+    /** An obstacle met in cell (i, j), marked from where the robot is (heading 0, as {@code drive} leaves it). */
+    private void mark(int i, int j) {
+        double dx = (i + 0.5) * ExplorationMap.CELL - map.x(), dz = (j + 0.5) * ExplorationMap.CELL - map.z();
+        map.obstacle(Math.toDegrees(Math.atan2(dz, dx)), Math.hypot(dx, dz));
     }
 
     @Test

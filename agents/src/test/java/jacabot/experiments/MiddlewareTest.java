@@ -199,6 +199,37 @@ class MiddlewareTest {
     }
 
     @Test
+    void freshCellsCountsNewFloorOfTheLastWindowAndVisitedAreaAllOfIt() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        var cells = new OpFeedbackParam<Double>();
+        var area = new OpFeedbackParam<Double>();
+        assertTrue(!b.op("freshCells", new Object[] {30000.0, cells}).succeeded(), "no odometry yet");
+        assertTrue(!b.op("visitedArea", new Object[] {area}).succeeded(), "no odometry yet");
+        b.op("odometry", new Object[] {0.001, 0.09});
+        // 10 s straight at 0.1 m/s (a reading every 40 ms): 1 m, ten new cells after the start's
+        for (int i = 0; i < 250; i++) {
+            b.deliver(new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, 100}));
+        }
+        // then 10 s on the spot: nothing new
+        for (int i = 0; i < 250; i++) {
+            b.deliver(new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, -100}));
+        }
+        assertTrue(b.op("freshCells", new Object[] {5000.0, cells}).succeeded());
+        assertEquals(0.0, cells.get(), "no new floor in the last 5 s");
+        assertTrue(b.op("freshCells", new Object[] {30000.0, cells}).succeeded());
+        assertEquals(10.0, cells.get(), 1.0, "the metre driven");
+        assertTrue(b.op("visitedArea", new Object[] {area}).succeeded());
+        assertEquals(0.11, area.get(), 0.011, "eleven cells of 0.01 m2");
+        // no obstacle met: open floor beside the metre crossed is a frontier, a turn and a short leg away
+        var side = new OpFeedbackParam<String>();
+        var ms = new OpFeedbackParam<Double>();
+        var metres = new OpFeedbackParam<Double>();
+        assertTrue(b.op("frontierTurn", new Object[] {100.0, side, ms, metres}).succeeded());
+        assertTrue(side.get().equals("left") || side.get().equals("right"), side.get());
+        assertTrue(metres.get() > 0 && metres.get() <= 0.5, metres.get() + " m");
+    }
+
+    @Test
     void gripForceMeansCaughtAndAFallIsSignalledForAPickedCylinder() throws Exception {
         var b = new Bench(ObjectPickingMiddleware.class);
         b.deliver(value(SensorKind.GRIP_FORCE, -40), new SensorInfo(SensorKind.GRIPPER_POSITIONS.id(), new double[] {1, 1}),
