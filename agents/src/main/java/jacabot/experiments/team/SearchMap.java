@@ -28,13 +28,16 @@ import java.util.Map;
  * near (far sight takes the cylinder if it is there) or given it up.
  *
  * <p>Observable property: {@code searchPoint(Agent, X, Z)}, one per searching robot, moved on as
- * soon as that cell is seen (by anyone) or that spot is done. Operations: {@code searchArea(W, D, Sx, Sz, Clear)} (the
- * arena, W by D round the origin, and the storage area, a disc never searched; the first call sets
- * them, later ones are ignored), {@code spotted(X, Z)}, {@code looked(X, Z, Heading, Searching)} (marks the view; a robot
- * not searching has no search point), {@code searchFrom(X, Z, ?Px, ?Pz)} (the caller's last search
- * point is done, seen or given up; gives the next: the nearest spot no other robot goes to, else the nearest unseen cell at least {@link #SPREAD}
- * from every other robot's point, or the nearest unseen if none is). Every operation is one
- * artifact step, so two robots never get one point. An agent that leaves loses its point.
+ * soon as that cell is seen (by anyone) or that spot is done. Operations:
+ * {@code searchArea(W, D, Sx, Sz, Clear)} (the arena, W by D round the origin, and the storage
+ * area, a disc never searched; the first call sets them, later ones are ignored),
+ * {@code spotted(X, Z)}, {@code looked(X, Z, Heading, Searching)} (marks the view; a robot not
+ * searching has no search point), {@code searchFrom(X, Z, ?Px, ?Pz)} (the caller's last search
+ * point is done, seen or given up; gives the next: the nearest spot no other robot goes to, else
+ * the nearest unseen cell at least {@link #SPREAD} from every other robot's point, or the nearest
+ * unseen if none is). Every operation is one artifact step, so two robots never get one spot, and
+ * one cell only when every unseen cell lies within {@link #SPREAD} of another's point. An agent
+ * that leaves loses its point.
  */
 public class SearchMap extends Artifact {
     /** A cell's side, metres: half the sweep's lanes' spacing. */
