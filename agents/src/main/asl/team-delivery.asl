@@ -4,7 +4,8 @@
 // queue). The team's skills come first: team-storage (one robot at a time at the storage point),
 // team-places (where the teammates are), team-way (who gives way to whom), team-follow (a
 // following distance on the same way), team-claims (who
-// fetches which cylinder), team-charger (the charger by need, one at a time); the other skills
+// fetches which cylinder), team-charger (the charger by need, one at a time), team-search (each
+// robot searches where no one has looked); the other skills
 // are experiment 4's. From the world file:
 // storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
 
@@ -25,6 +26,7 @@ deliverFirst(300).
 { include("skills/team-follow.asl") }
 { include("skills/team-claims.asl") }
 { include("skills/team-charger.asl") }
+{ include("skills/team-search.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }

@@ -4,6 +4,10 @@
 // every lookEvery ms. A waypoint not reached in time is skipped.
 // Parameters:
 searchAfter(45000).   // ms without a cylinder before the sweep
+// an agent's own searchDelay(Ms) rule or belief replaces it while it holds (team-search: a team's
+// shared search starts sooner)
+sweepDelay(S) :- searchDelay(S).
+sweepDelay(S) :- not searchDelay(_) & searchAfter(S).
 // lanes this far apart (m): the camera sees a cylinder up to about 1.5 m ahead within 30 degrees
 // either side, so wider lanes leave no floor unseen, and the battery (1000 J, about 17 m of travel
 // at full speed) no longer runs out on a third of a big arena (generated worlds: navigation
@@ -25,6 +29,7 @@ progressStep(G) :- waypointProgress(G).
 progressStep(0.1) :- not waypointProgress(_).
 setUpGoal(setUpSweep).
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
+// searchDelay(Ms) (the agent's, optional: see searchAfter);
 // lastAvoid(T) (avoidance); maxSpeed(M).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
 // closerAt(T) (when the robot last came nearer its waypoint: way-round reads it),
@@ -41,7 +46,7 @@ setUpGoal(setUpSweep).
 @found +!found <- .system_time(T); -+lastFound(T); -searching; .abolish(waypoint(_, _, _)).
 
 @searchClock
-+!searchClock : searchAfter(S) & lastFound(T0)
++!searchClock : sweepDelay(S) & lastFound(T0)
     <- .wait(5000); .system_time(T);
        if (T - T0 > S & not searching & not travelling) { println("No cylinder for a while: sweeping the arena"); +searching; !planSweep };
        !searchClock.

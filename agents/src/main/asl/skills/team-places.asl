@@ -9,7 +9,8 @@ teammateClearance(0.15).   // m: a sighting this near a teammate's last publishe
                            // teammate's (a cylinder carried 6 cm ahead, a robot's second of travel)
 // Beliefs: placePublished(T). Reads: location(X, Y, Z) (the middleware), robotAt(A, X, Z) (the board).
 // Rules it offers: teammateNear(X, Z).
-// Needs: the board focused (team-claims' setUpTeam). Include it after team-storage.
+// Needs: the board focused (team-claims' setUpTeam); !lookedFrom (team-search: the floor the camera
+// looked over, marked on the team's search map). Include it after team-storage.
 
 placeDue(_) :- not placePublished(_).
 placeDue(T) :- placePublished(T0) & placeEvery(E) & T - T0 >= E.
@@ -20,4 +21,4 @@ teammateNear(X, Z) :- robotAt(A, Rx, Rz) & not .my_name(A) & teammateClearance(R
 // with a plan for +location that applies now and then (team-storage) is included before this one
 @publishPlace[atomic]
 +location(X, _, Z) : .system_time(T) & placeDue(T)
-    <- -+placePublished(T); at(X, Z).
+    <- -+placePublished(T); at(X, Z); !lookedFrom(X, Z).

@@ -16,6 +16,7 @@ import jacabot.experiments.SuspendResumeMiddleware;
 import jacabot.experiments.link.LinkConfig;
 import jacabot.experiments.link.StepData;
 import jacabot.experiments.team.ChargerQueue;
+import jacabot.experiments.team.SearchMap;
 import jacabot.experiments.team.TaskBoard;
 import jacabot.robot.ControllerConfig;
 import jacabot.robot.Experiment;
@@ -37,7 +38,7 @@ import java.util.function.Consumer;
  * multi-robot systems). Every robot has its controller and its middleware artifact
  * ({@code middleware_<robot>}) joined by in-memory frames (as {@link LockstepCoordinator#inMemory});
  * its agent is named as the robot. The agents share one stepped workspace with the team's task
- * board ({@code board}) and charger queue ({@code charger}).
+ * board ({@code board}), charger queue ({@code charger}) and search map ({@code search}).
  *
  * <p>Each control step: every robot's readings are sampled, then sent and delivered to its
  * middleware, in the world file's order; only then do the agents reason, together, until quiescent
@@ -48,7 +49,7 @@ import java.util.function.Consumer;
  */
 public final class TeamLockstepRun extends SteppedPlatform {
     /** The artifacts every agent of the team shares. */
-    public static final String BOARD = "board", CHARGER = "charger";
+    public static final String BOARD = "board", CHARGER = "charger", SEARCH = "search";
     /** Two claims' places closer than this are one cylinder on the board, metres (rough camera estimates). */
     public static final double CLAIM_RADIUS = 0.2;
 
@@ -91,6 +92,7 @@ public final class TeamLockstepRun extends SteppedPlatform {
         board = workspace.artifactObject(boardId, TaskBoard.class).orElseThrow();
         ArtifactId chargerId = workspace.createArtifact(CHARGER, ChargerQueue.class.getName());
         charger = workspace.artifactObject(chargerId, ChargerQueue.class).orElseThrow();
+        workspace.createArtifact(SEARCH, SearchMap.class.getName());
         AslParser parser = agent.parser();
         for (Robot robot : world.robots()) {
             String name = robot.name();
