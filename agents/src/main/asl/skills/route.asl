@@ -13,9 +13,13 @@ routeMemory(180000).   // ms an obstacle seen stays on the map
 // m: this near the target the robot heads for it straight (the storage area and the charger are
 // entered with the distance sensors off and no steering: a point beside the target took it past)
 routeNear(0.3).
-// Reads: arena(W, D) (the world).
+// Reads: arena(W, D) (the world); routeHold(H) (an agent's option, e.g. suspend/resume's: the sweep
+// keeps the point its route gave for H ms instead of planning again every step, where the aim,
+// re-planned from each new spot, swung left and right near its waypoint: docs/comparison.md, "Users'
+// arenas: the wide profile"); travelling (delivery: the trips plan at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
-// boundary following stands aside), aim(X, Z) (the point headed for now).
+// boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
+// routeHold: the sweep's target and when its aim was planned).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
 // delivery (heading's +!aimAt plans come after its own). No default agent includes it: on the wide
 // generated worlds it measured no clear gain over heading and way-round (docs/comparison.md, "The way
@@ -30,4 +34,9 @@ setUpGoal(setUpRoute).
 @aimNearTarget
 +!aimAt(Tx, Tz) : routePlanning & location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N
     <- -+aim(Tx, Tz).
+@aimHeld
++!aimAt(Tx, Tz) : routePlanning & routeHold(H) & not travelling & aimChosen(Tx, Tz, T0) & .system_time(T) & T - T0 < H.
+@aimOnRouteHeld
++!aimAt(Tx, Tz) : routePlanning & routeHold(_) & not travelling
+    <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz); .system_time(T); -+aimChosen(Tx, Tz, T).
 @aimOnRoute +!aimAt(Tx, Tz) : routePlanning <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).
