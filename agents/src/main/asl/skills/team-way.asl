@@ -11,11 +11,9 @@
 // 2.6 s: held-out world 42, two robots.) (Tried: the robot
 // whose turn it is at the storage area ranked as any robot; it then gave way to a robot not
 // queued that followed it, and they touched for 29 s, world 6 with four robots.) Giving way is one
-// atomic manoeuvre (no other plan drives the wheels meanwhile): a step aside from the teammate, ahead
-// or behind (a turn away from it, then forward: out of its line), then stop and let the skills
-// steer again. (Tried: moving on slowly, 0.6 s at wheel speed 40, from a teammate behind; the
-// robot with the storage turn, leaving for the charger at full speed, pushed one doing so along
-// its line for 20 s: team world 60, four robots.) (Backing off from a teammate ahead at 0.02 m/s while it came
+// atomic manoeuvre (no other plan drives the wheels meanwhile): a step aside from a teammate ahead
+// (a turn away from it, then forward: out of its line), or a move on away from one behind, then
+// stop and let the skills steer again. (Backing off from a teammate ahead at 0.02 m/s while it came
 // on at 0.05 m/s kept them touching 2-4 s, head-on on the way between storage area and charger.)
 // The robot with the right of way, travelling or driving into the storage area, stops a moment
 // while a teammate giving way is right ahead of it (wayStop), so that it does not push that
@@ -32,7 +30,9 @@
 // Parameters:
 wayClearance(0.13).   // m between two robots' centres (a Khepera is 5.7 cm wide, its gripper and a
                       // cylinder held reach 9 cm ahead of its centre)
-asideSpeed(100).      // wheel speed of the step aside from a teammate: a turn away, then forward
+wayTime(600).         // ms of the manoeuvre away from a teammate behind
+waySpeed(40).         // wheel speed of that manoeuvre
+asideSpeed(100).      // wheel speed of the step aside from a teammate ahead: a turn away, then forward
 asideTurn(450).       // ms of its turn (about 50 degrees)
 asideTime(800).       // ms forward after it (4 cm)
 wayStop(0.1).         // m: the robot with the right of way stops while a teammate giving way is this near, ahead
@@ -79,14 +79,15 @@ drivingOn :- insideArea & delivering & not givingWay.
 stopDue(A) :- not stoppedFor(A, _).
 stopDue(A) :- stoppedFor(A, T0) & .system_time(T) & wayStopLimit(L) & T - T0 < L.
 
-// a step aside from a teammate ahead or behind: out of its line, whichever way it comes (moving on
-// slowly from one behind kept a robot in the line of a teammate driving on at full speed)
 @stepAside[atomic]
-+robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay
++robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & aheadOfMe(Ax, Az)
                       & asideSpeed(V) & asideTurn(Tt) & asideTime(Ta)
     <- +givingWay; .print("Stepping aside for ", A);
        if (onGreaterAngle(Ax, Az)) { setSpeeds(-V, V) } else { setSpeeds(V, -V) };
        .wait(Tt); setSpeeds(V, V); .wait(Ta); stop; -givingWay.
+@giveWay[atomic]
++robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
+    <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); .wait(T); stop; -givingWay.
 
 // the robot with the right of way does not push a teammate giving way right ahead of it
 @stopForTeammate[atomic]
