@@ -110,19 +110,13 @@ public class SearchMap extends Artifact {
         double hx = Math.cos(h), hz = Math.sin(h);
         boolean marked = false;
         for (int i = 0; i < seen.length; i++) {
-            if (seen[i]) {
-                continue;
-            }
-            double dx = cx(i) - x, dz = cz(i) - z, dist = Math.sqrt(dx * dx + dz * dz);
-            if (dist < AROUND || dist < VIEW_RANGE && dx * hx + dz * hz > dist * cos) {
-                seen[i] = true;
-                unseen--;
+            if (!seen[i] && inView(cx(i) - x, cz(i) - z, VIEW_RANGE, hx, hz, cos)) {
+                markSeen(i);
                 marked = true;
             }
         }
         for (double[] s : List.copyOf(spots)) {
-            double dx = s[0] - x, dz = s[1] - z, dist = Math.sqrt(dx * dx + dz * dz);
-            if (dist < AROUND || dist < SPOT_VIEW && dx * hx + dz * hz > dist * cos) {
+            if (inView(s[0] - x, s[1] - z, SPOT_VIEW, hx, hz, cos)) {
                 spots.remove(s);
                 marked = true;
             }
@@ -191,6 +185,15 @@ public class SearchMap extends Artifact {
         for (boolean n : never) {
             unseen += n ? 0 : 1;
         }
+    }
+
+    /**
+     * Whether a point (dx, dz) from the robot lies round it or in its view up to {@code range} m, the
+     * robot facing (hx, hz), the view's half angle's cosine {@code cos}.
+     */
+    private static boolean inView(double dx, double dz, double range, double hx, double hz, double cos) {
+        double dist = Math.sqrt(dx * dx + dz * dz);
+        return dist < AROUND || dist < range && dx * hx + dz * hz > dist * cos;
     }
 
     private void markSeen(int i) {
