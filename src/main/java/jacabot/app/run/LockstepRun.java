@@ -242,11 +242,10 @@ public final class LockstepRun extends SteppedPlatform {
         }
     }
 
-    /** Runs {@code seconds} of simulated time (the first run's end is the task's: {@link WorldBeliefs#taskEnd}). */
+    /** Runs {@code seconds} of simulated time (the first run's end is the task's: {@link WorldBeliefs#tellTaskEnd}). */
     public LockstepCoordinator.Result runFor(double seconds) throws IOException, InterruptedException {
-        if (!reasoned) { // before the agents' first reasoning cycle, as an initial belief
-            long endMs = world().timeMs() + Math.round(seconds * 1000);
-            WorldBeliefs.taskEnd(experiment, endMs).ifPresent(b -> members.forEach(m -> mas().agent(m.name()).addBelief(b, false)));
+        if (!reasoned) {
+            WorldBeliefs.tellTaskEnd(mas(), experiment, world().timeMs(), seconds);
         }
         var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
                 .remoteController(remoteController).inMemory(inMemory).takeTurns(turns);

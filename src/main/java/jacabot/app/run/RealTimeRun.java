@@ -143,11 +143,10 @@ public final class RealTimeRun implements AutoCloseable {
 
     /**
      * Starts the agents and the controller, telling the agents that their task ends in {@code seconds}
-     * ({@link WorldBeliefs#taskEnd}); the caller runs the simulation that long ({@link #runner()}).
+     * ({@link WorldBeliefs#tellTaskEnd}); the caller runs the simulation that long ({@link #runner()}).
      */
     public void start(double seconds) {
-        long endMs = world.timeMs() + Math.round(seconds * 1000);
-        WorldBeliefs.taskEnd(experiment, endMs).ifPresent(b -> mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false)));
+        WorldBeliefs.tellTaskEnd(mas, experiment, world.timeMs(), seconds);
         start();
     }
 

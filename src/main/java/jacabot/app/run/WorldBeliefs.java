@@ -1,5 +1,6 @@
 package jacabot.app.run;
 
+import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.syntax.AgentProgram;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
@@ -55,10 +56,19 @@ public final class WorldBeliefs {
      * whose recharge episodes are the task itself}
      * @param endMs the run's end, milliseconds of simulated time
      */
-    public static Optional<Literal> taskEnd(Experiment experiment, long endMs) {
+    static Optional<Literal> taskEnd(Experiment experiment, long endMs) {
         return experiment == Experiment.TIDY_UP
                 ? Optional.of(Literal.of("taskEnd", NumberTerm.of(endMs)).addAnnot(Literal.SOURCE_SELF))
                 : Optional.empty();
+    }
+
+    /**
+     * Tells every agent of {@code mas} when its task ends ({@link #taskEnd}), a run of {@code seconds}
+     * from {@code nowMs} of simulated time; before the agents' first reasoning cycle, as an initial belief.
+     */
+    static void tellTaskEnd(LocalMAS mas, Experiment experiment, long nowMs, double seconds) {
+        taskEnd(experiment, nowMs + Math.round(seconds * 1000))
+                .ifPresent(b -> mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false)));
     }
 
     /** {@return the program with the world's beliefs first, replacing the program's own of the same name and arity} */
