@@ -70,17 +70,24 @@ class InstalledLauncherTest {
         assertEquals("[hello] hello world\n", run(moved.resolve("bin/jacabot"), null, dir, "run", "hello.asl"));
     }
 
-    /** AgentSpeak programs start with C1 only, as the interpreter bench measures them; other commands keep C2. */
+    /**
+     * AgentSpeak programs and single experiments start with C1 only, as the interpreter bench measures
+     * programs; sweeps, benches and the other commands keep C2.
+     */
     @Test
-    void runAndTestStartWithTheBenchsJitOptionAndTheOtherCommandsWithout(@TempDir Path dir) throws Exception {
+    void runTestAndExperimentStartWithTheBenchsJitOptionAndTheOtherCommandsWithout(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("hello.asl"), "!start.\n+!start <- .print(\"hello world\"); .stopMAS.\n");
         String flags = "-XX:+PrintCommandLineFlags";
         String run = run(launcher(), flags, dir, "--debug", "run", "hello.asl");
         assertTrue(run.contains(InterpreterBenchmark.RUN_JIT) && run.contains("[hello] hello world"), run);
         String test = run(launcher(), flags, dir, "test", "--help");
         assertTrue(test.contains(InterpreterBenchmark.RUN_JIT), test);
+        String experiment = run(launcher(), flags, dir, "experiment", "--help");
+        assertTrue(experiment.contains(InterpreterBenchmark.RUN_JIT), experiment);
         String world = run(launcher(), flags, dir, "world", "generate", "navigation", "--seed", "1", "--out", "w.json");
         assertTrue(world.contains("-XX:") && !world.contains("TieredStopAtLevel"), world);
+        String sweep = run(launcher(), flags, dir, "sweep", "--help");
+        assertTrue(sweep.contains("-XX:") && !sweep.contains("TieredStopAtLevel"), sweep);
     }
 
     @Test
