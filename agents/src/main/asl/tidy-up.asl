@@ -5,11 +5,11 @@
 // from the run: taskEnd(Ms), its end (no trip to the charger while the battery covers the time left).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
-// a search goes on from anywhere (no way back after a recharge), a look around first; a delivery
-// under way ends first over 300 J (the worst drain); a wall: three obstacles met near each other; a
-// homing still coming nearer goes on past far sight's time limit (a nearer sighting in the last 15 s);
-// a cylinder beside the storage area's pile is seen too (every red run of the image)
-resumeAtCharger. lookFirst. deliverFirst(300). rehitsToFollow(2). homingProgress(15000). everyRedRun.
+// a search goes on from anywhere (no way back after a recharge), a look around first; a delivery under
+// way ends first over 300 J (the worst drain); a wall: three obstacles met near each other; a homing still
+// nearing goes on past far sight's time limit (a nearer sighting in the last 15 s); every red run is seen;
+// turns to a heading at half speed but for the last 15 degrees
+resumeAtCharger. lookFirst. deliverFirst(300). rehitsToFollow(2). homingProgress(15000). everyRedRun. quickTurn(50, 15).
 
 !start.
 

@@ -61,6 +61,27 @@ mock_operation(_, ok).
        !until(mock_called(setSpeeds(100, 100)), 2000);
        !assert_true(mock_called(setSpeeds(25, -10))).
 
+// an agent that believes quickTurn(V, A) turns at V while more than A degrees off, the shorter way
+// (across north too), then slowly
+@[test]
++!test_a_quick_turn_until_the_last_degrees
+    <- !forget_calls; +quickTurn(50, 15); -+desired(90); -+orientation(300);
+       !!balance;
+       !until(mock_called(setSpeeds(50, -50)), 2000);
+       !assert_true(mock_called(setSpeeds(50, -50)));                   // right, across north
+       !assert_false(mock_called(setSpeeds(-50, 50)) | mock_called(setSpeeds(25, -10)));
+       -+orientation(80);                                               // 10 degrees off: slowly
+       !until(mock_called(setSpeeds(25, -10)), 2000);
+       !assert_true(mock_called(setSpeeds(25, -10)));
+       -+orientation(90);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       !forget_calls; -+orientation(150); !!balance;
+       !until(mock_called(setSpeeds(-50, 50)), 2000);
+       -+orientation(90);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       -quickTurn(50, 15);
+       !assert_true(mock_called(setSpeeds(-50, 50))).                   // left
+
 @[test]
 +!test_balanced_across_north
     <- !forget_calls; -+desired(0.3); -+orientation(359.9);
