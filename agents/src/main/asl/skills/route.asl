@@ -25,9 +25,10 @@ routeReach(0.1).
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
 // routeHold: the sweep's target and when its aim was planned).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
-// delivery (heading's +!aimAt plans come after its own). No default agent includes it: on the wide
-// generated worlds it measured no clear gain over heading and way-round (docs/comparison.md, "The way
-// through the robot's own map").
+// delivery (heading's +!aimAt plans come after its own). Suspend/resume includes it, with way-back.asl
+// and routeHold (a gain on the wide worlds: docs/comparison.md, "Users' arenas: the wide profile");
+// navigation does not (alone, no clear gain over heading and way-round: "The way through the robot's
+// own map").
 
 routePlanning.
 setUpGoal(setUpRoute).
