@@ -8,7 +8,19 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 
 !start.
 
+// the sweep keeps its route's point up to 6 s (until reached or an obstacle met: route.asl), where
+// re-planning at every step swung it left and right near its waypoint
+routeHold(6000).
 { include("skills/initial-phase.asl") }
+// the way to the charger and the sweep's waypoints through the robot's own map, the way back along
+// its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,
+// classic 31-40 with seeds 1-3 28 -> 30 of 30: docs/comparison.md, "Users' arenas: the wide profile")
+{ include("skills/way-back.asl") }
+{ include("skills/route.asl") }
+// a low battery in the storage area with the cylinder waits until it is put down and the robot is
+// out (lowBattery comes again at every control step): a trip begun there left it halted
+// (insideArea), blind, with the cylinder (docs/comparison.md, "Users' arenas: the wide profile")
+@rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }

@@ -1,6 +1,7 @@
 // Skill test of the way through the robot's own map (skills/route.asl with heading.asl): the robot
 // heads for the route's point on the way, not for the target behind the obstacles it met; near
-// the target it heads for the target itself; the boundary following of way-round stands aside.
+// the target it heads for the target itself; the boundary following of way-round stands aside; with
+// routeHold the sweep keeps its point until it is reached or an obstacle met.
 // The operations are mocked (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -48,3 +49,19 @@ mock_operation(_, ok).
        .wait(100);
        !assert_false(followingWall(_, _, _));
        -delivering; -obstacle(true).
+
+// routeHold: the sweep keeps its planned point until it is within routeReach of it or an obstacle
+// was avoided since it was planned
+@[test]
++!test_a_held_point_is_kept_until_reached_or_an_obstacle_met
+    <- +routeHold(600000); -aimChosen(_, _, _); -lastAvoid(_);
+       !aimAt(0.9, 0.4); !assert_true(aim(0.2, -0.3));
+       !forget_calls; !aimAt(0.9, 0.4);
+       !assert_false(mock_called(routeTo(_, _, _, _)));
+       -+location(0.15, 0, -0.25); !forget_calls; !aimAt(0.9, 0.4);
+       !assert_true(mock_called(routeTo(0.9, 0.4, _, _)));
+       -+location(0, 0, 0); !forget_calls; !aimAt(0.9, 0.4);
+       !assert_false(mock_called(routeTo(_, _, _, _)));
+       .system_time(T); +lastAvoid(T); !forget_calls; !aimAt(0.9, 0.4);
+       !assert_true(mock_called(routeTo(0.9, 0.4, _, _)));
+       -routeHold(_); -lastAvoid(_); -aimChosen(_, _, _).

@@ -13,17 +13,22 @@ routeMemory(180000).   // ms an obstacle seen stays on the map
 // m: this near the target the robot heads for it straight (the storage area and the charger are
 // entered with the distance sensors off and no steering: a point beside the target took it past)
 routeNear(0.3).
-// Reads: arena(W, D) (the world); routeHold(H) (an agent's option, e.g. suspend/resume's: the sweep
-// keeps the point its route gave for H ms instead of planning again every step, where the aim,
-// re-planned from each new spot, swung left and right near its waypoint: docs/comparison.md, "Users'
-// arenas: the wide profile"); travelling (delivery: the trips plan at every re-alignment).
+// m: with routeHold, a held point this near is reached and the way planned again (a sweep step, 2 s,
+// goes about 0.1 m; the point lies at most 0.2 m on: RouteMap.LOOKAHEAD)
+routeReach(0.1).
+// Reads: arena(W, D) (the world); lastAvoid(T) (avoidance); routeHold(H) (an agent's option, e.g.
+// suspend/resume's: the sweep keeps the point its route gave for up to H ms, until it is within
+// routeReach of it or an obstacle was avoided since, instead of planning again every step, where the
+// aim, re-planned from each new spot, swung left and right near its waypoint: docs/comparison.md,
+// "Users' arenas: the wide profile"); travelling (delivery: the trips plan at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
 // routeHold: the sweep's target and when its aim was planned).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
-// delivery (heading's +!aimAt plans come after its own). No default agent includes it: on the wide
-// generated worlds it measured no clear gain over heading and way-round (docs/comparison.md, "The way
-// through the robot's own map").
+// delivery (heading's +!aimAt plans come after its own). Suspend/resume includes it, with way-back.asl
+// and routeHold (a gain on the wide worlds: docs/comparison.md, "Users' arenas: the wide profile");
+// navigation does not (alone, no clear gain over heading and way-round: "The way through the robot's
+// own map").
 
 routePlanning.
 setUpGoal(setUpRoute).
@@ -34,8 +39,12 @@ setUpGoal(setUpRoute).
 @aimNearTarget
 +!aimAt(Tx, Tz) : routePlanning & location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N
     <- -+aim(Tx, Tz).
+// the held point: for H ms at most, until the robot is within routeReach of it (a point it passed
+// pulled it back) or an obstacle turned it away since (the point may lie behind it)
+holdOn(Tx, Tz) :- routeHold(H) & aimChosen(Tx, Tz, T0) & .system_time(T) & T - T0 < H & not (lastAvoid(A) & A >= T0)
+    & aim(Ax, Az) & location(X, _, Z) & routeReach(R) & (X - Ax) * (X - Ax) + (Z - Az) * (Z - Az) > R * R.
 @aimHeld
-+!aimAt(Tx, Tz) : routePlanning & routeHold(H) & not travelling & aimChosen(Tx, Tz, T0) & .system_time(T) & T - T0 < H.
++!aimAt(Tx, Tz) : routePlanning & not travelling & holdOn(Tx, Tz).
 @aimOnRouteHeld
 +!aimAt(Tx, Tz) : routePlanning & routeHold(_) & not travelling
     <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz); .system_time(T); -+aimChosen(Tx, Tz, T).

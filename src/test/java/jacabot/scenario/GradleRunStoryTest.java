@@ -14,8 +14,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * Robustness: {@code gradle run} (experiment 4, the world's seed 13, 10 simulated minutes) tells the
  * whole story: at least 2 deliveries, a low-battery episode with recharge and return, and no stretch
- * of more than 30 s without progress ({@link ProgressStretch}). Measured: deliveries at 30.5 s and
- * 252.0 s, longest stretch 24.5 s (100.2-124.7 s).
+ * of more than 30 s without progress ({@link ProgressStretch}). Measured: deliveries at 31.3 s and
+ * 239.0 s, longest stretch 24.8 s (101.6-126.4 s, on the charger).
  */
 class GradleRunStoryTest {
     @Test
