@@ -30,7 +30,11 @@ mock_operation(_, ok).
        -robotAt(khepera1, _, _); !!perceive(robotAt(khepera1, 0.16, -0.16));   // 0.37 m ahead now
        !until(not following(_), 3000);
        !assert_false(following(_));
+       // the heading comes a few reasoning steps after the wait ends, in the skill's own intention:
+       // waited for (bounded), not raced, and that intention is over before the next test
+       !until(mock_called(computeAngle(_, _, 0.41, -0.41, _)), 3000);
        !assert_true(mock_called(computeAngle(_, _, 0.41, -0.41, _)));          // heads on again
+       !until(not .intend(followResume), 3000);
        .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _).
 
 @[test]

@@ -2,7 +2,8 @@
 // the robot whose name comes later gives way to a teammate too close (steps aside from one ahead:
 // a turn away from it, then forward), the earlier one goes on, and stops a moment while the other
 // is right ahead of it when it drives on its way; a teammate standing in the storage area's queue is given way whatever
-// its name, the one whose turn it is before every other; a robot waiting for the charger gives
+// its name, the one whose turn it is before every other, and a robot that would push a teammate
+// ahead by moving on steps aside from it instead; a robot waiting for the charger gives
 // way, one on it does not; a robot that waits does not cruise. The agent under test is named
 // team_way_test: khepera1 comes before it, zeta after it.
 // Run: jacabot test agents/src/test/asl
@@ -51,6 +52,16 @@ mock_operation(_, ok).
        !until(mock_called(stop), 3000);
        !assert_true(mock_called(setSpeeds(L, R)) & L > 0 & L == R);     // moves on, away from it
        -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).
+
+@[test]
++!test_moving_on_would_push_a_teammate_ahead_so_the_robot_steps_aside_from_it
+    <- !forget_calls; -storageQueue(_); +storageQueue([khepera1, zeta]);
+       +robotAt(zeta3, 0.12, 0.3);                       // 10 cm ahead, a little to the lesser angle
+       !!perceive(robotAt(zeta, 0.1, 0.1));              // 10 cm behind, waiting for the storage area
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(L, R)) & L > 0 & R == -L);    // turns away from the one ahead
+       !assert_false(mock_called(setSpeeds(40, 40)));                   // does not move on into it
+       -robotAt(zeta, _, _); -robotAt(zeta3, _, _); -storageQueue(_); +storageQueue([]).
 
 @[test]
 +!test_two_robots_in_a_queue_go_by_name

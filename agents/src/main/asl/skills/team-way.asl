@@ -13,7 +13,8 @@
 // queued that followed it, and they touched for 29 s, world 6 with four robots.) Giving way is one
 // atomic manoeuvre (no other plan drives the wheels meanwhile): a step aside from a teammate ahead
 // (a turn away from it, then forward: out of its line), or a move on away from one behind, then
-// stop and let the skills steer again. (Backing off from a teammate ahead at 0.02 m/s while it came
+// stop and let the skills steer again; a robot that would push another teammate right
+// ahead by moving on steps aside from that one instead. (Backing off from a teammate ahead at 0.02 m/s while it came
 // on at 0.05 m/s kept them touching 2-4 s, head-on on the way between storage area and charger.)
 // The robot with the right of way, travelling or driving into the storage area, stops a moment
 // while a teammate giving way is right ahead of it (wayStop), so that it does not push that
@@ -43,7 +44,7 @@ wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (
 // Beliefs: givingWay, stoppedFor(A, Since). Reads: robotAt(A, X, Z), storageQueue(L) (the board),
 // chargerQueue(L) (the charger), charger(X, Z) (the world), location, orientation, atCharger,
 // insideArea, travelling, delivering, avoiding (delivery, heading). Rules it offers: rightOfWay(A),
-// standing(A), aheadOfMe(X, Z); the rule waitingTurn, which the skills that make a robot wait
+// standing(A), aheadOfMe(X, Z), teammateInMyWay(X, Z); the rule waitingTurn, which the skills that make a robot wait
 // extend (team-storage, team-follow, team-charger).
 // Needs: team-places (the places published), halted (heading, and the skills that extend it).
 // Include it before delivery (heading): its plan for !cruise comes first.
@@ -76,15 +77,23 @@ rightAhead(Ax, Az) :- location(X, _, Z) & orientation(O) & wayStop(S) & R = O * 
 // driving on its way (not turning, not going round): the wheels it stops it sets again
 drivingOn :- travelling & not halted & not avoiding & not givingWay.
 drivingOn :- insideArea & delivering & not givingWay.
+teammateInMyWay(Bx, Bz) :- robotAt(B, Bx, Bz) & not .my_name(B) & tooClose(Bx, Bz) & aheadOfMe(Bx, Bz).
 stopDue(A) :- not stoppedFor(A, _).
 stopDue(A) :- stoppedFor(A, T0) & .system_time(T) & wayStopLimit(L) & T - T0 < L.
 
 @stepAside[atomic]
 +robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & aheadOfMe(Ax, Az)
-                      & asideSpeed(V) & asideTurn(Tt) & asideTime(Ta)
-    <- +givingWay; .print("Stepping aside for ", A);
-       if (onGreaterAngle(Ax, Az)) { setSpeeds(-V, V) } else { setSpeeds(V, -V) };
-       .wait(Tt); setSpeeds(V, V); .wait(Ta); stop; -givingWay.
+    <- +givingWay; .print("Stepping aside for ", A); !sideStep(Ax, Az); -givingWay.
+// moving on would push a teammate right ahead: a step aside from that one instead (team world 43,
+// four robots: a robot moving on away from the one behind it pushed the one standing ahead for 3 s)
+@stepAsideBoxedIn[atomic]
++robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & teammateInMyWay(Bx, Bz)
+    <- +givingWay; .print("Stepping aside for ", A, ": a teammate ahead"); !sideStep(Bx, Bz); -givingWay.
+// a turn away from the teammate's side at full speed, then forward: out of its line
+@sideStep
++!sideStep(X, Z) : asideSpeed(V) & asideTurn(Tt) & asideTime(Ta)
+    <- if (onGreaterAngle(X, Z)) { setSpeeds(-V, V) } else { setSpeeds(V, -V) };
+       .wait(Tt); setSpeeds(V, V); .wait(Ta); stop.
 @giveWay[atomic]
 +robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
     <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); .wait(T); stop; -givingWay.
