@@ -53,17 +53,19 @@ speedOnTheWay(100) :- not travelSpeed(_).
 @balancedAcrossNorth
 +!balance : desired(D) & orientation(O) & (O - D > 359.4 | D - O > 359.4)
     <- stop; -~around; +firstTime; !cruise.
+// the shorter turn to the desired heading is a right (clockwise) one
+desiredOnTheRight :- desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180).
 // an agent that believes quickTurn(V, A) (tidy-up) turns on the spot at wheel speed V while the
 // heading is more than A degrees off, and slowly only for the last A: the thesis' slow turn took
 // 9 s for a half turn, 60-100 s of a ten-minute tidy-up run
 headingOff(G) :- desired(D) & orientation(O) & R = math.abs(O - D) & G = math.min(R, 360 - R).
 @balanceQuickRight
-+!balance : quickTurn(V, A) & headingOff(G) & G > A & desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
++!balance : quickTurn(V, A) & headingOff(G) & G > A & desiredOnTheRight
     <- setSpeeds(V, -V); .wait(20); !balance.
 @balanceQuickLeft
 +!balance : quickTurn(V, A) & headingOff(G) & G > A <- setSpeeds(-V, V); .wait(20); !balance.
 @balanceRight
-+!balance : desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180)
++!balance : desiredOnTheRight
     <- setSpeeds(25, -10); .wait(20); !balance.
 @balanceLeft
 +!balance : desired(D) & orientation(O) & ((O - D < 180 & O - D > 0) | O - D < -180)
