@@ -2,7 +2,7 @@
 // sighted is claimed on the task board at its estimated place, give or take an error that grows
 // with its distance, swept on along the sighting's bearing beyond it, before the robot homes on it; one whose disc overlaps another robot's claim
 // is left alone only while that claim stands; one near a teammate is left alone; a cylinder
-// picked up is taken on the board, and put down where it is let go. Artifact operations are mocked (see
+// picked up is taken on the board, and put down where it is let go; a claim is released once. Artifact operations are mocked (see
 // agents/README.md "Testing skills"). Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -140,3 +140,18 @@ mock_operation(_, ok).
        !until(homing(_), 5000);
        !assert_true(mock_called(claimAlong(_, _, _, _, _, 3)));
        -completed(1); -+orientation(90).
+
+// the homing given up (-homing) and the trip to the charger begun (+charging) in one step both
+// release the claim: the board is asked once (the second release failed, inside the trip's atomic start)
+@[test]
++!test_a_claim_is_released_once
+    <- -homing(_); -myClaim(_); !forget_calls; -+picked(false);
+       +mock_operation(release(3), ok);   // (an earlier test's abolish of claimAlong's mocks took the catch-all)
+       +myClaim(3);
+       !releaseClaim(3);
+       !until(mock_called(release(3)), 1000);
+       !assert_true(mock_called(release(3)));
+       !forget_calls;
+       !releaseClaim(3); .wait(100);
+       !assert_false(mock_called(release(_)));
+       !assert_false(myClaim(3)).

@@ -105,6 +105,9 @@ storedPileInSight(Off) :- completed(N) & N > 0 & storagePoint(Sx, Sz) & inSightL
 @releaseOnCharging +charging : myClaim(Id) & not picked(true) <- !releaseClaim(Id).
 
 // the belief goes first: a claim the board has voided meanwhile (another robot took its cylinder)
-// is not this robot's any more, and no later claim must fail on releasing it
-@releaseClaim +!releaseClaim(Id) <- -myClaim(Id); release(Id).
+// is not this robot's any more, and no later claim must fail on releasing it. A claim is released
+// once: a homing given up as the battery runs low had both release it (-homing, +charging), and the
+// second release failed inside the recharge trip's atomic start (team world 80, two robots, seed 2)
+@releaseClaim +!releaseClaim(Id) : myClaim(Id) <- -myClaim(Id); release(Id).
+@claimReleasedAlready +!releaseClaim(_).
 @claimGoneAlready -!releaseClaim(_).

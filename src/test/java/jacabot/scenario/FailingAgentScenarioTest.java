@@ -14,7 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A scenario whose agent fails at its job ends at that step and says why
  * ({@link ScenarioResult#agentFailure()}): an unknown action, no plan for the first goal, a failure
- * storm; an agent that works has no failure.
+ * storm, reasoning that runs away within a step; an agent that works has no failure.
  */
 class FailingAgentScenarioTest {
     private static ScenarioResult run(Path dir, String agent) throws Exception {
@@ -54,6 +54,16 @@ class FailingAgentScenarioTest {
                 +!turn <- .fail(error(stuck)).
                 -!turn <- !turn.
                 """), "failure storm");
+    }
+
+    /** A goal re-posted at once, never failing: the step's cap of reasoning cycles ends the run, not a hang. */
+    @Test
+    void reasoningThatRunsAwayWithinAStep(@TempDir Path dir) throws Exception {
+        assertFailed(run(dir, """
+                !start.
+                +!start <- !spin.
+                @spin +!spin <- !spin.
+                """), "reasoning ran away in control step 0 at t=0.00 s");
     }
 
     @Test

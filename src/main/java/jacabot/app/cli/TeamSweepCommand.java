@@ -115,7 +115,7 @@ final class TeamSweepCommand implements Callable<Integer> {
                             if (!noProgress) {
                                 log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %d deliveries%s", world,
                                         seed, n, n == 1 ? "" : "s", c, o.deliveries(),
-                                        o.verdict().success() ? "" : " (" + o.verdict().reason() + ")"));
+                                        success(o) ? "" : " (" + reason(o) + ")"));
                             }
                             return new Row(world, n, c, seed, o);
                         }));
@@ -144,6 +144,17 @@ final class TeamSweepCommand implements Callable<Integer> {
         }
     }
 
+    /** {@return whether a run met the team's criteria; one whose agent failed at its job did not} */
+    private static boolean success(TeamDeliveryRun.Outcome o) {
+        return o.verdict().success() && o.agentFailure().isEmpty();
+    }
+
+    /** {@return why a run failed: its agent's failure first (e.g. reasoning that ran away), then the criteria not met} */
+    private static String reason(TeamDeliveryRun.Outcome o) {
+        String criteria = o.verdict().reason();
+        return o.agentFailure().map(f -> "agent failure: " + f + (criteria.isEmpty() ? "" : "; " + criteria)).orElse(criteria);
+    }
+
     private static String csv(List<Row> rows) {
         var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,max_robot_contact_s,claims,"
                 + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason\n");
@@ -154,7 +165,7 @@ final class TeamSweepCommand implements Callable<Integer> {
             sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\"%n",
                     r.world(), r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.figures().maxRobotContact(),
                     o.claims(), o.figures().doubleClaims(), o.chargerWaits(), o.figures().longestChargerWait(),
-                    o.figures().batteriesEmptied(), o.verdict().success(), o.verdict().reason()));
+                    o.figures().batteriesEmptied(), success(o), reason(o).replace("\"", "\"\"")));
         }
         return sb.toString();
     }
@@ -187,7 +198,7 @@ final class TeamSweepCommand implements Callable<Integer> {
                 int doubles = rs.stream().mapToInt(r -> r.outcome().figures().doubleClaims()).sum();
                 double wait = rs.stream().mapToDouble(r -> r.outcome().figures().longestChargerWait()).max().orElse(0);
                 long emptied = rs.stream().filter(r -> r.outcome().figures().batteriesEmptied() > 0).count();
-                long met = rs.stream().filter(r -> r.outcome().verdict().success()).count();
+                long met = rs.stream().filter(r -> success(r.outcome())).count();
                 String ratio = single == null || singleTotal == 0 ? "-" : String.format(Locale.ROOT, "%.2f×", (double) total / singleTotal);
                 sb.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %d | %s | %d of %d | %d of %d | %s | %s | %d | %d of %d |%n",
                         c.getKey(), n.getKey(), rs.size(), each, total, ratio, robotContact, rs.size(), lowContact, rs.size(),

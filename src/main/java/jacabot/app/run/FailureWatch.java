@@ -17,7 +17,7 @@ import java.util.Set;
 
 /**
  * Whether an agent has failed at its job, so that a run can end at once with one line saying why
- * instead of going on for its whole duration with a robot that does nothing. Three failures:
+ * instead of going on for its whole duration with a robot that does nothing. Its failures:
  * <ul>
  * <li>no plan for an initial goal ({@code !start}): nothing runs after the first reasoning;</li>
  * <li>the system stopped ({@code .stopMAS}) before the run's end, e.g. by the initial phase's
@@ -25,7 +25,9 @@ import java.util.Set;
  * <li>a failure storm: one goal failing with the same error at least {@link #STORM_PER_SECOND}
  *     times in one simulated second (a failure plan that re-posts the goal at once, every cycle);</li>
  * <li>a failure no plan handles, of an initial goal's intention (the agent dropped what it was
- *     started for) or of an action that does not exist (an unknown artifact operation).</li>
+ *     started for) or of an action that does not exist (an unknown artifact operation);</li>
+ * <li>reasoning that runs away: the agent still busy after the run's cap of reasoning cycles in one
+ *     control step ({@link SteppedPlatform#reason}), so simulated time would not move on.</li>
  * </ul>
  * Fed on the agent's thread by the plan listener ({@link #planSelected}); the run driver asks
  * {@link #verdict} after each control step.
@@ -125,6 +127,20 @@ public final class FailureWatch {
         if (verdict == null) {
             verdict = String.format(Locale.ROOT, "the agent stopped the system (.stopMAS) at t=%.1f s, before the run's end",
                     nowMs / 1000.0) + (lastFailure == null ? "" : ", after goal !" + goal(lastFailure) + " failed (" + why(lastFailure) + ")");
+        }
+    }
+
+    /**
+     * The agent ran {@code cycles} reasoning cycles in control step {@code step} (at {@code nowMs})
+     * without going idle, {@code running} the labels of its plans ready to run then: it loops within
+     * the step, and simulated time would never move on.
+     */
+    public void reasoningRanAway(long cycles, long step, long nowMs, List<String> running) {
+        if (verdict == null) {
+            verdict = String.format(Locale.ROOT, "reasoning ran away in control step %d at t=%.2f s: %d reasoning cycles "
+                    + "without going idle (a plan that loops without waiting, or an action failing again and again)%s; "
+                    + "the run stops here", step, nowMs / 1000.0, cycles,
+                    running.isEmpty() ? "" : ", running " + String.join(", ", running));
         }
     }
 

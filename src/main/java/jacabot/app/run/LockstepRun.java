@@ -102,6 +102,7 @@ public final class LockstepRun extends SteppedPlatform {
         // the world's landmarks reach the agent as initial beliefs (not in the thesis: so that other worlds work)
         AgentProgram program = WorldBeliefs.inject(agent.source().parse(parser), world().spec(), experiment);
         var member = new Member(agent.name(), new FailureWatch(program.goals()), program.goals());
+        watch(agent.name(), member.failures());
         Agent robot = mas().createAgent(agent.name(), program, parser, local -> new CAgentArch(local) {
             @Override
             public void sense(Agent a) { // the start of each reasoning cycle, on the run's thread
@@ -265,7 +266,7 @@ public final class LockstepRun extends SteppedPlatform {
             long t0 = System.nanoTime();
             deliverStep(middlewareId, data);
             inlineNanos += System.nanoTime() - t0;
-            reason(CYCLES_PER_STEP);
+            reason();
             if (!reasoned) {
                 reasoned = true;
                 members.forEach(m -> m.failures().firstReasoningDone(mas.agent(m.name()).planLibrary(), m.initialGoals()));

@@ -1,6 +1,10 @@
 package jacabot.app.run;
 
 import jacabot.agent.runtime.LocalMAS;
+import jacabot.agent.semantics.Agent;
+import jacabot.agent.semantics.Circumstance;
+import jacabot.agent.semantics.Event;
+import jacabot.agent.semantics.Intention;
 import jacabot.cartago.AgentId;
 import jacabot.cartago.ArtifactId;
 import jacabot.cartago.ArtifactObserverAdapter;
@@ -13,7 +17,12 @@ import jacabot.cartago.bridge.JacaStepper;
 import jacabot.experiments.link.StepData;
 import jacabot.sim.SimWorld;
 import java.io.PrintStream;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
 
 /**
  * The Jason and CArtAgO platform of a lockstep run, in simulated time: one clock, which the
@@ -24,7 +33,13 @@ import java.util.List;
  * step advances the clock to the step's time, delivers the readings and lets the agents reason.
  */
 public abstract class SteppedPlatform implements AutoCloseable {
-    /** At most this many reasoning cycles per control step and agent (a busy agent cannot stall the world). */
+    /**
+     * At most this many reasoning cycles per control step and agent: an agent that has not gone
+     * idle by then loops without waiting (a plan that re-posts its goal at once, an action failing
+     * again and again), and the run ends there as that agent's failure. Counted in cycles, not wall
+     * time, so that it comes at the same step on any load. Normal runs stay far below (the most
+     * measured in one step, docs/running.md: 487, four robots' agents together).
+     */
     static final long CYCLES_PER_STEP = 20_000;
 
     private final SimWorld world;
@@ -35,6 +50,8 @@ public abstract class SteppedPlatform implements AutoCloseable {
     /** Who delivers the readings to the middleware artifacts (not an agent). */
     private final AgentId host;
     private long cycles;
+    /** Each agent's failure watch, by name: told when the agent's reasoning runs away within a step. */
+    private final Map<String, FailureWatch> watches = new LinkedHashMap<>();
 
     SteppedPlatform(SimWorld world, long seed, PrintStream console) {
         this.world = world;
@@ -89,9 +106,69 @@ public abstract class SteppedPlatform implements AutoCloseable {
         });
     }
 
-    /** Runs artifact steps and reasoning cycles until quiescent or {@code cycleBudget} cycles, counted in {@link #cycles}. */
-    void reason(long cycleBudget) {
-        cycles += stepper.runUntilQuiescent(cycleBudget);
+    /** Agent {@code name}'s failures are {@code watch}'s: it is told when the agent's reasoning runs away ({@link #reason}). */
+    void watch(String name, FailureWatch watch) {
+        watches.put(name, watch);
+    }
+
+    /**
+     * A control step's reasoning: artifact steps and reasoning cycles until the system is quiescent,
+     * counted in {@link #cycles}, at most {@link #CYCLES_PER_STEP} per agent. An agent still busy
+     * then (the one that ran the most cycles in this step) has run away: its watch is told, and the
+     * run ends after this step with that agent's failure.
+     */
+    void reason() {
+        Map<String, Long> before = new LinkedHashMap<>();
+        watches.keySet().forEach(name -> before.put(name, agentCycles(name)));
+        long budget = CYCLES_PER_STEP * Math.max(1, watches.size());
+        long run = stepper.runUntilQuiescent(budget);
+        cycles += run;
+        if (run < budget || before.keySet().stream().map(mas::agent).allMatch(a -> a == null || a.isStopped() || a.canSleep())) {
+            return;
+        }
+        String busiest = null;
+        long most = -1;
+        for (Map.Entry<String, Long> e : before.entrySet()) {
+            long n = agentCycles(e.getKey()) - e.getValue();
+            if (n > most) {
+                busiest = e.getKey();
+                most = n;
+            }
+        }
+        if (busiest != null) {
+            long now = clock.nowMillis();
+            watches.get(busiest).reasoningRanAway(most, now / Math.max(1, world.controlStep()), now, runningPlans(busiest));
+        }
+    }
+
+    /**
+     * {@return the labels of the plans atop agent {@code name}'s intentions that are ready to run or
+     * wait for an event of theirs (a goal posted), each once}
+     */
+    private List<String> runningPlans(String name) {
+        Agent a = mas.agent(name);
+        Set<String> out = new LinkedHashSet<>();
+        if (a != null) {
+            Circumstance c = a.circumstance();
+            Set<Intention> busy = new LinkedHashSet<>();
+            for (Intention i : c.allIntentions()) {
+                if (c.hasRunningIntention(i)) {
+                    busy.add(i);
+                }
+            }
+            c.eventList().stream().map(Event::intention).filter(Objects::nonNull).forEach(busy::add);
+            for (Intention i : busy) {
+                if (i.peek() != null && i.peek().plan().label() != null) {
+                    out.add("@" + i.peek().plan().label().functor());
+                }
+            }
+        }
+        return List.copyOf(out);
+    }
+
+    private long agentCycles(String name) {
+        Agent a = mas.agent(name);
+        return a == null ? 0 : a.cycles();
     }
 
     /**

@@ -102,6 +102,7 @@ public final class TeamLockstepRun extends SteppedPlatform {
             AgentProgram program = WorldBeliefs.inject(agent.parse(parser), world.spec(), Experiment.SUSPEND_RESUME);
             List<Literal> goals = program.goals();
             FailureWatch failures = new FailureWatch(goals);
+            watch(name, failures);
             Agent agentOfRobot = mas.createAgent(name, program, parser, CAgentArch::new);
             agentOfRobot.setPlanListener((event, plan) -> failures.planSelected(event, clock().nowMillis()));
             agentOfRobot.setUnhandledFailureListener((failure, root) -> failures.failureUnhandled(failure, root, clock().nowMillis()));
@@ -345,7 +346,7 @@ public final class TeamLockstepRun extends SteppedPlatform {
             }
         }
         if (!mas.isStopped()) {
-            reason(CYCLES_PER_STEP * members.size());
+            reason();
             departuresAfterReasoning(now);
             for (TeamMember m : members) {
                 m.firstReasoningDone(mas);

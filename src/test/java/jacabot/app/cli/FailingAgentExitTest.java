@@ -15,7 +15,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * An agent that fails at its job ends its experiment at once with exit 1 and one line saying why,
  * at every console level (FailureWatch): an action that does not exist (with or without a failure
- * plan), no plan for its first goal, a failure storm, an initial goal failed and not handled. The run's folder is still written.
+ * plan), no plan for its first goal, a failure storm, an initial goal failed and not handled,
+ * reasoning that runs away within a control step. The run's folder is still written.
  */
 class FailingAgentExitTest {
     /** The initial phase's own recovery: an unknown action fails !start, whose failure plan stops the system. */
@@ -45,6 +46,12 @@ class FailingAgentExitTest {
             +!start <- !go.
             +!go <- ?missing(X); !go.
             -!go[error_msg(M)] <- .print(M); !go.
+            """;
+    /** A goal that re-posts itself, never waiting, never failing: no storm, but the step would never end. */
+    static final String RUNAWAY = """
+            !start.
+            +!start <- !spin.
+            @spin +!spin <- !spin.
             """;
 
     private static void assertFailsWith(Path dir, String agent, String why) throws Exception {
@@ -100,5 +107,12 @@ class FailingAgentExitTest {
     void aFailureStorm(@TempDir Path dir) throws Exception {
         assertFailsWith(dir, STORM, "failure storm at t=0.0 s: goal !go failed 1000 times within one simulated second "
                 + "(error test_goal_failed, error_msg \"Failed to test 'missing(X)'\", at agent.asl:3)");
+    }
+
+    @Test
+    void reasoningThatRunsAwayWithinAStep(@TempDir Path dir) throws Exception {
+        assertFailsWith(dir, RUNAWAY, "reasoning ran away in control step 0 at t=0.00 s: 20000 reasoning cycles without "
+                + "going idle (a plan that loops without waiting, or an action failing again and again), running @spin; "
+                + "the run stops here");
     }
 }

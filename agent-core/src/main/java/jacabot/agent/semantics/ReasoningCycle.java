@@ -447,6 +447,12 @@ final class ReasoningCycle {
         if (failEvent.trigger().isGoal()) {
             notifyFailed(GoalStates.of(im), relevant, i, im, annots);
             if (relevant) {
+                // the intention now waits for its failure event: an atomic one must leave I, or
+                // SelInt would run its failed step again and SelEv never take the event (Jason's
+                // removeAtomicIntention after a failed action; an action failing at once looped)
+                if (i.isAtomic()) {
+                    c.removeRunningIntention(i);
+                }
                 c.addEvent(failEvent);
             } else {
                 ag.warn("No failure event was generated for " + failEvent.trigger() + "\n" + i.jasonText());

@@ -150,6 +150,22 @@ class ReasoningCycleTest {
         assertEquals(List.of("a1", "b1", "b2", "a2", "c1"), a.printed());
     }
 
+    /** An atomic plan's failed action goes to its failure plan once, as Jason's (it was run again every cycle). */
+    @Test
+    void atomicIntentionWhoseActionFailsRunsItsFailurePlanOnce() {
+        var a = new TestAgent("""
+                !a. !b.
+                +!a <- .print(a1); .print(a2).
+                @x[atomic] +!b <- .print(b1); release(5); .print(never).
+                -!b[error(E)] <- .print(E).
+                """);
+        a.environment = act -> !act.action().toString().equals("release(5)");
+        a.cycles(200);
+        assertEquals(List.of("release(5)"), a.actionNames());
+        // the failure event waits for the next cycle's SelEv; the other intention runs meanwhile (Jason's order)
+        assertEquals(List.of("a1", "b1", "a2", "action_failed"), a.printed());
+    }
+
     @Test
     void perceptsBecomeBeliefsWithSourcePerceptAndEvents() {
         var a = new TestAgent("""

@@ -40,6 +40,21 @@ class WaitTest {
         assertEquals(List.of("wait_timeout", "elapsed1000"), a.printed());
     }
 
+    /** An atomic plan's wait that times out goes to its failure plan, as any other (it waited again and again). */
+    @Test
+    void anAtomicWaitThatTimesOutFailsOnce() {
+        var a = new TestAgent("""
+                !g.
+                @g[atomic] +!g <- .wait({+never}, 300); .print(never).
+                -!g[error(E)] <- .print(E).
+                """);
+        a.cycles(10);
+        a.advance(300, 10);
+        assertEquals(List.of("wait_timeout"), a.printed());
+        a.advance(1000, 10);
+        assertEquals(List.of("wait_timeout"), a.printed());
+    }
+
     @Test
     void waitForAnEventBindsItsVariables() {
         var a = new TestAgent("""
