@@ -3,21 +3,25 @@ package jacabot.app.cli;
 import jacabot.app.console.ConsoleLog;
 import jacabot.app.run.AgentSource;
 import jacabot.app.sweep.SweepPlan;
+import jacabot.app.sweep.SweepRun;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
 import jacabot.app.world.WorldGenerator;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.world.WorldSpec;
+import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ConcurrentSkipListMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -75,8 +79,11 @@ final class TeamSweepCommand implements Callable<Integer> {
     @Spec
     private CommandSpec commandSpec;
 
-    /** One run of the sweep and what it gave. */
-    private record Row(long world, int robots, String controller, long seed, TeamDeliveryRun.Outcome outcome) {
+    /** One run of the sweep and what it gave: its outcome, or why it crashed (then {@code outcome} is null). */
+    record Row(long world, int robots, String controller, long seed, TeamDeliveryRun.Outcome outcome, String crash) {
+        boolean crashed() {
+            return outcome == null;
+        }
     }
 
     @Override
@@ -102,6 +109,9 @@ final class TeamSweepCommand implements Callable<Integer> {
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         ExecutorService pool = Executors.newFixedThreadPool(jobs);
         List<Future<Row>> futures = new ArrayList<>();
+        // runs.csv is written again as each run ends, so a sweep stopped midway keeps the runs it made
+        Map<Integer, Row> finished = new ConcurrentSkipListMap<>();
+        Path csvFile = out.resolve("runs.csv");
         for (long w : worlds) {
             WorldSpec spec = WorldGenerator.team(largest, w).generate().spec();
             for (long seed : runSeeds) {
@@ -109,15 +119,26 @@ final class TeamSweepCommand implements Callable<Integer> {
                     WorldSpec team = TeamWorld.firstRobots(spec, n);
                     for (String c : controllers) {
                         long world = w;
+                        int index = futures.size();
                         futures.add(pool.submit(() -> {
-                            var o = c.equals("baseline") ? TeamDeliveryRun.baseline(team, seed, seconds)
-                                    : TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
-                            if (!noProgress) {
-                                log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %d deliveries%s", world,
-                                        seed, n, n == 1 ? "" : "s", c, o.deliveries(),
-                                        success(o) ? "" : " (" + reason(o) + ")"));
+                            Row row;
+                            // one run's exception is that run's crash: the sweep goes on, as the single-robot sweep does
+                            try {
+                                var o = c.equals("baseline") ? TeamDeliveryRun.baseline(team, seed, seconds)
+                                        : TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
+                                row = new Row(world, n, c, seed, o, "");
+                            } catch (RuntimeException e) {
+                                row = new Row(world, n, c, seed, null, SweepRun.describe(e));
                             }
-                            return new Row(world, n, c, seed, o);
+                            if (!noProgress) {
+                                log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %s", world, seed, n,
+                                        n == 1 ? "" : "s", c, row.crashed() ? "crash (" + row.crash() + ")"
+                                                : row.outcome().deliveries() + " deliveries"
+                                                        + (success(row.outcome()) ? "" : " (" + reason(row.outcome()) + ")")));
+                            }
+                            finished.put(index, row);
+                            writeCsv(csvFile, finished);
+                            return row;
                         }));
                     }
                 }
@@ -128,7 +149,7 @@ final class TeamSweepCommand implements Callable<Integer> {
         for (Future<Row> f : futures) {
             rows.add(f.get());
         }
-        Files.writeString(out.resolve("runs.csv"), csv(rows));
+        writeCsv(csvFile, finished);
         String report = report(rows, seconds);
         Files.writeString(out.resolve("report.md"), report);
         report.lines().forEach(log::result);
@@ -155,10 +176,21 @@ final class TeamSweepCommand implements Callable<Integer> {
         return o.agentFailure().map(f -> "agent failure: " + f + (criteria.isEmpty() ? "" : "; " + criteria)).orElse(criteria);
     }
 
-    private static String csv(List<Row> rows) {
+    private static synchronized void writeCsv(Path file, Map<Integer, Row> finished) throws IOException {
+        Path part = file.resolveSibling(file.getFileName() + ".part");
+        Files.writeString(part, csv(List.copyOf(finished.values())));
+        Files.move(part, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    static String csv(List<Row> rows) {
         var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,max_robot_contact_s,claims,"
                 + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason\n");
         for (Row r : rows) {
+            if (r.crashed()) {
+                sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,0,,,,,,,,,false,\"%s\"%n", r.world(), r.robots(),
+                        r.controller(), r.seed(), ("crash: " + r.crash()).replace("\"", "\"\"")));
+                continue;
+            }
             var o = r.outcome();
             String per = o.robots().stream().map(s -> Integer.toString(s.deliveries())).collect(Collectors.joining(" "));
             double contact = o.robots().stream().mapToDouble(RunSummary::contactTime).max().orElse(0);
@@ -175,9 +207,14 @@ final class TeamSweepCommand implements Callable<Integer> {
      * order), the ratio to one robot on the same worlds and seeds, how the runs fared on each team
      * criterion, and the criteria met.
      */
-    private static String report(List<Row> rows, double seconds) {
+    private static String report(List<Row> all, double seconds) {
         var sb = new StringBuilder("# team-delivery sweep\n\n");
-        sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds.%n%n", rows.size(), seconds));
+        sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds.%n%n", all.size(), seconds));
+        List<Row> rows = all.stream().filter(r -> !r.crashed()).toList();
+        if (rows.size() < all.size()) {
+            sb.append(String.format(Locale.ROOT, "%d crashed (left out of the table; their reasons are in runs.csv).%n%n",
+                    all.size() - rows.size()));
+        }
         sb.append("| controller | robots | runs | deliveries per run | in all | vs one robot | robot contact < 2 s | all contact < 2 s "
                 + "| double claims | longest charger wait | runs with a battery empty | criteria met |\n");
         sb.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -189,7 +189,7 @@ public final class SweepRun {
     }
 
     /** One line: the exception and where it arose in our code. */
-    static String describe(Throwable t) {
+    public static String describe(Throwable t) {
         Throwable root = t;
         while (root.getCause() != null && root.getCause() != root) {
             root = root.getCause();

@@ -59,6 +59,22 @@ class WorldAndSweepCommandTest {
     }
 
     @Test
+    void aTeamSweepWritesARowPerRunAndACrashAsARow(@TempDir Path dir) throws Exception {
+        var r = CliRun.run("sweep", "team-delivery", "--robots", "1,2", "--world-seeds", "1", "--seeds", "1", "--duration", "3s",
+                "--controllers", "baseline", "--jobs", "2", "--no-progress", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        var lines = Files.readAllLines(dir.resolve("runs.csv"));
+        assertEquals(3, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(1).startsWith("team-delivery-gen-1,1,baseline,1,"), lines.get(1));
+        assertTrue(lines.get(2).startsWith("team-delivery-gen-1,2,baseline,1,"), lines.get(2));
+        assertFalse(Files.exists(dir.resolve("runs.csv.part")));
+        String crash = TeamSweepCommand.csv(java.util.List.of(
+                new TeamSweepCommand.Row(7, 4, "agents", 2, null, "IllegalStateException: \"no robot\" at TeamLockstepRun.step:12")));
+        assertEquals("team-delivery-gen-7,4,agents,2,0,,,,,,,,,false,\"crash: IllegalStateException: \"\"no robot\"\" at "
+                + "TeamLockstepRun.step:12\"", crash.lines().skip(1).findFirst().orElseThrow());
+    }
+
+    @Test
     void renderDrawsAPng(@TempDir Path dir) {
         Path png = dir.resolve("w.png");
         var r = CliRun.run("world", "render", ROOT.resolve("worlds/navigation.json").toString(), "--out", png.toString(),
