@@ -1,11 +1,9 @@
 package jacabot.agent.syntax;
 
-import java.util.AbstractList;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Objects;
-import java.util.RandomAccess;
 import java.util.function.Consumer;
 
 /**
@@ -151,38 +149,9 @@ public record Literal(String functor, List<Term> args, List<Term> annots, boolea
         return t instanceof ListTerm ? null : t;
     }
 
-    /**
-     * {@return {@code annots} sorted and without duplicates, in a list that every literal given it
-     * keeps without checking its order again} For annotations put on many literals: a bridge's
-     * five annotations on every observable property's belief were compared pairwise, as terms, at
-     * every percept update.
-     */
-    public static List<Term> sortedAnnots(List<Term> annots) {
-        return annots instanceof SortedAnnots ? annots : new SortedAnnots(sortAnnots(annots).toArray(new Term[0]));
-    }
-
-    /** An immutable list of annotations known to be sorted and without duplicates ({@link #sortedAnnots}). */
-    private static final class SortedAnnots extends AbstractList<Term> implements RandomAccess {
-        private final Term[] terms;
-
-        SortedAnnots(Term[] terms) {
-            this.terms = terms;
-        }
-
-        @Override
-        public Term get(int index) {
-            return terms[index];
-        }
-
-        @Override
-        public int size() {
-            return terms.length;
-        }
-    }
-
     private static List<Term> sortAnnots(List<Term> annots) {
-        if (annots == SOURCE_SELF_ONLY || annots instanceof SortedAnnots) {
-            return annots; // the agent's own beliefs and goals, or annotations sorted once for many literals: nothing to check
+        if (annots == SOURCE_SELF_ONLY) {
+            return annots; // the agent's own beliefs and goals: nothing to check
         }
         if (isSortedSet(annots)) {
             return List.copyOf(annots);

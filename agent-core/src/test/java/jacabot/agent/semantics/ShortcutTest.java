@@ -3,14 +3,11 @@ package jacabot.agent.semantics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Plan;
-import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
-import jacabot.agent.syntax.Var;
 import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -95,26 +92,6 @@ class ShortcutTest {
         }
         // +p(1) and -q in rounds 0-3, +r(1) in rounds 2-5: three times a round
         assertEquals(3 * (2 + 2 + 3 + 3 + 2 + 2), has);
-    }
-
-    /** {@code Literal.sortedAnnots}: annotations sorted once are those each literal would sort, kept as they are. */
-    @Test
-    void annotationsSortedOnceAreThoseEachLiteralSortsAndAreKeptAsTheyAre() {
-        List<Term> given = List.of(Literal.of("b", new NumberTerm(2)), Literal.atom("a"), Literal.of("b", new NumberTerm(1)),
-                Literal.atom("a"));
-        List<Term> once = Literal.sortedAnnots(given);
-        var byEach = new Literal("p", List.of(new NumberTerm(1)), given, false);
-        var sharing = new Literal("p", List.of(new NumberTerm(1)), once, false);
-        assertEquals("p(1)[a,b(1),b(2)]", byEach.toString());
-        assertEquals(byEach.annots(), once);
-        assertEquals(byEach, sharing);
-        assertEquals(byEach.hashCode(), sharing.hashCode());
-        assertEquals(byEach.toString(), sharing.toString());
-        assertSame(once, sharing.annots());
-        assertSame(once, Literal.sortedAnnots(once));
-        assertThrows(UnsupportedOperationException.class, () -> once.add(Literal.atom("c")));
-        var withTail = new Literal("p", List.of(), once, false, false, null, new Var("T"));
-        assertEquals(new Literal("p", List.of(), given, false, false, null, new Var("T")), withTail);
     }
 
     @Test

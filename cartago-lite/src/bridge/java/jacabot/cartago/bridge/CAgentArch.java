@@ -111,16 +111,14 @@ public class CAgentArch extends LocalArch {
 
     /** The annotations of each artifact's property beliefs, made once (used on the agent's thread only, in sense). */
     private final Map<ArtifactId, List<Term>> propertyAnnots = new HashMap<>();
-    /** The annotations of each artifact's signals, made once (used on the agent's thread only, in sense). */
-    private final Map<ArtifactId, List<Term>> signalAnnots = new HashMap<>();
     /** The last artifact {@link #belief} served, and its annotations: nearly every change comes from one artifact. */
     private ArtifactId lastId;
     private List<Term> lastAnnots;
 
     private Literal belief(ArtifactId id, PropertySnapshot p) {
         if (id != lastId) {
-            // sorted once, so every literal keeps the list as it is without comparing its terms again
-            lastAnnots = propertyAnnots.computeIfAbsent(id, k -> Literal.sortedAnnots(annots(k, "obs_prop")));
+            // sorted and immutable, so the literal keeps the list as it is
+            lastAnnots = propertyAnnots.computeIfAbsent(id, k -> new Literal("a", List.of(), annots(k, "obs_prop"), false).annots());
             lastId = id;
         }
         return new Literal(p.name(), TermConverter.toTerms(p.values()), lastAnnots, false);
@@ -214,8 +212,7 @@ public class CAgentArch extends LocalArch {
         @Override
         public void signalled(ArtifactId artifact, String type, List<Object> args) {
             queue(ag -> ag.addExternalEvent(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF,
-                    new Literal(type, TermConverter.toTerms(args),
-                            signalAnnots.computeIfAbsent(artifact, k -> Literal.sortedAnnots(annots(k, "obs_ev"))), false))));
+                    new Literal(type, TermConverter.toTerms(args), annots(artifact, "obs_ev"), false))));
         }
 
         @Override
@@ -223,7 +220,6 @@ public class CAgentArch extends LocalArch {
             queue(ag -> {
                 properties.forEach(p -> remove(ag, artifact, p));
                 propertyAnnots.remove(artifact);
-                signalAnnots.remove(artifact);
                 lastId = null;
             });
         }
