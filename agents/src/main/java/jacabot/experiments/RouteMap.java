@@ -2,6 +2,7 @@ package jacabot.experiments;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.BitSet;
 import java.util.Collections;
 import java.util.List;
 import java.util.PriorityQueue;
@@ -44,6 +45,19 @@ final class RouteMap {
     private static final long NEVER = Long.MIN_VALUE;
     /** The route of the last plan, cell centres from the robot to the target (for the inspector and tests). */
     private List<double[]> lastRoute = List.of();
+    /** Per cell, the extra cost of the arena's boundary alone ({@link #nearCosts} without obstacles): made once. */
+    private final double[] boundaryCosts;
+    /** The cells {@link #nearCosts} raises round an obstacle: {di, dj, cost} within {@link #BESIDE} clearances, made once. */
+    private final double[][] around;
+    /**
+     * The last call's blocked cells, extra costs, and plan: the map changes far less often than the
+     * agent asks for a waypoint (every control step while it heads for a point), and the costs and
+     * the plan are functions of the blocked cells (with the start and goal cells for the plan).
+     */
+    private BitSet lastLive;
+    private double[] lastNear;
+    private int lastStart = -1, lastGoal = -1;
+    private List<Integer> lastPlan;
 
     /**
      * @param width     the arena's side along x, metres
@@ -64,6 +78,28 @@ final class RouteMap {
         this.memoryMs = memoryMs;
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
+        double beside = BESIDE * clearance;
+        boundaryCosts = new double[cols * rows];
+        for (int i = 0; i < cols; i++) {
+            for (int j = 0; j < rows; j++) {
+                double[] p = centre(index(i, j));
+                double edge = Math.min(halfW - Math.abs(p[0]), halfD - Math.abs(p[1]));
+                if (edge < beside) {
+                    raise(boundaryCosts, index(i, j), edge < clearance ? NEAR_COST : BESIDE_COST);
+                }
+            }
+        }
+        int r = (int) Math.ceil(beside / CELL);
+        List<double[]> cells = new ArrayList<>();
+        for (int di = -r; di <= r; di++) {
+            for (int dj = -r; dj <= r; dj++) {
+                double d = Math.hypot(di, dj) * CELL;
+                if (d <= beside) {
+                    cells.add(new double[] {di, dj, d <= clearance ? NEAR_COST : BESIDE_COST});
+                }
+            }
+        }
+        around = cells.toArray(new double[0][]);
     }
 
     /** An obstacle's surface seen at (x, z) at simulated time {@code nowMs}. */
@@ -104,11 +140,23 @@ final class RouteMap {
         if (start < 0 || goal < 0 || start == goal) {
             return new double[] {tx, tz};
         }
-        double[] near = nearCosts(nowMs);
+        BitSet live = live(nowMs);
+        boolean sameMap = live.equals(lastLive);
+        if (!sameMap) {
+            lastLive = live;
+            lastNear = nearCosts(live);
+            lastPlan = null;
+        }
+        double[] near = lastNear;
         if (clear(x, z, tx, tz, near, nowMs)) {
             return new double[] {tx, tz};
         }
-        List<Integer> route = plan(start, goal, near, nowMs);
+        if (lastPlan == null || start != lastStart || goal != lastGoal) {
+            lastPlan = plan(start, goal, near, nowMs);
+            lastStart = start;
+            lastGoal = goal;
+        }
+        List<Integer> route = lastPlan;
         if (route.isEmpty()) {
             return new double[] {tx, tz};
         }
@@ -132,32 +180,30 @@ final class RouteMap {
         return seenAt[c] != NEVER && nowMs - seenAt[c] < memoryMs;
     }
 
+    /** {@return the cells blocked at {@code nowMs}} */
+    private BitSet live(long nowMs) {
+        BitSet live = new BitSet(cols * rows);
+        for (int c = 0; c < cols * rows; c++) {
+            if (live(c, nowMs)) {
+                live.set(c);
+            }
+        }
+        return live;
+    }
+
     /**
      * Per cell, the extra cost of crossing it: {@link #NEAR_COST} within the clearance of an obstacle or the
-     * boundary, {@link #BESIDE_COST} within {@link #BESIDE} times the clearance, else 0.
+     * boundary, {@link #BESIDE_COST} within {@link #BESIDE} times the clearance, else 0 (the largest that
+     * applies: the boundary's, made once, raised round each blocked cell).
      */
-    private double[] nearCosts(long nowMs) {
-        double[] near = new double[cols * rows];
-        double beside = BESIDE * clearance;
-        int r = (int) Math.ceil(beside / CELL);
-        for (int i = 0; i < cols; i++) {
-            for (int j = 0; j < rows; j++) {
-                double[] p = centre(index(i, j));
-                double edge = Math.min(halfW - Math.abs(p[0]), halfD - Math.abs(p[1]));
-                if (edge < beside) {
-                    raise(near, index(i, j), edge < clearance ? NEAR_COST : BESIDE_COST);
-                }
-                if (!live(index(i, j), nowMs)) {
-                    continue;
-                }
-                for (int di = -r; di <= r; di++) {
-                    for (int dj = -r; dj <= r; dj++) {
-                        int a = i + di, b = j + dj;
-                        double d = Math.hypot(di, dj) * CELL;
-                        if (a >= 0 && b >= 0 && a < cols && b < rows && d <= beside) {
-                            raise(near, index(a, b), d <= clearance ? NEAR_COST : BESIDE_COST);
-                        }
-                    }
+    private double[] nearCosts(BitSet live) {
+        double[] near = boundaryCosts.clone();
+        for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
+            int i = c % cols, j = c / cols;
+            for (double[] o : around) {
+                int a = i + (int) o[0], b = j + (int) o[1];
+                if (a >= 0 && b >= 0 && a < cols && b < rows) {
+                    raise(near, index(a, b), o[2]);
                 }
             }
         }

@@ -31,6 +31,15 @@ final class Trail {
     static final double BEND = 0.025;
 
     private final List<double[]> points = new ArrayList<>();
+    /**
+     * The last {@link #towards} answer, for its goal point and the trail's length then: the trail
+     * grows a point every {@value #STEP} m and its goal point rarely changes, while the agent asks
+     * for a waypoint at every control step. Points are only ever added, so the same goal and
+     * length are the same graph.
+     */
+    private int towardsGoal = -1, towardsSize = -1;
+    private int[] towardsNext;
+    private double[] towardsCost;
 
     /** The robot stands at (x, z): a new point once it is {@value #STEP} m from the last. */
     void at(double x, double z) {
@@ -49,8 +58,14 @@ final class Trail {
         if (goal < 0 || start < 0) {
             return null;
         }
-        double[] toGoal = new double[points.size()];
-        int[] next = towards(goal, toGoal);
+        if (goal != towardsGoal || points.size() != towardsSize) {
+            towardsCost = new double[points.size()];
+            towardsNext = towards(goal, towardsCost);
+            towardsGoal = goal;
+            towardsSize = points.size();
+        }
+        double[] toGoal = towardsCost;
+        int[] next = towardsNext;
         if (Double.isInfinite(toGoal[start])) {
             return null;
         }
@@ -162,8 +177,12 @@ final class Trail {
         return pack(Math.round(Math.floor(p[0] / JOIN)), Math.round(Math.floor(p[1] / JOIN)));
     }
 
+    /**
+     * One number per cell, spread by an odd multiplier (one to one): {@code Long.hashCode} of the
+     * plain packing is {@code i ^ j}, so the cells of an arena fell into a few of the map's bins.
+     */
     private static long pack(long i, long j) {
-        return (i << 32) ^ (j & 0xffffffffL);
+        return ((i << 32) ^ (j & 0xffffffffL)) * 0x9E3779B97F4A7C15L;
     }
 
     private static double distance(double[] p, double x, double z) {

@@ -6,7 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
+import java.util.function.Consumer;
 import org.junit.jupiter.api.Test;
 
 class RouteMapTest {
@@ -85,5 +88,56 @@ class RouteMapTest {
         assertThrows(IllegalArgumentException.class, () -> new RouteMap(0, 2, 0.04, 1000));
         assertThrows(IllegalArgumentException.class, () -> new RouteMap(2, 2, 0.04, 0));
         assertEquals(0.0, new RouteMap(1, 1, 0, 1).lastRoute().size());
+    }
+
+    /**
+     * The map keeps its costs and its plan while no cell's blocking changes (and the plan while the
+     * start and goal cells stay): every waypoint and route equals a fresh map's, fed the same
+     * sightings and asked once, over a robot's random drive among boxes seen, forgotten and stood on.
+     */
+    @Test
+    void aMapAskedAtEveryStepAnswersAsAFreshMapFedTheSame() {
+        Random random = new Random(7);
+        RouteMap kept = new RouteMap(2, 2, 0.04, 5_000);
+        List<Consumer<RouteMap>> fed = new ArrayList<>();
+        Consumer<Consumer<RouteMap>> feed = f -> {
+            f.accept(kept);
+            fed.add(f);
+        };
+        double x = -0.8, z = -0.8, tx = 0.8, tz = 0.7;
+        int routes = 0;
+        for (int step = 0; step < 600; step++) {
+            long now = step * 40L;
+            if (random.nextInt(10) == 0) { // a box's side seen: a row of cells
+                double bx = random.nextDouble() * 1.6 - 0.8, bz = random.nextDouble() * 1.6 - 0.8;
+                boolean alongX = random.nextBoolean();
+                for (int k = 0; k < 12; k++) {
+                    double ox = bx + (alongX ? k * 0.02 : 0), oz = bz + (alongX ? 0 : k * 0.02);
+                    feed.accept(m -> m.obstacle(ox, oz, now));
+                }
+            }
+            if (random.nextInt(40) == 0) {
+                tx = random.nextDouble() * 1.8 - 0.9;
+                tz = random.nextDouble() * 1.8 - 0.9;
+            }
+            double sx = x, sz = z;
+            feed.accept(m -> m.standing(sx, sz));
+            RouteMap fresh = new RouteMap(2, 2, 0.04, 5_000);
+            fed.forEach(f -> f.accept(fresh));
+            double[] expected = fresh.waypoint(x, z, tx, tz, now);
+            double[] got = kept.waypoint(x, z, tx, tz, now);
+            assertArrayEquals(expected, got, 0.0, "step " + step);
+            assertEquals(fresh.lastRoute().size(), kept.lastRoute().size(), "step " + step);
+            for (int k = 0; k < fresh.lastRoute().size(); k++) {
+                assertArrayEquals(fresh.lastRoute().get(k), kept.lastRoute().get(k), 0.0);
+            }
+            routes += kept.lastRoute().isEmpty() ? 0 : 1;
+            double d = Math.hypot(got[0] - x, got[1] - z), s = Math.min(0.03, d);
+            if (d > 0 && step % 4 == 0) { // the robot stands still between moves, as the map changes
+                x += (got[0] - x) / d * s + (random.nextDouble() - 0.5) * 0.004;
+                z += (got[1] - z) / d * s + (random.nextDouble() - 0.5) * 0.004;
+            }
+        }
+        assertTrue(routes > 100, "the drive went round boxes, not only straight: " + routes + " routes");
     }
 }

@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 class TrailTest {
@@ -90,5 +93,40 @@ class TrailTest {
         assertNull(trail.waypoint(0, 0.8, 0.5, 0), "the robot far from the trail");
         // near the end of the way: the target itself
         assertArrayEquals(new double[] {0.5, 0}, trail.waypoint(0.42, 0, 0.5, 0), 1e-9);
+    }
+
+    /**
+     * The trail keeps its last way to a goal point while it does not grow: every waypoint equals a
+     * fresh trail's, given the same positions and asked once, over a random drive with targets
+     * that change.
+     */
+    @Test
+    void aTrailAskedAtEveryStepAnswersAsAFreshTrailOfTheSamePositions() {
+        Random random = new Random(11);
+        List<double[]> driven = new ArrayList<>();
+        double x = 0, z = 0, heading = 0, tx = 0, tz = 0;
+        int ways = 0;
+        for (int step = 0; step < 800; step++) {
+            heading += (random.nextDouble() - 0.5) * 0.6;
+            x = Math.max(-0.9, Math.min(0.9, x + 0.01 * Math.cos(heading)));
+            z = Math.max(-0.9, Math.min(0.9, z + 0.01 * Math.sin(heading)));
+            trail.at(x, z);
+            driven.add(new double[] {x, z});
+            if (step % 60 == 0) {
+                double[] back = driven.get(random.nextInt(driven.size()));
+                tx = back[0] + 0.05;
+                tz = back[1];
+            }
+            Trail fresh = new Trail();
+            driven.forEach(p -> fresh.at(p[0], p[1]));
+            double[] expected = fresh.waypoint(x, z, tx, tz), got = trail.waypoint(x, z, tx, tz);
+            if (expected == null) {
+                assertNull(got, "step " + step);
+            } else {
+                assertArrayEquals(expected, got, 0.0, "step " + step);
+                ways++;
+            }
+        }
+        assertTrue(ways > 200, "the trail gave ways: " + ways);
     }
 }

@@ -117,6 +117,11 @@ final class ArtifactType {
         return List.copyOf(out);
     }
 
+    /** {@return the methods called {@code name}, of every kind, in the order {@link #operations} keeps them (not a copy)} */
+    List<OpMethod> named(String name) {
+        return operations.getOrDefault(name, List.of());
+    }
+
     /** {@return the operations called {@code name}, of any arity, of the given kinds in that order} */
     List<OpMethod> operations(String name, OpMethod.Kind... kinds) {
         List<OpMethod> found = new ArrayList<>();

@@ -90,8 +90,21 @@ final class OpResolver {
 
     /** {@return the operation bound on {@code core}, or null when it has no operation of that name and arity} */
     private static OpExecution offeredBy(ArtifactCore core, String operation, Object[] args, AgentId agent, OpCallback callback) {
-        List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
-        return methods.isEmpty() ? null : bind(core, methods, args, agent, callback);
+        // counted in place first: every operation asks several artifacts, most of which have none
+        // of that name, and the one that has it nearly always has one method for it
+        OpMethod one = null;
+        int count = 0;
+        for (OpMethod m : core.type().named(operation)) {
+            if (m.kind() == OpMethod.Kind.OPERATION && m.accepts(args.length)) {
+                one = m;
+                count++;
+            }
+        }
+        if (count == 0) {
+            return null;
+        }
+        List<OpMethod> methods = count == 1 ? List.of(one) : matching(core, operation, args.length, OpMethod.Kind.OPERATION);
+        return bind(core, methods, args, agent, callback);
     }
 
     /**

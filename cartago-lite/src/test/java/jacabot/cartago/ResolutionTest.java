@@ -18,6 +18,57 @@ class ResolutionTest {
         }
     }
 
+    /** Several methods of one name: exact arities before varargs, an internal operation never for an agent. */
+    public static class Overloads extends Artifact {
+        void init() {
+            defineObsProperty("ran", "none");
+        }
+
+        @OPERATION
+        void put(int x) {
+            getObsProperty("ran").updateValue("one");
+        }
+
+        @OPERATION
+        void put(int x, int y) {
+            getObsProperty("ran").updateValue("two");
+        }
+
+        @OPERATION
+        void put(Object... xs) {
+            getObsProperty("ran").updateValue("varargs of " + xs.length);
+        }
+
+        @INTERNAL_OPERATION
+        void put(int x, int y, int z) {
+            getObsProperty("ran").updateValue("internal");
+        }
+    }
+
+    /**
+     * The method an operation runs is the one the ordered candidates give: the one method of that
+     * name and arity is bound at once, several are ordered (exact before varargs), and an artifact
+     * without a method of that name, or with one of another kind, is passed over.
+     */
+    @Test
+    void theMethodIsTheFirstOfItsNameAndArityExactBeforeVarargs() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            RecordingObserver bobSees = new RecordingObserver();
+            AgentId bob = ws.join("bob", bobSees);
+            ws.createArtifact("desk", Desk.class);
+            ws.createArtifact("overloads", Overloads.class);
+            ok(ws, bob, "focus", "overloads");
+            bobSees.drain();
+            ok(ws, bob, "put", 1);
+            ok(ws, bob, "put", 1, 2);
+            ok(ws, bob, "put", 1, 2, 3);
+            ok(ws, bob, "put");
+            bobSees.expect("overloads ran(\"none\")->ran(\"one\")", "overloads ran(\"one\")->ran(\"two\")",
+                    "overloads ran(\"two\")->ran(\"varargs of 3\")", "overloads ran(\"varargs of 3\")->ran(\"varargs of 0\")");
+            Calls.assertReason("wrong_arity", Calls.failure(ws, bob, OpTarget.any(), "whoAmI", 1, 2));
+        }
+    }
+
     @Test
     void createdThenFocusedThenOldest() throws CartagoException {
         try (Workspace ws = Calls.quiet("main").stepped().build()) {

@@ -60,6 +60,9 @@ public final class GoalStates {
 
     /** A state of the goal on top of an intention, when that is a goal being achieved. */
     public void ofTop(Intention i, State state, Term reason) {
+        if (!listening()) {
+            return; // post would do nothing: the goal's unifier need not be applied (every .wait comes here twice)
+        }
         IntendedMeans im = i == null ? null : i.peek();
         if (im != null && im.trigger().isAddition()) {
             post(of(im), state, reason);

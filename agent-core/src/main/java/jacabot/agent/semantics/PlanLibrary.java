@@ -6,6 +6,7 @@ import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Trigger;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Objects;
@@ -169,6 +170,7 @@ public final class PlanLibrary {
         candidateCache.clear();
         last = null;
         before = null;
+        Arrays.fill(byParts, null);
         version++;
     }
 
@@ -213,8 +215,14 @@ public final class PlanLibrary {
     /** A key with its own plans in each field, so that a look from another thread sees a pair that belongs together. */
     private Last last;
     private Last before;
+    /**
+     * The last answers of {@link #hasCandidate(Trigger.Op, Trigger.Type, Literal)}, one per slot of
+     * the trigger's functor, operator and arity: a percept update asks for {@code -p} and
+     * {@code +p} of every property that changed, so the last two answers never hold the next.
+     */
+    private final Last[] byParts = new Last[64];
 
-    private List<Plan> scan(Trigger te) {
+    List<Plan> scan(Trigger te) { // package-private: ShortcutTest compares the caches with it
         var out = new ArrayList<Plan>();
         for (Plan p : plans) {
             if (isCandidate(p.trigger(), te)) {
@@ -262,7 +270,14 @@ public final class PlanLibrary {
         if (before != null && before.key.matches(op, type, l)) {
             return !before.plans.isEmpty();
         }
-        return hasCandidate(new Trigger(op, type, l));
+        int slot = (l.functor().hashCode() * 31 + op.ordinal() * 7 + l.arity()) & (byParts.length - 1);
+        Last seen = byParts[slot];
+        if (seen != null && seen.key.matches(op, type, l)) {
+            return !seen.plans.isEmpty();
+        }
+        boolean has = hasCandidate(new Trigger(op, type, l));
+        byParts[slot] = this.last; // the answer just made: candidates keeps it there
+        return has;
     }
 
     private static boolean isCandidate(Trigger pt, Trigger te) {

@@ -4,7 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 
+import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Plan;
+import jacabot.agent.syntax.Trigger;
 import jacabot.agent.testing.TestAgent;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -42,6 +45,53 @@ class ShortcutTest {
     /** The number of a fresh variable printed unbound, as {@code _24<no-value>}. */
     private static int number(String printed) {
         return Integer.parseInt(printed.substring(1, printed.indexOf('<')));
+    }
+
+    /**
+     * {@code PlanLibrary.hasCandidate} of a trigger's parts keeps an answer per slot: over belief
+     * events of many predicates in turn (a percept update's {@code -p}, {@code +p}, {@code -q}, ...),
+     * with plans added and removed between them, every answer is the general lookup's.
+     */
+    @Test
+    void beliefEventsAskedByTheirPartsFollowPlansAddedAndRemoved() throws Exception {
+        var parser = new jacabot.agent.parser.AslParser();
+        var library = new PlanLibrary();
+        library.add(parser.parsePlan("@onP +p(X) <- .print(X)."), false);
+        library.add(parser.parsePlan("@offQ -q <- true."), false);
+        List<Literal> beliefs = new java.util.ArrayList<>();
+        for (String f : List.of("p", "q", "r", "s", "t", "u", "v", "w", "x", "y")) {
+            beliefs.add(Literal.of(f, new NumberTerm(1)));
+            beliefs.add(Literal.atom(f));
+        }
+        int has = 0;
+        for (int round = 0; round < 6; round++) {
+            if (round == 2) { // just asked, then two others: the answer sits in its slot only
+                assertEquals(false, library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(4)));
+                library.hasCandidate(Trigger.Op.DEL, Trigger.Type.BELIEF, beliefs.get(6));
+                library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(8));
+                library.add(parser.parsePlan("@onR +r(X) <- true."), false);
+                assertEquals(true, library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(4)));
+            }
+            if (round == 4) {
+                assertEquals(true, library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(0)));
+                library.hasCandidate(Trigger.Op.DEL, Trigger.Type.BELIEF, beliefs.get(6));
+                library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(8));
+                library.remove("onP");
+                assertEquals(false, library.hasCandidate(Trigger.Op.ADD, Trigger.Type.BELIEF, beliefs.get(0)));
+            }
+            for (int k = 0; k < 3; k++) {
+                for (Literal b : beliefs) {
+                    for (Trigger.Op op : List.of(Trigger.Op.DEL, Trigger.Op.ADD)) {
+                        boolean byParts = library.hasCandidate(op, Trigger.Type.BELIEF, b);
+                        assertEquals(!library.scan(new Trigger(op, Trigger.Type.BELIEF, b)).isEmpty(), byParts,
+                                round + ": " + op + " " + b);
+                        has += byParts ? 1 : 0;
+                    }
+                }
+            }
+        }
+        // +p(1) and -q in rounds 0-3, +r(1) in rounds 2-5: three times a round
+        assertEquals(3 * (2 + 2 + 3 + 3 + 2 + 2), has);
     }
 
     @Test

@@ -111,6 +111,8 @@ public class CAgentArch extends LocalArch {
 
     /** The annotations of each artifact's property beliefs, made once (used on the agent's thread only, in sense). */
     private final Map<ArtifactId, List<Term>> propertyAnnots = new HashMap<>();
+    /** The annotations of each artifact's signals, sorted once (used on the agent's thread only, in sense). */
+    private final Map<ArtifactId, List<Term>> signalAnnots = new HashMap<>();
     /** The last artifact {@link #belief} served, and its annotations: nearly every change comes from one artifact. */
     private ArtifactId lastId;
     private List<Term> lastAnnots;
@@ -212,7 +214,8 @@ public class CAgentArch extends LocalArch {
         @Override
         public void signalled(ArtifactId artifact, String type, List<Object> args) {
             queue(ag -> ag.addExternalEvent(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF,
-                    new Literal(type, TermConverter.toTerms(args), annots(artifact, "obs_ev"), false))));
+                    new Literal(type, TermConverter.toTerms(args), signalAnnots.computeIfAbsent(artifact,
+                            k -> new Literal("a", List.of(), annots(k, "obs_ev"), false).annots()), false))));
         }
 
         @Override
@@ -220,6 +223,7 @@ public class CAgentArch extends LocalArch {
             queue(ag -> {
                 properties.forEach(p -> remove(ag, artifact, p));
                 propertyAnnots.remove(artifact);
+                signalAnnots.remove(artifact);
                 lastId = null;
             });
         }
