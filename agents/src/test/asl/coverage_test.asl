@@ -57,6 +57,15 @@ mock_operation(_, ok).
        !assert_true(mock_called(backward));
        !assert_true(mock_called(turnAround)).
 
+// a veer under way (begun in the motion goal, which the new obstacle ends with it) must not stay
+// believed when the new avoidance does not veer: random motion would wait for ever
+@[test]
++!test_a_new_obstacle_ends_a_veer_under_way
+    <- !forget_calls; -+obstacleTimes([]); +veering;
+       !obstacle_ahead(0);                                                // front: no veer of its own
+       !until(not avoiding & mock_called(turnAround), 2000);
+       !assert_false(veering).
+
 @[test]
 +!test_obstacles_too_often_lead_to_an_escape
     <- !forget_calls; .system_time(T);

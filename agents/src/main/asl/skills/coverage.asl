@@ -71,10 +71,13 @@ pausedUntil("-veering") :- veering.
 
 // the obstacle plan ends the random motion that runs (.succeed_goal(move(_))): "avoiding" only
 // suspends the next move, so a move plan in its .wait would later send "forward; .wait(1000)" in
-// the middle of the avoiding turn (thesis §1.2 shows the same plans; the race is theirs too)
+// the middle of the avoiding turn (thesis §1.2 shows the same plans; the race is theirs too).
+// Ending the move also ends a veer begun in it (@coverAvoidStill), so "veering" goes too: left
+// believed when the new obstacle led to an escape or a front avoidance (neither veers), it held
+// random motion for the rest of the run (docs/comparison.md, "Users' arenas")
 @coverObstacle
 +obstacle(true) : delta(V) & not avoiding
-    <- +avoiding; .succeed_goal(move(_)); stop; !noteObstacle; .wait(50); !avoid(V).
+    <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; .wait(50); !avoid(V).
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
