@@ -1,21 +1,21 @@
 // Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when
-// needed, then park on the charger. Written from skills alone (suspend-resume's, the way round, a
-// search memory) and the plans of its own that decide when the task is done and when to search.
+// needed, then park on the charger. Written from skills alone (suspend-resume's, a search memory)
+// and the plans of its own that decide when the task is done and when to search. No way round
+// (way-round.asl): its boundary following of boxes met again crawled round them on the trips.
 // From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D);
 // from the run: taskEnd(Ms), its end (no trip to the charger while the battery covers the time left).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // a search goes on from anywhere (no way back after a recharge), a look around first; a delivery under
-// way ends first over 300 J (the worst drain); a wall: three obstacles met near each other; a homing still
-// nearing goes on past far sight's time limit (a nearer sighting in the last 15 s); every red run is seen;
-// turns to a heading at half speed but for the last 15 degrees
-resumeAtCharger. lookFirst. deliverFirst(300). rehitsToFollow(2). homingProgress(15000). everyRedRun. quickTurn(50, 15).
+// way ends first while the battery less 150 J covers the way on to the charger; a homing still nearing
+// goes on past far sight's time limit (a nearer sighting in the last 15 s); every red run is seen; turns
+// at half speed but for the last 15 degrees; a charge ends once the battery less 100 J covers the time left
+resumeAtCharger. lookFirst. deliverFirst(150). homingProgress(15000). everyRedRun. quickTurn(50, 15). chargeUntilLasts(100).
 
 !start.
 
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
-{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }

@@ -100,6 +100,26 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        -lowBattery.
 
+// an agent that charges only for the time left (tidy-up: chargeUntilLasts) leaves the charger once
+// the battery less the reserve covers the task's time left at full power, short of the charged level
+@[test]
++!test_the_charge_ends_once_the_battery_covers_the_time_left
+    <- !until(not charging, 10000); +chargeUntilLasts(100); !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       .system_time(T); +taskEnd(T + 300000);                        // 300 s left: 750 J at 2.5 W
+       !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(800); .wait(300);
+       !assert_true(.intend(waitCharged));                           // 700 J over the reserve: not yet
+       -+battery(870);                                               // 770 J: enough, no "charged"
+       !until(.intend(reachMarked), 10000);
+       !assert_true(.intend(reachMarked));
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       -taskEnd(_); -chargeUntilLasts(100); -lowBattery.
+
 // an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
 // the charger before the trip; once it is over, the next lowBattery starts the trip
 @[test]

@@ -14,7 +14,9 @@ fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
 // point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
-// the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power). Rules it extends:
+// the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
+// chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
+// covers the time left at full power, or at chargedLevel). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
@@ -109,6 +111,12 @@ forgetOnFall(atCharger).
 @reachChargerAgain
 -!reachCharger[error(E), error_msg(M)]
     <- println("Charger not reached yet (", E, " ", M, "): trying again"); !escape; !computeGap; !!balance; !reachCharger.
+// chargeUntilLasts: a trip late in the task charged to 900 J, 20-30 s on the charger, where the
+// time left needed a third of it
+chargedEnough :- battery(B) & chargedLevel(C) & B >= C.
+chargedEnough :- chargeUntilLasts(R) & .system_time(T) & taskEnd(End) & T < End & battery(B) & fullPower(P)
+    & B - R > P * (End - T) / 1000.
+@waitChargedEnough +!waitCharged : chargeUntilLasts(_) <- .wait(chargedEnough, 120000).
 @waitCharged +!waitCharged <- .wait({+charged}, 120000).
 @notCharging
 -!waitCharged : battery(B) & lowBatteryLevel(L) & B < L
