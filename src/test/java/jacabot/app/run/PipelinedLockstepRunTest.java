@@ -17,6 +17,7 @@ import java.util.Random;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -34,14 +35,21 @@ class PipelinedLockstepRunTest {
     /** Who is slowed at random steps, so that each side waits for the other at some steps. */
     private enum Jitter { NONE, WORLD, AGENT }
 
-    private record Run(String eventLog, long steps, String summary, String recorded) {
+    private record Run(String eventLog, long steps, String summary, String recorded, String failure) {
     }
+
+    /** Stops the system one simulated second in: a failed agent, whose run ends there. */
+    private static final AgentSource STOPS = AgentSource.text("stops.asl", "!start.\n+!start <- .wait(1000); .stopMAS.\n");
 
     private static SimWorld world(Experiment e) throws Exception {
         return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), e.worldFile()));
     }
 
     private static Run run(Experiment e, boolean pipeline, boolean inMemory, Jitter jitter) throws Exception {
+        return run(e, AgentSource.packaged(e), pipeline, inMemory, jitter);
+    }
+
+    private static Run run(Experiment e, AgentSource agent, boolean pipeline, boolean inMemory, Jitter jitter) throws Exception {
         SimWorld w = world(e);
         RunRecorder recorder = RunRecorder.attach(w, e.robot());
         Random timing = new Random(); // unseeded on purpose: only the timing may differ
@@ -53,7 +61,7 @@ class PipelinedLockstepRunTest {
                 }
             });
         }
-        var run = new LockstepRun(w, null, e, AgentSource.packaged(e), w.seed(),
+        var run = new LockstepRun(w, null, e, agent, w.seed(),
                 new PrintStream(OutputStream.nullOutputStream())).inMemory(inMemory).pipeline(pipeline);
         if (jitter == Jitter.AGENT) {
             run.onStep(d -> pause(timing)); // on the agent side's thread, before it answers
@@ -61,7 +69,8 @@ class PipelinedLockstepRunTest {
         var result = run.runFor(SECONDS);
         run.close();
         var summary = recorder.summary(SweepJob.AGENT);
-        return new Run(result.eventLog(), result.steps(), summary.toJson(), summary.eventLog());
+        return new Run(result.eventLog(), result.steps(), summary.toJson(), summary.eventLog(),
+                run.agentFailure().orElse(""));
     }
 
     private static void pause(Random timing) {
@@ -96,6 +105,23 @@ class PipelinedLockstepRunTest {
         assertEquals(answered, first(APPLY, lockstep.eventLog()), "lockstep: applied at the step it answers");
         assertEquals(answered + 1, first(APPLY, pipelined.eventLog()), "pipelined: applied at the next step");
         assertNotEquals(lockstep.eventLog(), pipelined.eventLog());
+    }
+
+    @Test
+    void aFailedAgentEndsThePipelinedRunAtTheSameStepWhateverTheTiming() throws Exception {
+        Experiment e = Experiment.OBSTACLE_AVOIDANCE;
+        Run lockstep = run(e, STOPS, false, true, Jitter.NONE);
+        for (int i = 0; i < 3; i++) { // the end is decided where the answer is taken, not where the agent fails
+            Run agentSlow = run(e, STOPS, true, false, Jitter.AGENT);
+            Run worldSlow = run(e, STOPS, true, false, Jitter.WORLD);
+            Run memory = run(e, STOPS, true, true, Jitter.NONE);
+            assertTrue(memory.failure().contains(".stopMAS"), memory.failure());
+            assertEquals(lockstep.steps() + 1, memory.steps(), "one step after the plain lockstep's end");
+            for (Run other : List.of(agentSlow, worldSlow)) {
+                assertEquals(memory.steps(), other.steps());
+                assertEquals(memory.eventLog(), other.eventLog());
+            }
+        }
     }
 
     private static long first(Pattern p, String log) {
