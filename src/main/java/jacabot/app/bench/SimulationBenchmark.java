@@ -176,10 +176,18 @@ public final class SimulationBenchmark {
         var mw = m.result().middlewareCosts();
         long[] agent = m.run().agentSideCost();
         long agentWork = mw.decodingNanos() + agent[0] + agent[1] + mw.writingNanos();
-        return String.format(Locale.ROOT, "The simulation thread worked %.2f s (%.0f us a step) and waited for the agent's answer "
+        String line = String.format(Locale.ROOT, "The simulation thread worked %.2f s (%.0f us a step) and waited for the agent's answer "
                 + "%.2f s (%.0f%%, %.0f us a step); the agent's side worked %.2f s (%.0f%%, %.0f us a step).",
                 (m.wall() - waited) / 1e9, (m.wall() - waited) / 1e3 / steps, waited / 1e9, 100.0 * waited / m.wall(),
                 waited / 1e3 / steps, agentWork / 1e9, 100.0 * agentWork / m.wall(), agentWork / 1e3 / steps);
+        long[] cpu = m.run().threadCpuNanos();
+        if (cpu[0] < 0 || cpu[1] < 0) {
+            return line;
+        }
+        // what the load does not change: on two free cores a lockstep step costs the sum, a pipelined one at best the larger
+        return line + String.format(Locale.ROOT, " By their own CPU: the simulation thread %.2f ms, the agent's %.2f ms per "
+                + "simulated second; their larger is %.2f of their sum.", cpu[0] / 1e6 / seconds, cpu[1] / 1e6 / seconds,
+                (double) Math.max(cpu[0], cpu[1]) / Math.max(1, cpu[0] + cpu[1]));
     }
 
     /**

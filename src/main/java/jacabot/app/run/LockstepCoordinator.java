@@ -13,6 +13,8 @@ import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -70,6 +72,8 @@ public final class LockstepCoordinator {
     private volatile long endStep = -1;
     /** The step the agent side is answering (its own thread's). */
     private volatile long answering;
+    /** The CPU time of the simulation thread and of the thread that ran the agent side, at the run's end (−1: not read). */
+    private volatile long simulationCpu = -1, agentSideCpu = -1;
     private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
@@ -149,6 +153,16 @@ public final class LockstepCoordinator {
     public LockstepCoordinator pipeline(boolean on) {
         this.pipeline = on;
         return this;
+    }
+
+    /**
+     * {@return the CPU time in ns of the simulation thread and of the thread the agent side ran on
+     * (the middleware's reading thread over the socket), at the run's end; −1 where not known} Two
+     * such numbers say what a step costs whatever the machine's load: their sum in lockstep, at best
+     * the larger of them in a pipelined lockstep.
+     */
+    public long[] threadCpuNanos() {
+        return new long[] {simulationCpu, agentSideCpu};
     }
 
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
@@ -233,6 +247,7 @@ public final class LockstepCoordinator {
                 } catch (RuntimeException | Error e) {
                     simFailure[0] = e;
                 } finally {
+                    simulationCpu = threadCpu();
                     link.controller().close(); // says goodbye: the agent side's loop ends
                 }
             }, "lockstep-simulation");
@@ -333,6 +348,7 @@ public final class LockstepCoordinator {
                         answeredLast = true;
                     }
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
+                    agentSideCpu = threadCpu();
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
             } catch (RuntimeException | Error failed) {
@@ -357,6 +373,11 @@ public final class LockstepCoordinator {
                 throw failure;
             }
         }
+    }
+
+    private static long threadCpu() {
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        return threads.isCurrentThreadCpuTimeSupported() ? threads.getCurrentThreadCpuTime() : -1;
     }
 
     private List<Command> callAgent(StepData data) {

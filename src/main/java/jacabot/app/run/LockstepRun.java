@@ -129,6 +129,12 @@ public final class LockstepRun extends SteppedPlatform {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
+    /** {@return the last run's threads' CPU time ({@link LockstepCoordinator#threadCpuNanos}), −1 each before a run} */
+    public long[] threadCpuNanos() {
+        LockstepCoordinator c = coordinator;
+        return c != null ? c.threadCpuNanos() : new long[] {-1, -1};
+    }
+
     /** {@return the artifact steps run so far (on an operation thread, or on this one when the operation never waits)} */
     public long artifactSteps() {
         return stepper().artifactSteps();
