@@ -28,7 +28,11 @@ import java.util.function.Supplier;
  * {@code failSafeMs}. <b>Lockstep</b>: after sending a step's data and its step marker the
  * controller waits for the middleware's {@code STEP_ACK(step)}, applies the commands that came
  * before it, and only then lets the world advance; so a command sent while step k is handled is in
- * effect from step k to k+1, and the same world, agent and seed give the same run.
+ * effect from step k to k+1, and the same world, agent and seed give the same run. <b>Pipelined
+ * lockstep</b> ({@link #pipelined}): the controller sends step k's readings and lets the world
+ * advance while the agent reasons on them; it waits for their answer at the next control step and
+ * applies it there, so a command answering step k is in effect from step k+1 to k+2: one control
+ * step of latency, always the same, and the run is still a function of world, agent and seed.
  *
  * <pre>{@code
  * SimWorld world = SimWorld.load(Path.of("worlds/navigation.json"));
@@ -58,6 +62,12 @@ public final class RobotController implements AutoCloseable {
     private volatile boolean started, closed;
     /** The middleware's turn when it is in this process (lockstep over TCP), or null. */
     private volatile LockstepTurn middlewareTurn;
+    /** Pipelined lockstep: the agent's answer to a step is applied at the next one. */
+    private volatile boolean pipelined;
+    /** Pipelined lockstep: the step sent, whose answer the next control step waits for and applies. */
+    private Sensed pending;
+    /** Lockstep: the last step whose answer has come (−1 before any); read on the simulation thread. */
+    private long answered = -1;
 
     /** @throws IllegalArgumentException when the world has no robot of the configured name */
     public RobotController(SimWorld world, ControllerConfig config) {
@@ -123,6 +133,54 @@ public final class RobotController implements AutoCloseable {
     public RobotController takeTurnsWith(LockstepTurn turn) {
         this.middlewareTurn = turn;
         return this;
+    }
+
+    /**
+     * Pipelined lockstep: the world simulates the next control step while the agent reasons on the
+     * last one's readings, and the agent's answer to step k is applied at step k+1 (one control step
+     * of latency, fixed). Wall time per step nears the larger of the simulation's and the agent's work
+     * instead of their sum, on two free cores. The same world, agent and seed still give the same run:
+     * the world waits for the answer to step k before it simulates past step k+1. A single robot's
+     * lockstep only (not {@link #sendStep}); the middleware's turns are not taken. Set it before the world steps.
+     *
+     * @throws IllegalArgumentException in real time
+     */
+    public RobotController pipelined(boolean on) {
+        if (on && !config.lockstep()) {
+            throw new IllegalArgumentException("a pipelined lockstep needs lockstep");
+        }
+        this.pipelined = on;
+        return this;
+    }
+
+    /**
+     * {@return the last step whose answer (its {@code STEP_ACK}) the simulation thread has taken, −1
+     * before any} In a pipelined lockstep it lags the steps sent by one. Simulation thread only.
+     */
+    public long lastAnsweredStep() {
+        return answered;
+    }
+
+    /**
+     * Pipelined lockstep, on the simulation thread after its last control step: waits for the
+     * answer to the step still pending, so that the agent has read and answered every step sent
+     * before the goodbye (its commands are not applied: the world stops here). Nothing otherwise.
+     */
+    public void awaitLastAnswer() {
+        Sensed s = pending;
+        pending = null;
+        if (s == null || closed) {
+            return;
+        }
+        try {
+            link.readAnswer(s.batch().step(), null);
+            if (inbox.awaitAck(s.batch().step()) == CommandInbox.AckResult.ACKED) {
+                inbox.takeCommands();
+                answered = s.batch().step();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** {@return the runner that steps the world and calls {@link #controlStep} before each step} */
@@ -226,12 +284,58 @@ public final class RobotController implements AutoCloseable {
         if (s == null) {
             return;
         }
+        if (pipelined) {
+            answerPipelined(s);
+            return;
+        }
         List<ReceivedCommand> received = exchangeLockstep(s.batch(), s.marker());
         if (received == null) {
             return; // closed while waiting
         }
         synchronized (world) {
             act(s.now(), received);
+        }
+    }
+
+    /**
+     * Pipelined lockstep, without the world's lock: waits for the answer to the step sent at the
+     * last control step, applies it now (at step k+1), then sends this step and returns, so the
+     * world advances while the agent reasons on it. A drop trips the fail-safe; the step pending on
+     * the dropped connection is not answered, and this one goes on the next connection.
+     */
+    private void answerPipelined(Sensed s) {
+        try {
+            List<ReceivedCommand> received = List.of();
+            Sensed p = pending;
+            pending = null;
+            if (p != null) {
+                long t0 = System.nanoTime();
+                link.readAnswer(p.batch().step(), null); // never the middleware's turn: it must run beside us
+                CommandInbox.AckResult ack = inbox.awaitAck(p.batch().step());
+                costs.addWaiting(System.nanoTime() - t0);
+                switch (ack) {
+                    case ACKED:
+                        received = inbox.takeCommands();
+                        answered = p.batch().step();
+                        break;
+                    case CLOSED:
+                        return;
+                    default:
+                        synchronized (world) {
+                            failSafe("the link to the middleware dropped");
+                        }
+                }
+            }
+            synchronized (world) {
+                act(s.now(), received); // its Applied reports go with this step's readings, as in lockstep
+            }
+            if (!inbox.awaitConnected()) {
+                return;
+            }
+            link.send(out -> out.writeStep(s.batch(), s.marker()));
+            pending = s;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 
@@ -333,9 +437,13 @@ public final class RobotController implements AutoCloseable {
                     return null;
                 }
                 link.send(out -> out.writeStep(batch, marker));
+                long t0 = System.nanoTime();
                 link.readAnswer(batch.step(), middlewareTurn);
-                switch (inbox.awaitAck(batch.step())) {
+                CommandInbox.AckResult ack = inbox.awaitAck(batch.step());
+                costs.addWaiting(System.nanoTime() - t0);
+                switch (ack) {
                     case ACKED:
+                        answered = batch.step();
                         return inbox.takeCommands();
                     case CLOSED:
                         return null;

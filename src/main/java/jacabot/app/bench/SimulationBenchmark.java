@@ -32,6 +32,7 @@ public final class SimulationBenchmark {
     private final int warmups;
     private final int measuredRuns;
     private final boolean turns;
+    private boolean pipeline;
     /** The process's CPU time: on a loaded machine it tells what a run costs where its wall time does not. */
     private final OperatingSystemMXBean os = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
@@ -57,6 +58,15 @@ public final class SimulationBenchmark {
         this.out = out;
     }
 
+    /**
+     * Also measures the pipelined lockstep ({@link LockstepRun#pipeline}), each of its runs after one
+     * of the plain lockstep's, and prints it beside them. {@return this}
+     */
+    public SimulationBenchmark pipeline(boolean on) {
+        this.pipeline = on;
+        return this;
+    }
+
     public void run() throws Exception {
         Experiment e = Experiment.SUSPEND_RESUME;
         AgentSource source = AgentSource.packaged(e);
@@ -66,17 +76,19 @@ public final class SimulationBenchmark {
         List<String> warm = new ArrayList<>();
         for (int i = 0; i < warmups; i++) {
             long w0 = System.nanoTime();
-            runAgent(world, source, seconds);
+            runAgent(world, source, seconds, false);
             warm.add(factor(System.nanoTime() - w0));
+            if (pipeline) {
+                runAgent(world, source, seconds, true);
+            }
         }
         List<Measured> runs = new ArrayList<>();
+        List<Measured> pipelined = new ArrayList<>();
         for (int i = 0; i < measuredRuns; i++) {
-            long cpu0 = os.getProcessCpuTime();
-            long jit0 = CompilerThreads.cpuNanos();
-            long t0 = System.nanoTime();
-            Measured m = runAgent(world, source, seconds);
-            long cpu = os.getProcessCpuTime() - cpu0;
-            runs.add(m.timed(System.nanoTime() - t0, cpu, jit0 < 0 ? -1 : CompilerThreads.cpuNanos() - jit0));
+            runs.add(measure(source, false));
+            if (pipeline) {
+                pipelined.add(measure(source, true));
+            }
         }
         Measured m = median(runs, Measured::wall); // runs vary with the JIT's progress and the machine's load
         long wall = m.wall();
@@ -106,6 +118,7 @@ public final class SimulationBenchmark {
         row("socket writes (the answer: commands and acknowledgement)", mw.writingNanos(), wall, steps);
         row("the rest: socket reads, the link's bookkeeping, thread wake-ups", rest, wall, steps);
         out.printf(Locale.ROOT, "A control step took %.1f us in all.%n", wall / 1e3 / steps);
+        out.println(threads(m));
         if (rest < 0) {
             // a write returns only after waking the reader's thread, which by then is at work on the other core
             out.println("The rows add up to more than the whole: each socket write wakes the other side's thread,"
@@ -127,6 +140,54 @@ public final class SimulationBenchmark {
                     100.0 * baseline[2] / Math.max(1, baseline[1]), agentOwn / 1e6 / seconds, baselineOwn / 1e6 / seconds,
                     (double) baselineOwn / Math.max(1, agentOwn));
         }
+        if (pipeline) {
+            Measured p = median(pipelined, Measured::wall);
+            out.printf(Locale.ROOT, "%nThe pipelined lockstep (--pipeline: the world simulates the next step while the agent reasons, "
+                    + "its answer applied one control step later), %d measured runs each after one of the above (%s): the median "
+                    + "%.2f s, %.0fx real time; %d control steps, %d reasoning cycles%n", measuredRuns,
+                    pipelined.stream().map(r -> factor(r.wall())).collect(Collectors.joining(" ")), p.wall() / 1e9,
+                    seconds / (p.wall() / 1e9), p.result().steps(), p.run().cycles());
+            out.println(threads(p));
+            out.printf(Locale.ROOT, "Its process's CPU per simulated second %.1f ms%s; at %.2f of the baseline's speed (by CPU %.2f); "
+                    + "against the lockstep's median run: wall %.2fx, CPU %.2fx.%n", p.cpu() / 1e6 / seconds,
+                    p.jit() < 0 ? "" : String.format(Locale.ROOT, " (the JIT compilers %.1f ms)", p.jit() / 1e6 / seconds),
+                    (double) baseline[0] / p.wall(), (double) baseline[1] / p.cpu(), (double) p.wall() / wall,
+                    (double) p.cpu() / Math.max(1, m.cpu()));
+        }
+    }
+
+    private Measured measure(AgentSource source, boolean pipelined) throws Exception {
+        long cpu0 = os.getProcessCpuTime();
+        long jit0 = CompilerThreads.cpuNanos();
+        long t0 = System.nanoTime();
+        Measured m = runAgent(world, source, seconds, pipelined);
+        long cpu = os.getProcessCpuTime() - cpu0;
+        return m.timed(System.nanoTime() - t0, cpu, jit0 < 0 ? -1 : CompilerThreads.cpuNanos() - jit0);
+    }
+
+    /**
+     * {@return the two threads' share of a run}: the simulation thread's wait for the agent's answer,
+     * and the agent side's own work (decoding, artifact, reasoning, the answer's write). In lockstep
+     * they add up to about the whole; pipelined, the world's work hides under the agent's.
+     */
+    private String threads(Measured m) {
+        long steps = Math.max(1, m.result().steps());
+        long waited = m.result().controllerCosts().waitingNanos();
+        var mw = m.result().middlewareCosts();
+        long[] agent = m.run().agentSideCost();
+        long agentWork = mw.decodingNanos() + agent[0] + agent[1] + mw.writingNanos();
+        String line = String.format(Locale.ROOT, "The simulation thread worked %.2f s (%.0f us a step) and waited for the agent's answer "
+                + "%.2f s (%.0f%%, %.0f us a step); the agent's side worked %.2f s (%.0f%%, %.0f us a step).",
+                (m.wall() - waited) / 1e9, (m.wall() - waited) / 1e3 / steps, waited / 1e9, 100.0 * waited / m.wall(),
+                waited / 1e3 / steps, agentWork / 1e9, 100.0 * agentWork / m.wall(), agentWork / 1e3 / steps);
+        long[] cpu = m.run().threadCpuNanos();
+        if (cpu[0] < 0 || cpu[1] < 0) {
+            return line;
+        }
+        // what the load does not change: on two free cores a lockstep step costs the sum, a pipelined one at best the larger
+        return line + String.format(Locale.ROOT, " By their own CPU: the simulation thread %.2f ms, the agent's %.2f ms per "
+                + "simulated second; their larger is %.2f of their sum.", cpu[0] / 1e6 / seconds, cpu[1] / 1e6 / seconds,
+                (double) Math.max(cpu[0], cpu[1]) / Math.max(1, cpu[0] + cpu[1]));
     }
 
     /**
@@ -178,11 +239,11 @@ public final class SimulationBenchmark {
         out.printf(Locale.ROOT, "| %s | %.2f | %.0f%% | %.1f |%n", part, nanos / 1e9, 100.0 * nanos / wall, nanos / 1e3 / steps);
     }
 
-    private Measured runAgent(Path world, AgentSource source, double duration) throws Exception {
+    private Measured runAgent(Path world, AgentSource source, double duration, boolean pipelined) throws Exception {
         SimWorld simWorld = BaselineRunner.load(world, seed);
         var quiet = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         var run = new LockstepRun(simWorld, null, Experiment.SUSPEND_RESUME, source, seed, quiet);
-        var result = run.stepLogs(false).takeTurns(turns).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
+        var result = run.stepLogs(false).takeTurns(turns).pipeline(pipelined).runFor(duration); // the per-step text logs are for replays, not part of a run's cost
         run.close(); // its figures stay readable
         return new Measured(run, result, 0, 0, -1);
     }

@@ -133,6 +133,11 @@ final class BenchCommand implements Runnable {
                 + "docs/performance.md section 9)")
         private boolean turns;
 
+        @Option(names = "--pipeline", description = "also the pipelined lockstep (the world simulates the next step while "
+                + "the agent reasons; its answer applied one control step later), runs alternated with the lockstep's and "
+                + "printed beside them (docs/performance.md section 17)")
+        private boolean pipeline;
+
         @Option(names = "--robots", paramLabel = "N", description = "instead: team-delivery with a team of N robots against "
                 + "one robot, runs alternated (worlds/team-delivery.json, its seed; default --duration 60s, --warmup 1)")
         private Integer robots;
@@ -153,7 +158,7 @@ final class BenchCommand implements Runnable {
                 throw new UserError(e.getMessage());
             }
             new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs, turns,
-                    ConsoleStreams.of(spec.commandLine().getOut())).run();
+                    ConsoleStreams.of(spec.commandLine().getOut())).pipeline(pipeline).run();
             return 0;
         }
 

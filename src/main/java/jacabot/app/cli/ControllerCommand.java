@@ -77,6 +77,10 @@ final class ControllerCommand implements Callable<Integer> {
     @Option(names = "--lockstep", description = "advance the world only when the agent has answered each step")
     private boolean lockstep;
 
+    @Option(names = "--pipeline", description = "with --lockstep, one robot: simulate the next step while the agent "
+            + "reasons; its commands take effect one control step later (docs/performance.md section 17)")
+    private boolean pipeline;
+
     @Option(names = "--speed", paramLabel = "X", description = "real time x this factor (default ${DEFAULT-VALUE})")
     private double speed = 1.0;
 
@@ -144,6 +148,9 @@ final class ControllerCommand implements Callable<Integer> {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
         if (isTeam(simWorld)) {
+            if (pipeline) {
+                throw new UserError("--pipeline: a team's controller runs in plain lockstep only");
+            }
             if (eventLog != null) {
                 throw new UserError("--event-log: a team's controller writes each robot's link log to OUT/ROBOT/link-log.txt; use --out DIR --link-log");
             }
@@ -165,15 +172,18 @@ final class ControllerCommand implements Callable<Integer> {
             }
             config = config.withEventLog(LineSink.into(events));
         }
+        if (pipeline && !lockstep) {
+            throw new UserError("--pipeline goes with --lockstep");
+        }
         RobotController controller;
         try {
-            controller = new RobotController(simWorld, config);
+            controller = new RobotController(simWorld, config).pipelined(pipeline);
         } catch (IllegalArgumentException e) {
             throw new UserError(world + ": " + e.getMessage());
         }
         stdout.println(String.format(Locale.ROOT, "controller: robot '%s' (%s) of world '%s', %s; middleware at %s:%d",
                 controller.robot().name(), controller.robot().model().name(), simWorld.name(),
-                lockstep ? "lockstep" : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
+                lockstep ? (pipeline ? "pipelined lockstep" : "lockstep") : "real time x" + speed, host, port) + (tlsStore != null ? " over TLS" : ""));
         final BufferedWriter eventsFile = events;
         ExitHook hook = ExitHook.install("controller-shutdown", () -> {
             controller.close();

@@ -101,6 +101,11 @@ final class SweepCommand implements Callable<Integer> {
             + "(default: the same frames in memory; the logs are the same, the socket is slower)")
     private boolean socket;
 
+    @Option(names = "--pipeline", description = "agent runs in a pipelined lockstep: the world simulates the next control "
+            + "step while the agent reasons, and its commands take effect one control step later (a different run; "
+            + "docs/performance.md section 17)")
+    private boolean pipeline;
+
     @CommandLine.Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -201,10 +206,11 @@ final class SweepCommand implements Callable<Integer> {
         log.info(String.format(Locale.ROOT, "Sweep: %s (%s x %s x %s%s), %s simulated each, %d at once; %s",
                 count(jobList.size(), "run"), count(list.size(), "world"), count(runSeeds.size(), "seed"),
                 count(controllers.size(), "controller"),
-                shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir));
+                shards == 1 ? "" : ", shard " + shardIndex + " of " + shards, duration, jobs, dir)
+                + (pipeline ? "; agent runs pipelined (their commands one control step later)" : ""));
         SuccessCriteria.caveat(seconds).ifPresent(c -> log.warn(c + "; report.md says so too"));
         Sweep sweep = new Sweep(jobs, seconds, wallLimit).progress(noProgress ? null : log)
-                .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket);
+                .onResult(r -> writeLogs(dir.resolve("logs"), r, log)).socket(socket).pipeline(pipeline);
         if (agentSource != null) {
             sweep.agent(experiments.get(0), agentSource);
         }
@@ -221,7 +227,7 @@ final class SweepCommand implements Callable<Integer> {
                         result.cpuSeconds(), Runtime.getRuntime().availableProcessors()))
                 + (Double.isNaN(result.loadAtStart()) ? "" : String.format(Locale.ROOT, "; load average %.1f at the start",
                         result.loadAtStart()))
-                + ".";
+                + "." + (pipeline ? " Agent runs in a pipelined lockstep (--pipeline)." : "");
         Files.writeString(dir.resolve("runs.csv"), SweepReport.csv(runs), StandardCharsets.UTF_8);
         Files.writeString(dir.resolve("report.md"), SweepReport.markdown(runs, throughput), StandardCharsets.UTF_8);
         Properties meta = new Properties();

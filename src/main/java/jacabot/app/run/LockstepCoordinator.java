@@ -13,6 +13,8 @@ import jacabot.robot.link.LinkCosts;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -65,6 +67,13 @@ public final class LockstepCoordinator {
     private boolean remote;
     private boolean inMemory;
     private boolean turns;
+    private boolean pipeline;
+    /** Pipelined: the step whose answer ends the run (a failed agent's), −1 while none. */
+    private volatile long endStep = -1;
+    /** The step the agent side is answering (its own thread's). */
+    private volatile long answering;
+    /** The CPU time of the simulation thread and of the thread that ran the agent side, at the run's end (−1: not read). */
+    private volatile long simulationCpu = -1, agentSideCpu = -1;
     private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
@@ -134,6 +143,28 @@ public final class LockstepCoordinator {
         return this;
     }
 
+    /**
+     * A pipelined lockstep ({@link jacabot.robot.RobotController#pipelined}): the world simulates
+     * the next control step while the agent reasons on the last one's readings, and the agent's
+     * answer to step k is applied at step k+1. Still a function of world, agent and seed, but not
+     * the same run as the plain lockstep's (one control step of latency). Off by default; not with
+     * {@link #remoteController} (the controller's own option there) nor a team.
+     */
+    public LockstepCoordinator pipeline(boolean on) {
+        this.pipeline = on;
+        return this;
+    }
+
+    /**
+     * {@return the CPU time in ns of the simulation thread and of the thread the agent side ran on
+     * (the middleware's reading thread over the socket), at the run's end; −1 where not known} Two
+     * such numbers say what a step costs whatever the machine's load: their sum in lockstep, at best
+     * the larger of them in a pipelined lockstep.
+     */
+    public long[] threadCpuNanos() {
+        return new long[] {simulationCpu, agentSideCpu};
+    }
+
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
     public int listeningPort() {
         MiddlewareLink m = remoteLink;
@@ -145,6 +176,14 @@ public final class LockstepCoordinator {
      * world stops advancing and the controller says goodbye; a remote controller's link is closed.
      */
     public void endAfterThisStep() {
+        if (pipeline && !remote) {
+            // the world is a step ahead of the agent: it ends once it has taken this step's answer,
+            // whenever this thread gets here
+            if (endStep < 0) {
+                endStep = answering;
+            }
+            return;
+        }
         stopRequested = true;
         MiddlewareLink m = remoteLink;
         if (m != null) {
@@ -177,6 +216,9 @@ public final class LockstepCoordinator {
         List<String> linkLog = Collections.synchronizedList(new ArrayList<>());
         Consumer<String> log = linkLog::add;
         if (remote) {
+            if (pipeline) {
+                throw new IllegalStateException("a pipelined lockstep is the controller's option when it is another process");
+            }
             return runRemote(seconds, agentLog, linkLog);
         }
         ControllerConfig cc = ControllerConfig.defaults().withRobot(robotName).withLockstep(true).withLog(log);
@@ -184,8 +226,9 @@ public final class LockstepCoordinator {
             cc = cc.withEventLog(controllerLogSink != null ? controllerLogSink : controllerLog::add);
         }
         LinkConfig lc = LinkConfig.defaults().withLog(log);
-        try (InProcessLink link = inMemory ? InProcessLink.inMemory(world, cc, lc) : InProcessLink.start(world, cc, lc, port, turns)) {
+        try (InProcessLink link = inMemory ? InProcessLink.inMemory(world, cc, lc) : InProcessLink.start(world, cc, lc, port, turns && !pipeline)) {
             running = link;
+            link.controller().pipelined(pipeline);
             if (stopRequested) {
                 link.controller().close();
             }
@@ -197,12 +240,14 @@ public final class LockstepCoordinator {
                     // a control step at a time, so that stop() (SIGTERM) ends the run at the next step
                     long end = world.timeMs() + Math.round(seconds * 1000);
                     long chunk = world.controlStep();
-                    while (world.timeMs() < end && !stopRequested) {
+                    while (world.timeMs() < end && !stopRequested && !endAnswered(link)) {
                         link.controller().runner().runFor(Math.min(chunk, end - world.timeMs()) / 1000.0);
                     }
+                    link.controller().awaitLastAnswer(); // pipelined: the agent answers every step it was sent
                 } catch (RuntimeException | Error e) {
                     simFailure[0] = e;
                 } finally {
+                    simulationCpu = threadCpu();
                     link.controller().close(); // says goodbye: the agent side's loop ends
                 }
             }, "lockstep-simulation");
@@ -221,6 +266,12 @@ public final class LockstepCoordinator {
                     link.middleware().timings().response(), List.copyOf(linkLog), link.controller().linkCosts(),
                     link.middleware().costs(), link.middleware().timings());
         }
+    }
+
+    /** Pipelined: whether the controller has taken the answer that ends the run (so the same step whatever the timing). */
+    private boolean endAnswered(InProcessLink link) {
+        long e = endStep;
+        return e >= 0 && link.controller().lastAnsweredStep() >= e;
     }
 
     /** {@link #runFor} with the controller in another process: until its goodbye or {@code seconds} of steps. */
@@ -283,6 +334,7 @@ public final class LockstepCoordinator {
                     end.countDown(); // a controller that runs on past this side's duration: it is cut off here
                 } else if (e instanceof LinkEvent.StepMarker) {
                     LinkEvent.StepMarker m = (LinkEvent.StepMarker) e;
+                    answering = m.step();
                     List<Command> commands = callAgent(new StepData(m.step(), m.simTimeMs(), readings));
                     if (agentLog != null) {
                         agentLog.add(describe(m, readings, commands));
@@ -296,6 +348,7 @@ public final class LockstepCoordinator {
                         answeredLast = true;
                     }
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
+                    agentSideCpu = threadCpu();
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
             } catch (RuntimeException | Error failed) {
@@ -320,6 +373,11 @@ public final class LockstepCoordinator {
                 throw failure;
             }
         }
+    }
+
+    private static long threadCpu() {
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        return threads.isCurrentThreadCpuTimeSupported() ? threads.getCurrentThreadCpuTime() : -1;
     }
 
     private List<Command> callAgent(StepData data) {

@@ -50,6 +50,7 @@ public final class LockstepRun extends SteppedPlatform {
     private boolean remoteController;
     private boolean inMemory;
     private boolean turns;
+    private boolean pipeline;
     private volatile LockstepCoordinator coordinator;
     /** The robot's agents, in the order they were made (each reasons every step, in this order). */
     private final List<Member> members = new ArrayList<>();
@@ -128,6 +129,12 @@ public final class LockstepRun extends SteppedPlatform {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
+    /** {@return the last run's threads' CPU time ({@link LockstepCoordinator#threadCpuNanos}), −1 each before a run} */
+    public long[] threadCpuNanos() {
+        LockstepCoordinator c = coordinator;
+        return c != null ? c.threadCpuNanos() : new long[] {-1, -1};
+    }
+
     /** {@return the artifact steps run so far (on an operation thread, or on this one when the operation never waits)} */
     public long artifactSteps() {
         return stepper().artifactSteps();
@@ -199,6 +206,15 @@ public final class LockstepRun extends SteppedPlatform {
         return this;
     }
 
+    /**
+     * A pipelined lockstep ({@link LockstepCoordinator#pipeline}): the world simulates the next step
+     * while the agent reasons, its answer applied one control step later. Off by default.
+     */
+    public LockstepRun pipeline(boolean on) {
+        this.pipeline = on;
+        return this;
+    }
+
     /** The link's frames go through memory, not a loopback socket ({@link LockstepCoordinator#inMemory}): sweeps. */
     public LockstepRun inMemory(boolean on) {
         this.inMemory = on;
@@ -249,7 +265,7 @@ public final class LockstepRun extends SteppedPlatform {
             WorldBeliefs.tellTaskEnd(mas(), experiment, world().timeMs(), seconds);
         }
         var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
-                .remoteController(remoteController).inMemory(inMemory).takeTurns(turns);
+                .remoteController(remoteController).inMemory(inMemory).takeTurns(turns).pipeline(pipeline);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
         }

@@ -2,6 +2,7 @@ package jacabot.app.sweep;
 
 import jacabot.app.console.ConsoleLog;
 import jacabot.app.run.AgentSource;
+import jacabot.app.run.LockstepRun;
 import jacabot.app.run.RobotAgent;
 import jacabot.robot.Experiment;
 import java.lang.management.ManagementFactory;
@@ -38,6 +39,7 @@ public final class Sweep {
     private final double wallLimitS;
     private ConsoleLog progress;
     private boolean socket;
+    private boolean pipeline;
     private Consumer<SweepRun.Result> onResult = r -> {
     };
     private final Map<Experiment, List<RobotAgent>> agents = new EnumMap<>(Experiment.class);
@@ -108,6 +110,12 @@ public final class Sweep {
         return this;
     }
 
+    /** Agent runs in a pipelined lockstep ({@link LockstepRun#pipeline}): their commands one control step later. */
+    public Sweep pipeline(boolean on) {
+        this.pipeline = on;
+        return this;
+    }
+
     /** Runs {@code agent} as the agent of experiment {@code e}, not the packaged one. */
     public Sweep agent(Experiment e, AgentSource agent) {
         return agents(e, List.of(new RobotAgent(RobotAgent.ALONE, agent)));
@@ -141,7 +149,7 @@ public final class Sweep {
                 SweepJob job = list.get(index);
                 List<RobotAgent> given = agents.get(job.experiment()); // read only once the jobs run
                 SweepRun.Result r = SweepRun.run(job, seconds, wallLimitS, given != null ? given
-                        : List.of(new RobotAgent(RobotAgent.ALONE, SweepRun.packaged(job.experiment()))), socket);
+                        : List.of(new RobotAgent(RobotAgent.ALONE, SweepRun.packaged(job.experiment()))), socket, pipeline);
                 synchronized (outcomes) {
                     if (outcomes[index] == null) {
                         outcomes[index] = r.outcome();

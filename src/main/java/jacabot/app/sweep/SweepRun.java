@@ -84,6 +84,12 @@ public final class SweepRun {
 
     /** Runs a job with the robot programmed by the given agents sharing its middleware (the thesis' Chapter 6 wish). */
     public static Result run(SweepJob job, double seconds, double wallLimitS, List<RobotAgent> agents, boolean socket) {
+        return run(job, seconds, wallLimitS, agents, socket, false);
+    }
+
+    /** As above; with {@code pipeline}, the agent's run is a pipelined lockstep ({@link LockstepRun#pipeline}). */
+    public static Result run(SweepJob job, double seconds, double wallLimitS, List<RobotAgent> agents, boolean socket,
+            boolean pipeline) {
         long start = System.nanoTime();
         long deadline = start + (long) (wallLimitS * 1e9);
         Experiment e = job.experiment();
@@ -114,7 +120,7 @@ public final class SweepRun {
         try {
             if (job.controller().equals(SweepJob.AGENT)) {
                 try (var run = new LockstepRun(world, null, e, agents, job.seed(),
-                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket)) {
+                        new PrintStream(console, true, StandardCharsets.UTF_8)).stepLogs(false).inMemory(!socket).pipeline(pipeline)) {
                     run.runFor(seconds);
                     if (run.agentFailure().isPresent()) {
                         status = RunOutcome.AGENT_FAILURE;

@@ -44,6 +44,7 @@ class ControllerCommandTest {
         assertUserError(run("controller", "--world", NAVIGATION, "--speed", "0"), "speed factor must be a positive number");
         assertUserError(run("controller", "--world", NAVIGATION, "--port", "70000"), "port must be in 0..65535");
         assertUserError(run("controller"), "Missing required option: '--world=FILE'");
+        assertUserError(run("controller", "--world", NAVIGATION, "--pipeline"), "--pipeline goes with --lockstep");
     }
 
     @Test
@@ -56,6 +57,8 @@ class ControllerCommandTest {
         assertUserError(run("controller", "--world", team, "--lockstep", "--event-log", dir.resolve("e").toString(),
                 "--secret-file", secret), "use --out DIR --link-log");
         assertUserError(run("controller", "--world", NAVIGATION, "--out", dir.toString(), "--secret-file", secret), "--out is for a team");
+        assertUserError(run("controller", "--world", team, "--lockstep", "--pipeline", "--secret-file", secret),
+                "--pipeline: a team's controller runs in plain lockstep only");
     }
 
     @Test

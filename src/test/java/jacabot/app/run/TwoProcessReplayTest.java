@@ -37,9 +37,20 @@ class TwoProcessReplayTest {
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "NAVIGATION"})
     void theTwoProcessLockstepRunIsTheInProcessRun(Experiment e) throws Exception {
+        runInOneProcessAndTwo(e, false);
+    }
+
+    /** The pipelined lockstep is the controller's: the agent side answers each step as in lockstep. */
+    @ParameterizedTest
+    @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE"})
+    void theTwoProcessPipelinedRunIsTheInProcessOne(Experiment e) throws Exception {
+        runInOneProcessAndTwo(e, true);
+    }
+
+    private static void runInOneProcessAndTwo(Experiment e, boolean pipelined) throws Exception {
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         SimWorld w = world(e);
-        var one = new LockstepRun(w, null, e, agent(e), w.seed(), quiet).runFor(SECONDS);
+        var one = new LockstepRun(w, null, e, agent(e), w.seed(), quiet).pipeline(pipelined).runFor(SECONDS);
 
         LinkSecret secret = LinkSecret.random();
         LinkSecret.useInThisProcess(secret); // the agent side's "user secret"; the controller is given it
@@ -65,7 +76,7 @@ class TwoProcessReplayTest {
         List<String> controllerLog = new CopyOnWriteArrayList<>();
         var cc = ControllerConfig.defaults().withAddress("127.0.0.1", port).withSecret(secret).withLockstep(true)
                 .withBackoff(20, 200).withLog(line -> { }).withEventLog(controllerLog::add);
-        try (var controller = new RobotController(world(e), cc)) {
+        try (var controller = new RobotController(world(e), cc).pipelined(pipelined)) {
             controller.start();
             Thread simulation = new Thread(() -> controller.runner().runFor(SECONDS), "controller-side");
             simulation.setDaemon(true);
@@ -87,7 +98,7 @@ class TwoProcessReplayTest {
         assertEquals(String.join("\n", one.controllerLog()), String.join("\n", controllerLog), "controller's event log");
         assertEquals(String.join("\n", one.agentLog()), String.join("\n", result[0].agentLog()), "agent side's event log");
         assertTrue(controllerLog.stream().anyMatch(l -> l.contains(" apply ")), "the agent drove");
-        System.out.printf("TwoProcessReplayTest %s: %d steps, %d + %d log lines identical%n", e.id(), one.steps(),
+        System.out.printf("TwoProcessReplayTest %s%s: %d steps, %d + %d log lines identical%n", e.id(), pipelined ? " pipelined" : "", one.steps(),
                 controllerLog.size(), one.agentLog().size());
     }
 }
