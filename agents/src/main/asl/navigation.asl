@@ -11,6 +11,9 @@ middlewareClass("jacabot.experiments.NavigationMiddleware").
 // skip measured worse here: generated worlds 129 -> 119 of 150)
 waypointPatience(60000).
 waypointProgress(off).
+// turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
+// 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
+quickTurns.
 
 !start.
 

@@ -10,7 +10,7 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // way ends first while the battery less 150 J covers the way on to the charger; a homing still nearing
 // goes on past far sight's time limit (a nearer sighting in the last 15 s); every red run is seen; turns
 // at half speed but for the last 15 degrees; a charge ends once the battery less 100 J covers the time left
-resumeAtCharger. lookFirst. deliverFirst(150). homingProgress(15000). everyRedRun. quickTurn(50, 15). chargeUntilLasts(100).
+resumeAtCharger. lookFirst. deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100).
 
 !start.
 

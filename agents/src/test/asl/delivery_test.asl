@@ -82,6 +82,18 @@ mock_operation(_, ok).
        -quickTurn(50, 15);
        !assert_true(mock_called(setSpeeds(-50, 50))).                   // left
 
+// quickTurns: the skill's quickTurnAt(50, 15), as navigation and tidy-up believe it
+@[test]
++!test_quick_turns_at_the_skills_speed
+    <- !forget_calls; +quickTurns; -+desired(90); -+orientation(30);
+       !!balance;
+       !until(mock_called(setSpeeds(50, -50)), 2000);
+       -+orientation(90);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       -quickTurns;
+       !assert_true(mock_called(setSpeeds(50, -50)));
+       !assert_false(mock_called(setSpeeds(25, -10))).
+
 @[test]
 +!test_balanced_across_north
     <- !forget_calls; -+desired(0.3); -+orientation(359.9);

@@ -8,12 +8,13 @@ steerEvery(2500).   // ms between heading checks on the way
 bendSteerEvery(1000). // ms between them while the way bends (route.asl, way-back.asl: aim is not the target)
 bendTolerance(25).  // degrees off a way that bends before a re-alignment (10 otherwise)
 detours(0).         // obstacles met on this trip: each detour goes round longer
+quickTurnAt(50, 15). // with quickTurns (the agent's): wheel speed of a turn on the spot, and the last degrees turned slowly
 // the wheel speed on the way: far sight's travelSpeed when the agent has it
 speedOnTheWay(V) :- travelSpeed(V).
 speedOnTheWay(100) :- not travelSpeed(_).
 // Reads: targetPoint(X, Z) (the skill that sends the robot: delivery, recharge); location, orientation,
 // delta (the middleware); travelling, halted, insideArea (rules of the skills that send the robot),
-// avoiding (avoidance).
+// avoiding (avoidance); quickTurns or quickTurn(V, A) (the agent's, optional: see @balanceQuickRight).
 // Beliefs: desired(Degrees), firstTime, ~around (delivery reads them), aim(X, Z) (the point headed
 // for: the target point, or route.asl's point on the way to it).
 // Needs: avoidance (!avoid), recovery (!escape). Included by delivery (between its "+stuck" plans:
@@ -55,9 +56,11 @@ speedOnTheWay(100) :- not travelSpeed(_).
     <- stop; -~around; +firstTime; !cruise.
 // the shorter turn to the desired heading is a right (clockwise) one
 desiredOnTheRight :- desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) | O - D >= 180).
-// an agent that believes quickTurn(V, A) (tidy-up) turns on the spot at wheel speed V while the
-// heading is more than A degrees off, and slowly only for the last A: the thesis' slow turn took
-// 9 s for a half turn, 60-100 s of a ten-minute tidy-up run
+// an agent that believes quickTurns (tidy-up, navigation) turns on the spot at
+// wheel speed V while the heading is more than A degrees off (quickTurnAt(V, A)), and slowly only
+// for the last A: the thesis' slow turn took 9 s for a half turn, 60-100 s of a ten-minute tidy-up
+// run; an agent may believe quickTurn(V, A) itself instead
+quickTurn(V, A) :- quickTurns & quickTurnAt(V, A).
 headingOff(G) :- desired(D) & orientation(O) & R = math.abs(O - D) & G = math.min(R, 360 - R).
 @balanceQuickRight
 +!balance : quickTurn(V, A) & headingOff(G) & G > A & desiredOnTheRight
