@@ -48,8 +48,20 @@ class AslParserTest {
         var program = parser.parse("""
                 +!g <- if (a) { b } elif (c) { d } else { e }; while (x) { y } for (z(I)) { w(I) }.
                 """, "t.asl");
-        assertEquals(".if_then_else(a,{ b },{ .if_then_else(c,{ d },{ e }) }); .loop(x,{ y }); .foreach(z(I),{ w(I) })",
+        // Jason 3.2.0 prints the bodies a statement makes bare
+        assertEquals(".if_then_else(a,b,.if_then_else(c,d,e)); .loop(x,y); .foreach(z(I),w(I))",
                 program.plans().get(0).body().bodyText());
+    }
+
+    @Test
+    void bracedBodiesWrittenAsFormulasAreFlattenedAsInJason() throws Exception {
+        // Jason 3.2.0 runs and prints this plan as a; b; c; .fork(or,x,y; z); .fork(and,d,e)
+        var program = parser.parse("""
+                +!g <- { a; b }; c; x ||| { y; z }; { d } |&| e; {}.
+                +!h <- .print({ { a }; if (t) { } }, { b }).
+                """, "t.asl");
+        assertEquals("a; b; c; .fork(or,x,y; z); .fork(and,d,e)", program.plans().get(0).body().bodyText());
+        assertEquals(".print({ a; .if_then_else(t,) },{ b })", program.plans().get(1).body().bodyText());
     }
 
     @Test
