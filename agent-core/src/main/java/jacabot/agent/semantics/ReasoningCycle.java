@@ -117,7 +117,6 @@ final class ReasoningCycle {
      * {@return whether deliberation is over for this cycle}
      */
     private boolean applyFindOp(Event se) {
-        boolean relevant = false;
         Unifier u = null;
         // a message no plan of the agent's own handles gets the default handling (Jason's kqmlPlans)
         boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
@@ -142,7 +141,6 @@ final class ReasoningCycle {
             if (!isRelevant(p.trigger(), se.trigger(), eventFirst, u)) {
                 continue;
             }
-            relevant = true;
             // the context's first solution is made in the plan's own unifier; a context that fails
             // leaves it as it was
             if (p.context() != null && (ag.solver().failsAtFirstComparison(p.context(), u)
@@ -155,7 +153,9 @@ final class ReasoningCycle {
         if (message && messages.handleByDefault((Literal) se.trigger().literal())) {
             return true;
         }
-        return applyRelApplPlRule2(se, relevant ? "applicable" : "relevant");
+        // Jason's kind of error: "applicable" once a plan of the trigger's kind, functor and arity
+        // exists, relevant to the event or not (its -!g[error(no_applicable)])
+        return applyRelApplPlRule2(se, candidates.isEmpty() ? "relevant" : "applicable");
     }
 
     /** {@code eventFirst}: the event literal's {@link #firstArg}, found once for all the candidates */
@@ -487,15 +487,19 @@ final class ReasoningCycle {
             // the intention starts with an empty line; the caller then says why the goal failed
             ag.warn("No fail event was generated for " + te);
             if (se.intention() != null) {
-                ag.warn("");
+                ag.warn("\n" + se.intention().jasonText());
                 ag.dropIntention(se.intention());
             }
             return false;
         }
         if (!se.isExternal()) {
-            ag.warn("Could not finish intention: " + te);
-            ag.dropIntention(se.intention());
-            return true;
+            // a failure event no plan applies to; the caller then says so, as Jason does. An intention
+            // a .fail_goal left running goes on (Jason's); one that waited for this event is dropped
+            ag.warn("Could not finish intention:\n" + se.intention().jasonText());
+            if (!c.hasRunningIntention(se.intention())) {
+                ag.dropIntention(se.intention());
+            }
+            return false;
         }
         // an external -!g with no plan (a waiting !!g that .fail_goal ended): the caller warns too
         ag.warn("Discarding external event: " + te);
