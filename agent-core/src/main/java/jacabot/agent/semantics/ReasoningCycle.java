@@ -31,6 +31,8 @@ final class ReasoningCycle {
     private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
+    /** The intention {@link #holdForFailureEvent} kept out of I last; identity only, never run from here. */
+    private Intention heldForFailureEvent;
     /** Whether a cycle ran: the first reports the internal actions the agent does not know. */
     private boolean started;
 
@@ -208,6 +210,9 @@ final class ReasoningCycle {
 
     /** AddIM: a new intention for an external event, or a new top of the event's intention. */
     private void applyAddIM(Event se, Plan p, Unifier u) {
+        if (se.intention() != null && se.intention() == heldForFailureEvent) {
+            heldForFailureEvent = null; // its failure plan runs: a later unhandled failure drops it
+        }
         if (!se.isExternal() && se.trigger().isAddition() && se.intention().size() >= MAX_INTENTION_DEPTH) {
             // runaway goal recursion fails the goal instead of filling the heap (Jason would grow on)
             generateGoalDeletionFromEvent(se, errorAnnots("stack_overflow", "the intention holds " + se.intention().size()
@@ -338,6 +343,16 @@ final class ReasoningCycle {
     /** Keeps the selected intention out of I after its current internal action. */
     void holdSelected() {
         selectedHeld = true;
+    }
+
+    /**
+     * Keeps the selected intention out of I for the failure event a {@code .fail_goal} in it
+     * made. Jason leaves that intention in I, so when no failure plan applies it goes on past the
+     * step that posted the failed goal; ours goes back to I then ({@link #generateGoalDeletionFromEvent}).
+     */
+    void holdForFailureEvent(Intention i) {
+        holdSelected();
+        heldForFailureEvent = i;
     }
 
     boolean isSelectedHeld() {
@@ -493,11 +508,16 @@ final class ReasoningCycle {
             return false;
         }
         if (!se.isExternal()) {
-            // a failure event no plan applies to; the caller then says so, as Jason does. An intention
-            // a .fail_goal left running goes on (Jason's); one that waited for this event is dropped
-            ag.warn("Could not finish intention:\n" + se.intention().jasonText());
-            if (!c.hasRunningIntention(se.intention())) {
-                ag.dropIntention(se.intention());
+            // a failure event no plan applies to; the caller then says so, as Jason does. The intention
+            // of a .fail_goal that failed a goal of its own goes on (Jason's); one that waited for
+            // this event after a failed step is dropped
+            Intention i = se.intention();
+            ag.warn("Could not finish intention:\n" + i.jasonText());
+            if (i == heldForFailureEvent && !i.isFinished()) {
+                heldForFailureEvent = null;
+                c.addRunningIntention(i);
+            } else if (!c.hasRunningIntention(i)) {
+                ag.dropIntention(i);
             }
             return false;
         }

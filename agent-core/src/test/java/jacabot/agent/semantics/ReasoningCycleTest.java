@@ -95,6 +95,25 @@ class ReasoningCycleTest {
     }
 
     @Test
+    void aFailGoalOfItsOwnGoalWithNoApplicableFailurePlanGoesOnAsInJason() {
+        // Jason 3.2.0: the two warnings, then "after_g": the intention that ran .fail_goal stays
+        // in I and goes on past the step that posted the failed goal
+        var a = new TestAgent("""
+                !top.
+                +!top <- !g; .print(after_g).
+                +!g <- !h; .print(never).
+                +!h <- .fail_goal(g); .print(never).
+                -!g[foo] <- .print(never).
+                """);
+        a.cycles(30);
+        assertEquals(3, a.printed().size(), a.printed().toString());
+        assertTrue(a.printed().get(0).startsWith("Could not finish intention:\nintention 1: \n    +!top[source(self)] <- ... .print(after_g) / {}"),
+                a.printed().get(0));
+        assertEquals("Found a goal for which there is no applicable plan: -!g", a.printed().get(1));
+        assertEquals("after_g", a.printed().get(2));
+    }
+
+    @Test
     void theUnhandledFailureWarningShowsTheIntentionAsJasonPrintsIt() {
         var a = new TestAgent("""
                 !top.
