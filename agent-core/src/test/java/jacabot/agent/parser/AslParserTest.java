@@ -9,6 +9,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -62,6 +63,17 @@ class AslParserTest {
                 """, "t.asl");
         assertEquals("a; b; c; .fork(or,x,y; z); .fork(and,d,e)", program.plans().get(0).body().bodyText());
         assertEquals(".print({ a; .if_then_else(t,) },{ b })", program.plans().get(1).body().bodyText());
+    }
+
+    @Test
+    void aMinusBeforeWhatIsNoNumberIsAnErrorAsInJason() throws Exception {
+        // Jason 3.2.0 refuses -p, -f(x), -(a) and -(X > 1) as it reads the file, and takes -X,
+        // -(1+2) and -math.abs(-3)
+        for (String t : List.of("-p", "-f(x)", "-(a)", "-(X > 1)")) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- .print(" + t + ").\n", "m.asl"), t);
+            assertTrue(e.getMessage().contains("of operator '-' is not numeric or variable"), e.getMessage());
+        }
+        parser.parse("+!g <- .print(-X, -(1+2), -math.abs(-3), - 3).\n", "m.asl");
     }
 
     @Test
