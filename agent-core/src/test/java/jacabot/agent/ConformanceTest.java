@@ -53,7 +53,7 @@ class ConformanceTest {
     private Stream<DynamicTest> tests(String corpus, int size, boolean stepping) throws Exception {
         List<Path> programs;
         try (Stream<Path> files = Files.list(corpus(corpus))) {
-            programs = files.filter(p -> p.getFileName().toString().matches("\\d\\d_.*\\.asl")).sorted().collect(Collectors.toList());
+            programs = files.filter(p -> p.getFileName().toString().matches("\\d{2,3}_.*\\.asl")).sorted().collect(Collectors.toList());
         }
         assertTrue(programs.size() >= size, "the corpus " + corpus + " is complete");
         return programs.stream().map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> check(p, stepping)));

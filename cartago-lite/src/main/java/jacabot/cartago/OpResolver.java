@@ -90,21 +90,8 @@ final class OpResolver {
 
     /** {@return the operation bound on {@code core}, or null when it has no operation of that name and arity} */
     private static OpExecution offeredBy(ArtifactCore core, String operation, Object[] args, AgentId agent, OpCallback callback) {
-        // counted in place first: every operation asks several artifacts, most of which have none
-        // of that name, and the one that has it nearly always has one method for it
-        OpMethod one = null;
-        int count = 0;
-        for (OpMethod m : core.type().named(operation)) {
-            if (m.kind() == OpMethod.Kind.OPERATION && m.accepts(args.length)) {
-                one = m;
-                count++;
-            }
-        }
-        if (count == 0) {
-            return null;
-        }
-        List<OpMethod> methods = count == 1 ? List.of(one) : matching(core, operation, args.length, OpMethod.Kind.OPERATION);
-        return bind(core, methods, args, agent, callback);
+        List<OpMethod> methods = matching(core, operation, args.length, OpMethod.Kind.OPERATION);
+        return methods.isEmpty() ? null : bind(core, methods, args, agent, callback);
     }
 
     /**
@@ -149,14 +136,30 @@ final class OpResolver {
         return new ArrayList<>(ordered);
     }
 
+    /**
+     * The methods of that name that accept {@code count} arguments, of the given kinds in that
+     * order. No list is made for none or one: every operation asks several artifacts, most of
+     * which have none of that name, and the one that has it nearly always has one method for it.
+     */
     private static List<OpMethod> matching(ArtifactCore core, String operation, int count, OpMethod.Kind... kinds) {
-        List<OpMethod> found = new ArrayList<>();
-        for (OpMethod m : core.type().operations(operation, kinds)) {
-            if (m.accepts(count)) {
-                found.add(m);
+        OpMethod one = null;
+        List<OpMethod> more = null;
+        for (OpMethod.Kind kind : kinds) {
+            for (OpMethod m : core.type().named(operation)) {
+                if (m.kind() != kind || !m.accepts(count)) {
+                    continue;
+                }
+                if (one == null) {
+                    one = m;
+                } else {
+                    if (more == null) {
+                        more = new ArrayList<>(List.of(one));
+                    }
+                    more.add(m);
+                }
             }
         }
-        return found;
+        return more != null ? more : one != null ? List.of(one) : List.of();
     }
 
     /** Uses the first method whose parameters accept the arguments (exact arity before varargs). */

@@ -318,6 +318,11 @@ final class AstBuilder {
         if (t instanceof NumberTerm n && op == ArithExpr.Op.MINUS) {
             return new NumberTerm(-n.value());
         }
+        if (op == ArithExpr.Op.MINUS && !(t instanceof ArithExpr || t instanceof ArithFunction || t instanceof Var
+                || t instanceof AnnotatedVar)) {
+            // Jason refuses it as it reads the file ("-p" is no term of its)
+            errors.add(where(ctx), "the argument '" + t + "' of operator '-' is not numeric or variable");
+        }
         return ArithExpr.unary(op, t);
     }
 

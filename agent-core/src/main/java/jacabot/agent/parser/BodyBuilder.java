@@ -20,7 +20,9 @@ import org.antlr.v4.runtime.ParserRuleContext;
 /**
  * Builds plan bodies for {@link AstBuilder}: body formulas, {@code if}/{@code while}/{@code for}
  * as Jason's {@code .if_then_else}, {@code .loop} and {@code .foreach}, and the fork operators as
- * {@code .fork}; the formulas in them are the builder's.
+ * {@code .fork}; the formulas in them are the builder's. As in Jason, the bodies these make are
+ * printed bare ({@code .if_then_else(c,a; b)}), and a braced body written as a formula
+ * ({@code { a; b }; c}) is flattened into the body round it.
  */
 final class BodyBuilder {
     private final AstBuilder ast;
@@ -41,6 +43,11 @@ final class BodyBuilder {
         return new BodyTerm(steps);
     }
 
+    /** {@return a body a statement or a fork made: Jason prints it without braces} */
+    private static BodyTerm bare(List<BodyStep> steps) {
+        return new BodyTerm(steps, false);
+    }
+
     /** {@code B1 ||| B2} and {@code B1 |&| B2} as {@code .fork(or|and, {B1}, {B2})}; a lone operand stays as it is. */
     private List<BodyStep> fork(ForkFormulaContext ctx) {
         return forkStep("or", ctx.forkAnd().stream().map(this::forkAnd).toList(), ctx);
@@ -56,16 +63,16 @@ final class BodyBuilder {
         }
         var branches = new ArrayList<Term>();
         branches.add(Literal.atom(kind));
-        operands.forEach(o -> branches.add(new BodyTerm(o)));
+        operands.forEach(o -> branches.add(bare(o)));
         return List.of(new BodyStep(Kind.INTERNAL_ACTION, Literal.of(".fork", branches.toArray(new Term[0])), ast.where(ctx)));
     }
 
     private List<BodyStep> forkOperand(ForkOperandContext ctx) {
-        return ctx.bodyFormula() != null ? List.of(bodyFormula(ctx.bodyFormula())) : planBody(ctx.planBody()).steps();
+        return ctx.bodyFormula() != null ? bodyFormulas(ctx.bodyFormula()) : planBody(ctx.planBody()).steps();
     }
 
     private BodyTerm block(BlockContext ctx) {
-        return ctx.planBody() == null ? BodyTerm.EMPTY : planBody(ctx.planBody());
+        return bare(ctx.planBody() == null ? List.of() : planBody(ctx.planBody()).steps());
     }
 
     private BodyStep statement(StatementContext ctx) {
@@ -88,7 +95,7 @@ final class BodyBuilder {
         BodyTerm elseBody = null;
         if (next < elifs.size()) {
             ElifPartContext e = elifs.get(next);
-            elseBody = new BodyTerm(List.of(ifChain(e.logExpr(), e.block(), elifs, next + 1, elsePart, ast.where(e))));
+            elseBody = bare(List.of(ifChain(e.logExpr(), e.block(), elifs, next + 1, elsePart, ast.where(e))));
         } else if (elsePart != null) {
             elseBody = block(elsePart.block());
         }
@@ -99,6 +106,31 @@ final class BodyBuilder {
         return new BodyStep(Kind.INTERNAL_ACTION, ite, src);
     }
 
+    /** {@return the steps of a formula: one, or those of a braced body written as a formula} */
+    private List<BodyStep> bodyFormulas(BodyFormulaContext ctx) {
+        if (ctx instanceof ActionOrConstraintContext c) {
+            Term t = ast.logExpr(c.logExpr());
+            return t instanceof BodyTerm b ? b.steps() : List.of(actionOrConstraint(t, ast.where(ctx)));
+        }
+        return List.of(bodyFormula(ctx));
+    }
+
+    private BodyStep actionOrConstraint(Term t, SourceInfo src) {
+        if (t instanceof Literal l) {
+            return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
+        }
+        if (t instanceof Var || t instanceof AnnotatedVar || t instanceof ArithFunction) {
+            // a function call written as a formula is, as in Jason, an action for the environment
+            return new BodyStep(Kind.ACTION, t, src);
+        }
+        if (t instanceof RelExpr || t instanceof LogExpr) {
+            return new BodyStep(Kind.CONSTRAINT, t, src);
+        }
+        ast.error(src, "'" + t + "' is not a valid plan body formula");
+        return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);
+    }
+
+    /** Every formula but an action or a constraint, which {@link #bodyFormulas} makes. */
     private BodyStep bodyFormula(BodyFormulaContext ctx) {
         SourceInfo src = ast.where(ctx);
         if (ctx instanceof AchieveContext c) {
@@ -109,21 +141,6 @@ final class BodyBuilder {
         }
         if (ctx instanceof TestGoalContext c) {
             return new BodyStep(Kind.TEST, ast.logExpr(c.logExpr()), src);
-        }
-        if (ctx instanceof ActionOrConstraintContext c) {
-            Term t = ast.logExpr(c.logExpr());
-            if (t instanceof Literal l) {
-                return new BodyStep(l.isInternalAction() ? Kind.INTERNAL_ACTION : Kind.ACTION, l, src);
-            }
-            if (t instanceof Var || t instanceof AnnotatedVar || t instanceof ArithFunction) {
-                // a function call written as a formula is, as in Jason, an action for the environment
-                return new BodyStep(Kind.ACTION, t, src);
-            }
-            if (t instanceof RelExpr || t instanceof LogExpr) {
-                return new BodyStep(Kind.CONSTRAINT, t, src);
-            }
-            ast.error(src, "'" + t + "' is not a valid plan body formula");
-            return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);
         }
         Kind kind;
         LogExprContext operand;

@@ -99,6 +99,12 @@ final class ArithEvaluator implements Unifier.Evaluator {
             case "math.median":
             case "math.std_dev":
                 return listFunction(f.name(), a.get(0));
+            case "math.max":
+            case "math.min":
+                if (a.size() == 1) {
+                    return extremeOf(f.name().equals("math.max"), a.get(0));
+                }
+                break;
             case "math.pi":
                 return new NumberTerm(Math.PI);
             case "math.e":
@@ -141,6 +147,25 @@ final class ArithEvaluator implements Unifier.Evaluator {
 
     private static Double num(Term t) {
         return t instanceof NumberTerm n ? n.value() : null;
+    }
+
+    /**
+     * Jason's {@code math.max(L)} and {@code math.min(L)}: the largest or smallest number of the
+     * list, its other items skipped. Jason starts the largest at {@code Double.MIN_VALUE}, the
+     * smallest positive double, so a list of negative numbers, or of none, gives 4.9E-324 there;
+     * kept, since Jason 3.2.0 is the reference.
+     */
+    private static Term extremeOf(boolean largest, Term t) {
+        if (!(t instanceof ListTerm l)) {
+            return null;
+        }
+        double found = largest ? Double.MIN_VALUE : Double.MAX_VALUE;
+        for (Term item : l.elements()) {
+            if (item instanceof NumberTerm n) {
+                found = largest ? Math.max(found, n.value()) : Math.min(found, n.value());
+            }
+        }
+        return new NumberTerm(found);
     }
 
     private static Term listFunction(String name, Term t) {

@@ -143,7 +143,11 @@ public final class GoalDropper {
                     // internal action), so the failure plan, once ended, ends the goals below it
                     si.peek().removeCurrentStep();
                 }
-                ag.holdSelectedIntention();
+                if (r == 2) {
+                    ag.cycle().holdForFailureEvent(si);
+                } else {
+                    ag.holdSelectedIntention();
+                }
             }
         }
         for (Intention i : c.pendingActionIntentions()) {

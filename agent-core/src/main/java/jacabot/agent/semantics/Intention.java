@@ -183,7 +183,7 @@ public final class Intention implements Iterable<IntendedMeans> {
                 break;
             }
         }
-        return sb.toString();
+        return stack.isEmpty() ? sb.append("<finished intention>").toString() : sb.toString();
     }
 
     private static String unifierText(Unifier u) {

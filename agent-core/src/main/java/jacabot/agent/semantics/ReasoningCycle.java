@@ -31,6 +31,8 @@ final class ReasoningCycle {
     private final IntendedMeans.Start start = new IntendedMeans.Start();
     private boolean selectedDropped;
     private boolean selectedHeld;
+    /** The intention {@link #holdForFailureEvent} kept out of I last; identity only, never run from here. */
+    private Intention heldForFailureEvent;
     /** Whether a cycle ran: the first reports the internal actions the agent does not know. */
     private boolean started;
 
@@ -117,7 +119,6 @@ final class ReasoningCycle {
      * {@return whether deliberation is over for this cycle}
      */
     private boolean applyFindOp(Event se) {
-        boolean relevant = false;
         Unifier u = null;
         // a message no plan of the agent's own handles gets the default handling (Jason's kqmlPlans)
         boolean message = se.isExternal() && se.trigger().isAchieveGoal() && se.trigger().isAddition()
@@ -142,7 +143,6 @@ final class ReasoningCycle {
             if (!isRelevant(p.trigger(), se.trigger(), eventFirst, u)) {
                 continue;
             }
-            relevant = true;
             // the context's first solution is made in the plan's own unifier; a context that fails
             // leaves it as it was
             if (p.context() != null && (ag.solver().failsAtFirstComparison(p.context(), u)
@@ -155,7 +155,9 @@ final class ReasoningCycle {
         if (message && messages.handleByDefault((Literal) se.trigger().literal())) {
             return true;
         }
-        return applyRelApplPlRule2(se, relevant ? "applicable" : "relevant");
+        // Jason's kind of error: "applicable" once a plan of the trigger's kind, functor and arity
+        // exists, relevant to the event or not (its -!g[error(no_applicable)])
+        return applyRelApplPlRule2(se, candidates.isEmpty() ? "relevant" : "applicable");
     }
 
     /** {@code eventFirst}: the event literal's {@link #firstArg}, found once for all the candidates */
@@ -208,6 +210,9 @@ final class ReasoningCycle {
 
     /** AddIM: a new intention for an external event, or a new top of the event's intention. */
     private void applyAddIM(Event se, Plan p, Unifier u) {
+        if (se.intention() != null && se.intention() == heldForFailureEvent) {
+            heldForFailureEvent = null; // its failure plan runs: a later unhandled failure drops it
+        }
         if (!se.isExternal() && se.trigger().isAddition() && se.intention().size() >= MAX_INTENTION_DEPTH) {
             // runaway goal recursion fails the goal instead of filling the heap (Jason would grow on)
             generateGoalDeletionFromEvent(se, errorAnnots("stack_overflow", "the intention holds " + se.intention().size()
@@ -338,6 +343,16 @@ final class ReasoningCycle {
     /** Keeps the selected intention out of I after its current internal action. */
     void holdSelected() {
         selectedHeld = true;
+    }
+
+    /**
+     * Keeps the selected intention out of I for the failure event a {@code .fail_goal} in it
+     * made. Jason leaves that intention in I, so when no failure plan applies it goes on past the
+     * step that posted the failed goal; ours goes back to I then ({@link #generateGoalDeletionFromEvent}).
+     */
+    void holdForFailureEvent(Intention i) {
+        holdSelected();
+        heldForFailureEvent = i;
     }
 
     boolean isSelectedHeld() {
@@ -487,15 +502,24 @@ final class ReasoningCycle {
             // the intention starts with an empty line; the caller then says why the goal failed
             ag.warn("No fail event was generated for " + te);
             if (se.intention() != null) {
-                ag.warn("");
+                ag.warn("\n" + se.intention().jasonText());
                 ag.dropIntention(se.intention());
             }
             return false;
         }
         if (!se.isExternal()) {
-            ag.warn("Could not finish intention: " + te);
-            ag.dropIntention(se.intention());
-            return true;
+            // a failure event no plan applies to; the caller then says so, as Jason does. The intention
+            // of a .fail_goal that failed a goal of its own goes on (Jason's); one that waited for
+            // this event after a failed step is dropped
+            Intention i = se.intention();
+            ag.warn("Could not finish intention:\n" + i.jasonText());
+            if (i == heldForFailureEvent && !i.isFinished()) {
+                heldForFailureEvent = null;
+                c.addRunningIntention(i);
+            } else if (!c.hasRunningIntention(i)) {
+                ag.dropIntention(i);
+            }
+            return false;
         }
         // an external -!g with no plan (a waiting !!g that .fail_goal ended): the caller warns too
         ag.warn("Discarding external event: " + te);

@@ -9,6 +9,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Plan;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -48,8 +49,31 @@ class AslParserTest {
         var program = parser.parse("""
                 +!g <- if (a) { b } elif (c) { d } else { e }; while (x) { y } for (z(I)) { w(I) }.
                 """, "t.asl");
-        assertEquals(".if_then_else(a,{ b },{ .if_then_else(c,{ d },{ e }) }); .loop(x,{ y }); .foreach(z(I),{ w(I) })",
+        // Jason 3.2.0 prints the bodies a statement makes bare
+        assertEquals(".if_then_else(a,b,.if_then_else(c,d,e)); .loop(x,y); .foreach(z(I),w(I))",
                 program.plans().get(0).body().bodyText());
+    }
+
+    @Test
+    void bracedBodiesWrittenAsFormulasAreFlattenedAsInJason() throws Exception {
+        // Jason 3.2.0 runs and prints this plan as a; b; c; .fork(or,x,y; z); .fork(and,d,e)
+        var program = parser.parse("""
+                +!g <- { a; b }; c; x ||| { y; z }; { d } |&| e; {}.
+                +!h <- .print({ { a }; if (t) { } }, { b }).
+                """, "t.asl");
+        assertEquals("a; b; c; .fork(or,x,y; z); .fork(and,d,e)", program.plans().get(0).body().bodyText());
+        assertEquals(".print({ a; .if_then_else(t,) },{ b })", program.plans().get(1).body().bodyText());
+    }
+
+    @Test
+    void aMinusBeforeWhatIsNoNumberIsAnErrorAsInJason() throws Exception {
+        // Jason 3.2.0 refuses -p, -f(x), -(a) and -(X > 1) as it reads the file, and takes -X,
+        // -(1+2) and -math.abs(-3)
+        for (String t : List.of("-p", "-f(x)", "-(a)", "-(X > 1)")) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- .print(" + t + ").\n", "m.asl"), t);
+            assertTrue(e.getMessage().contains("of operator '-' is not numeric or variable"), e.getMessage());
+        }
+        parser.parse("+!g <- .print(-X, -(1+2), -math.abs(-3), - 3).\n", "m.asl");
     }
 
     @Test

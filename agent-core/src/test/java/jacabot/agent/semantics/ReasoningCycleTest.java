@@ -62,6 +62,58 @@ class ReasoningCycleTest {
     }
 
     @Test
+    void aGoalWhosePlansAllFailToUnifyHasNoApplicablePlanAsInJason() {
+        // Jason 3.2.0 prints "m no_applicable" and "n no_applicable": a plan of the goal's functor
+        // and arity exists, even one its arguments or annotations do not match
+        var a = new TestAgent("""
+                !g.
+                +!g <- !m(1); !n[a].
+                +!m(2) <- .print(x).
+                +!n[b] <- .print(y).
+                -!m(_)[error(E)] <- .print(m, " ", E).
+                -!n[error(E)] <- .print(n, " ", E).
+                """);
+        a.cycles(30);
+        assertEquals(List.of("m no_applicable", "n no_applicable"), a.printed());
+    }
+
+    @Test
+    void aFailureEventNoPlanAppliesToWarnsAsJasonDoes() {
+        var a = new TestAgent("""
+                !top.
+                +!top <- !g; .print(never).
+                +!g <- .fail.
+                -!g[foo] <- .print(no).
+                """);
+        a.cycles(30);
+        // recorded from Jason 3.2.0: the intention's dump, then why the failure event found no plan
+        assertEquals(2, a.printed().size(), a.printed().toString());
+        assertTrue(a.printed().get(0).startsWith("Could not finish intention:\nintention 1: \n    +!g[source(self)] <- ... .fail / {}\n"),
+                a.printed().get(0));
+        assertTrue(a.printed().get(1).startsWith("Found a goal for which there is no applicable plan: -!g[code(.fail)"),
+                a.printed().get(1));
+    }
+
+    @Test
+    void aFailGoalOfItsOwnGoalWithNoApplicableFailurePlanGoesOnAsInJason() {
+        // Jason 3.2.0: the two warnings, then "after_g": the intention that ran .fail_goal stays
+        // in I and goes on past the step that posted the failed goal
+        var a = new TestAgent("""
+                !top.
+                +!top <- !g; .print(after_g).
+                +!g <- !h; .print(never).
+                +!h <- .fail_goal(g); .print(never).
+                -!g[foo] <- .print(never).
+                """);
+        a.cycles(30);
+        assertEquals(3, a.printed().size(), a.printed().toString());
+        assertTrue(a.printed().get(0).startsWith("Could not finish intention:\nintention 1: \n    +!top[source(self)] <- ... .print(after_g) / {}"),
+                a.printed().get(0));
+        assertEquals("Found a goal for which there is no applicable plan: -!g", a.printed().get(1));
+        assertEquals("after_g", a.printed().get(2));
+    }
+
+    @Test
     void theUnhandledFailureWarningShowsTheIntentionAsJasonPrintsIt() {
         var a = new TestAgent("""
                 !top.

@@ -44,4 +44,15 @@ class CollectionsTest {
                 "wrong_arguments Wrong arguments for '.member': '{}' is not a list, a set or a queue",
                 "done"), printed);
     }
+
+    @Test
+    void mathMaxAndMinOfAListSkipItsOtherItemsAsJasonDoes() {
+        // recorded from Jason 3.2.0, whose largest starts at Double.MIN_VALUE: 4.9E-324 for a list of
+        // negative numbers or of none
+        assertEquals(List.of("4.9E-324 1 5 -3 1.7976931348623157E308 3"), run("""
+                !t.
+                +!t <- X = 5; .print(math.max([-1,-2]), " ", math.min([1,2]), " ", math.max([1+1, X]), " ",
+                   math.min([a, -3, "s"]), " ", math.min([]), " ", math.max([a, 3])).
+                """));
+    }
 }
