@@ -82,6 +82,15 @@ maxSpeed(100).
        !assert_false(seenCylinder(0.3, -0.2));          // one visit: not looked for again
        !assert_true(seenCylinder(1, 1) & sweepPlanned).  // the lanes come after it
 
+// the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl reads sweepFrom)
+@[test]
++!test_the_sweep_begins_at_the_corner_nearest_the_robot
+    <- -+location(0.4, 0, -1.2); ?sweepFrom(Fx, Fz);
+       !assert_true(Fx == -1 & Fz == 1);
+       -+location(-0.4, 0, 1.2); ?sweepFrom(Fx2, Fz2);
+       !assert_true(Fx2 == 1 & Fz2 == -1);
+       -+location(0, 0, 0).
+
 @[test]
 +!test_with_nothing_remembered_a_search_goes_on_along_the_lanes
     <- .abolish(seenCylinder(_, _)); -searching; -sweepPlanned;

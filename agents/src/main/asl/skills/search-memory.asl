@@ -8,6 +8,11 @@
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
+// the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
+// the fixed corner the first sweep crossed the arena first
+sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
+nearSide(V, 1) :- V < 0.
+nearSide(V, -1) :- V >= 0.
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
