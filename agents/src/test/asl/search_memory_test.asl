@@ -64,6 +64,19 @@ maxSpeed(100).
        !assert_true(seenCylinder(_, _));
        -cylinderSighted(0, 0.5); -+location(0, 0, 0); -+orientation(0).
 
+// the stored pile's cylinders side by side seem one wide cylinder, nearer than it is: a sighting
+// towards the storage point 2 m ahead, put at 0.6 m, is the pile; one put at 0.4 m is a cylinder
+@[test]
++!test_the_stored_pile_seen_as_one_near_cylinder_is_not_remembered
+    <- .abolish(seenCylinder(_, _)); -+location(-1, 0, 1); -+orientation(270); +stored(3);
+       +cylinderSighted(0, 0.6);
+       .wait(100);
+       !assert_false(seenCylinder(_, _));
+       -cylinderSighted(0, 0.6); +cylinderSighted(0, 0.4);
+       !until(seenCylinder(_, _), 500);
+       !assert_true(seenCylinder(_, _));
+       -cylinderSighted(0, 0.4); -stored(3); .abolish(seenCylinder(_, _)); -+location(0, 0, 0); -+orientation(0).
+
 @[test]
 +!test_picking_a_cylinder_forgets_it
     <- .abolish(seenCylinder(_, _)); +seenCylinder(0.1, 0); +seenCylinder(1, 1);
@@ -81,6 +94,15 @@ maxSpeed(100).
        !assert_true(searching & waypoint(0.3, -0.2, _));
        !assert_false(seenCylinder(0.3, -0.2));          // one visit: not looked for again
        !assert_true(seenCylinder(1, 1) & sweepPlanned).  // the lanes come after it
+
+// the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl reads sweepFrom)
+@[test]
++!test_the_sweep_begins_at_the_corner_nearest_the_robot
+    <- -+location(0.4, 0, -1.2); ?sweepFrom(Fx, Fz);
+       !assert_true(Fx == -1 & Fz == 1);
+       -+location(-0.4, 0, 1.2); ?sweepFrom(Fx2, Fz2);
+       !assert_true(Fx2 == 1 & Fz2 == -1);
+       -+location(0, 0, 0).
 
 @[test]
 +!test_with_nothing_remembered_a_search_goes_on_along_the_lanes

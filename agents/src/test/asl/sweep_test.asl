@@ -33,6 +33,17 @@ mock_operation(_, ok).
                            [-0.75, 0.75], [-0.75, -0.75]]));            // back and forth; the first at the end
        !assert_true(closest(1000)).
 
+// an agent's own sweepFrom(Fx, Fz) (search-memory: the corner nearest the robot) moves the lanes'
+// start to the corner -Fx * W / 2, -Fz * D / 2, the lanes in the same order from there
+@[test]
++!test_an_agents_sweep_from_begins_the_lanes_at_its_corner
+    <- -sweep(_); +sweepFrom(-1, -1);
+       !planSweep;
+       -sweepFrom(-1, -1);
+       !assert_true(waypoint(-0.75, 0.75, _));                          // (0.75, 0.75): the storage area
+       !assert_true(sweep([[-0.75, 0.25], [0.75, 0.25], [0.75, -0.25], [-0.75, -0.25], [-0.75, -0.75],
+                           [0.75, -0.75], [-0.75, 0.75]])).
+
 @[test]
 +!test_a_step_aligns_towards_the_waypoint_and_goes_on
     <- !forget_calls; -balanced; !recently_looked;

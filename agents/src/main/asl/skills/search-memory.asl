@@ -8,6 +8,11 @@
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
+// the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
+// the fixed corner the first sweep crossed the arena first
+sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
+nearSide(V, 1) :- V < 0.
+nearSide(V, -1) :- V >= 0.
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -24,11 +29,13 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 onFloor(V, Half, F) :- F = math.max(0.05 - Half, math.min(Half - 0.05, V)).
 sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
     & onFloor(X + Dist * math.cos(H), W / 2, Cx) & onFloor(Z + Dist * math.sin(H), D / 2, Cz).
-// a sighting whose line passes the storage area before twice its distance: a cylinder stored there
-// (the middleware leaves out only those whose distance matches)
+// a sighting whose line passes the storage area before four times its distance: a cylinder stored
+// there (the middleware leaves out only those whose distance matches; the pile's cylinders side by
+// side seem one wide cylinder, as near as a third of the way: three stored 0.87 m ahead were
+// remembered 0.38 m ahead, and the search went back to that empty place again and again)
 towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & storagePoint(Sx, Sz)
     & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
-    & Along > 0 & Along < 2 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
+    & Along > 0 & Along < 4 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
 nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
 seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
@@ -54,14 +61,15 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 @forgetPicked +picked(true) : location(X, _, Z) & takenRadius(R) <- !forgetNear(X, Z, R).
 
 // a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
-// lies beside the robot. The look around after the fall (delivery's lookFirst) starts 5 cm back from
+// lies beside the robot. The look around after the fall (delivery's lookFirst) starts 10 cm back from
 // it, sightings on (met at once as an obstacle, the cylinder turned the robot away, and far sight
 // still ignored sightings for a homing that had ended with the pick: it was found again minutes
-// later, if ever)
+// later, if ever; from 5 cm back the turn met it 8 cm off at the side, and the lateral reach
+// pushed it away: found again 194 s later instead of 22 s)
 @lostBeside -delivering : not insideArea <- +lostBeside.
 @backOffFirst
 +!move(_) : lookFirst & lostBeside & maxSpeed(M)
-    <- -lostBeside; -lookFirst; setSpeeds(-M / 2, -M / 2); .wait(2000); stop; -ignoring; !lookAround.
+    <- -lostBeside; -lookFirst; setSpeeds(-M / 2, -M / 2); .wait(4000); stop; -ignoring; !lookAround.
 
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 

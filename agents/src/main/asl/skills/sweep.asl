@@ -29,7 +29,8 @@ progressStep(G) :- waypointProgress(G).
 progressStep(0.1) :- not waypointProgress(_).
 setUpGoal(setUpSweep).
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
-// searchDelay(Ms) (the agent's, optional: see searchAfter);
+// searchDelay(Ms) (the agent's, optional: see searchAfter); sweepFrom(Fx, Fz) (an agent's, optional:
+// the corner the lanes begin at, see sweepCorner);
 // lastAvoid(T) (avoidance); maxSpeed(M).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
 // closerAt(T) (when the robot last came nearer its waypoint: way-round reads it),
@@ -53,10 +54,14 @@ setUpGoal(setUpSweep).
 
 // an agent that believes resumeSweep goes on along the lanes it had not yet driven
 @planSweepResumed +!planSweep : resumeSweep & sweep([_ | _]) <- !nextWaypoint.
+// the lanes begin at the corner (Fx, Fz) gives: -Fx * W / 2, -Fz * D / 2; an agent's own
+// sweepFrom(Fx, Fz) rule replaces the default (search-memory: the corner nearest the robot)
+sweepCorner(Fx, Fz) :- sweepFrom(Fx, Fz).
+sweepCorner(1, 1) :- not sweepFrom(_, _).
 @planSweep
-+!planSweep : arena(W, D) & sweepSpacing(S)
-    <- Hx = W / 2 - S / 2; Hz = D / 2 - S / 2; N = math.floor(2 * Hz / S);
-       .findall(lane(I, Z), .range(I, 0, N) & Z = -Hz + I * S, Lanes);
++!planSweep : arena(W, D) & sweepSpacing(S) & sweepCorner(Fx, Fz)
+    <- Hx = Fx * (W / 2 - S / 2); Hz = Fz * (D / 2 - S / 2); N = math.floor(2 * Fz * Hz / S);
+       .findall(lane(I, Z), .range(I, 0, N) & Z = -Hz + I * Fz * S, Lanes);
        .findall([X1, Z1], .member(lane(I1, Z1), Lanes) & ((I1 mod 2 == 0 & (X1 = -Hx | X1 = Hx)) | (I1 mod 2 == 1 & (X1 = Hx | X1 = -Hx))), All);
        // not into the storage area
        ?storagePoint(Sx, Sz); ?storageClearance(C);
