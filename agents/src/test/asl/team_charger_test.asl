@@ -1,7 +1,8 @@
 // Skill tests of one charger for the team (skills/team-charger.asl, in team-delivery.asl): a
 // robot with a low battery first goes near the charger and only there queues for it; once
 // recharged it leaves the queue when it is away from the charger; a low battery while another robot
-// has the charger books a place and the task goes on until its turn. Run: jacabot test agents/src/test/asl
+// has the charger books a place and the task goes on until its turn; with teammates, a low battery
+// in the storage area waits until the robot is out of it. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/team-delivery.asl") }
@@ -121,6 +122,25 @@ mock_operation(_, ok).
        -~delivered; -lowBattery; !!perceive(lowBattery);                  // delivered: the trip
        !until(charging, 3000);
        !assert_true(charging).
+
+// a low battery in the storage area: with teammates the area is left first (the trip starts once
+// out of it); alone, the trip starts at once, as before
+@[test]
++!test_a_low_battery_in_the_storage_area_waits_until_the_robot_is_out
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -chargerQueue(_); +chargerQueue([]); +robotAt(khepera9, -0.4, -0.4);
+       -location(_, _, _); +location(0.4, 0, -0.4); -+battery(470); +insideArea;
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       -insideArea; -lowBattery; !!perceive(lowBattery);                  // out of the area: the trip
+       !until(charging, 3000);
+       !assert_true(charging);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging;
+       -robotAt(khepera9, _, _); +insideArea;                              // alone: the trip at once
+       -lowBattery; !!perceive(lowBattery);
+       !until(charging, 3000);
+       !assert_true(charging);
+       .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging; -insideArea.
 
 // the charger tried again after a timeout: an obstacle met while the robot re-aligns (heading's
 // detour drops every intention with a balance goal) must not drop the trip itself

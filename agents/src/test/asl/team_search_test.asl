@@ -2,7 +2,8 @@
 // teammates, the sweep's next waypoint is the search map's next point, a point that moved on (its
 // cell seen by someone) is headed for at once, the floor a robot looks over while it may take a
 // cylinder is marked on the map, and the sweep starts sooner; alone, the robot keeps the sweep's
-// lanes and marks nothing. Artifact operations are mocked (see agents/README.md "Testing skills").
+// lanes and marks nothing; "avoiding" left behind by an avoidance cut off ends in an escape.
+// Artifact operations are mocked (see agents/README.md "Testing skills").
 // Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -65,3 +66,16 @@ mock_operation(_, ok).
        !lookedFrom(0.3, 0.2);
        !assert_false(mock_called(looked(_, _, _, _)));
        -picked(true).
+
+// an avoidance cut off (its move ended by a cylinder's reach) left "avoiding" behind: no progress
+// then is an escape and the map's next point, and "avoiding" goes (without it the robot stood still)
+@[test]
++!test_no_progress_with_avoiding_left_behind_means_an_escape
+    <- !with_a_teammate; !forget_calls; -+location(0.1, 0, 0.2); -+orientation(0);
+       -picking; -insideArea; -atCharger; +searching; +avoiding;
+       !!perceive(stuck);
+       !until(not avoiding, 6000);
+       -stuck;
+       !assert_false(avoiding);
+       !assert_true(mock_called(searchFrom(0.1, 0.2, _, _)));
+       -searching.

@@ -11,9 +11,11 @@
 // Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C) (delivery); location,
 // orientation, cylinderSighted (the middleware); picked(true) (picking); charging (recharge); searching,
 // waypoint(X, Z, Since) (sweep); robotAt(A, X, Z) (team-places); searchPoint(A, X, Z) (the map);
-// sightedAt, claimError, claimedByOther, carrierInSight, storedPileInSight (team-claims' rules).
+// sightedAt, claimError, claimedByOther, carrierInSight, storedPileInSight (team-claims' rules);
+// avoiding, picking, insideArea, atCharger (avoidance, picking, delivery, recharge).
 // Needs: sweep (its !nextWaypoint and !sweepStep: this skill's plans come first), team-places
-// (!lookedFrom). Include it before sweep.
+// (!lookedFrom), recovery (!escape). Include it before sweep, delivery and heading (its plan for
+// +stuck comes before theirs).
 
 // Parameters:
 teamSearchAfter(5000).  // ms without a cylinder before a robot with teammates searches by the map
@@ -56,3 +58,15 @@ teamSearch :- robotAt(A, _, _) & not .my_name(A).
 @searchPointReached
 +!sweepStep : teamSearch & waypoint(X, Z, _) & location(Lx, _, Lz) & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < 0.01
     <- !nextWaypoint.
+
+// an avoidance cut off leaves "avoiding" behind: recovery's avoidance of an obstacle still seen
+// runs inside the motion loop's move, and a lateral cylinder's reach ends that move
+// (.succeed_goal(move(_))) before the avoidance takes "avoiding" back; every move then waits for
+// it to go and no obstacle, no progress watch moves the robot again (team world 44, four robots,
+// seed 1: a robot stood by the storage corner from 249 s to the end). No progress while
+// "avoiding" is held by no avoidance: the sweep's escape
+@stuckAvoidanceCutOff
++stuck : teamSearch & searching & avoiding & not picking & not insideArea & not atCharger
+         & not .intend(avoid(_)) & not .intend(escape) & not .intend(leaveStorage)
+    <- println("No progress, no avoidance under way: escaping"); .succeed_goal(move(_)); stop; !escape;
+       -avoiding; !nextWaypoint.
