@@ -246,14 +246,18 @@ final class SweepCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void writeLogs(Path logs, SweepRun.Result r, ConsoleLog log) {
+    /** A run's event log, and why it failed; a success removes the failure a sweep before it into the same directory left. */
+    static void writeLogs(Path logs, SweepRun.Result r, ConsoleLog log) {
         RunOutcome o = r.outcome();
         String base = o.experiment().id() + "_" + o.world() + "_" + o.controller() + "_seed" + o.seed();
         try {
             Files.writeString(logs.resolve(base + ".events.txt"), r.eventLog(), StandardCharsets.UTF_8);
+            Path failure = logs.resolve(base + ".failure.txt");
             if (!o.success()) {
-                Files.writeString(logs.resolve(base + ".failure.txt"), o.reason() + "\n\nlast console lines:\n"
+                Files.writeString(failure, o.reason() + "\n\nlast console lines:\n"
                         + String.join("\n", r.consoleTail()) + "\n", StandardCharsets.UTF_8);
+            } else {
+                Files.deleteIfExists(failure);
             }
         } catch (IOException e) {
             log.warn("cannot write the logs of " + base + ": " + e.getMessage());

@@ -4,10 +4,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import jacabot.app.console.ConsoleLog;
+import jacabot.app.console.Verbosity;
+import jacabot.app.sweep.RunOutcome;
+import jacabot.app.sweep.SuccessCriteria;
+import jacabot.app.sweep.SweepRun;
+import jacabot.robot.Experiment;
 import jacabot.sim.io.WorldFileReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -68,7 +75,7 @@ class WorldAndSweepCommandTest {
         assertTrue(lines.get(1).startsWith("team-delivery-gen-1,1,baseline,1,"), lines.get(1));
         assertTrue(lines.get(2).startsWith("team-delivery-gen-1,2,baseline,1,"), lines.get(2));
         assertFalse(Files.exists(dir.resolve("runs.csv.part")));
-        String crash = TeamSweepCommand.csv(java.util.List.of(
+        String crash = TeamSweepCommand.csv(List.of(
                 new TeamSweepCommand.Row(7, 4, "agents", 2, null, "IllegalStateException: \"no robot\" at TeamLockstepRun.step:12")));
         assertEquals("team-delivery-gen-7,4,agents,2,0,,,,,,,,,false,\"crash: IllegalStateException: \"\"no robot\"\" at "
                 + "TeamLockstepRun.step:12\"", crash.lines().skip(1).findFirst().orElseThrow());
@@ -181,5 +188,22 @@ class WorldAndSweepCommandTest {
         assertEquals("2", CliRun.run("sweep", "all", "--shard", "3/2", "--out", dir.toString())[0]);
         assertEquals("2", CliRun.run("sweep", "all", "--seeds", "x", "--out", dir.toString())[0]);
         assertEquals("2", CliRun.run("sweep", "merge", dir.resolve("none").toString())[0]);
+    }
+
+    @Test
+    void aRunThatSucceedsRemovesTheFailureAnEarlierSweepIntoTheSameDirectoryLeft(@TempDir Path logs) throws Exception {
+        Path failure = logs.resolve("obstacle-avoidance_w1_agent_seed1.failure.txt");
+        Files.writeString(failure, "contact 2.5 s > 2 s (an earlier sweep's run)\n");
+        var log = ConsoleLog.to(System.out, Verbosity.QUIET);
+        var figures = new SuccessCriteria.Figures(600, 0.1, 0.6, 0, 0, 0, false, 0, 0);
+        var ok = new RunOutcome(Experiment.OBSTACLE_AVOIDANCE, "w1", "agent", 1,
+                RunOutcome.OK, true, "", 600, 1, figures, 0, 0);
+        SweepCommand.writeLogs(logs, new SweepRun.Result(ok, "events\n", List.of()), log);
+        assertFalse(Files.exists(failure), "the earlier sweep's failure is gone");
+        assertEquals("events\n", Files.readString(logs.resolve("obstacle-avoidance_w1_agent_seed1.events.txt")));
+        var failed = new RunOutcome(Experiment.OBSTACLE_AVOIDANCE, "w1", "agent", 1,
+                RunOutcome.OK, false, "contact 3.0 s > 2 s", 600, 1, figures, 0, 0);
+        SweepCommand.writeLogs(logs, new SweepRun.Result(failed, "events\n", List.of("last")), log);
+        assertTrue(Files.readString(failure).startsWith("contact 3.0 s > 2 s"), Files.readString(failure));
     }
 }
