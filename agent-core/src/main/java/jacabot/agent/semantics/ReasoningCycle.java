@@ -155,8 +155,7 @@ final class ReasoningCycle {
         if (message && messages.handleByDefault((Literal) se.trigger().literal())) {
             return true;
         }
-        // Jason's kind of error: "applicable" once a plan of the trigger's kind, functor and arity
-        // exists, relevant to the event or not (its -!g[error(no_applicable)])
+        // Jason's: "applicable" once a plan of the trigger's kind, functor and arity exists (error(no_applicable))
         return applyRelApplPlRule2(se, candidates.isEmpty() ? "relevant" : "applicable");
     }
 
@@ -345,11 +344,8 @@ final class ReasoningCycle {
         selectedHeld = true;
     }
 
-    /**
-     * Keeps the selected intention out of I for the failure event a {@code .fail_goal} in it
-     * made. Jason leaves that intention in I, so when no failure plan applies it goes on past the
-     * step that posted the failed goal; ours goes back to I then ({@link #generateGoalDeletionFromEvent}).
-     */
+    /** {@link #holdSelected} for a {@code .fail_goal}'s own failure event: with no failure plan
+     *  applying, back to I (Jason's stays there) */
     void holdForFailureEvent(Intention i) {
         holdSelected();
         heldForFailureEvent = i;
@@ -508,9 +504,8 @@ final class ReasoningCycle {
             return false;
         }
         if (!se.isExternal()) {
-            // a failure event no plan applies to; the caller then says so, as Jason does. The intention
-            // of a .fail_goal that failed a goal of its own goes on (Jason's); one that waited for
-            // this event after a failed step is dropped
+            // a failure event no plan applies to (the caller says so too, as Jason): a .fail_goal's own
+            // intention goes on past the failed goal, as Jason's; one that waited for the event is dropped
             Intention i = se.intention();
             ag.warn("Could not finish intention:\n" + i.jasonText());
             if (i == heldForFailureEvent && !i.isFinished()) {
