@@ -173,10 +173,8 @@ public final class RobotController implements AutoCloseable {
             return;
         }
         try {
-            link.readAnswer(s.batch().step(), null);
-            if (inbox.awaitAck(s.batch().step()) == CommandInbox.AckResult.ACKED) {
+            if (awaitAnswer(s.batch().step(), null) == CommandInbox.AckResult.ACKED) {
                 inbox.takeCommands();
-                answered = s.batch().step();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -309,14 +307,10 @@ public final class RobotController implements AutoCloseable {
             Sensed p = pending;
             pending = null;
             if (p != null) {
-                long t0 = System.nanoTime();
-                link.readAnswer(p.batch().step(), null); // never the middleware's turn: it must run beside us
-                CommandInbox.AckResult ack = inbox.awaitAck(p.batch().step());
-                costs.addWaiting(System.nanoTime() - t0);
-                switch (ack) {
+                // never the middleware's turn: it must run beside us
+                switch (awaitAnswer(p.batch().step(), null)) {
                     case ACKED:
                         received = inbox.takeCommands();
-                        answered = p.batch().step();
                         break;
                     case CLOSED:
                         return;
@@ -437,13 +431,8 @@ public final class RobotController implements AutoCloseable {
                     return null;
                 }
                 link.send(out -> out.writeStep(batch, marker));
-                long t0 = System.nanoTime();
-                link.readAnswer(batch.step(), middlewareTurn);
-                CommandInbox.AckResult ack = inbox.awaitAck(batch.step());
-                costs.addWaiting(System.nanoTime() - t0);
-                switch (ack) {
+                switch (awaitAnswer(batch.step(), middlewareTurn)) {
                     case ACKED:
-                        answered = batch.step();
                         return inbox.takeCommands();
                     case CLOSED:
                         return null;
@@ -457,6 +446,22 @@ public final class RobotController implements AutoCloseable {
             Thread.currentThread().interrupt();
             return null;
         }
+    }
+
+    /**
+     * Reads the answer to {@code step} (taking the middleware's turn when it is in this process) and
+     * waits for its {@code STEP_ACK}, counted as the simulation thread's wait; on {@code ACKED} the
+     * step is the last answered, and its commands are the inbox's to take.
+     */
+    private CommandInbox.AckResult awaitAnswer(long step, LockstepTurn turn) throws InterruptedException {
+        long t0 = System.nanoTime();
+        link.readAnswer(step, turn);
+        CommandInbox.AckResult ack = inbox.awaitAck(step);
+        costs.addWaiting(System.nanoTime() - t0);
+        if (ack == CommandInbox.AckResult.ACKED) {
+            answered = step;
+        }
+        return ack;
     }
 
     /** Stops the wheels once per silence or drop, and tells the middleware when it can. */
