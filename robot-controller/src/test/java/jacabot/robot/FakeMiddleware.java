@@ -41,8 +41,13 @@ final class FakeMiddleware implements AutoCloseable {
 
     /** Starts a controller of the navigation world's robot, pointed at this middleware, stepping on its own thread. */
     RobotController startController(ControllerConfig config) throws Exception {
+        return startController(config, false);
+    }
+
+    /** As {@link #startController(ControllerConfig)}, in a pipelined lockstep when {@code pipelined}. */
+    RobotController startController(ControllerConfig config, boolean pipelined) throws Exception {
         var controller = new RobotController(RobotControllerTest.world("navigation"),
-                config.withAddress("127.0.0.1", port()).withSecret(secret));
+                config.withAddress("127.0.0.1", port()).withSecret(secret)).pipelined(pipelined);
         controller.start();
         controller.runner().start();
         return controller;
@@ -132,6 +137,11 @@ final class FakeMiddleware implements AutoCloseable {
                 }
             }
             throw new AssertionError("no matching frame within 10 s");
+        }
+
+        /** Waits for the marker of lockstep step {@code step}. */
+        Uplink.StepMarker awaitMarker(long step) throws InterruptedException {
+            return (Uplink.StepMarker) await(f -> f instanceof Uplink.StepMarker && ((Uplink.StepMarker) f).step() == step);
         }
 
         /** Waits for a batch whose wheel speeds reading is (left, right). */

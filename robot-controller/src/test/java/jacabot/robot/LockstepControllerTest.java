@@ -37,15 +37,11 @@ class LockstepControllerTest {
         middleware.stop(controller);
     }
 
-    private static Uplink.StepMarker marker(FakeMiddleware.Peer peer, long step) throws InterruptedException {
-        return (Uplink.StepMarker) peer.await(f -> f instanceof Uplink.StepMarker && ((Uplink.StepMarker) f).step() == step);
-    }
-
     @Test
     void theWorldAdvancesOnlyWhenTheStepIsAcknowledgedAndItsCommandsAreAppliedFirst() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
             assertTrue(peer.hello.lockstep());
-            assertTrue(marker(peer, 0).awaitsAck());
+            assertTrue(peer.awaitMarker(0).awaitsAck());
             Thread.sleep(100); // unanswered, the world stays at step 0
             assertEquals(0, controller.steps());
             assertEquals(0, controller.world().timeMs());
@@ -54,14 +50,14 @@ class LockstepControllerTest {
             var applied = (Uplink.Applied) peer.await(f -> f instanceof Uplink.Applied); // comes with step 1's data
             assertEquals(0, applied.step(), "applied at the step it answered");
             assertEquals(1, peer.awaitWheels(30, 40).step(), "in effect at the next step's readings");
-            marker(peer, 1);
+            peer.awaitMarker(1);
         }
     }
 
     @Test
     void whileTheAgentReasonsTheWorldsLockIsFreeForAViewer() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
-            marker(peer, 0);
+            peer.awaitMarker(0);
             var locked = new CountDownLatch(1);
             Thread viewer = new Thread(() -> {
                 synchronized (controller.world()) {
@@ -71,14 +67,14 @@ class LockstepControllerTest {
             viewer.start();
             assertTrue(locked.await(5, TimeUnit.SECONDS), "a viewer takes the world's lock during the agent's turn");
             peer.send(Command.stepAck(0));
-            marker(peer, 1);
+            peer.awaitMarker(1);
         }
     }
 
     @Test
     void anUnknownCodeIsSkippedAndTheStepGoesOn() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
-            marker(peer, 0);
+            peer.awaitMarker(0);
             var out = new DataOutputStream(peer.raw);
             out.writeInt(999); // unknown code, well-formed frame
             out.writeInt(1);
@@ -86,7 +82,7 @@ class LockstepControllerTest {
             out.writeInt(0);
             out.flush();
             peer.send(Command.stepAck(0));
-            marker(peer, 1);
+            peer.awaitMarker(1);
             assertTrue(log.stream().anyMatch(l -> l.contains("unknown command code 999")), log.toString());
         }
     }
@@ -94,20 +90,20 @@ class LockstepControllerTest {
     @Test
     void aDroppedLinkStopsTheWheelsAndTheUnansweredStepIsSentAgainAfterReconnecting() throws Exception {
         var peer = middleware.accept(Protocol.VERSION);
-        marker(peer, 0);
+        peer.awaitMarker(0);
         peer.send(Command.forward());
         peer.send(Command.stepAck(0));
-        marker(peer, 1);
+        peer.awaitMarker(1);
         peer.close(); // step 1 is never answered
         try (var again = middleware.accept(Protocol.VERSION)) {
-            var resent = marker(again, 1);
+            var resent = again.awaitMarker(1);
             assertTrue(resent.awaitsAck());
             assertEquals(1, controller.steps(), "the world waited at step 1");
             assertEquals(1, controller.failSafeTrips());
             assertTrue(log.stream().anyMatch(l -> l.startsWith("fail-safe: the link to the middleware dropped; wheels stopped")),
                     log.toString());
             again.send(Command.stepAck(1));
-            marker(again, 2);
+            again.awaitMarker(2);
             assertEquals(2, controller.connections());
         }
     }

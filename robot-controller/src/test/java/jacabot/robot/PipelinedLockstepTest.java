@@ -23,11 +23,7 @@ class PipelinedLockstepTest {
     @BeforeEach
     void start() throws Exception {
         middleware = new FakeMiddleware();
-        controller = new RobotController(RobotControllerTest.world("navigation"), ControllerConfig.defaults()
-                .withLockstep(true).withLog(l -> { }).withAddress("127.0.0.1", middleware.port()).withSecret(middleware.secret))
-                .pipelined(true);
-        controller.start();
-        controller.runner().start();
+        controller = middleware.startController(ControllerConfig.defaults().withLockstep(true).withLog(l -> { }), true);
     }
 
     @AfterEach
@@ -35,14 +31,10 @@ class PipelinedLockstepTest {
         middleware.stop(controller);
     }
 
-    private static Uplink.StepMarker marker(FakeMiddleware.Peer peer, long step) throws InterruptedException {
-        return (Uplink.StepMarker) peer.await(f -> f instanceof Uplink.StepMarker && ((Uplink.StepMarker) f).step() == step);
-    }
-
     @Test
     void theWorldSimulatesTheNextStepWhileTheAgentReasonsAndTheAnswerIsAppliedThere() throws Exception {
         try (var peer = middleware.accept(Protocol.VERSION)) {
-            assertTrue(marker(peer, 0).awaitsAck());
+            assertTrue(peer.awaitMarker(0).awaitsAck());
             long controlStep = controller.world().controlStep();
             long end = System.nanoTime() + 5_000_000_000L;
             while (controller.world().timeMs() < controlStep && System.nanoTime() < end) {
@@ -56,7 +48,7 @@ class PipelinedLockstepTest {
             var applied = (Uplink.Applied) peer.await(f -> f instanceof Uplink.Applied);
             assertEquals(1, applied.step(), "the answer to step 0 applied at step 1");
             assertEquals(controlStep, applied.simTimeMs());
-            marker(peer, 1); // sampled before the answer was applied: the wheels as they were
+            peer.awaitMarker(1); // sampled before the answer was applied: the wheels as they were
             peer.send(Command.stepAck(1));
             assertEquals(2, peer.awaitWheels(30, 40).step(), "in effect from step 1 to 2: at step 2's readings");
         }
