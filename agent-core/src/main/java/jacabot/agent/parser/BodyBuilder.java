@@ -123,8 +123,13 @@ final class BodyBuilder {
             // a function call written as a formula is, as in Jason, an action for the environment
             return new BodyStep(Kind.ACTION, t, src);
         }
-        if (t instanceof RelExpr || t instanceof LogExpr) {
+        if (t instanceof RelExpr) {
             return new BodyStep(Kind.CONSTRAINT, t, src);
+        }
+        if (t instanceof LogExpr) {
+            // Jason's parser makes a logical formula (`not b`, `a & b`) a step for the environment,
+            // not a constraint: its LogExpr is a Literal there, and only a relation is a constraint
+            return new BodyStep(Kind.ACTION, t, src);
         }
         ast.error(src, "'" + t + "' is not a valid plan body formula");
         return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);

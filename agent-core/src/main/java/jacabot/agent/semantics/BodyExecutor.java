@@ -6,6 +6,7 @@ import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyTerm;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.LogExpr;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.Rule;
 import jacabot.agent.syntax.Term;
@@ -105,6 +106,9 @@ final class BodyExecutor {
             // a function that could not be evaluated goes to the environment as the structure it
             // is written as (Jason's); one that evaluates gives a number, which is no action
             applied = Literal.of(f.name(), f.args());
+        } else if (applied instanceof LogExpr e) {
+            applied = e.op() == LogExpr.Op.NOT ? Literal.of("not", e.left())
+                    : Literal.of(e.op() == LogExpr.Op.AND ? "&" : "|", e.left(), e.right());
         }
         if (!(applied instanceof Literal l)) {
             rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("body_var_not_literal",
