@@ -18,6 +18,7 @@ import java.io.Closeable;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
@@ -37,10 +38,11 @@ public final class RunTap implements Closeable {
     private StepLog.Header header;
     private StepLog.Writer log;
     private WorldAtStep<RobotTap.Seen> seen;
-    /** The step answered and not yet recorded (the agent side's thread's own). */
-    private StepData pendingData;
-    private List<Command> pendingCommands;
-    private RobotTap.Seen pendingSeen;
+    /** The step answered and not yet recorded: the agent side's, or at the end {@link #close}'s, to take once. */
+    private final AtomicReference<Pending> pending = new AtomicReference<>();
+
+    private record Pending(StepData data, List<Command> commands, RobotTap.Seen seen) {
+    }
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.run = run;
@@ -106,9 +108,7 @@ public final class RunTap implements Closeable {
         RobotTap.Seen world = seen == null ? null : seen.take(data.simTimeMs());
         var d = debugger;
         if (d == null) { // nothing waits for the mind: captured once the answer has gone
-            pendingData = data;
-            pendingCommands = commands;
-            pendingSeen = world;
+            pending.set(new Pending(data, commands, world));
             return;
         }
         MindState mind = robot.record(data, commands, world);
@@ -118,10 +118,9 @@ public final class RunTap implements Closeable {
     }
 
     private void afterAnswer() {
-        StepData data = pendingData;
-        if (data != null) {
-            pendingData = null;
-            robot.record(data, pendingCommands, pendingSeen);
+        Pending p = pending.getAndSet(null);
+        if (p != null) {
+            robot.record(p.data(), p.commands(), p.seen());
         }
     }
 
