@@ -70,6 +70,17 @@ class InstalledLauncherTest {
         assertEquals("[hello] hello world\n", run(moved.resolve("bin/jacabot"), null, dir, "run", "hello.asl"));
     }
 
+    @Test
+    void anExperimentMapsItsOwnArchiveWithTheWorldsClasses(@TempDir Path dir) throws Exception {
+        Path home = launcher().getParent().getParent();
+        assertTrue(Files.isRegularFile(home.resolve("lib/jacabot-experiment.jsa")),
+                "installDist made no experiment archive (see build/tmp/cds/experiment-training.log)");
+        String out = run(launcher(), "-Xshare:on -Xlog:class+load", dir, "experiment", "navigation", "--headless",
+                "--duration", "1s", "--out", "run");
+        // the world's physics is in the experiment's archive, not in the AgentSpeak programs' one
+        assertTrue(out.lines().anyMatch(l -> l.contains("org.dyn4j.") && l.contains("shared objects file (top)")), out);
+    }
+
     /**
      * AgentSpeak programs and single experiments start with C1 only, as the interpreter bench measures
      * programs; sweeps, benches and the other commands keep C2.

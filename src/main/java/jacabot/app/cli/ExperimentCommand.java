@@ -120,6 +120,11 @@ final class ExperimentCommand implements Callable<Integer> {
             + "control step's readings, applied command and pose (2.5-7 MB per simulated 10 minutes)")
     private boolean linkLog;
 
+    @Option(names = "--pipeline", description = "a pipelined lockstep: the world simulates the next step while the agent "
+            + "reasons, its answer applied one control step (40 ms) later; a different run from the plain lockstep's, still "
+            + "a function of world, agent and seed (not the default; docs/performance.md section 18)")
+    private boolean pipeline;
+
     @Option(names = "--remote-controller", description = "the agent side only: wait on --port (default 4444) for "
             + "`jacabot controller --lockstep` in another process, and run with it step by step (the same run as in one process)")
     private boolean remoteController;
@@ -149,10 +154,16 @@ final class ExperimentCommand implements Callable<Integer> {
         if (!(speed > 0) || Double.isInfinite(speed)) {
             throw new UserError("--speed must be a positive number, got " + speed);
         }
-        if (realTime && (lockstep || agentNames != null || remoteController || !breaks.isEmpty() || linkLog || baseline)) {
+        if (realTime && (lockstep || agentNames != null || remoteController || !breaks.isEmpty() || linkLog || baseline || pipeline)) {
             throw new UserError("--real-time runs one agent with the world in this process; "
                     + (lockstep ? "--lockstep" : agentNames != null ? "--agents" : remoteController ? "--remote-controller"
-                    : linkLog ? "--link-log" : baseline ? "--baseline" : "--break") + " is for lockstep runs: drop one of them");
+                    : linkLog ? "--link-log" : baseline ? "--baseline" : pipeline ? "--pipeline" : "--break")
+                    + " is for lockstep runs: drop one of them");
+        }
+        if (pipeline && (remoteController || baseline || !breaks.isEmpty())) {
+            throw new UserError("--pipeline: " + (remoteController ? "with --remote-controller the pipeline is the controller's "
+                    + "option (jacabot controller --lockstep --pipeline)" : baseline ? "the baseline has no agent to pipeline"
+                    : "--break halts the agent with the world a step ahead: drop one of them"));
         }
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
@@ -227,22 +238,24 @@ final class ExperimentCommand implements Callable<Integer> {
             return 0;
         }
         // a real-time run hosts one agent; several run in lockstep
-        boolean viewer = !headless && !lockstep && agentNames == null && !GraphicsEnvironment.isHeadless();
+        boolean viewer = !headless && !lockstep && !pipeline && agentNames == null && !GraphicsEnvironment.isHeadless();
         if (viewer || realTime) {
             log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed + (viewer
                     ? " with the viewer (close the window to stop)." : ", " + duration + ", headless (Ctrl-C to stop)."));
             return new RealTimeExperiment(experiment, speed, port, inspectorOptions, viewer).run(simWorld, worldFile, source,
                     runSeed, seconds, log, outDir);
         }
-        log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, lockstep, headless.");
+        log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, "
+                + (pipeline ? "pipelined lockstep" : "lockstep") + ", headless.");
         LockstepRun run;
         // the agents' console with its simulated times, for the inspector's console panel (the world is here only)
         // (with a remote controller the world is the other process's: the times are those of the steps it sends)
         LockstepRun[] made = new LockstepRun[1];
-        ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, !remoteController ? simWorld::timeMs
+        // (pipelined, the world is a step ahead of the agent: the agent's clock, which is the step's time)
+        ConsoleRecorder consoleFile = ConsoleRecorder.open(outDir, !remoteController && !pipeline ? simWorld::timeMs
                 : () -> made[0] == null ? 0 : made[0].mas().clock().millis());
         try {
-            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile.tee(console));
+            run = new LockstepRun(simWorld, null, experiment, robotAgents, runSeed, consoleFile.tee(console)).pipeline(pipeline);
             made[0] = run;
         } catch (AslSyntaxException e) {
             throw UserError.located(e.getMessage());
@@ -276,17 +289,14 @@ final class ExperimentCommand implements Callable<Integer> {
             }
         }
         var recorder = RunRecorder.attach(simWorld, robot.name());
+        var progress = Progress.attach(simWorld, recorder, robot); // after the recorder: what it recorded at each step
         long start = System.nanoTime();
-        long[] nextReport = {10_000};
         run.onStep(data -> {
-            consoleFile.events(recorder.events());
-            if (data.simTimeMs() >= nextReport[0]) {
-                nextReport[0] += 10_000;
+            Progress.AtStep now = progress.take(data.simTimeMs());
+            consoleFile.events(now.events());
+            if (now.line() != null) {
                 double wall = (System.nanoTime() - start) / 1e9;
-                var now = recorder.summary("agent");
-                log.info(String.format("  t=%6.1f s  %5.0fx real time  picked %d  delivered %d%s",
-                        data.simTimeMs() / 1000.0, data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6), now.picks(),
-                        now.deliveries(), !robot.hasBattery() ? "" : String.format("  battery %.0f J", robot.getBattery().energy())));
+                log.info(String.format(now.line(), data.simTimeMs() / 1000.0 / Math.max(wall, 1e-6)));
             }
         });
         var done = new CountDownLatch(1);

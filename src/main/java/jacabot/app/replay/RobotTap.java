@@ -66,27 +66,48 @@ final class RobotTap {
         return watch;
     }
 
-    /** Records one control step. {@return the agent's mind then, or null without an agent} */
+    /** What the step log records of the world at a control step: the robot's body, the world's objects. */
+    record Seen(StepLog.Body body, List<ObjectState> objects) {
+    }
+
+    /** {@return the world now, as the step log records it} On the simulation thread, or with the world waiting for the agent. */
+    Seen see() {
+        synchronized (world) {
+            // not world.snapshot(): it copies the whole trajectory, every step
+            var p = robot.pose();
+            return new Seen(new StepLog.Body(p.x(), p.z(), p.heading(), robot.hasBattery() ? robot.getBattery().energy() : null,
+                    robot.getWheels().getLeftSpeed(), robot.getWheels().getRightSpeed(),
+                    robot.hasGripper() ? robot.getGripper().heldObject() : null, robot.contactTime()), world.supervisor().objects());
+        }
+    }
+
+    /**
+     * Records one control step, the world read now (it waits for the agent: a lockstep run's step).
+     * {@return the agent's mind then, or null without an agent}
+     */
     MindState afterStep(StepData data, List<Command> commands) {
+        note(data, commands);
+        return record(data, commands, log == null ? null : see());
+    }
+
+    /** Keeps a step's commands and readings for the inspector's view of the robot. */
+    void note(StepData data, List<Command> commands) {
         var text = new ArrayList<String>(commands.size());
         commands.forEach(c -> text.add(c.toString()));
         if (!commands.isEmpty()) {
             lastCommands = text;
         }
         lastReadings = data.readings();
+    }
+
+    /**
+     * Captures the agent's mind (on its thread, between cycles) and writes the step to the step log
+     * with the world as {@code seen} at that step (null without a step log). {@return the mind, or null without an agent}
+     */
+    MindState record(StepData data, List<Command> commands, Seen seen) {
         MindState mind = watch == null ? null : watch.capture();
         if (log != null) {
-            List<ObjectState> objects;
-            StepLog.Body body;
-            synchronized (world) {
-                // not world.snapshot(): it copies the whole trajectory, every step
-                objects = world.supervisor().objects();
-                var p = robot.pose();
-                body = new StepLog.Body(p.x(), p.z(), p.heading(), robot.hasBattery() ? robot.getBattery().energy() : null,
-                        robot.getWheels().getLeftSpeed(), robot.getWheels().getRightSpeed(),
-                        robot.hasGripper() ? robot.getGripper().heldObject() : null, robot.contactTime());
-            }
-            log.step(data.simTimeMs(), body, commands, data.readings(), mind, objects);
+            log.step(data.simTimeMs(), seen.body(), commands, data.readings(), mind, seen.objects());
         }
         return mind;
     }

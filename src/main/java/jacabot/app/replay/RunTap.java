@@ -7,6 +7,7 @@ import jacabot.app.inspector.MindState;
 import jacabot.app.inspector.MindWatch;
 import jacabot.app.inspector.RobotView;
 import jacabot.app.run.LockstepRun;
+import jacabot.app.run.WorldAtStep;
 import jacabot.experiments.link.StepData;
 import jacabot.robot.Experiment;
 import jacabot.robot.link.Command;
@@ -17,13 +18,17 @@ import java.io.Closeable;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 /**
  * Taps a lockstep run after each control step, while the agent is idle: captures the robot
  * agent's mind once and hands it to the inspector (if any) and to the step log (if any). Only
- * reads the agent and the world, so the run itself is the same with or without it.
+ * reads the agent and the world, so the run itself is the same with or without it. The step log's
+ * world is read on the simulation thread at each step ({@link WorldAtStep}), so that a pipelined
+ * run's log is the world at the step too; without a debugger the mind is captured after the
+ * step's answer has gone, while the world simulates the next step.
  */
 public final class RunTap implements Closeable {
     private final RobotTap robot;
@@ -32,6 +37,12 @@ public final class RunTap implements Closeable {
     private final LockstepRun run;
     private StepLog.Header header;
     private StepLog.Writer log;
+    private WorldAtStep<RobotTap.Seen> seen;
+    /** The step answered and not yet recorded: the agent side's, or at the end {@link #close}'s, to take once. */
+    private final AtomicReference<Pending> pending = new AtomicReference<>();
+
+    private record Pending(StepData data, List<Command> commands, RobotTap.Seen seen) {
+    }
 
     private RunTap(LockstepRun run, Inspector inspector, StepLog.Writer log) {
         this.run = run;
@@ -40,6 +51,7 @@ public final class RunTap implements Closeable {
         this.robot = new RobotTap(world, world.robots().get(0), run.mas().agent(run.agentNames().get(0)), inspector, log);
         this.watch = robot.watch();
         run.onCommands(this::afterStep);
+        run.afterAnswer(this::afterAnswer);
     }
 
     /**
@@ -66,6 +78,7 @@ public final class RunTap implements Closeable {
         var tap = new RunTap(run, inspector, log);
         tap.header = log == null ? null : log.header();
         tap.log = log;
+        tap.seen = log == null ? null : WorldAtStep.attach(w, tap.robot::see);
         return tap;
     }
 
@@ -91,10 +104,23 @@ public final class RunTap implements Closeable {
     }
 
     private void afterStep(StepData data, List<Command> commands) {
-        MindState mind = robot.afterStep(data, commands);
+        robot.note(data, commands);
+        RobotTap.Seen world = seen == null ? null : seen.take(data.simTimeMs());
         var d = debugger;
-        if (d != null && mind != null) {
+        if (d == null) { // nothing waits for the mind: captured once the answer has gone
+            pending.set(new Pending(data, commands, world));
+            return;
+        }
+        MindState mind = robot.record(data, commands, world);
+        if (mind != null) {
             d.afterStep(mind); // may halt here, the world waiting with the agent
+        }
+    }
+
+    private void afterAnswer() {
+        Pending p = pending.getAndSet(null);
+        if (p != null) {
+            robot.record(p.data(), p.commands(), p.seen());
         }
     }
 
@@ -130,6 +156,10 @@ public final class RunTap implements Closeable {
 
     @Override
     public void close() throws IOException {
+        afterAnswer(); // a run stopped between a step and its answer
+        if (seen != null) {
+            seen.detach();
+        }
         robot.close();
     }
 }

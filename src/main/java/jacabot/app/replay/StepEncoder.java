@@ -58,7 +58,7 @@ final class StepEncoder implements Closeable {
     volatile Consumer<Chunk> onChunk = c -> {
     };
     volatile Consumer<Step> onStep;
-    private final Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
+    private Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
     /** The last step's beliefs' texts, by identity. */
     private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
     /** The last step's list of beliefs: the probe gives the same one while they do not change. */
@@ -237,9 +237,10 @@ final class StepEncoder implements Closeable {
 
     /** Adds to {@code added} the beliefs not in the last step's, to {@code removed} the texts of those gone. */
     private void beliefsDelta(List<MindState.Belief> now, List<MindState.Belief> added, List<String> removed) {
-        var byText = new LinkedHashMap<String, MindState.Belief>();
+        // sized for the step's beliefs: no rehashing as they go in
+        var byText = new LinkedHashMap<String, MindState.Belief>(now.size() * 4 / 3 + 1);
         // the probe gives a belief that did not change as the same object: its text is known
-        var texts = new IdentityHashMap<MindState.Belief, String>();
+        var texts = new IdentityHashMap<MindState.Belief, String>(now.size());
         for (MindState.Belief b : now) {
             String key = beliefTexts.get(b);
             if (key == null) {
@@ -256,8 +257,7 @@ final class StepEncoder implements Closeable {
                 removed.add(key);
             }
         }
-        beliefs.clear();
-        beliefs.putAll(byText);
+        beliefs = byText;
         beliefTexts = texts;
     }
 

@@ -68,6 +68,8 @@ public final class LockstepCoordinator {
     private boolean inMemory;
     private boolean turns;
     private boolean pipeline;
+    private Runnable afterAnswer = () -> {
+    };
     /** Pipelined: the step whose answer ends the run (a failed agent's), −1 while none. */
     private volatile long endStep = -1;
     /** The step the agent side is answering (its own thread's). */
@@ -100,6 +102,16 @@ public final class LockstepCoordinator {
      */
     public LockstepCoordinator controllerLogTo(Consumer<String> sink) {
         this.controllerLogSink = sink;
+        return this;
+    }
+
+    /**
+     * Runs {@code hook} on the agent side's thread after each step's answer has gone to the
+     * controller, before the next step reaches the agents: they are idle, and the world may be
+     * advancing meanwhile, so it reads the agents, not the world (the step log's capture of the mind).
+     */
+    public LockstepCoordinator afterAnswer(Runnable hook) {
+        this.afterAnswer = hook;
         return this;
     }
 
@@ -341,6 +353,7 @@ public final class LockstepCoordinator {
                     }
                     readings.clear();
                     link.answerStep(commands, m.step());
+                    afterAnswer.run();
                     steps++;
                     if (endAt >= 0 && m.simTimeMs() + link.robot().controlStepMs() >= endAt) {
                         // the same steps as an in-process run of this duration; the answer is still on

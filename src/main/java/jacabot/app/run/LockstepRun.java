@@ -60,6 +60,8 @@ public final class LockstepRun extends SteppedPlatform {
     private BiConsumer<StepData, List<Command>> onCommands = (d, c) -> {
     };
     private volatile Consumer<Agent> beforeCycle;
+    private Runnable afterAnswer = () -> {
+    };
 
     /** One agent of the robot and what watches it for failures. */
     private record Member(String name, FailureWatch failures, List<Literal> initialGoals) {
@@ -166,6 +168,15 @@ public final class LockstepRun extends SteppedPlatform {
     }
 
     /**
+     * Called on the agent side's thread after each step's answer has gone to the controller, before
+     * the next step: the agents are idle, the world may be advancing (so read the agents, not the
+     * world). What is done here is off the step's critical path in lockstep: the world simulates meanwhile.
+     */
+    public void afterAnswer(Runnable listener) {
+        this.afterAnswer = listener;
+    }
+
+    /**
      * Called at the start of each reasoning cycle of an agent, on the run's thread, between two
      * cycles (the debugger's one-cycle step). It must not change the agent.
      */
@@ -265,7 +276,7 @@ public final class LockstepRun extends SteppedPlatform {
             WorldBeliefs.tellTaskEnd(mas(), experiment, world().timeMs(), seconds);
         }
         var c = new LockstepCoordinator(world(), robotName, this::step).stepLogs(stepLogs).port(port)
-                .remoteController(remoteController).inMemory(inMemory).takeTurns(turns).pipeline(pipeline);
+                .remoteController(remoteController).inMemory(inMemory).takeTurns(turns).pipeline(pipeline).afterAnswer(afterAnswer);
         if (controllerLogSink != null) {
             c.controllerLogTo(controllerLogSink);
         }
