@@ -19,10 +19,15 @@ quickTurns.
 
 { include("skills/initial-phase.asl") }
 { include("skills/way-round.asl") }
+// the sweep's way to a waypoint goes round the storage area (a lane across it led to and fro there)
+{ include("skills/storage-bypass.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
+// cylinders seen and not gone for are remembered and looked for first; the sweep goes on along the
+// lanes not yet driven, from the corner nearest the robot
+{ include("skills/search-memory.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }

@@ -25,7 +25,8 @@ import java.util.Locale;
  *     per cell length driven). A 4 m hall for a MyBot at 0.1 m/s: 60 m, 600 cells of 1 600, so 28 %;
  *     an arena of up to 3 m a side keeps 50 %;</li>
  * <li>{@code deliveries}: how many deliveries the shortest tour allows (start, nearest cylinder, storage,
- *     then storage and back for the next nearest), for navigation and suspend/resume;</li>
+ *     then storage and back for the next nearest), for navigation (on the battery it starts with: its
+ *     world has no charger) and suspend/resume;</li>
  * <li>{@code storable} and {@code parkable}: for tidy-up, how many cylinders that tour stores, and
  *     whether the drive to the charger after the last still fits; a tour that needs more energy than
  *     the robot starts with also pays for a visit to the charger on the way and the charge's time.</li>
@@ -79,7 +80,9 @@ public record PhysicalBounds(double coverage, int deliveries, int storable, bool
             legs = new ArrayList<>(legs.subList(0, 1));
             legs.addAll(rest);
         }
-        Recharge recharge = Recharge.of(experiment == Experiment.TIDY_UP ? world.charger() : null, model, r, reach, fromStorage);
+        // tidy-up's task includes the charger; navigation's robot has only the battery it starts with
+        boolean battery = experiment == Experiment.TIDY_UP || experiment == Experiment.NAVIGATION;
+        Recharge recharge = Recharge.of(experiment == Experiment.TIDY_UP ? world.charger() : null, battery, model, r, reach, fromStorage);
         double toCharger = charger == null ? 0 : fromStorage.distanceTo(charger.x(), charger.z(), charger.radius() / 2);
         double used = 0;
         int delivered = 0;
@@ -104,21 +107,26 @@ public record PhysicalBounds(double coverage, int deliveries, int storable, bool
      * must visit the charger before its end (parking comes too late to help): the cheapest such visit
      * is a detour on one of the tour's legs, and the charge itself takes time at the charger's power.
      * Both come out of the drive the run leaves. Energy: the idle power for the whole run and the
-     * motors' power at full speed while driving (the model's battery); a robot without battery, a
-     * world without charger, or another experiment than tidy-up (whose task includes the charger)
-     * drives as far as the run allows.
+     * motors' power at full speed while driving (the model's battery). Navigation's robot has no
+     * charger: a tour that needs more energy than it starts with does not fit (1 000 J: 17.5 m for
+     * a Khepera, against the 22.5 m of three quarters of the run). A robot without battery, or
+     * suspend/resume and obstacle avoidance, drives as far as the run allows.
      */
     private record Recharge(double drive, double speed, double needBase, double motorPower, double start, double chargerPower,
                             double startToCharger, double storageToCharger) {
-        static Recharge of(AreaSpec charger, RobotModel model, RobotSpec r, Reachability reach, Reachability fromStorage) {
+        static Recharge of(AreaSpec charger, boolean counted, RobotModel model, RobotSpec r, Reachability reach, Reachability fromStorage) {
             double speed = model.speedUnit() * model.maxSpeed();
             double drive = ATTAINABLE * SuccessCriteria.NOMINAL_S * speed;
             RobotModel.BatteryDef battery = model.battery();
-            if (battery == null || charger == null || !(charger.power() > 0)) {
+            if (battery == null || !counted) {
                 return new Recharge(drive, speed, 0, 0, Double.POSITIVE_INFINITY, 1, 0, 0);
             }
             double start = Double.isNaN(r.battery()) ? battery.maxEnergy() : Math.min(r.battery(), battery.maxEnergy());
-            return new Recharge(drive, speed, battery.idlePower() * SuccessCriteria.NOMINAL_S, battery.motorPower(), start,
+            double idle = battery.idlePower() * SuccessCriteria.NOMINAL_S;
+            if (charger == null || !(charger.power() > 0)) { // no charge on the way: the tour fits the battery or ends
+                return new Recharge(drive, speed, idle, battery.motorPower(), start, 1, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
+            }
+            return new Recharge(drive, speed, idle, battery.motorPower(), start,
                     charger.power(), reach.distanceTo(charger.x(), charger.z(), charger.radius() / 2),
                     fromStorage.distanceTo(charger.x(), charger.z(), charger.radius() / 2));
         }
