@@ -48,6 +48,19 @@ mock_operation(_, ok).
        !assert_false(homing(_));
        !assert_false(mock_called(setSpeeds(_, _))).
 
+// another skill's sightingOff(Off, Dist) leaves a sighting alone (search-memory: the stored pile)
+sightingOff(Off, Dist) :- offSighting(Off, Dist).
+@[test]
++!test_a_sighting_another_skill_takes_off_is_not_homed_on
+    <- !forget_calls; -homing(_); +offSighting(0, 0.6); !sighting(0, 0.6);
+       .wait(300);
+       !assert_false(homing(_));
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -offSighting(0, 0.6); !sighting(0, 0.6);          // the same sighting, not taken off
+       !until(homing(_), 2000);
+       !assert_true(sightOffset(0));
+       -homing(_).
+
 @[test]
 +!test_a_cylinder_chased_too_long_is_given_up_and_ignored_a_while
     <- !forget_calls; -escaped; .system_time(T); -+homing(T - 60000); -+ignoreFor(1500);  // a minute; ignored 1.5 s, long enough for a loaded machine

@@ -54,6 +54,23 @@ mock_operation(_, ok).
        !assert_false(mock_called(catching));
        !assert_false(mock_called(setSpeeds(10, 0))).
 
+// a lateral reach whose cylinder comes in front once picking is off (a low battery meanwhile): the
+// reach ends, the cylinder is not taken, and moves no longer wait for it
+@[test]
++!test_a_reach_whose_cylinder_comes_in_front_while_picking_is_off_ends
+    <- !forget_calls; -moved(_); !!perceive(cylinderLeft);
+       !until(mock_called(setSpeeds(0, 10)), 2000);
+       !!perceive(cylinderBeyond);
+       !until(mock_called(setSpeeds(20, 20)), 2000);
+       +pickingOff; !!perceive(cylinderDetected);
+       !until(reachCylinder(false), 2000);
+       !assert_true(reachCylinder(false));
+       !assert_false(picking);
+       !assert_false(mock_called(catching));
+       !!move(0.4); !until(moved(_), 2000);
+       !assert_true(moved(0.4));
+       -pickingOff; -cylinderLeft; -cylinderBeyond; -cylinderDetected.
+
 @[test]
 +!test_a_missed_catch_lets_go_and_turns_away
     <- !forget_calls; +picking; -caught(_);

@@ -77,6 +77,16 @@ maxSpeed(100).
        !assert_true(seenCylinder(_, _));
        -cylinderSighted(0, 0.4); -stored(3); .abolish(seenCylinder(_, _)); -+location(0, 0, 0); -+orientation(0).
 
+// far sight goes for no sighting of the stored pile either (its rule sightingOff)
+@[test]
++!test_far_sight_goes_for_no_sighting_of_the_stored_pile
+    <- -+location(-1, 0, 1); -+orientation(270); +stored(3);
+       !assert_true(sightingOff(0, 0.6));               // the pile, seen nearer than it is
+       !assert_false(sightingOff(0, 0.4));              // a cylinder before it
+       !assert_false(sightingOff(90, 0.6));             // away from the storage area
+       -stored(3); !assert_false(sightingOff(0, 0.6));  // nothing stored: a cylinder
+       -+location(0, 0, 0); -+orientation(0).
+
 @[test]
 +!test_picking_a_cylinder_forgets_it
     <- .abolish(seenCylinder(_, _)); +seenCylinder(0.1, 0); +seenCylinder(1, 1);
@@ -163,16 +173,20 @@ maxSpeed(100).
        !assert_true(lookingAgain(0.6, 0.1, 0));
        -searching.
 
-// a homing that lost sight of its cylinder remembers it where it was last seen, and a search goes
-// there; a homing stale since the last pick does not
+// a homing that lost sight of its cylinder remembers it where the last sighting put it, whatever
+// the robot turned since, and a search goes there; a homing stale since the last pick does not
 @[test]
-+!test_a_cylinder_lost_from_sight_while_homing_is_remembered_and_looked_for
++!test_a_cylinder_lost_from_sight_while_homing_is_remembered_where_last_seen
     <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(90);
        -+lastFound(-300000); -+lastSighted(-100000); -+sightDistance(0.5);
+       -+sightOffset(-90);                               // far sight's last sighting: 0.5 m to the left (+x)
+       !until(lastSightedAt(_, _), 500);
+       -+orientation(135);                               // the homing's turn went on past it
        +homing(-200000); -homing(_);                     // lost from sight (far sight's move plan)
        !until(seenCylinder(_, _), 500);
-       ?seenCylinder(X, Z); !assert_equals(X, 0, 0.001); !assert_equals(Z, 0.5, 0.001);
+       ?seenCylinder(X, Z); !assert_equals(X, 0.5, 0.001); !assert_equals(Z, 0, 0.001);
        .abolish(seenCylinder(_, _));
        +homing(-400000); -homing(_); .wait(200);          // began before the last pick: stale
        !assert_false(seenCylinder(_, _));
-       .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)).
+       .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
+       .abolish(lastSightedAt(_, _)); -+orientation(0).

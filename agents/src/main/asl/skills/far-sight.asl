@@ -22,7 +22,10 @@ setUpGoal(setUpFarSight).
 // Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound; nearestSighted(Since,
 // D, At) (with homingProgress(Ms), the agent's, optional: a homing still coming nearer goes on past
 // homingGiveUp while a sighting nearer than any before came in the last Ms).
-// Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding.
+// sightOffset(Off) (the last sighting's offset, for a skill that places it: search-memory).
+// Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding;
+// rule sightingOff(Off, Dist) (another skill's, optional: a sighting it takes for no cylinder to go
+// for; search-memory: the stored pile).
 // Needs: !escape (recovery). Include it after picking, before recovery.
 
 // an agent that believes everyRedRun (tidy-up) is shown a cylinder beside the storage area's pile
@@ -34,7 +37,7 @@ setUpGoal(setUpFarSight).
 
 @homeOnSighting
 +cylinderSighted(Off, Dist) : not picking & not picked(true) & not avoiding & reachCylinder(false) & not ignoring
-                           & not goingRound & not pickingOff
+                           & not goingRound & not pickingOff & not sightingOff(Off, Dist)
     <- !sighted(Off, Dist).
 // what a sighting leads to: homing on it (a team's skill first claims the cylinder: team-claims)
 @sightedHome +!sighted(Off, Dist) <- !homeOn(Off, Dist).
@@ -42,8 +45,8 @@ setUpGoal(setUpFarSight).
 @homeOnNearer
 +!homeOn(Off, Dist) : homingProgress(_) & homing(T0) & not (nearestSighted(T0, N, _) & Dist >= N)
     <- .system_time(T); .abolish(nearestSighted(_, _, _)); +nearestSighted(T0, Dist, T);
-       -+lastSighted(T); -+sightDistance(Dist); !home(Off).
-@homeOn +!homeOn(Off, Dist) <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); !home(Off).
+       -+lastSighted(T); -+sightDistance(Dist); -+sightOffset(Off); !home(Off).
+@homeOn +!homeOn(Off, Dist) <- .system_time(T); -+lastSighted(T); -+sightDistance(Dist); -+sightOffset(Off); !home(Off).
 
 @homeStart +!home(Off) : not homing(_) <- .system_time(T); +homing(T); .succeed_goal(move(_)); !steerTo(Off).
 // Recovery, not in the thesis: homingGiveUp ran out 9-15 cm from a cylinder approached at
