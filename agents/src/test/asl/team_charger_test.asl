@@ -202,3 +202,24 @@ mock_operation(_, ok).
        -lowBattery; !!perceive(lowBattery); .wait(300);
        !assert_false(charging);                                        // and no trip
        -taskEnd(_); -chargerQueue(_); +chargerQueue([]); -lowBattery.
+
+// another robot is queued, but the battery at chargerShare does not cover the run's time left: the
+// charge goes on (a second trip before the end cost more than the teammate's wait), and is shared
+// once it covers it
+@[test]
++!test_a_shared_charge_goes_on_while_the_time_left_needs_it
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -location(_, _, _); +location(-0.38, 0, 0.38); -+battery(470);
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]); -chargerWaiting(_); +chargerWaiting([]);
+       .system_time(T); +taskEnd(T + 400000);                         // 400 s left: 1000 J at 2.5 W
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.03)), 10000); .wait(300);
+       -targetReached; !!perceive(targetReached);                     // on the charger
+       !until(.intend(waitCharged), 10000);
+       -+battery(760); .wait(300);
+       !assert_true(.intend(waitCharged));                            // queued behind it, but 760 J do not last
+       -taskEnd(_); .system_time(T2); +taskEnd(T2 + 200000);          // 200 s left: 500 J
+       -+battery(770);
+       !until(not .intend(waitCharged), 3000);
+       !assert_false(.intend(waitCharged));                           // shared now
+       -taskEnd(_); -chargerQueue(_); +chargerQueue([]).

@@ -15,8 +15,9 @@
 //   the way of the robot on the charger, then goes on to it. The robot whose turn it is but that
 //   does not reach the charger within chargerTurnLimit, or comes no nearer it for chargerProgressTime
 //   while another robot waits at the charger, lets the next one go first (yieldCharger).
-// - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
-//   to recharge-trip's chargedLevel when nobody waits), and already at chargerShareFloor when a
+// - A robot on the charger while another is queued leaves it once at chargerShare and the battery
+//   covers the run's time left (taskEnd; a robot charges to recharge-trip's chargedLevel when nobody
+//   waits or the time left needs it), and already at chargerShareFloor when a
 //   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
 //   energies). A robot recharged leaves the queue once it
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
@@ -60,6 +61,7 @@ queuedAhead([A | T], Me, N) :- A \== Me & queuedAhead(T, Me, N0) & N = N0 + 1.
 neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 withTeammates :- robotAt(A, _, _) & not .my_name(A).
 lastsToTheEnd :- .system_time(T) & batteryLasts(T).
+shortOfTheEnd :- taskEnd(_) & not lastsToTheEnd.
 
 // a low battery while another robot has its turn: the place is booked, the task goes on (the
 // middleware signals lowBattery every control step while the battery is low: these two plans come
@@ -133,9 +135,13 @@ lastsToTheEnd :- .system_time(T) & batteryLasts(T).
 // (world 5, four robots)
 @detourOverAtCharger +atCharger : .intend(detour(_)) <- .drop_intention(detour(_)); -avoiding; stop.
 
-// another robot is queued: the charge is shared (the trip goes on as when charged)
+// another robot is queued: the charge is shared (the trip goes on as when charged), once the
+// battery covers the run's time left (taskEnd known): a robot that left at chargerShare ran low a
+// second time before the end, another trip of a minute or more on the charger's approach (the one
+// robot, charged to chargedLevel, skipped its second trip late in the run; four robots not)
 @shareCharger
 +battery(B) : atCharger & chargerShare(S) & B >= S & .my_name(Me) & chargerQueue([Me, _ | _]) & .intend(waitCharged)
+              & not shortOfTheEnd
     <- .print("Charged to ", B, " J: the next robot's turn"); .succeed_goal(waitCharged).
 
 // a robot waiting at the charger is needier: it goes first, once this one has a working margin
