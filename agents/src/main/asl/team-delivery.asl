@@ -7,7 +7,9 @@
 // fetches which cylinder), team-charger (the charger by need, one at a time), team-search (each
 // robot searches where no one has looked); the other skills
 // are experiment 4's. From the world file:
-// storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D).
+// storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D). From the runner: taskEnd(T), the
+// run's end (recharge-trip and team-charger make no trip, book no place, while the battery covers
+// the time left).
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // recharged, a robot goes on from the charger (recharge-trip): the way back to the point marked

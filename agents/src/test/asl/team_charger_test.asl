@@ -176,3 +176,50 @@ mock_operation(_, ok).
        !assert_true(mock_called(yieldCharger));
        -+chargerProgressTime(12000); -chargerWaiting(_); +chargerWaiting([]);
        .drop_desire(rechargeTrip(_, _, _, _)); .drop_desire(balance); -charging; -yieldedCharger; -waitingCharger.
+
+// the battery covers the run's time left (taskEnd, told by the team's runner): no place is booked,
+// and a place booked earlier is given back (a robot heading the queue that never came kept its
+// teammates booked and working on behind it until their reserve)
+@[test]
++!test_a_battery_that_lasts_to_the_end_books_nothing_and_gives_a_booking_back
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -chargerQueue(_); +chargerQueue([khepera9]); -robotAt(_, _, _);
+       -location(_, _, _); +location(0.3, 0, 0.2); -+battery(470);
+       .system_time(T); +taskEnd(T + 100000);                         // 100 s left: 250 J at 2.5 W
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(mock_called(requestCharger(470)));                // nothing booked
+       !assert_false(charging);
+       -taskEnd(_); .system_time(T2); +taskEnd(T2 + 300000);           // 300 s left: 750 J
+       -lowBattery; !!perceive(lowBattery);
+       !until(chargerBooked, 3000);
+       !assert_true(mock_called(requestCharger(470)));                 // booked, working on
+       -taskEnd(_); .system_time(T3); +taskEnd(T3 + 100000);           // the run nears its end
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(leaveCharger), 3000);
+       !assert_true(mock_called(leaveCharger));                        // the place given back
+       !assert_false(chargerBooked);
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]); // it would head the queue now
+       -lowBattery; !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);                                        // and no trip
+       -taskEnd(_); -chargerQueue(_); +chargerQueue([]); -lowBattery.
+
+// another robot is queued, but the battery at chargerShare does not cover the run's time left: the
+// charge goes on (a second trip before the end cost more than the teammate's wait), and is shared
+// once it covers it
+@[test]
++!test_a_shared_charge_goes_on_while_the_time_left_needs_it
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -location(_, _, _); +location(-0.38, 0, 0.38); -+battery(470);
+       -chargerQueue(_); +chargerQueue([team_charger_test, khepera9]); -chargerWaiting(_); +chargerWaiting([]);
+       .system_time(T); +taskEnd(T + 400000);                         // 400 s left: 1000 J at 2.5 W
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.03)), 10000); .wait(300);
+       -targetReached; !!perceive(targetReached);                     // on the charger
+       !until(.intend(waitCharged), 10000);
+       -+battery(760); .wait(300);
+       !assert_true(.intend(waitCharged));                            // queued behind it, but 760 J do not last
+       -taskEnd(_); .system_time(T2); +taskEnd(T2 + 200000);          // 200 s left: 500 J
+       -+battery(770);
+       !until(not .intend(waitCharged), 3000);
+       !assert_false(.intend(waitCharged));                           // shared now
+       -taskEnd(_); -chargerQueue(_); +chargerQueue([]).

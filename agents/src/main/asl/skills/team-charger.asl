@@ -15,8 +15,9 @@
 //   the way of the robot on the charger, then goes on to it. The robot whose turn it is but that
 //   does not reach the charger within chargerTurnLimit, or comes no nearer it for chargerProgressTime
 //   while another robot waits at the charger, lets the next one go first (yieldCharger).
-// - A robot on the charger while another is queued leaves it once at chargerShare (a robot charges
-//   to recharge-trip's chargedLevel when nobody waits), and already at chargerShareFloor when a
+// - A robot on the charger while another is queued leaves it once at chargerShare and the battery
+//   covers the run's time left (taskEnd; a robot charges to recharge-trip's chargedLevel when nobody
+//   waits or the time left needs it), and already at chargerShareFloor when a
 //   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
 //   energies). A robot recharged leaves the queue once it
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
@@ -36,7 +37,8 @@ queueEnergy(25).             // J per robot ahead in the queue (waits, and the l
 chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
 chargerShareFloor(600).      // J: and at this one when a robot waiting at the charger is needier
 // Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted, waitingTurn.
-// Reads: charger(X, Z) (the world), charging, atCharger, wayEnergy (recharge-trip), chargerQueue(L),
+// Reads: charger(X, Z) (the world), charging, atCharger, wayEnergy, batteryLasts (recharge-trip; taskEnd(T), the
+// run's end, told by the team's runner), chargerQueue(L),
 // chargerWaiting(L) (the charger), location, battery, insideArea (delivery), robotAt(A, X, Z) (team-places).
 // Needs: team-way (!standStill), recharge-trip (its hooks; !reachCharger), heading (computeGap, balance, steer), recovery
 // (!escape), the charger's queue focused (team-claims). Include it before recharge: its plans
@@ -58,13 +60,20 @@ queuedAhead([Me | _], Me, 0).
 queuedAhead([A | T], Me, N) :- A \== Me & queuedAhead(T, Me, N0) & N = N0 + 1.
 neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 withTeammates :- robotAt(A, _, _) & not .my_name(A).
+lastsToTheEnd :- .system_time(T) & batteryLasts(T).
+shortOfTheEnd :- taskEnd(_) & not lastsToTheEnd.
 
 // a low battery while another robot has its turn: the place is booked, the task goes on (the
 // middleware signals lowBattery every control step while the battery is low: these two plans come
 // before recharge-trip's, which starts the trip once neither applies)
 @bookCharger[atomic]
-+lowBattery : not charging & not chargerBooked & chargerBusy & battery(B) & chargerReserveNow(R) & B > R
++lowBattery : not charging & not chargerBooked & chargerBusy & battery(B) & chargerReserveNow(R) & B > R & not lastsToTheEnd
     <- +chargerBooked; requestCharger(B); .print("The charger is busy: booked at ", B, " J, working on").
+// the battery covers the run's time left (taskEnd: recharge-trip then makes no trip): a place
+// booked is given back, else the robot headed the queue without coming and its teammates booked
+// and worked on behind it until their reserve
+@bookingNotNeeded[atomic]
++lowBattery : chargerBooked & not charging & lastsToTheEnd <- -chargerBooked; leaveCharger; .print("The battery lasts: booking given back").
 @workWhileBooked +lowBattery : not charging & chargerBooked & chargerBusy & battery(B) & chargerReserveNow(R) & B > R.
 // a low battery in the storage area (a cylinder being put down, or the robot turning out after it):
 // the area is left first, seconds away, while the battery is above the reserve. A trip begun
@@ -126,9 +135,13 @@ withTeammates :- robotAt(A, _, _) & not .my_name(A).
 // (world 5, four robots)
 @detourOverAtCharger +atCharger : .intend(detour(_)) <- .drop_intention(detour(_)); -avoiding; stop.
 
-// another robot is queued: the charge is shared (the trip goes on as when charged)
+// another robot is queued: the charge is shared (the trip goes on as when charged), once the
+// battery covers the run's time left (taskEnd known): a robot that left at chargerShare ran low a
+// second time before the end, another trip of a minute or more on the charger's approach (the one
+// robot, charged to chargedLevel, skipped its second trip late in the run; four robots not)
 @shareCharger
 +battery(B) : atCharger & chargerShare(S) & B >= S & .my_name(Me) & chargerQueue([Me, _ | _]) & .intend(waitCharged)
+              & not shortOfTheEnd
     <- .print("Charged to ", B, " J: the next robot's turn"); .succeed_goal(waitCharged).
 
 // a robot waiting at the charger is needier: it goes first, once this one has a working margin

@@ -59,6 +59,8 @@ public final class TeamLockstepRun extends SteppedPlatform {
     private final TeamWatch watch;
     private final List<String> linkLog = new ArrayList<>();
     private boolean stepLogs = true;
+    /** The first run's end is the team's task's ({@link WorldBeliefs#tellTeamTaskEnd}). */
+    private boolean taskEndTold;
     /** Two processes: the controllers are another process's; robot i's link listens on {@code port + i} (0: free ports). */
     private boolean remote;
     private int port;
@@ -288,12 +290,17 @@ public final class TeamLockstepRun extends SteppedPlatform {
     }
 
     /**
-     * Runs {@code seconds} of simulated time (less when an agent fails at its job or {@link #stop}).
+     * Runs {@code seconds} of simulated time (less when an agent fails at its job or {@link #stop});
+     * the first run's end is the task's, told to every agent ({@link WorldBeliefs#tellTeamTaskEnd}).
      *
      * @throws IllegalStateException when the agent side fails
      * @throws IOException           with {@link #remoteController}, when a link cannot listen
      */
     public void runFor(double seconds) throws IOException, InterruptedException {
+        if (!taskEndTold) {
+            taskEndTold = true;
+            WorldBeliefs.tellTeamTaskEnd(mas(), world().timeMs(), seconds);
+        }
         if (remote) {
             runRemote(seconds);
             return;

@@ -57,9 +57,11 @@ public final class WorldBeliefs {
      * @param endMs the run's end, milliseconds of simulated time
      */
     static Optional<Literal> taskEnd(Experiment experiment, long endMs) {
-        return experiment == Experiment.TIDY_UP
-                ? Optional.of(Literal.of("taskEnd", NumberTerm.of(endMs)).addAnnot(Literal.SOURCE_SELF))
-                : Optional.empty();
+        return experiment == Experiment.TIDY_UP ? Optional.of(taskEndBelief(endMs)) : Optional.empty();
+    }
+
+    private static Literal taskEndBelief(long endMs) {
+        return Literal.of("taskEnd", NumberTerm.of(endMs)).addAnnot(Literal.SOURCE_SELF);
     }
 
     /**
@@ -69,6 +71,16 @@ public final class WorldBeliefs {
     static void tellTaskEnd(LocalMAS mas, Experiment experiment, long nowMs, double seconds) {
         taskEnd(experiment, nowMs + Math.round(seconds * 1000))
                 .ifPresent(b -> mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false)));
+    }
+
+    /**
+     * Tells every agent of a team's run when its task ends, {@code taskEnd(Ms)} as tidy-up's: a
+     * team's deliveries end with the run too, and a charger trip the battery does not need before
+     * then kept a robot from the last cylinders and from the charger a teammate needed.
+     */
+    static void tellTeamTaskEnd(LocalMAS mas, long nowMs, double seconds) {
+        Literal b = taskEndBelief(nowMs + Math.round(seconds * 1000));
+        mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false));
     }
 
     /** {@return the program with the world's beliefs first, replacing the program's own of the same name and arity} */
