@@ -7,16 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jacabot.app.inspector.Debugger;
 import jacabot.app.run.AgentSource;
 import jacabot.app.run.LockstepRun;
+import jacabot.app.run.TimingJitter;
 import jacabot.robot.Experiment;
 import jacabot.sim.SimWorld;
-import jacabot.sim.engine.WorldListener;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Random;
-import java.util.concurrent.locks.LockSupport;
 import java.util.zip.GZIPInputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -31,24 +29,11 @@ class PipelinedStepLogTest {
     private static final Experiment E = Experiment.SUSPEND_RESUME;
     private static final double SECONDS = 20;
 
-    private enum Jitter { NONE, WORLD, AGENT }
-
-    private static String stepLog(Path dir, boolean pipeline, boolean debugger, Jitter jitter) throws Exception {
+    private static String stepLog(Path dir, boolean pipeline, boolean debugger, TimingJitter jitter) throws Exception {
         SimWorld w = SimWorld.load(RunTapTest.ROOT.resolve(E.worldFile()));
-        Random timing = new Random(); // unseeded on purpose: only the timing may differ
-        if (jitter == Jitter.WORLD) {
-            w.addListener(new WorldListener() {
-                @Override
-                public void controlStepEnded(long timeMs) {
-                    pause(timing);
-                }
-            });
-        }
         var run = new LockstepRun(w, null, E, AgentSource.packaged(E), w.seed(), new PrintStream(OutputStream.nullOutputStream()))
                 .pipeline(pipeline);
-        if (jitter == Jitter.AGENT) {
-            run.onStep(d -> pause(timing)); // on the agent side's thread, before it answers
-        }
+        jitter.apply(w, run);
         try (RunTap tap = RunTap.attach(run, null, dir, E, "suspend-resume.asl")) {
             if (debugger) {
                 tap.debugger(new Debugger()); // never halts: the mind captured before the answer
@@ -61,28 +46,22 @@ class PipelinedStepLogTest {
         }
     }
 
-    private static void pause(Random timing) {
-        if (timing.nextInt(4) == 0) {
-            LockSupport.parkNanos(timing.nextInt(2_000_000));
-        }
-    }
-
     @Test
     void theMindCapturedAfterTheAnswerIsTheMindBeforeIt(@TempDir Path dir) throws Exception {
-        String before = stepLog(dir.resolve("a"), false, true, Jitter.NONE);
-        String after = stepLog(dir.resolve("b"), false, false, Jitter.AGENT);
+        String before = stepLog(dir.resolve("a"), false, true, TimingJitter.NONE);
+        String after = stepLog(dir.resolve("b"), false, false, TimingJitter.AGENT);
         assertEquals(before, after);
         assertEquals(Math.round(SECONDS * 1000 / 40), before.lines().count() - 1, "a line per step after the header");
     }
 
     @Test
     void aPipelinedStepLogIsTheSameWhateverTheTiming(@TempDir Path dir) throws Exception {
-        String agentSlow = stepLog(dir.resolve("a"), true, false, Jitter.AGENT);
-        String worldSlow = stepLog(dir.resolve("w"), true, false, Jitter.WORLD);
-        String withDebugger = stepLog(dir.resolve("d"), true, true, Jitter.WORLD);
+        String agentSlow = stepLog(dir.resolve("a"), true, false, TimingJitter.AGENT);
+        String worldSlow = stepLog(dir.resolve("w"), true, false, TimingJitter.WORLD);
+        String withDebugger = stepLog(dir.resolve("d"), true, true, TimingJitter.WORLD);
         assertEquals(agentSlow, worldSlow);
         assertEquals(agentSlow, withDebugger);
-        String plain = stepLog(dir.resolve("p"), false, false, Jitter.NONE);
+        String plain = stepLog(dir.resolve("p"), false, false, TimingJitter.NONE);
         assertNotEquals(plain, agentSlow, "a command takes effect a step later");
         assertTrue(agentSlow.lines().count() > 400);
     }

@@ -8,13 +8,10 @@ import jacabot.app.sweep.SweepJob;
 import jacabot.robot.Experiment;
 import jacabot.robot.run.RunRecorder;
 import jacabot.sim.SimWorld;
-import jacabot.sim.engine.WorldListener;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Random;
-import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -32,9 +29,6 @@ class PipelinedLockstepRunTest {
     private static final Pattern APPLY = Pattern.compile("(?m)^step (\\d+) apply ");
     private static final Pattern ANSWER = Pattern.compile("(?m)^step (\\d+) t=\\d+ [^\\n]* -> \\[[^\\]]");
 
-    /** Who is slowed at random steps, so that each side waits for the other at some steps. */
-    private enum Jitter { NONE, WORLD, AGENT }
-
     private record Run(String eventLog, long steps, String summary, String recorded, String failure) {
     }
 
@@ -45,27 +39,16 @@ class PipelinedLockstepRunTest {
         return SimWorld.load(Path.of(System.getProperty("jacabot.rootDir", "."), e.worldFile()));
     }
 
-    private static Run run(Experiment e, boolean pipeline, boolean inMemory, Jitter jitter) throws Exception {
+    private static Run run(Experiment e, boolean pipeline, boolean inMemory, TimingJitter jitter) throws Exception {
         return run(e, AgentSource.packaged(e), pipeline, inMemory, jitter);
     }
 
-    private static Run run(Experiment e, AgentSource agent, boolean pipeline, boolean inMemory, Jitter jitter) throws Exception {
+    private static Run run(Experiment e, AgentSource agent, boolean pipeline, boolean inMemory, TimingJitter jitter) throws Exception {
         SimWorld w = world(e);
         RunRecorder recorder = RunRecorder.attach(w, e.robot());
-        Random timing = new Random(); // unseeded on purpose: only the timing may differ
-        if (jitter == Jitter.WORLD) {
-            w.addListener(new WorldListener() {
-                @Override
-                public void controlStepEnded(long timeMs) {
-                    pause(timing);
-                }
-            });
-        }
         var run = new LockstepRun(w, null, e, agent, w.seed(),
                 new PrintStream(OutputStream.nullOutputStream())).inMemory(inMemory).pipeline(pipeline);
-        if (jitter == Jitter.AGENT) {
-            run.onStep(d -> pause(timing)); // on the agent side's thread, before it answers
-        }
+        jitter.apply(w, run);
         var result = run.runFor(SECONDS);
         run.close();
         var summary = recorder.summary(SweepJob.AGENT);
@@ -73,18 +56,12 @@ class PipelinedLockstepRunTest {
                 run.agentFailure().orElse(""));
     }
 
-    private static void pause(Random timing) {
-        if (timing.nextInt(4) == 0) {
-            LockSupport.parkNanos(timing.nextInt(2_000_000));
-        }
-    }
-
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "SUSPEND_RESUME"})
     void thePipelinedRunIsTheSameWhateverTheTimingAndTheLink(Experiment e) throws Exception {
-        Run agentSlow = run(e, true, false, Jitter.AGENT);
-        Run worldSlow = run(e, true, false, Jitter.WORLD);
-        Run memory = run(e, true, true, Jitter.NONE);
+        Run agentSlow = run(e, true, false, TimingJitter.AGENT);
+        Run worldSlow = run(e, true, false, TimingJitter.WORLD);
+        Run memory = run(e, true, true, TimingJitter.NONE);
         assertEquals(Math.round(SECONDS * 1000) / world(e).controlStep(), memory.steps(), "every control step answered");
         for (Run other : List.of(worldSlow, memory)) {
             assertEquals(agentSlow.steps(), other.steps());
@@ -98,8 +75,8 @@ class PipelinedLockstepRunTest {
     @ParameterizedTest
     @EnumSource(value = Experiment.class, names = {"OBSTACLE_AVOIDANCE", "SUSPEND_RESUME"})
     void theAgentsFirstCommandsTakeEffectOneControlStepLater(Experiment e) throws Exception {
-        Run lockstep = run(e, false, true, Jitter.NONE);
-        Run pipelined = run(e, true, true, Jitter.NONE);
+        Run lockstep = run(e, false, true, TimingJitter.NONE);
+        Run pipelined = run(e, true, true, TimingJitter.NONE);
         long answered = first(ANSWER, lockstep.eventLog());
         assertEquals(answered, first(ANSWER, pipelined.eventLog()), "the same readings until a command takes effect");
         assertEquals(answered, first(APPLY, lockstep.eventLog()), "lockstep: applied at the step it answers");
@@ -110,11 +87,11 @@ class PipelinedLockstepRunTest {
     @Test
     void aFailedAgentEndsThePipelinedRunAtTheSameStepWhateverTheTiming() throws Exception {
         Experiment e = Experiment.OBSTACLE_AVOIDANCE;
-        Run lockstep = run(e, STOPS, false, true, Jitter.NONE);
+        Run lockstep = run(e, STOPS, false, true, TimingJitter.NONE);
         for (int i = 0; i < 3; i++) { // the end is decided where the answer is taken, not where the agent fails
-            Run agentSlow = run(e, STOPS, true, false, Jitter.AGENT);
-            Run worldSlow = run(e, STOPS, true, false, Jitter.WORLD);
-            Run memory = run(e, STOPS, true, true, Jitter.NONE);
+            Run agentSlow = run(e, STOPS, true, false, TimingJitter.AGENT);
+            Run worldSlow = run(e, STOPS, true, false, TimingJitter.WORLD);
+            Run memory = run(e, STOPS, true, true, TimingJitter.NONE);
             assertTrue(memory.failure().contains(".stopMAS"), memory.failure());
             assertEquals(lockstep.steps() + 1, memory.steps(), "one step after the plain lockstep's end");
             for (Run other : List.of(agentSlow, worldSlow)) {
