@@ -8,7 +8,6 @@ import jacabot.robot.Experiment;
 import jacabot.sim.world.WorldSpec;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
 
 /**
  * What the robot is told about its world when it starts (not in the thesis: the agents take their landmarks from the world, so other worlds work): the landmarks of the world
@@ -50,27 +49,16 @@ public final class WorldBeliefs {
     }
 
     /**
-     * {@return when the experiment's task ends, as a belief of the agent's (simulated) clock:
-     * tidy-up's {@code taskEnd(Ms)}, the end of the run, so that no recharge trip is made that the
-     * battery does not need before then (skills/recharge-trip.asl); empty for the other experiments,
-     * whose recharge episodes are the task itself}
-     * @param endMs the run's end, milliseconds of simulated time
-     */
-    static Optional<Literal> taskEnd(Experiment experiment, long endMs) {
-        return experiment == Experiment.TIDY_UP ? Optional.of(taskEndBelief(endMs)) : Optional.empty();
-    }
-
-    private static Literal taskEndBelief(long endMs) {
-        return Literal.of("taskEnd", NumberTerm.of(endMs)).addAnnot(Literal.SOURCE_SELF);
-    }
-
-    /**
-     * Tells every agent of {@code mas} when its task ends ({@link #taskEnd}), a run of {@code seconds}
-     * from {@code nowMs} of simulated time; before the agents' first reasoning cycle, as an initial belief.
+     * Tells every agent of tidy-up when its task ends, a run of {@code seconds} from {@code nowMs}
+     * of simulated time, as a belief of the agent's clock, {@code taskEnd(Ms)}, so that no recharge
+     * trip is made that the battery does not need before then (skills/recharge-trip.asl); nothing to
+     * the other experiments, whose recharge episodes are the task itself. Before the agents' first
+     * reasoning cycle, as an initial belief.
      */
     static void tellTaskEnd(LocalMAS mas, Experiment experiment, long nowMs, double seconds) {
-        taskEnd(experiment, nowMs + Math.round(seconds * 1000))
-                .ifPresent(b -> mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false)));
+        if (experiment == Experiment.TIDY_UP) {
+            tellTeamTaskEnd(mas, nowMs, seconds);
+        }
     }
 
     /**
@@ -79,7 +67,7 @@ public final class WorldBeliefs {
      * then kept a robot from the last cylinders and from the charger a teammate needed.
      */
     static void tellTeamTaskEnd(LocalMAS mas, long nowMs, double seconds) {
-        Literal b = taskEndBelief(nowMs + Math.round(seconds * 1000));
+        Literal b = Literal.of("taskEnd", NumberTerm.of(nowMs + Math.round(seconds * 1000))).addAnnot(Literal.SOURCE_SELF);
         mas.agentNames().forEach(n -> mas.agent(n).addBelief(b, false));
     }
 
