@@ -246,7 +246,7 @@ final class ReasoningCycle {
                 for (Map.Entry<Var, Var> e : base.renamedVars().entrySet()) {
                     Term value = top.unifier().deref(e.getValue());
                     if (value instanceof Var w) {
-                        Var again = renamedFor(top, w);
+                        Var again = top.renamedVarFor(w);
                         if (again != null) {
                             e.setValue(again);
                         }
@@ -258,23 +258,6 @@ final class ReasoningCycle {
         }
         i.push(im);
         c.addRunningIntention(i);
-    }
-
-    /**
-     * The fresh variable the replaced plan's last step gave the free variable {@code w} for its
-     * event: the step's variables were renamed as they stand in the plan (X, not the variable at
-     * the end of X's chain, as Jason applies), so each is looked up by where its chain ends.
-     */
-    private static Var renamedFor(IntendedMeans top, Var w) {
-        if (top.renamedVars() == null) {
-            return null;
-        }
-        for (Map.Entry<Var, Var> r : top.renamedVars().entrySet()) {
-            if (top.unifier().deref(r.getKey()).equals(w)) {
-                return r.getValue();
-            }
-        }
-        return null;
     }
 
     private static boolean samePredicate(Trigger a, Trigger b) {
