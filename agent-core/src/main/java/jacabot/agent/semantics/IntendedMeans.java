@@ -213,6 +213,23 @@ public final class IntendedMeans {
         renamedVars = null;
     }
 
+    /**
+     * {@return the fresh variable the current step gave the free variable {@code w} for its event,
+     * or null} The step's variables were renamed as they stand in the plan (X, not the variable at
+     * the end of X's chain, as Jason applies), so each is looked up by where its chain ends.
+     */
+    Var renamedVarFor(Var w) {
+        if (renamedVars == null) {
+            return null;
+        }
+        for (Map.Entry<Var, Var> r : renamedVars.entrySet()) {
+            if (unifier().deref(r.getKey()).equals(w)) {
+                return r.getValue();
+            }
+        }
+        return null;
+    }
+
     Map<Var, Var> renamedVarsOrNew() {
         if (renamedVars == null) {
             renamedVars = new LinkedHashMap<>();

@@ -246,7 +246,7 @@ final class ReasoningCycle {
                 for (Map.Entry<Var, Var> e : base.renamedVars().entrySet()) {
                     Term value = top.unifier().deref(e.getValue());
                     if (value instanceof Var w) {
-                        Var again = top.renamedVars() == null ? null : top.renamedVars().get(w);
+                        Var again = top.renamedVarFor(w);
                         if (again != null) {
                             e.setValue(again);
                         }

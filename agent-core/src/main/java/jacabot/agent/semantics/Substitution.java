@@ -30,8 +30,10 @@ final class Substitution {
     /** Replaces bound variables and evaluates arithmetic whose operands are all bound. */
     static Term apply(Unifier u, Term t) {
         if (t instanceof Var v) {
+            // as Jason's capply: a variable bound only to other free variables stays itself, so the
+            // applied term no longer shares them (X = Y; +p(X, Y) adds p(X, Y) with two variables)
             Term d = u.deref(v);
-            return d instanceof Var || d instanceof NumberTerm ? d : apply(u, d);
+            return d instanceof Var ? v : d instanceof NumberTerm ? d : apply(u, d);
         }
         if (t instanceof NumberTerm || t instanceof StringTerm) {
             return t; // before the long list of compound kinds below
@@ -105,8 +107,8 @@ final class Substitution {
             Term d = u.deref(av.var());
             List<Term> annots = applyAll(u, av.annots());
             Term ns = av.ns() == null ? null : apply(u, av.ns());
-            if (d instanceof Var dv) {
-                return new AnnotatedVar(dv, annots, av.tail() == null ? null : apply(u, av.tail()), ns);
+            if (d instanceof Var) {
+                return new AnnotatedVar(av.var(), annots, av.tail() == null ? null : apply(u, av.tail()), ns);
             }
             return av.wrap(apply(u, d), annots, ns);
         }
