@@ -317,7 +317,7 @@ public final class LockstepCoordinator {
         private final List<String> agentLog;
         private final List<SensorInfo> readings = new ArrayList<>();
         private final CountDownLatch end = new CountDownLatch(1);
-        private volatile long lastEventNanos = System.nanoTime();
+        private final SilenceWatch silence = new SilenceWatch(SILENCE_LIMIT_SECONDS);
         private volatile RuntimeException failure;
         private volatile long steps;
         private volatile boolean connectedOnce;
@@ -332,7 +332,7 @@ public final class LockstepCoordinator {
 
         @Override
         public void accept(LinkEvent e) {
-            lastEventNanos = System.nanoTime();
+            silence.heard();
             if (end.getCount() == 0) {
                 return;
             }
@@ -378,7 +378,7 @@ public final class LockstepCoordinator {
                 if (!connectedOnce && endAt >= 0) {
                     continue; // waiting for the other process's controller, as long as it takes
                 }
-                if (System.nanoTime() - lastEventNanos > TimeUnit.SECONDS.toNanos(SILENCE_LIMIT_SECONDS)) {
+                if (silence.tooLong()) {
                     throw new IllegalStateException("no data from the controller for " + SILENCE_LIMIT_SECONDS + " s");
                 }
             }
