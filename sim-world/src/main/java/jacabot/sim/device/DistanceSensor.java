@@ -104,10 +104,9 @@ public final class DistanceSensor extends Sensor {
         for (int i = 0; i < rays; i++) {
             bearings[i] = p.heading() + (rays == 1 ? 0 : -aperture / 2 + i * aperture / (rays - 1));
         }
-        // the rays share one broad phase: the few objects this close are found once, not per ray;
-        // a ray reads its nearest hit only, so every hit hides what lies behind it
+        // the rays share one broad phase: the few objects this close are found once, not per ray
         List<List<RayHit>> fan = rays == 1 ? List.of(caster.castAll(p.position(), bearings[0], range))
-                : caster.castFan(p.position(), bearings, range, hit -> true);
+                : caster.castFan(p.position(), bearings, range);
         for (int i = 0; i < rays; i++) {
             double angle = rays == 1 ? 0 : -aperture / 2 + i * aperture / (rays - 1);
             double w = rays == 1 ? 1 : Math.exp(-(angle / aperture) * (angle / aperture));
