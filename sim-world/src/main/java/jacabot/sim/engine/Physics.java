@@ -308,6 +308,10 @@ final class Physics {
             if (Math.sqrt(ex * ex + ez * ez) > length + r) {
                 continue; // every ray's start lies within BACKOFF of the origin, its end within maxRange
             }
+            if (o.shape instanceof Rectangle box && RayShapes.boxDistance(ox, oz, x, z, t.getCost(), t.getSint(),
+                    box.getWidth() / 2, box.getHeight() / 2) > length + BACKOFF + REACH_MARGIN) {
+                continue; // a far wall, whose bounding circle reaches every ray: no ray comes within GJK's margin
+            }
             cx[near.size()] = x;
             cz[near.size()] = z;
             reach[near.size()] = r;

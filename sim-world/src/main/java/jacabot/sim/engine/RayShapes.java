@@ -73,6 +73,16 @@ final class RayShapes {
     }
 
     /**
+     * {@return the distance from the point {@code (px, py)} to a rectangle of half sizes
+     * {@code hx × hy} centred on {@code (cx, cy)}, its own x axis at {@code (cos, sin)}} (0 inside)
+     */
+    static double boxDistance(double px, double py, double cx, double cy, double cos, double sin, double hx, double hy) {
+        double ox = px - cx, oy = py - cy;
+        double qx = Math.max(Math.abs(cos * ox + sin * oy) - hx, 0), qy = Math.max(Math.abs(-sin * ox + cos * oy) - hy, 0);
+        return Math.sqrt(qx * qx + qy * qy);
+    }
+
+    /**
      * A rectangle of half sizes {@code hx × hy} centred on {@code (cx, cy)}, its own x axis at
      * {@code (cos, sin)}: the slab test in the rectangle's frame, where the ray enters the last of
      * its two slabs before it leaves either.
