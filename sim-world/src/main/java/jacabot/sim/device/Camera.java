@@ -2,7 +2,6 @@ package jacabot.sim.device;
 
 import jacabot.sim.geom.Pose;
 import jacabot.sim.geom.Rgb;
-import java.util.Arrays;
 import java.util.List;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -123,41 +122,70 @@ public final class Camera extends Sensor {
 
     @Override
     protected void sample() {
-        image = render();
+        if (image == null) {
+            image = new int[width * height];
+        }
+        renderInto(image); // the last image's own array: getImage() and copyImageInto() copy it
     }
 
     /** {@return an image of what the camera sees now} */
     public int[] render() {
         int[] img = new int[width * height];
-        Arrays.fill(img, background.packed());
+        renderInto(img);
+        return img;
+    }
+
+    private void renderInto(int[] img) {
         Pose p = mount.get();
         double[] bearings = new double[width];
         for (int c = 0; c < width; c++) {
             bearings[c] = p.heading() - fov / 2 + (c + 0.5) * fov / width;
         }
-        List<List<RayHit>> fan = caster.castFan(p.position(), bearings, range); // one broad phase for all columns
+        // one broad phase for all columns; a column reads nothing behind a hit that fills its top row
+        List<List<RayHit>> fan = caster.castFan(p.position(), bearings, range, this::fillsTopRow);
         for (int c = 0; c < width; c++) {
-            List<RayHit> hits = fan.get(c);
-            for (int r = 0; r < height; r++) {
-                img[r * width + c] = pixel(hits, rowSlopes[r]).packed();
-            }
+            renderColumn(img, c, fan.get(c));
         }
-        return img;
     }
 
-    private Rgb pixel(List<RayHit> hits, double slope) {
-        for (RayHit h : hits) {
-            double y = mountHeight + h.distance() * slope;
-            if (y < 0) {
-                return floor;
-            }
-            if (y <= h.height()) {
-                return h.color();
+    /**
+     * Whether a pixel's ray stops at a hit: it passes below the floor before it, or meets the
+     * object's side. A row's height along the ray, {@code mountHeight + distance × slope}, falls with
+     * the row (the slopes fall, the distance is not negative), so a hit that stops some row stops
+     * every row below it too.
+     */
+    private static boolean stops(double y, RayHit hit) {
+        return y < 0 || y <= hit.height();
+    }
+
+    /** Whether a hit stops the top row's ray, and so every row's (see {@link #stops}): nothing behind it is seen. */
+    private boolean fillsTopRow(RayHit hit) {
+        return stops(mountHeight + hit.distance() * rowSlopes[0], hit);
+    }
+
+    /**
+     * Fills column c: each row takes the first hit, nearest first, that stops its ray (the floor if
+     * the ray reached the floor first, else the object's colour); a row no hit stops sees the floor
+     * if the ray reaches it within range, else the background. The hits that stop rows stop a
+     * suffix of the rows still open (see {@link #stops}), so the column is filled from the bottom
+     * up, each pixel once, and ends at the first hit that stops the top row.
+     */
+    private void renderColumn(int[] img, int c, List<RayHit> hits) {
+        int open = height; // the rows 0 .. open - 1 are not filled yet
+        for (int i = 0, n = hits.size(); i < n && open > 0; i++) {
+            RayHit hit = hits.get(i);
+            while (open > 0) {
+                double y = mountHeight + hit.distance() * rowSlopes[open - 1];
+                if (!stops(y, hit)) {
+                    break; // nor does it stop any row above
+                }
+                img[(open - 1) * width + c] = y < 0 ? floor.packed() : hit.color().packed();
+                open--;
             }
         }
-        if (slope < 0 && mountHeight + range * slope < 0) {
-            return floor;
+        for (int r = 0; r < open; r++) {
+            double slope = rowSlopes[r];
+            img[r * width + c] = slope < 0 && mountHeight + range * slope < 0 ? floor.packed() : background.packed();
         }
-        return background;
     }
 }

@@ -3,6 +3,7 @@ package jacabot.sim.device;
 import jacabot.sim.geom.Vec2;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Predicate;
 
 /** Casts rays on the floor plane for one robot's sensors, ignoring the robot and what it carries. */
 public interface RayCaster {
@@ -20,6 +21,16 @@ public interface RayCaster {
             all.add(castAll(origin, b, maxRange));
         }
         return all;
+    }
+
+    /**
+     * A fan as {@link #castFan(Vec2, double[], double)} casts it, for a caller that reads each ray's
+     * hits nearest first only up to the first hit {@code opaque} accepts (what hides everything
+     * behind it): a ray's list holds every hit up to and including that one, in the same order, and
+     * may leave out what lies beyond, which a caster then need not work out.
+     */
+    default List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange, Predicate<RayHit> opaque) {
+        return castFan(origin, bearingsDeg, maxRange);
     }
 
     /** {@return the nearest object within range, or null} */

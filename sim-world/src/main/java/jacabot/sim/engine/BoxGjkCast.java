@@ -162,6 +162,9 @@ final class BoxGjkCast {
                                     double sin) {
         double ox = sx - tx, oy = sy - ty;
         double px = cos * ox + sin * oy, py = -sin * ox + cos * oy;
+        if (clearlyOutside(px, hx) || clearlyOutside(py, hy)) {
+            return false;
+        }
         double x0 = vertexX(0, hx), y0 = vertexY(0, hy), x1 = vertexX(1, hx), y1 = vertexY(1, hy);
         double x3 = vertexX(3, hx), y3 = vertexY(3, hy);
         double widthSquared = squared(x0 - x1, y0 - y1), heightSquared = squared(x0 - x3, y0 - y3);
@@ -169,6 +172,15 @@ final class BoxGjkCast {
         double qx = px - 0.0, qy = py - 0.0; // from the centre, which is the origin of the frame
         return projectedSquared(qx, qy, e0x, e0y) <= widthSquared * 0.25
                 && projectedSquared(qx, qy, e1x, e1y) <= heightSquared * 0.25;
+    }
+
+    /**
+     * Whether a coordinate in the rectangle's frame lies clearly outside its slab {@code [-half, half]}:
+     * the test below then fails too (it compares p² with half² after a few roundings, each a part in
+     * 10^16), and its divisions are saved. Most casts start outside the rectangle.
+     */
+    private static boolean clearlyOutside(double p, double half) {
+        return half > 1e-6 && Math.abs(p) > half * (1 + 1e-9);
     }
 
     /** {@return the squared length of (x, y) projected on (ex, ey)} */

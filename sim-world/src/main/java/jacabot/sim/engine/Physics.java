@@ -14,6 +14,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import org.dyn4j.collision.narrowphase.Gjk;
 import org.dyn4j.collision.narrowphase.Raycast;
 import org.dyn4j.dynamics.Body;
@@ -166,7 +167,12 @@ final class Physics {
 
             @Override
             public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange) {
-                return Physics.this.castFan(self, origin, bearingsDeg, maxRange);
+                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, null);
+            }
+
+            @Override
+            public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange, Predicate<RayHit> opaque) {
+                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, opaque);
             }
         };
     }
@@ -204,13 +210,18 @@ final class Physics {
     /** Every object of the world, in the world's order, the ray meets within range (no broad phase). */
     private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
         Beam beam = new Beam(origin, bearingDeg);
-        List<RayHit> hits = new ArrayList<>(4);
+        var hits = new NearestFirst();
+        int index = 0;
         for (SimObject o : objects.values()) {
             if (o != self && o.carriedBy == null) {
-                cast(o, beam, maxRange, hits);
+                RayHit hit = cast(o, beam, maxRange);
+                if (hit != null) {
+                    hits.add(hit, index);
+                }
             }
+            index++;
         }
-        return hits;
+        return hits.list();
     }
 
     /**
@@ -219,9 +230,27 @@ final class Physics {
      * without allocations ({@link BoxGjkCast}): near a corner it can be off the exact distance by
      * millimetres (GJK stops within its tolerance; see RayShapesTest), and the world's trajectories
      * depend on it. Only the rays that pass within {@link #GJK_MARGIN} of the rectangle, where GJK
-     * can answer a hit, are cast.
+     * can answer a hit, are cast. {@return the hit within range, or null}
      */
-    private void cast(SimObject o, Beam beam, double maxRange, List<RayHit> hits) {
+    private RayHit cast(SimObject o, Beam beam, double maxRange) {
+        if (o.shape instanceof Rectangle r && Double.isNaN(reachFrom(o, r, beam, maxRange))) {
+            return null;
+        }
+        return castShape(o, beam, maxRange);
+    }
+
+    /**
+     * {@return where the ray enters the rectangle grown by {@link #GJK_MARGIN}, GJK's answer being no
+     * nearer (0 when it starts inside), or NaN when GJK cannot answer a hit: the ray passes farther}
+     */
+    private static double reachFrom(SimObject o, Rectangle r, Beam beam, double maxRange) {
+        Transform t = o.body.getTransform();
+        return RayShapes.boxReachFrom(beam.sx, beam.sy, beam.dx, beam.dy, t.getTranslationX(), t.getTranslationY(),
+                t.getCost(), t.getSint(), r.getWidth() / 2, r.getHeight() / 2, GJK_MARGIN, maxRange + BACKOFF);
+    }
+
+    /** {@link #cast} for a ray that reaches the object ({@link #reachFrom}): the shape's cast itself. */
+    private RayHit castShape(SimObject o, Beam beam, double maxRange) {
         double length = maxRange + BACKOFF;
         Transform t = o.body.getTransform();
         double d;
@@ -230,10 +259,6 @@ final class Physics {
                     c.getRadius(), length);
         } else if (o.shape instanceof Rectangle r) {
             double w = r.getWidth(), h = r.getHeight();
-            if (!RayShapes.boxReach(beam.sx, beam.sy, beam.dx, beam.dy, t.getTranslationX(), t.getTranslationY(),
-                    t.getCost(), t.getSint(), w / 2, h / 2, GJK_MARGIN, length)) {
-                return;
-            }
             if (world.getRaycastDetector() instanceof Gjk gjk) {
                 d = BoxGjkCast.cast(beam.sx, beam.sy, beam.dx, beam.dy, w, h, t.getTranslationX(), t.getTranslationY(),
                         t.getCost(), t.getSint(), length, gjk.getRaycastEpsilon(), gjk.getMaxRaycastIterations());
@@ -247,22 +272,27 @@ final class Physics {
         if (!Double.isNaN(d)) {
             double best = Math.max(0, d - BACKOFF);
             if (best <= maxRange) {
-                int at = hits.size();
-                while (at > 0 && hits.get(at - 1).distance() > best) {
-                    at--; // nearest first; a tie goes after the hits already there, in the world's order
-                }
-                hits.add(at, new RayHit(best, o.color, o.height, o.id, o.reflectance));
+                return new RayHit(best, o.color, o.height, o.id, o.reflectance);
             }
         }
+        return null;
     }
 
     /**
      * A camera's rays, each with the result {@link #castAll} gives it, with a broad phase shared by
      * the fan: the objects out of every ray's reach are dropped once, and each ray tries only the
-     * objects whose bounding circle (grown by {@link #REACH_MARGIN}) it crosses, in the world's order.
-     * The filter is conservative, so the rays meet the same objects in the same order as one by one.
+     * objects whose bounding circle (grown by {@link #REACH_MARGIN}) it crosses. The filter is
+     * conservative, so the rays meet the same objects, and their hits keep the order of
+     * {@link #castAll} ({@link NearestFirst}).
+     *
+     * <p>With {@code opaque} (see {@link RayCaster#castFan(Vec2, double[], double, Predicate)}) a ray
+     * tries its objects in the order of a lower bound on their hit's distance (where the ray enters
+     * the bounding circle, or a rectangle grown by {@link #GJK_MARGIN}), and stops at the first
+     * whose bound lies beyond an opaque hit already found: what it leaves out is farther than that
+     * hit, so the hits up to the first opaque one are those of {@link #castAll}.
      */
-    private List<List<RayHit>> castFan(SimObject self, Vec2 origin, double[] bearingsDeg, double maxRange) {
+    private List<List<RayHit>> castFan(SimObject self, Vec2 origin, double[] bearingsDeg, double maxRange,
+                                       Predicate<RayHit> opaque) {
         int n = bearingsDeg.length;
         double ox = origin.x(), oz = origin.z();
         double length = maxRange + BACKOFF;
@@ -278,29 +308,65 @@ final class Physics {
             if (Math.sqrt(ex * ex + ez * ez) > length + r) {
                 continue; // every ray's start lies within BACKOFF of the origin, its end within maxRange
             }
+            if (o.shape instanceof Rectangle box && RayShapes.boxDistance(ox, oz, x, z, t.getCost(), t.getSint(),
+                    box.getWidth() / 2, box.getHeight() / 2) > length + BACKOFF + REACH_MARGIN) {
+                continue; // a far wall, whose bounding circle reaches every ray: no ray comes within GJK's margin
+            }
             cx[near.size()] = x;
             cz[near.size()] = z;
             reach[near.size()] = r;
             near.add(o);
         }
         int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near.size()) : null;
+        int[] order = new int[near.size()];
+        double[] bound = new double[near.size()];
         List<List<RayHit>> fan = new ArrayList<>(n);
         for (int k = 0; k < n; k++) {
             Beam beam = new Beam(origin, bearingsDeg[k]);
-            List<RayHit> hits = new ArrayList<>(4);
             int[] mine = candidates == null ? null : candidates[k];
-            int count = mine == null ? near.size() : mine[0];
+            int count = mine == null ? near.size() : mine[0], tries = 0;
             for (int j = 0; j < count; j++) {
                 int i = mine == null ? j : mine[j + 1];
                 double ex = cx[i] - beam.sx, ez = cz[i] - beam.sy;
                 double along = ex * beam.dx + ez * beam.dy, across = ex * beam.dy - ez * beam.dx;
                 if (Math.abs(across) <= reach[i] && along >= -reach[i] && along <= length + reach[i]) {
-                    cast(near.get(i), beam, maxRange, hits);
+                    SimObject o = near.get(i);
+                    double from = o.shape instanceof Rectangle r ? reachFrom(o, r, beam, maxRange) : along - reach[i];
+                    if (!Double.isNaN(from)) { // NaN: a rectangle GJK cannot answer a hit for
+                        tries = insert(order, bound, tries, i, opaque == null ? 0 : from);
+                    }
                 }
             }
-            fan.add(hits);
+            var hits = new NearestFirst();
+            double stop = Double.POSITIVE_INFINITY; // the nearest opaque hit's distance
+            for (int j = 0; j < tries && !(bound[j] - BACKOFF > stop); j++) {
+                RayHit hit = castShape(near.get(order[j]), beam, maxRange);
+                if (hit != null) {
+                    hits.add(hit, order[j]);
+                    if (opaque != null && hit.distance() < stop && opaque.test(hit)) {
+                        stop = hit.distance();
+                    }
+                }
+            }
+            fan.add(hits.list());
         }
         return fan;
+    }
+
+    /**
+     * Puts object i with its bound among the first {@code size} tries, in ascending bound (after
+     * those with the same bound: equal bounds keep the order they come in). {@return the new size}
+     */
+    private static int insert(int[] order, double[] bound, int size, int i, double b) {
+        int at = size;
+        while (at > 0 && bound[at - 1] > b) {
+            order[at] = order[at - 1];
+            bound[at] = bound[at - 1];
+            at--;
+        }
+        order[at] = i;
+        bound[at] = b;
+        return size + 1;
     }
 
     /** From this many rays on, a fan sorts its objects into the rays' sectors first ({@link #sectors}). */

@@ -54,12 +54,32 @@ final class RayShapes {
      */
     static boolean boxReach(double sx, double sy, double dx, double dy, double cx, double cy, double cos, double sin,
                             double hx, double hy, double margin, double maxLength) {
+        return !Double.isNaN(boxReachFrom(sx, sy, dx, dy, cx, cy, cos, sin, hx, hy, margin, maxLength));
+    }
+
+    /**
+     * As {@link #boxReach}, with where: {@return the distance along the ray at which it enters the
+     * rectangle grown by {@code margin} (0 when it starts inside), or NaN when it does not reach it}.
+     * A cast that stops within the margin of the outline stops no nearer than that.
+     */
+    static double boxReachFrom(double sx, double sy, double dx, double dy, double cx, double cy, double cos, double sin,
+                               double hx, double hy, double margin, double maxLength) {
         double gx = hx + margin, gy = hy + margin;
         double ox = sx - cx, oy = sy - cy;
         if (Math.abs(cos * ox + sin * oy) <= gx && Math.abs(-sin * ox + cos * oy) <= gy) {
-            return true;
+            return 0;
         }
-        return !Double.isNaN(box(sx, sy, dx, dy, cx, cy, cos, sin, gx, gy, maxLength));
+        return box(sx, sy, dx, dy, cx, cy, cos, sin, gx, gy, maxLength);
+    }
+
+    /**
+     * {@return the distance from the point {@code (px, py)} to a rectangle of half sizes
+     * {@code hx × hy} centred on {@code (cx, cy)}, its own x axis at {@code (cos, sin)}} (0 inside)
+     */
+    static double boxDistance(double px, double py, double cx, double cy, double cos, double sin, double hx, double hy) {
+        double ox = px - cx, oy = py - cy;
+        double qx = Math.max(Math.abs(cos * ox + sin * oy) - hx, 0), qy = Math.max(Math.abs(-sin * ox + cos * oy) - hy, 0);
+        return Math.sqrt(qx * qx + qy * qy);
     }
 
     /**
