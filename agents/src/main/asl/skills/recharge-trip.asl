@@ -41,8 +41,8 @@ storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
 lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.
 // taskEnd: the battery covers the task's time left, the wheels at full speed all along, or at the
 // agent's own meanPower(W): tidy-up's wheels are at full speed part of the time only (1.7-1.8 W on
-// the whole), and a second trip after 410 s, forced by the full-speed sum, took what was left for
-// the last cylinder
+// the whole), and a second trip the full-speed sum forced late in the run (370-494 s, 15 of 80
+// generated worlds) took the time left for the last cylinder
 spendingPower(P) :- meanPower(P).
 spendingPower(P) :- not meanPower(_) & fullPower(P).
 batteryLasts(Now) :- taskEnd(End) & Now < End & battery(B) & spendingPower(P) & B > P * (End - Now) / 1000.
