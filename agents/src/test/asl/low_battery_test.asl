@@ -100,6 +100,27 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        -lowBattery.
 
+// an agent that believes meanPower(W) (tidy-up: 2 W) sums the time left at that power, not at full
+// power: 470 J cover 200 s at 2 W (400 J), not at 2.5 W (500 J)
+@[test]
++!test_an_agents_mean_power_makes_the_sum_of_the_time_left
+    <- !until(not charging, 10000); +meanPower(2); !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       .system_time(T); +taskEnd(T + 200000);
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       -meanPower(2); -lowBattery; !!perceive(lowBattery);              // at full power: the trip
+       !until(.intend(reachCharger), 10000);
+       !assert_true(charging);
+       -taskEnd(_); -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -charged; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       -lowBattery.
+
 // an agent that charges only for the time left (tidy-up: chargeUntilLasts) leaves the charger once
 // the battery less the reserve covers the task's time left at full power, short of the charged level
 @[test]
