@@ -29,6 +29,8 @@ homingJump(20).
 // (insideArea), blind, with the cylinder (docs/comparison.md, "Users' arenas: the wide profile")
 @rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
 { include("skills/recharge.asl") }
+// no progress in the storage area after the put-down: out towards the arena's centre
+{ include("skills/storage-exit.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
