@@ -11,9 +11,6 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // the sweep keeps its route's point up to 6 s (until reached or an obstacle met: route.asl), where
 // re-planning at every step swung it left and right near its waypoint
 routeHold(6000).
-// a sighting 20 degrees or more to the other side of the homing's last is another cylinder beside
-// it: straight on towards both, where turning to each in turn went left and right (far-sight.asl)
-homingJump(20).
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along
 // its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,

@@ -106,19 +106,3 @@ sightingOff(Off, Dist) :- offSighting(Off, Dist).
        !assert_true(escaped);
        !assert_false(homing(_));
        -homingProgress(1000).
-
-// an agent that believes homingJump(J): a sighting J degrees or more to the other side of the
-// homing's last, within a second, is another cylinder: straight on towards both, no turn to it;
-// the same sighting a second on is homed on
-@[test]
-+!test_a_sighting_jumping_to_the_other_side_is_not_turned_to
-    <- !until(not ignoring, 3000); .abolish(nearestSighted(_, _, _)); +homingJump(20);
-       .system_time(T); -+homing(T); -+lastSighted(T); -+sightOffset(14); !forget_calls;
-       !sighting(-13, 1.0);
-       !until(mock_called(setSpeeds(_, _)), 2000);
-       !assert_true(mock_called(setSpeeds(40, 40)));
-       !assert_false(mock_called(setSpeeds(-25, 25)));
-       .wait(1000); !forget_calls; !sighting(-13, 1.0);
-       !until(mock_called(setSpeeds(_, _)), 2000);
-       !assert_true(mock_called(setSpeeds(-25, 25)));
-       -homingJump(20); -homing(_).

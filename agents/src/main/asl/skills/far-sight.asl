@@ -22,8 +22,7 @@ setUpGoal(setUpFarSight).
 // Beliefs: homing(Since), lastSighted(T), sightDistance(D), ignoring, goingRound; nearestSighted(Since,
 // D, At) (with homingProgress(Ms), the agent's, optional: a homing still coming nearer goes on past
 // homingGiveUp while a sighting nearer than any before came in the last Ms).
-// sightOffset(Off) (the last sighting's offset, for a skill that places it: search-memory);
-// homingJump(J) (the agent's, optional: see @homeBetweenTwo).
+// sightOffset(Off) (the last sighting's offset, for a skill that places it: search-memory).
 // Reads: maxSpeed(M); picking, picked(true), reachCylinder(false), pickingOff (picking); avoiding;
 // rule sightingOff(Off, Dist) (another skill's, optional: a sighting it takes for no cylinder to go
 // for; search-memory: the stored pile).
@@ -42,17 +41,6 @@ setUpGoal(setUpFarSight).
     <- !sighted(Off, Dist).
 // what a sighting leads to: homing on it (a team's skill first claims the cylinder: team-claims)
 @sightedHome +!sighted(Off, Dist) <- !homeOn(Off, Dist).
-// two cylinders side by side as wide in the image: the middleware signals the widest run, of runs as
-// wide the leftmost, and as the robot turned to one the other became the leftmost; the turn on the
-// spot went left and right for 14 s until no progress, again and again (wide world 118, suspend/
-// resume, seed 1). An agent that believes homingJump(J) takes a sighting J degrees or more to the
-// other side of its homing's last (within a second) for the other cylinder: straight on at
-// approachSpeed, towards both, until one is nearer and wider (the next sighting of the first is
-// homed on; after a second of the other alone, the other)
-@homeBetweenTwo
-+!homeOn(Off, _) : homingJump(J) & homing(_) & sightOffset(Last) & Off * Last < 0 & math.abs(Off - Last) >= J
-                  & lastSighted(S) & .system_time(T) & T - S < 1000 & approachSpeed(V)
-    <- setSpeeds(V, V).
 // the nearest this homing has seen its cylinder, and when (homingProgress)
 @homeOnNearer
 +!homeOn(Off, Dist) : homingProgress(_) & homing(T0) & not (nearestSighted(T0, N, _) & Dist >= N)
