@@ -23,6 +23,7 @@ deliverFirst(300).
 !start.
 
 { include("skills/team-storage.asl") }
+{ include("skills/storage-exit.asl") }
 { include("skills/team-places.asl") }
 { include("skills/team-way.asl") }
 { include("skills/team-follow.asl") }

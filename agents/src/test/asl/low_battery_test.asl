@@ -164,3 +164,16 @@ mock_operation(_, ok).
        !assert_true(mock_called(stop));
        !assert_false(mock_called(setSpeeds(_, _)));
        .drop_intention(balance); -atCharger.
+
+// after the put-down, in the storage area, facing a wall of its corner (a low battery waits for the
+// way out: @rechargeOutOfArea): no progress there turns the robot to the arena's centre
+// (storage-exit.asl), where it drove into the wall until the battery was empty (wide world 268)
+@[test]
++!test_no_progress_after_the_put_down_turns_the_robot_out_of_the_storage_corner
+    <- !until(not charging, 10000); !forget_calls; -delivering; -picking; -+orientation(90);
+       +insideArea; +~delivered; -+location(0.47, 0, -0.47);
+       !!perceive(stuck);
+       !until(mock_called(forward), 5000);
+       !assert_true(mock_called(computeAngle(0.47, -0.47, 0, 0, _)));   // towards the centre
+       !assert_true(mock_called(forward));
+       -insideArea; -~delivered; -stuck.

@@ -59,16 +59,6 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 @storageChargingFirst +charging : storageTurnMine & not insideArea <- !giveStorageTurn.
 @storageWaitCharging +charging : waitingStorage <- storageDone; -waitingStorage.
 
-// a way out of the storage corner: after the put-down the robot turns back and drives out blind
-// (delivery: no distance sensing in the area, no progress ignored there); one that came in at a
-// slant, or was pushed on its way in, faced a wall of the corner and drove into it until its
-// battery ran low (team world 2, four robots: 220 s). No progress there after the put-down: it
-// turns to the arena's centre, away from the walls, and drives on out
-@stuckLeavingStorage
-+stuck : insideArea & not delivering & not picking & not waitingStorage & location(X, _, Z)
-    <- println("No progress leaving the storage area: out towards the arena's centre");
-       computeAngle(X, Z, 0, 0, A); -+desired(A); !balance; forward.
-
 // while waiting for its turn the robot stands still: obstacles (a robot leaving the area) and the
 // missing progress are no reason to move
 @obstacleWhileWaitingStorage +obstacle(true) : waitingStorage.
