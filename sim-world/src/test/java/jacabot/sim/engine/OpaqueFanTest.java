@@ -56,15 +56,24 @@ class OpaqueFanTest {
         return hits;
     }
 
+    /** A cluttered world of a random side with a robot in it: the side and the robot's ray caster. */
+    private record Scene(double side, RayCaster caster) {
+        static Scene random(Random rnd) {
+            double side = 0.7 + rnd.nextDouble() * 3.3;
+            Physics physics = clutteredWorld(rnd, side);
+            SimObject robot = physics.addRobot("k", 0.0285, 0.03, new Rgb(0, 255, 0), 0.9, 0, 0, 0);
+            return new Scene(side, physics.rayCaster(robot));
+        }
+    }
+
     @Test
     void aFanWithAnOpaqueTestGivesEachRaysHitsUpToItsFirstOpaqueOne() {
         var rnd = new Random(7);
         int opaqueSeen = 0, leftOut = 0;
         for (int world = 0; world < 20; world++) {
-            double side = 0.7 + rnd.nextDouble() * 3.3;
-            Physics physics = clutteredWorld(rnd, side);
-            SimObject robot = physics.addRobot("k", 0.0285, 0.03, new Rgb(0, 255, 0), 0.9, 0, 0, 0);
-            RayCaster caster = physics.rayCaster(robot);
+            Scene scene = Scene.random(rnd);
+            double side = scene.side();
+            RayCaster caster = scene.caster();
             for (int pose = 0; pose < 60; pose++) {
                 Vec2 origin = new Vec2((rnd.nextDouble() - 0.5) * side, (rnd.nextDouble() - 0.5) * side);
                 double heading = rnd.nextDouble() * 1440 - 720;
@@ -95,10 +104,9 @@ class OpaqueFanTest {
         var rnd = new Random(11);
         int pixels = 0, colours = 0;
         for (int world = 0; world < 20; world++) {
-            double side = 0.7 + rnd.nextDouble() * 3.3;
-            Physics physics = clutteredWorld(rnd, side);
-            SimObject robot = physics.addRobot("k", 0.0285, 0.03, new Rgb(0, 255, 0), 0.9, 0, 0, 0);
-            RayCaster caster = physics.rayCaster(robot);
+            Scene scene = Scene.random(rnd);
+            double side = scene.side();
+            RayCaster caster = scene.caster();
             Pose[] mount = new Pose[1];
             int width = 16 + rnd.nextInt(60), height = 1 + rnd.nextInt(12);
             double fov = 20 + rnd.nextDouble() * 100, lens = 0.01 + rnd.nextDouble() * 0.05, range = 0.3 + rnd.nextDouble() * 2;
