@@ -46,7 +46,7 @@ wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (
 // insideArea, travelling, delivering, avoiding (delivery, heading). Rules it offers: rightOfWay(A),
 // standing(A), aheadOfMe(X, Z), teammateInMyWay(X, Z); the rule waitingTurn, which the skills that make a robot wait
 // extend (team-storage, team-follow, team-charger).
-// Needs: team-places (the places published), halted (heading, and the skills that extend it).
+// Needs: team-places (the places published, during a manoeuvre too: !waitPublishing), halted (heading, and the skills that extend it).
 // Include it before delivery (heading): its plan for !cruise comes first.
 
 // the rule both robots follow (never both give way): the higher rank, else the earlier name
@@ -93,10 +93,10 @@ stopDue(A) :- stoppedFor(A, T0) & .system_time(T) & wayStopLimit(L) & T - T0 < L
 @sideStep
 +!sideStep(X, Z) : asideSpeed(V) & asideTurn(Tt) & asideTime(Ta)
     <- if (onGreaterAngle(X, Z)) { setSpeeds(-V, V) } else { setSpeeds(V, -V) };
-       .wait(Tt); setSpeeds(V, V); .wait(Ta); stop.
+       !waitPublishing(Tt); setSpeeds(V, V); !waitPublishing(Ta); stop.
 @giveWay[atomic]
 +robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
-    <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); .wait(T); stop; -givingWay.
+    <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); !waitPublishing(T); stop; -givingWay.
 
 // the robot with the right of way does not push a teammate giving way right ahead of it
 @stopForTeammate[atomic]
