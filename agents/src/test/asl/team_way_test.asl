@@ -4,7 +4,8 @@
 // is right ahead of it when it drives on its way; a teammate standing in the storage area's queue is given way whatever
 // its name, the one whose turn it is before every other, and a robot that would push a teammate
 // ahead by moving on steps aside from it instead; a robot waiting for the charger gives
-// way, one on it does not; a robot that waits does not cruise. The agent under test is named
+// way, one on it does not; a robot that waits does not cruise; a robot giving way publishes its place
+// meanwhile, and moves on from a teammate behind at the speed of travel. The agent under test is named
 // team_way_test: khepera1 comes before it, zeta after it.
 // Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
@@ -127,3 +128,26 @@ mock_operation(_, ok).
        .wait(300);
        !assert_false(mock_called(stop));
        -robotAt(zeta, _, _); -delivering; -stoppedFor(_, _).
+
+// the teammate given way to stops for this robot by its place on the board: an atomic give-way
+// publishes it as it goes (team-places' !waitPublishing), not only once it is over
+@[test]
++!test_a_robot_giving_way_publishes_its_place_meanwhile
+    <- .system_time(T0); -+placePublished(T0);           // just published: not due by the percept
+       -location(_, _, _); +location(0.1, 0, 0.2); -orientation(_); +orientation(90);
+       -storageQueue(_); +storageQueue([khepera1, zeta]); !forget_calls;
+       !!perceive(robotAt(zeta, 0.1, 0.1));              // 10 cm behind, waiting: this robot moves on
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(V, V)) & V > 0);
+       !assert_true(mock_called(at(0.1, 0.2)));          // published before the give-way was over
+       -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).
+
+// a robot giving way to a teammate behind moves on at the speed that one comes on at, travelling
+@[test]
++!test_a_robot_giving_way_to_one_behind_moves_on_at_the_speed_of_travel
+    <- -location(_, _, _); +location(0.1, 0, 0.2); -orientation(_); +orientation(90);
+       -storageQueue(_); +storageQueue([khepera1, zeta]); !forget_calls;
+       !!perceive(robotAt(zeta, 0.1, 0.1));              // 10 cm behind, waiting: this robot moves on
+       !until(mock_called(stop), 3000);
+       !assert_true(mock_called(setSpeeds(V, V)) & travelSpeed(V));
+       -robotAt(zeta, _, _); -storageQueue(_); +storageQueue([]).

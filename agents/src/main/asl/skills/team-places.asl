@@ -8,7 +8,8 @@ placeEvery(400).           // ms between two publications of the robot's place (
 teammateClearance(0.15).   // m: a sighting this near a teammate's last published place is the
                            // teammate's (a cylinder carried 6 cm ahead, a robot's second of travel)
 // Beliefs: placePublished(T). Reads: location(X, Y, Z) (the middleware), robotAt(A, X, Z) (the board).
-// Rules it offers: teammateNear(X, Z).
+// Rules it offers: teammateNear(X, Z). Goals it offers: !waitPublishing(T) (a wait that publishes the
+// place every placeEvery, for a manoeuvre that holds the agent: team-way's).
 // Needs: the board focused (team-claims' setUpTeam); !lookedFrom (team-search: the floor the camera
 // looked over, marked on the team's search map). Include it after team-storage.
 
@@ -22,3 +23,11 @@ teammateNear(X, Z) :- robotAt(A, Rx, Rz) & not .my_name(A) & teammateClearance(R
 @publishPlace[atomic]
 +location(X, _, Z) : .system_time(T) & placeDue(T)
     <- -+placePublished(T); at(X, Z); !lookedFrom(X, Z).
+
+// An atomic manoeuvre (team-way's give-way) holds back @publishPlace, and the teammate it gives way
+// to stops for it only on a fresh place (team-way's @stopForTeammate): a give-way of 600 ms left a
+// stale place on the board, and the one behind drove on into it (a replay of team world 45, four robots).
+@waitPublishingLast +!waitPublishing(T) : placeEvery(E) & T <= E <- .wait(T); !publishPlaceNow.
+@waitPublishing +!waitPublishing(T) : placeEvery(E) <- .wait(E); !publishPlaceNow; !waitPublishing(T - E).
+@publishPlaceNow +!publishPlaceNow : location(X, _, Z) & .system_time(T) <- -+placePublished(T); at(X, Z).
+@noPlaceYet +!publishPlaceNow.

@@ -32,7 +32,10 @@
 wayClearance(0.13).   // m between two robots' centres (a Khepera is 5.7 cm wide, its gripper and a
                       // cylinder held reach 9 cm ahead of its centre)
 wayTime(600).         // ms of the manoeuvre away from a teammate behind
-waySpeed(40).         // wheel speed of that manoeuvre
+// wheel speed of that manoeuvre: the speed a teammate behind comes on at, travelling (far-sight's
+// travelSpeed). (Moving on at 40 while the one behind came on at 100, the robot giving way was caught
+// and pushed: a replay of team world 45, four robots.)
+waySpeed(V) :- travelSpeed(V).
 asideSpeed(100).      // wheel speed of the step aside from a teammate ahead: a turn away, then forward
 asideTurn(450).       // ms of its turn (about 50 degrees)
 asideTime(800).       // ms forward after it (4 cm)
@@ -41,12 +44,12 @@ wayStopTime(400).     // ms of one such stop
 wayStopLimit(3000).   // ms it stops for one teammate at most (then it drives on: its detours go round) ...
 wayStopAgain(10000).  // ... and not again for that teammate during this long
 wayQueueReach(0.45).  // m from the charger where a robot queued for it stands (team-charger)
-// Beliefs: givingWay, stoppedFor(A, Since). Reads: robotAt(A, X, Z), storageQueue(L) (the board),
+// Beliefs: givingWay, stoppedFor(A, Since). Reads: travelSpeed(V) (far-sight), robotAt(A, X, Z), storageQueue(L) (the board),
 // chargerQueue(L) (the charger), charger(X, Z) (the world), location, orientation, atCharger,
 // insideArea, travelling, delivering, avoiding (delivery, heading). Rules it offers: rightOfWay(A),
 // standing(A), aheadOfMe(X, Z), teammateInMyWay(X, Z); the rule waitingTurn, which the skills that make a robot wait
 // extend (team-storage, team-follow, team-charger).
-// Needs: team-places (the places published), halted (heading, and the skills that extend it).
+// Needs: team-places (the places published, during a manoeuvre too: !waitPublishing), halted (heading, and the skills that extend it).
 // Include it before delivery (heading): its plan for !cruise comes first.
 
 // the rule both robots follow (never both give way): the higher rank, else the earlier name
@@ -93,10 +96,10 @@ stopDue(A) :- stoppedFor(A, T0) & .system_time(T) & wayStopLimit(L) & T - T0 < L
 @sideStep
 +!sideStep(X, Z) : asideSpeed(V) & asideTurn(Tt) & asideTime(Ta)
     <- if (onGreaterAngle(X, Z)) { setSpeeds(-V, V) } else { setSpeeds(V, -V) };
-       .wait(Tt); setSpeeds(V, V); .wait(Ta); stop.
+       !waitPublishing(Tt); setSpeeds(V, V); !waitPublishing(Ta); stop.
 @giveWay[atomic]
 +robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
-    <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); .wait(T); stop; -givingWay.
+    <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); !waitPublishing(T); stop; -givingWay.
 
 // the robot with the right of way does not push a teammate giving way right ahead of it
 @stopForTeammate[atomic]
