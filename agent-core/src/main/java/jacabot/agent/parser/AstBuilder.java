@@ -272,7 +272,7 @@ final class AstBuilder {
         Term t = arithTerm(ctx.arithTerm(0));
         for (int i = 1; i < ctx.arithTerm().size(); i++) {
             var op = ctx.op.get(i - 1).getText().equals("+") ? ArithExpr.Op.PLUS : ArithExpr.Op.MINUS;
-            t = new ArithExpr(op, t, arithTerm(ctx.arithTerm(i)));
+            t = new ArithExpr(op, t, arithTerm(ctx.arithTerm(i)), where(ctx));
         }
         return t;
     }
@@ -287,14 +287,14 @@ final class AstBuilder {
                 case "div": op = ArithExpr.Op.INTDIV; break;
                 default: op = ArithExpr.Op.MOD; break;
             }
-            t = new ArithExpr(op, t, arithFactor(ctx.arithFactor(i)));
+            t = new ArithExpr(op, t, arithFactor(ctx.arithFactor(i)), where(ctx));
         }
         return t;
     }
 
     private Term arithFactor(ArithFactorContext ctx) {
         Term base = arithSimple(ctx.arithSimple());
-        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, base, arithFactor(ctx.arithFactor()));
+        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, base, arithFactor(ctx.arithFactor()), where(ctx));
     }
 
     private Term arithSimple(ArithSimpleContext ctx) {
@@ -323,7 +323,7 @@ final class AstBuilder {
             // Jason refuses it as it reads the file ("-p" is no term of its)
             errors.add(where(ctx), "the argument '" + t + "' of operator '-' is not numeric or variable");
         }
-        return ArithExpr.unary(op, t);
+        return ArithExpr.unary(op, t, where(ctx));
     }
 
     // ---- literals and terms --------------------------------------------------------------------

@@ -1,6 +1,7 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.AgentProgram;
+import jacabot.agent.syntax.ArithExpr;
 import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
@@ -59,6 +60,13 @@ final class ArithEvaluator implements Unifier.Evaluator {
         }
         Term value = it.next().apply(result);
         return value.isGround() ? value : null;
+    }
+
+    /** Jason's warning, on the console as its {@code ArithExpr} logger prints it. */
+    @Override
+    public void notANumber(ArithExpr e, Unifier u) {
+        agent.arch().console("[ArithExpr] The value of " + e + " is not a number! Unifier = " + JasonHashOrder.text(u)
+                + ". Code: " + e.src().jasonPosition());
     }
 
     @Override

@@ -187,10 +187,6 @@ public final class Intention implements Iterable<IntendedMeans> {
     }
 
     private static String unifierText(Unifier u) {
-        var sb = new StringBuilder("{");
-        for (var e : JasonHashOrder.of(u.bindings())) {
-            sb.append(sb.length() > 1 ? ", " : "").append(e.getKey()).append('=').append(e.getValue());
-        }
-        return sb.append('}').toString();
+        return JasonHashOrder.text(u);
     }
 }

@@ -23,6 +23,15 @@ public final class JasonHashOrder {
         return v.toString();
     }
 
+    /** {@return the unifier as Jason prints it: {@code {X=a, Y=1}}, in its hash map's order} */
+    public static String text(Unifier u) {
+        var sb = new StringBuilder("{");
+        for (var e : of(u.bindings())) {
+            sb.append(sb.length() > 1 ? ", " : "").append(e.getKey()).append('=').append(e.getValue());
+        }
+        return sb.append('}').toString();
+    }
+
     /** {@return the bindings, given in insertion order, in the order Jason's hash map iterates them} */
     public static List<Map.Entry<Var, Term>> of(Map<Var, Term> bindings) {
         int n = bindings.size();

@@ -79,12 +79,19 @@ public final class Solver {
             return true;
         }
         if (t instanceof ArithExpr e) {
-            return withoutCalls(e.left(), u) && (e.right() == null || withoutCalls(e.right(), u));
+            // an operand that is no number is evaluated with a warning: left to the proof, once
+            return numeric(e.left(), u) && (e.right() == null || numeric(e.right(), u));
         }
         if (t instanceof Literal l) {
             return l.ns() == null && l.tail() == null && allWithoutCalls(l.args(), u) && allWithoutCalls(l.annots(), u);
         }
         return false;
+    }
+
+    /** {@return whether an operand is a number, a free variable or an expression of those} */
+    private static boolean numeric(Term t, Unifier u) {
+        Term d = t instanceof Var ? u.deref(t) : t;
+        return d instanceof NumberTerm || d instanceof Var || d instanceof ArithExpr && withoutCalls(d, u);
     }
 
     private static boolean allWithoutCalls(List<Term> terms, Unifier u) {

@@ -62,15 +62,7 @@ final class Substitution {
             return ListTerm.of(items, x instanceof ListTerm ? x : apply(u, x));
         }
         if (t instanceof ArithExpr e) {
-            Term l = apply(u, e.left());
-            Term r = e.right() == null ? null : apply(u, e.right());
-            if (l instanceof NumberTerm nl && (r == null || r instanceof NumberTerm)) {
-                if (r == null) {
-                    return e.op() == ArithExpr.Op.MINUS ? new NumberTerm(-nl.value()) : nl;
-                }
-                return new NumberTerm(e.op().apply(nl.value(), ((NumberTerm) r).value()));
-            }
-            return new ArithExpr(e.op(), l, r);
+            return arithmetic(u, e);
         }
         if (t instanceof ArithFunction f) {
             var applied = new ArithFunction(f.name(), applyAll(u, f.args()));
@@ -113,6 +105,40 @@ final class Substitution {
             return av.wrap(apply(u, d), annots, ns);
         }
         return t;
+    }
+
+    /**
+     * Jason's evaluation of an expression, operands left to right: one that cannot be solved yet (a
+     * free variable, an expression or function over one) leaves the expression as written, its
+     * variables unreplaced, as Jason's copy of it; one bound to what is no number (an atom, a string,
+     * a list) makes it NaN, with Jason's warning.
+     */
+    private static Term arithmetic(Unifier u, ArithExpr e) {
+        Term l = apply(u, e.left());
+        if (!(l instanceof NumberTerm nl)) {
+            return unsolved(l) ? e : notANumber(u, e);
+        }
+        if (e.isUnary()) {
+            return e.op() == ArithExpr.Op.MINUS ? new NumberTerm(-nl.value()) : nl;
+        }
+        Term r = apply(u, e.right());
+        if (!(r instanceof NumberTerm nr)) {
+            return unsolved(r) ? e : notANumber(u, e);
+        }
+        return new NumberTerm(e.op().apply(nl.value(), nr.value()));
+    }
+
+    /** {@return whether an operand is a number still to come: Jason's numeric terms with no value yet} */
+    private static boolean unsolved(Term operand) {
+        return operand instanceof Var || operand instanceof AnnotatedVar || operand instanceof ArithExpr
+                || operand instanceof ArithFunction;
+    }
+
+    private static Term notANumber(Unifier u, ArithExpr e) {
+        if (u.evaluator() != null) {
+            u.evaluator().notANumber(e, u);
+        }
+        return new NumberTerm(Double.NaN);
     }
 
     /**

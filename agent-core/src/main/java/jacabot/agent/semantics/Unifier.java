@@ -33,6 +33,10 @@ public final class Unifier {
     public interface Evaluator {
         /** {@return the function's value, or null when its arguments are not bound numbers} */
         Term evaluate(ArithFunction f, Unifier u);
+
+        /** An operand of the expression, as {@code u} binds it, is no number: the expression is NaN. */
+        default void notANumber(ArithExpr e, Unifier u) {
+        }
     }
 
     public Unifier() {
@@ -290,7 +294,7 @@ public final class Unifier {
             return unifyLiterals(la, lb);
         }
         if (a instanceof NumberTerm na && b instanceof NumberTerm nb) {
-            return na.value() == nb.value();
+            return na.equals(nb); // a NaN only with itself, as Jason's equals
         }
         if (a instanceof Var va) {
             if (b instanceof Var vb && va.equals(vb)) {

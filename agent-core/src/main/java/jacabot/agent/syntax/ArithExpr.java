@@ -1,7 +1,15 @@
 package jacabot.agent.syntax;
 
-/** An arithmetic expression; evaluated to a {@link NumberTerm} once its variables are bound. */
-public record ArithExpr(Op op, Term left, Term right) implements OperatorExpr {
+/**
+ * An arithmetic expression; evaluated to a {@link NumberTerm} once its variables are bound. Its
+ * source is where it was written, for Jason's warning when an operand is not a number; it takes no
+ * part in equality.
+ */
+public record ArithExpr(Op op, Term left, Term right, SourceInfo src) implements OperatorExpr {
+
+    public ArithExpr(Op op, Term left, Term right) {
+        this(op, left, right, SourceInfo.NONE);
+    }
 
     /** Arithmetic operators, with Jason's printed forms. */
     public enum Op {
@@ -32,12 +40,27 @@ public record ArithExpr(Op op, Term left, Term right) implements OperatorExpr {
     }
 
     /** A unary expression ({@code -X}, {@code +X}). */
-    public static ArithExpr unary(Op op, Term operand) {
-        return new ArithExpr(op, operand, null);
+    public static ArithExpr unary(Op op, Term operand, SourceInfo src) {
+        return new ArithExpr(op, operand, null, src);
+    }
+
+    /** {@return the same expression over other operands, written at the same place} */
+    public ArithExpr with(Term left, Term right) {
+        return new ArithExpr(op, left, right, src);
     }
 
     public boolean isUnary() {
         return right == null;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o == this || o instanceof ArithExpr e && op == e.op && left.equals(e.left) && java.util.Objects.equals(right, e.right);
+    }
+
+    @Override
+    public int hashCode() {
+        return (op.hashCode() * 31 + left.hashCode()) * 31 + java.util.Objects.hashCode(right);
     }
 
     @Override

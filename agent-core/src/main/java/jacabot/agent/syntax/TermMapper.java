@@ -55,7 +55,7 @@ public abstract class TermMapper implements TermVisitor<Term> {
 
     @Override
     public Term visitArith(ArithExpr e) {
-        return new ArithExpr(e.op(), map(e.left()), e.right() == null ? null : map(e.right()));
+        return e.with(map(e.left()), e.right() == null ? null : map(e.right()));
     }
 
     @Override

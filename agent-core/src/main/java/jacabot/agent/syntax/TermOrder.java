@@ -27,6 +27,14 @@ public final class TermOrder {
         return 4;
     }
 
+    /**
+     * Jason's order of numbers: by {@code >} and {@code <}, so NaN is neither before nor after any
+     * number (a NaN in {@code .sort} stays where it is; {@code NaN >= 3} holds) and -0 equals 0.
+     */
+    private static int compareNumbers(double x, double y) {
+        return x > y ? 1 : x < y ? -1 : 0;
+    }
+
     public static int compare(Term a, Term b) {
         int ra = rank(a);
         int rb = rank(b);
@@ -35,7 +43,7 @@ public final class TermOrder {
         }
         switch (ra) {
             case 0:
-                return Double.compare(((NumberTerm) a).value(), ((NumberTerm) b).value());
+                return compareNumbers(((NumberTerm) a).value(), ((NumberTerm) b).value());
             case 1:
                 return ((StringTerm) a).value().compareTo(((StringTerm) b).value());
             case 2:

@@ -30,12 +30,12 @@ class ShortcutTest {
         List<String> out = run("""
                 !g.
                 +!g <- +c(1)[source(x)]; +c(2); -+c(9);
-                       .findall(X/S, c(X)[source(S)], L1); .print(L1);
+                       .findall(b(X, S), c(X)[source(S)], L1); .print(L1);
                        -+c(7)[source(x)];
-                       .findall(X/S, c(X)[source(S)], L2); .print(L2);
+                       .findall(b(X, S), c(X)[source(S)], L2); .print(L2);
                        .stopMAS.
                 """);
-        assertEquals(List.of("[(9/self),(1/x)]", "[(7/x),(9/self)]"), out.subList(0, 2));
+        assertEquals(List.of("[b(9,self),b(1,x)]", "[b(7,x),b(9,self)]"), out.subList(0, 2));
         // each !h(_) renames its variable (seen in the goal's trigger, { +!h(_27)[source(self)] });
         // -+d(1, 2) takes one number more than -+c(3) (Jason 3.2.0 prints _27, _40, _52 run alone)
         List<String> goals = run("""
