@@ -1,5 +1,6 @@
 // Arithmetic over an operand bound to what is no number: NaN, with Jason's
-// [ArithExpr] warning; an operand still free leaves the expression as written.
+// [ArithExpr] warning; an operand still free leaves the expression as written,
+// and so does a function whose argument is free.
 v(a).
 w(1).
 !start.
@@ -20,6 +21,7 @@ w(1).
    +c(X * 3); ?c(C); .print(c, C);
    for (.member(E, [1, b])) { .print(e, E + 1) }
    !g1; !g2; !g3(X - 1); !g4(Y + 1);
+   K = 3; .print(f1, math.max(K, W)); .print(f2, math.abs(W) + K);
    .print(done); .stopMAS.
 +!g1 : v(X) & X + 1 > 2 <- .print(g1a).
 +!g1 <- .print(g1b).

@@ -72,7 +72,8 @@ final class Substitution {
                     return value;
                 }
             }
-            return applied;
+            // as Jason's copy of a function it cannot evaluate yet: as written (math.max(X,Z))
+            return f;
         }
         if (t instanceof RelExpr r) {
             return new RelExpr(r.op(), apply(u, r.left()), apply(u, r.right()));

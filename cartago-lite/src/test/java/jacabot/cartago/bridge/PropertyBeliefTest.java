@@ -40,10 +40,10 @@ class PropertyBeliefTest {
                 !go.
                 +!go <- makeArtifact("t", "%s", [], T); focus(T);
                         .findall(X, v(X), L1); .print(L1); bump;
-                        .findall(X, v(X), L2); .findall(A/B, w(A, B), W); .print(L2, W); drop;
+                        .findall(X, v(X), L2); .findall(p(A, B), w(A, B), W); .print(L2, W); drop;
                         .findall(X, v(X), L3); .print(L3).
                 """.formatted(Twins.class.getName())).run(10_000);
         // percepts go to the front of the belief base: the newest first
-        assertEquals(List.of("[user] [2,1]", "[user] [3,1][(\"b\"/2.5)]", "[user] [3]"), h.lines());
+        assertEquals(List.of("[user] [2,1]", "[user] [3,1][p(\"b\",2.5)]", "[user] [3]"), h.lines());
     }
 }
