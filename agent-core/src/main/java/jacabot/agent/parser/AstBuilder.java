@@ -272,7 +272,21 @@ final class AstBuilder {
         Term t = arithTerm(ctx.arithTerm(0));
         for (int i = 1; i < ctx.arithTerm().size(); i++) {
             var op = ctx.op.get(i - 1).getText().equals("+") ? ArithExpr.Op.PLUS : ArithExpr.Op.MINUS;
-            t = new ArithExpr(op, t, arithTerm(ctx.arithTerm(i)), where(ctx));
+            Term left = operand(t, "ArithExpr", "first", ctx);
+            t = new ArithExpr(op, left, operand(arithTerm(ctx.arithTerm(i)), "ArithExpr", "second", ctx), where(ctx));
+        }
+        return t;
+    }
+
+    /**
+     * An operand of an arithmetic operator as Jason's parser takes it: a number, a variable, an
+     * expression or a function; an atom, a structure or a relation there is an error as it reads
+     * the file (its message names the grammar rule: ArithExpr for + and -, ArithTerm for *, /, div
+     * and mod, ArithFactor for **).
+     */
+    private Term operand(Term t, String rule, String which, ParserRuleContext ctx) {
+        if (t instanceof Literal || t instanceof RelExpr || t instanceof LogExpr) {
+            errors.add(where(ctx), rule + ": " + which + " operand '" + t + "' is not numeric or variable");
         }
         return t;
     }
@@ -287,14 +301,16 @@ final class AstBuilder {
                 case "div": op = ArithExpr.Op.INTDIV; break;
                 default: op = ArithExpr.Op.MOD; break;
             }
-            t = new ArithExpr(op, t, arithFactor(ctx.arithFactor(i)), where(ctx));
+            Term left = operand(t, "ArithTerm", "first", ctx);
+            t = new ArithExpr(op, left, operand(arithFactor(ctx.arithFactor(i)), "ArithTerm", "second", ctx), where(ctx));
         }
         return t;
     }
 
     private Term arithFactor(ArithFactorContext ctx) {
         Term base = arithSimple(ctx.arithSimple());
-        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, base, arithFactor(ctx.arithFactor()), where(ctx));
+        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, operand(base, "ArithFactor", "first", ctx),
+                operand(arithFactor(ctx.arithFactor()), "ArithFactor", "second", ctx), where(ctx));
     }
 
     private Term arithSimple(ArithSimpleContext ctx) {

@@ -10,6 +10,7 @@ import jacabot.agent.syntax.Plan;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -74,6 +75,20 @@ class AslParserTest {
             assertTrue(e.getMessage().contains("of operator '-' is not numeric or variable"), e.getMessage());
         }
         parser.parse("+!g <- .print(-X, -(1+2), -math.abs(-3), - 3).\n", "m.asl");
+    }
+
+    @Test
+    void anOperandThatIsNoNumberIsAnErrorAsInJason() throws Exception {
+        // Jason 3.2.0's messages, the grammar rule of the operator named
+        var cases = Map.of("1 + a", "ArithExpr: second operand 'a' is not numeric or variable",
+                "f(1) * 2", "ArithTerm: first operand 'f(1)' is not numeric or variable",
+                "a ** 2", "ArithFactor: first operand 'a' is not numeric or variable",
+                "(X > 1) - 1", "ArithExpr: first operand '(X > 1)' is not numeric or variable");
+        for (var c : cases.entrySet()) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- Y = " + c.getKey() + ".\n", "m.asl"));
+            assertTrue(e.getMessage().contains("m.asl:1:12: error: " + c.getValue()), e.getMessage());
+        }
+        parser.parse("+!g <- Y = X + 1 - Z * 2 ** -W / math.abs(V) + .length(L) mod 3.\n", "m.asl");
     }
 
     @Test
