@@ -9,6 +9,7 @@ import org.dyn4j.collision.broadphase.AABBExpansionMethod;
 import org.dyn4j.collision.broadphase.AABBProducer;
 import org.dyn4j.collision.broadphase.BroadphaseDetector;
 import org.dyn4j.collision.broadphase.BroadphaseFilter;
+import org.dyn4j.collision.broadphase.DynamicAABBTree;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.geometry.AABB;
 import org.dyn4j.geometry.Convex;
@@ -28,14 +29,19 @@ import org.dyn4j.geometry.Vector2;
  * ({@link TrackedBody#teleported()}), until a step finds it where it was (dyn4j copies its transform
  * to its previous one once, at a step). Nothing else moves a fixed body, so the fixed bodies left
  * out are those the comparison would find still, and with none watched a step walks the moving
- * items alone (the walls and fixed boxes of an arena are most of its items).
+ * items alone (the walls and fixed boxes of an arena are most of its items). An item whose box the
+ * tree would keep is not handed to the tree, which would look it up in its map to learn that.
  * The tree's questions about one item (does it hold it, was it updated in this step, do two items'
  * boxes overlap), which dyn4j asks for every pair it keeps at every step, are answered from the
  * item's entry, which its body holds ({@link TrackedBody}), with the tree's answers. Every other call
  * goes to the tree as is.
  */
 final class StillFixedBodies<T> implements BroadphaseDetector<T> {
-    private final BroadphaseDetector<T> tree;
+    private final DynamicAABBTree<T> tree;
+    private final AABBProducer<T> producer;
+    private final AABBExpansionMethod<T> expansion;
+    /** An item's new box, before the tree is asked to update it. */
+    private final AABB fresh = new AABB(0, 0, 0, 0);
     private final Function<T, Body> bodyOf;
     private final Slot<T> slot;
     /** Every item in the order the tree holds it (the order it was added). */
@@ -51,8 +57,10 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
      * @param slot where a body keeps its entry in this tree ({@link TrackedBody}): the questions below
      *             are answered from the entry, without the tree's hash lookups
      */
-    StillFixedBodies(BroadphaseDetector<T> tree, Function<T, Body> bodyOf, Slot<T> slot) {
+    StillFixedBodies(DynamicAABBTree<T> tree, Function<T, Body> bodyOf, Slot<T> slot) {
         this.tree = tree;
+        this.producer = tree.getAABBProducer();
+        this.expansion = tree.getAABBExpansionMethod();
         this.bodyOf = bodyOf;
         this.slot = slot;
     }
@@ -125,8 +133,21 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
         }
     }
 
+    /**
+     * Updates an item as the tree does, without the tree's lookup of the item when the tree would
+     * keep it where it is: {@code DynamicAABBTree.updateNode} keeps a box that holds the item's new
+     * box and whose perimeter is at most twice the new box grown; that is asked here the same way,
+     * with the tree's own box producer and growth.
+     */
     private void updateItem(Entry<T> e) {
         AABB box = e.box;
+        producer.compute(e.item, fresh);
+        if (box.contains(fresh)) {
+            expansion.expand(e.item, fresh);
+            if (box.getPerimeter() / fresh.getPerimeter() <= 2) {
+                return;
+            }
+        }
         double minX = box.getMinX(), minY = box.getMinY(), maxX = box.getMaxX(), maxY = box.getMaxY();
         tree.update(e.item);
         if (box.getMinX() != minX || box.getMinY() != minY || box.getMaxX() != maxX || box.getMaxY() != maxY) {
