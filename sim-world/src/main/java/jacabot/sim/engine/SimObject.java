@@ -56,6 +56,9 @@ final class SimObject {
         body.getTransform().setRotation(Math.toRadians(heading));
         body.setLinearVelocity(0, 0);
         body.setAngularVelocity(0);
+        if (body instanceof TrackedBody t) {
+            t.teleported();
+        }
     }
 
     /** Makes the body a ghost (no collision response) or solid again. */

@@ -9,6 +9,7 @@ import org.dyn4j.collision.broadphase.AABBExpansionMethod;
 import org.dyn4j.collision.broadphase.AABBProducer;
 import org.dyn4j.collision.broadphase.BroadphaseDetector;
 import org.dyn4j.collision.broadphase.BroadphaseFilter;
+import org.dyn4j.collision.broadphase.DynamicAABBTree;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.geometry.AABB;
 import org.dyn4j.geometry.Convex;
@@ -24,17 +25,31 @@ import org.dyn4j.geometry.Vector2;
  * changes nothing. Here the items are updated in the tree's own order (the order they were added),
  * each moving body as before and a fixed body only when its transform, or the previous transform a
  * swept box is made from, differs from its last update's (the supervisor may teleport a fixed box).
+ * A fixed body is compared only while it is watched: from its addition, and from a teleport
+ * ({@link TrackedBody#teleported()}), until a step finds it where it was (dyn4j copies its transform
+ * to its previous one once, at a step). Nothing else moves a fixed body, so the fixed bodies left
+ * out are those the comparison would find still, and with none watched a step walks the moving
+ * items alone (the walls and fixed boxes of an arena are most of its items). An item whose box the
+ * tree would keep is not handed to the tree, which would look it up in its map to learn that.
  * The tree's questions about one item (does it hold it, was it updated in this step, do two items'
  * boxes overlap), which dyn4j asks for every pair it keeps at every step, are answered from the
  * item's entry, which its body holds ({@link TrackedBody}), with the tree's answers. Every other call
  * goes to the tree as is.
  */
 final class StillFixedBodies<T> implements BroadphaseDetector<T> {
-    private final BroadphaseDetector<T> tree;
+    private final DynamicAABBTree<T> tree;
+    private final AABBProducer<T> producer;
+    private final AABBExpansionMethod<T> expansion;
+    /** An item's new box, before the tree is asked to update it. */
+    private final AABB fresh = new AABB(0, 0, 0, 0);
     private final Function<T, Body> bodyOf;
     private final Slot<T> slot;
     /** Every item in the order the tree holds it (the order it was added). */
     private final List<Entry<T>> entries = new ArrayList<>();
+    /** The items of moving bodies, in the same order. */
+    private final List<Entry<T>> moving = new ArrayList<>();
+    /** How many fixed items are watched: compared with their last update at each step. */
+    private int watched;
     /** Counts the tree's {@link #clearUpdates()}: an entry updated in this round holds the current count. */
     private long round;
 
@@ -42,8 +57,10 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
      * @param slot where a body keeps its entry in this tree ({@link TrackedBody}): the questions below
      *             are answered from the entry, without the tree's hash lookups
      */
-    StillFixedBodies(BroadphaseDetector<T> tree, Function<T, Body> bodyOf, Slot<T> slot) {
+    StillFixedBodies(DynamicAABBTree<T> tree, Function<T, Body> bodyOf, Slot<T> slot) {
         this.tree = tree;
+        this.producer = tree.getAABBProducer();
+        this.expansion = tree.getAABBExpansionMethod();
         this.bodyOf = bodyOf;
         this.slot = slot;
     }
@@ -65,13 +82,32 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
         final Body body;
         /** The transform and previous transform of the last update; null for a moving body. */
         final Transform[] last;
+        private final StillFixedBodies<T> tree;
         AABB box;
         long updatedRound = -1;
+        /** A fixed item that may have moved since its last update. */
+        private boolean watched;
 
-        Entry(T item, Body body, Transform[] last) {
+        Entry(T item, Body body, Transform[] last, StillFixedBodies<T> tree) {
             this.item = item;
             this.body = body;
             this.last = last;
+            this.tree = tree;
+        }
+
+        /** Its body was moved from outside dyn4j's step: a fixed item is compared again. */
+        void watch() {
+            if (last != null && !watched) {
+                watched = true;
+                tree.watched++;
+            }
+        }
+
+        private void unwatch() {
+            if (watched) {
+                watched = false;
+                tree.watched--;
+            }
         }
     }
 
@@ -82,16 +118,40 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
      */
     @Override
     public void update() {
-        for (int i = 0, n = entries.size(); i < n; i++) {
-            Entry<T> e = entries.get(i);
-            if (e.last == null || moved(e.body, e.last)) {
-                AABB box = e.box;
-                double minX = box.getMinX(), minY = box.getMinY(), maxX = box.getMaxX(), maxY = box.getMaxY();
-                tree.update(e.item);
-                if (box.getMinX() != minX || box.getMinY() != minY || box.getMaxX() != maxX || box.getMaxY() != maxY) {
-                    e.updatedRound = round;
+        List<Entry<T>> walk = watched == 0 ? moving : entries;
+        for (int i = 0, n = walk.size(); i < n; i++) {
+            Entry<T> e = walk.get(i);
+            if (e.last == null) {
+                updateItem(e);
+            } else if (e.watched) {
+                if (moved(e.body, e.last)) {
+                    updateItem(e);
+                } else {
+                    e.unwatch();
                 }
             }
+        }
+    }
+
+    /**
+     * Updates an item as the tree does, without the tree's lookup of the item when the tree would
+     * keep it where it is: {@code DynamicAABBTree.updateNode} keeps a box that holds the item's new
+     * box and whose perimeter is at most twice the new box grown; that is asked here the same way,
+     * with the tree's own box producer and growth.
+     */
+    private void updateItem(Entry<T> e) {
+        AABB box = e.box;
+        producer.compute(e.item, fresh);
+        if (box.contains(fresh)) {
+            expansion.expand(e.item, fresh);
+            if (box.getPerimeter() / fresh.getPerimeter() <= 2) {
+                return;
+            }
+        }
+        double minX = box.getMinX(), minY = box.getMinY(), maxX = box.getMaxX(), maxY = box.getMaxY();
+        tree.update(e.item);
+        if (box.getMinX() != minX || box.getMinY() != minY || box.getMaxX() != maxX || box.getMaxY() != maxY) {
+            e.updatedRound = round;
         }
     }
 
@@ -122,8 +182,12 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
             Body body = bodyOf.apply(item);
             e = new Entry<>(item, body, BroadPhases.fixed(body)
                     ? new Transform[] {body.getTransform().copy(), body.getPreviousTransform().copy()}
-                    : null);
+                    : null, this);
             entries.add(e);
+            if (e.last == null) {
+                moving.add(e);
+            }
+            e.watch(); // its previous transform is not yet dyn4j's
             slot.set(item, e);
         }
         e.box = tree.getAABB(item);
@@ -146,7 +210,9 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
     public boolean remove(T object) {
         Entry<T> e = entry(object);
         if (e != null) {
+            e.unwatch();
             entries.remove(e);
+            moving.remove(e);
             slot.set(object, null);
         }
         return tree.remove(object);
@@ -158,6 +224,8 @@ final class StillFixedBodies<T> implements BroadphaseDetector<T> {
             slot.set(e.item, null);
         }
         entries.clear();
+        moving.clear();
+        watched = 0;
         tree.clear();
     }
 

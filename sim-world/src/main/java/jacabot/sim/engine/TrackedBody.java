@@ -11,4 +11,17 @@ import org.dyn4j.dynamics.Body;
 final class TrackedBody extends Body {
     StillFixedBodies.Entry<?> contactEntry;
     StillFixedBodies.Entry<?> continuousEntry;
+
+    /**
+     * Tells the broad phases that the body was moved from outside dyn4j's step (a teleport): a fixed
+     * body is measured again only then ({@link StillFixedBodies}).
+     */
+    void teleported() {
+        if (contactEntry != null) {
+            contactEntry.watch();
+        }
+        if (continuousEntry != null) {
+            continuousEntry.watch();
+        }
+    }
 }

@@ -108,6 +108,9 @@ class BroadPhasesTest {
                     Body robot = w.getBody(w.getBodyCount() - 1);
                     w.getBody(5).getTransform().setTranslation(robot.getTransform().getTranslationX() + 0.1,
                             robot.getTransform().getTranslationY());
+                    if (w.getBody(5) instanceof TrackedBody t) {
+                        t.teleported(); // as SimObject.place says it
+                    }
                 }
             }
             plain.step(1);
