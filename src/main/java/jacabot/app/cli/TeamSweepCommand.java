@@ -55,6 +55,10 @@ final class TeamSweepCommand implements Callable<Integer> {
             + "1..K or a list (default ${DEFAULT-VALUE})")
     private String worldSeeds = "1..5";
 
+    @Option(names = "--cylinders", paramLabel = "MIN..MAX", description = "the generated worlds' red cylinders, drawn in "
+            + "MIN..MAX (default 10..14, the range the team's targets were set on; another range gives other worlds)")
+    private String cylinders;
+
     @Option(names = "--seeds", paramLabel = "SEEDS", description = "run seeds: 1..N or a list (default ${DEFAULT-VALUE})")
     private String seeds = "1";
 
@@ -95,6 +99,8 @@ final class TeamSweepCommand implements Callable<Integer> {
         double seconds = ExperimentCommand.duration(duration);
         List<Long> runSeeds = seedsOf("--seeds", seeds);
         List<Long> worlds = seedsOf("--world-seeds", worldSeeds);
+        WorldGenerator.CylinderRange range = cylinders == null ? WorldGenerator.CylinderRange.TEAM
+                : WorldCommand.Generate.cylinderRange(cylinders);
         if (jobs < 1 || robots.stream().anyMatch(n -> n < 1 || n > WorldGenerator.MAX_TEAM)) {
             throw new UserError("--jobs must be at least 1, --robots 1.." + WorldGenerator.MAX_TEAM);
         }
@@ -113,7 +119,7 @@ final class TeamSweepCommand implements Callable<Integer> {
         Map<Integer, Row> finished = new ConcurrentSkipListMap<>();
         Path csvFile = out.resolve("runs.csv");
         for (long w : worlds) {
-            WorldSpec spec = WorldGenerator.team(largest, w).generate().spec();
+            WorldSpec spec = WorldGenerator.team(largest, w).cylinders(range).generate().spec();
             for (long seed : runSeeds) {
                 for (int n : robots) {
                     WorldSpec team = TeamWorld.firstRobots(spec, n);
@@ -149,7 +155,7 @@ final class TeamSweepCommand implements Callable<Integer> {
         for (Future<Row> f : futures) {
             rows.add(f.get()); // runs.csv is whole already: each run wrote it after its row was in
         }
-        String report = report(rows, seconds);
+        String report = report(rows, seconds, range);
         Files.writeString(out.resolve("report.md"), report);
         report.lines().forEach(log::result);
         log.result("Written: " + out.resolve("runs.csv") + ", " + out.resolve("report.md"));
@@ -206,9 +212,10 @@ final class TeamSweepCommand implements Callable<Integer> {
      * order), the ratio to one robot on the same worlds and seeds, how the runs fared on each team
      * criterion, and the criteria met.
      */
-    private static String report(List<Row> all, double seconds) {
+    private static String report(List<Row> all, double seconds, WorldGenerator.CylinderRange range) {
         var sb = new StringBuilder("# team-delivery sweep\n\n");
-        sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds.%n%n", all.size(), seconds));
+        sb.append(String.format(Locale.ROOT, "%d runs of %.0f simulated seconds%s.%n%n", all.size(), seconds,
+                range.equals(WorldGenerator.CylinderRange.TEAM) ? "" : ", worlds of " + range + " cylinders"));
         List<Row> rows = all.stream().filter(r -> !r.crashed()).toList();
         if (rows.size() < all.size()) {
             sb.append(String.format(Locale.ROOT, "%d crashed (left out of the table; their reasons are in runs.csv).%n%n",

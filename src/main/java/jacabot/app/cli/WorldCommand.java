@@ -45,6 +45,11 @@ final class WorldCommand implements Runnable {
                 + WorldGenerator.MAX_TEAM + " (default ${DEFAULT-VALUE})")
         private int robots = 2;
 
+        @Option(names = "--cylinders", paramLabel = "MIN..MAX", description = "team-delivery only: how many red cylinders, "
+                + "drawn in MIN..MAX (default 10..14, the range the team's targets were set on; another range gives "
+                + "another world for the same seed)")
+        private String cylinders;
+
         @Option(names = "--seed", paramLabel = "N", required = true, description = "the generator's seed (also the world's seed)")
         private long seed;
 
@@ -75,12 +80,18 @@ final class WorldCommand implements Runnable {
                     throw new UserError("--robots must be 1 to " + WorldGenerator.MAX_TEAM + ", got " + robots);
                 }
                 generator = WorldGenerator.team(robots, seed);
+                if (cylinders != null) {
+                    generator.cylinders(cylinderRange(cylinders));
+                }
             } else {
                 Experiment e = Experiment.parse(experiment).orElseThrow(() -> new UserError("unknown experiment '"
                         + experiment + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, "
                         + "tidy-up, " + WorldGenerator.TEAM_DELIVERY + ")"));
                 if (spec.commandLine().getParseResult().hasMatchedOption("--robots")) {
                     throw new UserError("--robots is for " + WorldGenerator.TEAM_DELIVERY + " only; " + e.id() + " has one robot");
+                }
+                if (cylinders != null) {
+                    throw new UserError("--cylinders is for " + WorldGenerator.TEAM_DELIVERY + " only");
                 }
                 generator = new WorldGenerator(e, seed);
             }
@@ -97,6 +108,15 @@ final class WorldCommand implements Runnable {
                 Files.writeString(out, json, StandardCharsets.UTF_8);
             }
             return 0;
+        }
+
+        /** {@return the range of a --cylinders value} @throws UserError on a bad one */
+        static WorldGenerator.CylinderRange cylinderRange(String text) {
+            try {
+                return WorldGenerator.CylinderRange.parse(text);
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--cylinders: " + e.getMessage());
+            }
         }
     }
 }

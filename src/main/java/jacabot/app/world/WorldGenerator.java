@@ -118,6 +118,7 @@ public final class WorldGenerator {
     private final long seed;
     private Double maxSide;
     private Profile profile = Profile.CLASSIC;
+    private CylinderRange teamCylinders = CylinderRange.TEAM;
 
     private SplittableRandom random;
     private RobotModel model;
@@ -145,6 +146,50 @@ public final class WorldGenerator {
         return new WorldGenerator(new Recipe(null, TEAM_DELIVERY + "-" + robots, TEAM_DELIVERY + " --robots " + robots,
                 "the team-delivery experiment (" + robots + " Khepera" + (robots == 1 ? "" : "s") + ")",
                 TEAM_SALT, robots, true, true, 1.5), seed);
+    }
+
+    /**
+     * How many red cylinders a team world holds, drawn in {@code min..max}. The default is the range
+     * the team's targets were set on; another range draws a different world from the same seed.
+     */
+    public record CylinderRange(int min, int max) {
+        /** The team worlds' range (10-14). */
+        public static final CylinderRange TEAM = new CylinderRange(10, 14);
+        /** The most cylinders a range may ask for (a small arena may hold fewer: the generator stops when the floor is full). */
+        public static final int MOST = 60;
+
+        public CylinderRange {
+            if (min < 1 || max < min || max > MOST) {
+                throw new IllegalArgumentException("cylinders must be a range MIN..MAX with 1 <= MIN <= MAX <= " + MOST
+                        + ", got " + min + ".." + max);
+            }
+        }
+
+        /** {@return the range of "MIN..MAX" or "N"} @throws IllegalArgumentException on anything else */
+        public static CylinderRange parse(String text) {
+            try {
+                int dots = text.indexOf("..");
+                return dots < 0 ? new CylinderRange(Integer.parseInt(text.trim()), Integer.parseInt(text.trim()))
+                        : new CylinderRange(Integer.parseInt(text.substring(0, dots).trim()),
+                                Integer.parseInt(text.substring(dots + 2).trim()));
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("cylinders: '" + text + "' is not a range (examples: 10..14, 20..24, 16)");
+            }
+        }
+
+        @Override
+        public String toString() {
+            return min + ".." + max;
+        }
+    }
+
+    /** A team world's cylinders drawn in {@code range} (default {@link CylinderRange#TEAM}: the same draw, so the same worlds). */
+    public WorldGenerator cylinders(CylinderRange range) {
+        if (experiment != null) {
+            throw new IllegalArgumentException("the cylinders' range is for team worlds only");
+        }
+        this.teamCylinders = range;
+        return this;
     }
 
     /** {@return the name of robot {@code i} (0-based) of a team} */
@@ -264,7 +309,8 @@ public final class WorldGenerator {
         // cylinders before the boxes, so that boxes keep clear of them
         List<String> cylinders = new ArrayList<>();
         List<String> cylinderIds = new ArrayList<>();
-        int nCylinders = experiment == null ? 10 + random.nextInt(5) : switch (experiment) {
+        int nCylinders = experiment == null ? teamCylinders.min() + random.nextInt(teamCylinders.max() - teamCylinders.min() + 1)
+                : switch (experiment) {
             case OBSTACLE_AVOIDANCE -> 0;
             case OBJECT_PICKING -> 1 + random.nextInt(3);
             default -> 2 + random.nextInt(3);

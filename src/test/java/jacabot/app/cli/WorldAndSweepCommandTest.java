@@ -51,6 +51,34 @@ class WorldAndSweepCommandTest {
     }
 
     @Test
+    void aTeamWorldsCylindersComeInTheRangeAskedTheDefaultRangeKeepingEveryWorld(@TempDir Path dir) throws Exception {
+        var plain = CliRun.run("world", "generate", "team-delivery", "--robots", "4", "--seed", "80");
+        var asDefault = CliRun.run("world", "generate", "team-delivery", "--robots", "4", "--seed", "80", "--cylinders", "10..14");
+        assertEquals("0", asDefault[0], asDefault[2]);
+        assertEquals(plain[1], asDefault[1]); // the same draw: the worlds measured so far stay as they were
+        for (long seed = 1; seed <= 4; seed++) {
+            Path file = dir.resolve("more-" + seed + ".json");
+            var more = CliRun.run("world", "generate", "team-delivery", "--robots", "4", "--seed", Long.toString(seed),
+                    "--cylinders", "20..24", "--out", file.toString());
+            assertEquals("0", more[0], more[2]);
+            int n = WorldFileReader.read(file).cylinders().size();
+            assertTrue(n >= 20 && n <= 24, "world " + seed + ": " + n + " cylinders");
+        }
+        var backwards = CliRun.run("world", "generate", "team-delivery", "--seed", "1", "--cylinders", "14..10");
+        assertEquals("2", backwards[0]);
+        assertEquals("error: --cylinders: cylinders must be a range MIN..MAX with 1 <= MIN <= MAX <= 60, got 14..10",
+                backwards[2].strip());
+        assertEquals("error: --cylinders: cylinders: 'many' is not a range (examples: 10..14, 20..24, 16)",
+                CliRun.run("world", "generate", "team-delivery", "--seed", "1", "--cylinders", "many")[2].strip());
+        var sweep = CliRun.run("sweep", "team-delivery", "--robots", "1", "--world-seeds", "1", "--seeds", "1", "--duration", "2s",
+                "--controllers", "baseline", "--cylinders", "20..24", "--out", dir.toString());
+        assertEquals("0", sweep[0], sweep[2]);
+        assertTrue(Files.readString(dir.resolve("report.md")).contains("1 runs of 2 simulated seconds, worlds of 20..24 cylinders."));
+        assertEquals("error: --cylinders is for team-delivery only",
+                CliRun.run("world", "generate", "navigation", "--seed", "1", "--cylinders", "3")[2].strip());
+    }
+
+    @Test
     void aTeamSweepTakesNoProgressAsTheSingleRobotSweepDoes(@TempDir Path dir) {
         String[] args = {"sweep", "team-delivery", "--robots", "1", "--world-seeds", "1", "--seeds", "1", "--duration", "4s",
             "--controllers", "baseline", "--out", dir.toString()};
