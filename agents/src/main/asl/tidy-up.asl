@@ -9,8 +9,8 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // a search goes on from anywhere (no way back after a recharge), a look around first, the sweep after 5 s; a delivery
 // under way ends first while the battery less 150 J covers the way on to the charger; a homing still nearing goes on past
 // far sight's time limit (a nearer sighting in the last 15 s); every red run is seen; turns at half speed but for the last
-// 15 degrees; no trip while the battery covers the time left, and a charge ends once it covers it and 100 J, both at 2 W; one knocked out is seen there
-resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). regainLost.
+// 15 degrees; no trip while the battery covers the time left, and a charge ends once it covers it and 100 J, both at 2 W
+resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2).
 
 !start.
 

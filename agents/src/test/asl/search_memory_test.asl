@@ -190,26 +190,3 @@ maxSpeed(100).
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// with regainLost (tidy-up): a cylinder knocked out 0.2 m from the storage point lies in line with
-// the stored pile; where it fell is remembered, the middleware lets its sightings through, far sight
-// goes for it, a pick there is allowed, and another cylinder picked meanwhile leaves it remembered
-@[test]
-+!test_a_cylinder_lost_beside_the_storage_area_is_seen_remembered_and_picked_there
-    <- !forget_calls; .abolish(seenCylinder(_, _)); +regainLost; +stored(2);
-       -+location(-0.8, 0, -1); -+orientation(180);      // 0.2 m from the storage point, facing it
-       !assert_true(sightingOff(30, 0.08));              // before the fall: the pile's line
-       +delivering; -delivering;                         // the delivery ended outside the storage area
-       !until(lostAt(_, _, _), 500);
-       !assert_true(mock_called(admitCylindersNear(-0.8, -1, 0.1)));
-       !assert_true(seenCylinder(-0.8, -1));
-       !assert_false(sightingOff(30, 0.08));             // 0.08 m off where it fell: the lost one
-       !assert_true(sightingOff(0, 0.6));                // the pile itself, seen nearer than it is
-       !assert_true(atLostPlace);
-       .abolish(seenCylinder(_, _)); -+location(0.5, 0, 0.5);
-       +picked(true); !until(seenCylinder(_, _), 500);   // another one picked far off
-       !assert_true(seenCylinder(-0.8, -1)); !assert_true(lostAt(_, _, _));
-       -picked(true); -+location(-0.75, 0, -1); +picked(true); .wait(100);  // the lost one picked
-       !assert_false(lostAt(_, _, _)); !assert_true(mock_called(admitNoMore));
-       -picked(true); -regainLost; -stored(2); -lostBeside; .abolish(seenCylinder(_, _));
-       -+location(0, 0, 0); -+orientation(0).

@@ -15,8 +15,7 @@ stored(0).          // cylinders put down at the storage point so far
 storageClearance(C) :- storageRadius(R) & C = R + 0.09.
 storageClearance(0.15) :- not storageRadius(_).
 // Reads: storagePoint(X, Z), storageRadius(R) (from the world file, as initial beliefs: no
-// coordinate is written in an agent); lastAvoid(T) (avoidance); atLostPlace (search-memory's, optional:
-// a cylinder knocked out near the storage area is picked there);
+// coordinate is written in an agent); lastAvoid(T) (avoidance);
 // onErrand, halted (rules a skill that sends the robot elsewhere extends, e.g. recharge).
 // Beliefs: delivering, insideArea, firstTime, ~delivered, targetPoint(X, Z).
 // Rules it offers: travelling (on the way to a target: obstacles are gone round, not avoided),
@@ -33,7 +32,7 @@ storageClearance(0.15) :- not storageRadius(_).
 setUpGoal(setUpDelivery).
 travelling :- delivering.
 pickingOff :- delivering.
-pickingOff :- nearStorage & not atLostPlace.
+pickingOff :- nearStorage.
 pickingOff :- insideArea.
 halted :- insideArea.
 nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)

@@ -8,7 +8,6 @@
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
-lostRadius(0.1).     // m: with regainLost, sightings placed this near where the cylinder fell go through
 // the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
 // the fixed corner the first sweep crossed the arena first
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
@@ -18,12 +17,10 @@ nearSide(V, -1) :- V >= 0.
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
-// Rules it offers: atLostPlace (delivery picks there even near the storage area).
-// Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting);
-// regainLost (the agent's, optional: a cylinder knocked out near the storage area is looked for there).
+// Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
-// cylinder), lostBeside, lostAt(X, Z, R) (where the robot lost its cylinder, with regainLost),
-// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
+// cylinder), lostBeside, lookingAgain(X, Z, Since) (the place looked for again,
+// in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -40,13 +37,8 @@ sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & arena(W, D)
 // remembered 0.38 m ahead, and the search went back to that empty place again and again)
 towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & storagePoint(Sx, Sz)
     & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
-    & Along > 0 & Along < 4 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C
-    & not (lostAt(_, _, _) & sightedAt(Off, Dist, Cx, Cz) & nearLost(Cx, Cz)).
-nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1)
-    & not nearLost(Cx, Cz).
-nearLost(Cx, Cz) :- lostAt(X, Z, R) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
-// the robot where it may pick the cylinder it lost: within lostRadius and its reach, 5 cm, of where it fell
-atLostPlace :- lostAt(Lx, Lz, R) & location(X, _, Z) & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < (R + 0.05) * (R + 0.05).
+    & Along > 0 & Along < 4 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
+nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
 seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
 /* Remembering and forgetting */
@@ -75,14 +67,7 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
-// the cylinder picked is no longer to be looked for (nor the place where one fell)
-@forgetPickedLost
-+picked(true) : location(X, _, Z) & takenRadius(R) & lostAt(Lx, Lz, _) & (Lx - X) * (Lx - X) + (Lz - Z) * (Lz - Z) < R * R
-    <- .abolish(lostAt(_, _, _)); admitNoMore; !forgetNear(X, Z, R).
-// another one picked: the place where one fell is remembered again (the search after the fall went
-// there first, and the look around there homed on another: world 153)
-@rememberLostAgain
-+picked(true) : location(X, _, Z) & takenRadius(R) & lostAt(Lx, Lz, L) <- !forgetNear(X, Z, R); !forgetNear(Lx, Lz, L); +seenCylinder(Lx, Lz).
+// the cylinder picked is no longer to be looked for
 @forgetPicked +picked(true) : location(X, _, Z) & takenRadius(R) <- !forgetNear(X, Z, R).
 
 // a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
@@ -91,16 +76,6 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 // still ignored sightings for a homing that had ended with the pick: it was found again minutes
 // later, if ever; from 5 cm back the turn met it 8 cm off at the side, and the lateral reach
 // pushed it away: found again 194 s later instead of 22 s)
-// an agent that believes regainLost (tidy-up): one knocked out near the storage area lies where the
-// middleware leaves sightings out (in line with the stored pile, within storageClearance) and search
-// memory too (nearStored, towardsStored): sightings placed within lostRadius of where it fell go
-// through until a cylinder is picked there, none within 0.08 m of the storage point, the pile's; and
-// the place is remembered (the look around after the fall went for another one: world 153, knocked
-// 0.2 m from the storage point at 300 s, never seen again)
-@lostBesideAdmitted
--delivering : regainLost & not insideArea & location(X, _, Z) & storagePoint(Sx, Sz) & lostRadius(L)
-    <- +lostBeside; R = math.min(L, math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) - 0.08);
-       if (R > 0) { -+lostAt(X, Z, R); admitCylindersNear(X, Z, R); !forgetNear(X, Z, R); +seenCylinder(X, Z) }.
 @lostBeside -delivering : not insideArea <- +lostBeside.
 @backOffFirst
 +!move(_) : lookFirst & lostBeside & maxSpeed(M)
@@ -108,9 +83,6 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 
-// a search already on its way to where a cylinder fell goes on there (the delivery's end, out of the
-// storage area, sent it to the next place remembered: world 153)
-@searchingLostPlace +!searchFromMemory : searching & lostAt(X, Z, _) & waypoint(X, Z, _).
 @recallNearest
 +!searchFromMemory : seenCylinder(_, _)
     <- if (not sweep([_ | _])) { !planSweep }; +searching; !lookAgain.

@@ -62,8 +62,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private long lastSightingMs = Long.MIN_VALUE / 2;
     private double fov = 60;
     private final List<double[]> excluded = new ArrayList<>();
-    // a place whose sightings pass the excluded areas (admitCylindersNear): where the robot lost its cylinder
-    private double[] admitted;
     // every red run is a sighting, not only the widest (sightEveryRedRun): the first not excluded
     private boolean everyRun;
     /** The last GPS position (x, z) and compass heading (the thesis' orientation, degrees), when known. */
@@ -105,21 +103,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     @OPERATION
     void ignoreCylindersNear(double x, double z, double radius) {
         excluded.add(new double[] {x, z, radius});
-    }
-
-    /**
-     * Cylinders seen inside this circle are signalled even inside or in line with an excluded area (not in
-     * the thesis): one knocked out of the gripper beside the storage area; one circle at a time.
-     */
-    @OPERATION
-    void admitCylindersNear(double x, double z, double radius) {
-        admitted = new double[] {x, z, radius};
-    }
-
-    /** Ends {@code admitCylindersNear}. */
-    @OPERATION
-    void admitNoMore() {
-        admitted = null;
     }
 
     /** The compass heading as the thesis' orientation: degrees, from north-vector {@code n}. */
@@ -169,10 +152,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         }
         double a = Math.toRadians(heading + s.offset());
         double ux = Math.cos(a), uz = Math.sin(a);
-        if (admitted != null && Math.hypot(position[0] + s.distance() * ux - admitted[0],
-                position[1] + s.distance() * uz - admitted[1]) < admitted[2]) {
-            return false;
-        }
         for (double[] e : excluded) {
             double dx = e[0] - position[0], dz = e[1] - position[1];
             double along = dx * ux + dz * uz;

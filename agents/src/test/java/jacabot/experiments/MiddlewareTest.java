@@ -157,28 +157,6 @@ class MiddlewareTest {
         assertEquals(1, other.signals.size(), "an area off the line of sight hides nothing: " + other.signals);
     }
 
-    /** A cylinder knocked out beside the storage area, in an ignored area: signalled while its place is admitted. */
-    @Test
-    void aCylinderSeenWhereItIsAdmittedIsSignalledInsideAnIgnoredArea() throws Exception {
-        var image = new SensorInfo(SensorKind.CAMERA_IMAGE.id(), CylinderSightingTest.image(0xC81E1E, 31, 33));
-        var gps = new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0);
-        var compass = new SensorInfo(SensorKind.COMPASS.id(), 1.0, 0.0, 0.0);
-        var b = new Bench(NavigationMiddleware.class);
-        b.op("scanForCylinders", new Object[] {400.0, 60.0});
-        b.op("ignoreCylindersNear", new Object[] {0.75, 0.0, 0.2});
-        b.op("admitCylindersNear", new Object[] {0.0, 0.5, 0.1}); // elsewhere: changes nothing
-        b.deliver(gps, compass, image);
-        assertTrue(b.signals.isEmpty(), "in the ignored area: " + b.signals);
-        b.op("admitCylindersNear", new Object[] {0.7, 0.0, 0.1}); // the sighting puts it 0.76 m ahead
-        b.deliver(gps, compass, image);
-        assertEquals(1, b.signals.size(), "admitted: " + b.signals);
-        b.op("admitNoMore", new Object[0]);
-        for (int i = 0; i < 20; i++) {
-            b.deliver(gps, compass, image);
-        }
-        assertEquals(1, b.signals.size(), "no longer admitted: " + b.signals);
-    }
-
     /** The storage area's pile ahead (the widest run) and a lone cylinder to the left: only every red run shows the lone one. */
     @Test
     void aCylinderBesideAnIgnoredAreaIsSignalledWhenEveryRedRunIsLookedAt() throws Exception {
