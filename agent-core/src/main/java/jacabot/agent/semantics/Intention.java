@@ -177,16 +177,12 @@ public final class Intention implements Iterable<IntendedMeans> {
         for (IntendedMeans im : stack) {
             String body = im.remainingBody();
             sb.append("    ").append(im.trigger()).append(" <- ").append(body.isEmpty() ? "." : "... " + body)
-                    .append(" / ").append(unifierText(im.unifier())).append('\n');
+                    .append(" / ").append(JasonHashOrder.text(im.unifier())).append('\n');
             if (shown++ > 40) {
                 sb.append("... more ").append(stack.size() - 40).append(" intended means!\n");
                 break;
             }
         }
         return stack.isEmpty() ? sb.append("<finished intention>").toString() : sb.toString();
-    }
-
-    private static String unifierText(Unifier u) {
-        return JasonHashOrder.text(u);
     }
 }

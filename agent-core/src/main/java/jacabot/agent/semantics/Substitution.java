@@ -65,9 +65,8 @@ final class Substitution {
             return arithmetic(u, e);
         }
         if (t instanceof ArithFunction f) {
-            var applied = new ArithFunction(f.name(), applyAll(u, f.args()));
             if (u.evaluator() != null) {
-                Term value = u.evaluator().evaluate(applied, u);
+                Term value = u.evaluator().evaluate(new ArithFunction(f.name(), applyAll(u, f.args())), u);
                 if (value != null) {
                     return value;
                 }

@@ -7,10 +7,6 @@ package jacabot.agent.syntax;
  */
 public record ArithExpr(Op op, Term left, Term right, SourceInfo src) implements OperatorExpr {
 
-    public ArithExpr(Op op, Term left, Term right) {
-        this(op, left, right, SourceInfo.NONE);
-    }
-
     /** Arithmetic operators, with Jason's printed forms. */
     public enum Op {
         PLUS("+"), MINUS("-"), TIMES("*"), DIV("/"), INTDIV(" div "), MOD(" mod "), POW("**");
