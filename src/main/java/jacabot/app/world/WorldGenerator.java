@@ -173,7 +173,7 @@ public final class WorldGenerator {
                         : new CylinderRange(Integer.parseInt(text.substring(0, dots).trim()),
                                 Integer.parseInt(text.substring(dots + 2).trim()));
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("cylinders: '" + text + "' is not a range (examples: 10..14, 20..24, 16)");
+                throw new IllegalArgumentException("'" + text + "' is not a range of cylinders (examples: 10..14, 20..24, 16)");
             }
         }
 

@@ -68,7 +68,7 @@ class WorldAndSweepCommandTest {
         assertEquals("2", backwards[0]);
         assertEquals("error: --cylinders: cylinders must be a range MIN..MAX with 1 <= MIN <= MAX <= 60, got 14..10",
                 backwards[2].strip());
-        assertEquals("error: --cylinders: cylinders: 'many' is not a range (examples: 10..14, 20..24, 16)",
+        assertEquals("error: --cylinders: 'many' is not a range of cylinders (examples: 10..14, 20..24, 16)",
                 CliRun.run("world", "generate", "team-delivery", "--seed", "1", "--cylinders", "many")[2].strip());
         var sweep = CliRun.run("sweep", "team-delivery", "--robots", "1", "--world-seeds", "1", "--seeds", "1", "--duration", "2s",
                 "--controllers", "baseline", "--cylinders", "20..24", "--out", dir.toString());
