@@ -110,6 +110,8 @@ public final class LocalMAS {
     private final AtomicInteger planLabels = new AtomicInteger();
     /** So do the numbers of intentions, in the order they are created. */
     private final AtomicInteger intentionIds = new AtomicInteger();
+    /** And the numbers of messages (mid N), in the order they are sent. */
+    private final AtomicInteger messageIds = new AtomicInteger();
 
     /**
      * Creates an agent running a program. {@code archFactory} may wrap the local architecture
@@ -129,6 +131,7 @@ public final class LocalMAS {
         Agent ag = new Agent(name, arch, ias, agentSeed(seed, agents.size()), parser);
         ag.planLibrary().shareLabelCounter(planLabels);
         ag.shareIntentionCounter(intentionIds);
+        ag.shareMessageCounter(messageIds);
         agents.put(name, ag);
         wakers.put(name, new Waker(ag));
         ag.load(program);

@@ -50,7 +50,7 @@ public final class Agent {
     private long freshSerial;
     /** Intention numbers: one counter for the whole system, as Jason's is one per JVM. */
     private AtomicInteger intentionSerial = new AtomicInteger();
-    private int messageSerial;
+    private AtomicInteger messageSerial = new AtomicInteger();
     private long cycles;
     private volatile boolean stopped;
     private PlanListener planListener;
@@ -360,7 +360,12 @@ public final class Agent {
 
     /** {@return the number of the agent's next message, whose id is {@code mid}N} */
     public int nextMessageSerial() {
-        return ++messageSerial;
+        return messageSerial.incrementAndGet();
+    }
+
+    /** Numbers this agent's messages from {@code counter}, shared with the other agents of its system (Jason's are JVM-wide). */
+    public void shareMessageCounter(AtomicInteger counter) {
+        messageSerial = counter;
     }
 
     /** {@return a unifier that evaluates this agent's arithmetic functions} */

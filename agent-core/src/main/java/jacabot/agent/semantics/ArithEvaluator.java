@@ -76,6 +76,9 @@ final class ArithEvaluator implements Unifier.Evaluator {
         if (user != null) {
             return userFunction(user, a, u);
         }
+        if (!f.name().equals(".count") && !a.stream().allMatch(Term::isGround)) {
+            return null; // Jason evaluates a function over ground arguments only (but .count), else it stays as written
+        }
         switch (f.name()) {
             case "system.time":
                 // Jason's: ms since 1970; counted on the agent's clock from the computer's time when

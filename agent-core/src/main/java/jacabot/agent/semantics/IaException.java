@@ -1,5 +1,6 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import java.util.ArrayList;
 import java.util.List;
@@ -34,6 +35,17 @@ public class IaException extends Exception {
             return new ArrayList<>(annots);
         }
         return ReasoningCycle.errorAnnots(errorId, getMessage() == null ? "" : getMessage());
+    }
+
+    /**
+     * A message whose receiver does not exist: Jason's {@code receiver_not_found}, which also names
+     * the agent ({@code agent_not_found(Name)}) among the failure's annotations.
+     */
+    public static IaException receiverNotFound(Message m) {
+        String message = "Receiver '" + m.receiver() + "' does not exist! Could not send " + m;
+        List<Term> annots = ReasoningCycle.errorAnnots("receiver_not_found", message);
+        annots.add(Literal.of("agent_not_found", Literal.atom(m.receiver())));
+        return new IaException("receiver_not_found", message, annots);
     }
 
     public static IaException wrongArguments(String ia, String why) {

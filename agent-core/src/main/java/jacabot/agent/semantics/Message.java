@@ -1,6 +1,7 @@
 package jacabot.agent.semantics;
 
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.util.Objects;
 
 /**
@@ -37,6 +38,14 @@ public final class Message {
     public static Message numbered(int serial, String sender, String receiver, String performative, Term content,
             String inReplyTo) {
         return new Message(null, serial, sender, receiver, performative, content, inReplyTo);
+    }
+
+    /** The prefix of a synchronous ask's id (Jason's {@code samid}N): a late answer to one is dropped. */
+    public static final String SYNC_ASK_PREFIX = "samid";
+
+    /** {@return the variable under which an ask to many gathers its answers in the asker's unifier (Jason's name)} */
+    public static Var answersVar(String askId) {
+        return new Var("AnsList___" + askId);
     }
 
     /** {@return the id of a message with this serial} */
@@ -87,7 +96,8 @@ public final class Message {
 
     @Override
     public String toString() {
-        return "<" + id() + "," + sender + "," + performative + "," + receiver + "," + content
-                + (inReplyTo == null ? "" : "," + inReplyTo) + ">";
+        // Jason's form, which its error messages quote: <id->inReplyTo,sender,performative,receiver,content>
+        return "<" + id() + (inReplyTo == null ? "" : "->" + inReplyTo) + "," + sender + "," + performative + ","
+                + receiver + "," + content + ">";
     }
 }

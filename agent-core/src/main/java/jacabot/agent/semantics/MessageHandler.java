@@ -75,6 +75,9 @@ final class MessageHandler {
                 answerAsk(waiting, m);
                 return;
             }
+            if (m.inReplyTo().startsWith(Message.SYNC_ASK_PREFIX)) {
+                return; // the answer to a synchronous ask that timed out is dropped, as Jason does
+            }
         }
         String sender = m.sender().equals(ag.name()) ? "self" : m.sender();
         // asks wait for their turn among the events (and may need a +? plan); other messages are
@@ -340,6 +343,36 @@ final class MessageHandler {
     private void answerAsk(Intention i, Message m) {
         IntendedMeans im = i.peek();
         Literal send = (Literal) im.currentStep().term();
+        Term answer = answerTerm(send, m);
+        if (im.unifier().apply(send.arg(0)) instanceof ListTerm receivers) {
+            // an ask to many: the answers gather, in the order they come, until every receiver has answered
+            List<Term> gathered = gatheredAnswers(im.unifier(), m.inReplyTo());
+            gathered.add(answer);
+            im.unifier().bind(Message.answersVar(m.inReplyTo()), ListTerm.of(gathered));
+            if (gathered.size() < receivers.elements().size()) {
+                ag.circumstance().addPendingIntention(m.inReplyTo(), Literal.of("ask", Literal.atom(m.inReplyTo())), i);
+                return;
+            }
+            answer = ListTerm.of(gathered);
+        }
+        if (im.unifier().unifies(send.arg(3), answer)) {
+            rc.removeActionReQueue(i);
+        } else {
+            // as Jason: the .send step goes first, so the failure names the step after it (none at the plan's end)
+            String message = "reply of an ask message ('" + answer + "') does not unify with fourth argument of .send ('"
+                    + im.unifier().apply(send.arg(3)) + "')";
+            im.removeCurrentStep();
+            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ask_failed", message), false);
+        }
+    }
+
+    /** {@return the answers an ask to many has gathered so far, as a list to add to} */
+    private static List<Term> gatheredAnswers(Unifier u, String askId) {
+        return u.get(Message.answersVar(askId)) instanceof ListTerm l ? new ArrayList<>(l.elements()) : new ArrayList<>();
+    }
+
+    /** {@return a reply's content as the ask's answer: false for an untold askOne, the sender as a nested source} */
+    private Term answerTerm(Literal send, Message m) {
         Term answer = m.content();
         Literal from = Literal.of("source", Literal.atom(m.sender()));
         if (m.performative().equals("untell") && send.arity() > 1 && send.arg(1).toString().equals("askOne")) {
@@ -356,11 +389,6 @@ final class MessageHandler {
             }
             answer = ListTerm.of(items);
         }
-        if (im.unifier().unifies(send.arg(3), answer)) {
-            rc.removeActionReQueue(i);
-        } else {
-            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ask_failed",
-                    "reply of an ask message ('" + answer + "') does not unify with fourth argument of .send"));
-        }
+        return answer;
     }
 }

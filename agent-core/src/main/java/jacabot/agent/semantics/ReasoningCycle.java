@@ -447,6 +447,15 @@ final class ReasoningCycle {
 
     /** Generates {@code -!g} for the intention's top goal (or the nearest goal with a failure plan). */
     boolean generateGoalDeletion(Intention i, List<Term> annots) {
+        return generateGoalDeletion(i, annots, true);
+    }
+
+    /**
+     * As {@link #generateGoalDeletion(Intention, List)}; {@code annotateWithoutStep} false gives the
+     * event no annotation at all when the plan has no step left (Jason's failed ask answer, whose
+     * {@code .send} step is removed first).
+     */
+    boolean generateGoalDeletion(Intention i, List<Term> annots, boolean annotateWithoutStep) {
         IntendedMeans im = i.peek();
         Event failEvent = findEventForFailure(i, im.trigger());
         boolean relevant = failEvent != null;
@@ -454,7 +463,9 @@ final class ReasoningCycle {
             failEvent = new Event(im.trigger(), i);
         }
         BodyStep step = im.currentStep();
-        failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
+        if (step != null || annotateWithoutStep) {
+            failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
+        }
         if (failEvent.trigger().isGoal()) {
             notifyFailed(GoalStates.of(im), relevant, i, im, annots);
             if (relevant) {

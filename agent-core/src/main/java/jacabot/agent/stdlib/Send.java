@@ -25,16 +25,18 @@ final class Send extends DefaultInternalAction {
         String performative = text(args[1]);
         boolean syncAsk = args.length >= 4 && performative.startsWith("ask");
         int serial = ag.nextMessageSerial();
+        // Jason numbers a synchronous ask a second time, under its own prefix (its replies are told apart by it)
+        String syncId = syncAsk ? Message.SYNC_ASK_PREFIX + ag.nextMessageSerial() : null;
         String inReplyTo = args.length >= 4 && !syncAsk ? text(args[3]) : null;
         if (args[0] instanceof ListTerm l) {
             for (Term r : l.elements()) {
-                send(ag, serial, text(r), performative, args[2], inReplyTo);
+                send(ag, serial, syncId, text(r), performative, args[2], inReplyTo);
             }
         } else {
-            send(ag, serial, text(args[0]), performative, args[2], inReplyTo);
+            send(ag, serial, syncId, text(args[0]), performative, args[2], inReplyTo);
         }
         if (syncAsk) {
-            String id = Message.idOf(serial);
+            String id = syncId;
             Intention si = ag.circumstance().selectedIntention();
             ag.circumstance().addPendingIntention(id, Literal.of("ask", Literal.atom(id)), si);
             ag.holdSelectedIntention();
@@ -43,7 +45,10 @@ final class Send extends DefaultInternalAction {
                 Term answer = args[3];
                 ag.schedule(due, () -> {
                     if (ag.circumstance().removePendingIntention(id) == si) {
-                        si.peek().unifier().unifies(answer, Literal.atom("timeout"));
+                        // an ask to many ends with the answers come so far; an ask to one with timeout
+                        Term late = args[0] instanceof ListTerm ? si.peek().unifier().get(Message.answersVar(id)) : null;
+                        si.peek().unifier().unifies(answer, args[0] instanceof ListTerm
+                                ? (late != null ? late : ListTerm.EMPTY) : Literal.atom("timeout"));
                         si.peek().removeCurrentStep();
                         ag.circumstance().addRunningIntention(si);
                     }
@@ -53,13 +58,15 @@ final class Send extends DefaultInternalAction {
         return true;
     }
 
-    private static void send(Agent ag, int serial, String receiver, String performative, Term content,
+    private static void send(Agent ag, int serial, String syncId, String receiver, String performative, Term content,
             String inReplyTo) throws IaException {
         if (receiver.equals("self")) {
             receiver = ag.name(); // a message to oneself names its sender self (Jason's kqml_received)
         }
-        if (!ag.arch().sendMessage(Message.numbered(serial, ag.name(), receiver, performative, content, inReplyTo))) {
-            throw new IaException("ia_failed", "Receiver '" + receiver + "' does not exist!");
+        Message m = syncId != null ? new Message(syncId, ag.name(), receiver, performative, content, inReplyTo)
+                : Message.numbered(serial, ag.name(), receiver, performative, content, inReplyTo);
+        if (!ag.arch().sendMessage(m)) {
+            throw IaException.receiverNotFound(m);
         }
     }
 }
