@@ -379,7 +379,7 @@ public final class Agent {
     public Term[] prepareArguments(InternalAction ia, Literal l, Unifier u) throws IaException {
         int n = l.arity();
         if (n < ia.minArgs() || n > ia.maxArgs()) {
-            throw IaException.wrongArgumentCount(l.functor(), n);
+            throw IaException.wrongArgumentCount(l.functor(), ia.minArgs(), ia.maxArgs());
         }
         if (!ia.appliesArguments()) {
             // a loop's step comes back every turn: its arguments as they are, in the same array

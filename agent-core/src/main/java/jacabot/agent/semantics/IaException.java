@@ -48,11 +48,20 @@ public class IaException extends Exception {
         return new IaException("receiver_not_found", message, annots);
     }
 
+    /** A wrong argument, in Jason's words (which name the action's class: {@code .map.put} is 'put'). */
     public static IaException wrongArguments(String ia, String why) {
-        return new IaException("wrong_arguments", "Wrong arguments for '" + ia + "': " + why);
+        return new IaException("wrong_arguments", "Wrong argument for internal action '" + className(ia) + "': " + why);
     }
 
-    public static IaException wrongArgumentCount(String ia, int got) {
-        return new IaException("wrong_arguments", "Wrong number of arguments (" + got + ") for '" + ia + "'");
+    /** A wrong number of arguments, in Jason's words. */
+    public static IaException wrongArgumentCount(String ia, int min, int max) {
+        String expected = min != max ? " From " + min + " to " + max + " arguments are expected."
+                : min == 1 ? " One argument is expected." : " " + min + " arguments are expected.";
+        return new IaException("wrong_arguments", "The internal action '" + className(ia)
+                + "' has not received the required number of argument(s)." + expected);
+    }
+
+    private static String className(String ia) {
+        return ia.substring(ia.lastIndexOf('.') + 1);
     }
 }

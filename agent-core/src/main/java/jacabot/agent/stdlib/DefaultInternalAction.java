@@ -3,6 +3,7 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.InternalAction;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.Var;
 import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.NumberTerm;
@@ -50,6 +51,34 @@ abstract class DefaultInternalAction implements InternalAction {
             return l;
         }
         throw IaException.wrongArguments(name, "'" + t + "' is not a list");
+    }
+
+    /** Jason's checks of {@code .union}, {@code .intersection} and {@code .difference}, in its words. */
+    void checkListOperands(Term[] args) throws IaException {
+        if (!(args[0] instanceof ListTerm)) {
+            throw IaException.wrongArguments(name, "first argument '" + args[0] + "'is not a list.");
+        }
+        if (!(args[1] instanceof ListTerm)) {
+            throw IaException.wrongArguments(name, "second argument '" + args[1] + "'is not a list.");
+        }
+        if (!(args[2] instanceof Var) && !(args[2] instanceof ListTerm)) {
+            throw IaException.wrongArguments(name, "last argument '" + args[2] + "'is not a list nor a variable.");
+        }
+    }
+
+    /** The first argument a list, in Jason's words ({@code .sort}, {@code .min}, {@code .max}). */
+    void checkFirstIsList(Term[] args) throws IaException {
+        if (!(args[0] instanceof ListTerm)) {
+            throw IaException.wrongArguments(name, "first argument must be a list");
+        }
+    }
+
+    /** The first argument a literal, in Jason's words ({@code .succeed_goal}, {@code .fail_goal}, {@code .resume}). */
+    Literal firstLiteral(Term[] args) throws IaException {
+        if (args[0] instanceof Literal l) {
+            return l;
+        }
+        throw IaException.wrongArguments(name, "first argument must be a literal");
     }
 
     Literal literal(Term t) throws IaException {

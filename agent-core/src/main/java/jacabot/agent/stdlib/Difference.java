@@ -15,6 +15,7 @@ final class Difference extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        checkListOperands(args);
         var set = new TreeSet<Term>(list(args[0]).elements());
         set.removeAll(new TreeSet<Term>(list(args[1]).elements()));
         return un.unifies(args[2], listOf(new ArrayList<>(set)));

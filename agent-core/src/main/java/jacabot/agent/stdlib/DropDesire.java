@@ -15,7 +15,9 @@ final class DropDesire extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        Literal g = literal(args[0]);
+        if (!(args[0] instanceof Literal g)) {
+            throw IaException.wrongArguments(name(), "first argument '" + args[0] + "' must be a literal or variable"); // Jason's words
+        }
         for (Intention i : ag.intentionsFor(g, un)) {
             ag.dropIntention(i);
         }

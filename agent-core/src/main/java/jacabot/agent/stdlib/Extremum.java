@@ -27,6 +27,7 @@ final class Extremum extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        checkFirstIsList(args);
         List<Term> items = list(args[0]).elements();
         if (items.isEmpty()) {
             return false;

@@ -14,7 +14,7 @@ final class FailGoal extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        new GoalDropper(ag, GoalDropper.Mode.FAIL, literal(args[0])).drop();
+        new GoalDropper(ag, GoalDropper.Mode.FAIL, firstLiteral(args)).drop();
         return true;
     }
 }

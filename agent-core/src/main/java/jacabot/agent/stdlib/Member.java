@@ -16,7 +16,7 @@ final class Member extends DefaultInternalAction {
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
         Collection<Term> items = TermCollections.elements(args[1]); // a list, or a set or queue of .set/.queue
         if (items == null) { // a map too: Jason's .member takes lists and sets only
-            throw IaException.wrongArguments(name(), "'" + args[1] + "' is not a list, a set or a queue");
+            throw IaException.wrongArguments(name(), "second argument must be a list or a set");
         }
         return new EachUnifying(un, args[0], items);
     }

@@ -3,9 +3,11 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
+import jacabot.agent.syntax.ListTerm;
 import jacabot.agent.syntax.NumberTerm;
 import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -17,10 +19,17 @@ final class Nth extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        // Jason's checks and words
+        if (!(args[0] instanceof NumberTerm) && !(args[0] instanceof Var)) {
+            throw IaException.wrongArguments(name(), "the first argument should be numeric or a variable -- not '" + args[0] + "'.");
+        }
+        if (!(args[1] instanceof ListTerm) && !(args[1] instanceof StringTerm)) {
+            throw IaException.wrongArguments(name(), "the second argument should be a list or string and not '" + args[1] + "'.");
+        }
         if (args[1] instanceof StringTerm s) {
             int i = (int) number(args[0]);
             if (i < 0 || i >= s.value().length()) {
-                throw IaException.wrongArguments(name(), "index " + i + " out of bounds");
+                throw outOfBounds(i, s.value().length());
             }
             return un.unifies(args[2], new StringTerm(s.value().substring(i, i + 1)));
         }
@@ -28,7 +37,7 @@ final class Nth extends DefaultInternalAction {
         if (args[0] instanceof NumberTerm n) {
             int i = (int) n.value();
             if (i < 0 || i >= items.size()) {
-                throw IaException.wrongArguments(name(), "index " + i + " out of bounds");
+                throw outOfBounds(i, items.size());
             }
             return un.unifies(args[2], items.get(i));
         }
@@ -40,5 +49,9 @@ final class Nth extends DefaultInternalAction {
             }
         }
         return out.iterator();
+    }
+
+    private static IaException outOfBounds(int i, int size) {
+        return new IaException("internal_action", "nth: index " + i + " is out of bounds (" + size + ")");
     }
 }

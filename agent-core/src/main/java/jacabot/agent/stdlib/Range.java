@@ -16,6 +16,12 @@ final class Range extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        String[] nth = {"", "second", "third", "fourth"};
+        for (int i = 1; i < args.length; i++) {
+            if (!(args[i] instanceof NumberTerm)) {
+                throw IaException.wrongArguments(name(), nth[i] + " parameter ('" + args[i] + "') must be a number!");
+            }
+        }
         double start = number(args[1]);
         double end = number(args[2]);
         double step = args.length == 4 ? number(args[3]) : 1;

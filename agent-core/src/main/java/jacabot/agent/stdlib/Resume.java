@@ -13,6 +13,6 @@ final class Resume extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        return Suspensions.resume(ag, literal(args[0]), un);
+        return Suspensions.resume(ag, firstLiteral(args), un);
     }
 }

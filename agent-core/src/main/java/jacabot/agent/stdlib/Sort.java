@@ -14,6 +14,7 @@ final class Sort extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        checkFirstIsList(args);
         var items = list(args[0]).elements(); // a new list
         Collections.sort(items);
         return un.unifies(args[1], listOf(items));

@@ -14,7 +14,7 @@ final class SucceedGoal extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        new GoalDropper(ag, GoalDropper.Mode.SUCCEED, literal(args[0])).drop();
+        new GoalDropper(ag, GoalDropper.Mode.SUCCEED, firstLiteral(args)).drop();
         return true;
     }
 }

@@ -30,18 +30,18 @@ class CollectionsTest {
                 -!bad(_)[error(E), error_msg(Msg)] <- .print(E, " ", Msg).
                 """);
         assertEquals(List.of(
-                "wrong_arguments Wrong arguments for '.map.put': 'x' is not a map",
-                "wrong_arguments Wrong arguments for '.map.get': '{}' is not a map",
-                "wrong_arguments Wrong arguments for '.map.key': '[]' is not a map",
-                "wrong_arguments Wrong arguments for '.map.clear': '[a]' is not a map",
-                "wrong_arguments Wrong arguments for '.set.remove': 'x' is not a set",
-                "wrong_arguments Wrong arguments for '.set.union': 'x' is not a list or a set",
-                "wrong_arguments Wrong arguments for '.set.copy': '{}' is not a set",
-                "wrong_arguments Wrong arguments for '.set.to_list': '[]' is not a set",
-                "wrong_arguments Wrong arguments for '.queue.to_list': '{}' is not a queue",
-                "wrong_arguments Wrong arguments for '.queue.copy': 'x' is not a queue",
-                "wrong_arguments Wrong arguments for '.queue.clear': '{}' is not a queue",
-                "wrong_arguments Wrong arguments for '.member': '{}' is not a list, a set or a queue",
+                "wrong_arguments Wrong argument for internal action 'put': 'x' is not a map",
+                "wrong_arguments Wrong argument for internal action 'get': '{}' is not a map",
+                "wrong_arguments Wrong argument for internal action 'key': '[]' is not a map",
+                "wrong_arguments Wrong argument for internal action 'clear': '[a]' is not a map",
+                "wrong_arguments Wrong argument for internal action 'remove': 'x' is not a set",
+                "wrong_arguments Wrong argument for internal action 'union': 'x' is not a list or a set",
+                "wrong_arguments Wrong argument for internal action 'copy': '{}' is not a set",
+                "wrong_arguments Wrong argument for internal action 'to_list': '[]' is not a set",
+                "wrong_arguments Wrong argument for internal action 'to_list': '{}' is not a queue",
+                "wrong_arguments Wrong argument for internal action 'copy': 'x' is not a queue",
+                "wrong_arguments Wrong argument for internal action 'clear': '{}' is not a queue",
+                "wrong_arguments Wrong argument for internal action 'member': second argument must be a list or a set",
                 "done"), printed);
     }
 

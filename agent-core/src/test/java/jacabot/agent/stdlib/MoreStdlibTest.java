@@ -31,7 +31,7 @@ class MoreStdlibTest {
                 -!g[error(E), error_msg(M)] <- .print(E, " ", M).
                 """);
         a.cycles(10);
-        assertEquals(List.of("wrong_arguments Wrong arguments for '.verbose': 'a' is not a number"), a.printed());
+        assertEquals(List.of("wrong_arguments Wrong argument for internal action 'verbose': 'a' is not a number"), a.printed());
     }
 
     @Test
@@ -55,6 +55,6 @@ class MoreStdlibTest {
                 -!g[error(E), error_msg(M)] <- .print(E, " ", M).
                 """);
         a.cycles(10);
-        assertEquals(List.of("wrong_arguments Wrong arguments for '.signal': 'foo' is not a trigger such as {+e}"), a.printed());
+        assertEquals(List.of("wrong_arguments Wrong argument for internal action 'signal': 'foo' is not a trigger such as {+e}"), a.printed());
     }
 }

@@ -46,7 +46,7 @@ class AslTestRunnerTest {
                 "test_mocks assert_equals FAILED", "test_unmocked null ERROR"), lines, r.cases().toString());
         assertEquals("assert_equals on event 'test_fail' starting at line 7 FAILED! Expected '3' (number) but had '2' (number)",
                 r.cases().get(4).message());
-        assertTrue(r.cases().get(7).message().contains("index 5 out of bounds"), r.cases().get(7).message());
+        assertTrue(r.cases().get(7).message().contains("nth: index 5 is out of bounds (1)"), r.cases().get(7).message());
         assertTrue(r.cases().get(13).message().contains("operation jump is not mocked"), r.cases().get(13).message());
         assertEquals("#12 tests executed, #8 passed and #4 FAILED.", r.managerSummary());
         assertEquals(8, r.passed());
