@@ -42,6 +42,15 @@ final class Dyn4jWorld extends World<Body> {
     private final Islands islands = new Islands();
     private long impacts;
 
+    /** Takes a {@link TrackedBody} only: {@link Islands} and {@link BroadPhases} keep their marks and entries on it. */
+    @Override
+    public void addBody(Body body) {
+        if (!(body instanceof TrackedBody)) {
+            throw new IllegalArgumentException("a body of this world is a TrackedBody, not a " + body.getClass().getSimpleName());
+        }
+        super.addBody(body);
+    }
+
     @Override
     protected void step() {
         int listeners = stepListeners.size();

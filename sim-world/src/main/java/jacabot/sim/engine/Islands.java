@@ -24,8 +24,7 @@ import org.dyn4j.world.Island;
  * its mark is this step's, a fixed body on the current island when its other mark is this island's;
  * and a contact constraint is already on the island exactly when the body at its other end is: a
  * constraint joins an island while one of its two bodies is walked as a moving body, and a body is
- * walked once. dyn4j's own walk runs instead when the world has joints, or a body that is not a
- * {@link TrackedBody}. {@code BroadPhasesTest} compares every body at every step with dyn4j's world
+ * walked once. dyn4j's own walk runs instead when the world has joints. {@code BroadPhasesTest} compares every body at every step with dyn4j's world
  * as it comes; {@code IslandsTest} with dyn4j's walk.
  */
 final class Islands {
@@ -36,18 +35,13 @@ final class Islands {
 
     /**
      * Solves every island, as {@code graph.solve(solver, gravity, timeStep, settings)} does.
-     * {@return false, having solved nothing, when dyn4j's own walk must run: the world has joints or a
-     * body that is not a {@link TrackedBody}}
+     * Every body is a {@link TrackedBody} ({@link Dyn4jWorld#addBody} takes no other).
+     * {@return false, having solved nothing, when dyn4j's own walk must run: the world has joints}
      */
     boolean solve(List<Body> bodies, boolean joints, ConstraintGraph<Body> graph, ContactConstraintSolver<Body> solver,
                   Vector2 gravity, TimeStep timeStep, Settings settings) {
         if (joints) {
             return false;
-        }
-        for (int i = 0, n = bodies.size(); i < n; i++) {
-            if (!(bodies.get(i) instanceof TrackedBody)) {
-                return false;
-            }
         }
         step++;
         for (int i = 0, n = bodies.size(); i < n; i++) {

@@ -1,6 +1,7 @@
 package jacabot.sim.engine;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
@@ -106,6 +107,14 @@ class IslandsTest {
         int most = stepBoth(plain, ours);
         assertTrue(most >= 4, "some body touched " + most + " others at once");
         assertEquals(STEPS, ((Dyn4jWorld) ours).islandSteps());
+    }
+
+    @Test
+    void theWorldTakesTrackedBodiesOnly() {
+        World<Body> ours = new Dyn4jWorld();
+        assertThrows(IllegalArgumentException.class, () -> ours.addBody(new Body()));
+        ours.addBody(new TrackedBody());
+        assertEquals(1, ours.getBodyCount());
     }
 
     @Test
