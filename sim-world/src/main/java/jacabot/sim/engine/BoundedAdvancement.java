@@ -56,7 +56,7 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
         double ry = dp1y - dp2y;
         double speed = Math.sqrt(rx * rx + ry * ry) + (convex1.getRadius() * Math.abs(da1) + convex2.getRadius() * Math.abs(da2));
         double reach = ((t2 - t1) * (1 + RELATIVE_SLACK) + ABSOLUTE_SLACK) * speed * (1 + RELATIVE_SLACK);
-        return clearance(convex1, transform1, convex2, transform2) - ABSOLUTE_SLACK > reach;
+        return clearanceExceeds(convex1, transform1, convex2, transform2, ABSOLUTE_SLACK, reach);
     }
 
     /** {@return how many pairs the test answered without a GJK distance} */
@@ -78,6 +78,40 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
             gap = Math.max(gap, edgeGap(q, tb, ax, ay) - a.getRadius());
         }
         return gap;
+    }
+
+    /**
+     * {@return {@code clearance(a, ta, b, tb) - slack > threshold}, worked out to the bit, stopping at
+     * the first of its terms (the circles' gap, then each edge's) that passes} The clearance is the
+     * largest of its terms, and subtracting a number keeps their order, so it passes exactly when one
+     * of them does; most pairs pass on the circles' gap or the first edges, without the rest.
+     */
+    static boolean clearanceExceeds(Convex a, Transform ta, Convex b, Transform tb, double slack, double threshold) {
+        Vector2 ca = a.getCenter(), cb = b.getCenter();
+        double ax = ta.getTransformedX(ca), ay = ta.getTransformedY(ca);
+        double bx = tb.getTransformedX(cb), by = tb.getTransformedY(cb);
+        double dx = ax - bx, dy = ay - by;
+        if (Math.sqrt(dx * dx + dy * dy) - a.getRadius() - b.getRadius() - slack > threshold) {
+            return true;
+        }
+        return a instanceof Polygon p && edgeGapExceeds(p, ta, bx, by, b.getRadius(), slack, threshold)
+                || b instanceof Polygon q && edgeGapExceeds(q, tb, ax, ay, a.getRadius(), slack, threshold);
+    }
+
+    /** {@return whether some edge's term of {@link #edgeGap}, less {@code radius}, less {@code slack}, exceeds {@code threshold}} */
+    private static boolean edgeGapExceeds(Polygon p, Transform t, double x, double y, double radius, double slack, double threshold) {
+        double dx = x - t.getTranslationX(), dy = y - t.getTranslationY();
+        double cos = t.getCost(), sin = t.getSint();
+        double lx = cos * dx + sin * dy, ly = -sin * dx + cos * dy;
+        Vector2[] vertices = p.getVertices();
+        Vector2[] normals = p.getNormals();
+        for (int i = 0; i < vertices.length; i++) {
+            Vector2 v = vertices[i], n = normals[i];
+            if (n.x * (lx - v.x) + n.y * (ly - v.y) - radius - slack > threshold) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

@@ -34,6 +34,6 @@ final class BoundedGjk implements NarrowphaseDetector {
     }
 
     private static boolean apart(Convex convex1, Transform transform1, Convex convex2, Transform transform2) {
-        return BoundedAdvancement.clearance(convex1, transform1, convex2, transform2) > SLACK;
+        return BoundedAdvancement.clearanceExceeds(convex1, transform1, convex2, transform2, 0, SLACK);
     }
 }

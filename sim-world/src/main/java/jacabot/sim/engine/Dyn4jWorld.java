@@ -9,9 +9,14 @@ import org.dyn4j.collision.CollisionPair;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.dynamics.ContinuousDetectionMode;
+import org.dyn4j.dynamics.contact.Contact;
+import org.dyn4j.dynamics.contact.ContactConstraint;
+import org.dyn4j.dynamics.contact.SolvedContact;
 import org.dyn4j.geometry.Transform;
 import org.dyn4j.geometry.Vector2;
 import org.dyn4j.world.World;
+import org.dyn4j.world.WorldCollisionData;
+import org.dyn4j.world.listener.ContactListener;
 
 /**
  * dyn4j's world, whose time-of-impact pass drops first the pairs that cannot meet within the step.
@@ -29,9 +34,78 @@ import org.dyn4j.world.World;
  * moves only its body (the other bodies of its pairs are fixed), so the groups' order does not
  * matter. With time-of-impact listeners, another detector or another mode, dyn4j's own pass runs.
  * {@code BroadPhasesTest} steps worlds with impacts both ways and compares every body at every step.
+ *
+ * <p>Its step is dyn4j's ({@code AbstractPhysicsWorld.step}, line for line) but for the island solve,
+ * which marks the bodies instead of filling hash sets ({@link Islands}).
  */
 final class Dyn4jWorld extends World<Body> {
+    private final Islands islands = new Islands();
     private long impacts;
+
+    /** Takes a {@link TrackedBody} only: {@link Islands} and {@link BroadPhases} keep their marks and entries on it. */
+    @Override
+    public void addBody(Body body) {
+        if (!(body instanceof TrackedBody)) {
+            throw new IllegalArgumentException("a body of this world is a TrackedBody, not a " + body.getClass().getSimpleName());
+        }
+        super.addBody(body);
+    }
+
+    @Override
+    protected void step() {
+        int listeners = stepListeners.size();
+        for (int i = 0; i < listeners; i++) {
+            stepListeners.get(i).begin(timeStep, this);
+        }
+        if (updateRequired) {
+            detect();
+            for (int i = 0; i < listeners; i++) {
+                stepListeners.get(i).updatePerformed(timeStep, this);
+            }
+            updateRequired = false;
+        }
+        if (!contactListeners.isEmpty()) {
+            for (WorldCollisionData<Body> data : contactCollisions) {
+                ContactConstraint<Body> cc = data.getContactConstraint();
+                for (Contact contact : cc.getContacts()) {
+                    for (ContactListener<Body> listener : contactListeners) {
+                        listener.preSolve(data, contact);
+                    }
+                }
+            }
+        }
+        ContinuousDetectionMode mode = settings.getContinuousDetectionMode();
+        for (int i = 0, n = bodies.size(); i < n; i++) {
+            Body body = bodies.get(i);
+            body.getPreviousTransform().set(body.getTransform());
+        }
+        if (!islands.solve(bodies, !joints.isEmpty(), constraintGraph, contactConstraintSolver, gravity, timeStep, settings)) {
+            constraintGraph.solve(contactConstraintSolver, gravity, timeStep, settings);
+        }
+        if (!contactListeners.isEmpty()) {
+            for (WorldCollisionData<Body> data : contactCollisions) {
+                ContactConstraint<Body> cc = data.getContactConstraint();
+                for (SolvedContact contact : cc.getContacts()) {
+                    for (ContactListener<Body> listener : contactListeners) {
+                        listener.postSolve(data, contact);
+                    }
+                }
+            }
+        }
+        for (int i = 0; i < listeners; i++) {
+            stepListeners.get(i).postSolve(timeStep, this);
+        }
+        if (mode != ContinuousDetectionMode.NONE) {
+            ccdBroadphase.update();
+            solveTOI(mode);
+            ccdBroadphase.clearUpdates();
+        }
+        detect();
+        updateRequired = false;
+        for (int i = 0; i < listeners; i++) {
+            stepListeners.get(i).end(timeStep, this);
+        }
+    }
 
     @Override
     protected boolean solveTOI(ContinuousDetectionMode mode) {
@@ -116,6 +190,11 @@ final class Dyn4jWorld extends World<Body> {
             }
         }
         return true;
+    }
+
+    /** {@return how many physics steps {@link Islands} solved (the others, dyn4j's own walk)} */
+    long islandSteps() {
+        return islands.steps();
     }
 
     /** {@return how many moving bodies the time-of-impact pass moved back so far} */

@@ -125,6 +125,7 @@ class BroadPhasesTest {
             }
         }
         assertTrue(contacts > 500, "the discs touched something in " + contacts + " body-steps");
+        assertEquals(STEPS, ((Dyn4jWorld) ours).islandSteps(), "the islands were walked by Islands, not by dyn4j");
         long impacts = ((Dyn4jWorld) ours).impacts();
         assertTrue(impacts > 20, "the time-of-impact pass moved a body back " + impacts + " times");
         // the teleported box was seen where it went: something touched it afterwards
