@@ -44,6 +44,15 @@ mock_operation(_, ok).
        !assert_true(sweep([[-0.75, 0.25], [0.75, 0.25], [0.75, -0.25], [-0.75, -0.25], [-0.75, -0.75],
                            [0.75, -0.75], [-0.75, 0.75]])).
 
+// a world without a storage area (object picking): no waypoint is left out
+@[test]
++!test_without_a_storage_point_every_waypoint_is_kept
+    <- -sweep(_); -storagePoint(0.75, 0.75);
+       !planSweep;
+       +storagePoint(0.75, 0.75);
+       !assert_true(sweep([[0.75, -0.75], [0.75, -0.25], [-0.75, -0.25], [-0.75, 0.25], [0.75, 0.25],
+                           [0.75, 0.75], [-0.75, 0.75], [-0.75, -0.75]])).
+
 @[test]
 +!test_a_step_aligns_towards_the_waypoint_and_goes_on
     <- !forget_calls; -balanced; !recently_looked;

@@ -27,10 +27,13 @@ patience(P) :- waypointPatience(P).
 patience(20000) :- not waypointPatience(_).
 progressStep(G) :- waypointProgress(G).
 progressStep(0.1) :- not waypointProgress(_).
-// no waypoint lies this near the storage point (m): its clearance (delivery) and 0.1 m more
+// no waypoint lies this near the storage point (m): its clearance (delivery) and 0.1 m more; in a
+// world without a storage area (object picking) every waypoint is kept
 laneClearance(L) :- storageClearance(C) & L = C + 0.1.
+offStorage(X, Z) :- storagePoint(Sx, Sz) & laneClearance(C) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) > C * C.
+offStorage(_, _) :- not storagePoint(_, _).
 setUpGoal(setUpSweep).
-// Reads: arena(W, D), storagePoint(X, Z) (the world); storageClearance(C), travelling (delivery);
+// Reads: arena(W, D), storagePoint(X, Z) (the world's, optional: object picking has none); storageClearance(C), travelling (delivery);
 // searchDelay(Ms) (the agent's, optional: see searchAfter); sweepFrom(Fx, Fz) (an agent's, optional:
 // the corner the lanes begin at, see sweepCorner);
 // lastAvoid(T) (avoidance); maxSpeed(M).
@@ -39,7 +42,7 @@ setUpGoal(setUpSweep).
 // lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot);
 // resumeSweep (the agent's, optional: a new search goes on where the last one stopped).
 // Rules it offers: laneClearance(L) (storage-bypass keeps the way to a waypoint as far from the storage point).
-// Needs: !balance, !aimAt (delivery's heading; route.asl's way round what was met), !escape (recovery). Include it after recovery, before random walk.
+// Needs: !balance, !aimAt (heading, delivery's or the agent's own include; route.asl's way round what was met), !escape (recovery). Include it after recovery, before random walk.
 
 @setUpSweep +!setUpSweep <- .system_time(Now); +lastFound(Now); +lastLook(Now); !!searchClock.
 
@@ -67,8 +70,7 @@ sweepCorner(1, 1) :- not sweepFrom(_, _).
        .findall(lane(I, Z), .range(I, 0, N) & Z = -Hz + I * Fz * S, Lanes);
        .findall([X1, Z1], .member(lane(I1, Z1), Lanes) & ((I1 mod 2 == 0 & (X1 = -Hx | X1 = Hx)) | (I1 mod 2 == 1 & (X1 = Hx | X1 = -Hx))), All);
        // not into the storage area
-       ?storagePoint(Sx, Sz); ?laneClearance(C);
-       .findall([X2, Z2], .member([X2, Z2], All) & (X2 - Sx) * (X2 - Sx) + (Z2 - Sz) * (Z2 - Sz) > C * C, Ws);
+       .findall([X2, Z2], .member([X2, Z2], All) & offStorage(X2, Z2), Ws);
        -+sweep(Ws); !nextWaypoint.
 
 @nextWaypoint

@@ -10,7 +10,8 @@ import java.util.Map;
 /**
  * Experiment 3's middleware (thesis Chapter 4 §3.2): {@code location(X,Y,Z)} from the GPS
  * (truncated to centimetres, as the thesis does), {@code orientation(O)} from the compass (degrees
- * from north, clockwise: the thesis' {@code convertBearing}); signals {@code targetReached} when the
+ * from north, clockwise: the thesis' {@code convertBearing}), both from the start (the superclass
+ * publishes them, {@code startLocating}), and {@code computeAngle}; signals {@code targetReached} when the
  * robot is within the threshold of the target point, {@code noAccess} when it comes near the
  * storage area and {@code outOfStorageArea} when it has left it after {@code waitExit}.
  *
@@ -34,8 +35,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     @Override
     protected void defineProperties() {
         super.defineProperties();
-        defineObsProperty("location", 0.0, 0.0, 0.0);
-        defineObsProperty("orientation", 0.0);
+        startLocating();
     }
 
     /** The point to reach; the first one set is the storage point. */
@@ -51,18 +51,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     @OPERATION
     void setThreshold(double t) {
         threshold = t;
-    }
-
-    /** The heading (degrees from north, clockwise) from (x, z) to (tx, tz). */
-    @OPERATION
-    void computeAngle(double x, double z, double tx, double tz, OpFeedbackParam<Double> desired) {
-        desired.set(bearing(x, z, tx, tz));
-    }
-
-    static double bearing(double x, double z, double tx, double tz) {
-        double deg = Math.toDegrees(Math.atan2(tz - z, tx - x));
-        deg = deg < 0 ? deg + 360 : deg;
-        return Math.round(deg * 100) / 100.0;
     }
 
     /** Watch for the robot leaving the storage area ({@code outOfStorageArea}). */
@@ -187,27 +175,17 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
                 if (trail != null) {
                     trail.at(c[0], c[2]);
                 }
-                checkProgress(c[0], c[2]);
-                double x = trunc(c[0]);
-                double y = trunc(c[1]);
-                double z = trunc(c[2]);
-                getObsProperty("location").updateValues(x, y, z);
+                super.onReading(info, kind); // the progress watch, location
                 checkTarget(c[0], c[2]);
                 checkStorage(c[0], c[2]);
                 break;
             case COMPASS:
-                double[] n = info.getCoord();
-                noteCompass(n);
-                getObsProperty("orientation").updateValue(Math.round(heading() * 10) / 10.0);
+                super.onReading(info, kind); // orientation
                 break;
             default:
                 mapReading(kind, info.getVal());
                 super.onReading(info, kind);
         }
-    }
-
-    private static double trunc(double v) {
-        return Math.floor(v * 100) / 100.0;
     }
 
     private void checkTarget(double x, double z) {

@@ -1,6 +1,7 @@
 package jacabot.experiments;
 
 import jacabot.cartago.OPERATION;
+import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.CommandCode;
 import jacabot.robot.link.SensorInfo;
@@ -19,7 +20,9 @@ import java.util.Set;
  * in its centre), {@code cylinderBeyond} (the lateral cylinder, turned towards, is now ahead: red
  * in the centre section), {@code fallen} (the
  * carried cylinder left the gripper) and {@code lateralObstacle("left"|"right")}; and (not in the thesis) the
- * derived percept {@code stuck}, from the GPS: no progress though the robot is meant to move.
+ * derived percept {@code stuck}, from the GPS: no progress though the robot is meant to move. Once the
+ * agent asks ({@code publishLocation}, not in the thesis' experiment 2), the GPS and compass as
+ * experiment 3's percepts too: {@code location(X,Y,Z)}, {@code orientation(O)} (see {@link NavigationMiddleware}).
  */
 public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     // Tuning (ours). The thesis (§2.1) checks the camera's lateral sections when a lateral
@@ -67,6 +70,8 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     /** The last GPS position (x, z) and compass heading (the thesis' orientation, degrees), when known. */
     private double[] position;
     private double heading = Double.NaN;
+    /** Whether {@code location} and {@code orientation} are observable properties. */
+    private boolean locating;
 
     /** How close to the storage point the robot may come without a cylinder (metres). */
     static final double ACCESS_RADIUS = 0.15;
@@ -103,6 +108,42 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     @OPERATION
     void ignoreCylindersNear(double x, double z, double radius) {
         excluded.add(new double[] {x, z, radius});
+    }
+
+    /**
+     * Publishes the GPS and the compass as {@code location(X,Y,Z)} (truncated to centimetres, as the
+     * thesis does) and {@code orientation(O)} (degrees from north, clockwise: the thesis'
+     * {@code convertBearing}), experiment 3's percepts (not in the thesis' experiment 2: the
+     * object-picking agent's sweep search heads for its waypoints with them).
+     */
+    @OPERATION
+    void publishLocation() {
+        startLocating();
+    }
+
+    /** Defines {@code location} and {@code orientation}, updated from now on with each GPS and compass reading. */
+    protected void startLocating() {
+        if (!locating) {
+            locating = true;
+            defineObsProperty("location", 0.0, 0.0, 0.0);
+            defineObsProperty("orientation", 0.0);
+        }
+    }
+
+    /** The heading (degrees from north, clockwise) from (x, z) to (tx, tz). */
+    @OPERATION
+    void computeAngle(double x, double z, double tx, double tz, OpFeedbackParam<Double> desired) {
+        desired.set(bearing(x, z, tx, tz));
+    }
+
+    static double bearing(double x, double z, double tx, double tz) {
+        double deg = Math.toDegrees(Math.atan2(tz - z, tx - x));
+        deg = deg < 0 ? deg + 360 : deg;
+        return Math.round(deg * 100) / 100.0;
+    }
+
+    private static double trunc(double v) {
+        return Math.floor(v * 100) / 100.0;
     }
 
     /** The compass heading as the thesis' orientation: degrees, from north-vector {@code n}. */
@@ -259,10 +300,17 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                 break;
 
             case GPS:
-                checkProgress(info.getCoord()[0], info.getCoord()[2]);
+                double[] c = info.getCoord();
+                checkProgress(c[0], c[2]);
+                if (locating) {
+                    getObsProperty("location").updateValues(trunc(c[0]), trunc(c[1]), trunc(c[2]));
+                }
                 break;
             case COMPASS:
                 noteCompass(info.getCoord());
+                if (locating) {
+                    getObsProperty("orientation").updateValue(Math.round(heading * 10) / 10.0);
+                }
                 break;
             case CAMERA_IMAGE:
                 sight(info);

@@ -1,6 +1,7 @@
 package jacabot.experiments;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.cartago.AgentId;
@@ -242,6 +243,19 @@ class MiddlewareTest {
         b.deliver(value(SensorKind.GRIP_FORCE, 0), value(SensorKind.GRIP_PRESENCE, 0));
         assertTrue(b.signals.contains("fallen"), b.signals.toString());
         assertEquals(false, b.properties.get("picked"));
+    }
+
+    @Test
+    void objectPickingPublishesLocationAndOrientationOnlyOnceAsked() throws Exception {
+        var b = new Bench(ObjectPickingMiddleware.class);
+        var gps = new SensorInfo(SensorKind.GPS.id(), 0.256, 0.0, -0.301);
+        var compass = new SensorInfo(SensorKind.COMPASS.id(), Math.cos(Math.toRadians(90)), 0.0, -Math.sin(Math.toRadians(90)));
+        b.deliver(gps, compass);
+        assertFalse(b.properties.containsKey("location"), b.properties.toString());
+        assertTrue(b.op("publishLocation", new Object[0]).succeeded());
+        b.deliver(gps, compass);
+        assertEquals(List.of(0.25, 0.0, -0.31), b.properties.get("location"), "truncated to centimetres");
+        assertEquals(90.0, ((Number) b.properties.get("orientation")).doubleValue(), 0.05);
     }
 
     @Test
