@@ -76,3 +76,33 @@ mock_operation(_, ok).
        !assert_true(desired(90));
        !assert_true(mock_called(forward));
        -insideArea; -stuck.
+
+// a teammate waiting for the turn this robot holds: the holder turns on the spot (heading's quick
+// turn); alone at the storage point, the slow turn
+@[test]
++!test_the_turns_holder_turns_quickly_while_a_teammate_waits
+    <- !forget_calls; -waitingStorage; +storageTurnMine; -+storageQueue([khepera1]); -+desired(90); -+orientation(300);
+       !!balance;
+       !until(mock_called(setSpeeds(25, -10)), 2000);
+       -+orientation(90);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       !assert_false(mock_called(setSpeeds(50, -50)));                  // nobody waits: slowly
+       !forget_calls; -+storageQueue([khepera1, khepera2]); -+orientation(300);
+       !!balance;
+       !until(mock_called(setSpeeds(50, -50)), 2000);
+       -+orientation(90);
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       -storageTurnMine; -+storageQueue([]);
+       !assert_true(mock_called(setSpeeds(50, -50))).
+
+// on the way out with a teammate waiting, the sweep's look around is skipped (and counts as done)
+@[test]
++!test_no_look_around_on_the_way_out_while_a_teammate_waits
+    <- !forget_calls; +storageTurnMine; -+storageQueue([khepera1, khepera2]); +storageLeaving(0); -+lastLook(0);
+       !lookAround;
+       !assert_false(mock_called(setSpeeds(_, _)));
+       !assert_false(lastLook(0));
+       -storageLeaving(_); -storageTurnMine; -+storageQueue([]);
+       !forget_calls; !!lookAround;                                     // nobody waits: the look
+       !until(mock_called(setSpeeds(-50, 50)), 2000);
+       !assert_true(mock_called(setSpeeds(-50, 50))).
