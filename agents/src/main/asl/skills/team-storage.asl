@@ -12,24 +12,15 @@ storageQueueRadius(0.35).   // m from the storage point where a robot with a cyl
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
-// While a teammate waits for the turn this robot holds (storageTurnWanted), the holder hurries: it
-// turns on the spot (heading's quick turn: the slow turn took 9 s for the half turn after the put-down)
-// and does not stop for the sweep's look around on its way out (a full turn, 6.8 s, within the
-// storage clearance). A storage turn lasted 38 s on team worlds 73-102 with four robots (seed 3,
-// the reference's step logs: 5 s to the area, 19 s in it, 14 s out to the clearance), with robots
-// waiting for it 3.5 % of their time. A robot alone never has a teammate waiting: its runs are as before.
-// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T); lastLook(T) (sweep's:
-// a look skipped on the way out counts as one). Rules it extends: halted, waitingTurn, quickTurn(V, A) (heading's).
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn.
 // Reads: delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
-// storageQueue(L) (the board), quickTurnAt(V, A) (heading), location; the middleware's stuck.
+// location; the middleware's stuck.
 // Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
 // delivery, heading and avoidance: its plans for obstacles while waiting come first.
 
 halted :- waitingStorage.
 waitingTurn :- waitingStorage.
-storageTurnWanted :- storageTurnMine & storageQueue([_, _ | _]).
-quickTurn(V, A) :- storageTurnWanted & quickTurnAt(V, A).
 awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLeaveClearance(L)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) >= (C + L) * (C + L).
 
@@ -63,8 +54,6 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 // out of the area after a delivery, or a fallen cylinder (delivery forgets insideArea): the turn
 // is kept until the robot is away (storageTurnAway)
 @storageLeft -insideArea : storageTurnMine & .system_time(T) <- -+storageLeaving(T).
-// on the way out, a teammate waiting: no look around (the look is sweep's, due again lookEvery later)
-@noLookWhileWanted +!lookAround : storageTurnWanted & storageLeaving(_) & .system_time(T) <- -+lastLook(T).
 // the delivery ended or paused before the area was reached (a fall, a low battery)
 @storageNotReached -delivering : storageTurnMine & not insideArea <- !giveStorageTurn.
 @storageChargingFirst +charging : storageTurnMine & not insideArea <- !giveStorageTurn.
