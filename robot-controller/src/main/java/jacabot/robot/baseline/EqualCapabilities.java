@@ -12,7 +12,7 @@ import java.util.List;
  * routines a careful C programmer keeps beside the main loops of the equal-capability baselines,
  * with the same figures as the agents' skill parameters (skills/far-sight.asl, sweep.asl,
  * recovery.asl, progress-watch.asl): far sight from the whole camera image and homing on what it
- * shows, a sweep of the arena by lanes with looks around (or, without a storage point, search legs),
+ * shows, a sweep of the arena by lanes with looks around (object picking's too, as its agent's),
  * a watch on progress, and escapes from waits that do not end.
  *
  * <p>Every routine here steps the world itself and returns as soon as the main loop has something
@@ -28,8 +28,8 @@ final class EqualCapabilities {
     /** Progress watch: moved less than this (m) in this long (ms) is stuck. */
     static final double STUCK_DISTANCE = 0.05;
     static final long STUCK_WINDOW = 15_000;
-    /** ms without a cylinder before the sweep (skills/sweep.asl), or before the search legs (object-picking.asl). */
-    static final long SWEEP_AFTER = 45_000, SEARCH_LEGS_AFTER = 60_000;
+    /** ms without a cylinder before the sweep (skills/sweep.asl). */
+    static final long SWEEP_AFTER = 45_000;
     /** Recovery: an obstacle may stay this long (s) before the escape; backing off (s). */
     static final double CLEAR_PATIENCE = 3, ESCAPE_BACK = 1.2;
     /** The experiments' cylinders: radius in metres (the sighting's distance from its apparent width). */
@@ -49,8 +49,7 @@ final class EqualCapabilities {
     private Vec2 waypoint;
 
     /**
-     * @param storage     the storage point (sweep search, and no sighting of what lies there), or null
-     *                    (search legs)
+     * @param storage     the storage point (no sweep waypoint and no sighting there), or null (object picking)
      * @param searchAfter ms without a cylinder before the search
      */
     EqualCapabilities(ObjectPickingBaseline controller, AreaSpec storage, long searchAfter) {
@@ -96,11 +95,7 @@ final class EqualCapabilities {
             ignoreUntil = now + LOST_SIGHT_IGNORE;
         }
         if (now - lastFound > searchAfter) {
-            if (storage != null) {
-                sweepStep(now);
-            } else {
-                searchLeg();
-            }
+            sweepStep(now);
             return;
         }
         c.motion.poll(now);
@@ -242,7 +237,7 @@ final class EqualCapabilities {
         }
     }
 
-    /** The sweep's waypoints: lanes {@link #LANES} apart, ends alternating, none in the storage area. */
+    /** The sweep's waypoints: lanes {@link #LANES} apart, ends alternating, none in the storage area (if any). */
     private List<Vec2> lanes() {
         var arena = c.world.spec().arena();
         double hx = arena.width() / 2 - LANES / 2, hz = arena.depth() / 2 - LANES / 2;
@@ -251,7 +246,7 @@ final class EqualCapabilities {
         for (int i = 0; i <= n; i++) {
             double z = -hz + i * LANES;
             for (double x : i % 2 == 0 ? new double[] {-hx, hx} : new double[] {hx, -hx}) {
-                if (new Vec2(x, z).distanceTo(storage.centre()) > NavigationBaseline.NO_ACCESS + 0.1) {
+                if (storage == null || new Vec2(x, z).distanceTo(storage.centre()) > NavigationBaseline.NO_ACCESS + 0.1) {
                     out.add(new Vec2(x, z));
                 }
             }
@@ -307,19 +302,6 @@ final class EqualCapabilities {
         long end = c.now() + Math.round(seconds * 1000);
         while (c.now() < end && !interrupted()) {
             c.step();
-        }
-    }
-
-    /** Without a storage point (object picking): spin a random while, then a 15 s leg at full speed. */
-    private void searchLeg() {
-        double m = c.maxSpeed;
-        c.robot.setSpeeds(m / 2, -m / 2);
-        long end = c.now() + Math.round(c.random.nextDouble() * 3000);
-        while (c.now() < end && !interrupted()) {
-            c.step();
-        }
-        if (c.now() >= end) {
-            drive(TRAVEL, 15);
         }
     }
 

@@ -79,8 +79,7 @@ public class ObjectPickingBaseline extends BaselineController {
      */
     public final ObjectPickingBaseline withEqualCapabilities() {
         AreaSpec storage = world.spec().storage();
-        equal = new EqualCapabilities(this, storage, storage == null ? EqualCapabilities.SEARCH_LEGS_AFTER
-                : EqualCapabilities.SWEEP_AFTER);
+        equal = new EqualCapabilities(this, storage, EqualCapabilities.SWEEP_AFTER);
         return this;
     }
 
