@@ -72,15 +72,7 @@ class BroadPhasesTest {
     }
 
     private static Body box(boolean ours, double x, double y, double w, double h, double angle, boolean movable) {
-        Body b = body(ours);
-        b.addFixture(Geometry.createRectangle(w, h)).setDensity(0.3 / (w * h));
-        if (movable) {
-            b.setMass(MassType.NORMAL);
-            b.setLinearDamping(Physics.FLOOR_DAMPING);
-            b.setAngularDamping(Physics.FLOOR_DAMPING);
-        } else {
-            b.setMass(MassType.INFINITE);
-        }
+        Body b = TestBodies.of(ours, Geometry.createRectangle(w, h), 0.3 / (w * h), movable);
         b.rotate(angle);
         b.translate(x, y);
         return b;

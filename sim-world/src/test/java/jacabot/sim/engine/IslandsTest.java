@@ -58,15 +58,7 @@ class IslandsTest {
     }
 
     private static Body body(boolean ours, org.dyn4j.geometry.Convex shape, double x, double y, boolean movable) {
-        Body b = ours ? new TrackedBody() : new Body();
-        b.addFixture(shape).setDensity(1);
-        if (movable) {
-            b.setMass(MassType.NORMAL);
-            b.setLinearDamping(Physics.FLOOR_DAMPING);
-            b.setAngularDamping(Physics.FLOOR_DAMPING);
-        } else {
-            b.setMass(MassType.INFINITE);
-        }
+        Body b = TestBodies.of(ours, shape, 1, movable);
         b.translate(x, y);
         return b;
     }
