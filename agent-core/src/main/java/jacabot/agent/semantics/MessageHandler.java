@@ -362,7 +362,7 @@ final class MessageHandler {
             String message = "reply of an ask message ('" + answer + "') does not unify with fourth argument of .send ('"
                     + im.unifier().apply(send.arg(3)) + "')";
             im.removeCurrentStep();
-            rc.generateGoalDeletion(i, ReasoningCycle.errorAnnots("ask_failed", message), false);
+            rc.generateGoalDeletion(i, im.currentStep() == null ? List.of() : ReasoningCycle.errorAnnots("ask_failed", message));
         }
     }
 

@@ -447,15 +447,6 @@ final class ReasoningCycle {
 
     /** Generates {@code -!g} for the intention's top goal (or the nearest goal with a failure plan). */
     boolean generateGoalDeletion(Intention i, List<Term> annots) {
-        return generateGoalDeletion(i, annots, true);
-    }
-
-    /**
-     * As {@link #generateGoalDeletion(Intention, List)}; {@code annotateWithoutStep} false gives the
-     * event no annotation at all when the plan has no step left (Jason's failed ask answer, whose
-     * {@code .send} step is removed first).
-     */
-    boolean generateGoalDeletion(Intention i, List<Term> annots, boolean annotateWithoutStep) {
         IntendedMeans im = i.peek();
         Event failEvent = findEventForFailure(i, im.trigger());
         boolean relevant = failEvent != null;
@@ -463,9 +454,7 @@ final class ReasoningCycle {
             failEvent = new Event(im.trigger(), i);
         }
         BodyStep step = im.currentStep();
-        if (step != null || annotateWithoutStep) {
-            failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
-        }
+        failEvent = withFailureAnnots(failEvent, step == null ? null : step.withTerm(im.unifier().apply(step.term())), annots);
         if (failEvent.trigger().isGoal()) {
             notifyFailed(GoalStates.of(im), relevant, i, im, annots);
             if (relevant) {
@@ -591,7 +580,8 @@ final class ReasoningCycle {
 
     /** Adds error, error_msg, code, code_src and code_line annotations to a failure event. */
     private Event withFailureAnnots(Event e, BodyStep step, List<Term> annots) {
-        if (!(e.trigger().literal() instanceof Literal lit)) {
+        // no step and nothing to say: no annotation, as Jason (a failed ask's answer at the plan's end)
+        if (!(e.trigger().literal() instanceof Literal lit) || step == null && annots.isEmpty()) {
             return e;
         }
         var all = new ArrayList<Term>(annots);
