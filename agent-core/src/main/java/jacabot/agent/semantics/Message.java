@@ -1,5 +1,7 @@
 package jacabot.agent.semantics;
 
+import jacabot.agent.syntax.ListTerm;
+import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.Objects;
@@ -43,9 +45,23 @@ public final class Message {
     /** The prefix of a synchronous ask's id (Jason's {@code samid}N): a late answer to one is dropped. */
     public static final String SYNC_ASK_PREFIX = "samid";
 
-    /** {@return the variable under which an ask to many gathers its answers in the asker's unifier (Jason's name)} */
-    public static Var answersVar(String askId) {
+    /** {@return the answers an ask to many has gathered so far in the asker's unifier (empty before the first)} */
+    public static ListTerm answersSoFar(Unifier u, String askId) {
+        return u.get(answersVar(askId)) instanceof ListTerm l ? l : ListTerm.EMPTY;
+    }
+
+    /** Keeps the answers an ask to many has gathered, under Jason's variable name. */
+    static void keepAnswers(Unifier u, String askId, ListTerm answers) {
+        u.bind(answersVar(askId), answers);
+    }
+
+    private static Var answersVar(String askId) {
         return new Var("AnsList___" + askId);
+    }
+
+    /** {@return why an intention waits for the answer to an ask: the pending reason {@code ask(Id)}} */
+    public static Literal waitingFor(String askId) {
+        return Literal.of("ask", Literal.atom(askId));
     }
 
     /** {@return the id of a message with this serial} */

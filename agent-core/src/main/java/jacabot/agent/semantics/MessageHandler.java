@@ -346,11 +346,11 @@ final class MessageHandler {
         Term answer = answerTerm(send, m);
         if (im.unifier().apply(send.arg(0)) instanceof ListTerm receivers) {
             // an ask to many: the answers gather, in the order they come, until every receiver has answered
-            List<Term> gathered = gatheredAnswers(im.unifier(), m.inReplyTo());
+            List<Term> gathered = new ArrayList<>(Message.answersSoFar(im.unifier(), m.inReplyTo()).elements());
             gathered.add(answer);
-            im.unifier().bind(Message.answersVar(m.inReplyTo()), ListTerm.of(gathered));
+            Message.keepAnswers(im.unifier(), m.inReplyTo(), ListTerm.of(gathered));
             if (gathered.size() < receivers.elements().size()) {
-                ag.circumstance().addPendingIntention(m.inReplyTo(), Literal.of("ask", Literal.atom(m.inReplyTo())), i);
+                ag.circumstance().addPendingIntention(m.inReplyTo(), Message.waitingFor(m.inReplyTo()), i);
                 return;
             }
             answer = ListTerm.of(gathered);
@@ -364,11 +364,6 @@ final class MessageHandler {
             im.removeCurrentStep();
             rc.generateGoalDeletion(i, im.currentStep() == null ? List.of() : ReasoningCycle.errorAnnots("ask_failed", message));
         }
-    }
-
-    /** {@return the answers an ask to many has gathered so far, as a list to add to} */
-    private static List<Term> gatheredAnswers(Unifier u, String askId) {
-        return u.get(Message.answersVar(askId)) instanceof ListTerm l ? new ArrayList<>(l.elements()) : new ArrayList<>();
     }
 
     /** {@return a reply's content as the ask's answer: false for an untold askOne, the sender as a nested source} */

@@ -36,19 +36,17 @@ final class Send extends DefaultInternalAction {
             send(ag, serial, syncId, text(args[0]), performative, args[2], inReplyTo);
         }
         if (syncAsk) {
-            String id = syncId;
             Intention si = ag.circumstance().selectedIntention();
-            ag.circumstance().addPendingIntention(id, Literal.of("ask", Literal.atom(id)), si);
+            ag.circumstance().addPendingIntention(syncId, Message.waitingFor(syncId), si);
             ag.holdSelectedIntention();
             if (args.length == 5) {
                 long due = ag.clock().millis() + (long) number(args[4]);
                 Term answer = args[3];
                 ag.schedule(due, () -> {
-                    if (ag.circumstance().removePendingIntention(id) == si) {
+                    if (ag.circumstance().removePendingIntention(syncId) == si) {
                         // an ask to many ends with the answers come so far; an ask to one with timeout
-                        Term late = args[0] instanceof ListTerm ? si.peek().unifier().get(Message.answersVar(id)) : null;
                         si.peek().unifier().unifies(answer, args[0] instanceof ListTerm
-                                ? (late != null ? late : ListTerm.EMPTY) : Literal.atom("timeout"));
+                                ? Message.answersSoFar(si.peek().unifier(), syncId) : Literal.atom("timeout"));
                         si.peek().removeCurrentStep();
                         ag.circumstance().addRunningIntention(si);
                     }

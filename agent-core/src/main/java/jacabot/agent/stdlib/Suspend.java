@@ -3,7 +3,6 @@ package jacabot.agent.stdlib;
 import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
-import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 
 /** {@code .suspend(G)}: suspends the intentions pursuing G until {@code .resume(G)}; no argument: the current one. */
@@ -14,9 +13,6 @@ final class Suspend extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
-        if (args.length > 0 && !(args[0] instanceof Literal)) {
-            throw IaException.wrongArguments(name(), "first argument must be a literal"); // Jason's words
-        }
-        return Suspensions.suspend(ag, args.length == 0 ? null : (Literal) args[0], un);
+        return Suspensions.suspend(ag, args.length == 0 ? null : firstLiteral(args), un);
     }
 }
