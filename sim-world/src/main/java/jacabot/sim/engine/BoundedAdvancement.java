@@ -66,60 +66,45 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
 
     /** {@return a lower bound of the distance between the two placed shapes; negative when it may be 0} */
     static double clearance(Convex a, Transform ta, Convex b, Transform tb) {
+        return clearance(a, ta, b, tb, 0, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * {@return {@code clearance(a, ta, b, tb) - slack > threshold}, to the bit} The clearance is the
+     * largest of its terms (the circles' gap, then each edge's), and subtracting a number keeps their
+     * order, so it passes exactly when one of them does: the terms are worked out only until one
+     * passes, and most pairs pass on the circles' gap or the first edges.
+     */
+    static boolean clearanceExceeds(Convex a, Transform ta, Convex b, Transform tb, double slack, double threshold) {
+        return clearance(a, ta, b, tb, slack, threshold) - slack > threshold;
+    }
+
+    /** The clearance, or as soon as a term less {@code slack} exceeds {@code threshold}, a value that does too. */
+    private static double clearance(Convex a, Transform ta, Convex b, Transform tb, double slack, double threshold) {
         Vector2 ca = a.getCenter(), cb = b.getCenter();
         double ax = ta.getTransformedX(ca), ay = ta.getTransformedY(ca);
         double bx = tb.getTransformedX(cb), by = tb.getTransformedY(cb);
         double dx = ax - bx, dy = ay - by;
         double gap = Math.sqrt(dx * dx + dy * dy) - a.getRadius() - b.getRadius(); // not hypot: StrictMath, and slow
-        if (a instanceof Polygon p) {
-            gap = Math.max(gap, edgeGap(p, ta, bx, by) - b.getRadius());
+        if (gap - slack > threshold) {
+            return gap;
         }
-        if (b instanceof Polygon q) {
-            gap = Math.max(gap, edgeGap(q, tb, ax, ay) - a.getRadius());
+        if (a instanceof Polygon p) {
+            gap = Math.max(gap, edgeGap(p, ta, bx, by, b.getRadius(), slack, threshold) - b.getRadius());
+        }
+        if (gap - slack <= threshold && b instanceof Polygon q) {
+            gap = Math.max(gap, edgeGap(q, tb, ax, ay, a.getRadius(), slack, threshold) - a.getRadius());
         }
         return gap;
     }
 
     /**
-     * {@return {@code clearance(a, ta, b, tb) - slack > threshold}, worked out to the bit, stopping at
-     * the first of its terms (the circles' gap, then each edge's) that passes} The clearance is the
-     * largest of its terms, and subtracting a number keeps their order, so it passes exactly when one
-     * of them does; most pairs pass on the circles' gap or the first edges, without the rest.
-     */
-    static boolean clearanceExceeds(Convex a, Transform ta, Convex b, Transform tb, double slack, double threshold) {
-        Vector2 ca = a.getCenter(), cb = b.getCenter();
-        double ax = ta.getTransformedX(ca), ay = ta.getTransformedY(ca);
-        double bx = tb.getTransformedX(cb), by = tb.getTransformedY(cb);
-        double dx = ax - bx, dy = ay - by;
-        if (Math.sqrt(dx * dx + dy * dy) - a.getRadius() - b.getRadius() - slack > threshold) {
-            return true;
-        }
-        return a instanceof Polygon p && edgeGapExceeds(p, ta, bx, by, b.getRadius(), slack, threshold)
-                || b instanceof Polygon q && edgeGapExceeds(q, tb, ax, ay, a.getRadius(), slack, threshold);
-    }
-
-    /** {@return whether some edge's term of {@link #edgeGap}, less {@code radius}, less {@code slack}, exceeds {@code threshold}} */
-    private static boolean edgeGapExceeds(Polygon p, Transform t, double x, double y, double radius, double slack, double threshold) {
-        double dx = x - t.getTranslationX(), dy = y - t.getTranslationY();
-        double cos = t.getCost(), sin = t.getSint();
-        double lx = cos * dx + sin * dy, ly = -sin * dx + cos * dy;
-        Vector2[] vertices = p.getVertices();
-        Vector2[] normals = p.getNormals();
-        for (int i = 0; i < vertices.length; i++) {
-            Vector2 v = vertices[i], n = normals[i];
-            if (n.x * (lx - v.x) + n.y * (ly - v.y) - radius - slack > threshold) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
      * The largest signed distance from the point (x, y) to the lines of the polygon's edges: the
-     * polygon lies behind each line, so a shape around the point is at least this far minus its
-     * radius.
+     * polygon lies behind each line, so a shape of {@code radius} around the point is at least this
+     * far minus its radius. The edges stop at the first whose distance, less radius and slack,
+     * exceeds {@code threshold}.
      */
-    private static double edgeGap(Polygon p, Transform t, double x, double y) {
+    private static double edgeGap(Polygon p, Transform t, double x, double y, double radius, double slack, double threshold) {
         // the point in the polygon's own frame: the inverse rotation of its offset
         double dx = x - t.getTranslationX(), dy = y - t.getTranslationY();
         double cos = t.getCost(), sin = t.getSint();
@@ -129,7 +114,11 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
         double best = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < vertices.length; i++) {
             Vector2 v = vertices[i], n = normals[i];
-            best = Math.max(best, n.x * (lx - v.x) + n.y * (ly - v.y));
+            double d = n.x * (lx - v.x) + n.y * (ly - v.y);
+            best = Math.max(best, d);
+            if (d - radius - slack > threshold) {
+                break;
+            }
         }
         return best;
     }
