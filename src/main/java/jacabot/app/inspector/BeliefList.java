@@ -21,9 +21,19 @@ public final class BeliefList extends AbstractList<MindState.Belief> implements 
     /** The index after each group's last belief. */
     private final int[] ends;
 
-    /** @param groups the groups' beliefs, the first {@code count} of them used; no array is written afterwards */
+    /**
+     * @param groups the groups' beliefs, the first {@code count} of them used (the array itself
+     *        when that is all of it); no array is written afterwards
+     */
     BeliefList(MindState.Belief[][] groups, int count) {
-        this.groups = Arrays.copyOf(groups, count);
+        if (groups.length != count) {
+            // not Arrays.copyOf: for an array of another class than Object[] it goes through
+            // Array.newInstance, a call into the VM with C1 only (gradle run's setting)
+            var some = new MindState.Belief[count][];
+            System.arraycopy(groups, 0, some, 0, count);
+            groups = some;
+        }
+        this.groups = groups;
         this.ends = new int[count];
         int n = 0;
         for (int g = 0; g < count; g++) {
