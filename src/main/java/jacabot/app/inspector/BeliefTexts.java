@@ -17,7 +17,9 @@ import java.util.List;
  * beliefs they gave. Facts and rules are immutable: within a changed group, one the last capture
  * showed is shown as the same object (its text kept). A fact or rule holding an object term that
  * is not a value (its Java object may change) is printed at every capture, and so is its group.
- * Not thread-safe: the agent's thread captures.
+ * The list is a {@link BeliefList} of the groups' arrays: an unchanged group's array is shared
+ * with the last capture's list, not copied belief by belief. Not thread-safe: the agent's thread
+ * captures.
  */
 final class BeliefTexts {
     /**
@@ -60,7 +62,7 @@ final class BeliefTexts {
     private final IdentityHashMap<Term, String> annotTexts = new IdentityHashMap<>();
     /** The belief base's change count at the last capture. */
     private long changes = -1;
-    private List<MindState.Belief> last = List.of();
+    private List<MindState.Belief> last = BeliefList.EMPTY;
     /** Whether some group of the last list holds an entry printed anew at every capture. */
     private boolean holdsObjects;
     /**
@@ -77,15 +79,11 @@ final class BeliefTexts {
         if (base.changes() == changes && !holdsObjects) {
             return last;
         }
-        var beliefs = new ArrayList<MindState.Belief>(base.size());
         var walk = new Walk(Math.max(count + 4, 16));
         base.forEachGroup((group, changedAt, entries) -> {
             Shown was = walk.find(group);
             Shown s = was != null && was.changedAt() == changedAt && was.stable() ? was : show(changedAt, entries, was);
             walk.add(group, s);
-            for (MindState.Belief b : s.beliefs()) {
-                beliefs.add(b);
-            }
             walk.objects |= !s.stable();
         });
         groups = walk.groups;
@@ -93,7 +91,11 @@ final class BeliefTexts {
         count = walk.count;
         changes = base.changes();
         holdsObjects = walk.objects;
-        last = List.copyOf(beliefs);
+        var parts = new MindState.Belief[count][];
+        for (int k = 0; k < count; k++) {
+            parts[k] = shown[k].beliefs(); // a group not shown anew: its array of the last capture
+        }
+        last = new BeliefList(parts, count);
         return last;
     }
 

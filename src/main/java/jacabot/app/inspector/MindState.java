@@ -16,7 +16,7 @@ public record MindState(String agent, long seq, long timeMs, long cycle, List<Be
         List<IntentionView> intentions, List<Selection> selections) {
 
     public MindState {
-        beliefs = List.copyOf(beliefs);
+        beliefs = beliefs instanceof BeliefList shared ? shared : List.copyOf(beliefs); // immutable: kept as it is
         events = List.copyOf(events);
         intentions = List.copyOf(intentions);
         selections = List.copyOf(selections);

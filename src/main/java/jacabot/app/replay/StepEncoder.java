@@ -30,7 +30,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
-import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -58,11 +57,7 @@ final class StepEncoder implements Closeable {
     volatile Consumer<Chunk> onChunk = c -> {
     };
     volatile Consumer<Step> onStep;
-    private Map<String, MindState.Belief> beliefs = new LinkedHashMap<>();
-    /** The last step's beliefs' texts, by identity. */
-    private IdentityHashMap<MindState.Belief, String> beliefTexts = new IdentityHashMap<>();
-    /** The last step's list of beliefs: the probe gives the same one while they do not change. */
-    private List<MindState.Belief> beliefList;
+    private final BeliefDelta beliefs = new BeliefDelta();
     private List<MindState.IntentionView> intentions = List.of();
     private List<String> events = List.of();
     private final Map<String, Moved> objects = new HashMap<>();
@@ -113,8 +108,7 @@ final class StepEncoder implements Closeable {
         Lag lag = s.lag();
         if (key) {
             chunkFirstTime = timeMs;
-            beliefs.clear(); // a key step holds the whole mind, and every movable object
-            beliefList = null;
+            beliefs.reset(); // a key step holds the whole mind, and every movable object
             intentions = null;
             events = null;
             objects.clear();
@@ -217,48 +211,15 @@ final class StepEncoder implements Closeable {
     }
 
     private MindDelta delta(MindState mind) {
-        List<MindState.Belief> added = null;
-        List<String> removed = null;
-        // the probe gives the same list while the belief base does not change
-        if (mind.beliefs() != beliefList) {
-            added = new ArrayList<>();
-            removed = new ArrayList<>();
-            beliefsDelta(mind.beliefs(), added, removed);
-            beliefList = mind.beliefs();
-        }
+        var added = new ArrayList<MindState.Belief>();
+        var removed = new ArrayList<String>();
+        beliefs.between(mind.beliefs(), added, removed);
         List<MindState.IntentionView> ints = mind.intentions().equals(intentions) ? null : mind.intentions();
         intentions = mind.intentions();
         List<String> evs = mind.events().equals(events) ? null : mind.events();
         events = mind.events();
-        return new MindDelta(mind.cycle(), added == null || added.isEmpty() ? null : added,
-                removed == null || removed.isEmpty() ? null : removed,
+        return new MindDelta(mind.cycle(), added.isEmpty() ? null : added, removed.isEmpty() ? null : removed,
                 mind.selections().isEmpty() ? null : mind.selections(), ints, evs);
-    }
-
-    /** Adds to {@code added} the beliefs not in the last step's, to {@code removed} the texts of those gone. */
-    private void beliefsDelta(List<MindState.Belief> now, List<MindState.Belief> added, List<String> removed) {
-        // sized for the step's beliefs: no rehashing as they go in
-        var byText = new LinkedHashMap<String, MindState.Belief>(now.size() * 4 / 3 + 1);
-        // the probe gives a belief that did not change as the same object: its text is known
-        var texts = new IdentityHashMap<MindState.Belief, String>(now.size());
-        for (MindState.Belief b : now) {
-            String key = beliefTexts.get(b);
-            if (key == null) {
-                key = b.text();
-            }
-            texts.put(b, key);
-            byText.put(key, b);
-            if (!beliefs.containsKey(key)) {
-                added.add(b);
-            }
-        }
-        for (String key : beliefs.keySet()) {
-            if (!byText.containsKey(key)) {
-                removed.add(key);
-            }
-        }
-        beliefs = byText;
-        beliefTexts = texts;
     }
 
     /** Writes {@code name: [texts]}, or nothing for no text. */
