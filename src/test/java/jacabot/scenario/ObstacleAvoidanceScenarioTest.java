@@ -7,6 +7,8 @@ import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;
 import jacabot.sim.geom.Rgb;
 import jacabot.sim.world.BoxSpec;
+import jacabot.sim.world.WorldSpec;
+import java.util.List;
 import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -68,7 +70,12 @@ class ObstacleAvoidanceScenarioTest {
     private static void checkBoxInFront(long seed) throws Exception {
         long[] placedAt = {-1};
         double[] contactBefore = {0};
-        ScenarioRun run = ScenarioRun.run(Experiment.OBSTACLE_AVOIDANCE, seed, false, 90, UnaryOperator.identity(), (t, r) -> {
+        // without the world file's scheduled changes: its box added at 40 s at a fixed place came
+        // down on the robot when it passed there (seed 1, the agent without the standstill before its
+        // turns: 4.8 s of contact with a box at its blind flank), a touch that is no reaction to this box
+        UnaryOperator<WorldSpec> noEvents = s -> new WorldSpec(s.name(), s.arena(), s.basicTimeStep(), s.controlStep(), s.seed(),
+                s.sensorNoise(), s.walls(), s.boxes(), s.cylinders(), s.storage(), s.charger(), s.robots(), List.of());
+        ScenarioRun run = ScenarioRun.run(Experiment.OBSTACLE_AVOIDANCE, seed, false, 90, noEvents, (t, r) -> {
             if (placedAt[0] >= 0 || t < 20_000) {
                 return;
             }
