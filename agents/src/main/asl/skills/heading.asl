@@ -15,6 +15,8 @@ speedOnTheWay(100) :- not travelSpeed(_).
 // Reads: targetPoint(X, Z) (the skill that sends the robot: delivery, recharge); location, orientation,
 // delta (the middleware); travelling, halted, insideArea (rules of the skills that send the robot),
 // avoiding (avoidance); quickTurns or quickTurn(V, A) (the agent's, optional: see @balanceQuickRight).
+// An agent may put a rule offBy(A) of its own before its includes (the first that holds is taken: tidy-up's
+// 3 degrees near the storage point).
 // Beliefs: desired(Degrees), firstTime, ~around (delivery reads them), aim(X, Z) (the point headed
 // for: the target point, or route.asl's point on the way to it).
 // Needs: avoidance (!avoid), recovery (!escape). Included by delivery (between its "+stuck" plans:
