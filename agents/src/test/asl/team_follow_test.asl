@@ -2,8 +2,7 @@
 // team-delivery.asl): a robot on its way to the storage point stops behind a teammate that is
 // ahead of it, too close and nearer the storage point, and goes on once that teammate is far
 // enough; the teammate nearer the point never waits for the one behind; a wait behind a teammate
-// that stands in no queue is bounded; a teammate that carries no cylinder and stands in no queue
-// (on its way to the charger, searching) is not on the same way and is not waited for. Run: jacabot test agents/src/test/asl
+// that stands in no queue is bounded. Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/team-delivery.asl") }
@@ -20,7 +19,6 @@ mock_operation(_, ok).
 +!test_the_robot_behind_waits_and_goes_on_when_the_way_is_clear
     <- !forget_calls; +storageQueue([]); +chargerQueue([]); -+targetPoint(0.41, -0.41);
        +location(-0.1, 0, 0.1); +orientation(315); +delivering;   // heading for the storage point
-       +claimed(7, khepera1, 0.0, 0.0, 0.1);                      // it carries a cylinder (claim at its place)
        !!perceive(robotAt(khepera1, 0.0, 0.0));                  // 0.14 m ahead, nearer the point
        !until(following(_), 3000);
        !assert_true(following(khepera1));
@@ -29,8 +27,7 @@ mock_operation(_, ok).
        .wait(400);
        !assert_true(following(khepera1));                         // still there: it waits
        !forget_calls;
-       -robotAt(khepera1, _, _); -claimed(7, _, _, _, _); +claimed(7, khepera1, 0.16, -0.16, 0.1);
-       !!perceive(robotAt(khepera1, 0.16, -0.16));                // 0.37 m ahead now
+       -robotAt(khepera1, _, _); !!perceive(robotAt(khepera1, 0.16, -0.16));   // 0.37 m ahead now
        !until(not following(_), 3000);
        !assert_false(following(_));
        // the heading comes a few reasoning steps after the wait ends, in the skill's own intention:
@@ -38,7 +35,7 @@ mock_operation(_, ok).
        !until(mock_called(computeAngle(_, _, 0.41, -0.41, _)), 3000);
        !assert_true(mock_called(computeAngle(_, _, 0.41, -0.41, _)));          // heads on again
        !until(not .intend(followResume), 3000);
-       .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _); -claimed(7, _, _, _, _).
+       .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _).
 
 @[test]
 +!test_the_robot_nearer_the_point_goes_on
@@ -52,33 +49,13 @@ mock_operation(_, ok).
 @[test]
 +!test_a_wait_behind_a_teammate_in_no_queue_is_bounded
     <- !forget_calls; -location(_, _, _); +location(-0.1, 0, 0.1); -+followTime(600);
-       +claimed(7, khepera1, 0.0, 0.0, 0.1);
        !!perceive(robotAt(khepera1, 0.0, 0.0));
        !until(following(_), 3000);
        !assert_true(following(khepera1));
        !until(not following(_), 3000);                            // the teammate does not move
        !assert_false(following(_));
        !assert_true(followedOut(khepera1));                        // passed by for a while
-       .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _); -claimed(7, _, _, _, _).
-
-@[test]
-+!test_a_teammate_off_the_way_is_not_waited_for
-    <- !forget_calls; -location(_, _, _); +location(-0.1, 0, 0.1); -followedOut(_);
-       +claimed(7, khepera1, 0.5, 0.5, 0.1);                      // its claim is elsewhere: it carries nothing
-       !!perceive(robotAt(khepera1, 0.0, 0.0));                  // ahead, too close, nearer the point
-       .wait(400);
-       !assert_false(following(_));
-       !assert_false(mock_called(stop));
-       -robotAt(khepera1, _, _); -claimed(7, _, _, _, _);
-       +storageQueue([khepera1]);                                 // the same teammate queued for the storage area
-       !!perceive(robotAt(khepera1, 0.0, 0.0));
-       !until(following(_), 3000);
-       !assert_true(following(khepera1));
-       -robotAt(khepera1, _, _); !!perceive(robotAt(khepera1, 0.16, -0.16));   // gone on
-       !until(not following(_), 3000);
-       !assert_false(following(_));
-       !until(not .intend(followResume), 3000);
-       .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _); -+storageQueue([]).
+       .drop_desire(balance); .drop_desire(steer); -robotAt(khepera1, _, _).
 
 @[test]
 +!test_a_robot_not_on_its_way_keeps_no_distance

@@ -9,10 +9,7 @@
 // waits for the other, so they never both wait. A wait lasts followTime at most, or
 // followTimeStanding if the one ahead stands in a queue (team-way's standing: it waits for its
 // turn, so will this one); then that teammate is not waited for during followAgain (avoidance and
-// detours take over). Only a teammate on the same way is waited for: one that carries a cylinder
-// (its claim sits at its published place: team-claims) or stands in the storage area's queue.
-// Behind a teammate on its way to the charger, homing or searching, the wait ended by followTime
-// (5 s) with the ways parted: 11 of 17 waits, two robots, team worlds 73-78 × seed 1.
+// detours take over).
 // Parameters:
 followDistance(0.25).  // m between two robots' centres (a robot and the cylinder it holds reach 9 cm)
 followTime(5000).      // ms a robot waits behind a teammate that does not stand in a queue
@@ -20,7 +17,7 @@ followTimeStanding(30000). // ms it waits behind one that does
 followAgain(8000).     // ms during which a teammate waited for that long is not waited for again
 followPoll(200).       // ms between two looks at the places while waiting
 // Beliefs: following(A), followedOut(A). Rules it extends: halted, waitingTurn. Rules it offers: followBehind(A).
-// Reads: robotAt(A, X, Z), claimed(Id, A, X, Z, R), storageQueue(L) (the board), targetPoint(X, Z), delivering, onErrand, avoiding, givingWay,
+// Reads: robotAt(A, X, Z) (the board), targetPoint(X, Z), delivering, onErrand, avoiding, givingWay,
 // waitingStorage, storageTurnMine, location, orientation.
 // Needs: team-places (the places), team-way (aheadOfMe, standing, !standStill), heading (computeGap, balance,
 // steer). Include it after team-way (a teammate too close is given way first) and before heading:
@@ -35,9 +32,7 @@ followBehind(A) :- delivering & not onErrand & not storageTurnMine & targetPoint
     & robotAt(A, Ax, Az) & not .my_name(A) & not followedOut(A) & followDistance(D)
     & (Ax - X) * (Ax - X) + (Az - Z) * (Az - Z) < D * D
     & (Ax - Tx) * (Ax - Tx) + (Az - Tz) * (Az - Tz) < (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)
-    & aheadOfMe(Ax, Az) & sameWay(A, Ax, Az).
-sameWay(A, Ax, Az) :- claimed(_, A, Ax, Az, _).
-sameWay(A, _, _) :- storageQueue(L) & .member(A, L).
+    & aheadOfMe(Ax, Az).
 
 @followTeammate[atomic]
 +robotAt(_, _, _) : not halted & not avoiding & not givingWay & not following(_) & followBehind(A)
