@@ -47,6 +47,34 @@ public final class BeliefList extends AbstractList<MindState.Belief> implements 
         return groups.length;
     }
 
+    /**
+     * {@return where {@code group} (an array of this list's, by identity) is, looked for from
+     * {@code from} on first, then before it; -1: not there} (see {@link #indexFrom})
+     */
+    public int indexOfGroup(MindState.Belief[] group, int from) {
+        return indexFrom(groups, groups.length, group, from);
+    }
+
+    /**
+     * {@return where {@code x} is among the first {@code n} of {@code items}, by identity, or -1}
+     * Looked for where the last capture had it or a little further on (in place, or past items that
+     * moved or went), then before that (moved to the end since): the belief base moves a changed
+     * property's group to the end, so a walk in order finds each at once.
+     */
+    static int indexFrom(Object[] items, int n, Object x, int from) {
+        for (int k = from; k < n; k++) {
+            if (items[k] == x) {
+                return k;
+            }
+        }
+        for (int k = 0; k < from && k < n; k++) {
+            if (items[k] == x) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
     /** {@return group {@code g}'s beliefs, read only: the same array in two lists when the capture kept that group} */
     public MindState.Belief[] group(int g) {
         return groups[g];

@@ -115,20 +115,14 @@ final class BeliefTexts {
 
         /** {@return how the last capture showed {@code group}, or null} */
         Shown find(Object group) {
-            Object[] before = BeliefTexts.this.groups;
-            int n = BeliefTexts.this.count;
-            for (int k = next; k < n; k++) { // in place, or past groups that moved or went
-                if (before[k] == group) {
-                    next = k + 1;
-                    return BeliefTexts.this.shown[k];
-                }
+            int k = BeliefList.indexFrom(BeliefTexts.this.groups, BeliefTexts.this.count, group, next);
+            if (k < 0) {
+                return null;
             }
-            for (int k = 0; k < next && k < n; k++) { // moved to the end since
-                if (before[k] == group) {
-                    return BeliefTexts.this.shown[k];
-                }
+            if (k >= next) {
+                next = k + 1; // found in place or further on: the walk goes on from there
             }
-            return null;
+            return BeliefTexts.this.shown[k];
         }
 
         void add(Object group, Shown s) {

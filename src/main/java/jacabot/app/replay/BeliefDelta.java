@@ -75,7 +75,7 @@ final class BeliefDelta {
         var fresh = new boolean[now.groups()];
         int next = 0;
         for (int g = 0; g < now.groups(); g++) {
-            int at = find(was, before, now.group(g), next);
+            int at = was == null ? -1 : was.indexOfGroup(now.group(g), next);
             if (at < 0) {
                 fresh[g] = true;
             } else {
@@ -112,21 +112,6 @@ final class BeliefDelta {
                 gone(Arrays.asList(was.group(g)), removed, said);
             }
         }
-    }
-
-    /** {@return where {@code group} is among the first {@code n} groups of {@code was}, from {@code from} on first; -1: not there} */
-    private static int find(BeliefList was, int n, MindState.Belief[] group, int from) {
-        for (int k = from; k < n; k++) { // in place, or past groups that moved or went
-            if (was.group(k) == group) {
-                return k;
-            }
-        }
-        for (int k = 0; k < from && k < n; k++) { // moved to the end since
-            if (was.group(k) == group) {
-                return k;
-            }
-        }
-        return -1;
     }
 
     /** Adds to {@code removed} the texts of {@code beliefs} that no belief has now, each once ({@code said}: those added). */
