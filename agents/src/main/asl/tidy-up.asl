@@ -11,7 +11,7 @@ resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress
 !start.
 // trips and waypoints through the robot's own map (route: by compass a trip dithered up to 80 s at a box), a way out of
 // the storage corner; near the storage point re-aligned when 3 degrees off, not 10 (else it passed the point 4 cm aside)
-offBy(3) :- delivering & targetPoint(Tx, Tz) & location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N.
+offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
 { include("skills/storage-exit.asl") }

@@ -23,7 +23,8 @@ routeReach(0.1).
 // "Users' arenas: the wide profile"); travelling (delivery: the trips plan at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
-// routeHold: the sweep's target and when its aim was planned).
+// routeHold: the sweep's target and when its aim was planned); the rule nearTarget(X, Z) (within
+// routeNear of the point).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
 // delivery (heading's +!aimAt plans come after its own). Suspend/resume includes it, with way-back.asl
 // and routeHold (a gain on the wide worlds: docs/comparison.md, "Users' arenas: the wide profile");
@@ -35,9 +36,11 @@ setUpGoal(setUpRoute).
 
 @setUpRoute +!setUpRoute : arena(W, D) & routeMemory(M) <- routeMap(W, D, M).
 
+// within routeNear of (Tx, Tz): the robot heads for it straight (tidy-up's re-alignment reads it too)
+nearTarget(Tx, Tz) :- location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N.
 // the point to head for on the way to (Tx, Tz): the route's, believed as aim(X, Z)
 @aimNearTarget
-+!aimAt(Tx, Tz) : routePlanning & location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N
++!aimAt(Tx, Tz) : routePlanning & nearTarget(Tx, Tz)
     <- -+aim(Tx, Tz).
 // the held point: for H ms at most, until the robot is within routeReach of it (a point it passed
 // pulled it back) or an obstacle turned it away since (the point may lie behind it)
