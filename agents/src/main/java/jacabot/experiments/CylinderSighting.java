@@ -27,7 +27,8 @@ public record CylinderSighting(double offset, int columns, double distance) {
      * @param fov the camera's horizontal field of view, degrees
      */
     public static Optional<CylinderSighting> find(int[] framed, double fov) {
-        return all(framed, fov).stream().findFirst();
+        List<CylinderSighting> runs = all(framed, fov); // no stream: most images have none
+        return runs.isEmpty() ? Optional.empty() : Optional.of(runs.get(0));
     }
 
     /**
