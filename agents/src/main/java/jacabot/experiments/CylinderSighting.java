@@ -27,7 +27,8 @@ public record CylinderSighting(double offset, int columns, double distance) {
      * @param fov the camera's horizontal field of view, degrees
      */
     public static Optional<CylinderSighting> find(int[] framed, double fov) {
-        return all(framed, fov).stream().findFirst();
+        List<CylinderSighting> runs = all(framed, fov); // no stream: most images have none
+        return runs.isEmpty() ? Optional.empty() : Optional.of(runs.get(0));
     }
 
     /**
@@ -46,10 +47,14 @@ public record CylinderSighting(double offset, int columns, double distance) {
         if (width <= 0 || height <= 0 || framed.length != 2 + (long) width * height) {
             return runs;
         }
+        boolean[] redColumns = redColumns(framed, width, height);
+        if (redColumns == null) {
+            return runs;
+        }
         double perColumn = fov / width;
         int runFrom = -1;
         for (int c = 0; c <= width; c++) {
-            boolean red = c < width && redColumn(framed, width, height, c);
+            boolean red = c < width && redColumns[c];
             if (red && runFrom < 0) {
                 runFrom = c;
             } else if (!red && runFrom >= 0) {
@@ -64,13 +69,27 @@ public record CylinderSighting(double offset, int columns, double distance) {
         return runs;
     }
 
-    private static boolean redColumn(int[] framed, int width, int height, int c) {
-        for (int y = 0; y < height; y++) {
-            int p = framed[2 + y * width + c];
-            if (ObjectPickingMiddleware.isRed((p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF)) {
-                return true;
+    /**
+     * {@return whether each column holds a red pixel, or null when none does (most images)}: the
+     * image read row by row, as it lies in the array, a column's pixels passed over once it is red
+     * (a column at a time strode through the array: 3 % of the agent's thread in experiment 4)
+     */
+    static boolean[] redColumns(int[] framed, int width, int height) {
+        boolean[] red = null;
+        for (int y = 0, i = 2; y < height; y++) {
+            for (int c = 0; c < width; c++, i++) {
+                if (red != null && red[c]) {
+                    continue;
+                }
+                int p = framed[i];
+                if (ObjectPickingMiddleware.isRed((p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF)) {
+                    if (red == null) {
+                        red = new boolean[width];
+                    }
+                    red[c] = true;
+                }
             }
         }
-        return false;
+        return red;
     }
 }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 class CylinderSightingTest {
@@ -60,5 +61,37 @@ class CylinderSightingTest {
         assertTrue(CylinderSighting.find(new int[] {64, 8, RED}, 60).isEmpty(), "pixels missing");
         assertTrue(CylinderSighting.find(new int[] {-1, 8}, 60).isEmpty());
         assertTrue(CylinderSighting.find(new int[0], 60).isEmpty());
+    }
+
+    @Test
+    void redColumnsReadRowByRowAreTheColumnsHoldingARedPixel() {
+        Random random = new Random(7);
+        int[] palette = {GREY, RED, BEIGE, 0x2A1010, 0x291010, 0x501E28, 0x50282A, 0x502828};
+        for (int n = 0; n < 2_000; n++) {
+            int w = 1 + random.nextInt(70), h = 1 + random.nextInt(10);
+            int[] framed = new int[2 + w * h];
+            framed[0] = w;
+            framed[1] = h;
+            double redShare = random.nextInt(4) == 0 ? 0 : random.nextDouble() * 0.2;
+            for (int i = 2; i < framed.length; i++) {
+                framed[i] = random.nextDouble() < redShare ? palette[1 + random.nextInt(palette.length - 1)]
+                        : random.nextBoolean() ? palette[random.nextInt(palette.length)] : random.nextInt(1 << 24);
+            }
+            boolean[] expected = new boolean[w];
+            boolean any = false;
+            for (int c = 0; c < w; c++) { // a column at a time, every pixel tested
+                for (int y = 0; y < h; y++) {
+                    int p = framed[2 + y * w + c];
+                    expected[c] |= ObjectPickingMiddleware.isRed((p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF);
+                }
+                any |= expected[c];
+            }
+            boolean[] got = CylinderSighting.redColumns(framed, w, h);
+            if (any) {
+                assertTrue(Arrays.equals(expected, got), "image " + n);
+            } else {
+                assertTrue(got == null, "image " + n + " has no red pixel");
+            }
+        }
     }
 }

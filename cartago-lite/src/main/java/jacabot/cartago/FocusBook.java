@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * The focus bookkeeping of a workspace: the agents that joined, the observer and body of each,
@@ -19,9 +20,20 @@ final class FocusBook {
 
     private final String workspace;
     private final Map<AgentId, Entry> agents = new ConcurrentHashMap<>();
+    /** Moved after each change to the agents or their focus lists: see {@link #changes}. */
+    private final AtomicLong changes = new AtomicLong();
 
     FocusBook(String workspace) {
         this.workspace = workspace;
+    }
+
+    /**
+     * {@return how many times the agents or their focus lists changed} Counted after each change,
+     * so an answer worked out from the lists after reading the count is stale once it moves
+     * ({@link OpRoutes}).
+     */
+    long changes() {
+        return changes.get();
     }
 
     boolean has(AgentId agent) {
@@ -30,6 +42,7 @@ final class FocusBook {
 
     void add(AgentId agent, ArtifactObserver observer, ArtifactId body) {
         agents.put(agent, new Entry(agent, observer, body, new CopyOnWriteArrayList<>()));
+        changes.incrementAndGet();
     }
 
     Entry get(AgentId agent) {
@@ -38,6 +51,7 @@ final class FocusBook {
 
     void remove(AgentId agent) {
         agents.remove(agent);
+        changes.incrementAndGet();
     }
 
     List<AgentId> agents() {
@@ -72,6 +86,7 @@ final class FocusBook {
             }
             if (core.addObserver(agent, entry.observer())) {
                 entry.focused().add(core.id());
+                changes.incrementAndGet();
             }
         } finally {
             core.lock().unlock();
@@ -93,6 +108,7 @@ final class FocusBook {
         if (entry != null) {
             entry.focused().remove(core.id());
         }
+        changes.incrementAndGet();
     }
 
     /** Forgets a disposed artifact in the lists of its former observers. */
@@ -103,5 +119,6 @@ final class FocusBook {
                 entry.focused().remove(artifact);
             }
         }
+        changes.incrementAndGet();
     }
 }

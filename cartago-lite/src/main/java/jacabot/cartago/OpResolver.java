@@ -56,9 +56,25 @@ final class OpResolver {
      * The operation on the first of the agent's {@link #candidates} that has it, or null; looked
      * for in the same order without building the ordered set, since an agent's every operation
      * comes here (a core met twice had no such operation the first time, and has none the second).
+     * The artifact found is kept ({@link OpRoutes}) until the artifacts or the focus lists change:
+     * the first that has a method of that name and arity is the one, whatever the arguments.
      */
     private static OpExecution firstOffering(Workspace ws, AgentId agent, String operation, Object[] args, OpCallback callback) {
+        long focus = ws.focusBook().changes(); // before the lists are read: see FocusBook.changes
         List<ArtifactCore> live = ws.cores();
+        ArtifactCore known = ws.routes().get(live, focus, agent, operation, args.length);
+        if (known != null) {
+            return offeredBy(known, operation, args, agent, callback);
+        }
+        OpExecution found = firstOffering(ws, live, agent, operation, args, callback);
+        if (found != null) {
+            ws.routes().put(live, focus, agent, operation, args.length, found.core());
+        }
+        return found;
+    }
+
+    private static OpExecution firstOffering(Workspace ws, List<ArtifactCore> live, AgentId agent, String operation,
+            Object[] args, OpCallback callback) {
         for (ArtifactCore core : live) {
             if (agent.equals(core.id().creator())) {
                 OpExecution found = offeredBy(core, operation, args, agent, callback);

@@ -37,6 +37,7 @@ public final class Workspace implements AutoCloseable {
     private final Scheduler scheduler;
     private final FocusBook agents;
     private final ArtifactRegistry registry;
+    private final OpRoutes routes = new OpRoutes();
     private volatile boolean closed;
     /** Completed operations kept per agent and artifact; 0: the operation log is off. */
     private volatile int operationsKept;
@@ -131,6 +132,11 @@ public final class Workspace implements AutoCloseable {
 
     FocusBook focusBook() {
         return agents;
+    }
+
+    /** {@return where the agents' operations without a target went, while nothing changed} */
+    OpRoutes routes() {
+        return routes;
     }
 
     // ---- operations ----

@@ -18,6 +18,19 @@ class ResolutionTest {
         }
     }
 
+    /** Tells its own name, with one argument or two. */
+    public static class Named extends Artifact {
+        @OPERATION
+        void who(OpFeedbackParam<String> name) {
+            name.set(getId().name());
+        }
+
+        @OPERATION
+        void who(String prefix, OpFeedbackParam<String> name) {
+            name.set(prefix + getId().name());
+        }
+    }
+
     /** Several methods of one name: exact arities before varargs, an internal operation never for an agent. */
     public static class Overloads extends Artifact {
         void init() {
@@ -166,6 +179,45 @@ class ResolutionTest {
             bobSees.drain();
             ok(ws, bob, "inc");
             bobSees.expect("other count(0)->count(1)", "other !tick");
+        }
+    }
+
+    private static String who(Workspace ws, AgentId agent) {
+        String once = (String) ok(ws, agent, "who", new OpFeedbackParam<>()).outputs().get(0);
+        assertEquals(once, ok(ws, agent, "who", new OpFeedbackParam<>()).outputs().get(0), "asked again");
+        assertEquals("to " + once, ok(ws, agent, "who", "to ", new OpFeedbackParam<>()).outputs().get(1), "another arity");
+        return once;
+    }
+
+    /**
+     * Where an operation without a target went is kept ({@code OpRoutes}) only while the artifacts
+     * and the agents' focus stay as they were: each change below moves the answer, asked twice.
+     */
+    @Test
+    void theArtifactAnOperationGoesToFollowsArtifactsAndFocusAsTheyChange() throws CartagoException {
+        try (Workspace ws = Calls.quiet("main").stepped().build()) {
+            AgentId bob = ws.join("bob", new RecordingObserver());
+            AgentId alice = ws.join("alice", new RecordingObserver());
+            ws.createArtifact("oldest", Named.class);
+            assertEquals("oldest", who(ws, bob));
+            ArtifactId made = Calls.makeArtifact(ws, bob, "bobs", Named.class);
+            assertEquals("bobs", who(ws, bob), "made by bob: his first");
+            assertEquals("oldest", who(ws, alice), "alice made none");
+            ArtifactId focused = ws.createArtifact("focused", Named.class);
+            ok(ws, bob, "focus", focused);
+            assertEquals("bobs", who(ws, bob), "made before focused");
+            ok(ws, alice, "focus", focused);
+            assertEquals("focused", who(ws, alice), "focused before the oldest");
+            ws.disposeArtifact(made);
+            assertEquals("focused", who(ws, bob));
+            ok(ws, bob, "stopFocus", focused);
+            assertEquals("oldest", who(ws, bob), "no longer focused");
+            assertEquals("focused", who(ws, alice), "alice still focuses it");
+            ws.leave(alice);
+            AgentId again = ws.join("alice", new RecordingObserver());
+            assertEquals("oldest", who(ws, again), "joined anew: focuses nothing");
+            ws.disposeArtifact(ws.lookup("oldest").orElseThrow());
+            assertEquals("focused", who(ws, bob), "the oldest left");
         }
     }
 }
