@@ -23,6 +23,7 @@ mock_operation(_, ok).
 // what the skill needs of heading
 +!computeGap <- +gapComputed.
 +!balance <- +balanced.
++!detour(D) <- +detoured(D).
 
 @[test]
 +!test_the_free_run_is_measured_to_the_arena_boundary
@@ -163,3 +164,26 @@ mock_operation(_, ok).
        !assert_true(gaveUpSide(right));
        !assert_false(followingWall(_, _, _) | avoiding);
        -stuck; -delivering.
+
+// a box straight ahead between the two front beams: the central sensor alone sees it
+@[test]
++!test_a_box_seen_by_the_central_sensor_alone_is_turned_from_on_the_spot
+    <- !forget_calls; -+leftSensor(0); -+rightSensor(150); +centralSensor(800);
+       !alongWall(right);
+       !assert_true(mock_called(setSpeeds(-25, 25)));
+       !forget_calls; -+centralSensor(100);
+       !alongWall(right);
+       !assert_true(mock_called(setSpeeds(70, 59.5)));           // nothing ahead: alongside as before
+       -centralSensor(_); -+rightSensor(0).
+
+// the obstacle still seen when the following ends raises no new event: the trip goes round it
+@[test]
++!test_a_trip_turned_to_its_target_with_the_wall_still_ahead_goes_round_it
+    <- +delivering; +delta(300); +obstacle(true);
+       !headAgain(left);
+       !assert_true(gapComputed & balanced & detoured(300));
+       -obstacle(true); -detoured(_);
+       !headAgain(left);
+       !assert_false(detoured(_));                                 // the way clear: no detour
+       -delivering; -delta(_); -gapComputed; -balanced.
+
