@@ -6,22 +6,14 @@
 // (out of the area: the area's access radius is 0.15 m) and waits, then goes on. It gives the
 // turn up once storageLeaveClearance out of the area after it left it (-insideArea), so that the
 // next robot does not drive in while it still turns and leaves (handing it over at the area's
-// edge made them touch), or when the delivery ends or pauses before it got in. Not in the thesis
-// either: it gives the turn up sooner, while a teammate waits for it, once it is out of the area and
-// storageHandClearance off that teammate's way in (the line from where it stands to the storage
-// point): the turn was held until storageLeaveTimeout in four turns of five, the holder boxed in
-// by the teammate waiting on its way out. And the look around that begins the search (sweep's
-// !lookAround, a full turn on the spot at the area's edge, 7 s) is put off by storageLookLater
-// while a teammate waits for the turn: the robot drives on towards its waypoint instead.
+// edge made them touch), or when the delivery ends or pauses before it got in.
 // Parameters:
 storageQueueRadius(0.35).   // m from the storage point where a robot with a cylinder asks its turn
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
-storageHandClearance(0.15). // m off the next robot's way in (and out of the area) where the turn goes to it
-storageLookLater(3000).     // ms the look around is put off at a time (sweep's steps drive the robot on meanwhile)
 // Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn.
-// Reads: storageQueue(L), robotAt(A, X, Z) (the board), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
+// Reads: delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
 // location; the middleware's stuck.
 // Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
@@ -31,41 +23,17 @@ halted :- waitingStorage.
 waitingTurn :- waitingStorage.
 awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLeaveClearance(L)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) >= (C + L) * (C + L).
-nextInQueue(W) :- .my_name(Me) & storageQueue([Me, W | _]).
-// out of the area and off the way in of the teammate next in the queue (relative to the storage
-// point: P the robot, D that teammate)
-clearOfNextWay(X, Z) :- nextInQueue(W) & robotAt(W, Wx, Wz)
-    & storagePoint(Sx, Sz) & storageClearance(C) & storageHandClearance(H)
-    & Px = X - Sx & Pz = Z - Sz & Dx = Wx - Sx & Dz = Wz - Sz
-    & Px * Px + Pz * Pz >= (C + H) * (C + H) & offTheWay(Px, Pz, Dx, Dz, H).
-// beyond the teammate, away from it ...
-offTheWay(Px, Pz, Dx, Dz, H) :- Px * Dx + Pz * Dz >= Dx * Dx + Dz * Dz
-    & (Px - Dx) * (Px - Dx) + (Pz - Dz) * (Pz - Dz) >= H * H.
-// ... or beside its line
-offTheWay(Px, Pz, Dx, Dz, H) :- Px * Dx + Pz * Dz < Dx * Dx + Dz * Dz
-    & (Px * Dz - Pz * Dx) * (Px * Dz - Pz * Dx) >= H * H * (Dx * Dx + Dz * Dz).
 
 @askStorageTurn[atomic]
 +location(X, _, Z) : delivering & not onErrand & not insideArea & not storageTurnMine & not waitingStorage
                     & storagePoint(Sx, Sz) & storageQueueRadius(R) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < R * R
     <- +waitingStorage; !!storageTurn.
 
-// a holder that picked a new cylinder before it got away gives the turn up while a teammate waits
-// (it asks again like any robot), and keeps it while back in the area (a timeout there let the
-// next robot drive in onto it: team world 84, four robots, seed 2)
 // out of the area after a delivery, the turn is given up once far enough (driven by the GPS
 // percept: no dropped desire, a fallen cylinder's, can keep the turn for good)
 @storageTurnAway[atomic]
-+location(X, _, Z) : storageLeaving(T0) & (awayFromStorage(X, Z) | clearOfNextWay(X, Z)
-                     | delivering & not insideArea & nextInQueue(_)
-                     | .system_time(T) & storageLeaveTimeout(L) & T - T0 > L & not (insideArea & nextInQueue(_)))
++location(X, _, Z) : storageLeaving(T0) & (awayFromStorage(X, Z) | .system_time(T) & storageLeaveTimeout(L) & T - T0 > L)
     <- -storageLeaving(_); if (storageTurnMine) { !giveStorageTurn }.
-
-// out of the area with a teammate waiting: the look is due again storageLookLater from now (sweep's
-// @lookEvery), and the sweep's next steps drive the robot on
-@lookAroundLater
-+!lookAround : storageLeaving(_) & nextInQueue(_) & lookEvery(L) & storageLookLater(P) & .system_time(T)
-    <- -+lastLook(T - L + P).
 
 @storageTurnFree +!storageTurn : storageQueue([]) <- awaitStorageTurn; !storageTurnTaken.
 @storageTurnBusy
