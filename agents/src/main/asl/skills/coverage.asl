@@ -51,6 +51,16 @@ seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
+// in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
+// and clears under 190, not 150 and 75 (deltaLevels; the middleware's deltaLimit, deltaClear): there
+// half the floor is 40 % or more of what ten minutes' drive crosses, and the long avoidance turns of
+// the wider levels and their hysteresis (a wall seen at a slant, a doorway's jamb, a corridor's two
+// walls) left coverage under 50 %; in smaller arenas the same levels only touched boxes more (wide
+// tuning 101-160, run seeds 1-2: 69 -> 86 of 120; held out 241-300: 77 -> 84; classic 1-50 and
+// 51-100, seeds 1-3: 145 -> 146, 140 -> 145; docs/comparison.md, "Obstacle avoidance: a looser
+// difference in big arenas")
+looseArea(5).
+deltaLevels(200, 190) :- arena(W, D) & looseArea(A) & W * D >= A.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -65,7 +75,8 @@ pausedUntil("-veering") :- veering.
 @setUpCoverage
 +!setUpCoverage : wheelGeometry(U, A)
     <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) };
-       if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) }.
+       if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
+       if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

@@ -56,6 +56,22 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         deltaLimit = limit;
     }
 
+    /** The left-right difference under which an obstacle is clear again (default: half the limit; not in the thesis). */
+    private double deltaClear = Double.NaN;
+
+    /**
+     * Sets the difference under which an obstacle is clear again, apart from the one that signals it
+     * (default half of {@code deltaLimit}); it must be positive.
+     */
+    @OPERATION
+    void deltaClear(double level) {
+        if (!(level > 0)) {
+            failed("deltaClear(Level) needs Level > 0, got " + level);
+            return;
+        }
+        deltaClear = level;
+    }
+
     @OPERATION
     void deltaBased(boolean on) {
         deltaBased = on;
@@ -194,7 +210,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             boolean obstacle = getObsProperty("obstacle").booleanValue();
             if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning) {
                 obstacle = true;
-            } else if (right < safe && left < safe && Math.abs(delta) <= deltaLimit / 2 && clearAhead()) {
+            } else if (right < safe && left < safe && Math.abs(delta) <= (Double.isNaN(deltaClear) ? deltaLimit / 2 : deltaClear) && clearAhead()) {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {

@@ -114,6 +114,21 @@ class MiddlewareTest {
     }
 
     @Test
+    void theAgentSetsTheDifferenceUnderWhichAnObstacleIsClearAgain() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        assertTrue(b.op("obstacleLevels", new Object[] {480.0, 300.0}).succeeded());
+        assertTrue(b.op("deltaLimit", new Object[] {200.0}).succeeded());
+        assertTrue(b.op("deltaClear", new Object[] {75.0}).succeeded());
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 250), value(SensorKind.RIGHT_DISTANCE, 30));
+        assertEquals(true, b.properties.get("obstacle"), "a difference of 220");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 200), value(SensorKind.RIGHT_DISTANCE, 110));
+        assertEquals(true, b.properties.get("obstacle"), "a difference of 90: under half the limit, not under 75");
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 150), value(SensorKind.RIGHT_DISTANCE, 100));
+        assertEquals(false, b.properties.get("obstacle"), "a difference of 50, both safe");
+        assertTrue(!b.op("deltaClear", new Object[] {0.0}).succeeded(), "a level must be positive");
+    }
+
+    @Test
     void aRedCylinderAheadIsSignalledOnceAndAGreyObstacleIsAnObstacle() throws Exception {
         var b = new Bench(ObjectPickingMiddleware.class);
         var red = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {90, 90, 90, 200, 40, 30, 90, 90, 90});
