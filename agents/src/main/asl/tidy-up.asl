@@ -8,12 +8,12 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // 15 degrees; no trip while the battery covers the time left, and a charge ends once it covers it and 100 J, both at 2 W
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2).
 !start.
-// trips and waypoints through the robot's own map (route), turns in arcs (arc-steering), a way out of the storage
-// corner; near the storage point re-aligned when 3 degrees off, not 10 (else it passed the point 4 cm aside)
+// trips and waypoints through the robot's own map (route), no reach for the stored pile (stored-pile), a way out of
+// the storage corner; near the storage point re-aligned when 3 degrees off, not 10 (else it passed the point 4 cm aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
-{ include("skills/arc-steering.asl") }
+{ include("skills/stored-pile.asl") }
 { include("skills/storage-exit.asl") }
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }
