@@ -114,6 +114,14 @@ maxSpeed(100).
        !assert_true(Fx2 == 1 & Fz2 == -1);
        -+location(0, 0, 0).
 
+// a look again with nothing left remembered (another intention took the last place first) ends
+// quietly and leaves the waypoint as it was: its failure ended the robot's motion loop
+@[test]
++!test_looking_again_with_nothing_remembered_keeps_the_waypoint
+    <- .abolish(seenCylinder(_, _)); .abolish(waypoint(_, _, _)); +waypoint(0.5, 0.5, 0);
+       !lookAgain;
+       !assert_true(waypoint(0.5, 0.5, 0)).
+
 @[test]
 +!test_with_nothing_remembered_a_search_goes_on_along_the_lanes
     <- .abolish(seenCylinder(_, _)); -searching; -sweepPlanned;

@@ -93,6 +93,10 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 // (one lost from sight while homing, behind a box, was left for the lanes across the arena)
 @nextRemembered +!nextWaypoint : searching & seenCylinder(_, _) <- !lookAgain.
 
+// nothing left to look for: another intention took the last place remembered between the call and
+// now (a homing lost from sight remembers one and looks again; the sweep's step took it first, and the
+// failure ended the motion loop: tidy-up world 236 × 2 stopped at 366 s)
+@lookAgainNothing +!lookAgain : not seenCylinder(_, _).
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
