@@ -34,6 +34,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
 
     /** The front sensors' levels for obstacle(true) and for clear again (default {@value #WARNING}, {@value #SAFE}). */
     private double warning = WARNING, safe = SAFE, deltaLimit = DELTA_LIMIT;
+    /** The left-right difference under which an obstacle is clear again (NaN: half the limit; not in the thesis). */
+    private double deltaClear = Double.NaN;
 
     /** Sets the levels (the agent's beliefs, not Java constants; not in the thesis); the warning must exceed the safe level. */
     @OPERATION
@@ -55,9 +57,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
         deltaLimit = limit;
     }
-
-    /** The left-right difference under which an obstacle is clear again (default: half the limit; not in the thesis). */
-    private double deltaClear = Double.NaN;
 
     /**
      * Sets the difference under which an obstacle is clear again, apart from the one that signals it
