@@ -14,16 +14,16 @@ routeHold(6000).
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along
 // its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,
-// classic 31-40 with seeds 1-3 28 -> 30 of 30: docs/comparison.md, "Users' arenas: the wide profile")
+// classic 31-40 with seeds 1-3 28 -> 30 of 30: docs/comparison-wide.md)
 { include("skills/way-back.asl") }
 // the sweep's way to a waypoint goes round the storage area (before route.asl: its plans match
 // first), and cylinders seen and not gone for are looked for first (search-memory), as in navigation:
-// held out, wide 241-300 seed 1 49 -> 51 of 60, deliveries 84 -> 103 (docs/comparison.md)
+// held out, wide 241-300 seed 1 49 -> 51 of 60, deliveries 84 -> 103 (docs/comparison-wide.md)
 { include("skills/storage-bypass.asl") }
 { include("skills/route.asl") }
 // a low battery in the storage area with the cylinder waits until it is put down and the robot is
 // out (lowBattery comes again at every control step): a trip begun there left it halted
-// (insideArea), blind, with the cylinder (docs/comparison.md, "Users' arenas: the wide profile")
+// (insideArea), blind, with the cylinder (docs/comparison-wide.md)
 @rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
 { include("skills/recharge.asl") }
 // no progress in the storage area after the put-down: out towards the arena's centre

@@ -38,7 +38,7 @@ exploreHorizon(0.6).
 closeArea(2).
 narrowSide(1).
 // seeking, not in the thesis, and on only in an agent that believes seekShare(S) (S = 0.3 was
-// measured: docs/comparison.md, "Users' arenas"): once fewer than seekBelow cells were new in the
+// measured: docs/comparison-wide.md): once fewer than seekBelow cells were new in the
 // last seekWindow ms while the floor crossed (dead reckoning) is under seekShare of the arena, the
 // robot's room is covered and the rest of the arena lies behind a wall whose doorway the random walk
 // seldom meets (wide world 60: one room of two, 24 %). Then for seekTime ms, legs to the nearest
@@ -57,8 +57,8 @@ obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) 
 // the wider levels and their hysteresis (a wall seen at a slant, a doorway's jamb, a corridor's two
 // walls) left coverage under 50 %; in smaller arenas the same levels only touched boxes more (wide
 // tuning 101-160, run seeds 1-2: 69 -> 86 of 120; held out 241-300: 77 -> 84; classic 1-50 and
-// 51-100, seeds 1-3: 145 -> 146, 140 -> 145; docs/comparison.md, "Obstacle avoidance: a looser
-// difference in big arenas")
+// 51-100, seeds 1-3: 145 -> 146, 140 -> 145; docs/comparison-obstacle-avoidance.md, "Obstacle
+// avoidance: a looser difference in big arenas")
 looseArea(5).
 deltaLevels(200, 190) :- arena(W, D) & looseArea(A) & W * D >= A.
 obstacleTimes([]).
@@ -85,11 +85,11 @@ pausedUntil("-veering") :- veering.
 // the middle of the avoiding turn (thesis §1.2 shows the same plans; the race is theirs too).
 // Ending the move also ends a veer begun in it (@coverAvoidStill), so "veering" goes too: left
 // believed when the new obstacle led to an escape or a front avoidance (neither veers), it held
-// random motion for the rest of the run (docs/comparison.md, "Users' arenas").
+// random motion for the rest of the run (docs/comparison-wide.md).
 // No 50 ms standstill before the turn (the thesis' .wait(50)): the turn's command replaces the stop
 // in the same control step. Some 170 avoidances a run stood still 14 s of the ten minutes; driven,
 // they are floor the wide arenas missed (held-out wide worlds, run seeds 1 and 2: 78 -> 89 of 150;
-// docs/comparison.md, "Obstacle avoidance: no standstill before the turn")
+// docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: no standstill before the turn")
 @coverObstacle
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).

@@ -27,7 +27,7 @@ routeReach(0.1).
 // routeNear of the point).
 // Needs: a middleware with the GPS (NavigationMiddleware: routeMap, routeTo). Include it before
 // delivery (heading's +!aimAt plans come after its own). Suspend/resume includes it, with way-back.asl
-// and routeHold (a gain on the wide worlds: docs/comparison.md, "Users' arenas: the wide profile");
+// and routeHold (a gain on the wide worlds: docs/comparison-wide.md);
 // navigation does not (alone, no clear gain over heading and way-round: "The way through the robot's
 // own map").
 
