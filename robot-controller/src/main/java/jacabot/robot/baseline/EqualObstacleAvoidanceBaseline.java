@@ -16,14 +16,19 @@ import java.util.function.Consumer;
  * the spot towards the floor not crossed yet, by dead reckoning from the wheel speeds; an obstacle
  * turned away from until clear (3 s at most, then an escape), then an arc away from it for 300 ms;
  * five obstacles within 8 s (a corner, a gap between boxes) end in an escape; closer obstacle levels
- * in arenas of 2 m² or more.
+ * in arenas of 2 m² or more, and in arenas of 5 m² or more a left-right difference that signals an
+ * obstacle only over 200 and clears under 190 (coverage.asl's deltaLevels).
  */
 public final class EqualObstacleAvoidanceBaseline extends BaselineController {
     static final long TRAP_WINDOW = 8_000, STALE_LIMIT = 2_000, VEER = 300, NO_TURN_AFTER_OBSTACLE = 2_000;
     static final int TRAP_COUNT = 5;
     static final double CELL = 0.1, HORIZON = 0.6, CLEAR_PATIENCE = 3, CLOSE_AREA = 2;
+    /** coverage.asl's looseArea and deltaLevels: in a big arena the long turns of a tight difference cost coverage. */
+    static final double LOOSE_AREA = 5, LOOSE_DELTA = 200, LOOSE_CLEAR = 190;
 
     private final double obstacle, safe, delta;
+    /** The left-right difference an obstacle must fall under to be clear (infinite: both sensors safe is enough). */
+    private final double deltaClear;
     private final Set<Long> crossed = new HashSet<>();
     private final Deque<Long> obstacles = new ArrayDeque<>();
     private DistanceSensor left, right;
@@ -34,10 +39,12 @@ public final class EqualObstacleAvoidanceBaseline extends BaselineController {
     public EqualObstacleAvoidanceBaseline(SimWorld world, String robotName, long seed, Consumer<String> console) {
         super(world, robotName, seed, console);
         var arena = world.spec().arena();
-        boolean close = arena.width() * arena.depth() >= CLOSE_AREA;
+        double area = arena.width() * arena.depth();
+        boolean close = area >= CLOSE_AREA, loose = area >= LOOSE_AREA;
         obstacle = close ? 480 : 350;
         safe = close ? 300 : 200;
-        delta = close ? 150 : 100;
+        delta = loose ? LOOSE_DELTA : close ? 150 : 100;
+        deltaClear = loose ? LOOSE_CLEAR : Double.POSITIVE_INFINITY;
     }
 
     @Override
@@ -51,9 +58,9 @@ public final class EqualObstacleAvoidanceBaseline extends BaselineController {
     @Override
     protected void controlStep() {
         reckon();
-        double l = left.getValue(), r = right.getValue(), d = l - r;
-        if ((Math.abs(d) > delta || l > obstacle || r > obstacle) && !(l < safe && r < safe)) {
-            avoid(d);
+        double l = left.getValue(), r = right.getValue();
+        if (signalled(l, r)) {
+            avoid(l - r);
         } else if (now() >= legEnds || stale()) {
             nextMove();
         }
@@ -82,7 +89,7 @@ public final class EqualObstacleAvoidanceBaseline extends BaselineController {
         int side = d > 0 ? 1 : -1; // obstacle on the left: turn right
         robot.setSpeeds(side * maxSpeed, -side * maxSpeed);
         long since = now();
-        while (!(left.getValue() < safe && right.getValue() < safe)) {
+        while (!clear(left.getValue(), right.getValue())) {
             if (now() - since > CLEAR_PATIENCE * 1000) {
                 print("Obstacle does not clear: escaping");
                 escape();
@@ -93,6 +100,16 @@ public final class EqualObstacleAvoidanceBaseline extends BaselineController {
         robot.setSpeeds(side > 0 ? maxSpeed : maxSpeed / 3, side > 0 ? maxSpeed / 3 : maxSpeed);
         tick(VEER / 1000.0);
         leg(now() + NO_TURN_AFTER_OBSTACLE);
+    }
+
+    /** {@return whether the front readings signal an obstacle: a difference over the limit or a sensor past the warning, not clear} */
+    boolean signalled(double l, double r) {
+        return (Math.abs(l - r) > delta || l > obstacle || r > obstacle) && !clear(l, r);
+    }
+
+    /** {@return whether both front sensors are under the safe level and their difference within the clear one} */
+    boolean clear(double l, double r) {
+        return l < safe && r < safe && Math.abs(l - r) <= deltaClear;
     }
 
     /** A step back of 1.5 cm, then a random turn on the spot. */
