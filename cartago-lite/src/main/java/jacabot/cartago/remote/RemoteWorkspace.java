@@ -29,7 +29,8 @@ import java.util.function.UnaryOperator;
  * there, and what the agent perceives there comes back to its observer, on this session's reader
  * thread. Artifact ids of that workspace carry its full name, {@code name@host:port}. When the
  * connection is lost (not quit), operations under way fail with {@code workspace_closed}, the
- * observer hears that every focus there ended, and the {@code lost} callback runs.
+ * observer hears that every focus there ended, and the {@code lost} callback runs. After a
+ * {@link #quit} too the observer has heard the end of every focus there.
  */
 public final class RemoteWorkspace implements AutoCloseable {
     private static final int CONNECT_TIMEOUT_MS = 5000;
@@ -42,6 +43,8 @@ public final class RemoteWorkspace implements AutoCloseable {
     private final AtomicInteger opIds = new AtomicInteger();
     private volatile boolean closed;
     private volatile boolean quitting;
+    /** Set by {@link #close}: the observer is told nothing more. */
+    private volatile boolean closing;
     private Thread reader;
     /** What the agent focuses there, as the events told (read on loss, to end those focuses). */
     private final Map<ArtifactId, List<PropertySnapshot>> focused = new LinkedHashMap<>();
@@ -190,7 +193,7 @@ public final class RemoteWorkspace implements AutoCloseable {
                 }
             }
         } catch (IOException ended) {
-            boolean unexpected = !quitting;
+            boolean unexpected = !quitting && !closing;
             closeSocket();
             for (Integer id : new ArrayList<>(pending.keySet())) {
                 Pending p = pending.remove(id);
@@ -198,9 +201,13 @@ public final class RemoteWorkspace implements AutoCloseable {
                     p.callback().completed(lost());
                 }
             }
-            if (unexpected) {
+            if (!closing) {
+                // lost, or quit: the focus there is over either way. A node may close the connection
+                // before its own ENDED frames leave (it stops as the agent leaves): those end here.
                 focused.forEach((id, props) -> observer.focusEnded(id, props, false));
                 focused.clear();
+            }
+            if (unexpected) {
                 lost.run();
             }
         }
@@ -297,8 +304,9 @@ public final class RemoteWorkspace implements AutoCloseable {
     }
 
     /**
-     * Leaves the workspace: the node ends the agent's focus (the observer hears it), disposes its
-     * body and closes the connection; waits up to 2 s for that.
+     * Leaves the workspace: the node ends the agent's focus, disposes its body and closes the
+     * connection (waited for up to 2 s). When this returns the observer has heard the end of every
+     * focus there, from the node or, for those the node did not tell in time, from here.
      */
     public void quit() {
         quitting = true;
@@ -317,13 +325,20 @@ public final class RemoteWorkspace implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        close();
+        closeSocket();
+        if (Thread.currentThread() != reader) {
+            try {
+                reader.join(10_000);   // the socket is closed: the reader ends at once, telling the observer
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /** Closes the connection without telling the observer or the {@code lost} callback (the node is told as by a quit). */
     @Override
     public void close() {
-        quitting = true;
+        closing = true;
         closeSocket();
     }
 

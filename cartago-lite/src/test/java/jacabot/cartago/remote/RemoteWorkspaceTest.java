@@ -17,10 +17,14 @@ import jacabot.cartago.PropertySnapshot;
 import jacabot.cartago.Workspace;
 import jacabot.cartago.examples.Counter;
 import java.io.ByteArrayInputStream;
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
 import java.util.Optional;
@@ -207,5 +211,49 @@ class RemoteWorkspaceTest {
         assertEquals("ended counter", r.events.get(r.events.size() - 1), r.events.toString());
         var f = assertInstanceOf(OpOutcome.Failure.class, call(w, OpTarget.id(id), "inc"));
         assertEquals("workspace_closed", f.reasonFunctor());
+    }
+
+    /**
+     * A node that stops as the agent leaves (example 11's keeper ends its run on seeing the body
+     * go) may close the connection before the focus-ended frame leaves its writer: on a loaded
+     * machine the agent then kept the beliefs of an artifact it no longer focused. Here a node
+     * that never sends that frame: the quit itself must end the focus.
+     */
+    @Test
+    void aQuitEndsTheFocusEvenWhenTheNodeClosesWithoutSayingSo() throws Exception {
+        try (var node = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            var id = new ArtifactId(7, "counter", Counter.class.getName(), "main", null);
+            var served = CompletableFuture.runAsync(() -> {
+                try (Socket c = node.accept()) {
+                    var in = new DataInputStream(new BufferedInputStream(c.getInputStream()));
+                    var out = new DataOutputStream(new BufferedOutputStream(c.getOutputStream()));
+                    RemoteHandshake.asNode(in, out, secret);
+                    assertEquals(Frames.JOIN, in.readUnsignedByte());
+                    Wire.readString(in);
+                    Wire.readString(in);
+                    out.writeByte(Frames.JOINED);
+                    out.writeBoolean(true);
+                    Wire.writeString(out, "joined main");
+                    out.writeByte(Frames.EVENT);
+                    out.writeByte(Frames.FOCUSED);
+                    Wire.write(out, id, UnaryOperator.identity());
+                    Wire.writeProperties(out, List.of(new PropertySnapshot("count", List.of(3))), UnaryOperator.identity());
+                    out.flush();
+                    assertEquals(Frames.QUIT, in.readUnsignedByte());
+                } catch (IOException e) {
+                    throw new RuntimeException(e);
+                }
+            });
+            var r = new Recorder();
+            RemoteWorkspace w = RemoteWorkspace.join("127.0.0.1", node.getLocalPort(), "main", "voyager", r, secret);
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (r.events.isEmpty() && System.nanoTime() < deadline) {
+                Thread.sleep(5);   // until the focus arrived
+            }
+            w.quit();
+            served.get(30, TimeUnit.SECONDS);
+            assertEquals(List.of("focused counter@main@127.0.0.1:" + node.getLocalPort() + " [count(3)]", "ended counter"),
+                    r.events);
+        }
     }
 }
