@@ -51,11 +51,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     /** Sets the left-right difference that signals an obstacle (default {@value #DELTA_LIMIT}); it must be positive. */
     @OPERATION
     void deltaLimit(double limit) {
-        if (!(limit > 0)) {
-            failed("deltaLimit(Limit) needs Limit > 0, got " + limit);
-            return;
+        if (positive("deltaLimit(Limit)", limit)) {
+            deltaLimit = limit;
         }
-        deltaLimit = limit;
     }
 
     /**
@@ -64,11 +62,18 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      */
     @OPERATION
     void deltaClear(double level) {
-        if (!(level > 0)) {
-            failed("deltaClear(Level) needs Level > 0, got " + level);
-            return;
+        if (positive("deltaClear(Level)", level)) {
+            deltaClear = level;
         }
-        deltaClear = level;
+    }
+
+    /** {@return whether a level is positive}; the operation fails, naming it, when it is not */
+    private boolean positive(String operation, double level) {
+        if (level > 0) {
+            return true;
+        }
+        failed(operation + " needs a level > 0, got " + level);
+        return false;
     }
 
     @OPERATION
