@@ -5,7 +5,8 @@
 // 204 × 2, found again 138 s later).
 // Parameters:
 knockedAside(4500).   // ms after the knock that an obstacle met is taken for the cylinder
-knockedTurn(4000).    // ms the turn towards it lasts at most (a quarter turn at a quarter speed)
+knockedTurn(14000).   // ms the turn lasts at most: a full turn at a quarter speed (the side sensed first
+                      // may be a box's, world 183 × 2: the cylinder came round after three quarters)
 // Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D) (the middleware's).
 // Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
@@ -13,9 +14,10 @@ knockedTurn(4000).    // ms the turn towards it lasts at most (a quarter turn at
 
 @knockedBeside +lostBeside <- .system_time(T); -+knockedAt(T).
 justKnocked :- knockedAt(T0) & knockedAside(A) & .system_time(T) & T - T0 < A & not avoiding & not picking & not reachCylinder(true).
-// the side avoidance turns away from, the other way (avoidance: "left" and a positive delta turn the robot so)
+// towards the side that shows it: the left sensor looks 90 degrees left, and a positive delta (left less right)
+// is an obstacle ahead on the left; turnToKnocked(V) turns right for a positive V
 @knockedLateral +lateralObstacle(S) : justKnocked & maxSpeed(M)
-    <- if (S == "left") { !turnToKnocked(M / 4) } else { !turnToKnocked(-M / 4) }.
+    <- if (S == "left") { !turnToKnocked(-M / 4) } else { !turnToKnocked(M / 4) }.
 @knockedFront +obstacle(true) : justKnocked & maxSpeed(M) & delta(D)
     <- if (D > 0) { !turnToKnocked(-M / 4) } else { !turnToKnocked(M / 4) }.
 @turnToKnocked
