@@ -1,6 +1,5 @@
-// Tidy-up, not in the thesis: every cylinder of the arena to the storage area, recharging when needed, then park on
-// the charger. Written from skills alone (suspend-resume's, a search memory) and its own plans that decide when the task
-// is done and when to search. No way round (way-round.asl): its following of boxes met again crawled round them on trips.
+// Tidy-up, not in the thesis: every cylinder to the storage area, recharging when needed, then park on the charger. From
+// skills alone and its own plans that decide when the task is done and when to search. No way round (way-round.asl).
 // From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D); from the run: taskEnd(Ms).
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // a search goes on from anywhere (no way back after a recharge), a look around first, the sweep after 5 s; a delivery
@@ -9,14 +8,15 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // 15 degrees; no trip while the battery covers the time left, and a charge ends once it covers it and 100 J, both at 2 W
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2).
 !start.
-// trips and waypoints through the robot's own map (route: by compass a trip dithered up to 80 s at a box), a way out of
-// the storage corner; near the storage point re-aligned when 3 degrees off, not 10 (else it passed the point 4 cm aside)
+// trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
+// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
 { include("skills/storage-exit.asl") }
 { include("skills/recharge.asl") }
 { include("skills/delivery.asl") }
+{ include("skills/knocked-aside.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
