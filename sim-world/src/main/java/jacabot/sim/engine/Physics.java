@@ -51,6 +51,7 @@ final class Physics {
 
     private final World<Body> world = new Dyn4jWorld();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
+    private final BeamDirections directions = new BeamDirections();
 
     Physics(int basicTimeStepMs) {
         world.setGravity(World.ZERO_GRAVITY);
@@ -180,22 +181,21 @@ final class Physics {
     /**
      * Rays start {@link #BACKOFF} behind their origin (inside the robot, which is ignored), so that an
      * object pressed against the sensor, slightly penetrating, is still seen, at distance 0. The start
-     * and the unit direction are formed as dyn4j's {@code Ray} forms them (cosine and sine, then
-     * normalised), so that the distances are those of its casts to the bit.
+     * and the unit direction are formed as dyn4j's {@code Ray} forms them ({@link BeamDirections#of}),
+     * so that the distances are those of its casts to the bit.
      */
     private static final class Beam {
         final double sx, sy, dx, dy, radians;
         private Ray ray;
 
-        Beam(Vec2 origin, double bearingDeg) {
-            double r = Math.toRadians(bearingDeg);
-            radians = r;
-            double c = Math.cos(r), s = Math.sin(r);
-            sx = origin.x() - BACKOFF * c;
-            sy = origin.z() - BACKOFF * s;
-            double inverse = 1.0 / Math.sqrt(c * c + s * s);
-            dx = c * inverse;
-            dy = s * inverse;
+        Beam(Vec2 origin, double bearingDeg, BeamDirections directions) {
+            int at = directions.of(bearingDeg);
+            double[] v = directions.values();
+            radians = v[at + BeamDirections.RADIANS];
+            sx = origin.x() - BACKOFF * v[at + BeamDirections.COS];
+            sy = origin.z() - BACKOFF * v[at + BeamDirections.SIN];
+            dx = v[at + BeamDirections.DX];
+            dy = v[at + BeamDirections.DY];
         }
 
         /** {@return the same ray for dyn4j} */
@@ -209,7 +209,7 @@ final class Physics {
 
     /** Every object of the world, in the world's order, the ray meets within range (no broad phase). */
     private List<RayHit> castAll(SimObject self, Vec2 origin, double bearingDeg, double maxRange) {
-        Beam beam = new Beam(origin, bearingDeg);
+        Beam beam = new Beam(origin, bearingDeg, directions);
         var hits = new NearestFirst();
         int index = 0;
         for (SimObject o : objects.values()) {
@@ -317,12 +317,12 @@ final class Physics {
             reach[near.size()] = r;
             near.add(o);
         }
-        int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near.size()) : null;
+        int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near) : null;
         int[] order = new int[near.size()];
         double[] bound = new double[near.size()];
         List<List<RayHit>> fan = new ArrayList<>(n);
         for (int k = 0; k < n; k++) {
-            Beam beam = new Beam(origin, bearingsDeg[k]);
+            Beam beam = new Beam(origin, bearingsDeg[k], directions);
             int[] mine = candidates == null ? null : candidates[k];
             int count = mine == null ? near.size() : mine[0], tries = 0;
             for (int j = 0; j < count; j++) {
@@ -380,12 +380,16 @@ final class Physics {
      * {@code {count, index...}} in the objects' order; null when the rays' bearings do not grow
      * from the first (then every ray tries every object). Every ray starts on the line through the
      * origin along its bearing, so it meets the grown circle of radius r around a centre at distance
-     * D only when its bearing is within {@code asin(r / D)} of the centre's; a centre nearer than
-     * {@code sqrt(r² + (r + BACKOFF)²)} may be met behind the origin, and goes to every ray. The
-     * test in {@link #castFan} then runs on these candidates as before, so the casts are the same.
+     * D only when its bearing is within {@code asin(r / D)} of the centre's (so within its tangent,
+     * {@code r / sqrt(D² - r²)}, which costs less); a centre nearer than
+     * {@code sqrt(r² + (r + BACKOFF)²)} may be met behind the origin, and goes to every ray. A
+     * rectangle whose circle's sector is that wide (the arena's walls, mostly) gets the sector of its
+     * corners instead ({@link #cornerSector}). The test in {@link #castFan} then runs on these
+     * candidates as before, so the casts are the same.
      */
-    private static int[][] sectors(double ox, double oz, double[] bearingsDeg, double[] cx, double[] cz, double[] reach, int objects) {
-        int n = bearingsDeg.length;
+    private static int[][] sectors(double ox, double oz, double[] bearingsDeg, double[] cx, double[] cz, double[] reach,
+                                   List<SimObject> near) {
+        int n = bearingsDeg.length, objects = near.size();
         double first = Math.toRadians(bearingsDeg[0]);
         double[] offset = new double[n]; // each ray's bearing after the first's, radians
         for (int k = 0; k < n; k++) {
@@ -395,22 +399,33 @@ final class Physics {
             }
         }
         int[][] out = new int[n][];
+        double[] side = new double[2]; // the sector's edges after the centre's bearing, radians (with the slack)
         for (int i = 0; i < objects; i++) {
             double ex = cx[i] - ox, ez = cz[i] - oz, r = reach[i];
             double d = Math.sqrt(ex * ex + ez * ez);
+            boolean bounded = d * (1 - SECTOR_SLACK) > Math.sqrt(r * r + (r + BACKOFF) * (r + BACKOFF)) + SECTOR_SLACK;
+            if (bounded) {
+                double sine = r / d; // below 0.71 here, so tan(asin(sine)), no less than asin(sine), is a cheaper bound
+                double half = sine / Math.sqrt(1 - sine * sine) + SECTOR_SLACK;
+                side[0] = -half;
+                side[1] = half;
+            }
+            if ((!bounded || side[1] > WIDE_SECTOR) && near.get(i).shape instanceof Rectangle box) {
+                bounded = cornerSector(ox, oz, ex, ez, near.get(i).body.getTransform(), box, side) || bounded;
+            }
             int from = 0, to = n - 1;
-            if (d * (1 - SECTOR_SLACK) > Math.sqrt(r * r + (r + BACKOFF) * (r + BACKOFF)) + SECTOR_SLACK) {
-                double half = Math.asin(Math.min(1, r / d)) + SECTOR_SLACK;
+            if (bounded) {
                 double at = Math.atan2(ez, ex) - first; // the centre's bearing after the first ray's, in (-3π, 3π)
                 at -= 2 * Math.PI * Math.floor((at + Math.PI) / (2 * Math.PI)); // into [-π, π)
-                if (at + half < offset[0] - SECTOR_SLACK || at - half > offset[n - 1] + SECTOR_SLACK) {
-                    if (at + 2 * Math.PI - half > offset[n - 1] + SECTOR_SLACK && at - 2 * Math.PI + half < offset[0] - SECTOR_SLACK) {
+                if (at + side[1] < offset[0] - SECTOR_SLACK || at + side[0] > offset[n - 1] + SECTOR_SLACK) {
+                    if (at + 2 * Math.PI + side[0] > offset[n - 1] + SECTOR_SLACK
+                            && at - 2 * Math.PI + side[1] < offset[0] - SECTOR_SLACK) {
                         continue; // no ray's bearing comes within the sector, nor a turn later or earlier
                     }
                     at += at < 0 ? 2 * Math.PI : -2 * Math.PI;
                 }
-                from = firstAtLeast(offset, at - half);
-                to = firstAtLeast(offset, Math.nextUp(at + half)) - 1;
+                from = firstAtLeast(offset, at + side[0]);
+                to = firstAtLeast(offset, Math.nextUp(at + side[1])) - 1;
             }
             for (int k = from; k <= to; k++) {
                 int[] list = out[k];
@@ -428,6 +443,40 @@ final class Physics {
             }
         }
         return out;
+    }
+
+    /**
+     * From this half-width of a circle's sector on (radians), a rectangle's corners are worth their
+     * four arc tangents: a wall beside or behind the camera then reaches none of its rays, where its
+     * bounding circle (half the wall's length) reached them all.
+     */
+    static final double WIDE_SECTOR = 0.5;
+
+    /**
+     * The sector of a rectangle grown by {@link #GJK_MARGIN} (what {@link #reachFrom} tests), seen
+     * from an origin farther than {@link #BACKOFF} from it: a ray starting within {@code BACKOFF}
+     * behind the origin then meets it only ahead of the origin, along a bearing between its corners'
+     * (a convex shape the origin is outside of; its centre's bearing lies between them, so each
+     * corner's is within half a turn of it). Puts the edges, after the centre's bearing
+     * {@code (ex, ez)}, into {@code side}. {@return false, side untouched, when the origin is too near}
+     */
+    private static boolean cornerSector(double ox, double oz, double ex, double ez, Transform t, Rectangle box, double[] side) {
+        double hx = box.getWidth() / 2 + GJK_MARGIN, hy = box.getHeight() / 2 + GJK_MARGIN;
+        double cos = t.getCost(), sin = t.getSint();
+        if (!(RayShapes.boxDistance(ox, oz, t.getTranslationX(), t.getTranslationY(), cos, sin, hx, hy) > BACKOFF + SECTOR_SLACK)) {
+            return false;
+        }
+        double low = Double.POSITIVE_INFINITY, high = Double.NEGATIVE_INFINITY;
+        for (int corner = 0; corner < 4; corner++) {
+            double u = (corner & 1) == 0 ? hx : -hx, v = (corner & 2) == 0 ? hy : -hy;
+            double qx = ex + cos * u - sin * v, qz = ez + sin * u + cos * v; // the corner, from the origin
+            double angle = Math.atan2(ex * qz - ez * qx, ex * qx + ez * qz); // after the centre's bearing
+            low = Math.min(low, angle);
+            high = Math.max(high, angle);
+        }
+        side[0] = low - SECTOR_SLACK;
+        side[1] = high + SECTOR_SLACK;
+        return true;
     }
 
     /** {@return the first index whose value is at least {@code x}, or the length} */
