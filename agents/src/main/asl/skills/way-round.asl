@@ -22,6 +22,7 @@ leaveNear(0.15).      // m: no following this near the target (the last approach
 stallTime(20000).     // ms the sweep may come no nearer its waypoint before the wall is followed
 sweepFollowLimit(60000). // ms of following towards a sweep's waypoint before it is skipped
 sweepFollows(2).      // followings towards one waypoint at most (the second on the other side)
+wallNear(200).        // a front sensor's reading over this: something near ahead (under it: that side is free)
 // rehitsToFollow(N) (the agent's, optional: obstacles met near here on this trip before a following
 // begins; 1 without it).
 // Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
@@ -155,8 +156,8 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 
 // leave when the target is well to the free side, neither ahead (a corridor's far wall may be in
 // the way) nor behind (its bearing there flips between -180 and 180)
-canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & F < 200.
-canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & F < 200.
+canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & wallNear(L) & F < L.
+canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & wallNear(L) & F < L.
 
 // the sensor on the wall's side (N) keeps the wall at 2-4 cm; the other (F) sees what comes ahead
 @alongRight +!alongWall(right) : leftSensor(F) & rightSensor(N) <- !steerAlong(N, F, 1).
@@ -165,7 +166,7 @@ canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(
 // a box straight ahead, between the two sensors' beams, is seen by the central sensor alone (the
 // middleware raises no obstacle from it while a cylinder is held): the robot turned and arced into
 // it in turn, pressed against it for 40 s (wide world 114, seed 1)
-@wallAhead +!steerAlong(N, F, Sign) : (F > 200 | N > 480 | (centralSensor(C) & C > 200)) & maxSpeed(M) <- !wheels(-M / 4, M / 4, Sign).
+@wallAhead +!steerAlong(N, F, Sign) : wallNear(L) & (F > L | N > 480 | (centralSensor(C) & C > L)) & maxSpeed(M) <- !wheels(-M / 4, M / 4, Sign).
 @tooClose +!steerAlong(N, F, Sign) : N > 300 & followSpeed(V) <- !wheels(V / 2, V, Sign).
 @alongside +!steerAlong(N, F, Sign) : N > 60 & followSpeed(V) <- !wheels(V, V * 0.85, Sign).
 @wallLost +!steerAlong(N, F, Sign) : followSpeed(V) <- !wheels(V, V * 0.3, Sign).
