@@ -36,18 +36,8 @@ final class RouteMap {
      * the corner into the part of the obstacle not seen yet.
      */
     static final double LOOKAHEAD = 0.2;
-    /**
-     * The cost of a cell of path the robot's centre has stood on, in cells of path (1 on floor it has
-     * not driven, as the obstacles' costs count): of two ways, the one it knows is there, unless the
-     * other is shorter by more than a third (not in the thesis). Floor never seen is free on the map,
-     * so a wall seen in part was gone round at its unseen end, to the arena's boundary and back, past
-     * the doorway the robot had come by (suspend/resume's trips to the charger, wide worlds).
-     */
-    static final double DRIVEN_COST = 2.0 / 3;
 
     private final int cols, rows;
-    /** Per cell: whether the robot's centre has stood there. */
-    private final BitSet driven;
     private final double halfW, halfD, clearance;
     private final long memoryMs;
     /** Per cell: the simulated time of the last sighting of an obstacle there, or {@link #NEVER}. */
@@ -88,7 +78,6 @@ final class RouteMap {
         this.memoryMs = memoryMs;
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
-        driven = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -126,7 +115,6 @@ final class RouteMap {
         int c = cell(x, z);
         if (c >= 0) {
             seenAt[c] = NEVER;
-            driven.set(c);
         }
     }
 
@@ -284,7 +272,7 @@ final class RouteMap {
                     if (di != 0 && dj != 0 && (live(index(ci + di, cj), nowMs) || live(index(ci, cj + dj), nowMs))) {
                         continue;
                     }
-                    double g = cost[c] + (di != 0 && dj != 0 ? Math.sqrt(2) : 1) * (driven.get(next) ? DRIVEN_COST : 1) + near[next];
+                    double g = cost[c] + (di != 0 && dj != 0 ? Math.sqrt(2) : 1) + near[next];
                     if (g < cost[next]) {
                         cost[next] = g;
                         from[next] = c;
@@ -307,7 +295,7 @@ final class RouteMap {
     }
 
     private double heuristic(int a, int b) {
-        return DRIVEN_COST * Math.hypot(a % cols - b % cols, a / cols - b / cols);
+        return Math.hypot(a % cols - b % cols, a / cols - b / cols);
     }
 
     private int cell(double x, double z) {
