@@ -11,8 +11,8 @@ fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
 markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the way back to go on
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
 // stored(N) (delivery).
-// Beliefs: charging, atCharger, markedFrom(D) (the way back's distance left when its try began); resumeAtCharger (the agent's, optional: no way back to the marked
-// point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
+// Beliefs: charging, atCharger, markedFrom(D) (the way back's distance left when its try began);
+// resumeAtCharger (the agent's, optional: no way back to the marked point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
