@@ -43,6 +43,25 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        !assert_false(charging).
 
+// the way back's time runs out: tried again while the robot came markedProgress nearer the marked
+// point on the try (a give-up leaves the episode open), given up once a try brought it no nearer
+@[test]
++!test_a_way_back_still_coming_nearer_is_tried_again_when_its_time_runs_out
+    <- !until(not charging, 10000); !forget_calls; -+tripTimeout(600);
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       -+location(-0.38, 0, 0.38); !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -targetReached; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -+location(0.2, 0, 0);                                        // 0.83 m -> 0.14 m from the mark
+       !until(markedFrom(D) & D < 0.5, 10000);                       // the first try's time out: a second
+       !assert_true(markedFrom(D) & D < 0.5 & charging);
+       !until(not charging, 10000);                                  // no nearer on it: given up, resumed
+       !assert_false(charging);
+       -+tripTimeout(150000).
+
 // an agent whose task goes on from anywhere (tidy-up) resumes at the charger
 @[test]
 +!test_an_agent_that_resumes_at_the_charger_does_not_go_back_to_the_marked_point

@@ -8,10 +8,11 @@ chargedLevel(900).      // J: and charged over it
 tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not in the thesis)
 wayEnergy(50).          // J a metre at full speed (the Khepera: 2.5 W at 5 cm/s): deliverFirst, team-charger
 fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
+markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the way back to go on
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
 // stored(N) (delivery).
-// Beliefs: charging, atCharger; resumeAtCharger (the agent's, optional: no way back to the marked
-// point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
+// Beliefs: charging, atCharger, markedFrom(D) (the way back's distance left when its try began);
+// resumeAtCharger (the agent's, optional: no way back to the marked point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
@@ -36,6 +37,7 @@ halted :- atCharger.
 // battery less the reserve covers the straight way to the storage point and on to the charger
 wayCovered(R) :- battery(B) & location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz) & wayEnergy(E)
     & B - R > E * (math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) + math.sqrt((Sx - Cx) * (Sx - Cx) + (Sz - Cz) * (Sz - Cz))).
+markedDistance(D) :- location(X, _, Z) & targetPoint(Tx, Tz) & D = math.sqrt((X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)).
 storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
 lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.
@@ -129,7 +131,17 @@ chargedEnough :- chargeUntilLasts(R) & .system_time(T) & taskEnd(End) & T < End 
     <- println("Not charging: back to the charger"); restartAcquireDistance; -atCharger;
        !computeGap; !!balance; !reachCharger; .drop_intention(balance); +atCharger; stop; stopAcquireDistance; !waitCharged.
 @chargeEnded -!waitCharged : battery(B) <- println("Charging ended at ", B, " J").
-@reachMarked +!reachMarked : tripTimeout(T) <- .wait({+targetReached}, T).
+// not in the thesis: a way back still under way when its time runs out (it came markedProgress m
+// nearer the marked point on this try) is given another: a marked point given up leaves the
+// low-battery episode open (the robot never came back), 0.2-1.2 m short after a slow way round
+// (wide worlds)
+@reachMarked
++!reachMarked : tripTimeout(T) & markedDistance(D)
+    <- -+markedFrom(D); .wait({+targetReached}, T).
+@reachMarkedAgain
+-!reachMarked : markedFrom(D0) & markedDistance(D) & markedProgress(P) & D < D0 - P
+    <- println("Marked point not reached in time, still coming nearer (", D, " m): trying again");
+       !computeGap; !!balance; !reachMarked.
 @markedGivenUp
 -!reachMarked[error(E), error_msg(M)]
     <- println("Marked point not reached in time (", E, " ", M, "): resuming from here").
