@@ -195,6 +195,29 @@ final class ExplorationMap {
         return Math.round(1000 * Math.abs(degrees) / degreesPerSecond);
     }
 
+    /** Directions over which {@link #visitedSpan} measures the crossed floor's extent. */
+    static final int SPAN_DIRECTIONS = 18;
+
+    /**
+     * {@return the crossed floor's greatest extent, in metres: over {@value #SPAN_DIRECTIONS} directions,
+     * the largest distance between two crossed cells' centres along one} A robot whose crossed floor
+     * spans much less than its arena's diagonal has stayed in a part of the arena (not in the thesis).
+     */
+    double visitedSpan() {
+        double best = 0;
+        for (int k = 0; k < SPAN_DIRECTIONS; k++) {
+            double a = Math.PI * k / SPAN_DIRECTIONS, c = Math.cos(a), s = Math.sin(a);
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (long key : visited) {
+                double p = ((int) (key >> 32) + 0.5) * CELL * c + ((int) key + 0.5) * CELL * s;
+                lo = Math.min(lo, p);
+                hi = Math.max(hi, p);
+            }
+            best = Math.max(best, hi - lo);
+        }
+        return best;
+    }
+
     int cellsVisited() {
         return visited.size();
     }

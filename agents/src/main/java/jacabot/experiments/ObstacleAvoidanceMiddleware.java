@@ -191,6 +191,33 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         squareMetres.set(map.cellsVisited() * ExplorationMap.CELL * ExplorationMap.CELL);
     }
 
+    /**
+     * The crossed floor's greatest extent, in metres (not in the thesis, {@code ExplorationMap.visitedSpan}).
+     * Fails before {@code odometry}.
+     */
+    @OPERATION
+    void visitedSpan(OpFeedbackParam<Double> metres) {
+        if (map == null) {
+            failed("visitedSpan needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        metres.set(map.visitedSpan());
+    }
+
+    /**
+     * The heading by dead reckoning, in degrees turned left since the start, not wrapped (not in the
+     * thesis): a wall follower that has turned a full circle to its wall's side went round an island.
+     * Fails before {@code odometry}.
+     */
+    @OPERATION
+    void headingTurned(OpFeedbackParam<Double> degrees) {
+        if (map == null) {
+            failed("headingTurned needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        degrees.set(map.headingDegrees());
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         if (kind == SensorKind.WHEEL_SPEEDS && map != null) {

@@ -121,6 +121,19 @@ class ExplorationMapTest {
     }
 
     @Test
+    void theSpanIsTheCrossedFloorsGreatestExtentWhateverItsDirection() {
+        assertEquals(0, map.visitedSpan(), 1e-9, "one cell crossed");
+        drive(0, 10_000, 100); // 1 m straight on
+        assertEquals(1.0, map.visitedSpan(), 1e-9, "the first and the last cell's centres, 1 m apart");
+        map.wheels(10_000, -50, 50);
+        long quarter = Math.round(1000 * (Math.PI / 2) / (0.1 / 0.09));
+        map.wheels(10_000 + quarter, 0, 0);
+        drive(10_000 + quarter, 20_000 + quarter, 100); // 1 m to the left
+        // the second leg runs in the cells just short of x = 1 m (the turn leaves x at 0.9997 m)
+        assertEquals(0.9 * Math.sqrt(2), map.visitedSpan(), 0.02, "an L of two 1 m legs spans the diagonal between its end cells");
+    }
+
+    @Test
     void aWheelGeometryMustBePositive() {
         assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0, 0.09));
         assertThrows(IllegalArgumentException.class, () -> new ExplorationMap(0.001, -1));
