@@ -10,6 +10,8 @@
 // jamb) it passes the end and turns a quarter turn round it. The avoidance of coverage.asl still
 // turns it from the corners. A follow that turned followIsland degrees net towards its wall's side
 // went round a box standing free, not the room's wall: it ends there; new floor again ends it too.
+// A follow that ran its full time without new floor is the last of the run: the doorway is out of
+// reach of the follow (too narrow, or none), and the random walk had crossed some the follow missed.
 // Parameters (timings in ms):
 followWindow(30000).
 followBelow(10).
@@ -62,14 +64,14 @@ steer(left, toward, V, B, L, R) :- L = V * B & R = V.
 // agent's). Include it before coverage.asl: its move plans come first while a follow runs.
 
 @followLook
-+!move(N) : followOn & not following(_, _, _) & not pausedUntil(_) & followLookDue(T) & followWindow(W) & followBelow(K)
++!move(N) : followOn & not followGaveUp & not following(_, _, _) & not pausedUntil(_) & followLookDue(T) & followWindow(W) & followBelow(K)
     <- freshCells(W, C); visitedSpan(Span); ?arena(AW, AD); ?followSpan(FS);
        if (C < K & Span < FS * math.sqrt(AW * AW + AD * AD)) {
            ?followTime(D); headingTurned(H); ?wallSide(Side); +following(T + D, H, Side); -+wallSeen(T); -+nextFollowLook(T + D + W);
            println("No new floor: following the wall")
        } else { ?followLookEvery(E); -+nextFollowLook(T + E) };
        !move(N).
-@followEnd +!move(N) : following(U, H, Side) & .system_time(T) & T >= U <- -following(U, H, Side); !move(N).
+@followEnd +!move(N) : following(U, H, Side) & .system_time(T) & T >= U <- -following(U, H, Side); +followGaveUp; !move(N).
 @followFound
 +!move(N) : following(U, H, Side) & followFoundWindow(FW) & followTime(D) & .system_time(T) & T > U - D + FW
           & not checkedFound(T)
