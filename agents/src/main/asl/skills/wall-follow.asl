@@ -27,10 +27,10 @@ followTime(90000).
 followBand(25, 90).
 followBear(0.5).         // the inner wheel's share of cruiseSpeed when bearing
 followStep(120).         // ms between two steering decisions
-// where the wall ends, straight on for followPass ms first: the sensor loses it some 12 cm before
-// its end, and bearing at once swept the robot's blind flank into the jamb's end
+// where the wall ends, straight on for followPass ms first: the sensor loses it when its end is
+// some 15 cm ahead of the robot's centre, and bearing at once swept the blind flank into the jamb
 followPass(1700).
-// then a quarter turn round its end on a tight arc, whatever the sensor reads meanwhile (the inner
+// then a quarter turn round its end on a tight arc, whatever the sensor reads during it (the inner
 // wheel at followRound of cruiseSpeed: 8 cm radius, the body clear of the end and within 15 cm of
 // it): into a doorway or corridor of 15 cm or more; the far jamb coming into sight while bearing
 // turned the robot back along the wall before
