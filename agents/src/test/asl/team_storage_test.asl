@@ -76,3 +76,35 @@ mock_operation(_, ok).
        !assert_true(desired(90));
        !assert_true(mock_called(forward));
        -insideArea; -stuck.
+
+// the holder clears out while a teammate waits for its turn: a quick half turn, then straight off
+@[test]
++!test_the_half_turn_is_quick_only_while_a_teammate_waits
+    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me]);
+       !assert_false(quickTurn(_, _));
+       -+storageQueue([Me, khepera2]);
+       !assert_true(quickTurn(50, 15));
+       -storageTurnMine; -+storageQueue([]).
+
+@[test]
++!test_the_way_off_leads_away_from_the_storage_point_and_the_teammate_waiting
+    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]);
+       -location(_, _, _); +location(0.25, 0, -0.3);              // out of the area, towards the arena's centre
+       -+robotAt(khepera2, 0.1, -0.41);                           // waiting on the robot's left
+       ?clearOutTo(Tx, Tz);
+       !assert_true(Tz > 0.5 & Tx > 0.15 & Tx < 0.35);          // square to both: neither nearer
+       -+robotAt(khepera2, 0.085, -0.187);                        // waiting straight ahead on the way out
+       ?clearOutTo(Ux, Uz);
+       !assert_true(Ux > 0.7 & Uz > 0.45);                       // aside, on the arena centre's side
+       -robotAt(khepera2, _, _); -storageTurnMine; -+storageQueue([]).
+
+@[test]
++!test_out_of_the_area_a_holder_with_a_teammate_waiting_drives_off_instead_of_looking_around
+    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]); -+orientation(90);
+       -location(_, _, _); +location(0.25, 0, -0.3); -+robotAt(khepera2, 0.1, -0.41);
+       +storageLeaving(0); -+lastLook(-100000); !forget_calls;
+       !sweepStep;
+       !assert_true(mock_called(computeAngle(0.25, -0.3, _, _, _)));
+       !assert_true(mock_called(setSpeeds(100, 100)));
+       !assert_false(mock_called(setSpeeds(-50, 50)));          // no look around
+       -storageLeaving(_); -storageTurnMine; -robotAt(khepera2, _, _); -+storageQueue([]).
