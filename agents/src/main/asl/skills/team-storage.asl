@@ -7,23 +7,13 @@
 // turn up once storageLeaveClearance out of the area after it left it (-insideArea), so that the
 // next robot does not drive in while it still turns and leaves (handing it over at the area's
 // edge made them touch), or when the delivery ends or pauses before it got in.
-// Not in the thesis either: while a teammate waits for the turn, the holder clears out. Its half turn
-// after the put-down is quick (heading's quickTurn: the listing's slow turn took 12 s), and out of
-// the area it drives straight off, away from the storage point and from the teammate waiting, until
-// it gives the turn up; the sweep's look around (a full turn on the spot at the area's edge, 7 s, the
-// first thing a robot did out of the area) comes after. The turn was held until storageLeaveTimeout
-// in five turns of six (team tuning worlds 1-6, two robots), the holder turning on the spot or
-// creeping along the corner's wall meanwhile. The turn is still given up only at the clearance (an
-// earlier hand-over made robots touch).
 // Parameters:
 storageQueueRadius(0.35).   // m from the storage point where a robot with a cylinder asks its turn
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
 storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
-clearOutStep(1000).         // ms of one step straight off while clearing out (then the heading again)
-// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn,
-// quickTurn(V, A) (heading's).
-// Reads: storageQueue(L), robotAt(A, X, Z) (the board), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), lastAvoid(T) (avoidance), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T). Rules it extends: halted, waitingTurn.
+// Reads: delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
 // location; the middleware's stuck.
 // Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
@@ -33,18 +23,6 @@ halted :- waitingStorage.
 waitingTurn :- waitingStorage.
 awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLeaveClearance(L)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) >= (C + L) * (C + L).
-// a teammate waits for this robot's turn
-turnWaitedFor(W) :- .my_name(Me) & storageQueue([Me, W | _]).
-quickTurn(V, A) :- storageTurnMine & turnWaitedFor(_) & quickTurnAt(V, A).
-// the way off: away from the storage point and from the teammate waiting (the sum of the two unit
-// vectors); with that teammate straight ahead on the way out, square to it, on the arena centre's side
-clearOutTo(Tx, Tz) :- location(X, _, Z) & storagePoint(Sx, Sz) & turnWaitedFor(W) & robotAt(W, Wx, Wz)
-    & Ds = math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) & Dw = math.sqrt((X - Wx) * (X - Wx) + (Z - Wz) * (Z - Wz))
-    & Ds > 0 & Dw > 0 & Ux = (X - Sx) / Ds & Uz = (Z - Sz) / Ds
-    & Vx = Ux + (X - Wx) / Dw & Vz = Uz + (Z - Wz) / Dw & clearOutWay(X, Z, Ux, Uz, Vx, Vz, Tx, Tz).
-clearOutWay(X, Z, _, _, Vx, Vz, Tx, Tz) :- Vx * Vx + Vz * Vz >= 0.25 & Tx = X + Vx & Tz = Z + Vz.
-clearOutWay(X, Z, Ux, Uz, Vx, Vz, Tx, Tz) :- Vx * Vx + Vz * Vz < 0.25 & Uz * X - Ux * Z < 0 & Tx = X + Uz & Tz = Z - Ux.
-clearOutWay(X, Z, Ux, Uz, Vx, Vz, Tx, Tz) :- Vx * Vx + Vz * Vz < 0.25 & Uz * X - Ux * Z >= 0 & Tx = X - Uz & Tz = Z + Ux.
 
 @askStorageTurn[atomic]
 +location(X, _, Z) : delivering & not onErrand & not insideArea & not storageTurnMine & not waitingStorage
@@ -56,15 +34,6 @@ clearOutWay(X, Z, Ux, Uz, Vx, Vz, Tx, Tz) :- Vx * Vx + Vz * Vz < 0.25 & Uz * X -
 @storageTurnAway[atomic]
 +location(X, _, Z) : storageLeaving(T0) & (awayFromStorage(X, Z) | .system_time(T) & storageLeaveTimeout(L) & T - T0 > L)
     <- -storageLeaving(_); if (storageTurnMine) { !giveStorageTurn }.
-
-// out of the area with a teammate waiting for the turn: a step straight off instead of the sweep's
-// step (its look around and its waypoint come once the turn is given up); sweep's !sweepStep. Just
-// after an avoidance it drives on first, as the sweep does (a box on the way off turned it back and forth)
-@clearOutStep
-+!sweepStep : storageLeaving(_) & storageTurnMine & clearOutTo(Tx, Tz) & location(X, _, Z)
-              & travelSpeed(V) & clearOutStep(T)
-    <- .system_time(Now); if (lastAvoid(La) & Now - La < 3000) { forward; .wait(T) };
-       ?location(X2, _, Z2); computeAngle(X2, Z2, Tx, Tz, A); -+desired(A); !balance; setSpeeds(V, V); .wait(T).
 
 @storageTurnFree +!storageTurn : storageQueue([]) <- awaitStorageTurn; !storageTurnTaken.
 @storageTurnBusy
