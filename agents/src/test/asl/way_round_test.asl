@@ -46,6 +46,14 @@ mock_operation(_, ok).
        !until(not followingWall(_, _, _), 1000);
        !assert_false(followingWall(_, _, _) | avoiding).         // the trip ended: so did the following
 
+// a fall (delivery's @fallCylinder) drops every desire and abolishes each forgetOnFall(B): a
+// following it cut short goes with them, else later obstacles were taken for its wall
+@[test]
++!test_a_fall_forgets_a_following_cut_short
+    <- +followingWall(left, 0, 1); +followTarget(0.9, 0.4);
+       for (forgetOnFall(B)) { .abolish(B) };
+       !assert_false(followingWall(_, _, _) | followTarget(_, _)).
+
 @[test]
 +!test_an_obstacle_far_from_the_earlier_ones_is_left_to_heading
     <- +delivering; -+detours(0);

@@ -85,7 +85,7 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 
 // Recovery, not in the thesis: the thesis stops for good ("stopAcquire; stop"); the robot drops
 // everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again);
-// a skill's beliefs to forget then are its forgetOnFall(B) beliefs (recharge: charging).
+// a skill's beliefs to forget then are its forgetOnFall(B) beliefs (suspension: charging; way-round: a following).
 @fallCylinder[atomic]
 +fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;

@@ -23,6 +23,9 @@ stallTime(20000).     // ms the sweep may come no nearer its waypoint before the
 sweepFollowLimit(60000). // ms of following towards a sweep's waypoint before it is skipped
 sweepFollows(2).      // followings towards one waypoint at most (the second on the other side)
 wallNear(200).        // a front sensor's reading over this: something near ahead (under it: that side is free)
+// a fall drops every desire (delivery's @fallCylinder): a following it cut short is forgotten with them,
+// else every obstacle met after it was taken for the wall (@obstacleWhileFollowing) and not avoided
+forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // rehitsToFollow(N) (the agent's, optional: obstacles met near here on this trip before a following
 // begins; 1 without it).
 // Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
