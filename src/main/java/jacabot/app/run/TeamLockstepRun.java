@@ -290,6 +290,21 @@ public final class TeamLockstepRun extends SteppedPlatform {
     }
 
     /**
+     * Tells every agent that the team's task ends {@code seconds} from now ({@code taskEnd}): for a
+     * run watched over less than its task (a scenario test of a task's first minutes). Without it
+     * the first {@link #runFor}'s end is the task's.
+     *
+     * @throws IllegalStateException when the task's end was told already
+     */
+    public void tellTaskEnd(double seconds) {
+        if (taskEndTold) {
+            throw new IllegalStateException("the task's end is told once, before the first run");
+        }
+        taskEndTold = true;
+        WorldBeliefs.tellTeamTaskEnd(mas(), world().timeMs(), seconds);
+    }
+
+    /**
      * Runs {@code seconds} of simulated time (less when an agent fails at its job or {@link #stop});
      * the first run's end is the task's, told to every agent ({@link WorldBeliefs#tellTeamTaskEnd}).
      *
@@ -298,8 +313,7 @@ public final class TeamLockstepRun extends SteppedPlatform {
      */
     public void runFor(double seconds) throws IOException, InterruptedException {
         if (!taskEndTold) {
-            taskEndTold = true;
-            WorldBeliefs.tellTeamTaskEnd(mas(), world().timeMs(), seconds);
+            tellTaskEnd(seconds);
         }
         if (remote) {
             runRemote(seconds);

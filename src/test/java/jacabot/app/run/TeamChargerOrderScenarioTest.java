@@ -43,6 +43,9 @@ class TeamChargerOrderScenarioTest {
             }
             """;
     private static final double SECONDS = 150;
+    /** The task the agents are told of: a team run's 10 minutes, longer than the 150 s watched (told
+     *  the run's end, every robot's battery but the neediest's covers it, and only that one charges). */
+    private static final double TASK_SECONDS = 600;
 
     @Tag("long")
     @Test
@@ -61,6 +64,7 @@ class TeamChargerOrderScenarioTest {
                     }
                 }
             });
+            run.tellTaskEnd(TASK_SECONDS);
             run.runFor(SECONDS);
             assertTrue(run.agentFailure().isEmpty(), () -> "no agent failed: " + run.agentFailure());
             for (Robot r : world.robots()) {
