@@ -125,6 +125,10 @@ final class BenchCommand implements Runnable {
         @Option(names = "--warmup", paramLabel = "N", description = "whole unmeasured runs first, while the JIT compiles (default ${DEFAULT-VALUE})")
         private int warmups = 4;
 
+        @Option(names = "--warmup-max", paramLabel = "N", description = "more warm-up runs, up to N in all, until the JIT "
+                + "compilers take at most 10% of a run's CPU (default: --warmup, i.e. no more; docs/performance.md section 25)")
+        private Integer warmupMax;
+
         @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
@@ -158,7 +162,8 @@ final class BenchCommand implements Runnable {
                 throw new UserError(e.getMessage());
             }
             new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs, turns,
-                    ConsoleStreams.of(spec.commandLine().getOut())).pipeline(pipeline).run();
+                    ConsoleStreams.of(spec.commandLine().getOut())).pipeline(pipeline)
+                    .settleWithin(warmupMax == null ? warmups : warmupMax).run();
             return 0;
         }
 
