@@ -115,8 +115,8 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
      * namespaces' numbers, its functions), so each run gets the same program and numbers as if it
      * had read it itself. The program is immutable, so runs on several threads share it. Not in
      * Jason, which reads an agent's source for each agent: a sweep or a bench makes hundreds of
-     * runs of one agent, and compiling the parser's code took the JIT a third of its CPU there
-     * (docs/performance.md §25). An agent read from files is read each time (its includes may change).
+     * runs of one agent, and the parser's code, hot only after many runs, kept C2 compiling in a
+     * bench's later runs (docs/performance.md §25). An agent read from files is read each time (its includes may change).
      */
     public AgentProgram parse(AslParser parser) throws AslSyntaxException {
         boolean fresh = includes == PACKAGED_INCLUDES && parser.isFresh();
