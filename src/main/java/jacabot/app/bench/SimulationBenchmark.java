@@ -33,6 +33,8 @@ public final class SimulationBenchmark {
     private final int measuredRuns;
     private final boolean turns;
     private boolean pipeline;
+    /** Warm-up runs at most: more than {@link #warmups} while the JIT has not settled ({@link #settleWithin}). */
+    private int maxWarmups;
     /** The process's CPU time: on a loaded machine it tells what a run costs where its wall time does not. */
     private final OperatingSystemMXBean os = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
@@ -56,6 +58,25 @@ public final class SimulationBenchmark {
         this.measuredRuns = measuredRuns;
         this.turns = turns;
         this.out = out;
+        this.maxWarmups = warmups;
+    }
+
+    /**
+     * The JIT has settled after two warm-up runs in a row in which its compilers took at most this
+     * share of the process's CPU: measured runs before that pay for compiling on the cores the
+     * run's two threads take turns on, and for code not compiled yet (docs/performance.md §25:
+     * after four warm-up runs the compilers still took 40–47 % of the measured runs' CPU).
+     */
+    static final double SETTLED_JIT_SHARE = 0.10;
+
+    /**
+     * Warms up past the {@code warmups} runs, up to {@code max} runs in all, until the JIT has
+     * settled ({@link #SETTLED_JIT_SHARE}); with {@code max} at most {@code warmups} (the
+     * constructor's default), or where the compilers' CPU cannot be read, exactly {@code warmups}. {@return this}
+     */
+    public SimulationBenchmark settleWithin(int max) {
+        this.maxWarmups = Math.max(warmups, max);
+        return this;
     }
 
     /**
@@ -74,10 +95,24 @@ public final class SimulationBenchmark {
         // JIT compiler shares the machine with the run's thread, and one run is not enough for it
         // to finish: in runs of 10 simulated minutes the speed keeps rising until about the fourth.
         List<String> warm = new ArrayList<>();
-        for (int i = 0; i < warmups; i++) {
+        List<String> jitShares = new ArrayList<>();
+        boolean settled = false;
+        int quietRuns = 0; // in a row: one run under the share may be a lull in C2's queue
+        for (int i = 0; i < warmups || (i < maxWarmups && !settled); i++) {
+            long cpu0 = os.getProcessCpuTime();
+            long jit0 = CompilerThreads.cpuNanos();
             long w0 = System.nanoTime();
             runAgent(world, source, seconds, false);
             warm.add(factor(System.nanoTime() - w0));
+            long jit = jit0 < 0 ? -1 : CompilerThreads.cpuNanos() - jit0;
+            long cpu = os.getProcessCpuTime() - cpu0;
+            if (jit < 0 || cpu <= 0) {
+                settled = true; // not measurable here: the fixed count
+            } else {
+                jitShares.add(String.format(Locale.ROOT, "%.0f%%", 100.0 * jit / cpu));
+                quietRuns = jit <= SETTLED_JIT_SHARE * cpu ? quietRuns + 1 : 0;
+                settled = quietRuns >= 2;
+            }
             if (pipeline) {
                 runAgent(world, source, seconds, true);
             }
@@ -99,9 +134,12 @@ public final class SimulationBenchmark {
         long serialization = c.encodingNanos() + mw.decodingNanos();
         long rest = wall - sim[0] - sim[1] - c.samplingNanos() - serialization - c.writingNanos() - mw.writingNanos()
                 - agent[0] - agent[1];
-        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated per run: %d warm-up runs (%s), "
-                + "then %d measured runs (%s)%n", seed, seconds, warmups, String.join(" ", warm), measuredRuns,
-                runs.stream().map(r -> factor(r.wall())).collect(Collectors.joining(" ")));
+        out.printf(Locale.ROOT, "Experiment 4 with the agent, lockstep, seed %d, %.0f s simulated per run: %d warm-up runs (%s%s), "
+                + "then %d measured runs (%s)%n", seed, seconds, warm.size(), String.join(" ", warm),
+                jitShares.isEmpty() || maxWarmups <= warmups ? ""
+                        : "; the JIT compilers' share of each one's CPU " + String.join(" ", jitShares)
+                                + (settled ? "" : ", not settled under " + Math.round(100 * SETTLED_JIT_SHARE) + "% by the last"),
+                measuredRuns, runs.stream().map(r -> factor(r.wall())).collect(Collectors.joining(" ")));
         out.printf(Locale.ROOT, "The median run: %.0f s simulated in %.2f s: %.0fx real time; "
                 + "%d control steps, %d reasoning cycles, %d artifact steps%n", seconds, wall / 1e9, seconds / (wall / 1e9),
                 m.result().steps(), m.run().cycles(), m.run().artifactSteps());

@@ -125,6 +125,11 @@ final class BenchCommand implements Runnable {
         @Option(names = "--warmup", paramLabel = "N", description = "whole unmeasured runs first, while the JIT compiles (default ${DEFAULT-VALUE})")
         private int warmups = 4;
 
+        @Option(names = "--warmup-max", paramLabel = "N", description = "more warm-up runs, up to N in all, until the JIT "
+                + "compilers have taken at most 10%% of two runs' CPU in a row (default: 30 when --warmup is not given, "
+                + "else --warmup; --warmup-max 4: the four runs measured before; docs/performance.md section 25)")
+        private Integer warmupMax;
+
         @Option(names = "--runs", paramLabel = "N", description = "measured runs; the median one is reported (default ${DEFAULT-VALUE})")
         private int runs = 3;
 
@@ -158,8 +163,16 @@ final class BenchCommand implements Runnable {
                 throw new UserError(e.getMessage());
             }
             new SimulationBenchmark(world, ExperimentCommand.duration(duration), runSeed, warmups, runs, turns,
-                    ConsoleStreams.of(spec.commandLine().getOut())).pipeline(pipeline).run();
+                    ConsoleStreams.of(spec.commandLine().getOut())).pipeline(pipeline)
+                    .settleWithin(warmupMax != null ? warmupMax : warmupGiven() ? warmups : DEFAULT_WARMUP_MAX).run();
             return 0;
+        }
+
+        /** Warm-up runs at most when neither {@code --warmup} nor {@code --warmup-max} is given. */
+        private static final int DEFAULT_WARMUP_MAX = 30;
+
+        private boolean warmupGiven() {
+            return spec.commandLine().getParseResult().matchedOption("--warmup") != null;
         }
 
         /** {@code --robots N}: the team's cost per simulated second against one robot's. */

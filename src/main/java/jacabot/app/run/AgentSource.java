@@ -14,7 +14,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * An agent program as the launcher loads it: its text, the name it goes by in messages and logs,
@@ -24,6 +26,8 @@ import java.util.List;
 public record AgentSource(SourceResolver.Source source, SourceResolver includes) {
     /** The packaged agents' folder on the class path (agents/src/main/asl in the repository). */
     private static final String PACKAGED = "asl/";
+    /** The packaged agents' includes: class path resources, which do not change while the process runs. */
+    private static final SourceResolver PACKAGED_INCLUDES = SourceResolver.resources(AgentSource.class.getClassLoader());
 
     /** {@return the packaged agent of an experiment, named {@code NAME.asl}} */
     public static AgentSource packaged(Experiment e) {
@@ -47,7 +51,7 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
                 throw new IOException("no agent " + resource + " on the class path");
             }
             String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
-            return new AgentSource(new SourceResolver.Source(name, text, location), SourceResolver.resources(loader));
+            return new AgentSource(new SourceResolver.Source(name, text, location), PACKAGED_INCLUDES);
         } catch (IOException ex) {
             throw new UncheckedIOException(ex);
         }
@@ -103,10 +107,32 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
         return new AslParser(includes);
     }
 
-    /** {@return the program, its includes read in} */
+    /**
+     * {@return the program, its includes read in} A fresh parser of a packaged agent's (its text and
+     * includes from the class path, which do not change while the process runs; {@link #parser()})
+     * reads it once per process: later, the program read then is handed over, with the parser
+     * left as reading it would leave it ({@link AslParser#resume}: its fresh variables' and
+     * namespaces' numbers, its functions), so each run gets the same program and numbers as if it
+     * had read it itself. The program is immutable, so runs on several threads share it. Not in
+     * Jason, which reads an agent's source for each agent: a sweep or a bench makes hundreds of
+     * runs of one agent, and the parser's code, hot only after many runs, kept C2 compiling in a
+     * bench's later runs (docs/performance.md §25). An agent read from files is read each time (its includes may change).
+     */
     public AgentProgram parse(AslParser parser) throws AslSyntaxException {
+        boolean fresh = includes == PACKAGED_INCLUDES && parser.isFresh();
+        if (fresh) {
+            Parsed p = ParsedPrograms.get(this);
+            if (p != null) {
+                parser.resume(p.program(), p.vars(), p.namespaces());
+                return p.program();
+            }
+        }
         try {
-            return parser.parse(source);
+            AgentProgram program = parser.parse(source);
+            if (fresh) {
+                ParsedPrograms.put(this, new Parsed(program, parser.varCounter().get(), parser.namespacesNumbered()));
+            }
+            return program;
         } catch (IOException e) {
             throw new AslSyntaxException(List.of(new SyntaxError(new SourceInfo(name(), 0, 0),
                     "cannot read an included file: " + e.getMessage())));
@@ -125,5 +151,28 @@ public record AgentSource(SourceResolver.Source source, SourceResolver includes)
         };
         new AgentSource(source, recording).parse(new AslParser(recording));
         return read;
+    }
+
+    /** A program as a fresh parser read it, and the parser's counters after. */
+    record Parsed(AgentProgram program, long vars, int namespaces) {
+    }
+
+    /** The packaged programs read, by the agent (its source: name, text, location); the last few only. */
+    private static final class ParsedPrograms {
+        private static final int KEPT = 16;
+        private static final Map<AgentSource, Parsed> READ = new LinkedHashMap<>(32, 0.75f, true) {
+            @Override
+            protected boolean removeEldestEntry(Map.Entry<AgentSource, Parsed> eldest) {
+                return size() > KEPT;
+            }
+        };
+
+        static synchronized Parsed get(AgentSource agent) {
+            return READ.get(agent);
+        }
+
+        static synchronized void put(AgentSource agent, Parsed parsed) {
+            READ.put(agent, parsed);
+        }
     }
 }

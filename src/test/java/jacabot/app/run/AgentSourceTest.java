@@ -1,7 +1,10 @@
 package jacabot.app.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.syntax.AgentProgram;
@@ -30,6 +33,36 @@ class AgentSourceTest {
             long includes = sources.stream().mapToLong(s -> s.text().lines().filter(l -> l.trim().startsWith("{ include(")).count()).sum();
             assertEquals(1 + includes, sources.size(), "the agent and the skills it includes");
         }
+    }
+
+    /**
+     * A packaged agent is read once per process: the next fresh parser gets the same program and is
+     * left as reading it itself would leave it (the fresh variables' and namespaces' numbers, the
+     * functions), so runs after the first run the same program with the same numbers.
+     */
+    @Test
+    void aPackagedAgentIsReadOnceAndItsParserLeftAsReadingItWould() throws Exception {
+        for (Experiment e : Experiment.values()) {
+            AgentSource packaged = AgentSource.packaged(e);
+            AgentProgram first = packaged.parse(packaged.parser());
+            var parser = packaged.parser();
+            AgentProgram again = packaged.parse(parser);
+            assertSame(first, again, e.id());
+            // what a parser of its own makes of the same source, read afresh
+            var own = packaged.parser();
+            AgentProgram read = own.parse(packaged.source());
+            assertEquals(texts(read), texts(again), e.id());
+            assertTrue(own.varCounter().get() > 0, e.id());
+            assertEquals(own.varCounter().get(), parser.varCounter().get(), e.id());
+            assertEquals(own.namespacesNumbered(), parser.namespacesNumbered(), e.id());
+            // the numbers go on from there as they would: the next fresh variable is the same
+            assertEquals(own.parseTerm("p(_)").toString(), parser.parseTerm("p(_)").toString(), e.id());
+        }
+        // a parser that has read something reads anew
+        AgentSource packaged = AgentSource.packaged(Experiment.NAVIGATION);
+        var used = packaged.parser();
+        used.parseTerm("p(_)");
+        assertNotSame(packaged.parse(packaged.parser()), packaged.parse(used));
     }
 
     @Test

@@ -102,6 +102,38 @@ public final class AslParser {
     /** Numbers the local namespaces and the anonymous includes of the files this parser reads. */
     private final AtomicInteger nsCounter = new AtomicInteger();
 
+    /**
+     * {@return whether this parser has read nothing yet} (no fresh variable or namespace numbered,
+     * no function registered): what {@link #resume} needs
+     */
+    public boolean isFresh() {
+        return varCounter.get() == 0 && nsCounter.get() == 0 && userFunctions.isEmpty();
+    }
+
+    /** {@return the namespaces numbered so far ({@link #freshNamespace})} */
+    public int namespacesNumbered() {
+        return nsCounter.get();
+    }
+
+    /**
+     * A fresh parser takes the state another fresh parser of the same resolver was left in by
+     * reading {@code program}: its variable and namespace counters at {@code vars} and
+     * {@code namespaces}, and the program's registered functions. So a program read once can be
+     * handed to the next agent with the parser it would have had after reading it itself.
+     *
+     * @throws IllegalStateException when this parser is not fresh
+     */
+    public void resume(AgentProgram program, long vars, int namespaces) {
+        if (!isFresh()) {
+            throw new IllegalStateException("a parser that has read something cannot take another's state");
+        }
+        varCounter.set(vars);
+        nsCounter.set(namespaces);
+        userFunctions = new ArrayList<>(program.functions());
+        userFunctionNames = new HashSet<>();
+        program.functions().forEach(f -> userFunctionNames.add(f.name() + "/" + f.arity()));
+    }
+
     /** {@return a new namespace name, as Jason gives to {@code include(F, Var)}} */
     public Literal freshNamespace() {
         return Namespaces.fresh(nsCounter);

@@ -1,6 +1,7 @@
 package jacabot.agent.parser;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -129,5 +130,27 @@ class AslParserTest {
         Files.writeString(dir.resolve("broken.asl"), "{ include(\"missing.asl\") }\n");
         var e = assertThrows(AslSyntaxException.class, () -> parser.parseFile(dir.resolve("broken.asl")));
         assertTrue(e.getMessage().contains("broken.asl:1:1: error: included file 'missing.asl' not found"), e.getMessage());
+    }
+
+    /** A fresh parser resumed from another's reading is left as that reading left the other. */
+    @Test
+    void aResumedParserNumbersAndKnowsFunctionsAsTheOneThatRead() throws Exception {
+        String text = "{ register_function(\"twice\", 1, \"twice\") }\n"
+                + "{ include(\"x.asl\", _) }\n"
+                + "twice(X, Y) :- Y = X * 2.\n"
+                + "+!g(_) : p(_, _) <- .print(twice(2)).\n";
+        SourceResolver includes = (file, from) -> new SourceResolver.Source(file, "+!h(_) <- true.\n", file);
+        var reader = new AslParser(includes);
+        assertTrue(reader.isFresh());
+        var program = reader.parse(new SourceResolver.Source("a.asl", text, "a.asl"));
+        assertFalse(reader.isFresh());
+        assertEquals(1, program.functions().size());
+        var resumed = new AslParser(includes);
+        resumed.resume(program, reader.varCounter().get(), reader.namespacesNumbered());
+        assertEquals(reader.varCounter().get(), resumed.varCounter().get());
+        assertEquals(reader.freshNamespace(), resumed.freshNamespace());
+        // the next fresh variables get the same numbers
+        assertEquals(reader.parseTerm("q(_, _)").toString(), resumed.parseTerm("q(_, _)").toString());
+        assertThrows(IllegalStateException.class, () -> resumed.resume(program, 1, 0));
     }
 }
