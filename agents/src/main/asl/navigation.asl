@@ -14,6 +14,8 @@ waypointProgress(off).
 // turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
 // 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
 quickTurns.
+// the sweep heads for look points this far apart and looks around at each (skills/look-points.asl)
+lookSpacing(1.0).
 
 !start.
 
@@ -30,5 +32,6 @@ quickTurns.
 { include("skills/search-memory.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
+{ include("skills/look-points.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
