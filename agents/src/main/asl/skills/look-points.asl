@@ -8,12 +8,18 @@
 // and the next begins (a cylinder the world moved may lie where the robot looked before).
 // Parameters (the agent's): lookSpacing(S), m; without it this skill does nothing.
 lookReach(0.15).   // m: a look point this near is reached (its look around sees as far)
-// Reads: arena(W, D); location; offStorage(X, Z), lookingAgain(X, Z, T) (search memory's place looked for
-// again is not a look point), searching (sweep, search memory).
-// Beliefs: sweep(Points) (the look points left in this round), lanesOnly (an arena where no look
-// point lies off the storage area: the sweep's lanes instead).
-// Needs: sweep (!lookAround, waypoint, closest, closerAt; its plans are the fall-back). Include it
-// after search memory (its remembered cylinders come first) and before sweep.
+// ms a place where a cylinder was seen is looked for again at most, then the look points go on (a
+// boundary following towards it starts its waypoint's patience again: one place held the search
+// 167 s of the 384 after the delivery, wide world 138 seed 1)
+lookAgainFor(40000).
+// Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
+// memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
+// (avoidance, picking, delivery); stuck (the middleware's progress watch).
+// Beliefs: sweep(Points) (the look points left in this round), lanesOnly (no look point lies off the
+// storage area: the sweep's lanes instead), lookAgainFrom(X, Z, T) (when the place looked for
+// again became the waypoint).
+// Needs: sweep (!lookAround, waypoint, closest, closerAt; its plans are the fall-back), !escape
+// (recovery). Include it after search memory (its remembered cylinders come first) and before sweep.
 
 // the grid: Nx by Nz points, the arena cut into equal cells at most lookSpacing a side, a point
 // at the centre of each, none in the storage area
@@ -39,3 +45,18 @@ lookReach(0.15).   // m: a look point this near is reached (its look around sees
 +!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz) & lookReach(R)
               & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R
     <- !nextWaypoint; !lookAround.
+
+@lookAgainStarted +lookingAgain(X, Z, 0) : lookSpacing(_) <- .system_time(T); .abolish(lookAgainFrom(_, _, _)); +lookAgainFrom(X, Z, T).
+@lookAgainTooLong
++!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainFor(L)
+              & .system_time(T) & T - T0 > L
+    <- .abolish(lookingAgain(_, _, _)); println("Looked for too long where a cylinder was seen: on to the next"); !nextWaypoint.
+
+// an avoidance cut off leaves "avoiding" behind: recovery's avoidance of an obstacle still seen runs
+// inside the motion loop's move, and a lateral cylinder's reach ends that move before the avoidance
+// takes "avoiding" back; every move then waits for it (wide world 241, seed 2: the robot stood still
+// from 179 s to the end). No progress while no avoidance holds it: it goes, and the search goes on
+@stuckAvoidingNone
++stuck : lookSpacing(_) & avoiding & not picking & not travelling & not insideArea
+         & not .intend(avoid(_)) & not .intend(escape) & not .intend(leaveStorage)
+    <- println("No progress, no avoidance under way: going on"); -avoiding; .succeed_goal(move(_)); stop; !escape; !nextWaypoint.
