@@ -1,10 +1,10 @@
 // Experiment 3: navigation (thesis Chapter 4 §3), with the Khepera's GPS and compass: the
 // cylinder picked (experiment 2) is delivered to the storage point (skills/delivery.asl); a sweep
-// of the arena (skills/sweep.asl) finds the cylinders the random walk misses. It is the Appendix B
-// agent without the battery module. storagePoint(X, Z), storageRadius(R) and arena(W, D) come from
-// the world file (the launcher adds them as initial beliefs; the .mas2j passes them with
-// beliefs="..."): no coordinate is written here. The thesis' plans as published:
-// as-published/navigation.asl.
+// of the arena by look points (skills/look-points.asl, skills/sweep.asl) finds the cylinders the
+// random walk misses. It is the Appendix B agent without the battery module. storagePoint(X, Z),
+// storageRadius(R) and arena(W, D) come from the world file (the launcher adds them as initial
+// beliefs; the .mas2j passes them with beliefs="..."): no coordinate is written here. The thesis'
+// plans as published: as-published/navigation.asl.
 
 middlewareClass("jacabot.experiments.NavigationMiddleware").
 // a waypoint of the sweep is skipped after this long, progress or not (the sweep's progress-based
@@ -14,6 +14,9 @@ waypointProgress(off).
 // turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
 // 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
 quickTurns.
+// the sweep heads for look points at most this far apart (m) and looks around at each, not along
+// lanes (skills/look-points.asl; wide tuning 101-160 x 1-2: 98 -> 107 of 120, held out 103 -> 106)
+lookSpacing(1.0).
 
 !start.
 
@@ -30,5 +33,6 @@ quickTurns.
 { include("skills/search-memory.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
+{ include("skills/look-points.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }

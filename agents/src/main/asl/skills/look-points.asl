@@ -1,0 +1,62 @@
+// Skill: the sweep by look points, not in the thesis. The sweep's lanes (sweep.asl) drive the whole
+// arena sweepSpacing apart, wall to wall, again and again: in a 3 x 3 m arena one round is some 18 m,
+// more than the battery's (1000 J, about 17 m), and after a delivery the lanes went on over floor the
+// robot had just seen. Here the search heads for points on a grid lookSpacing apart (each at most
+// lookSpacing / 2 * sqrt(2) from any floor, within the camera's 1.5 m) and turns on the spot at each
+// (sweep's look around): the nearest point not yet visited in this round first, so the floor not
+// seen lately comes before the floor seen; a round ends when every point was reached or skipped,
+// and the next begins (a cylinder the world moved may lie where the robot looked before).
+// Parameters (the agent's): lookSpacing(S), m; without it this skill does nothing.
+lookReach(0.15).   // m: a look point this near is reached (its look around sees as far)
+// ms a place where a cylinder was seen is looked for again at most, then the look points go on (a
+// boundary following towards it starts its waypoint's patience again: one place held the search
+// 167 s of the 384 after the delivery, wide world 138 seed 1)
+lookAgainFor(40000).
+// Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
+// memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
+// (avoidance, picking, delivery); stuck (the middleware's progress watch).
+// Beliefs: sweep(Points) (the look points left in this round), lanesOnly (no look point lies off the
+// storage area: the sweep's lanes instead), lookAgainFrom(X, Z, T) (when the place looked for
+// again became the waypoint).
+// Needs: sweep (!lookAround, waypoint, closest, closerAt; its plans are the fall-back), !escape
+// (recovery). Include it after search memory (its remembered cylinders come first) and before sweep.
+
+// the grid: Nx by Nz points, the arena cut into equal cells at most lookSpacing a side, a point
+// at the centre of each, none in the storage area
+@planLookPoints
++!planSweep : lookSpacing(S) & not lanesOnly & not sweep([_ | _]) & arena(W, D)
+    <- Nx = math.ceil(W / S); Nz = math.ceil(D / S);
+       .findall([X, Z], .range(I, 0, Nx - 1) & .range(J, 0, Nz - 1) & X = -W / 2 + (I + 0.5) * W / Nx
+                & Z = -D / 2 + (J + 0.5) * D / Nz & offStorage(X, Z), Ps);
+       if (Ps == []) { +lanesOnly; !planSweep } else { -+sweep(Ps); !nextWaypoint }.
+
+// the nearest look point left; with none left a new round
+@nextLookPoint
++!nextWaypoint : lookSpacing(_) & not lanesOnly & sweep(Ps) & Ps = [_ | _] & location(Lx, _, Lz)
+    <- .findall(d(D2, X, Z), .member([X, Z], Ps) & D2 = (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz), Ds);
+       .min(Ds, d(_, Wx, Wz)); .delete([Wx, Wz], Ps, Rest); -+sweep(Rest);
+       .system_time(T); -+waypoint(Wx, Wz, T); -+closest(1000); -+closerAt(T).
+@newLookRound
++!nextWaypoint : lookSpacing(_) & not lanesOnly & sweep([]) <- -sweep([]); !planSweep.
+
+// a look point is reached within lookReach (a point among boxes was driven round for the waypoint's
+// 0.1 m until its patience ran out)
+@lookPointReached
++!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz) & lookReach(R)
+              & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R
+    <- !nextWaypoint; !lookAround.
+
+@lookAgainStarted +lookingAgain(X, Z, 0) : lookSpacing(_) <- .system_time(T); .abolish(lookAgainFrom(_, _, _)); +lookAgainFrom(X, Z, T).
+@lookAgainTooLong
++!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainFor(L)
+              & .system_time(T) & T - T0 > L
+    <- .abolish(lookingAgain(_, _, _)); println("Looked for too long where a cylinder was seen: on to the next"); !nextWaypoint.
+
+// an avoidance cut off leaves "avoiding" behind: recovery's avoidance of an obstacle still seen runs
+// inside the motion loop's move, and a lateral cylinder's reach ends that move before the avoidance
+// takes "avoiding" back; every move then waits for it (wide world 241, seed 2: the robot stood still
+// from 179 s to the end). No progress while no avoidance holds it: it goes, and the search goes on
+@stuckAvoidingNone
++stuck : lookSpacing(_) & avoiding & not picking & not travelling & not insideArea
+         & not .intend(avoid(_)) & not .intend(escape) & not .intend(leaveStorage)
+    <- println("No progress, no avoidance under way: going on"); -avoiding; .succeed_goal(move(_)); stop; !escape; !nextWaypoint.
