@@ -14,7 +14,8 @@ routeHold(6000).
 // turns on the spot at half speed but for the last 15 degrees (heading's quickTurnAt), small turns on
 // the way in an arc (arc-turn.asl), obstacles kept on the route map the whole run and a wall's face
 // taken to go on past its seen end (route.asl: a doorway driven through is taken first): the trips
-// and the sweep stop and turn less (wide 101-160 × 1, 2: 101 -> 105 of 120 for the turns alone)
+// and the sweep stop and turn less (held out, wide 241-300 × 1, 2: 104 -> 113 of 120; tuning 101 -> 109,
+// 105 with the turns alone: docs/comparison-wide.md)
 routeMemory(600000).
 wallGuess(1.0).
 quickTurns.
