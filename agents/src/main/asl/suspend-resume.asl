@@ -11,6 +11,14 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // the sweep keeps its route's point up to 6 s (until reached or an obstacle met: route.asl), where
 // re-planning at every step swung it left and right near its waypoint
 routeHold(6000).
+// turns on the spot at half speed but for the last 15 degrees (heading's quickTurnAt), small turns on
+// the way in an arc (arc-turn.asl), obstacles kept on the route map the whole run and a wall's face
+// taken to go on past its seen end (route.asl: a doorway driven through is taken first): the trips
+// and the sweep stop and turn less (held out, wide 241-300 × 1, 2: 104 -> 113 of 120; tuning 101 -> 109,
+// 105 with the turns alone: docs/comparison-wide.md)
+routeMemory(600000).
+wallGuess(1.0).
+quickTurns.
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along
 // its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,
@@ -26,6 +34,8 @@ routeHold(6000).
 // (insideArea), blind, with the cylinder (docs/comparison-wide.md)
 @rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
 { include("skills/recharge.asl") }
+// small turns on the way in an arc, not on the spot (before delivery: heading's turns come after)
+{ include("skills/arc-turn.asl") }
 // no progress in the storage area after the put-down: out towards the arena's centre
 { include("skills/storage-exit.asl") }
 { include("skills/delivery.asl") }

@@ -74,6 +74,19 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     }
 
     /**
+     * Guess that a wall's face seen goes on for {@code metres} past its seen end where the robot has not
+     * driven (not in the thesis: {@link RouteMap#guessWalls}); fails before {@code routeMap}.
+     */
+    @OPERATION
+    void routeWallGuess(double metres) {
+        if (routes == null || !(metres >= 0)) {
+            failed("routeWallGuess(Metres) needs routeMap first and Metres >= 0, got " + metres);
+            return;
+        }
+        routes.guessWalls(metres);
+    }
+
+    /**
      * The point to head for on the way to (tx, tz) (not in the thesis): the target itself when the straight
      * way is free of obstacles met, or no way round them is known; else the farthest point of the route
      * round them that the robot can reach in a straight line. Observable: {@code route(Wx, Wz, Cells)}

@@ -36,6 +36,11 @@ final class RouteMap {
      * the corner into the part of the obstacle not seen yet.
      */
     static final double LOOKAHEAD = 0.2;
+    /**
+     * A straight run of this many blocked cells along x or z (20 cm: a box is at most 12 cm) is taken for a
+     * wall's face, when the map guesses walls on ({@link #guessWalls}).
+     */
+    static final int FACE_RUN = 8;
 
     private final int cols, rows;
     private final double halfW, halfD, clearance;
@@ -58,6 +63,11 @@ final class RouteMap {
     private double[] lastNear;
     private int lastStart = -1, lastGoal = -1;
     private List<Integer> lastPlan;
+    /** Per cell: whether the robot's centre has stood there (a doorway it drove through is open). */
+    private final BitSet driven;
+    /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
+    private int guessCells;
+    private int lastDriven = -1;
 
     /**
      * @param width     the arena's side along x, metres
@@ -78,6 +88,7 @@ final class RouteMap {
         this.memoryMs = memoryMs;
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
+        driven = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -115,7 +126,19 @@ final class RouteMap {
         int c = cell(x, z);
         if (c >= 0) {
             seenAt[c] = NEVER;
+            driven.set(c);
         }
+    }
+
+    /**
+     * Guess that a wall's face seen goes on for {@code metres} past its seen end, where the robot has not
+     * driven (not in the thesis): crossing that line costs as much as a cell within the clearance, so a
+     * route takes a doorway the robot drove through before a way round the face's unseen end (floor
+     * never seen is free otherwise). 0 turns the guess off.
+     */
+    void guessWalls(double metres) {
+        guessCells = (int) Math.round(Math.max(0, metres) / CELL);
+        lastLive = null;
     }
 
     /** {@return whether an obstacle is on the map at (x, z) at {@code nowMs}} */
@@ -141,9 +164,10 @@ final class RouteMap {
             return new double[] {tx, tz};
         }
         BitSet live = live(nowMs);
-        boolean sameMap = live.equals(lastLive);
+        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven);
         if (!sameMap) {
             lastLive = live;
+            lastDriven = driven.cardinality();
             lastNear = nearCosts(live);
             lastPlan = null;
         }
@@ -207,7 +231,51 @@ final class RouteMap {
                 }
             }
         }
+        if (guessCells > 0) {
+            guessFaces(live, near);
+        }
         return near;
+    }
+
+    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven cell. */
+    private void guessFaces(BitSet live, double[] near) {
+        int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
+            int i = c % cols, j = c / cols;
+            for (int[] d : dirs) {
+                if (band(live, i + d[0], j + d[1], d) || !faceBehind(live, i, j, d)) {
+                    continue;
+                }
+                for (int k = 1; k <= guessCells; k++) {
+                    int a = i + k * d[0], b = j + k * d[1];
+                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || band(live, a, b, d)) {
+                        break;
+                    }
+                    raise(near, index(a, b), NEAR_COST);
+                }
+            }
+        }
+    }
+
+    /** {@return whether the {@link #FACE_RUN} - 1 cells behind (i, j), against d, are blocked, each or a neighbour across d} */
+    private boolean faceBehind(BitSet live, int i, int j, int[] d) {
+        for (int k = 1; k < FACE_RUN; k++) {
+            if (!band(live, i - k * d[0], j - k * d[1], d)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** {@return whether cell (a, b) or one of its two neighbours across direction d is blocked} */
+    private boolean band(BitSet live, int a, int b, int[] d) {
+        for (int s = -1; s <= 1; s++) {
+            int x = a + s * d[1], y = b + s * d[0];
+            if (x >= 0 && y >= 0 && x < cols && y < rows && live.get(index(x, y))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static void raise(double[] near, int c, double cost) {

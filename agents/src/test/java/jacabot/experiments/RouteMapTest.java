@@ -83,6 +83,36 @@ class RouteMapTest {
         assertTrue(crossing[1] > 0.3, "round the nearer unseen end, at z = " + crossing[1]);
     }
 
+    /**
+     * A wall along x = 0 seen from z = -1 to 0 but for a doorway at z -0.95..-0.8 the robot drove
+     * through; beyond z = 0 the wall has not been seen. Floor never seen is free: the route goes round
+     * the face's unseen end. With the guess on, the face is taken to go on, and the route takes the
+     * doorway driven through.
+     */
+    @Test
+    void aDoorwayDrivenThroughIsTakenBeforeTheUnseenEndOfAFaceGuessedToGoOn() {
+        RouteMap guessing = new RouteMap(2, 2, 0.04, 60_000);
+        guessing.guessWalls(1.0);
+        for (RouteMap m : List.of(map, guessing)) {
+            for (double z = -1; z <= 0; z += 0.01) {
+                if (z < -0.95 || z > -0.8) {
+                    m.obstacle(0.001, z, 0);
+                }
+            }
+            for (double x = -0.1; x <= 0.1; x += 0.01) {
+                m.standing(x, -0.875);
+            }
+            m.waypoint(-0.2, -0.75, 0.3, 0.3, 100);
+        }
+        double open = crossingOf(map.lastRoute()), guessed = crossingOf(guessing.lastRoute());
+        assertTrue(open > 0, "without the guess, round the unseen end: z = " + open);
+        assertTrue(guessed > -0.95 && guessed < -0.8, "with it, through the doorway driven through: z = " + guessed);
+    }
+
+    private static double crossingOf(List<double[]> route) {
+        return route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow()[1];
+    }
+
     @Test
     void badArenasAreRefused() {
         assertThrows(IllegalArgumentException.class, () -> new RouteMap(0, 2, 0.04, 1000));
