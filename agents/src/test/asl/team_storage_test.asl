@@ -139,3 +139,25 @@ mock_operation(_, ok).
        !assert_true(mock_called(storageDone));                   // then the turn given up
        !assert_false(storageTurnMine);
        -searching; -robotAt(khepera2, _, _); -+storageQueue([]).
+
+// out of the area on the far side of the storage point from the teammate waiting: the turn is handed
+// over at once, and the holder still clears out; on the teammate's side it is kept
+@[test]
++!test_the_turn_is_handed_over_early_only_from_the_far_side
+    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]); -+orientation(90);
+       -+robotAt(khepera2, 0.1, -0.41);                           // waiting west of the storage point
+       .system_time(T); +storageLeaving(T); !forget_calls;
+       -location(_, _, _); !!perceive(location(0.25, 0, -0.3));   // out, on the teammate's side
+       .wait(400);
+       !assert_false(mock_called(storageDone));
+       !assert_true(storageTurnMine);
+       -location(_, _, _); !!perceive(location(0.45, 0, -0.25));  // out, beyond the point from it
+       !until(mock_called(storageDone), 3000);
+       !assert_false(storageTurnMine);
+       !assert_true(handedOverTo(khepera2));
+       !assert_true(storageLeaving(_));                           // still clearing out
+       !forget_calls; -+lastLook(-100000);
+       !sweepStep;
+       !assert_true(mock_called(setSpeeds(100, 100)));
+       !assert_false(mock_called(setSpeeds(-50, 50)));          // no look around yet
+       -storageLeaving(_); -handedOverTo(_); -robotAt(khepera2, _, _); -+storageQueue([]).

@@ -19,6 +19,11 @@
 // step, 0.14 m in 16 s (team world 4). If storageLeaveTimeout comes first and a look around is due,
 // the holder makes it while it still holds the turn (a look made after it, near the area, was
 // driven onto by the next robot).
+// Not in the thesis either: the turn is handed over as soon as the holder, out of the area, is on
+// the far side of the storage point from the teammate waiting and handOverGap from it (that one
+// drives in away from it); the holder still clears out until it is away (or storageLeaveTimeout).
+// The turn was given up by storageLeaveTimeout in 44 of 55 turns (team tuning worlds 1-8, two
+// robots), the teammate standing meanwhile.
 // Parameters:
 storageQueueRadius(0.35).   // m from the storage point where a robot with a cylinder asks its turn
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
@@ -27,7 +32,8 @@ storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it give
 clearOutStep(1000).         // ms of one step straight off while clearing out (then the heading again)
 clearOutMargin(0.2).        // m from the arena's wall within which the way off does not lead towards it
 lookInTurnLimit(9000).      // ms after storageLeaveTimeout the turn is kept for a look around (it lasts 7 s)
-// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T), lookInTurn(T). Rules it extends: halted, waitingTurn,
+handOverGap(0.3).           // m between the holder and the teammate waiting for an early hand-over
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T), lookInTurn(T), handedOverTo(A). Rules it extends: halted, waitingTurn,
 // quickTurn(V, A) (heading's).
 // Reads: storageQueue(L), robotAt(A, X, Z) (the board), arena(W, D), searching, lastLook(T), lookEvery(L) (sweep), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), lastAvoid(T) (avoidance), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
 // location; the middleware's stuck.
@@ -42,9 +48,15 @@ awayFromStorage(X, Z) :- storagePoint(Sx, Sz) & storageClearance(C) & storageLea
 // a teammate waits for this robot's turn
 turnWaitedFor(W) :- .my_name(Me) & storageQueue([Me, W | _]).
 quickTurn(V, A) :- storageTurnMine & turnWaitedFor(_) & quickTurnAt(V, A).
+// the teammate this robot clears out from: the one waiting for its turn, or the one it handed the turn to
+clearingFrom(W) :- storageTurnMine & turnWaitedFor(W).
+clearingFrom(W) :- handedOverTo(W).
+// out of the area on the far side of the storage point from the teammate waiting, and apart from it
+handOverBehind(X, Z) :- turnWaitedFor(W) & robotAt(W, Wx, Wz) & storagePoint(Sx, Sz) & handOverGap(G)
+    & (X - Sx) * (Wx - Sx) + (Z - Sz) * (Wz - Sz) < 0 & (X - Wx) * (X - Wx) + (Z - Wz) * (Z - Wz) >= G * G.
 // the way off: away from the storage point and from the teammate waiting (the sum of the two unit
 // vectors); with that teammate straight ahead on the way out, square to it, on the arena centre's side
-clearOutTo(Tx, Tz) :- location(X, _, Z) & storagePoint(Sx, Sz) & turnWaitedFor(W) & robotAt(W, Wx, Wz)
+clearOutTo(Tx, Tz) :- location(X, _, Z) & storagePoint(Sx, Sz) & clearingFrom(W) & robotAt(W, Wx, Wz)
     & Ds = math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) & Dw = math.sqrt((X - Wx) * (X - Wx) + (Z - Wz) * (Z - Wz))
     & Ds > 0 & Dw > 0 & Ux = (X - Sx) / Ds & Uz = (Z - Sz) / Ds
     & Vx = Ux + (X - Wx) / Dw & Vz = Uz + (Z - Wz) / Dw & clearOutWay(X, Z, Ux, Uz, Vx, Vz, Ax, Az)
@@ -75,10 +87,14 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 // percept: no dropped desire, a fallen cylinder's, can keep the turn for good)
 @storageTurnAway[atomic]
 +location(X, _, Z) : storageLeaving(T0) & (awayFromStorage(X, Z) | .system_time(T) & storageLeaveTimeout(L) & T - T0 > L)
-    <- -storageLeaving(_); .system_time(Now);
+    <- -storageLeaving(_); -handedOverTo(_); .system_time(Now);
        if (storageTurnMine & not awayFromStorage(X, Z) & turnWaitedFor(_) & searching & lookEvery(E) & lastLook(Lk)
            & Now - Lk > E) { +lookInTurn(Now) }
        elif (storageTurnMine) { !giveStorageTurn }.
+// the early hand-over: the turn given up, the clearing out goes on (storageLeaving kept)
+@storageHandOver[atomic]
++location(X, _, Z) : storageLeaving(_) & storageTurnMine & handOverBehind(X, Z) & turnWaitedFor(W)
+    <- +handedOverTo(W); !giveStorageTurn.
 // the look around made inside the turn (@lookInTurn): the turn given up lookInTurnLimit after the
 // timeout if the look did not end (a sighting cut it short, or the robot stopped searching)
 @lookInTurnOver[atomic]
@@ -89,7 +105,7 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 // step (its look around and its waypoint come once the turn is given up); sweep's !sweepStep. Just
 // after an avoidance it drives on first, as the sweep does (a box on the way off turned it back and forth)
 @clearOutStep
-+!sweepStep : storageLeaving(_) & storageTurnMine & clearOutTo(Tx, Tz) & location(X, _, Z)
++!sweepStep : storageLeaving(_) & clearOutTo(Tx, Tz) & location(X, _, Z)
               & travelSpeed(V) & clearOutStep(T)
     <- .system_time(Now); if (lastAvoid(La) & Now - La < 3000) { forward; .wait(T) };
        ?location(X2, _, Z2); computeAngle(X2, Z2, Tx, Tz, A); -+desired(A); !balance; setSpeeds(V, V); .wait(T).
