@@ -155,3 +155,21 @@ mock_operation(_, ok).
        !releaseClaim(3); .wait(100);
        !assert_false(mock_called(release(_)));
        !assert_false(myClaim(3)).
+
+// with a teammate, the cylinder is taken once the gripper holds it, before it is picked up; let go
+// before that, its claim is put down where it is; alone, only the pick takes it
+@[test]
++!test_with_a_teammate_a_caught_cylinder_is_taken_before_it_is_picked
+    <- -homing(_); -myClaim(_); -+picked(false); !forget_calls;   // at (0.1, 0.2), heading 90
+       +picking; !!perceive(caught(true));
+       .wait(300);
+       !assert_false(mock_called(take(_, _, _)));               // alone: not yet
+       -caught(true); +robotAt(khepera4, -0.3, -0.3); !forget_calls;
+       !!perceive(caught(true));
+       !until(myClaim(7), 5000);
+       ?mock_called(take(X, Z, 7));
+       !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27);  // in the gripper, 6 cm ahead
+       -caught(true); !!perceive(caught(false));
+       !until(mock_called(putDown(_, _)), 5000);
+       !assert_false(takenCaught);
+       -picking; -caught(false); -myClaim(_); -robotAt(khepera4, _, _).

@@ -31,7 +31,7 @@ claimBeyond(2).        // the claim reaches this many times its radius beyond th
 gripReach(0.06).       // m from the robot's centre to a cylinder held in the gripper
 sightCone(15).         // degrees either side of a sighting's bearing where a carried cylinder or the
                        // stored pile may be what was sighted
-// Beliefs: myClaim(Id), claimRefused. Reads: claimed(Id, A, X, Z, R), completed(N) (the board),
+// Beliefs: myClaim(Id), claimRefused, takenCaught. Reads: caught(B) (the middleware), teamSearch (team-search), claimed(Id, A, X, Z, R), completed(N) (the board),
 // robotAt(A, X, Z) (team-places), storagePoint(X, Z) (the world), location, orientation.
 // Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true)), delivery
 // (stored(N)), team-places (teammateNear). Include it FIRST (after team-places): its plans for
@@ -85,7 +85,17 @@ storedPileInSight(Off) :- completed(N) & N > 0 & storagePoint(Sx, Sz) & inSightL
 // the cylinder in the gripper is this robot's, whoever had claimed its place
 @takePicked
 +picked(true) : location(X, _, Z) & orientation(O) & gripReach(G)
-    <- A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
+    <- -takenCaught; A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
+// with teammates, taken as soon as the gripper holds it (caught), the arm still down: until picked
+// (a second later) a teammate's claim on it stood while this robot held it, a double claim (team
+// world 86, two robots, a cylinder reached at the robot's side); let go before it was picked, its
+// claim stays where it is, as a fallen cylinder's
+@takeCaught
++caught(true) : teamSearch & picking & not picked(true) & location(X, _, Z) & orientation(O) & gripReach(G)
+    <- +takenCaught; A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
+@caughtLetGo
++caught(false) : takenCaught & not picked(true) & location(X, _, Z) & orientation(O) & gripReach(G)
+    <- -takenCaught; A = O * math.pi / 180; putDown(X + G * math.cos(A), Z + G * math.sin(A)).
 // the cylinder let go (put down in the storage area, or fallen): its claim stays where it is
 @putDownClaim
 -picked(true) : myClaim(_) & location(X, _, Z) & orientation(O) & gripReach(G)
