@@ -76,7 +76,8 @@ pausedUntil("-veering") :- veering.
 +!setUpCoverage : wheelGeometry(U, A)
     <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) };
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
-       if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) }.
+       if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
+       if (wallMarks(M)) { markWalls(M) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
