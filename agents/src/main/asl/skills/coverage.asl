@@ -25,6 +25,13 @@ staleLimit(2000).             // how long a straight leg may go over floor alrea
 // the floor beyond a wall looked new, so the robot followed the walls (generated worlds: 126 -> 134
 // of 150, held out 126 -> 133)
 exploreHorizon(0.6).
+// not in the thesis: every front reading of wallMarks or more (about 12 cm from the sensor) marks
+// the wall or box where the reading puts it on the dead-reckoning map (the middleware's markWalls),
+// not only where an obstacle was signalled; exploreTurn's floor then ends at the walls seen, and the
+// floor beyond a room's wall no longer draws the robot into the margin along it (wide tuning
+// 101-160, run seeds 1-2: 86 -> 94 of 120; held out 241-300: 84 -> 89; levels 60 and 350: 88, 83;
+// docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: the walls seen marked on the map")
+wallMarks(200).
 // in an arena of closeArea m2 or more, closer to obstacles: obstacle at a front reading over 480
 // (about 5 cm; the thesis: 350, about 8 cm), clear under 300 (200), or a left-right difference over
 // 150 (100): with the thesis' levels the floor next to walls and boxes, a large share of a big
