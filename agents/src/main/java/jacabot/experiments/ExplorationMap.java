@@ -143,9 +143,7 @@ final class ExplorationMap {
             int i = (int) (k >> 32), j = (int) k;
             for (int[] d : steps) {
                 long n = key(i + d[0], j + d[1]);
-                // a cell the centre has crossed is passable whatever was seen in it (a doorway's
-                // jamb read from beside it marks the doorway's own cell)
-                if (parent.containsKey(n) || blocked.contains(n) && !visited.contains(n)) {
+                if (parent.containsKey(n) || blocked.contains(n)) {
                     continue;
                 }
                 parent.put(n, k);
