@@ -196,9 +196,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
 
     /**
      * Marks on the map, from now on, every wall or box a front sensor reads at {@code level} or more,
-     * where the reading puts it (not in the thesis): walls drawn from the readings end the floor
-     * beyond them, and a frontier is floor not crossed with no wall seen in front of it, a doorway
-     * rather than the margin along a wall. Fails before {@code odometry} or for a level under 1.
+     * where the reading puts it (not in the thesis; the MyBot's sensors, {@link #rangeOf}): before,
+     * only the moment an obstacle was signalled left a mark, and the floor beyond a wall seen still
+     * counted as new for {@code exploreTurn}. Fails before {@code odometry} or for a level under 1.
      */
     @OPERATION
     void markWalls(double level) {
@@ -209,7 +209,10 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         markLevel = level;
     }
 
-    /** The MyBot's front sensors: rim and axis this many degrees off the heading, range from the rim by reading. */
+    /**
+     * The MyBot's front sensors: on the rim and looking this many degrees off the heading, and their
+     * response (the world's lookup table: 480 at 5 cm from the rim, 350 at 8 cm, 200 at 12 cm, 0 at 20 cm).
+     */
     static final double SENSOR_ANGLE = 20, RIM = 0.045;
     private static final double[][] RESPONSE = {{1000, 0}, {480, 0.05}, {350, 0.08}, {200, 0.12}, {0, 0.20}};
 
