@@ -191,6 +191,48 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         squareMetres.set(map.cellsVisited() * ExplorationMap.CELL * ExplorationMap.CELL);
     }
 
+    /** The weakest front reading marked on the map as a wall or box (NaN: only obstacle(true) marks). */
+    private double markLevel = Double.NaN;
+
+    /**
+     * Marks on the map, from now on, every wall or box a front sensor reads at {@code level} or more,
+     * where the reading puts it (not in the thesis; the MyBot's sensors, {@link #rangeOf}): before,
+     * only the moment an obstacle was signalled left a mark, and the floor beyond a wall seen still
+     * counted as new for {@code exploreTurn}. Fails before {@code odometry} or for a level under 1.
+     */
+    @OPERATION
+    void markWalls(double level) {
+        if (map == null || !(level >= 1)) {
+            failed("markWalls needs odometry(SpeedUnit, AxleLength) first and a level of at least 1, got " + level);
+            return;
+        }
+        markLevel = level;
+    }
+
+    /**
+     * The MyBot's front sensors: on the rim and looking this many degrees off the heading, and their
+     * response (the world's lookup table: 480 at 5 cm from the rim, 350 at 8 cm, 200 at 12 cm, 0 at 20 cm).
+     */
+    static final double SENSOR_ANGLE = 20, RIM = 0.045;
+    private static final double[][] RESPONSE = {{1000, 0}, {480, 0.05}, {350, 0.08}, {200, 0.12}, {0, 0.20}};
+
+    /** {@return the distance from the rim, metres, at which the MyBot's sensor gives {@code reading}} */
+    static double rangeOf(double reading) {
+        for (int k = 1; k < RESPONSE.length; k++) {
+            if (reading >= RESPONSE[k][0]) {
+                double[] a = RESPONSE[k - 1], b = RESPONSE[k];
+                return b[1] + (a[1] - b[1]) * (reading - b[0]) / (a[0] - b[0]);
+            }
+        }
+        return RESPONSE[RESPONSE.length - 1][1];
+    }
+
+    private void markReading(double reading, double bearing) {
+        if (map != null && reading >= markLevel) {
+            map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
+        }
+    }
+
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         if (kind == SensorKind.WHEEL_SPEEDS && map != null) {
@@ -204,9 +246,11 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
+            markReading(info.getVal(), SENSOR_ANGLE);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
+            markReading(right, -SENSOR_ANGLE);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             double delta = Math.round(left - right);

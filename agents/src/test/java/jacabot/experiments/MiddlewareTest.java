@@ -215,6 +215,44 @@ class MiddlewareTest {
     }
 
     @Test
+    void wallsReadByTheFrontSensorsEndTheFloorAheadOnceTheAgentAsksForTheirMarks() throws Exception {
+        var side = new OpFeedbackParam<String>();
+        var ms = new OpFeedbackParam<Double>();
+        String[] turns = new String[2];
+        for (int marks = 0; marks < 2; marks++) {
+            var b = new Bench(ObstacleAvoidanceMiddleware.class);
+            assertFalse(b.op("markWalls", new Object[] {200.0}).succeeded(), "no odometry yet");
+            b.op("odometry", new Object[] {0.001, 0.09});
+            b.op("exploreHorizon", new Object[] {0.6});
+            assertFalse(b.op("markWalls", new Object[] {0.0}).succeeded(), "a level under 1");
+            if (marks == 1) {
+                assertTrue(b.op("markWalls", new Object[] {200.0}).succeeded());
+            }
+            // a turn of 60 degrees to the right on the spot (towards the most new floor, unmarked),
+            // then standing still with a wall 12 cm ahead of both sensors: readings of 200, under
+            // every obstacle level, so no obstacle(true) marks it
+            for (int i = 0; i < 12; i++) {
+                b.deliver(new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, -100}));
+            }
+            for (int i = 0; i < 5; i++) {
+                b.deliver(value(SensorKind.LEFT_DISTANCE, 200), value(SensorKind.RIGHT_DISTANCE, 200),
+                        new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {0, 0}));
+            }
+            assertEquals(false, b.properties.get("obstacle"));
+            assertTrue(b.op("exploreTurn", new Object[] {100.0, side, ms}).succeeded());
+            turns[marks] = side.get() + " " + ms.get();
+            if (marks == 1) {
+                // 30 degrees take 236 ms: the wall's marks end the floor ahead and a little to either side
+                assertTrue(ms.get() > 240, "the wall ahead ends the floor there: a turn away, got " + turns[1]);
+            }
+        }
+        assertFalse(turns[0].equals(turns[1]), "the same turn with and without the marks: " + turns[0]);
+        assertEquals(0.12, ObstacleAvoidanceMiddleware.rangeOf(200), 1e-9);
+        assertEquals(0.065, ObstacleAvoidanceMiddleware.rangeOf(415), 1e-9);
+        assertEquals(0.20, ObstacleAvoidanceMiddleware.rangeOf(0), 1e-9);
+    }
+
+    @Test
     void freshCellsCountsNewFloorOfTheLastWindowAndVisitedAreaAllOfIt() throws Exception {
         var b = new Bench(ObstacleAvoidanceMiddleware.class);
         var cells = new OpFeedbackParam<Double>();
