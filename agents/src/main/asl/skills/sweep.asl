@@ -18,6 +18,10 @@ sweepSpeed(100).
 // side, and a lane passed cylinders just out of its sight for minutes (generated worlds:
 // navigation 129 -> 139 of 150, held out 119 -> 134; suspend/resume 131 -> 139, 123 -> 139)
 lookEvery(25000).
+// ms after an avoidance during which a step drives straight on before it heads for its point again
+// (the aim, taken at once, turned the robot back into what it had just avoided)
+afterAvoid(3000).
+justAvoided(T) :- lastAvoid(A) & afterAvoid(W) & T - A < W.
 // A waypoint is skipped once the robot has come no closer to it by waypointProgress m for
 // waypointPatience ms (a fixed 60 s per waypoint left the robot half a minute among boxes in front
 // of a waypoint it could not reach, as in gradle run's story; generated worlds, suspend/resume:
@@ -99,7 +103,7 @@ sweepCorner(1, 1) :- not sweepFrom(_, _).
            -+closest(Dist); -+closerAt(T);
            if (progressStep(G2) & .number(G2)) { -+waypoint(X, Z, T) }
        };
-       if (lastAvoid(A) & T - A < 3000) { forward; .wait(1500) };
+       if (justAvoided(T)) { forward; .wait(1500) };
        ?location(Lx2, _, Lz2); !aimAt(X, Z); ?aim(Ax, Az); computeAngle(Lx2, Lz2, Ax, Az, D); -+desired(D); !balance;
        setSpeeds(V, V); .wait(2000).
 @noSweepStep +!sweepStep <- !nextWaypoint; .wait(100).

@@ -82,24 +82,25 @@ storedPileInSight(Off) :- completed(N) & N > 0 & storagePoint(Sx, Sz) & inSightL
 @dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
 @keepClaim +!dropOtherClaim(_).
 
+// where the cylinder in the gripper is
+heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * math.pi / 180
+    & Hx = X + G * math.cos(A) & Hz = Z + G * math.sin(A).
+
 // the cylinder in the gripper is this robot's, whoever had claimed its place
 @takePicked
-+picked(true) : location(X, _, Z) & orientation(O) & gripReach(G)
-    <- -takenCaught; A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
++picked(true) : heldAt(Hx, Hz) <- -takenCaught; take(Hx, Hz, Id); -myClaim(_); +myClaim(Id).
 // with teammates, taken as soon as the gripper holds it (caught), the arm still down: until picked
 // (a second later) a teammate's claim on it stood while this robot held it, a double claim (team
 // world 86, two robots, a cylinder reached at the robot's side); let go before it was picked, its
 // claim stays where it is, as a fallen cylinder's
 @takeCaught
-+caught(true) : teamSearch & picking & not picked(true) & location(X, _, Z) & orientation(O) & gripReach(G)
-    <- +takenCaught; A = O * math.pi / 180; take(X + G * math.cos(A), Z + G * math.sin(A), Id); -myClaim(_); +myClaim(Id).
++caught(true) : teamSearch & picking & not picked(true) & heldAt(Hx, Hz)
+    <- +takenCaught; take(Hx, Hz, Id); -myClaim(_); +myClaim(Id).
 @caughtLetGo
-+caught(false) : takenCaught & not picked(true) & location(X, _, Z) & orientation(O) & gripReach(G)
-    <- -takenCaught; A = O * math.pi / 180; putDown(X + G * math.cos(A), Z + G * math.sin(A)).
++caught(false) : takenCaught & not picked(true) & heldAt(Hx, Hz) <- -takenCaught; putDown(Hx, Hz).
 // the cylinder let go (put down in the storage area, or fallen): its claim stays where it is
 @putDownClaim
--picked(true) : myClaim(_) & location(X, _, Z) & orientation(O) & gripReach(G)
-    <- A = O * math.pi / 180; putDown(X + G * math.cos(A), Z + G * math.sin(A)).
+-picked(true) : myClaim(_) & heldAt(Hx, Hz) <- putDown(Hx, Hz).
 // a claim the board voided (another robot took the cylinder) is forgotten
 @claimVoided -claimed(Id, Me, _, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _, _) & not picked(true) <- -myClaim(Id).
 

@@ -35,7 +35,7 @@ lookInTurnLimit(9000).      // ms after storageLeaveTimeout the turn is kept for
 handOverGap(0.3).           // m between the holder and the teammate waiting for an early hand-over
 // Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T), lookInTurn(T), handedOverTo(A). Rules it extends: halted, waitingTurn,
 // quickTurn(V, A) (heading's).
-// Reads: storageQueue(L), robotAt(A, X, Z) (the board), arena(W, D), searching, lastLook(T), lookEvery(L) (sweep), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), lastAvoid(T) (avoidance), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
+// Reads: storageQueue(L), robotAt(A, X, Z) (the board), arena(W, D), searching, lastLook(T), lookEvery(L) (sweep), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), justAvoided(T) (sweep), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
 // location; the middleware's stuck.
 // Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
@@ -107,7 +107,7 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 @clearOutStep
 +!sweepStep : storageLeaving(_) & clearOutTo(Tx, Tz) & location(X, _, Z)
               & travelSpeed(V) & clearOutStep(T)
-    <- .system_time(Now); if (lastAvoid(La) & Now - La < 3000) { forward; .wait(T) };
+    <- .system_time(Now); if (justAvoided(Now)) { forward; .wait(T) };
        ?location(X2, _, Z2); computeAngle(X2, Z2, Tx, Tz, A); -+desired(A); !balance; setSpeeds(V, V); .wait(T).
 // the storage turn's timeout came first: sweep's look around, then the turn given up
 @lookInTurn
