@@ -13,7 +13,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Reads: location, orientation; arena(W, D); sightOnRay (an agent's option, above); storagePoint(X, Z), storageClearance(C), stored(N)
+// Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
@@ -29,19 +29,8 @@ nearSide(V, -1) :- V >= 0.
 // so a far sighting can fall beyond a wall; it is put at the wall (a waypoint out of the arena
 // held the search against the wall until the waypoint's patience ran out)
 onFloor(V, Half, F) :- F = math.max(0.05 - Half, math.min(Half - 0.05, V)).
-sightedAt(Off, Dist, Cx, Cz) :- not sightOnRay & location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
+sightedAt(Off, Dist, Cx, Cz) :- location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
     & onFloor(X + Dist * math.cos(H), W / 2, Cx) & onFloor(Z + Dist * math.sin(H), D / 2, Cz).
-// with sightOnRay (an agent's, tidy-up's), not in the thesis: a sighting beyond a wall is put where its
-// line meets the wall (less 5 cm), not moved along the wall: the cylinder lies on that line, nearer than
-// the width said, and the point pushed along the wall was up to 0.4 m from it (tidy-up world 171 × 3: three
-// places along a wall looked at again, 20-35 s each, with one cylinder left)
-sightedAt(Off, Dist, Cx, Cz) :- sightOnRay & location(X, _, Z) & orientation(O) & arena(W, D) & H = (O + Off) * math.pi / 180
-    & roomAhead(X, math.cos(H), W / 2, Tx) & roomAhead(Z, math.sin(H), D / 2, Tz) & T = math.max(0, math.min(Dist, math.min(Tx, Tz)))
-    & Cx = X + T * math.cos(H) & Cz = Z + T * math.sin(H).
-// how far the line from V along C (a direction's component) runs before 5 cm short of the wall at Half
-roomAhead(V, C, Half, T) :- C > 0.001 & T = (Half - 0.05 - V) / C.
-roomAhead(V, C, Half, T) :- C < -0.001 & T = (0.05 - Half - V) / C.
-roomAhead(_, C, _, 100) :- C >= -0.001 & C <= 0.001.
 // a sighting whose line passes the storage area before four times its distance: a cylinder stored
 // there (the middleware leaves out only those whose distance matches; the pile's cylinders side by
 // side seem one wide cylinder, as near as a third of the way: three stored 0.87 m ahead were
