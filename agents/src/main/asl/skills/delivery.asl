@@ -32,7 +32,7 @@ storageClearance(0.15) :- not storageRadius(_).
 setUpGoal(setUpDelivery).
 travelling :- delivering.
 pickingOff :- delivering.
-pickingOff :- nearStorage.
+pickingOff :- nearStorage & not fetchingKnocked.   // fetchingKnocked: knocked-aside's (tidy-up's)
 pickingOff :- insideArea.
 halted :- insideArea.
 nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
@@ -85,10 +85,12 @@ nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
 
 // Recovery, not in the thesis: the thesis stops for good ("stopAcquire; stop"); the robot drops
 // everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again);
-// a skill's beliefs to forget then are its forgetOnFall(B) beliefs (suspension: charging; way-round: a following).
+// a skill's beliefs to forget then are its forgetOnFall(B) beliefs (suspension: charging; way-round: a following);
+// with knocked-aside's fallenNearStorage (tidy-up's) a fall by the storage area is noted as a knock there too.
 @fallCylinder[atomic]
 +fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
+       if (fallenNearStorage) { .system_time(Tf); -+fellNearStorageAt(Tf); -+knockedAt(Tf) };
        -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
        for (forgetOnFall(B)) { .abolish(B) }; restartAcquireDistance; ?ray(R); setThreshold(R);
        ?storagePoint(Sx, Sz); -+targetPoint(Sx, Sz); setUpTargetPoint(Sx, 0, Sz);

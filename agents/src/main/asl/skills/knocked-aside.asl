@@ -7,6 +7,9 @@
 knockedAside(4500).   // ms after the knock that an obstacle met is taken for the cylinder
 knockedTurn(14000).   // ms the turn lasts at most: a full turn at a quarter speed (the side sensed first
                       // may be a box's, world 183 × 2: the cylinder came round after three quarters)
+knockFetch(20000).    // ms after a fall by the storage area that picking is allowed there (not in the thesis):
+                      // the turn to it and picking's slow approach (a window of 10 s ended 0.2 s after the pick)
+knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall counts as by the storage area
 // Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D) (the middleware's).
 // Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
@@ -26,3 +29,11 @@ justKnocked :- knockedAt(T0) & knockedAside(A) & .system_time(T) & T - T0 < A & 
 // not seen in time: on with the search; seen meanwhile: picking's reach goes on
 @turnToKnockedEnd -!turnToKnocked(_) : not picking & not reachCylinder(true) <- stop; -avoiding.
 @turnToKnockedReach -!turnToKnocked(_) <- -avoiding.
+
+// A cylinder knocked out by the storage area lies where no pick is allowed (delivery's nearStorage:
+// tidy-up world 174, 0.08 m from the storage point, never picked again): for knockFetch ms after such
+// a fall (delivery's fall plan notes it) picking is allowed there, so picking's reach takes it when the
+// look around shows it in the camera's side section, and it is delivered at once.
+fallenNearStorage :- knockFetchWithin(M) & location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
+    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + M) * (C + M).
+fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W.

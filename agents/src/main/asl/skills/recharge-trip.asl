@@ -74,12 +74,13 @@ forgetOnFall(atCharger).
 // comes again at the next control step, so the trip starts once the delivery is over.
 // The last cylinder of a task that ends at the charger (tidy-up: cylinders(N) known) is delivered
 // first wherever the robot is: the trip after it is the one to the charger anyway. Either only
-// while the battery less the reserve (the worst drain) covers the way on to the charger.
+// while the battery less the reserve (the worst drain) covers the way on to the charger. A cylinder
+// knocked out by the storage area (knocked-aside's fetchingKnocked, tidy-up's) is fetched first too.
 // A task that ends at a known time (taskEnd) makes no trip while the battery covers what is left: a
 // trip in the last minutes took what was left for the last cylinder (tidy-up: 83-156 s of 600).
 @rechargeNotNeeded +lowBattery : not charging & .system_time(T) & batteryLasts(T).
 @rechargeAfterDelivery
-+lowBattery : deliverFirst(R) & ~delivered & not charging & (storageNearer | lastToStore) & wayCovered(R).
++lowBattery : deliverFirst(R) & (~delivered | fetchingKnocked) & not charging & (storageNearer | lastToStore) & wayCovered(R).
 @rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- +charging; !!rechargeTrip(X, Y, Z, O).
