@@ -17,10 +17,11 @@ routeNear(0.3).
 // goes about 0.1 m; the point lies at most 0.2 m on: RouteMap.LOOKAHEAD)
 routeReach(0.1).
 // Reads: arena(W, D) (the world); wallGuess(M) (an agent's option, below); lastAvoid(T)
-// (avoidance); routeHold(H) (an agent's option, e.g. suspend/resume's: the sweep keeps the point its route gave for up to H ms, until it is within
-// routeReach of it or an obstacle was avoided since, instead of planning again every step, where the
-// aim, re-planned from each new spot, swung left and right near its waypoint:
-// docs/comparison-wide.md); travelling (delivery: the trips plan at every re-alignment).
+// (avoidance); routeHold(H) (an agent's option, e.g. suspend/resume's: the sweep keeps the point
+// its route gave for up to H ms, until it is within routeReach of it or an obstacle was avoided
+// since, instead of planning again every step, where the aim, re-planned from each new spot, swung
+// left and right near its waypoint: docs/comparison-wide.md); travelling (delivery: the trips plan
+// at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
 // routeHold: the sweep's target and when its aim was planned); the rule nearTarget(X, Z) (within
