@@ -18,10 +18,10 @@ sweepSpeed(100).
 // side, and a lane passed cylinders just out of its sight for minutes (generated worlds:
 // navigation 129 -> 139 of 150, held out 119 -> 134; suspend/resume 131 -> 139, 123 -> 139)
 lookEvery(25000).
-// ms after an avoidance during which a step drives straight on before it heads for its point again
-// (the aim, taken at once, turned the robot back into what it had just avoided)
-afterAvoid(3000).
-justAvoided(T) :- lastAvoid(A) & afterAvoid(W) & T - A < W.
+// ms after an avoidance during which a step first drives straight on, so that heading for its point
+// does not turn the robot straight back to what it avoided (team-storage's clear-out reads it too)
+driveOnAfterAvoid(3000).
+justAvoided(T) :- lastAvoid(A) & driveOnAfterAvoid(W) & T - A < W.
 // A waypoint is skipped once the robot has come no closer to it by waypointProgress m for
 // waypointPatience ms (a fixed 60 s per waypoint left the robot half a minute among boxes in front
 // of a waypoint it could not reach, as in gradle run's story; generated worlds, suspend/resume:
