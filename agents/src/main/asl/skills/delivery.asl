@@ -35,8 +35,10 @@ pickingOff :- delivering.
 pickingOff :- nearStorage & not fetchingKnocked.   // fetchingKnocked: knocked-aside's (tidy-up's)
 pickingOff :- insideArea.
 halted :- insideArea.
-nearStorage :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
-    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < C * C.
+nearStorage :- storageWithin(0).
+// within the storage clearance and E m more (knocked-aside's fallenNearStorage reads it too)
+storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
+    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + E) * (C + E).
 
 @setUpDelivery
 +!setUpDelivery : storagePoint(X, Z) & storageClearance(SC) & threshold(T)

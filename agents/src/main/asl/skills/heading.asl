@@ -63,6 +63,8 @@ desiredOnTheRight :- desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) 
 // for the last A: the thesis' slow turn took 9 s for a half turn, 60-100 s of a ten-minute tidy-up
 // run; an agent may believe quickTurn(V, A) itself instead
 quickTurn(V, A) :- quickTurns & quickTurnAt(V, A).
+// the straight distance (m) from the robot to (Tx, Tz): recharge-trip's and team-charger's
+distanceTo(Tx, Tz, D) :- location(X, _, Z) & D = math.sqrt((X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)).
 headingOff(G) :- desired(D) & orientation(O) & R = math.abs(O - D) & G = math.min(R, 360 - R).
 @balanceQuickRight
 +!balance : quickTurn(V, A) & headingOff(G) & G > A & desiredOnTheRight

@@ -34,6 +34,5 @@ justKnocked :- knockedAt(T0) & knockedAside(A) & .system_time(T) & T - T0 < A & 
 // tidy-up world 174, 0.08 m from the storage point, never picked again): for knockFetch ms after such
 // a fall (delivery's fall plan notes it) picking is allowed there, so picking's reach takes it when the
 // look around shows it in the camera's side section, and it is delivered at once.
-fallenNearStorage :- knockFetchWithin(M) & location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
-    & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + M) * (C + M).
+fallenNearStorage :- knockFetchWithin(M) & storageWithin(M).
 fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W.

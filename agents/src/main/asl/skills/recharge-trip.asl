@@ -37,7 +37,7 @@ halted :- atCharger.
 // battery less the reserve covers the straight way to the storage point and on to the charger
 wayCovered(R) :- battery(B) & location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz) & wayEnergy(E)
     & B - R > E * (math.sqrt((X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz)) + math.sqrt((Sx - Cx) * (Sx - Cx) + (Sz - Cz) * (Sz - Cz))).
-markedDistance(D) :- location(X, _, Z) & targetPoint(Tx, Tz) & D = math.sqrt((X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)).
+markedDistance(D) :- targetPoint(Tx, Tz) & distanceTo(Tx, Tz, D).
 storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
 lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.

@@ -47,7 +47,7 @@ chargerShareFloor(600).      // J: and at this one when a robot waiting at the c
 halted :- waitingCharger.
 waitingTurn :- waitingCharger.
 chargerBusy :- .my_name(Me) & chargerQueue([H | _]) & H \== Me.
-chargerDistance(D) :- location(X, _, Z) & charger(Cx, Cz) & D = math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)).
+chargerDistance(D) :- charger(Cx, Cz) & distanceTo(Cx, Cz, D).
 nearCharger(W) :- location(X, _, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) < W * W & (Z - Cz) * (Z - Cz) < W * W.
 // the energy a booked robot keeps for its trip: the reserve, the way (as the crow flies) and the
 // robots ahead of it in the queue
