@@ -156,7 +156,7 @@ final class DeviceSampler {
 
     /** {@return the readings available now, in a fixed order (so a lockstep run is reproducible)} */
     List<SensorInfo> sample() {
-        List<SensorInfo> out = new ArrayList<>();
+        List<SensorInfo> out = new ArrayList<>(SensorKind.values().length); // at most one reading a kind: never grown
         for (Map.Entry<SensorKind, DistanceSensor> e : distance.entrySet()) {
             if (e.getValue().hasValue()) {
                 out.add(new SensorInfo(e.getKey().id(), e.getValue().getValue()));
