@@ -169,11 +169,11 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     private void sight(SensorInfo camera) {
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
-            return; // before the image is copied: most readings end here
+            return; // before the image is scanned: most readings end here
         }
         Optional<CylinderSighting> sighting = everyRun
-                ? CylinderSighting.all(camera.getIntValues(), fov).stream().filter(s -> !excluded(s)).findFirst()
-                : CylinderSighting.find(camera.getIntValues(), fov).filter(s -> !excluded(s));
+                ? camera.readInts(image -> CylinderSighting.all(image, fov)).stream().filter(s -> !excluded(s)).findFirst()
+                : camera.readInts(image -> CylinderSighting.find(image, fov)).filter(s -> !excluded(s)); // read only
         sighting.ifPresent(s -> {
             lastSightingMs = simTimeMs();
             signal("cylinderSighted", Math.round(s.offset() * 10) / 10.0, Math.round(s.distance() * 100) / 100.0);

@@ -94,4 +94,22 @@ class CylinderSightingTest {
             }
         }
     }
+
+    @Test
+    void theRedLevelsTableAgreesWithTheRedTestOnEveryColour() {
+        int red = 0;
+        for (int r = 0; r < 256; r++) {
+            int below = CylinderSighting.GREEN_BLUE_BELOW[r];
+            for (int g = 0; g < 256; g++) {
+                for (int b = 0; b < 256; b++) {
+                    boolean isRed = ObjectPickingMiddleware.isRed(r, g, b);
+                    if ((g < below && b < below) != isRed) {
+                        throw new AssertionError("colour " + r + ", " + g + ", " + b + ": the test says " + isRed);
+                    }
+                    red += isRed ? 1 : 0;
+                }
+            }
+        }
+        assertTrue(red > 0 && red < 256 * 256 * 256, "some colours are red, not all: " + red);
+    }
 }

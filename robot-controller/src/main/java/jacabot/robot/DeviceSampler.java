@@ -2,10 +2,10 @@ package jacabot.robot;
 
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
-import jacabot.sim.geom.Rgb;
 import jacabot.sim.device.Camera;
+import jacabot.sim.device.Compass;
 import jacabot.sim.device.DistanceSensor;
-import jacabot.sim.device.Section;
+import jacabot.sim.device.Gps;
 import jacabot.sim.robot.Robot;
 import java.util.ArrayList;
 import java.util.EnumMap;
@@ -22,6 +22,9 @@ final class DeviceSampler {
     private boolean cameraImage; // whole images too: from the configuration, or asked for by enableSensor
     private final Map<SensorKind, DistanceSensor> distance = new EnumMap<>(SensorKind.class);
     private final Camera camera;
+    /** The robot's GPS and compass, looked up once (null: the model has none). */
+    private final Gps gps;
+    private final Compass compass;
 
     DeviceSampler(Robot robot, boolean cameraImage) {
         this.robot = robot;
@@ -30,6 +33,8 @@ final class DeviceSampler {
             SensorKind.ofDistanceSensor(d.name()).ifPresent(k -> distance.put(k, d));
         }
         this.camera = robot.model().camera() == null ? null : robot.getCamera(robot.model().camera().name());
+        this.gps = robot.model().gps() ? robot.getGps("gps") : null;
+        this.compass = robot.model().compass() ? robot.getCompass("compass") : null;
     }
 
     /**
@@ -151,21 +156,15 @@ final class DeviceSampler {
 
     /** {@return the readings available now, in a fixed order (so a lockstep run is reproducible)} */
     List<SensorInfo> sample() {
-        List<SensorInfo> out = new ArrayList<>();
+        List<SensorInfo> out = new ArrayList<>(SensorKind.values().length); // at most one reading a kind: never grown
         for (Map.Entry<SensorKind, DistanceSensor> e : distance.entrySet()) {
             if (e.getValue().hasValue()) {
                 out.add(new SensorInfo(e.getKey().id(), e.getValue().getValue()));
             }
         }
         if (camera != null && camera.hasValue()) {
-            int[] levels = new int[9];
-            Section[] sections = {Section.LEFT, Section.CENTRE, Section.RIGHT};
-            for (int i = 0; i < 3; i++) {
-                Rgb c = camera.getSectionLevels(sections[i]);
-                levels[3 * i] = c.red();
-                levels[3 * i + 1] = c.green();
-                levels[3 * i + 2] = c.blue();
-            }
+            int[] levels = new int[9]; // left, centre, right thirds; red, green, blue each
+            camera.copySectionLevelsInto(levels, 0);
             out.add(new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), levels));
             if (cameraImage) {
                 // width, height, then the pixels: one array made per image, the reading's own
@@ -176,12 +175,12 @@ final class DeviceSampler {
                 out.add(SensorInfo.owning(SensorKind.CAMERA_IMAGE.id(), framed));
             }
         }
-        if (robot.model().gps() && robot.getGps("gps").hasValue()) {
-            double[] v = robot.getGps("gps").getValues();
+        if (gps != null && gps.hasValue()) {
+            double[] v = gps.getValues();
             out.add(new SensorInfo(SensorKind.GPS.id(), v[0], v[1], v[2]));
         }
-        if (robot.model().compass() && robot.getCompass("compass").hasValue()) {
-            double[] v = robot.getCompass("compass").getValues();
+        if (compass != null && compass.hasValue()) {
+            double[] v = compass.getValues();
             out.add(new SensorInfo(SensorKind.COMPASS.id(), v[0], v[1], v[2]));
         }
         if (robot.hasBattery() && robot.getBattery().hasValue()) {

@@ -324,7 +324,29 @@ public final class Agent {
      * of the counter's: Jason's would not have been taken)}
      */
     Var internalVar(Var like) {
+        internalTaken++;
         return new Var(like.name(), -(++freshSerial));
+    }
+
+    /** The variables {@link #freshVar} and {@link #internalVar} made so far (for {@link FailedQueries}). */
+    private long freshTaken, internalTaken;
+
+    long freshTaken() {
+        return freshTaken;
+    }
+
+    long internalTaken() {
+        return internalTaken;
+    }
+
+    /** Takes the numbers {@code fresh} calls of {@link #freshVar} and {@code internal} of {@link #internalVar} would take. */
+    void retakeVars(long fresh, long internal) {
+        if (fresh > 0) {
+            skipFreshVars(Math.toIntExact(fresh));
+            freshTaken += fresh;
+        }
+        freshSerial += internal;
+        internalTaken += internal;
     }
 
     /** Takes the numbers {@code n} fresh variables would take (where Jason makes variables that nobody sees). */
@@ -337,6 +359,7 @@ public final class Agent {
     }
 
     public Var freshVar(Var like) {
+        freshTaken++;
         return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);
     }
 

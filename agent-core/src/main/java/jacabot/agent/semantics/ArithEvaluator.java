@@ -65,6 +65,7 @@ final class ArithEvaluator implements Unifier.Evaluator {
     /** Jason's warning, on the console as its {@code ArithExpr} logger prints it. */
     @Override
     public void notANumber(ArithExpr e, Unifier u) {
+        agent.solver().sideEffect();
         agent.arch().console("[ArithExpr] The value of " + e + " is not a number! Unifier = " + JasonHashOrder.text(u)
                 + ". Code: " + e.src().jasonPosition());
     }
@@ -74,6 +75,7 @@ final class ArithEvaluator implements Unifier.Evaluator {
         List<Term> a = f.args();
         var user = userFunctions.isEmpty() ? null : userFunctions.get(f.name() + "/" + a.size());
         if (user != null) {
+            agent.solver().sideEffect();
             return userFunction(user, a, u);
         }
         if (!f.name().equals(".count") && !a.stream().allMatch(Term::isGround)) {
@@ -81,6 +83,7 @@ final class ArithEvaluator implements Unifier.Evaluator {
         }
         switch (f.name()) {
             case "system.time":
+                agent.solver().sideEffect();
                 // Jason's: ms since 1970; counted on the agent's clock from the computer's time when
                 // first asked, so that it agrees with .wait (.system_time is the clock alone)
                 if (epochOffset == Long.MIN_VALUE) {
@@ -121,6 +124,7 @@ final class ArithEvaluator implements Unifier.Evaluator {
             case "math.e":
                 return new NumberTerm(Math.E);
             case "math.random":
+                agent.solver().sideEffect();
                 return new NumberTerm(a.isEmpty() ? agent.random().nextDouble()
                         : num(a.get(0)) == null ? Double.NaN : agent.random().nextDouble() * num(a.get(0)));
             default:

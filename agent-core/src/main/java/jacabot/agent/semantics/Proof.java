@@ -79,6 +79,9 @@ final class Proof {
     private static final Choice[] NO_CHOICES = new Choice[0];
     private Goals goals;
     private boolean started;
+    /** Whether the first literal this proof steps may be a query known to fail ({@link FailedQueries}), and its fence. */
+    private boolean remember;
+    private Fence fence;
     private List<Var> formulaVars;
     /** The current answer's pairs (variable, value), the first of them in use; see {@link #answer}. */
     private Object[] answerPairs = NO_PAIRS;
@@ -204,15 +207,25 @@ final class Proof {
         return seen;
     }
 
+    /** A plan's context: its first literal, a rule query, is looked up in and told to {@link FailedQueries}. */
+    void rememberFailure() {
+        remember = true;
+    }
+
     private boolean run() {
-        while (goals != null) {
+        while (true) {
+            if (fence != null && goals == fence.rest) {
+                fence.proven = true; // the fenced query has a solution
+            }
+            if (goals == null) {
+                return true;
+            }
             Goals g = goals;
             goals = g.next;
             if (!step(g.goal, g.depth) && !backtrack()) {
                 return false;
             }
         }
-        return true;
     }
 
     private boolean backtrack() {
@@ -284,6 +297,12 @@ final class Proof {
     private boolean literal(Literal l, int depth) {
         Literal q = plain(l) ? l : (Literal) w.apply(l);
         List<BeliefBase.Entry> candidates = solver.candidates(q, w);
+        if (remember) {
+            remember = false;
+            if (fenced(q, candidates)) {
+                return false;
+            }
+        }
         switch (candidates.size()) {
             case 0:
                 return false;
@@ -324,6 +343,32 @@ final class Proof {
             return l.tail() == null || plain(l.tail());
         }
         return t instanceof Var || t instanceof NumberTerm || t instanceof StringTerm || t instanceof ListTerm.Empty;
+    }
+
+    /**
+     * For the first literal of a context, when rules alone answer it: {@return true when it is known to
+     * fail}; otherwise a {@link Fence} below its choices tells {@link FailedQueries} if it fails
+     */
+    private boolean fenced(Literal q, List<BeliefBase.Entry> candidates) {
+        if (candidates.isEmpty()) {
+            return false;
+        }
+        for (int i = 0, n = candidates.size(); i < n; i++) {
+            if (candidates.get(i).rule() == null) {
+                return false;
+            }
+        }
+        List<Object> key = FailedQueries.key(q, w);
+        if (key == null) {
+            return false;
+        }
+        Agent agent = solver.agent();
+        if (solver.failedQueries.fails(key, agent)) {
+            return true;
+        }
+        fence = new Fence(w.size(), goals, key, solver.sideEffects(), agent.freshTaken(), agent.internalTaken());
+        push(fence);
+        return false;
     }
 
     /** Resolves the query with one belief or rule; the goals become {@code rest} after it. */
@@ -423,6 +468,35 @@ final class Proof {
     }
 
     // ---- choice points ---------------------------------------------------------------------------
+
+    /**
+     * Below the choices of a context's first query ({@link #fenced}): reached in backtracking once they are
+     * all spent. If the proof never got past the query and did nothing beyond the belief base, the query
+     * has no solution while the belief base stays as it is.
+     */
+    private static final class Fence extends Choice {
+        private final List<Object> key;
+        private final long sideEffects, fresh, internal;
+        boolean proven;
+
+        Fence(int mark, Goals rest, List<Object> key, long sideEffects, long fresh, long internal) {
+            super(mark, rest);
+            this.key = key;
+            this.sideEffects = sideEffects;
+            this.fresh = fresh;
+            this.internal = internal;
+        }
+
+        @Override
+        boolean resume(Proof p) {
+            p.pop(this);
+            Agent agent = p.solver.agent();
+            if (!proven && p.solver.sideEffects() == sideEffects) {
+                p.solver.failedQueries.failed(key, agent, agent.freshTaken() - fresh, agent.internalTaken() - internal);
+            }
+            return false;
+        }
+    }
 
     /** The right side of {@code |}. */
     private static final class Alternative extends Choice {

@@ -146,7 +146,7 @@ final class ReasoningCycle {
             // the context's first solution is made in the plan's own unifier; a context that fails
             // leaves it as it was
             if (p.context() != null && (ag.solver().failsAtFirstComparison(p.context(), u)
-                    || !ag.solver().believes(p.context(), u))) {
+                    || !ag.solver().believesContext(p.context(), u))) {
                 continue;
             }
             applyAddIM(se, p, u);

@@ -28,18 +28,50 @@ import java.util.NoSuchElementException;
  */
 public final class Solver {
     private final Agent agent;
+    /** What {@link FailedQueries} knows, and the count of what a proof did beyond the belief base ({@link #sideEffect}). */
+    final FailedQueries failedQueries = new FailedQueries();
+    private long sideEffects;
 
     Solver(Agent agent) {
         this.agent = agent;
     }
 
+    Agent agent() {
+        return agent;
+    }
+
+    /**
+     * Counts something a proof did that the belief base alone does not decide (an internal action, a
+     * random number, the time, a function defined by rules, a warning): a failed query that did one is
+     * not remembered ({@link FailedQueries}).
+     */
+    void sideEffect() {
+        sideEffects++;
+    }
+
+    long sideEffects() {
+        return sideEffects;
+    }
+
     /** {@return whether the formula has a solution; binds {@code u} to the first one} */
     public boolean believes(Term formula, Unifier u) {
+        return believes(formula, u, false);
+    }
+
+    /** As {@link #believes}, for a plan's context: the rule query it begins with may be known to fail ({@link FailedQueries}). */
+    boolean believesContext(Term formula, Unifier u) {
+        return believes(formula, u, true);
+    }
+
+    private boolean believes(Term formula, Unifier u, boolean context) {
         if (formula instanceof RelExpr r) {
             // X = N * 2, N > 3: one solution at most, found without a proof
             return relational(r, u);
         }
         var proof = new Proof(this, formula, u, 0);
+        if (context) {
+            proof.rememberFailure();
+        }
         if (proof.next()) {
             proof.keepAnswer();
             return true;
@@ -197,6 +229,7 @@ public final class Solver {
      * makes in {@code w} (which is left as it was).
      */
     List<Object[]> annotated(AnnotatedVar av, Unifier w) {
+        sideEffect(); // not one: its proofs are left alone, being rare
         var out = new ArrayList<Object[]>();
         int mark = w.size();
         for (BeliefBase.Entry e : agent.beliefBase().all()) {
@@ -281,6 +314,7 @@ public final class Solver {
 
     /** {@return the internal action a formula names, or null (with a warning)} */
     InternalAction internalAction(Literal l) {
+        sideEffect();
         InternalAction ia = agent.internalAction(l.functor());
         if (ia == null) {
             agent.warn("unknown internal action '" + l.functor() + "' in a formula");

@@ -119,8 +119,8 @@ public class CAgentArch extends LocalArch {
 
     private Literal belief(ArtifactId id, PropertySnapshot p) {
         if (id != lastId) {
-            // sorted and immutable, so the literal keeps the list as it is
-            lastAnnots = propertyAnnots.computeIfAbsent(id, k -> new Literal("a", List.of(), annots(k, "obs_prop"), false).annots());
+            // checked sorted once, so each literal keeps the list as it is
+            lastAnnots = propertyAnnots.computeIfAbsent(id, k -> Literal.presortedAnnots(annots(k, "obs_prop")));
             lastId = id;
         }
         return new Literal(p.name(), TermConverter.toTerms(p.values()), lastAnnots, false);
@@ -215,7 +215,7 @@ public class CAgentArch extends LocalArch {
         public void signalled(ArtifactId artifact, String type, List<Object> args) {
             queue(ag -> ag.addExternalEvent(new Trigger(Trigger.Op.ADD, Trigger.Type.BELIEF,
                     new Literal(type, TermConverter.toTerms(args), signalAnnots.computeIfAbsent(artifact,
-                            k -> new Literal("a", List.of(), annots(k, "obs_ev"), false).annots()), false))));
+                            k -> Literal.presortedAnnots(annots(k, "obs_ev"))), false))));
         }
 
         @Override

@@ -29,6 +29,8 @@ public final class SensorDataReader {
     private LockstepSpin spin;
     /** Bytes of the next frame at hand: the object stream may hold some already, past the buffer's. */
     private final LockstepSpin.Ready frameReady;
+    /** The int arrays' bytes, kept from frame to frame (frames are read on one thread). */
+    private final SensorInfoCodec.Scratch scratch = new SensorInfoCodec.Scratch();
 
     /**
      * Reads the stream header (so it blocks until the controller has written it).
@@ -147,7 +149,7 @@ public final class SensorDataReader {
                 throw new ProtocolException("garbage on the sensor data stream: more than " + limits.maxObjectsPerStream()
                         + " readings without a stream restart");
             }
-            SensorInfoCodec.Decoded d = SensorInfoCodec.read(in, limits, budget);
+            SensorInfoCodec.Decoded d = SensorInfoCodec.read(in, limits, budget, scratch);
             budget -= d.bytes();
             readings.add(d.info());
         }

@@ -22,6 +22,8 @@ public final class SensorDataWriter {
     private LinkCosts costs;
     /** Frames written, and of them flushed: an in-process reader reads only whole, flushed frames ({@link MemoryLink}). */
     private long framesWritten, framesFlushed;
+    /** The int arrays' bytes, kept from step to step. */
+    private final SensorInfoCodec.Scratch scratch = new SensorInfoCodec.Scratch();
 
     /** Writes the stream header at once. */
     public SensorDataWriter(OutputStream out, int resetEvery) throws IOException {
@@ -65,7 +67,7 @@ public final class SensorDataWriter {
         List<SensorInfo> readings = batch.readings();
         out.writeInt(readings.size());
         for (SensorInfo info : readings) {
-            SensorInfoCodec.write(out, info);
+            SensorInfoCodec.write(out, info, scratch); // under the writer's lock
         }
         out.writeByte(Uplink.STEP_MARKER);
         out.writeLong(marker.step());

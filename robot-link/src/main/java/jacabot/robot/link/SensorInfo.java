@@ -6,6 +6,7 @@ import java.io.ObjectInputStream;
 import java.io.Serializable;
 import java.util.Arrays;
 import java.util.Optional;
+import java.util.function.Function;
 
 /**
  * One sensor reading as it travels from the robot controller to the middleware artifact
@@ -121,6 +122,16 @@ public final class SensorInfo implements Serializable {
 
     public double[] getDoubleValues() {
         return doubleValues.clone();
+    }
+
+    /**
+     * {@return what {@code reader} makes of the int array, lent to it without a copy}: for a reader that
+     * only reads the array during the call and keeps nothing of it (the far sight scanning the camera
+     * image: the copy {@link #getIntValues} makes was about a seventh of the middleware thread's
+     * allocation in experiment 4). A reader that wrote to the array would change the reading.
+     */
+    public <R> R readInts(Function<int[], R> reader) {
+        return reader.apply(intValues);
     }
 
     /** {@return the length of the int array, without copying it} */

@@ -123,6 +123,37 @@ class SensorInfoCodecTest {
     }
 
     @Test
+    void imagesOfEverySizeWrittenAndReadThroughOneScratchEachComeBackWholeAndApart() throws IOException {
+        int[] sizes = {300, 5, 1_000, 1, 300};
+        var bytes = new ByteArrayOutputStream();
+        List<int[]> written = new ArrayList<>();
+        var writing = new SensorInfoCodec.Scratch();
+        try (var out = new ObjectOutputStream(bytes)) {
+            for (int k = 0; k < sizes.length; k++) {
+                int[] v = new int[sizes[k]];
+                for (int i = 0; i < v.length; i++) {
+                    v[i] = (k + 1) * 1_000_003 * (i + 7);
+                }
+                written.add(v);
+                SensorInfoCodec.write(out, new SensorInfo(SensorKind.CAMERA_IMAGE.id(), v), writing);
+            }
+        }
+        var scratch = new SensorInfoCodec.Scratch();
+        List<SensorInfo> read = new ArrayList<>();
+        try (var in = new ObjectInputStream(new ByteArrayInputStream(bytes.toByteArray()))) {
+            for (int size : sizes) {
+                var d = SensorInfoCodec.read(in, SensorInfoFilter.Limits.DEFAULT, Long.MAX_VALUE, scratch);
+                assertEquals(9 + 4L * size, d.bytes());
+                read.add(d.info());
+            }
+        }
+        for (int k = 0; k < sizes.length; k++) { // each its own array: a later image did not write over an earlier
+            assertArrayEquals(written.get(k), read.get(k).getIntValues(), "image " + k);
+            assertArrayEquals(written.get(k), read.get(k).readInts(a -> a.clone()), "image " + k + " lent");
+        }
+    }
+
+    @Test
     void anObjectInAReadingsPlaceIsNeverBuilt() throws IOException {
         var e = rejected(batchWith(new Foreign()), SensorInfoFilter.Limits.DEFAULT);
         assertTrue(e.getMessage().contains("carried something other than its fields"), e.getMessage());

@@ -22,6 +22,9 @@ public final class Camera extends Sensor {
     private final RayCaster caster;
     private final Rgb floor, background;
     private int[] image;
+    /** The last image's thirds' mean levels ({@link #sectionLevels}), and whether they are the last image's. */
+    private final int[] levels = new int[9];
+    private boolean levelsFresh;
     /** Each row's ray slope (rise per metre), the same for every column and frame. */
     private final double[] rowSlopes;
 
@@ -103,21 +106,59 @@ public final class Camera extends Sensor {
      * @throws IllegalStateException before the first image
      */
     public Rgb getSectionLevels(Section section) {
+        int[] l = sectionLevels();
+        int i = 3 * section.ordinal();
+        return new Rgb(l[i], l[i + 1], l[i + 2]);
+    }
+
+    /**
+     * Copies the three thirds' mean levels of the last image (left, centre, right; red, green, blue
+     * each, as {@link #getSectionLevels} gives them) into {@code dst} from {@code offset} on.
+     *
+     * @throws IllegalStateException before the first image
+     */
+    public void copySectionLevelsInto(int[] dst, int offset) {
+        System.arraycopy(sectionLevels(), 0, dst, offset, 9);
+    }
+
+    /**
+     * The thirds' levels of the last image, summed in one pass over it the first time they are asked
+     * for after a frame (a controller asks every step, the baseline's image tests several times).
+     */
+    private int[] sectionLevels() {
         if (!hasValue()) {
             throw new IllegalStateException("camera '" + name() + "' has no image yet: enable it and step one period");
         }
-        long r = 0, g = 0, b = 0;
-        int from = section.firstColumn(width), to = section.endColumn(width);
+        if (levelsFresh) {
+            return levels;
+        }
+        long[] sums = new long[9];
+        int[] ends = {Section.LEFT.endColumn(width), Section.CENTRE.endColumn(width), Section.RIGHT.endColumn(width)};
         for (int y = 0; y < height; y++) {
-            for (int x = from; x < to; x++) {
-                int p = image[y * width + x];
-                r += (p >> 16) & 0xFF;
-                g += (p >> 8) & 0xFF;
-                b += p & 0xFF;
+            int row = y * width;
+            int x = 0;
+            for (int s = 0; s < 3; s++) {
+                long r = 0, g = 0, b = 0;
+                for (int end = ends[s]; x < end; x++) {
+                    int p = image[row + x];
+                    r += (p >> 16) & 0xFF;
+                    g += (p >> 8) & 0xFF;
+                    b += p & 0xFF;
+                }
+                sums[3 * s] += r;
+                sums[3 * s + 1] += g;
+                sums[3 * s + 2] += b;
             }
         }
-        long n = (long) (to - from) * height;
-        return new Rgb((int) Math.round((double) r / n), (int) Math.round((double) g / n), (int) Math.round((double) b / n));
+        for (int s = 0; s < 3; s++) {
+            Section section = Section.values()[s];
+            long n = (long) (section.endColumn(width) - section.firstColumn(width)) * height;
+            for (int c = 0; c < 3; c++) {
+                levels[3 * s + c] = (int) Math.round((double) sums[3 * s + c] / n);
+            }
+        }
+        levelsFresh = true;
+        return levels;
     }
 
     @Override
@@ -126,6 +167,7 @@ public final class Camera extends Sensor {
             image = new int[width * height];
         }
         renderInto(image); // the last image's own array: getImage() and copyImageInto() copy it
+        levelsFresh = false;
     }
 
     /** {@return an image of what the camera sees now} */

@@ -60,6 +60,45 @@ class CameraTest {
         assertFalse(isRed(cam.getSectionLevels(Section.CENTRE)));
     }
 
+    /** The thirds' levels are kept per frame: each new frame's are its own image's means, summed afresh. */
+    @Test
+    void sectionLevelsFollowEachFrameAsTheImagesMeans() {
+        SimWorld world = TestWorlds.khepera(0, 0, 0, "\"cylinders\": [{\"id\": \"red1\", \"x\": 0.09, \"z\": 0.01}]");
+        Camera cam = world.robot("k").getCamera("camera");
+        cam.enable(40);
+        world.step();
+        world.robot("k").setSpeeds(-3, 3); // turning on the spot: the cylinder crosses the thirds
+        int changed = 0;
+        int[] last = null;
+        for (int frame = 0; frame < 30; frame++) {
+            int[] image = cam.getImage();
+            int[] levels = new int[10];
+            cam.copySectionLevelsInto(levels, 1);
+            for (Section s : Section.values()) {
+                long[] sum = new long[3];
+                int from = s.firstColumn(cam.getWidth()), to = s.endColumn(cam.getWidth());
+                for (int y = 0; y < cam.getHeight(); y++) {
+                    for (int x = from; x < to; x++) {
+                        sum[0] += Camera.imageGetRed(image, cam.getWidth(), x, y);
+                        sum[1] += Camera.imageGetGreen(image, cam.getWidth(), x, y);
+                        sum[2] += Camera.imageGetBlue(image, cam.getWidth(), x, y);
+                    }
+                }
+                double n = (double) (to - from) * cam.getHeight();
+                Rgb mean = new Rgb((int) Math.round(sum[0] / n), (int) Math.round(sum[1] / n), (int) Math.round(sum[2] / n));
+                assertEquals(mean, cam.getSectionLevels(s), "frame " + frame + " " + s);
+                int i = 1 + 3 * s.ordinal();
+                assertEquals(mean, new Rgb(levels[i], levels[i + 1], levels[i + 2]), "frame " + frame + " " + s);
+            }
+            if (last != null && !Arrays.equals(last, levels)) {
+                changed++;
+            }
+            last = levels;
+            world.step();
+        }
+        assertTrue(changed > 3, "the levels changed at " + changed + " frames");
+    }
+
     @Test
     void withoutACylinderNoSectionIsRed() {
         SimWorld w = TestWorlds.khepera(0, 0, 0, "\"boxes\": [{\"x\": 0.12, \"z\": 0, \"size\": 0.06}]");
