@@ -223,3 +223,33 @@ mock_operation(_, ok).
        !until(not .intend(waitCharged), 3000);
        !assert_false(.intend(waitCharged));                           // shared now
        -taskEnd(_); -chargerQueue(_); +chargerQueue([]).
+
+// with teammates a recharged robot drives off at once, away from the charger's corner and the
+// teammate waiting beside it, leaves the queue 0.15 m off, drives on out of 0.3 m, and goes on from
+// there without turning back to the heading it had when its battery went low
+@[test]
++!test_with_teammates_a_recharged_robot_drives_off_and_leaves_the_queue_on_the_way
+    <- !until(not charging, 10000); !forget_calls; -charging; -atCharger; -waitingCharger; -chargerBooked; -~delivered;
+       -chargerQueue(_); +chargerQueue([]); -chargerWaiting(_); +chargerWaiting([]);
+       -location(_, _, _); +location(-0.3, 0, 0.3); -+orientation(45); -+battery(470);
+       -lowBattery; !!perceive(lowBattery);
+       !until(mock_called(setThreshold(0.03)), 10000); .wait(300);
+       -location(_, _, _); +location(-0.38, 0, 0.38);
+       -targetReached; !!perceive(targetReached);                     // on the charger
+       !until(.intend(waitCharged), 10000);
+       +robotAt(khepera9, -0.2, 0.38);                                // a teammate waits on its +x side
+       !forget_calls; -+battery(950); -charged; !!perceive(charged);
+       !until(leavingCharger, 3000);
+       !assert_true(targetPoint(Tx, Tz) & math.abs(Tx + 0.38) < 0.01 & math.abs(Tz + 0.02) < 0.01); // along the -x wall
+       -location(_, _, _); +location(-0.38, 0, 0.27); .wait(400);
+       !assert_false(mock_called(leaveCharger));                      // 0.11 m off: still its turn
+       -location(_, _, _); +location(-0.38, 0, 0.2);
+       !until(mock_called(leaveCharger), 3000);
+       !assert_true(mock_called(leaveCharger));                       // 0.18 m off: the queue left
+       !assert_true(leavingCharger);                                  // still driving off
+       -location(_, _, _); +location(-0.38, 0, 0.05);                 // out of 0.3 m
+       !until(not charging, 3000);
+       !assert_false(charging);
+       !assert_false(leavingCharger);
+       !assert_true(desired(90));                                     // not the marked 45 degrees
+       -robotAt(khepera9, _, _); -+orientation(90).

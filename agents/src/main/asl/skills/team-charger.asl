@@ -21,6 +21,13 @@
 //   robot waiting at the charger has less energy than it (chargerWaiting: the waiting ones'
 //   energies). A robot recharged leaves the queue once it
 //   is chargerLeaveDistance from the charger, so that the next one does not come while it leaves.
+// - Not in the thesis: with teammates, a recharged robot drives off at once (a quick turn, then
+//   travel speed) away from the charger's walls and from the teammates near it, leaves the queue
+//   chargerClearDistance from the charger and drives on out of chargerLeaveDistance before its
+//   task resumes, without turning back to the heading it had when its battery went low (resumeTask:
+//   it goes on from the charger). It turned 9 s on the charger to that heading, then its task
+//   drove it into the robots waiting there; the charger stood empty 20 s at each change (team world
+//   96, four robots: three robots low at once, the third waited 73 s).
 // Parameters:
 chargerQueueRadius(0.3).     // m (per axis, the middleware's target test) where a robot queues
 chargerTurnLimit(40000).     // ms the robot whose turn it is may take to reach the charger ...
@@ -36,7 +43,12 @@ tripDetours(1.5).            // the energy per metre to the charger, as a share 
 queueEnergy(25).             // J per robot ahead in the queue (waits, and the last metres to the charger)
 chargerShare(750).           // J: a robot on the charger leaves at this level while another is queued
 chargerShareFloor(600).      // J: and at this one when a robot waiting at the charger is needier
-// Beliefs: waitingCharger, yieldedCharger, chargerBooked. Rules it extends: halted, waitingTurn.
+chargerOffReach(0.4).        // m: with teammates, a recharged robot drives off towards a point this far ...
+chargerClearDistance(0.15).  // m: ... and leaves the queue this far from the charger (it drives on out of
+                             // chargerLeaveDistance, or for chargerOffTime)
+chargerOffTime(12000).       // ms the drive off may take
+chargerNearTeammate(0.5).    // m from the charger: a teammate this near is driven away from
+// Beliefs: waitingCharger, yieldedCharger, chargerBooked, leavingCharger. Rules it extends: halted, waitingTurn.
 // Reads: charger(X, Z) (the world), charging, atCharger, wayEnergy, batteryLasts (recharge-trip; taskEnd(T), the
 // run's end, told by the team's runner), chargerQueue(L),
 // chargerWaiting(L) (the charger), location, battery, insideArea (delivery), robotAt(A, X, Z) (team-places).
@@ -62,6 +74,28 @@ neediestWaiting(E) :- chargerWaiting([E0 | T]) & .min([E0 | T], E).
 withTeammates :- robotAt(A, _, _) & not .my_name(A).
 lastsToTheEnd :- .system_time(T) & batteryLasts(T).
 shortOfTheEnd :- taskEnd(_) & not lastsToTheEnd.
+// the drive off the charger and the last metres onto it turn quickly (heading's balance)
+quickTurn(V, A) :- charging & withTeammates & chargerLeaveDistance(D) & nearCharger(D) & quickTurnAt(V, A).
+quickTurn(V, A) :- leavingCharger & quickTurnAt(V, A).
+chargerCleared :- chargerClearDistance(C) & chargerDistance(D) & D >= C.
+// the sum of the unit vectors from the teammates in L (p(X, Z)) to (X, Z)
+awaySum([], _, _, 0, 0).
+awaySum([p(Rx, Rz) | T], X, Z, Ax, Az) :- awaySum(T, X, Z, Ax0, Az0)
+    & D = math.sqrt((X - Rx) * (X - Rx) + (Z - Rz) * (Z - Rz)) & D > 0.001 & Ax = Ax0 + (X - Rx) / D & Az = Az0 + (Z - Rz) / D.
+awaySum([p(Rx, Rz) | T], X, Z, Ax, Az) :- awaySum(T, X, Z, Ax, Az) & (X - Rx) * (X - Rx) + (Z - Rz) * (Z - Rz) <= 0.000001.
+// the way off the charger (a unit vector): towards the arena's centre and away from the teammates
+// (A), kept off the walls (team-storage's offWalls); else square to the centre's way, on the side
+// away from the teammates; else straight to the centre
+centreWay(Cx, Cz, Ux, Uz) :- N = math.sqrt(Cx * Cx + Cz * Cz) & N > 0.001 & Ux = -Cx / N & Uz = -Cz / N.
+centreWay(Cx, Cz, 1, 0) :- Cx * Cx + Cz * Cz <= 0.000001.
+chargerWayOff(X, Z, Ax, Az, Wx, Wz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz)
+    & offWalls(X, Z, Ux + Ax, Uz + Az, Fx, Fz) & N = math.sqrt(Fx * Fx + Fz * Fz) & N >= 0.3 & Wx = Fx / N & Wz = Fz / N.
+chargerWayOff(X, Z, Ax, Az, Wx, Wz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz)
+    & squareWay(Ux, Uz, Ax, Az, Px, Pz) & offWalls(X, Z, Px, Pz, Fx, Fz)
+    & N = math.sqrt(Fx * Fx + Fz * Fz) & N >= 0.3 & Wx = Fx / N & Wz = Fz / N.
+chargerWayOff(_, _, _, _, Ux, Uz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz).
+squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az >= 0 & Px = Uz & Pz = -Ux.
+squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
 
 // a low battery while another robot has its turn: the place is booked, the task goes on (the
 // middleware signals lowBattery every control step while the battery is low: these two plans come
@@ -150,7 +184,27 @@ shortOfTheEnd :- taskEnd(_) & not lastsToTheEnd.
               & chargerQueue([Me, _ | _]) & .intend(waitCharged)
     <- .print("Charged to ", B, " J: a needier robot waits (", E, " J)"); .succeed_goal(waitCharged).
 
+// with teammates: the drive off (above), the queue left on the way
+@driveOffCharger
++!chargerDone : withTeammates & location(X, _, Z) & charger(Cx, Cz) & .my_name(Me) & chargerNearTeammate(Q)
+                & chargerOffReach(R) & chargerOffTime(T) & .system_time(Now)
+    <- .findall(p(Rx, Rz), robotAt(A, Rx, Rz) & A \== Me & (Rx - Cx) * (Rx - Cx) + (Rz - Cz) * (Rz - Cz) < Q * Q, Near);
+       ?awaySum(Near, X, Z, Ax, Az); ?chargerWayOff(X, Z, Ax, Az, Wx, Wz);
+       +leavingCharger; -avoiding; -+detours(0); stop;
+       -+targetPoint(X + R * Wx, Z + R * Wz); setUpTargetPoint(X + R * Wx, 0, Z + R * Wz);
+       !computeGap; !!balance; !!steer;
+       !driveOffClear(Now + T); leaveCharger;
+       !driveOffOut(Now + T); stop; .drop_intention(balance); stop; -leavingCharger.
 @leaveChargerQueue +!chargerDone : chargerLeaveTimeout(N) <- !!leaveChargerAway(N).
+@driveOffClearOn +!driveOffClear(Until) : not chargerCleared & .system_time(Now) & Now < Until <- .wait(100); !driveOffClear(Until).
+@driveOffCleared +!driveOffClear(_).
+@driveOffOutOn
++!driveOffOut(Until) : chargerLeaveDistance(D) & nearCharger(D) & .system_time(Now) & Now < Until <- .wait(100); !driveOffOut(Until).
+@driveOffOutDone +!driveOffOut(_).
+@driveOffFailed -!chargerDone : leavingCharger <- -leavingCharger; leaveCharger.
+// with teammates the task goes on from the charger as it faces (the drive off turned it away from
+// the charger): the heading marked when the battery went low, far from here, is no use
+@resumeOffCharger +!resumeTask(_) : withTeammates & resumeAtCharger <- !restoreTarget; -charging.
 @leaveChargerAway
 +!leaveChargerAway(N) : N > 0 & chargerLeaveDistance(D) & nearCharger(D) <- .wait(250); !leaveChargerAway(N - 1).
 @leaveChargerNow +!leaveChargerAway(_) <- leaveCharger.
