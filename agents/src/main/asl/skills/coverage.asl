@@ -11,11 +11,6 @@
 // Parameters (timings in ms):
 trapWindow(8000).
 trapCount(5).
-// tried, not kept (docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: no trap escape while
-// the robot gets on"): those obstacles are no trap while the robot got on trapSpan m since the first
-// of them (movedSince) and none of them read trapClose or more
-trapSpan(0.15).
-trapClose(300).
 // after an obstacle has left the front sensors, go on along an arc away from it this long: the
 // sensors look ahead (±20°), so a box just out of their sight still sat at the flank and was grazed
 // when the robot went straight on; 300 ms since the short exploreHorizon (800 ms: 97 of 150 generated
@@ -77,8 +72,8 @@ deltaLevels(200, 190) :- arena(W, D) & looseArea(A) & W * D >= A.
 wallMarks(200) :- arena(W, D) & looseArea(A) & W * D >= A.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
-// trapped: trapCount obstacles within trapWindow, and the robot not getting on (noteObstacle)
-trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K & not gettingOn.
+// trapped: trapCount obstacles within trapWindow
+trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
@@ -121,12 +116,7 @@ pausedUntil("-veering") :- veering.
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
-    <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]);
-       if (leftSensor(Lv) & rightSensor(Rv) & trapClose(C) & math.max(Lv, Rv) >= C) { -+closeAt(T) };
-       if (trapSpan(S) & trapCount(K) & .length(Recent, N) & N + 1 >= K) {
-           .nth(K - 2, Recent, First); movedSince(T - First, D);
-           if (D >= S & not (closeAt(Tc) & Tc >= First)) { +gettingOn } else { -gettingOn }
-       } else { -gettingOn }.
+    <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]).
 
 // on the spot after a step back of 150 ms (1.5 cm): the robot cannot see behind it, and a longer
 // back-off drove it into the box behind; the short step frees it from a box it touches out of the

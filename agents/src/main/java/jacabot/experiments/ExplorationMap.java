@@ -32,9 +32,6 @@ final class ExplorationMap {
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
-    /** How long the trail of poses is kept, ms. */
-    static final long TRAIL_MS = 20_000;
-    private final Deque<double[]> trail = new ArrayDeque<>(); // {ms, x, z} at each wheel reading, oldest first
 
     /**
      * @param speedUnit metres per second of one wheel speed unit
@@ -70,10 +67,6 @@ final class ExplorationMap {
             if (visit()) {
                 lastFreshMs = nowMs;
                 freshTimes.addLast(nowMs);
-            }
-            trail.addLast(new double[] {nowMs, x, z});
-            while (trail.size() > 1 && trail.peekFirst()[0] < nowMs - TRAIL_MS) {
-                trail.removeFirst();
             }
         }
         lastMs = nowMs;
@@ -185,20 +178,6 @@ final class ExplorationMap {
         double turn = Math.toDegrees(Math.atan2(wz - z, wx - x) - heading);
         turn = ((turn % 360) + 540) % 360 - 180;
         return new double[] {turn, Math.hypot(wx - x, wz - z)};
-    }
-
-    /**
-     * {@return how far, metres, the centre is now from where it was at {@code sinceMs} (the oldest pose
-     * kept when that is older than {@value #TRAIL_MS} ms)}
-     */
-    double movedSince(long sinceMs) {
-        double[] then = null;
-        for (double[] p : trail) {
-            if (then == null || p[0] <= sinceMs) {
-                then = p;
-            }
-        }
-        return then == null ? 0 : Math.hypot(x - then[1], z - then[2]);
     }
 
     /** {@return how many cells the centre crossed for the first time after {@code sinceMs}} */

@@ -155,20 +155,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * How far the robot is now from where it was {@code windowMs} ms ago, in metres (dead reckoning;
-     * not in the thesis): obstacles met again and again while the robot gets on (a corridor, a
-     * doorway's jambs) are no trap. Fails before {@code odometry}.
-     */
-    @OPERATION
-    void movedSince(double windowMs, OpFeedbackParam<Double> metres) {
-        if (map == null) {
-            failed("movedSince needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        metres.set(map.movedSince(simTimeMs() - Math.round(windowMs)));
-    }
-
-    /**
      * The turn on the spot towards the way to the nearest frontier (not in the thesis,
      * {@code ExplorationMap.frontierWaypoint}): {@code side} "left", "right" or "none" (no frontier),
      * how long to turn at wheel speeds ±{@code speed}, and how far the waypoint is then, in metres.

@@ -71,17 +71,6 @@ class ExplorationMapTest {
     }
 
     @Test
-    void movedSinceIsTheDistanceFromThePoseThenNotThePathDriven() {
-        drive(0, 3000, 100);     // 30 cm out
-        drive(3000, 5000, -100); // 20 cm back
-        assertEquals(0.10, map.movedSince(0), 0.005, "10 cm from the start, though 50 cm were driven");
-        assertEquals(0.20, map.movedSince(3000), 0.005, "20 cm from the turning point");
-        assertEquals(0.0, map.movedSince(5000), 1e-9);
-        drive(5000, 30000, 100); // 2.5 m on: the start is no longer kept
-        assertEquals(ExplorationMap.TRAIL_MS / 1000.0 * 0.1, map.movedSince(0), 0.01, "from the oldest pose kept");
-    }
-
-    @Test
     void theWayToAFrontierGoesAlongFloorCrossedToADoorwayNotIntoAWall() {
         // a lane of ten cells along x, crossed; obstacles met all round it (the walls met at 13 cm
         // leave cells between them, as here), except a doorway three cells wide in its right side
