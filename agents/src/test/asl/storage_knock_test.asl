@@ -36,3 +36,16 @@ mock_operation(_, ok).
        -+knockFetch(50); .wait(100);
        !assert_true(pickingOff);
        -+knockFetch(20000); -fellNearStorageAt(_).
+
+@[test]
++!test_the_fetch_takes_nothing_from_the_pile
+    <- -+location(0.4, 0, -0.3);     // 0.1 m from the storage point, just after a fall by the area
+       .system_time(T); +fellNearStorageAt(T);
+       -+orientation(270);           // facing the point: the gripper's point 0.05 m from it
+       -+stored(0); !assert_false(pileAhead);   // no pile yet
+       -+stored(1); !assert_true(pileAhead);
+       !assert_true(pickingOff);
+       -+orientation(90);            // facing away: the gripper's point 0.15 m from it
+       !assert_false(pileAhead);
+       !assert_false(pickingOff);
+       -orientation(_); -stored(_); -fellNearStorageAt(_).
