@@ -16,8 +16,9 @@ mock_operation(_, ok).
 
 // what picking needs of the agent: the cylinder held is handed on
 +!go_ahead : picked(true) <- +handedOn; -picking.
-// random motion (the last +!move plan, as random-walk.asl's)
-+!move(N) <- +moved(N).
+// random motion (the last +!move plan, as random-walk.asl's), and the motion loop (initial phase's)
++!move(N) <- +moved(N); .wait(50).
++!motion_loop <- while (not loopOff) { !move(0.4) }.
 
 // an obstacle seen before the move starts (its +obstacle(true) event long handled): the move avoids it
 +!obstacle_still_seen(D) <- -+delta(D); +avoiding; -obstacle(false); +obstacle(true); -avoiding.
@@ -25,8 +26,8 @@ mock_operation(_, ok).
 
 @[test]
 +!test_a_lateral_reach_during_an_avoidance_inside_a_move_leaves_no_avoiding_behind
-    <- !forget_calls; -moved(_); !obstacle_still_seen(0);
-       !!move(0.3);
+    <- !forget_calls; -moved(_); -loopOff; !obstacle_still_seen(0);
+       !!motion_loop;
        !until(mock_called(turnAround), 2000);                        // the avoidance inside the move
        !assert_true(avoiding);
        !!perceive(cylinderLeft);                                      // picking ends the move
@@ -37,15 +38,14 @@ mock_operation(_, ok).
        .drop_desire(block); -picking;
        !until(not avoiding, 4000);
        !assert_false(avoiding);
-       -moved(_); !!move(0.4);                                        // and random motion goes on
-       !until(moved(_), 2000);
+       -moved(_); !until(moved(_), 2000);                             // and random motion goes on
        !assert_true(moved(0.4));
-       -cylinderLeft; -cylinderBeyond; -cylinderDetected.
+       +loopOff; -cylinderLeft; -cylinderBeyond; -cylinderDetected.
 
 @[test]
 +!test_a_cylinder_caught_during_an_avoidance_inside_a_move_leaves_no_avoiding_behind
-    <- !forget_calls; -moved(_); -+reachCylinder(false); !obstacle_still_seen(40);
-       !!move(0.3);
+    <- !forget_calls; -moved(_); -loopOff; -+reachCylinder(false); !obstacle_still_seen(40);
+       !!motion_loop;
        !until(mock_called(setSpeeds(50, -50)), 2000);
        !assert_true(avoiding);
        !!perceive(cylinderDetected);                                  // picking ends the move
@@ -55,7 +55,7 @@ mock_operation(_, ok).
        !!perceive(picked(true)); !until(handedOn, 2000);
        !until(not avoiding, 4000);
        !assert_false(avoiding);
-       -picked(true); -caught(true); -cylinderDetected.
+       +loopOff; -picked(true); -caught(true); -cylinderDetected.
 
 // an avoidance that is not cut off still ends the move only once it is over
 @[test]

@@ -29,4 +29,9 @@
 @afterAvoidGoRound +!afterAvoid : homing(_) & not travelling <- !goRound.
 @afterAvoid +!afterAvoid.
 
+// an avoidance inside the move (recovery's @moveAvoidStill) is cut off with it when picking ends
+// the move for a cylinder (.succeed_goal(move(_))), before it takes "avoiding" back, and every
+// later move waited for "avoiding" to go (wide worlds: robots stood still to the end of the run):
+// the next move takes it back. The reach goes on alone: picking comes before avoidance
+@moveAfterCutOff +!move(N) : avoidingInMove <- -avoidingInMove; -avoiding; !move(N).
 @moveWhileAvoiding +!move(N) : avoiding <- .wait("-avoiding"); !move(N).

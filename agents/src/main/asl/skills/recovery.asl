@@ -18,9 +18,6 @@ escapeBack(1200).     // ms of backing off in an escape
     <- setSpeeds(-M / 2, -M / 2); .wait(B); .random(R); W = 700 + R * 1500;
        if (R < 0.5) { setSpeeds(M / 2, -M / 2) } else { setSpeeds(-M / 2, M / 2) }; .wait(W); forward.
 
-// an obstacle still seen when avoiding ended raises no new event: avoid it now, in an intention of
-// its own as a new obstacle's avoidance, the move waiting for it: picking ends the move
-// (.succeed_goal(move(_))) when a cylinder is seen, and an avoidance inside the move was cut off
-// before it took "avoiding" back; every move then waited for it to go (wide worlds: robots stood
-// still to the end of the run)
-@moveAvoidStill +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !!avoid(D); .wait("-avoiding").
+// an obstacle still seen when avoiding ended raises no new event: avoid it now, inside the move
+// (avoidingInMove while it runs: avoidance's @moveAfterCutOff)
+@moveAvoidStill +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; +avoidingInMove; stop; !avoid(D); -avoidingInMove.
