@@ -4,7 +4,7 @@
 // motion meanwhile.
 // Reads: maxSpeed(M); delta(D) (the middleware's left-right difference); the states of the skills
 // it stands aside for: picking, reachCylinder(true), picked(true) (picking), travelling (delivery,
-// recharge: they go round obstacles their own way), homing(_) (far sight).
+// recharge: they go round obstacles their own way), homing(_) (far sight), avoidingInMove (recovery).
 // Needs: !clear (recovery); !goRound (far sight) when homing.
 // Include it after delivery and recharge (their obstacle plans come first) and before picking.
 // Deviations from the listing: the obstacle plans end the random motion that runs
