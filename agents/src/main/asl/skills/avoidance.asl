@@ -4,7 +4,7 @@
 // motion meanwhile.
 // Reads: maxSpeed(M); delta(D) (the middleware's left-right difference); the states of the skills
 // it stands aside for: picking, reachCylinder(true), picked(true) (picking), travelling (delivery,
-// recharge: they go round obstacles their own way), homing(_) (far sight).
+// recharge: they go round obstacles their own way), homing(_) (far sight), avoidingInMove (recovery).
 // Needs: !clear (recovery); !goRound (far sight) when homing.
 // Include it after delivery and recharge (their obstacle plans come first) and before picking.
 // Deviations from the listing: the obstacle plans end the random motion that runs
@@ -29,4 +29,9 @@
 @afterAvoidGoRound +!afterAvoid : homing(_) & not travelling <- !goRound.
 @afterAvoid +!afterAvoid.
 
+// an avoidance inside the move (recovery's @moveAvoidStill) is cut off with it when picking ends
+// the move for a cylinder (.succeed_goal(move(_))), before it takes "avoiding" back, and every
+// later move waited for "avoiding" to go (wide worlds: robots stood still to the end of the run):
+// the next move takes it back. The reach goes on alone: picking comes before avoidance
+@moveAfterCutOff +!move(N) : avoidingInMove <- -avoidingInMove; -avoiding; !move(N).
 @moveWhileAvoiding +!move(N) : avoiding <- .wait("-avoiding"); !move(N).

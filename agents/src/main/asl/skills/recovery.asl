@@ -18,5 +18,6 @@ escapeBack(1200).     // ms of backing off in an escape
     <- setSpeeds(-M / 2, -M / 2); .wait(B); .random(R); W = 700 + R * 1500;
        if (R < 0.5) { setSpeeds(M / 2, -M / 2) } else { setSpeeds(-M / 2, M / 2) }; .wait(W); forward.
 
-// an obstacle still seen when avoiding ended raises no new event: avoid it now
-@moveAvoidStill +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; stop; !avoid(D).
+// an obstacle still seen when avoiding ended raises no new event: avoid it now, inside the move
+// (avoidingInMove while it runs: avoidance's @moveAfterCutOff)
+@moveAvoidStill +!move(N) : obstacle(true) & delta(D) & not picked(true) <- +avoiding; +avoidingInMove; stop; !avoid(D); -avoidingInMove.
