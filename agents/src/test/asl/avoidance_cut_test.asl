@@ -18,7 +18,8 @@ mock_operation(_, ok).
 +!go_ahead : picked(true) <- +handedOn; -picking.
 // random motion (the last +!move plan, as random-walk.asl's), and the motion loop (initial phase's)
 +!move(N) <- +moved(N); .wait(50).
-+!motion_loop <- while (not loopOff) { !move(0.4) }.
+// a test waits for its loop to end (loopEnded) before the next test starts one of its own
++!motion_loop <- -loopEnded; while (not loopOff) { !move(0.4) }; +loopEnded.
 
 // an obstacle seen before the move starts (its +obstacle(true) event long handled): the move avoids it
 +!obstacle_still_seen(D) <- -+delta(D); +avoiding; -obstacle(false); +obstacle(true); -avoiding.
@@ -40,7 +41,8 @@ mock_operation(_, ok).
        !assert_false(avoiding);
        -moved(_); !until(moved(_), 2000);                             // and random motion goes on
        !assert_true(moved(0.4));
-       +loopOff; -cylinderLeft; -cylinderBeyond; -cylinderDetected.
+       +loopOff; !until(loopEnded, 2000); !assert_true(loopEnded);
+       -cylinderLeft; -cylinderBeyond; -cylinderDetected.
 
 @[test]
 +!test_a_cylinder_caught_during_an_avoidance_inside_a_move_leaves_no_avoiding_behind
@@ -55,7 +57,8 @@ mock_operation(_, ok).
        !!perceive(picked(true)); !until(handedOn, 2000);
        !until(not avoiding, 4000);
        !assert_false(avoiding);
-       +loopOff; -picked(true); -caught(true); -cylinderDetected.
+       +loopOff; !until(loopEnded, 2000); !assert_true(loopEnded);
+       -picked(true); -caught(true); -cylinderDetected.
 
 // an avoidance that is not cut off still ends the move only once it is over
 @[test]
