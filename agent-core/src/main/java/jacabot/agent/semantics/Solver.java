@@ -229,7 +229,7 @@ public final class Solver {
      * makes in {@code w} (which is left as it was).
      */
     List<Object[]> annotated(AnnotatedVar av, Unifier w) {
-        sideEffect(); // not one: its proofs are left alone, being rare
+        sideEffect(); // not a side effect, but such queries are rare: their failures are not remembered (FailedQueries)
         var out = new ArrayList<Object[]>();
         int mark = w.size();
         for (BeliefBase.Entry e : agent.beliefBase().all()) {
