@@ -227,6 +227,49 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return RESPONSE[RESPONSE.length - 1][1];
     }
 
+    /** Both sensors' level for a corridor, and how far the robot must drive seeing both (NaN: off). */
+    private double corridorLevel = Double.NaN, corridorSpan;
+    /** Where the robot was (dead reckoning) when both sensors began to read corridorLevel; NaN: not now. */
+    private double walledX = Double.NaN, walledZ;
+
+    /**
+     * From now on, the observable property {@code walledIn(true)} while both front sensors have read
+     * {@code level} or more for the last {@code metres} driven (not in the thesis): a wall on each
+     * side for that long is a corridor or a passage, where two boxes side by side are not. Fails
+     * before {@code odometry}, for a level under 1 or a negative span.
+     */
+    @OPERATION
+    void corridorSpan(double level, double metres) {
+        if (map == null || !(level >= 1) || !(metres >= 0)) {
+            failed("corridorSpan needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and a span of 0 m or more, got "
+                    + level + ", " + metres);
+            return;
+        }
+        corridorLevel = level;
+        corridorSpan = metres;
+        if (!hasObsProperty("walledIn")) {
+            defineObsProperty("walledIn", false);
+        }
+    }
+
+    private void trackCorridor(double left, double right) {
+        if (Double.isNaN(corridorLevel)) {
+            return;
+        }
+        boolean both = left >= corridorLevel && right >= corridorLevel;
+        if (!both) {
+            walledX = Double.NaN;
+        } else if (Double.isNaN(walledX)) {
+            walledX = map.x();
+            walledZ = map.z();
+        }
+        boolean walled = both && Math.hypot(map.x() - walledX, map.z() - walledZ) >= corridorSpan;
+        if (walled != getObsProperty("walledIn").booleanValue()) {
+            getObsProperty("walledIn").updateValue(walled);
+            markTrigger();
+        }
+    }
+
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -253,6 +296,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             markReading(right, -SENSOR_ANGLE);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
+            trackCorridor(left, right);
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();

@@ -253,6 +253,38 @@ class MiddlewareTest {
     }
 
     @Test
+    void walledInOnlyOnceBothSensorsSawAWallForTheSpanDriven() throws Exception {
+        var b = new Bench(ObstacleAvoidanceMiddleware.class);
+        assertFalse(b.op("corridorSpan", new Object[] {15.0, 0.15}).succeeded(), "no odometry yet");
+        b.op("odometry", new Object[] {0.001, 0.09});
+        assertFalse(b.op("corridorSpan", new Object[] {15.0, -1.0}).succeeded(), "a negative span");
+        assertTrue(b.op("corridorSpan", new Object[] {15.0, 0.15}).succeeded());
+        assertEquals(false, b.properties.get("walledIn"));
+        // 4 mm a step at 100: a wall on each side for 20 steps (8 cm, two boxes side by side), then
+        // one side clear, then both walls again for 50 steps (20 cm, a passage)
+        int[] firstWalled = {-1};
+        int[] rights = new int[80];
+        java.util.Arrays.fill(rights, 60);
+        rights[20] = 0;
+        for (int i = 0; i < rights.length; i++) {
+            b.deliver(value(SensorKind.LEFT_DISTANCE, 80), value(SensorKind.RIGHT_DISTANCE, rights[i]),
+                    new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, 100}));
+            if (i < 21) {
+                assertEquals(false, b.properties.get("walledIn"), "step " + i);
+            } else if (firstWalled[0] < 0 && Boolean.TRUE.equals(b.properties.get("walledIn"))) {
+                firstWalled[0] = i;
+            }
+        }
+        // 15 cm after the run began at step 21: 37-38 steps of 4 mm
+        assertTrue(firstWalled[0] >= 57 && firstWalled[0] <= 61, "walled in from step " + firstWalled[0]);
+        b.deliver(value(SensorKind.LEFT_DISTANCE, 10), value(SensorKind.RIGHT_DISTANCE, 60),
+                new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {100, 100}));
+        assertEquals(false, b.properties.get("walledIn"), "one side under the level");
+        assertFalse(new Bench(ObstacleAvoidanceMiddleware.class).properties.containsKey("walledIn"),
+                "no walledIn percept unless the agent asks for it");
+    }
+
+    @Test
     void freshCellsCountsNewFloorOfTheLastWindowAndVisitedAreaAllOfIt() throws Exception {
         var b = new Bench(ObstacleAvoidanceMiddleware.class);
         var cells = new OpFeedbackParam<Double>();
