@@ -70,11 +70,15 @@ deltaLevels(200, 190) :- arena(W, D) & looseArea(A) & W * D >= A.
 // every arena); held out 241-300: 84 -> 90; classic 146 -> 146, held out 51-100 145 -> 147
 // (docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: the walls seen marked on the map")
 wallMarks(200) :- arena(W, D) & looseArea(A) & W * D >= A.
-// corridor steering, not in the thesis: when an obstacle comes while both sensors read
-// corridorSteer's Level or more and neither its Max (a wall on each side: a passage, a doorway),
-// the robot keeps going and steers away from the nearer wall by Gain wheel units per unit of the
-// left-right difference for as long as both walls are seen, instead of the turn on the spot and the
-// veer arc, which took it across to the other wall, and the trap escape, which turned it back
+// corridor steering, not in the thesis: when an obstacle comes while both sensors have read
+// corridorSteer's Level or more for the last corridorSpan m driven (the middleware's walledIn: a
+// wall on each side that long is a passage, where two boxes side by side are not) and neither reads
+// its Max, the robot keeps going and steers away from the nearer wall by Gain wheel units per unit
+// of the left-right difference for as long as both walls are seen, instead of the turn on the spot
+// and the veer arc, which took it across to the other wall, and the trap escape, which turned it
+// back. Without the span, two boxes counted as a corridor, and the flank, out of the sensors'
+// sight, touched them (wide tuning 101-160, run seeds 1-2: 75 of 120 against 92; with it 93;
+// docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: corridor steering")
 corridorSteer(15, 400, 0.3).
 corridorSpan(0.15).
 inCorridor :- walledIn(true) & corridorSteer(_, M, _) & leftSensor(L) & rightSensor(R) & L < M & R < M.
@@ -85,7 +89,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
-// Reads: arena(W, D) (the world); maxSpeed(M); seekShare(S) (the agent's, if any); its own
+// Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
 // seeking(Until) and soughtAt(T). Needs: !clear (recovery). Include it before recovery (its escape,
 // a turn on the spot, is the one this robot uses).
 
