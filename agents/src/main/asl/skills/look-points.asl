@@ -12,12 +12,18 @@ lookReach(0.15).   // m: a look point this near is reached (its look around sees
 // boundary following towards it starts its waypoint's patience again: one place held the search
 // 167 s of the 384 after the delivery, wide world 138 seed 1)
 lookAgainFor(40000).
+// ms after which a following towards a look point that is back within loopRadius (m) of where it
+// began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
+loopAfter(8000).
+loopRadius(0.08).
 // Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
 // memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
-// (avoidance, picking, delivery); stuck (the middleware's progress watch).
+// (avoidance, picking, delivery); stuck (the middleware's progress watch); followingWall(S, T, D)
+// (way-round: a following towards the look point), wedgedAlong (way-round: wedged on it once).
 // Beliefs: sweep(Points) (the look points left in this round), lanesOnly (no look point lies off the
 // storage area: the sweep's lanes instead), lookAgainFrom(X, Z, T) (when the place looked for
-// again became the waypoint).
+// again became the waypoint), followFrom(X, Z, T) (where the following begun at T began).
+// Rules it offers: followLooped (way-round gives such a following up).
 // Needs: sweep (!lookAround, waypoint, closest, closerAt; its plans are the fall-back), !escape
 // (recovery). Include it after search memory (its remembered cylinders come first) and before sweep.
 
@@ -60,3 +66,10 @@ lookAgainFor(40000).
 +stuck : lookSpacing(_) & avoiding & not picking & not travelling & not insideArea
          & not .intend(avoid(_)) & not .intend(escape) & not .intend(leaveStorage)
     <- println("No progress, no avoidance under way: going on"); -avoiding; .succeed_goal(move(_)); stop; !escape; !nextWaypoint.
+
+// where a following towards a look point began (wide world 136, seed 1: the robot circled three
+// boxes among which its points lay, up to way-round's 60 s each, and its first pick came at 402 s);
+// not after a wedge (way-round's backing off left the robot by its start: no loop)
+@followBegun +followingWall(_, T, _) : lookSpacing(_) & not travelling & location(X, _, Z) <- -+followFrom(X, Z, T).
+followLooped :- lookSpacing(_) & not travelling & not wedgedAlong & followingWall(_, T0, _) & followFrom(X0, Z0, T0) & .system_time(T)
+    & loopAfter(A) & T - T0 > A & location(X, _, Z) & loopRadius(R) & (X - X0) * (X - X0) + (Z - Z0) * (Z - Z0) < R * R.

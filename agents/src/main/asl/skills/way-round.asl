@@ -28,6 +28,8 @@ wallNear(200).        // a front sensor's reading over this: something near ahea
 forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // rehitsToFollow(N) (the agent's, optional: obstacles met near here on this trip before a following
 // begins; 1 without it).
+// followLooped (a rule of another skill, optional: look-points.asl's; a following it holds for is
+// given up as one that found no way round).
 // Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
 // recharge-trip); detours(N) (heading: the count of obstacles met on this trip, reset to 0 when a
 // trip starts); picking, reachCylinder(B) (picking); searching, waypoint(X, Z, T), closerAt(T)
@@ -130,6 +132,12 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @leaveWall
 +!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & canLeave(S, Dist0, Rel)
     <- println("The target is on the free side: heading for it again"); !endFollowing; !headAgain(left).
+// a skill's rule followLooped (look-points.asl's: round a box and back where the following began)
+// gives the following up as one that found no way round
+@followLooped
++!followOrLeave(S, _, _, _) : followLooped
+    <- println("Round an obstacle and back: heading for the target again"); +gaveUpSide(S);
+       !endFollowing; !headAgain(gaveUp).
 @followGivenUp
 +!followOrLeave(S, T0, _, _) : .system_time(T) & followLimitNow(Lim) & T - T0 > Lim
     <- println("No way round found on the ", S, ": heading for the target again"); +gaveUpSide(S);
