@@ -223,9 +223,15 @@ public final class SimulationBenchmark {
             return line;
         }
         // what the load does not change: on two free cores a lockstep step costs the sum, a pipelined one at best the larger
-        return line + String.format(Locale.ROOT, " By their own CPU: the simulation thread %.2f ms, the agent's %.2f ms per "
+        line += String.format(Locale.ROOT, " By their own CPU: the simulation thread %.2f ms, the agent's %.2f ms per "
                 + "simulated second; their larger is %.2f of their sum.", cpu[0] / 1e6 / seconds, cpu[1] / 1e6 / seconds,
                 (double) Math.max(cpu[0], cpu[1]) / Math.max(1, cpu[0] + cpu[1]));
+        if (cpu[2] < 0 || cpu[3] < 0) {
+            return line;
+        }
+        // the kernel's part, which profilers of Java code do not see: over the socket, the link's calls, sleeps and wake-ups
+        return line + String.format(Locale.ROOT, " Their system time: %.1f and %.1f us a control step.", cpu[2] / 1e3 / steps,
+                cpu[3] / 1e3 / steps);
     }
 
     /**

@@ -75,7 +75,7 @@ public final class LockstepCoordinator {
     /** The step the agent side is answering (its own thread's). */
     private volatile long answering;
     /** The CPU time of the simulation thread and of the thread that ran the agent side, at the run's end (−1: not read). */
-    private volatile long simulationCpu = -1, agentSideCpu = -1;
+    private volatile long simulationCpu = -1, agentSideCpu = -1, simulationSystem = -1, agentSideSystem = -1;
     private volatile MiddlewareLink remoteLink;
     private volatile InProcessLink running;
     private volatile boolean stopRequested;
@@ -171,10 +171,11 @@ public final class LockstepCoordinator {
      * {@return the CPU time in ns of the simulation thread and of the thread the agent side ran on
      * (the middleware's reading thread over the socket), at the run's end; −1 where not known} Two
      * such numbers say what a step costs whatever the machine's load: their sum in lockstep, at best
-     * the larger of them in a pipelined lockstep.
+     * the larger of them in a pipelined lockstep. Then the same threads' system time (the kernel's
+     * share of that CPU: over a socket, the link's system calls, sleeps and wake-ups).
      */
     public long[] threadCpuNanos() {
-        return new long[] {simulationCpu, agentSideCpu};
+        return new long[] {simulationCpu, agentSideCpu, simulationSystem, agentSideSystem};
     }
 
     /** {@return with {@link #remoteController}, the port the agent side listens on once it does (0 before)} */
@@ -260,6 +261,7 @@ public final class LockstepCoordinator {
                     simFailure[0] = e;
                 } finally {
                     simulationCpu = threadCpu();
+                    simulationSystem = threadSystem(simulationCpu);
                     link.controller().close(); // says goodbye: the agent side's loop ends
                 }
             }, "lockstep-simulation");
@@ -362,6 +364,7 @@ public final class LockstepCoordinator {
                     }
                 } else if (e instanceof LinkEvent.Disconnected && connectedOnce) {
                     agentSideCpu = threadCpu();
+                    agentSideSystem = threadSystem(agentSideCpu);
                     end.countDown(); // the controller said goodbye (or dropped: nothing more will come)
                 }
             } catch (RuntimeException | Error failed) {
@@ -391,6 +394,11 @@ public final class LockstepCoordinator {
     private static long threadCpu() {
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         return threads.isCurrentThreadCpuTimeSupported() ? threads.getCurrentThreadCpuTime() : -1;
+    }
+
+    /** {@return the calling thread's system time, given its CPU time {@code cpu} read just before; −1 where not known} */
+    private static long threadSystem(long cpu) {
+        return cpu < 0 ? -1 : Math.max(0, cpu - ManagementFactory.getThreadMXBean().getCurrentThreadUserTime());
     }
 
     private List<Command> callAgent(StepData data) {

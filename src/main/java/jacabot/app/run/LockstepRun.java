@@ -131,10 +131,10 @@ public final class LockstepRun extends SteppedPlatform {
         return e.trigger().literal() instanceof Literal l && l.getAnnot("percept_type") != null;
     }
 
-    /** {@return the last run's threads' CPU time ({@link LockstepCoordinator#threadCpuNanos}), −1 each before a run} */
+    /** {@return the last run's threads' CPU and system time ({@link LockstepCoordinator#threadCpuNanos}), −1 each before a run} */
     public long[] threadCpuNanos() {
         LockstepCoordinator c = coordinator;
-        return c != null ? c.threadCpuNanos() : new long[] {-1, -1};
+        return c != null ? c.threadCpuNanos() : new long[] {-1, -1, -1, -1};
     }
 
     /** {@return the artifact steps run so far (on an operation thread, or on this one when the operation never waits)} */

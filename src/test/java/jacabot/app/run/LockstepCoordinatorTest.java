@@ -59,6 +59,18 @@ class LockstepCoordinatorTest {
     }
 
     @Test
+    void aRunOverTheSocketGivesEachThreadsCpuAndTheSystemTimeWithinIt() throws Exception {
+        var coordinator = new LockstepCoordinator(LinkTestSupport.world("navigation"), "khepera", new StopAtObstacle());
+        coordinator.runFor(10);
+        long[] t = coordinator.threadCpuNanos();
+        assertEquals(4, t.length);
+        for (int thread = 0; thread < 2; thread++) {
+            assertTrue(t[thread] > 0, "thread " + thread + " worked: " + t[thread]);
+            assertTrue(t[2 + thread] >= 0 && t[2 + thread] <= t[thread], "its system time within its CPU: " + t[2 + thread]);
+        }
+    }
+
+    @Test
     void anAgentSideThatFailsEndsTheRunWithItsFailure() throws Exception {
         SimWorld world = LinkTestSupport.world("navigation");
         var run = new LockstepCoordinator(world, "khepera", data -> {
