@@ -41,6 +41,14 @@ mock_operation(_, ok).
        !until(mock_called(setSpeeds(_, _)), 2000);
        !assert_true(mock_called(setSpeeds(36, 44))).
 
+// tidy-up's quickApproach(V): the same near approach at V
+@[test]
++!test_a_quick_approach_takes_the_near_cylinder_at_its_speed
+    <- !forget_calls; +quickApproach(85); !sighting(-4, 0.3);
+       !until(mock_called(setSpeeds(_, _)), 2000);
+       -quickApproach(85);
+       !assert_true(mock_called(setSpeeds(81, 89))).
+
 @[test]
 +!test_no_homing_while_picking
     <- !forget_calls; -homing(_); +picking; !sighting(0, 1.0);

@@ -67,7 +67,10 @@ setUpGoal(setUpFarSight).
 @steerRight +!steerTo(Off) : Off > 12 & maxSpeed(M) <- setSpeeds(M / 4, -M / 4).
 @steerLeft +!steerTo(Off) : Off < -12 & maxSpeed(M) <- setSpeeds(-M / 4, M / 4).
 @steerFar +!steerTo(Off) : sightDistance(D) & farApproach(F) & D >= F & travelSpeed(V) <- setSpeeds(V - 10 + Off, V - 10 - Off).
-@steerNear +!steerTo(Off) : approachSpeed(V) <- setSpeeds(V + Off, V - Off).
+@steerNear +!steerTo(Off) : nearSpeed(V) <- setSpeeds(V + Off, V - Off).
+// an agent may believe quickApproach(V): the near approach at V, not approachSpeed (tidy-up, whose runs end on time)
+nearSpeed(V) :- quickApproach(V).
+nearSpeed(V) :- not quickApproach(_) & approachSpeed(V).
 
 // going to a cylinder seen far off, while it stays in sight
 @moveWhileHoming +!move(N) : homing(_) & lastSighted(S) & .system_time(T) & T - S < 1500 <- .wait(300).
