@@ -89,11 +89,13 @@ awaySum([p(Rx, Rz) | T], X, Z, Ax, Az) :- awaySum(T, X, Z, Ax, Az) & (X - Rx) * 
 centreWay(Cx, Cz, Ux, Uz) :- N = math.sqrt(Cx * Cx + Cz * Cz) & N > 0.001 & Ux = -Cx / N & Uz = -Cz / N.
 centreWay(Cx, Cz, 1, 0) :- Cx * Cx + Cz * Cz <= 0.000001.
 chargerWayOff(X, Z, Ax, Az, Wx, Wz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz)
-    & offWalls(X, Z, Ux + Ax, Uz + Az, Fx, Fz) & N = math.sqrt(Fx * Fx + Fz * Fz) & N >= 0.3 & Wx = Fx / N & Wz = Fz / N.
+    & wayOffWalls(X, Z, Ux + Ax, Uz + Az, Wx, Wz).
 chargerWayOff(X, Z, Ax, Az, Wx, Wz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz)
-    & squareWay(Ux, Uz, Ax, Az, Px, Pz) & offWalls(X, Z, Px, Pz, Fx, Fz)
-    & N = math.sqrt(Fx * Fx + Fz * Fz) & N >= 0.3 & Wx = Fx / N & Wz = Fz / N.
+    & squareWay(Ux, Uz, Ax, Az, Px, Pz) & wayOffWalls(X, Z, Px, Pz, Wx, Wz).
 chargerWayOff(_, _, _, _, Ux, Uz) :- charger(Cx, Cz) & centreWay(Cx, Cz, Ux, Uz).
+// the way (Vx, Vz) from (X, Z) kept off the walls, as a unit vector, while at least 0.3 of it is left
+wayOffWalls(X, Z, Vx, Vz, Wx, Wz) :- offWalls(X, Z, Vx, Vz, Fx, Fz)
+    & N = math.sqrt(Fx * Fx + Fz * Fz) & N >= 0.3 & Wx = Fx / N & Wz = Fz / N.
 squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az >= 0 & Px = Uz & Pz = -Ux.
 squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
 
