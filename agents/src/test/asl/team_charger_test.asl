@@ -253,3 +253,19 @@ mock_operation(_, ok).
        !assert_false(leavingCharger);
        !assert_true(desired(90));                                     // not the marked 45 degrees
        -robotAt(khepera9, _, _); -+orientation(90).
+
+// with teammates the time left is reckoned at teamMeanPower (2 W), not at the wheels' full 2.5 W,
+// and a charge ends once the battery less teamChargeReserve covers it; alone, as before
+@[test]
++!test_with_teammates_the_time_left_is_reckoned_at_the_mean_power_and_a_charge_ends_once_it_covers_it
+    <- -robotAt(_, _, _); -taskEnd(_); .system_time(T); +taskEnd(T + 300000); -+battery(720);  // 300 s left
+       .system_time(T1);
+       !assert_false(batteryLasts(T1));                 // alone: 720 J against 750 J at 2.5 W
+       !assert_false(chargedEnough);                    // and charged only at chargedLevel
+       +robotAt(khepera9, -0.4, -0.4);
+       .system_time(T2);
+       !assert_true(batteryLasts(T2));                  // a teammate: 720 J against 600 J at 2 W
+       !assert_true(chargedEnough);                     // 620 J over the reserve covers it
+       -+battery(650);
+       !assert_false(chargedEnough);                    // 550 J does not
+       -robotAt(khepera9, _, _); -taskEnd(_); -+battery(470).
