@@ -23,7 +23,7 @@ import java.util.function.LongSupplier;
 public final class TurnWatch {
     static final int WINDOW = 1_000;
     /** {@code -Djacabot.turns.minShare=0} keeps the turns whatever the share: to measure them on a loaded machine. */
-    static final double MIN_SHARE = Double.parseDouble(System.getProperty("jacabot.turns.minShare", "0.7"));
+    static final double MIN_SHARE = minShare(System.getProperty("jacabot.turns.minShare"));
 
     private final LongSupplier threadCpuNanos;
     private final LongSupplier nanoTime;
@@ -40,6 +40,23 @@ public final class TurnWatch {
     TurnWatch(LongSupplier threadCpuNanos, LongSupplier nanoTime) {
         this.threadCpuNanos = threadCpuNanos;
         this.nanoTime = nanoTime;
+    }
+
+    /** The threshold a measurer set, or 0.7; a value that is no share from 0 to 1 is said and ignored. */
+    static double minShare(String set) {
+        if (set == null) {
+            return 0.7;
+        }
+        try {
+            double share = Double.parseDouble(set.trim());
+            if (share >= 0 && share <= 1) {
+                return share;
+            }
+        } catch (NumberFormatException notANumber) {
+            // said below
+        }
+        System.err.println("jacabot.turns.minShare: '" + set + "' is no share from 0 to 1; 0.7 is used");
+        return 0.7;
     }
 
     private static LongSupplier threadCpu() {

@@ -59,4 +59,14 @@ class TurnWatchTest {
         var c = new Clocks();
         assertEquals(-1, stopsAfter(new TurnWatch(() -> -1, () -> c.wall), c, new double[] {0.1}, 10 * TurnWatch.WINDOW));
     }
+
+    @Test
+    void aMeasurersThresholdIsAShareAndAnythingElseLeavesTheDefault() {
+        assertEquals(0.7, TurnWatch.minShare(null));
+        assertEquals(0.0, TurnWatch.minShare("0"));
+        assertEquals(0.5, TurnWatch.minShare(" 0.5 "));
+        assertEquals(0.7, TurnWatch.minShare("half"));
+        assertEquals(0.7, TurnWatch.minShare("1.5"));
+        assertEquals(0.7, TurnWatch.minShare("NaN"));
+    }
 }
