@@ -206,29 +206,4 @@ class ExperimentAgentsTest {
         assertTrue(robot.printed().toString().contains("Parked on the charger"), robot.printed().toString());
         assertTrue(robot.believes("atCharger") && robot.believes("charging"), "stays there, the task suspended");
     }
-    /**
-     * Suspend/resume (not in the thesis): a low battery during a delivery nearer the storage point
-     * than the charger, the battery covering the way on, lets the delivery end first; the trip then
-     * starts, and comes back to where the battery ran low (the episode's mark), not where it starts.
-     */
-    @Test
-    void suspendResumeDeliversFirstAndComesBackToWhereTheBatteryRanLow() {
-        var robot = connected(ASL.resolve("suspend-resume.asl"), "storagePoint(0.4,-0.4)", "storageRadius(0.06)", "arena(2,2)",
-                "charger(-0.8,0.8)");
-        robot.percept("location(0.2,0,-0.2)").percept("orientation(90)").percept("battery(479)");
-        robot.percept("~delivered").cycles(20);
-        robot.signal("lowBattery");
-        robot.advance(100, 200);
-        assertTrue(!robot.believes("charging"), "the delivery goes on: " + robot.actionNames());
-        robot.unpercept("location(0.2,0,-0.2)").percept("location(0.5,0,-0.5)").unpercept("~delivered").cycles(20);
-        robot.signal("lowBattery");
-        robot.advance(100, 200);
-        assertTrue(robot.believes("charging"), "delivered: the trip starts " + robot.actionNames());
-        assertTrue(robot.actionNames().contains("setUpTargetPoint(-0.8,0,0.8)"), "heads for the charger: " + robot.actionNames());
-        robot.signal("targetReached");
-        robot.advance(100, 200);
-        robot.signal("charged");
-        robot.advance(1000, 400);
-        assertTrue(robot.actionNames().contains("setUpTargetPoint(0.2,0,-0.2)"), "back to where the battery ran low: " + robot.actionNames());
-    }
 }
