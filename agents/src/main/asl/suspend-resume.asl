@@ -33,19 +33,6 @@ quickTurns.
 // out (lowBattery comes again at every control step): a trip begun there left it halted
 // (insideArea), blind, with the cylinder (docs/comparison-wide.md)
 @rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
-// not in the thesis: a delivery under way nearer the storage point than the charger ends first while
-// the battery less 300 J (a drain is up to about 300 J) covers the way on to the charger
-// (recharge-trip's deliverFirst), and the trip then starts from where the battery ran low (the
-// episode's mark, where the robot comes back): a cylinder picked at 452 s went to the charger 2.6 m
-// the other way first and was not stored by the end (wide world 123; tuning 101-160 x 1-2: 109 -> 110
-// of 120; with 200 J 109, two batteries more emptied: docs/comparison-wide.md)
-deliverFirst(300).
-deliveringFirst :- deliverFirst(R) & ~delivered & not charging & storageNearer & wayCovered(R).
-@lowBatteryDeliveringFirst
-+lowBattery : deliveringFirst & not lowPoint(_, _, _, _) & location(X, Y, Z) & orientation(O) <- +lowPoint(X, Y, Z, O).
-@rechargeFromLowPoint[atomic]
-+lowBattery : lowPoint(X, Y, Z, O) & not deliveringFirst & not charging
-    <- -lowPoint(X, Y, Z, O); +charging; !!rechargeTrip(X, Y, Z, O).
 { include("skills/recharge.asl") }
 // small turns on the way in an arc, not on the spot (before delivery: heading's turns come after)
 { include("skills/arc-turn.asl") }
