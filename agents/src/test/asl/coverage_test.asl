@@ -182,3 +182,12 @@ mock_operation(_, ok).
        -+seekWindow(30000);
        !assert_false(mock_called(freshCells(_, _)));
        !assert_false(seeking(_)).
+
+// corridor steering's cut-off stays under the level that signals an obstacle: the closer levels'
+// 480 leave it at 400; a small arena keeps the thesis' 350, and with it the cut-off
+@[test]
++!test_the_corridor_cut_off_stays_under_the_obstacle_level
+    <- !assert_true(steerCut(400));
+       -arena(3, 3); +arena(1.2, 1.2);
+       !assert_true(steerCut(350));
+       -arena(1.2, 1.2); +arena(3, 3).

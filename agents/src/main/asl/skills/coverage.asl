@@ -81,7 +81,12 @@ wallMarks(200) :- arena(W, D) & looseArea(A) & W * D >= A.
 // docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: corridor steering")
 corridorSteer(15, 400, 0.3).
 corridorSpan(0.15).
-inCorridor :- walledIn(true) & corridorSteer(_, M, _) & leftSensor(L) & rightSensor(R) & L < M & R < M.
+// the cut-off stays under the level that signals an obstacle (obstacleThresholds', else the
+// middleware's default, the thesis' 350): over it, the robot steered on with a sensor at 350-400
+steerCut(C) :- corridorSteer(_, M, _) & obstacleThresholds(W, _, _) & C = math.min(M, W).
+steerCut(C) :- corridorSteer(_, M, _) & not obstacleThresholds(_, _, _) & thesisWarning(W) & C = math.min(M, W).
+thesisWarning(350).
+inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
