@@ -52,6 +52,8 @@ public abstract class SteppedPlatform implements AutoCloseable {
     private long cycles;
     /** Each agent's failure watch, by name: told when the agent's reasoning runs away within a step. */
     private final Map<String, FailureWatch> watches = new LinkedHashMap<>();
+    /** The watches' names, in their order. */
+    private String[] watchedNames = new String[0];
 
     SteppedPlatform(SimWorld world, long seed, PrintStream console) {
         this.world = world;
@@ -109,6 +111,7 @@ public abstract class SteppedPlatform implements AutoCloseable {
     /** Agent {@code name}'s failures are {@code watch}'s: it is told when the agent's reasoning runs away ({@link #reason}). */
     void watch(String name, FailureWatch watch) {
         watches.put(name, watch);
+        watchedNames = watches.keySet().toArray(new String[0]);
     }
 
     /**
@@ -118,20 +121,24 @@ public abstract class SteppedPlatform implements AutoCloseable {
      * run ends after this step with that agent's failure.
      */
     void reason() {
-        Map<String, Long> before = new LinkedHashMap<>();
-        watches.keySet().forEach(name -> before.put(name, agentCycles(name)));
-        long budget = CYCLES_PER_STEP * Math.max(1, watches.size());
+        // the agents' cycles so far, in the watches' order (an array: this runs every control step)
+        String[] names = watchedNames;
+        long[] before = new long[names.length];
+        for (int i = 0; i < names.length; i++) {
+            before[i] = agentCycles(names[i]);
+        }
+        long budget = CYCLES_PER_STEP * Math.max(1, names.length);
         long run = stepper.runUntilQuiescent(budget);
         cycles += run;
-        if (run < budget || before.keySet().stream().map(mas::agent).allMatch(a -> a == null || a.isStopped() || a.canSleep())) {
+        if (run < budget || allIdle(names)) {
             return;
         }
         String busiest = null;
         long most = -1;
-        for (Map.Entry<String, Long> e : before.entrySet()) {
-            long n = agentCycles(e.getKey()) - e.getValue();
+        for (int i = 0; i < names.length; i++) {
+            long n = agentCycles(names[i]) - before[i];
             if (n > most) {
-                busiest = e.getKey();
+                busiest = names[i];
                 most = n;
             }
         }
@@ -139,6 +146,16 @@ public abstract class SteppedPlatform implements AutoCloseable {
             long now = clock.nowMillis();
             watches.get(busiest).reasoningRanAway(most, now / Math.max(1, world.controlStep()), now, runningPlans(busiest));
         }
+    }
+
+    private boolean allIdle(String[] names) {
+        for (String name : names) {
+            Agent a = mas.agent(name);
+            if (!(a == null || a.isStopped() || a.canSleep())) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

@@ -4,6 +4,7 @@ import jacabot.agent.syntax.Literal;
 import jacabot.agent.syntax.Term;
 import jacabot.agent.syntax.Var;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -21,7 +22,7 @@ import java.util.Map;
  * takes as many ({@link Agent#retakeVars}), and later variables are numbered as they were.
  */
 final class FailedQueries {
-    private final Map<List<Object>, long[]> failed = new HashMap<>();
+    private final Map<Key, long[]> failed = new HashMap<>();
     private long changesSeen = -1;
     /** Queries answered here so far (for tests). */
     private long answered;
@@ -31,37 +32,79 @@ final class FailedQueries {
      * variables numbered by first occurrence; null for any other (annotations, structures with
      * variables)}
      */
-    static List<Object> key(Literal q, Unifier w) {
+    static Key key(Literal q, Unifier w) {
         if (!q.annots().isEmpty() || q.tail() != null || q.ns() != null) {
             return null;
         }
-        List<Object> key = new ArrayList<>(q.arity() + 2);
-        key.add(q.functor());
-        key.add(q.negated());
-        List<Var> vars = null;
-        for (int i = 0, n = q.arity(); i < n; i++) {
+        int n = q.arity();
+        Object[] args = n == 0 ? NO_ARGS : new Object[n];
+        Var first = null; // the variables seen, without a list for the usual one or two
+        Var second = null;
+        List<Var> more = null;
+        for (int i = 0; i < n; i++) {
             Term a = w.deref(q.arg(i));
             if (a instanceof Var v) {
-                if (vars == null) {
-                    vars = new ArrayList<>(2);
+                int k;
+                if (first == null || first.equals(v)) {
+                    first = v;
+                    k = 0;
+                } else if (second == null || second.equals(v)) {
+                    second = v;
+                    k = 1;
+                } else {
+                    if (more == null) {
+                        more = new ArrayList<>(2);
+                    }
+                    k = more.indexOf(v);
+                    if (k < 0) {
+                        k = more.size();
+                        more.add(v);
+                    }
+                    k += 2;
                 }
-                int k = vars.indexOf(v);
-                if (k < 0) {
-                    k = vars.size();
-                    vars.add(v);
-                }
-                key.add(k); // an Integer: no term equals it
+                args[i] = k; // an Integer: no term equals it
             } else if (a.isGround()) {
-                key.add(a);
+                args[i] = a;
             } else {
                 return null;
             }
         }
-        return key;
+        return new Key(q.functor(), q.negated(), args);
+    }
+
+    private static final Object[] NO_ARGS = new Object[0];
+
+    /**
+     * A query's key: predicate, negation, and per argument the ground term or its variable's number
+     * (one object and its array, where a list of boxed parts took more and hashed through an iterator).
+     */
+    static final class Key {
+        private final String functor;
+        private final boolean negated;
+        private final Object[] args;
+        private final int hash;
+
+        Key(String functor, boolean negated, Object[] args) {
+            this.functor = functor;
+            this.negated = negated;
+            this.args = args;
+            this.hash = (functor.hashCode() * 31 + Arrays.hashCode(args)) * 31 + Boolean.hashCode(negated);
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Key k && k.hash == hash && k.negated == negated && k.functor.equals(functor)
+                    && Arrays.equals(k.args, args);
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
     }
 
     /** {@return whether the query is known to fail now}; if so, its fresh variables' numbers are taken */
-    boolean fails(List<Object> key, Agent agent) {
+    boolean fails(Key key, Agent agent) {
         long[] taken = current(agent).get(key);
         if (taken == null) {
             return false;
@@ -72,7 +115,7 @@ final class FailedQueries {
     }
 
     /** The query failed, taking {@code fresh} and {@code internal} variables' numbers. */
-    void failed(List<Object> key, Agent agent, long fresh, long internal) {
+    void failed(Key key, Agent agent, long fresh, long internal) {
         current(agent).put(key, new long[] {fresh, internal});
     }
 
@@ -80,7 +123,7 @@ final class FailedQueries {
         return answered;
     }
 
-    private Map<List<Object>, long[]> current(Agent agent) {
+    private Map<Key, long[]> current(Agent agent) {
         long changes = agent.beliefBase().changes();
         if (changes != changesSeen) {
             failed.clear();

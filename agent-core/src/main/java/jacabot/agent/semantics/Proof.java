@@ -358,7 +358,7 @@ final class Proof {
                 return false;
             }
         }
-        List<Object> key = FailedQueries.key(q, w);
+        FailedQueries.Key key = FailedQueries.key(q, w);
         if (key == null) {
             return false;
         }
@@ -475,11 +475,11 @@ final class Proof {
      * has no solution while the belief base stays as it is.
      */
     private static final class Fence extends Choice {
-        private final List<Object> key;
+        private final FailedQueries.Key key;
         private final long sideEffects, fresh, internal;
         boolean proven;
 
-        Fence(int mark, Goals rest, List<Object> key, long sideEffects, long fresh, long internal) {
+        Fence(int mark, Goals rest, FailedQueries.Key key, long sideEffects, long fresh, long internal) {
             super(mark, rest);
             this.key = key;
             this.sideEffects = sideEffects;
