@@ -88,13 +88,13 @@ steerCut(C) :- corridorSteer(_, M, _) & not obstacleThresholds(_, _, _) & thesis
 thesisWarning(350).
 inCorridor :- (walledIn(true) | entering) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 // doorway entry, not in the thesis: on a straight leg along a wall, a front sensor that read the
-// wall (doorwayWatch's Level or more for Before m) reads nothing for MinGap to MaxGap m, then the
-// far jamb for After m (within Flat of its greatest reading): a doorway beside the robot (the middleware's doorway(Side, Metres): its middle is
+// wall (doorwayWatch's Level or more for WallSpan m) reads nothing for MinGap to MaxGap m, then the
+// wall again: a doorway beside the robot (the middleware's doorway(Side, Metres): its middle is
 // Lookahead m past where the gap was first seen, less half the gap). The robot drives on until
 // abreast of it, turns a quarter towards it and for doorwayEntry ms steers between its jambs as in
 // a corridor (inCorridor) instead of turning away from one: sliding along a wall, it passed the
 // passages of 9-20 cm it never entered (their mouths met side-on, 7-10 cm of gap seen)
-doorwayWatch(5, 0.03, 0.03, 0.8, 0.05, 0.2, 0.18).
+doorwayWatch(5, 0.2, 0.05, 0.2, 0.18).
 doorwayEntry(2500).
 entering :- enteredAt(T0) & doorwayEntry(E) & .system_time(T) & T - T0 < E.
 obstacleTimes([]).
@@ -115,7 +115,7 @@ pausedUntil("-veering") :- veering.
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (doorwayWatch(DL, DB, DJ, DF, DMin, DMax, DA)) { doorwayWatch(DL, DB, DJ, DF, DMin, DMax, DA) }.
+       if (doorwayWatch(DL, DW, DMin, DMax, DA)) { doorwayWatch(DL, DW, DMin, DMax, DA) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

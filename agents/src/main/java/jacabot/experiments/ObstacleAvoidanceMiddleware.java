@@ -276,23 +276,20 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     private DoorwayWatch doorways;
 
     /**
-     * From now on, signals {@code doorway(Side, Metres)} when a front sensor reads a wall ({@code level}
-     * or more for {@code before} m driven), nothing for {@code minGap} to {@code maxGap} m, then the far
-     * jamb for {@code after} m (its readings within {@code flat} of their greatest), while the robot goes
-     * straight: a doorway beside it, whose middle it is abreast of after {@code Metres} more (not in the
-     * thesis; {@link DoorwayWatch}); only towards floor not crossed yet. Fails before {@code odometry}
-     * or for levels and lengths out of order.
+     * From now on, signals {@code doorway(Side, Metres)} when a front sensor that read a wall (a
+     * reading of {@code level} or more for {@code wallSpan} m driven) reads nothing for
+     * {@code minGap} to {@code maxGap} m driven and the wall again, while the robot goes straight:
+     * a doorway beside it, whose middle it is abreast of after {@code Metres} more (not in the
+     * thesis; {@link DoorwayWatch}); only towards floor not crossed yet. Fails before {@code odometry} or for levels and lengths out of order.
      */
     @OPERATION
-    void doorwayWatch(double level, double before, double after, double flat, double minGap, double maxGap, double lookahead) {
-        if (map == null || !(level >= 1) || !(before >= 0) || !(after >= 0) || !(flat >= 0) || !(minGap > 0) || !(maxGap > minGap)
-                || !(lookahead > 0)) {
-            failed("doorwayWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1, 0 <= Flat and lengths"
-                    + " 0 <= Before, 0 <= After, 0 < MinGap < MaxGap, 0 < Lookahead, got " + level + ", " + before + ", " + after
-                    + ", " + flat + ", " + minGap + ", " + maxGap + ", " + lookahead);
+    void doorwayWatch(double level, double wallSpan, double minGap, double maxGap, double lookahead) {
+        if (map == null || !(level >= 1) || !(wallSpan >= 0) || !(minGap > 0) || !(maxGap > minGap) || !(lookahead > 0)) {
+            failed("doorwayWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and lengths 0 <= WallSpan,"
+                    + " 0 < MinGap < MaxGap, 0 < Lookahead, got " + level + ", " + wallSpan + ", " + minGap + ", " + maxGap + ", " + lookahead);
             return;
         }
-        doorways = new DoorwayWatch(level, before, after, flat, minGap, maxGap, lookahead);
+        doorways = new DoorwayWatch(level, wallSpan, minGap, maxGap, lookahead);
     }
 
     private void watchDoorways(double left, double right) {
