@@ -86,17 +86,7 @@ corridorSpan(0.15).
 steerCut(C) :- corridorSteer(_, M, _) & obstacleThresholds(W, _, _) & C = math.min(M, W).
 steerCut(C) :- corridorSteer(_, M, _) & not obstacleThresholds(_, _, _) & thesisWarning(W) & C = math.min(M, W).
 thesisWarning(350).
-inCorridor :- (walledIn(true) | entering) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// doorway entry, not in the thesis: on a straight leg along a wall, a front sensor that read the
-// wall (doorwayWatch's Level or more for WallSpan m) reads nothing for MinGap to MaxGap m, then the
-// wall again: a doorway beside the robot (the middleware's doorway(Side, Metres): its middle is
-// Lookahead m past where the gap was first seen, less half the gap). The robot drives on until
-// abreast of it, turns a quarter towards it and for doorwayEntry ms steers between its jambs as in
-// a corridor (inCorridor) instead of turning away from one: sliding along a wall, it passed the
-// passages of 9-20 cm it never entered (their mouths met side-on, 7-10 cm of gap seen)
-doorwayWatch(5, 0.2, 0.05, 0.2, 0.18).
-doorwayEntry(2500).
-entering :- enteredAt(T0) & doorwayEntry(E) & .system_time(T) & T - T0 < E.
+inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -114,8 +104,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (doorwayWatch(DL, DW, DMin, DMax, DA)) { doorwayWatch(DL, DW, DMin, DMax, DA) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
@@ -147,11 +136,6 @@ pausedUntil("-veering") :- veering.
 
 // steering through the corridor, a control step (40 ms) at a time; out of it, an obstacle still
 // there is avoided the usual way, and a straight leg follows the corridor (@moveAway)
-// a doorway seen beside: the leg under way ends, and the next move goes to it (@moveDoorway)
-@coverDoorway[atomic]
-+doorway(Side, Ahead) : doorwayEntry(_) & not avoiding & not veering & not entering
-    <- -+doorwayAhead(Side, Ahead); .succeed_goal(move(_)).
-
 @steerOn
 +!steer : inCorridor & delta(V) & cruiseSpeed(S) & corridorSteer(_, _, G)
     <- C = math.min(S, G * math.abs(V)); if (V > 0) { setSpeeds(S, S - C) } else { setSpeeds(S - C, S) };
@@ -177,14 +161,6 @@ pausedUntil("-veering") :- veering.
 @movePaused +!move(N) : pausedUntil(E) <- .wait(E); !move(N).
 @coverSteerStill +!move(_) : obstacle(true) & inCorridor <- +avoiding; !steer; -avoiding.
 @coverAvoidStill +!move(N) : obstacle(true) & delta(V) <- +avoiding; stop; !noteObstacle; !avoid(V).
-// abreast of the doorway, a quarter turn on the spot towards it (no avoidance meanwhile: the turn
-// sweeps the sensors over its jambs), then a leg into it, steered between the jambs (entering)
-@moveDoorway
-+!move(_) : doorwayAhead(Side, Ahead) & cruiseSpeed(V) & turnSpeed(S) & wheelGeometry(U, A)
-    <- -doorwayAhead(Side, Ahead); setSpeeds(V, V); .wait(Ahead / (V * U) * 1000);
-       +avoiding; if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) };
-       .wait(math.pi / 2 / (2 * S * U / A) * 1000); .system_time(T); -+enteredAt(T); -avoiding.
-@moveEnter +!move(_) : entering <- !straightLeg.
 // seeking (seekWindow above): the turn towards the next waypoint to the frontier, then the leg there
 // (just after an obstacle, the plans below: no turn on the spot then)
 @moveSeek

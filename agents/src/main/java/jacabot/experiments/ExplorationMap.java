@@ -203,27 +203,6 @@ final class ExplorationMap {
         return x;
     }
 
-    /**
-     * {@return whether the centre crossed any cell on the line from {@code ahead} m straight on, then
-     * a quarter turn ({@code left} or right), {@code from} to {@code to} m further} (floor beyond a
-     * doorway beside the robot, not all new)
-     */
-    boolean crossedBeyond(double ahead, boolean left, double from, double to) {
-        double px = x + ahead * Math.cos(heading), pz = z + ahead * Math.sin(heading);
-        double a = heading + (left ? Math.PI / 2 : -Math.PI / 2);
-        for (double d = from; d <= to + 1e-9; d += CELL / 2) {
-            if (visited.contains(key(px + d * Math.cos(a), pz + d * Math.sin(a)))) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** {@return whether both wheels go forward at the same speed} */
-    boolean straight() {
-        return left == right && left > 0;
-    }
-
     double z() {
         return z;
     }

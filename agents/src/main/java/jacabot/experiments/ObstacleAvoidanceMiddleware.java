@@ -270,38 +270,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The line beyond a doorway that must be new floor, metres from the robot's side (a doorway gone through before, or a gap between boxes in a room crossed, is not taken). */
-    static final double BEYOND_FROM = 0.2, BEYOND_TO = 0.5;
-    /** The doorway watch (null: off). */
-    private DoorwayWatch doorways;
-
-    /**
-     * From now on, signals {@code doorway(Side, Metres)} when a front sensor that read a wall (a
-     * reading of {@code level} or more for {@code wallSpan} m driven) reads nothing for
-     * {@code minGap} to {@code maxGap} m driven and the wall again, while the robot goes straight:
-     * a doorway beside it, whose middle it is abreast of after {@code Metres} more (not in the
-     * thesis; {@link DoorwayWatch}); only towards floor not crossed yet. Fails before {@code odometry} or for levels and lengths out of order.
-     */
-    @OPERATION
-    void doorwayWatch(double level, double wallSpan, double minGap, double maxGap, double lookahead) {
-        if (map == null || !(level >= 1) || !(wallSpan >= 0) || !(minGap > 0) || !(maxGap > minGap) || !(lookahead > 0)) {
-            failed("doorwayWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and lengths 0 <= WallSpan,"
-                    + " 0 < MinGap < MaxGap, 0 < Lookahead, got " + level + ", " + wallSpan + ", " + minGap + ", " + maxGap + ", " + lookahead);
-            return;
-        }
-        doorways = new DoorwayWatch(level, wallSpan, minGap, maxGap, lookahead);
-    }
-
-    private void watchDoorways(double left, double right) {
-        if (doorways == null) {
-            return;
-        }
-        double[] d = doorways.update(map.x(), map.z(), map.straight(), left, right);
-        if (d != null && !map.crossedBeyond(d[1], d[0] == 0, BEYOND_FROM, BEYOND_TO)) {
-            signal("doorway", d[0] == 0 ? "left" : "right", Math.round(d[1] * 1000) / 1000.0);
-        }
-    }
-
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -329,7 +297,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            watchDoorways(left, right);
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
