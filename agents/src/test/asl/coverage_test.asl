@@ -38,6 +38,14 @@ mock_operation(_, ok).
        !assert_true(mock_called(obstacleLevels(480, 300)));
        !assert_true(mock_called(deltaLimit(150))).
 
+// from 1.5 m2 on (closeArea), not only 2: a room of a split arena of 1.5-2 m2 stayed unvisited
+@[test]
++!test_set_up_from_one_and_a_half_square_metres_gives_closer_obstacle_levels
+    <- !forget_calls; -+arena(1.2, 1.4); !setUpCoverage;
+       !assert_true(mock_called(obstacleLevels(480, 300)));
+       !forget_calls; -+arena(1.2, 1.2); !setUpCoverage; -+arena(3, 3);
+       !assert_false(mock_called(obstacleLevels(_, _))).
+
 @[test]
 +!test_an_obstacle_on_the_left_turns_right_then_veers_away
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(40);

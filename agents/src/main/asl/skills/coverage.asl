@@ -34,8 +34,11 @@ exploreHorizon(0.6).
 // quarter or more of the arena's width unvisited, and coverage stayed under 50 % (wide generated
 // worlds under 2 m2 and 1 m across, run seed 1: 6 of 14 failed on coverage; with the closer levels
 // median coverage 50-53 % -> 73-74 %, and 10 -> 13 of 20 runs on ten more, held out, run seeds 1
-// and 2; the default 1 m world keeps the thesis' levels)
-closeArea(2).
+// and 2; the default 1 m world keeps the thesis' levels). closeArea 1.5 m2, not 2: a room of an
+// arena of 1.5-2 m2 split by a wall (wide tuning world 122, 1.17 x 1.46 m) stayed the robot's own
+// with the thesis' margin, 36 and 45 % against 65 and 64 % (wide tuning 101-160 x 1-2: 93 -> 95,
+// no other run changed; docs/comparison-obstacle-avoidance.md, "closer levels from 1.5 m2")
+closeArea(1.5).
 narrowSide(1).
 // seeking, not in the thesis, and on only in an agent that believes seekShare(S) (S = 0.3 was
 // measured: docs/comparison-wide.md): once fewer than seekBelow cells were new in the
