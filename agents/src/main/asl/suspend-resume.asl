@@ -33,6 +33,8 @@ quickTurns.
 // out (lowBattery comes again at every control step): a trip begun there left it halted
 // (insideArea), blind, with the cylinder (docs/comparison-wide.md)
 @rechargeOutOfArea +lowBattery : insideArea & ~delivered & not charging.
+// a cylinder knocked out of the gripper on the trip ends the trip no more (before recharge.asl)
+{ include("skills/trip-after-fall.asl") }
 { include("skills/recharge.asl") }
 // small turns on the way in an arc, not on the spot (before delivery: heading's turns come after)
 { include("skills/arc-turn.asl") }
