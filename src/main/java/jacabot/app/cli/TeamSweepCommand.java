@@ -143,9 +143,23 @@ final class TeamSweepCommand implements Callable<Integer> {
                                     o = TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
                                 } else {
                                     Files.createDirectories(dir);
-                                    try (PrintStream console = new PrintStream(Files.newOutputStream(dir.resolve("console.txt")), true,
-                                            java.nio.charset.StandardCharsets.UTF_8)) {
-                                        o = TeamDeliveryRun.agents(team, agent, seed, seconds, console, false, null);
+                                    // each console line after the simulated time of the last control step
+                                    var now = new java.util.concurrent.atomic.AtomicLong();
+                                    try (var file = Files.newBufferedWriter(dir.resolve("console.txt"));
+                                            PrintStream console = new PrintStream(new OutputStream() {
+                                                private final StringBuilder line = new StringBuilder();
+
+                                                @Override
+                                                public void write(int b) throws IOException {
+                                                    if (b != '\n') {
+                                                        line.append((char) b);
+                                                        return;
+                                                    }
+                                                    file.write(String.format(Locale.ROOT, "t=%.2f %s%n", now.get() / 1000.0, line));
+                                                    line.setLength(0);
+                                                }
+                                            }, true, java.nio.charset.StandardCharsets.ISO_8859_1)) {
+                                        o = TeamDeliveryRun.agents(team, agent, seed, seconds, console, false, now::set);
                                     }
                                     writeLogs(dir, team, o);
                                 }
