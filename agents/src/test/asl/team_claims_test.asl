@@ -2,8 +2,7 @@
 // sighted is claimed on the task board at its estimated place, give or take an error that grows
 // with its distance, swept on along the sighting's bearing beyond it, before the robot homes on it; one whose disc overlaps another robot's claim
 // is left alone only while that claim stands; one near a teammate is left alone; a cylinder
-// picked up is taken on the board, and put down where it is let go; a claim is released once, with a
-// teammate as a spot on the search map. Artifact operations are mocked (see
+// picked up is taken on the board, and put down where it is let go; a claim is released once. Artifact operations are mocked (see
 // agents/README.md "Testing skills"). Run: jacabot test agents/src/test/asl
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -156,24 +155,6 @@ mock_operation(_, ok).
        !releaseClaim(3); .wait(100);
        !assert_false(mock_called(release(_)));
        !assert_false(myClaim(3)).
-
-// with a teammate, a claim released (its cylinder seen, not taken) is a spot on the search map at the
-// claim's place; alone there is no map
-@[test]
-+!test_with_a_teammate_a_released_claim_is_a_spot_on_the_search_map
-    <- -homing(_); -myClaim(_); !forget_calls; -+picked(false); .my_name(Me); .abolish(robotAt(_, _, _));
-       +mock_operation(release(9), ok); +mock_operation(spotted(_, _), ok);
-       +claimed(9, Me, 0.3, -0.2, 0.15); +myClaim(9);
-       !releaseClaim(9);
-       !until(mock_called(release(9)), 1000);
-       !assert_false(mock_called(spotted(_, _)));
-       !forget_calls; +robotAt(khepera4, -0.3, -0.3); +myClaim(9);
-       !releaseClaim(9);
-       !until(mock_called(spotted(_, _)), 1000);
-       !assert_true(mock_called(release(9)));
-       !assert_true(mock_called(spotted(0.3, -0.2)));
-       !assert_false(myClaim(9));
-       -robotAt(khepera4, _, _); -claimed(9, Me, _, _, _).
 
 // with a teammate, the cylinder is taken once the gripper holds it, before it is picked up; let go
 // before that, its claim is put down where it is; alone, only the pick takes it

@@ -119,12 +119,6 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
 // is not this robot's any more, and no later claim must fail on releasing it. A claim is released
 // once: a homing given up as the battery runs low had both release it (-homing, +charging), and the
 // second release failed inside the recharge trip's atomic start (team world 80, two robots, seed 2)
-// not in the thesis: with teammates, the place of a claim released (its cylinder seen, not taken: the
-// homing given up, the battery low, another cylinder claimed) is a spot on the team's search map
-// (team-search), a search point before unseen floor: the cylinder was forgotten, and half the robots'
-// time went on searching (team tuning worlds 1-24, four robots: 49 %; one cylinder in ten never taken)
-@releaseClaimAsSpot
-+!releaseClaim(Id) : myClaim(Id) & teamSearch & .my_name(Me) & claimed(Id, Me, X, Z, _) <- -myClaim(Id); release(Id); spotted(X, Z).
 @releaseClaim +!releaseClaim(Id) : myClaim(Id) <- -myClaim(Id); release(Id).
 @claimReleasedAlready +!releaseClaim(_).
 @claimGoneAlready -!releaseClaim(_).
