@@ -77,6 +77,10 @@ final class TeamSweepCommand implements Callable<Integer> {
     @Option(names = "--no-progress", description = "no line per finished run (as the single-robot sweep's progress bar)")
     private boolean noProgress;
 
+    @Option(names = "--logs", description = "per agents' run, OUT/logs/W-Nr-sS/: the agents' console, every robot's "
+            + "event log and the world's cylinders (to see where the time and the cylinders went)")
+    private boolean logs;
+
     @Mixin
     private VerbosityOptions verbosity = new VerbosityOptions();
 
@@ -130,8 +134,35 @@ final class TeamSweepCommand implements Callable<Integer> {
                             Row row;
                             // one run's exception is that run's crash: the sweep goes on, as the single-robot sweep does
                             try {
-                                var o = c.equals("baseline") ? TeamDeliveryRun.baseline(team, seed, seconds)
-                                        : TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
+                                Path dir = logs && c.equals("agents")
+                                        ? out.resolve("logs").resolve(world + "-" + n + "r-s" + seed) : null;
+                                TeamDeliveryRun.Outcome o;
+                                if (c.equals("baseline")) {
+                                    o = TeamDeliveryRun.baseline(team, seed, seconds);
+                                } else if (dir == null) {
+                                    o = TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
+                                } else {
+                                    Files.createDirectories(dir);
+                                    // each console line after the simulated time of the last control step
+                                    var now = new java.util.concurrent.atomic.AtomicLong();
+                                    try (var file = Files.newBufferedWriter(dir.resolve("console.txt"));
+                                            PrintStream console = new PrintStream(new OutputStream() {
+                                                private final StringBuilder line = new StringBuilder();
+
+                                                @Override
+                                                public void write(int b) throws IOException {
+                                                    if (b != '\n') {
+                                                        line.append((char) b);
+                                                        return;
+                                                    }
+                                                    file.write(String.format(Locale.ROOT, "t=%.2f %s%n", now.get() / 1000.0, line));
+                                                    line.setLength(0);
+                                                }
+                                            }, true, java.nio.charset.StandardCharsets.ISO_8859_1)) {
+                                        o = TeamDeliveryRun.agents(team, agent, seed, seconds, console, false, now::set);
+                                    }
+                                    writeLogs(dir, team, o);
+                                }
                                 row = new Row(world, n, c, seed, o, "");
                             } catch (RuntimeException e) {
                                 row = new Row(world, n, c, seed, null, SweepRun.describe(e));
@@ -162,6 +193,20 @@ final class TeamSweepCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** Writes every robot's event log (prefixed with its name) and the world's cylinders, storage and charger. */
+    private static void writeLogs(Path dir, WorldSpec team, TeamDeliveryRun.Outcome o) throws IOException {
+        var sb = new StringBuilder();
+        for (RunSummary s : o.robots()) {
+            s.events().forEach(e -> sb.append(s.robot()).append(' ').append(e).append('\n'));
+        }
+        Files.writeString(dir.resolve("events.txt"), sb);
+        var w = new StringBuilder(String.format(Locale.ROOT, "arena %.3f %.3f%nstorage %.3f %.3f %.3f%ncharger %.3f %.3f%n",
+                team.arena().width(), team.arena().depth(), team.storage().x(), team.storage().z(), team.storage().radius(),
+                team.charger().x(), team.charger().z()));
+        team.cylinders().forEach(c -> w.append(String.format(Locale.ROOT, "cylinder %s %.3f %.3f%n", c.id(), c.x(), c.z())));
+        Files.writeString(dir.resolve("world.txt"), w);
+    }
+
     private static List<Long> seedsOf(String option, String text) {
         try {
             return SweepPlan.seeds(text);
@@ -189,20 +234,23 @@ final class TeamSweepCommand implements Callable<Integer> {
 
     static String csv(List<Row> rows) {
         var sb = new StringBuilder("world,robots,controller,seed,deliveries,per_robot,max_contact_s,max_robot_contact_s,claims,"
-                + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason\n");
+                + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason,battery_min\n");
         for (Row r : rows) {
             if (r.crashed()) {
-                sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,0,,,,,,,,,false,\"%s\"%n", r.world(), r.robots(),
+                sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,0,,,,,,,,,false,\"%s\",%n", r.world(), r.robots(),
                         r.controller(), r.seed(), ("crash: " + r.crash()).replace("\"", "\"\"")));
                 continue;
             }
             var o = r.outcome();
             String per = o.robots().stream().map(s -> Integer.toString(s.deliveries())).collect(Collectors.joining(" "));
             double contact = o.robots().stream().mapToDouble(RunSummary::contactTime).max().orElse(0);
-            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\"%n",
+            // each robot's lowest energy, J: a battery near empty shows before one runs empty
+            String lowest = o.robots().stream().map(s -> s.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", s.batteryMin()))
+                    .collect(Collectors.joining(" "));
+            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\",%s%n",
                     r.world(), r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.figures().maxRobotContact(),
                     o.claims(), o.figures().doubleClaims(), o.chargerWaits(), o.figures().longestChargerWait(),
-                    o.figures().batteriesEmptied(), success(o), reason(o).replace("\"", "\"\"")));
+                    o.figures().batteriesEmptied(), success(o), reason(o).replace("\"", "\"\""), lowest));
         }
         return sb.toString();
     }

@@ -106,7 +106,7 @@ class WorldAndSweepCommandTest {
         String crash = TeamSweepCommand.csv(List.of(
                 new TeamSweepCommand.Row(7, 4, "agents", 2, null, "IllegalStateException: \"no robot\" at TeamLockstepRun.step:12")));
         assertEquals("team-delivery-gen-7,4,agents,2,0,,,,,,,,,false,\"crash: IllegalStateException: \"\"no robot\"\" at "
-                + "TeamLockstepRun.step:12\"", crash.lines().skip(1).findFirst().orElseThrow());
+                + "TeamLockstepRun.step:12\",", crash.lines().skip(1).findFirst().orElseThrow());
     }
 
     @Test
