@@ -14,6 +14,12 @@ legSpeed(V) :- not picked(true) & travelSpeed(V).
 waypointPatience(60000).
 waypointProgress(off).
 quickTurns.
+// the sweep heads for look points at most this far apart (m) and looks around at each, not along
+// lanes (skills/look-points.asl, navigation's search at navigation's 1.0 m: fewer points leave the
+// battery, no charger here, for the room beyond the inner wall), and a following towards one begun
+// alongside the wall turns to it first (way-round.asl): wide tuning 101-160 x 1-2 115 -> 119 of 120
+lookSpacing(1.5).
+turnToWall.
 
 !start.
 
@@ -46,5 +52,6 @@ setUpGoal(setUpLocation).
 // +stuck plan escapes otherwise)
 @stuckWhileBusy +stuck : picking | picked(true) | avoiding.
 
+{ include("skills/look-points.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
