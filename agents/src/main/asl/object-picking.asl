@@ -1,8 +1,9 @@
 // Experiment 2: red-cylinder picking (thesis Chapter 4 §2), with the Khepera: random motion and
 // obstacle avoidance, and a red cylinder seen is picked up (skills/picking.asl), or gone to when
 // seen far off (skills/far-sight.asl). With the Khepera's GPS and compass (location, orientation)
-// a sweep of the arena (skills/sweep.asl, navigation's search) finds the cylinders the random walk
-// misses. arena(W, D) comes from the world file (the launcher adds it as an initial belief).
+// a sweep of the arena by look points (skills/look-points.asl, skills/sweep.asl: navigation's
+// search) finds the cylinders the random walk misses. arena(W, D) comes from the world file (the
+// launcher adds it as an initial belief).
 // The thesis' plans as published: as-published/object-picking.asl.
 
 middlewareClass("jacabot.experiments.ObjectPickingMiddleware").
