@@ -1,8 +1,9 @@
 // Experiment 2: red-cylinder picking (thesis Chapter 4 §2), with the Khepera: random motion and
 // obstacle avoidance, and a red cylinder seen is picked up (skills/picking.asl), or gone to when
 // seen far off (skills/far-sight.asl). With the Khepera's GPS and compass (location, orientation)
-// a sweep of the arena (skills/sweep.asl, navigation's search) finds the cylinders the random walk
-// misses. arena(W, D) comes from the world file (the launcher adds it as an initial belief).
+// a sweep of the arena by look points (skills/look-points.asl, skills/sweep.asl: navigation's
+// search) finds the cylinders the random walk misses. arena(W, D) comes from the world file (the
+// launcher adds it as an initial belief).
 // The thesis' plans as published: as-published/object-picking.asl.
 
 middlewareClass("jacabot.experiments.ObjectPickingMiddleware").
@@ -14,6 +15,12 @@ legSpeed(V) :- not picked(true) & travelSpeed(V).
 waypointPatience(60000).
 waypointProgress(off).
 quickTurns.
+// the sweep heads for look points at most this far apart (m) and looks around at each, not along
+// lanes (skills/look-points.asl, navigation's search at navigation's 1.0 m: fewer points leave the
+// battery, no charger here, for the room beyond the inner wall), and a following towards one begun
+// alongside the wall turns to it first (way-round.asl): wide tuning 101-160 x 1-2 115 -> 119 of 120
+lookSpacing(1.5).
+turnToWall.
 
 !start.
 
@@ -46,5 +53,6 @@ setUpGoal(setUpLocation).
 // +stuck plan escapes otherwise)
 @stuckWhileBusy +stuck : picking | picked(true) | avoiding.
 
+{ include("skills/look-points.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }

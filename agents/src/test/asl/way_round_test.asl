@@ -195,3 +195,19 @@ mock_operation(_, ok).
        !assert_false(detoured(_));                                 // the way clear: no detour
        -delivering; -delta(_); -gapComputed; -balanced.
 
+
+// an agent that believes turnToWall: a following just begun with the wall seen by the other front
+// sensor alone turns on the spot (away from the side chosen) instead of arcing towards nothing;
+// later in the following, or without the belief, the wall lost is the arc as before
+@[test]
++!test_a_following_begun_with_the_wall_on_the_other_side_turns_to_it_first
+    <- .system_time(T); +followingWall(right, T, 1); +turnToWall; !forget_calls;
+       !steerAlong(0, 110, 1);                                   // the wall ahead-left only
+       !assert_true(mock_called(setSpeeds(-25, 25)));
+       !forget_calls; -followingWall(right, T, 1); +followingWall(right, T - 3000, 1);
+       !steerAlong(0, 110, 1);                                   // 3 s on: the wall lost
+       !assert_true(mock_called(setSpeeds(70, 21)));
+       !forget_calls; -turnToWall; -followingWall(right, T - 3000, 1); +followingWall(right, T, 1);
+       !steerAlong(0, 110, 1);                                   // without the belief: the arc
+       !assert_true(mock_called(setSpeeds(70, 21)));
+       -followingWall(right, T, 1).

@@ -26,6 +26,7 @@ wallNear(200).        // a front sensor's reading over this: something near ahea
 // a fall drops every desire (delivery's @fallCylinder): a following it cut short is forgotten with them,
 // else every obstacle met after it was taken for the wall (@obstacleWhileFollowing) and not avoided
 forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
+// turnToWall (the agent's, optional: see @wallOnOtherSide).
 // rehitsToFollow(N) (the agent's, optional: obstacles met near here on this trip before a following
 // begins; 1 without it).
 // followLooped (a rule of another skill, optional: look-points.asl's; a following it holds for is
@@ -178,6 +179,13 @@ canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(
 // middleware raises no obstacle from it while a cylinder is held): the robot turned and arced into
 // it in turn, pressed against it for 40 s (wide world 114, seed 1)
 @wallAhead +!steerAlong(N, F, Sign) : wallNear(L) & (F > L | N > 480 | (centralSensor(C) & C > L)) & maxSpeed(M) <- !wheels(-M / 4, M / 4, Sign).
+// an agent that believes turnToWall: a following begun with the wall seen by the other front sensor
+// alone (the sweep slid along it and turned towards its waypoint) turns on the spot while the wall
+// is not yet on the side chosen (the arc for a wall lost circled on the spot until the loop check)
+@wallOnOtherSide
++!steerAlong(N, F, Sign) : turnToWall & N < 60 & F > 60 & followingWall(_, T0, _) & .system_time(T) & minFollow(Min) & T - T0 < Min
+                           & maxSpeed(M)
+    <- !wheels(-M / 4, M / 4, Sign).
 @tooClose +!steerAlong(N, F, Sign) : N > 300 & followSpeed(V) <- !wheels(V / 2, V, Sign).
 @alongside +!steerAlong(N, F, Sign) : N > 60 & followSpeed(V) <- !wheels(V, V * 0.85, Sign).
 @wallLost +!steerAlong(N, F, Sign) : followSpeed(V) <- !wheels(V, V * 0.3, Sign).
