@@ -1,10 +1,14 @@
 package jacabot.app.cli;
 
 import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.io.PrintWriter;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.util.Locale;
+import java.util.function.LongSupplier;
 
 /** The commands print through picocli's writers; the run drivers want a PrintStream: this joins them. */
 final class ConsoleStreams {
@@ -34,5 +38,38 @@ final class ConsoleStreams {
             }
         };
         return new PrintStream(bytes, true, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * {@return a PrintStream whose lines go to {@code file}, each after {@code t=S.SS }, the simulated
+     * time in seconds that {@code millis} gives when the line is printed (a sweep's console kept per run)};
+     * closing it flushes {@code file} and leaves it open
+     */
+    static PrintStream stamped(Writer file, LongSupplier millis) {
+        return of(new PrintWriter(new Writer() {
+            private boolean lineStart = true;
+
+            @Override
+            public void write(char[] chars, int off, int len) throws IOException {
+                for (int i = off; i < off + len; i++) {
+                    if (lineStart) {
+                        file.write(String.format(Locale.ROOT, "t=%.2f ", millis.getAsLong() / 1000.0));
+                        lineStart = false;
+                    }
+                    file.write(chars[i]);
+                    lineStart = chars[i] == '\n';
+                }
+            }
+
+            @Override
+            public void flush() throws IOException {
+                file.flush();
+            }
+
+            @Override
+            public void close() throws IOException {
+                flush();
+            }
+        }));
     }
 }

@@ -25,6 +25,7 @@ import java.util.concurrent.ConcurrentSkipListMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -142,26 +143,7 @@ final class TeamSweepCommand implements Callable<Integer> {
                                 } else if (dir == null) {
                                     o = TeamDeliveryRun.agents(team, agent, seed, seconds, quiet, false, null);
                                 } else {
-                                    Files.createDirectories(dir);
-                                    // each console line after the simulated time of the last control step
-                                    var now = new java.util.concurrent.atomic.AtomicLong();
-                                    try (var file = Files.newBufferedWriter(dir.resolve("console.txt"));
-                                            PrintStream console = new PrintStream(new OutputStream() {
-                                                private final StringBuilder line = new StringBuilder();
-
-                                                @Override
-                                                public void write(int b) throws IOException {
-                                                    if (b != '\n') {
-                                                        line.append((char) b);
-                                                        return;
-                                                    }
-                                                    file.write(String.format(Locale.ROOT, "t=%.2f %s%n", now.get() / 1000.0, line));
-                                                    line.setLength(0);
-                                                }
-                                            }, true, java.nio.charset.StandardCharsets.ISO_8859_1)) {
-                                        o = TeamDeliveryRun.agents(team, agent, seed, seconds, console, false, now::set);
-                                    }
-                                    writeLogs(dir, team, o);
+                                    o = agentsWithLogs(team, agent, seed, seconds, dir);
                                 }
                                 row = new Row(world, n, c, seed, o, "");
                             } catch (RuntimeException e) {
@@ -191,6 +173,20 @@ final class TeamSweepCommand implements Callable<Integer> {
         report.lines().forEach(log::result);
         log.result("Written: " + out.resolve("runs.csv") + ", " + out.resolve("report.md"));
         return 0;
+    }
+
+    /** The agents' run, its console (each line after its simulated time), event logs and world written to {@code dir}. */
+    private static TeamDeliveryRun.Outcome agentsWithLogs(WorldSpec team, AgentSource agent, long seed, double seconds, Path dir)
+            throws Exception {
+        Files.createDirectories(dir);
+        var now = new AtomicLong(); // the simulated time of the last control step, ms
+        TeamDeliveryRun.Outcome o;
+        try (var file = Files.newBufferedWriter(dir.resolve("console.txt"));
+                PrintStream console = ConsoleStreams.stamped(file, now::get)) {
+            o = TeamDeliveryRun.agents(team, agent, seed, seconds, console, false, now::set);
+        }
+        writeLogs(dir, team, o);
+        return o;
     }
 
     /** Writes every robot's event log (prefixed with its name) and the world's cylinders, storage and charger. */

@@ -94,6 +94,28 @@ class WorldAndSweepCommandTest {
     }
 
     @Test
+    void aTeamSweepKeepsEachAgentsRunsLogsWhenAsked(@TempDir Path dir) throws Exception {
+        var r = CliRun.run("sweep", "team-delivery", "--robots", "2", "--world-seeds", "3", "--seeds", "1", "--duration", "4s",
+                "--controllers", "agents", "--logs", "--no-progress", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        Path run = dir.resolve("logs").resolve("3-2r-s1");
+        List<String> console = Files.readAllLines(run.resolve("console.txt"));
+        assertFalse(console.isEmpty());
+        // every line after the simulated time it was printed at, never beyond the run's 4 s
+        for (String line : console) {
+            assertTrue(line.matches("t=\\d\\.\\d\\d .*"), line);
+        }
+        List<String> world = Files.readAllLines(run.resolve("world.txt"));
+        assertTrue(world.get(0).startsWith("arena "), world.get(0));
+        assertTrue(world.stream().anyMatch(l -> l.startsWith("cylinder ")), world.toString());
+        assertTrue(Files.exists(run.resolve("events.txt")));
+        String header = Files.readAllLines(dir.resolve("runs.csv")).get(0);
+        assertTrue(header.endsWith(",battery_min"), header);
+        String row = Files.readAllLines(dir.resolve("runs.csv")).get(1);
+        assertTrue(row.matches(".*,\\d+ \\d+$"), row); // both robots' lowest energy
+    }
+
+    @Test
     void aTeamSweepWritesARowPerRunAndACrashAsARow(@TempDir Path dir) throws Exception {
         var r = CliRun.run("sweep", "team-delivery", "--robots", "1,2", "--world-seeds", "1", "--seeds", "1", "--duration", "3s",
                 "--controllers", "baseline", "--jobs", "2", "--no-progress", "--out", dir.toString());
