@@ -11,13 +11,11 @@ knockFetch(20000).    // ms after a fall by the storage area that picking is all
                       // the turn to it and picking's slow approach (a window of 10 s ended 0.2 s after the pick)
 knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall counts as by the storage area
 gripReach(0.05).      // m ahead of the robot's centre where the gripper takes a cylinder
-pileAsideWithin(0.25). // m from the robot's centre to the storage point within which the pile seen aside is not reached for
 // Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D), location, orientation (the middleware's); storagePoint(X, Z),
-// storageRadius(R) (the world's); stored(N) (delivery); reachCylinder, picking, pickingOff (picking).
+// storageRadius(R) (the world's); stored(N) (delivery).
 // Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
-// Needs: search-memory (@backOffFirst), avoidance, picking. Include it before avoidance (its obstacle plans come
-// after) and picking (its side-reach plans come after).
+// Needs: search-memory (@backOffFirst), avoidance. Include it before avoidance (its obstacle plans come after).
 
 @knockedBeside +lostBeside <- .system_time(T); -+knockedAt(T).
 justKnocked :- knockedAt(T0) & knockedAside(A) & .system_time(T) & T - T0 < A & not avoiding & not picking & not reachCylinder(true).
@@ -46,19 +44,3 @@ fallenNearStorage :- knockFetchWithin(M) & storageWithin(M).
 fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W & not pileAhead.
 pileAhead :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & gripReach(G) & storagePoint(Sx, Sz) & storageRadius(R)
     & H = O * math.pi / 180 & Dx = X + G * math.cos(H) - Sx & Dz = Z + G * math.sin(H) - Sz & Dx * Dx + Dz * Dz < R * R.
-
-// Not into the pile either (not in the thesis): red in the camera's side section while the stored pile lies
-// ahead on that side, within pileAsideWithin, is the pile, and picking's lateral reach is not begun: it turned
-// the robot to the pile and crept into it, 5-30 s a time, and a creep into the pile pushes stored cylinders out
-// (tidy-up world 207 × 1, four reaches in 30 s by the storage area). A fetch after a fall there reaches as before.
-// The pile within 45 degrees of the heading; Across > 0 is on the right (the orientation turns clockwise, x to z).
-pileOnSide(Side) :- stored(N) & N > 0 & not fetchingKnocked & pileAsideWithin(W) & location(X, _, Z) & orientation(O)
-    & storagePoint(Sx, Sz) & (Sx - X) * (Sx - X) + (Sz - Z) * (Sz - Z) < W * W & H = O * math.pi / 180
-    & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H) & Across = (Sz - Z) * math.cos(H) - (Sx - X) * math.sin(H)
-    & Along > 0 & math.abs(Across) < Along & sideOf(Across, Side).
-sideOf(A, "right") :- A > 0.
-sideOf(A, "left") :- A <= 0.
-@pileOnLeft +cylinderLeft : reachCylinder(false) & not picking & not pickingOff & pileOnSide("left")
-    <- .print("The stored pile on the left: no reach").
-@pileOnRight +cylinderRight : reachCylinder(false) & not picking & not pickingOff & pileOnSide("right")
-    <- .print("The stored pile on the right: no reach").
