@@ -17,6 +17,9 @@ quickTurns.
 // the sweep heads for look points at most this far apart (m) and looks around at each, not along
 // lanes (skills/look-points.asl; wide tuning 101-160 x 1-2: 98 -> 107 of 120, held out 103 -> 106)
 lookSpacing(1.0).
+// a look point's 60 s are stretched while the robot came nearer it within the last 10 s (look-points.asl;
+// wide tuning 101-160 x 1-2: 108 -> 109 of 120, held out 106 -> 106, classic 143 -> 143)
+lookNearing(10000).
 
 !start.
 

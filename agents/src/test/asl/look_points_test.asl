@@ -14,11 +14,15 @@ storagePoint(1, 0.5).
 storageClearance(0.15).      // delivery's
 location(0.9, 0, -0.4).
 
+mock_operation(computeAngle(_, _, _, _, 45), ok).
 mock_operation(_, ok).
 
 // what the skill needs of sweep (its look around is 6.8 s: no maxSpeed here, this one instead) and recovery
 +!lookAround <- +looked.
 +!escape <- +escaped.
+// heading's, for the step towards a point kept
++!balance.
++!aimAt(X, Z) <- -+aim(X, Z).
 
 @[test]
 +!test_the_look_points_are_a_grid_off_the_storage_area_the_nearest_first
@@ -63,3 +67,21 @@ mock_operation(_, ok).
        !assert_false(avoiding);
        !assert_true(escaped);
        !assert_true(waypoint(0, 0.5, _)).
+
+// a look point whose patience ran out while the robot still came nearer it is kept (its clock set
+// to run out lookNearing after the last approach); one the robot came no nearer is skipped, and so
+// is one kept lookPointMost in all
+@[test]
++!test_a_look_point_still_neared_is_kept_past_its_patience
+    <- -+sweep([[0, 0.5]]); -+location(-0.9, 0, -0.2); +waypointPatience(60000); +lookNearing(10000);
+       .system_time(T); -+waypoint(-1, -0.5, T - 61000); -+lookPointSet(-1, -0.5, T - 61000);
+       -+closest(0.3); -+closerAt(T - 4000);
+       !sweepStep;                                                      // neared 4 s ago: kept
+       !assert_true(waypoint(-1, -0.5, T2) & T2 > T - 55000);
+       -+closerAt(T - 11000); -+waypoint(-1, -0.5, T - 61000);
+       !sweepStep;                                                      // not for 11 s: skipped
+       !assert_true(waypoint(0, 0.5, _));
+       -+sweep([[0, 0.5]]); -+closerAt(T - 2000); -+waypoint(-1, -0.5, T - 61000); -+lookPointSet(-1, -0.5, T - 121000);
+       !sweepStep;                                                      // 121 s in all: skipped
+       !assert_true(waypoint(0, 0.5, _));
+       -waypointPatience(60000); -lookNearing(10000).
