@@ -86,8 +86,9 @@ corridorSteer(15, 400, 0.3).
 corridorSpan(0.15).
 // the cut-off stays under the level that signals an obstacle (obstacleThresholds', else the
 // middleware's default, the thesis' 350): over it, the robot steered on with a sensor at 350-400
-steerCut(C) :- corridorSteer(_, M, _) & obstacleThresholds(W, _, _) & C = math.min(M, W).
-steerCut(C) :- corridorSteer(_, M, _) & not obstacleThresholds(_, _, _) & thesisWarning(W) & C = math.min(M, W).
+steerCut(C) :- corridorSteer(_, M, _) & warningLevel(W) & C = math.min(M, W).
+warningLevel(W) :- obstacleThresholds(W, _, _).
+warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
