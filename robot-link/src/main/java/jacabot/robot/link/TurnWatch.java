@@ -23,6 +23,7 @@ import java.util.function.LongSupplier;
 public final class TurnWatch {
     static final int WINDOW = 1_000;
     /** {@code -Djacabot.turns.minShare=0} keeps the turns whatever the share: to measure them on a loaded machine. */
+    private static final double DEFAULT_MIN_SHARE = 0.7;
     static final double MIN_SHARE = minShare(System.getProperty("jacabot.turns.minShare"));
 
     private final LongSupplier threadCpuNanos;
@@ -45,7 +46,7 @@ public final class TurnWatch {
     /** The threshold a measurer set, or 0.7; a value that is no share from 0 to 1 is said and ignored. */
     static double minShare(String set) {
         if (set == null) {
-            return 0.7;
+            return DEFAULT_MIN_SHARE;
         }
         try {
             double share = Double.parseDouble(set.trim());
@@ -55,8 +56,8 @@ public final class TurnWatch {
         } catch (NumberFormatException notANumber) {
             // said below
         }
-        System.err.println("jacabot.turns.minShare: '" + set + "' is no share from 0 to 1; 0.7 is used");
-        return 0.7;
+        System.err.println("jacabot.turns.minShare: '" + set + "' is no share from 0 to 1; " + DEFAULT_MIN_SHARE + " is used");
+        return DEFAULT_MIN_SHARE;
     }
 
     private static LongSupplier threadCpu() {
