@@ -38,29 +38,17 @@ final class FailedQueries {
         }
         int n = q.arity();
         Object[] args = n == 0 ? NO_ARGS : new Object[n];
-        Var first = null; // the variables seen, without a list for the usual one or two
-        Var second = null;
-        List<Var> more = null;
+        List<Var> vars = null;
         for (int i = 0; i < n; i++) {
             Term a = w.deref(q.arg(i));
             if (a instanceof Var v) {
-                int k;
-                if (first == null || first.equals(v)) {
-                    first = v;
-                    k = 0;
-                } else if (second == null || second.equals(v)) {
-                    second = v;
-                    k = 1;
-                } else {
-                    if (more == null) {
-                        more = new ArrayList<>(2);
-                    }
-                    k = more.indexOf(v);
-                    if (k < 0) {
-                        k = more.size();
-                        more.add(v);
-                    }
-                    k += 2;
+                if (vars == null) {
+                    vars = new ArrayList<>(2);
+                }
+                int k = vars.indexOf(v);
+                if (k < 0) {
+                    k = vars.size();
+                    vars.add(v);
                 }
                 args[i] = k; // an Integer: no term equals it
             } else if (a.isGround()) {
