@@ -365,12 +365,7 @@ final class Proof {
         if (e.rule() != null) {
             Rule r = e.rule();
             Solver.Renaming renaming = solver.renaming(e);
-            Literal head = (Literal) renaming.map(r.head());
-            if (!w.unifiesIgnoringAnnots(q, head)) {
-                return false;
-            }
-            if ((!q.annots().isEmpty() || q.tail() != null) && !w.unifies(q, head)) {
-                w.undoTo(mark);
+            if (!renaming.headUnifies(q, r.head(), w)) {
                 return false;
             }
             if (depth >= MAX_DEPTH) {

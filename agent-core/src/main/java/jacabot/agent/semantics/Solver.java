@@ -303,6 +303,38 @@ public final class Solver {
             return v;
         }
 
+        /**
+         * {@return whether the rule's head, renamed, unifies with query {@code q} as a proof enters the
+         * rule: without annotations, then with them if the query has some} Nothing stays bound when
+         * not. Where neither has a namespace and the query no annotations (nearly always), the
+         * arguments are unified one by one, in the order the literals' unification takes, and the
+         * renamed head is not built.
+         */
+        boolean headUnifies(Literal q, Literal head, Unifier w) {
+            int mark = w.size();
+            if (q.annots().isEmpty() && q.tail() == null && q.ns() == null && head.ns() == null) {
+                if (!q.sameName(head)) {
+                    return false;
+                }
+                for (int i = 0, n = q.arity(); i < n; i++) {
+                    if (!w.unifies(q.arg(i), map(head.arg(i)))) {
+                        w.undoTo(mark);
+                        return false;
+                    }
+                }
+                return true;
+            }
+            Literal h = (Literal) map(head);
+            if (!w.unifiesIgnoringAnnots(q, h)) {
+                return false;
+            }
+            if ((!q.annots().isEmpty() || q.tail() != null) && !w.unifies(q, h)) {
+                w.undoTo(mark);
+                return false;
+            }
+            return true;
+        }
+
         private Var fresh(int i) {
             Var f = fresh[i];
             if (f == null) {
