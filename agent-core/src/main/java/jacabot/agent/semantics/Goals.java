@@ -41,24 +41,30 @@ final class Goals {
         return r;
     }
 
-    /** {@return the goals of conjunction {@code e} (this node's goal): its left part, its right part, then {@link #next}} */
+    /**
+     * {@return the goals of conjunction {@code e}: its left part, its right part, then {@link #next}}
+     * {@code e} is this node's goal, or the value of a variable the goal is, which is renamed no further
+     * and may differ at the next visit.
+     */
     Goals conjunction(LogExpr e) {
-        Goals g = first;
+        Solver.Renaming rn = e == goal ? renaming : null;
+        Goals g = rn == null ? null : first;
         if (g == null) {
-            g = new Goals(e.left(), new Goals(e.right(), next, depth, renaming), depth, renaming);
-            if (renaming != null) {
+            g = new Goals(e.left(), new Goals(e.right(), next, depth, rn), depth, rn);
+            if (rn != null) {
                 first = g;
             }
         }
         return g;
     }
 
-    /** {@return the goals of disjunction {@code e}'s left or right part (this node's goal), then {@link #next}} */
+    /** {@return the goals of disjunction {@code e}'s left or right part, then {@link #next}} ({@code e} as in {@link #conjunction}) */
     Goals disjunct(LogExpr e, boolean right) {
-        Goals g = right ? second : first;
+        Solver.Renaming rn = e == goal ? renaming : null;
+        Goals g = rn == null ? null : right ? second : first;
         if (g == null) {
-            g = new Goals(right ? e.right() : e.left(), next, depth, renaming);
-            if (renaming != null) {
+            g = new Goals(right ? e.right() : e.left(), next, depth, rn);
+            if (rn != null) {
                 if (right) {
                     second = g;
                 } else {
