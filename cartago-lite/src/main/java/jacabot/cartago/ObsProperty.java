@@ -12,6 +12,8 @@ public final class ObsProperty {
     private final PropertyStore store;
     private final String name;
     private Object[] values;
+    /** Whether the property is among its artifact's working ones (kept by {@link PropertyStore}, which checks it per update). */
+    boolean attached = true;
 
     ObsProperty(PropertyStore store, String name, Object[] values) {
         this.store = store;

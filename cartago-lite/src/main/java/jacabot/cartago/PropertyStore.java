@@ -76,11 +76,12 @@ final class PropertyStore {
             throw new IllegalArgumentException("no observable property " + name + " in " + owner.id().name());
         }
         working.remove(p);
+        p.attached = false;
     }
 
     void checkWritable(ObsProperty property) {
         owner.checkInStep();
-        if (!containsSame(working, property)) {
+        if (!property.attached) {
             throw new IllegalStateException("observable property " + property.getName() + " was removed from " + owner.id().name());
         }
     }
@@ -163,9 +164,13 @@ final class PropertyStore {
 
     /** Forgets every change since the last commit, including definitions and removals. */
     void rollback() {
+        for (ObsProperty p : working) {
+            p.attached = false;
+        }
         working.clear();
         for (Committed c : committed) {
             c.property().restore(c.values());
+            c.property().attached = true;
             working.add(c.property());
         }
     }

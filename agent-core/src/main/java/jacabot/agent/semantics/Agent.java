@@ -313,12 +313,6 @@ public final class Agent {
         internalActions.put(name, ia);
     }
 
-    /** {@return a variable that no other variable equals} */
-    /**
-     * {@return a variable no other has, for renaming apart} Its number comes from the counter its
-     * parser shares with the other agents of the system, as Jason's unnamed variables ({@code _41})
-     * come from one counter.
-     */
     /**
      * {@return a variable no other has, for a renaming Jason does not make (its number is not one
      * of the counter's: Jason's would not have been taken)}
@@ -358,6 +352,22 @@ public final class Agent {
         }
     }
 
+    /** Takes the numbers {@code n} calls of {@link #freshVar} would take, at once. {@return the first of them} */
+    long freshSerials(int n) {
+        freshTaken += n;
+        if (parser != null) {
+            return parser.varCounter().getAndAdd(n) + 1;
+        }
+        long first = freshSerial + 1;
+        freshSerial += n;
+        return first;
+    }
+
+    /**
+     * {@return a variable no other has, for renaming apart} Its number comes from the counter its
+     * parser shares with the other agents of the system, as Jason's unnamed variables ({@code _41})
+     * come from one counter.
+     */
     public Var freshVar(Var like) {
         freshTaken++;
         return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);

@@ -38,19 +38,6 @@ final class Proof {
         }
     }
 
-    /** Goals still to prove, first first, each with the depth of rules it comes from. */
-    private static final class Goals {
-        final Term goal;
-        final Goals next;
-        final int depth;
-
-        Goals(Term goal, Goals next, int depth) {
-            this.goal = goal;
-            this.next = next;
-            this.depth = depth;
-        }
-    }
-
     /** A choice point: the trail mark and the goals after the choice. */
     private abstract static class Choice {
         final int mark;
@@ -104,7 +91,7 @@ final class Proof {
         boolean found;
         if (!started) {
             started = true;
-            goals = new Goals(formula, null, startDepth);
+            goals = new Goals(formula, null, startDepth, null);
             found = run();
         } else {
             found = backtrack() && run();
@@ -222,7 +209,7 @@ final class Proof {
             }
             Goals g = goals;
             goals = g.next;
-            if (!step(g.goal, g.depth) && !backtrack()) {
+            if (!step(g) && !backtrack()) {
                 return false;
             }
         }
@@ -253,8 +240,9 @@ final class Proof {
     }
 
     /** One goal: {@return false when it fails here} (goals then holds what follows it) */
-    private boolean step(Term goal, int depth) {
-        Term f = w.deref(goal);
+    private boolean step(Goals g) {
+        int depth = g.depth;
+        Term f = w.deref(g.goal());
         if (f instanceof AnnotatedVar av) {
             Term value = w.apply(av);
             if (!(value instanceof Literal)) {
@@ -280,11 +268,11 @@ final class Proof {
                     return !provable;
                 }
                 case AND:
-                    goals = new Goals(e.left(), new Goals(e.right(), goals, depth), depth);
+                    goals = g.conjunction(e);
                     return true;
                 default:
-                    push(new Alternative(w.size(), new Goals(e.right(), goals, depth)));
-                    goals = new Goals(e.left(), goals, depth);
+                    push(new Alternative(w.size(), g.disjunct(e, true)));
+                    goals = g.disjunct(e, false);
                     return true;
             }
         }
@@ -377,19 +365,14 @@ final class Proof {
         if (e.rule() != null) {
             Rule r = e.rule();
             Solver.Renaming renaming = solver.renaming(e);
-            Literal head = (Literal) renaming.map(r.head());
-            if (!w.unifiesIgnoringAnnots(q, head)) {
-                return false;
-            }
-            if ((!q.annots().isEmpty() || q.tail() != null) && !w.unifies(q, head)) {
-                w.undoTo(mark);
+            if (!renaming.headUnifies(q, r.head(), w)) {
                 return false;
             }
             if (depth >= MAX_DEPTH) {
                 throw new TooDeep();
             }
-            // the body is renamed only once the head matched
-            goals = new Goals(renaming.map(r.body()), rest, depth + 1);
+            // the body is renamed only once the head matched, goal by goal as the proof reaches each
+            goals = new Goals(r.body(), rest, depth + 1, renaming);
             return true;
         }
         Literal belief = e.isGround() ? e.literal() : solver.renameApart(e.literal());

@@ -247,14 +247,14 @@ public final class Solver {
      */
     static final class Renaming extends TermMapper {
         private final Var[] vars;
+        /** The fresh variables, each made when first met: the numbers are taken at once, the objects only if used. */
         private final Var[] fresh;
+        private final long firstSerial;
 
         Renaming(BeliefBase.Entry e, Agent agent) {
             vars = e.ruleVars();
             fresh = new Var[vars.length];
-            for (int i = 0; i < vars.length; i++) {
-                fresh[i] = agent.freshVar(vars[i]);
-            }
+            firstSerial = agent.freshSerials(vars.length);
         }
 
         /** As the mapper's, without its intermediate lists (a proof renames at every step). */
@@ -289,12 +289,59 @@ public final class Solver {
 
         @Override
         public Term visitVar(Var v) {
-            for (int i = 0; i < vars.length; i++) {
-                if (vars[i].equals(v)) {
-                    return fresh[i];
+            Var[] vs = vars;
+            for (int i = 0; i < vs.length; i++) {
+                if (vs[i] == v) { // the rule's occurrences are mostly the very objects ruleVars holds
+                    return fresh(i);
+                }
+            }
+            for (int i = 0; i < vs.length; i++) {
+                if (vs[i].equals(v)) {
+                    return fresh(i);
                 }
             }
             return v;
+        }
+
+        /**
+         * {@return whether the rule's head, renamed, unifies with query {@code q} as a proof enters the
+         * rule: without annotations, then with them if the query has some} Nothing stays bound when
+         * not. Where neither has a namespace and the query no annotations (nearly always), the
+         * arguments are unified one by one, in the order the literals' unification takes, and the
+         * renamed head is not built.
+         */
+        boolean headUnifies(Literal q, Literal head, Unifier w) {
+            int mark = w.size();
+            if (q.annots().isEmpty() && q.tail() == null && q.ns() == null && head.ns() == null) {
+                if (!q.sameName(head)) {
+                    return false;
+                }
+                for (int i = 0, n = q.arity(); i < n; i++) {
+                    if (!w.unifies(q.arg(i), map(head.arg(i)))) {
+                        w.undoTo(mark);
+                        return false;
+                    }
+                }
+                return true;
+            }
+            Literal h = (Literal) map(head);
+            if (!w.unifiesIgnoringAnnots(q, h)) {
+                return false;
+            }
+            if ((!q.annots().isEmpty() || q.tail() != null) && !w.unifies(q, h)) {
+                w.undoTo(mark);
+                return false;
+            }
+            return true;
+        }
+
+        private Var fresh(int i) {
+            Var f = fresh[i];
+            if (f == null) {
+                f = new Var(vars[i].name(), firstSerial + i);
+                fresh[i] = f;
+            }
+            return f;
         }
     }
 

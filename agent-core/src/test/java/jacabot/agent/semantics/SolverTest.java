@@ -51,6 +51,22 @@ class SolverTest {
     }
 
     @Test
+    void aRuleBodyRenamedGoalByGoalLeavesAGoalBoundAtRunTimeAsItIs() {
+        // t's body is its variable G: the conjunction G is bound to comes from the query, and its Y is the
+        // query's, not the rule's Y (bound to 5); backtracking into b gives c(Y) the next b anew
+        var a = new TestAgent("""
+                b(1). b(2). c(2). c(3).
+                t(G, Y) :- G.
+                w(X) :- (b(X) | X = 3) & c(X) & not b(3).
+                !go.
+                +!go <- .findall(Y, t((b(Y) & c(Y)), 5), L1); .print(L1);
+                        .findall(X, w(X), L2); .print(L2).
+                """);
+        a.cycles(50);
+        assertEquals(List.of("[2]", "[2,3]"), a.printed());
+    }
+
+    @Test
     void aProofDeeperThanJavasStackSucceeds() {
         // 20 000 nested rules: the old recursive solver ran out of Java stack long before
         var a = new TestAgent(ANCESTOR + """

@@ -136,7 +136,7 @@ public class CAgentArch extends LocalArch {
      * Removes the belief of one property (several may share a name: the values tell them apart).
      */
     private void remove(Agent ag, ArtifactId id, PropertySnapshot p) {
-        List<Literal> of = beliefs.get(id);
+        List<Literal> of = beliefsOf(id);
         int k = indexOf(of, p);
         if (k >= 0) {
             ag.removePercept(of.remove(k));
@@ -149,7 +149,7 @@ public class CAgentArch extends LocalArch {
      * it is the only belief of its predicate (the usual case: {@code BeliefBase.replace}).
      */
     private void update(Agent ag, ArtifactId id, PropertySnapshot old, PropertySnapshot now) {
-        List<Literal> of = beliefs.get(id);
+        List<Literal> of = beliefsOf(id);
         int k = indexOf(of, old);
         Literal l = belief(id, now);
         if (k >= 0 && ag.beliefBase().replace(of.get(k), l)) {
@@ -164,6 +164,18 @@ public class CAgentArch extends LocalArch {
         }
         beliefs.computeIfAbsent(id, x -> new ArrayList<>()).add(l);
         ag.addPercept(l);
+    }
+
+    /** The last artifact whose belief list {@link #beliefsOf} found, and the list (a list, once made, stays the artifact's). */
+    private ArtifactId lastListId;
+    private List<Literal> lastList;
+
+    private List<Literal> beliefsOf(ArtifactId id) {
+        if (id != lastListId) {
+            lastList = beliefs.get(id);
+            lastListId = lastList == null ? null : id;
+        }
+        return lastList;
     }
 
     /**
