@@ -90,19 +90,6 @@ steerCut(C) :- corridorSteer(_, M, _) & warningLevel(W) & C = math.min(M, W).
 warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
-// not in the thesis: while the robot's room gives no new floor (fewer than seekBelow cells new in
-// seekWindow ms) and the floor crossed (dead reckoning) is under Share of the arena, a left-right
-// difference signals an obstacle only over Limit (the middleware's deltaLimit), looked at every
-// Every ms; the usual limit comes back with new floor. A passage's or doorway's mouth met at a slant
-// reads one jamb nearer, and that difference turned the robot away from the way out of a room it
-// had covered. The share keeps it out of arenas already half covered, where it only touched boxes
-// more. Wide tuning 101-160, run seeds 1-2: 95 -> 96 of 120 (Limit 300: 94; 300 without the share:
-// 82, contact 95 -> 168 s); held out 241-300: 93 (93), so dropped (docs/comparison-obstacle-avoidance.md,
-// "coverage short, and four ways to more floor")
-coveredLook(5000, 250, 0.5).
-usualDelta(L) :- deltaLevels(L, _).
-usualDelta(L) :- not deltaLevels(_, _) & obstacleThresholds(_, _, L).
-usualDelta(100) :- not deltaLevels(_, _) & not obstacleThresholds(_, _, _).   // the middleware's default, the thesis'
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
@@ -121,17 +108,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (coveredLook(_, _, _)) { !!watchCovered }.
-
-// the covered-room watch (coveredLook above), every Every ms
-@watchCovered
-+!watchCovered : coveredLook(Every, Limit, Share) & seekWindow(W) & seekBelow(K) & arena(AW, AD)
-    <- .wait(Every); freshCells(W, C); visitedArea(A); .system_time(T);
-       Covered = (C < K & T > W & A < Share * AW * AD);
-       if (Covered & not loosened) { +loosened; deltaLimit(Limit) }
-       elif (not Covered & loosened) { -loosened; ?usualDelta(L); deltaLimit(L) };
-       !watchCovered.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
