@@ -91,12 +91,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// the path watch, not in the thesis: an obstacle is clear only once no point the front sensors met
-// in the last 3 s lies in the strip the body sweeps going straight, HalfWidth m each side of the
-// centre line and Length m ahead, or once the sensors alone have said clear for Hold ms (the
-// middleware's pathWatch): the avoidance turn ended as soon as the box left the sensors' sight, 20°
-// off the heading, and the straight leg after it slid the flank along the box
-pathWatch(0.05, 0.12, 120).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -114,8 +108,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (pathWatch(PW, PL, PH)) { pathWatch(PW, PL, PH) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

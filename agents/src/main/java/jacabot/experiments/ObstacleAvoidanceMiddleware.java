@@ -274,54 +274,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
-        if (pathMemory != null && reading > 0) {
-            double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
-            pathMemory.add(simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a));
-        }
-    }
-
-    /** How long the front sensors' points are remembered for {@code pathWatch}, ms. */
-    static final long PATH_MEMORY_MS = 3000;
-    private PathMemory pathMemory;
-    private double pathHalfWidth, pathLength, pathHoldMs;
-    /** When the sensors alone last began to say clear while an obstacle was signalled; -1: not now. */
-    private long sensorsClearSince = -1;
-
-    /**
-     * From now on, an obstacle is clear only once no point the front sensors met in the last
-     * {@value #PATH_MEMORY_MS} ms lies in the strip ahead that the robot would sweep going straight,
-     * {@code halfWidth} m each side of its centre line and {@code length} m long, or once the sensors
-     * alone have said clear for {@code holdMs} (not in the thesis; {@link PathMemory}). Fails before
-     * {@code odometry} or for a width, length or hold that is not positive.
-     */
-    @OPERATION
-    void pathWatch(double halfWidth, double length, double holdMs) {
-        if (map == null || !(halfWidth > 0) || !(length > 0) || !(holdMs > 0)) {
-            failed("pathWatch needs odometry(SpeedUnit, AxleLength) first and a positive width, length and hold, got "
-                    + halfWidth + ", " + length + ", " + holdMs);
-            return;
-        }
-        pathMemory = new PathMemory(PATH_MEMORY_MS);
-        pathHalfWidth = halfWidth;
-        pathLength = length;
-        pathHoldMs = holdMs;
-    }
-
-    /** {@return whether the sensors' clear may end the obstacle now}: with pathWatch on, once the path is free or the hold is over */
-    private boolean pathFree(boolean sensorsClear) {
-        if (!sensorsClear) {
-            sensorsClearSince = -1;
-            return false;
-        }
-        if (pathMemory == null) {
-            return true;
-        }
-        long now = simTimeMs();
-        if (sensorsClearSince < 0) {
-            sensorsClearSince = now;
-        }
-        return now - sensorsClearSince >= pathHoldMs
-                || !pathMemory.inPath(now, map.x(), map.z(), map.headingDegrees(), pathHalfWidth, pathLength);
     }
 
     @Override
@@ -350,9 +302,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             boolean obstacle = getObsProperty("obstacle").booleanValue();
             if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning) {
                 obstacle = true;
-                sensorsClearSince = -1;
-            } else if (pathFree(right < safe && left < safe && Math.abs(delta) <= (Double.isNaN(deltaClear) ? deltaLimit / 2 : deltaClear)
-                    && clearAhead())) {
+            } else if (right < safe && left < safe && Math.abs(delta) <= (Double.isNaN(deltaClear) ? deltaLimit / 2 : deltaClear) && clearAhead()) {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
