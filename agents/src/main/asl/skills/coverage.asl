@@ -134,8 +134,8 @@ pausedUntil("-veering") :- veering.
 @coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
-@veerRight +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
-@veerLeft +!veer(D) : obstacle(false) & D > 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
+@veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
+@veerRight +!veer(D) : obstacle(false) & D > 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
 @veerNot +!veer(_) <- -veering.
 
 // steering through the corridor, a control step (40 ms) at a time; out of it, an obstacle still
