@@ -91,10 +91,11 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 // not in the thesis: at a passage's mouth (the middleware's mouthLimit: walls or boxes read, at
-// Level or more, on both sides of the line ahead within Reach m, and floor not crossed beyond) a
+// Level or more, on both sides of the line ahead, within Reach m ahead and Side m across, and floor
+// not crossed beyond) a
 // left-right difference signals an obstacle only over Limit: a mouth met at a slant reads one jamb
 // nearer, and the usual limit turned the robot away from the way out of a room it had covered
-mouthLook(300, 0.3, 200).
+mouthLook(250, 0.2, 0.15, 200).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
@@ -114,7 +115,7 @@ pausedUntil("-veering") :- veering.
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (mouthLook(Limit, Reach, Level)) { mouthLimit(Limit, Reach, Level) }.
+       if (mouthLook(Limit, Reach, Side, Level) & seekWindow(SW) & seekBelow(SB)) { mouthLimit(Limit, Reach, Side, Level, SW, SB) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

@@ -189,12 +189,12 @@ final class ExplorationMap {
 
     /**
      * {@return whether the map shows a passage's mouth ahead (not in the thesis)}: obstacles met or read on
-     * both sides of the line ahead, a cell centre 5 cm to {@code reach} metres across it and up to
+     * both sides of the line ahead, a cell centre 5 cm to {@code side} metres across it and up to
      * {@code reach} ahead on the left and one on the right, and floor not crossed on the line just
      * beyond, {@code reach} to {@code reach} + 0.2 m ahead.
      */
-    boolean mouthAhead(double reach) {
-        int ci = (int) Math.floor(x / CELL), cj = (int) Math.floor(z / CELL), n = (int) Math.ceil(reach / CELL) + 1;
+    boolean mouthAhead(double reach, double side) {
+        int ci = (int) Math.floor(x / CELL), cj = (int) Math.floor(z / CELL), n = (int) Math.ceil(Math.max(reach, side) / CELL) + 1;
         double c = Math.cos(heading), s = Math.sin(heading);
         boolean left = false, right = false;
         for (int i = ci - n; i <= ci + n; i++) {
@@ -204,7 +204,7 @@ final class ExplorationMap {
                 }
                 double dx = (i + 0.5) * CELL - x, dz = (j + 0.5) * CELL - z;
                 double ahead = dx * c + dz * s, across = -dx * s + dz * c;
-                if (ahead > 0 && ahead <= reach && Math.abs(across) >= 0.05 && Math.abs(across) <= reach) {
+                if (ahead > 0 && ahead <= reach && Math.abs(across) >= 0.05 && Math.abs(across) <= side) {
                     left |= across > 0;
                     right |= across < 0;
                 }

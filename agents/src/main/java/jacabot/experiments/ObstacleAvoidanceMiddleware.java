@@ -228,25 +228,28 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /** The looser difference limit at a passage's mouth, and how far the map is looked at (NaN: off). */
-    private double mouthLimit = Double.NaN, mouthReach, mouthLevel = Double.NaN;
+    private double mouthLimit = Double.NaN, mouthReach, mouthSide, mouthLevel = Double.NaN, mouthWindow, mouthBelow;
 
     /**
      * From now on, a left-right difference over {@code deltaLimit} signals an obstacle only over
      * {@code limit} while the map shows a passage's mouth ahead ({@code ExplorationMap.mouthAhead}
-     * over {@code metres}; not in the thesis): a mouth met at a slant reads one jamb nearer, and the
+     * up to {@code metres} ahead and {@code side} across; not in the thesis): a mouth met at a slant reads one jamb nearer, and the
      * usual limit turned the robot away from the way out. Every front reading of {@code level} or more
      * is kept for that test (apart from {@code markWalls}' marks, which also steer exploreTurn).
      * Fails before {@code odometry}, for a limit or level not over 0 or a reach under one cell.
      */
     @OPERATION
-    void mouthLimit(double limit, double metres, double level) {
-        if (map == null || !(limit > 0) || !(level > 0) || !(metres >= ExplorationMap.CELL)) {
-            failed("mouthLimit needs odometry(SpeedUnit, AxleLength) first, a limit and level > 0 and a reach of at least "
-                    + ExplorationMap.CELL + " m, got " + limit + ", " + metres + ", " + level);
+    void mouthLimit(double limit, double metres, double side, double level, double windowMs, double below) {
+        if (map == null || !(limit > 0) || !(level > 0) || !(metres >= ExplorationMap.CELL) || !(side >= ExplorationMap.CELL)) {
+            failed("mouthLimit needs odometry(SpeedUnit, AxleLength) first, a limit and level > 0 and a reach and side of at least "
+                    + ExplorationMap.CELL + " m, got " + limit + ", " + metres + ", " + side + ", " + level);
             return;
         }
         mouthLimit = limit;
         mouthReach = metres;
+        mouthSide = side;
+        mouthWindow = windowMs;
+        mouthBelow = below;
         mouthLevel = level;
     }
 
@@ -256,7 +259,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (!deltaBased || d <= deltaLimit) {
             return false;
         }
-        return Double.isNaN(mouthLimit) || d > mouthLimit || !map.mouthAhead(mouthReach);
+        long now = simTimeMs();
+        return Double.isNaN(mouthLimit) || d > mouthLimit || now < mouthWindow
+                || map.freshCellsSince(now - Math.round(mouthWindow)) >= mouthBelow || !map.mouthAhead(mouthReach, mouthSide);
     }
 
     /** Both sensors' level for a corridor, and how far the robot must drive seeing both (NaN: off). */

@@ -117,17 +117,17 @@ class ExplorationMapTest {
     @Test
     void aMouthAheadNeedsWallsReadOnBothSidesAndNewFloorBeyond() {
         map.sighting(35, 0.2);
-        assertFalse(map.mouthAhead(0.3), "a wall on the left alone is no mouth");
+        assertFalse(map.mouthAhead(0.3, 0.3), "a wall on the left alone is no mouth");
         map.sighting(-35, 0.2);
-        assertTrue(map.mouthAhead(0.3), "a jamb each side, 16 cm ahead, and new floor beyond");
-        assertFalse(map.mouthAhead(0.1), "the jambs lie beyond a 10 cm reach");
+        assertTrue(map.mouthAhead(0.3, 0.3), "a jamb each side, 16 cm ahead, and new floor beyond");
+        assertFalse(map.mouthAhead(0.1, 0.3), "the jambs lie beyond a 10 cm reach");
         ExplorationMap crossed = new ExplorationMap(0.001, 0.09);
         for (long t = 0; t <= 12_000; t += 40) {   // 60 cm ahead and back: the floor beyond is known
             crossed.wheels(t, t < 6000 ? 100 : -100, t < 6000 ? 100 : -100);
         }
         crossed.sighting(35, 0.2);
         crossed.sighting(-35, 0.2);
-        assertFalse(crossed.mouthAhead(0.3), "no new floor beyond: a gap in a room already crossed");
+        assertFalse(crossed.mouthAhead(0.3, 0.3), "no new floor beyond: a gap in a room already crossed");
     }
 
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
