@@ -95,7 +95,8 @@ thesisWarning(350).
 // not crossed beyond) a
 // left-right difference signals an obstacle only over Limit: a mouth met at a slant reads one jamb
 // nearer, and the usual limit turned the robot away from the way out of a room it had covered
-mouthLook(250, 0.2, 0.15, 200).
+mouthLook(300, 0.2, 0.15, 200).
+mouthKeep(3000).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
@@ -115,7 +116,7 @@ pausedUntil("-veering") :- veering.
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (mouthLook(Limit, Reach, Side, Level) & seekWindow(SW) & seekBelow(SB)) { mouthLimit(Limit, Reach, Side, Level, SW, SB) }.
+       if (mouthLook(Limit, Reach, Side, Level) & mouthKeep(K)) { mouthLimit(Limit, Reach, Side, Level, 0, 0, K) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

@@ -31,7 +31,8 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private final Set<Long> sighted = new HashSet<>(); // walls and boxes read, for mouthAhead alone
+    private final Map<Long, Long> sighted = new HashMap<>(); // walls and boxes read, and when: for mouthAhead alone
+    private long sightKeep = Long.MAX_VALUE; // how long a reading counts for mouthAhead, ms
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -84,7 +85,12 @@ final class ExplorationMap {
     /** A wall or box read {@code distance} metres from the centre, {@code bearing} degrees left: for {@link #mouthAhead} alone. */
     void sighting(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        sighted.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
+        sighted.put(key(x + distance * Math.cos(a), z + distance * Math.sin(a)), lastMs);
+    }
+
+    /** Readings count for {@link #mouthAhead} this long, ms (drift moves older ones). */
+    void sightKeep(long ms) {
+        sightKeep = ms;
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -199,7 +205,8 @@ final class ExplorationMap {
         boolean left = false, right = false;
         for (int i = ci - n; i <= ci + n; i++) {
             for (int j = cj - n; j <= cj + n; j++) {
-                if (!blocked.contains(key(i, j)) && !sighted.contains(key(i, j))) {
+                Long seen = sighted.get(key(i, j));
+                if (!blocked.contains(key(i, j)) && (seen == null || seen < lastMs - sightKeep)) {
                     continue;
                 }
                 double dx = (i + 0.5) * CELL - x, dz = (j + 0.5) * CELL - z;

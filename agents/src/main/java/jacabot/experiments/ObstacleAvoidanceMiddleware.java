@@ -239,7 +239,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * Fails before {@code odometry}, for a limit or level not over 0 or a reach under one cell.
      */
     @OPERATION
-    void mouthLimit(double limit, double metres, double side, double level, double windowMs, double below) {
+    void mouthLimit(double limit, double metres, double side, double level, double windowMs, double below, double keepMs) {
         if (map == null || !(limit > 0) || !(level > 0) || !(metres >= ExplorationMap.CELL) || !(side >= ExplorationMap.CELL)) {
             failed("mouthLimit needs odometry(SpeedUnit, AxleLength) first, a limit and level > 0 and a reach and side of at least "
                     + ExplorationMap.CELL + " m, got " + limit + ", " + metres + ", " + side + ", " + level);
@@ -250,6 +250,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         mouthSide = side;
         mouthWindow = windowMs;
         mouthBelow = below;
+        map.sightKeep(Math.round(keepMs));
         mouthLevel = level;
     }
 
@@ -260,8 +261,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             return false;
         }
         long now = simTimeMs();
-        return Double.isNaN(mouthLimit) || d > mouthLimit || now < mouthWindow
-                || map.freshCellsSince(now - Math.round(mouthWindow)) >= mouthBelow || !map.mouthAhead(mouthReach, mouthSide);
+        return Double.isNaN(mouthLimit) || d > mouthLimit || (mouthWindow > 0 && (now < mouthWindow
+                || map.freshCellsSince(now - Math.round(mouthWindow)) >= mouthBelow)) || !map.mouthAhead(mouthReach, mouthSide);
     }
 
     /** Both sensors' level for a corridor, and how far the robot must drive seeing both (NaN: off). */

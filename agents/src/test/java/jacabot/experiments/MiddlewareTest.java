@@ -257,13 +257,13 @@ class MiddlewareTest {
         Object[] obstacles = new Object[2];
         for (int mouth = 0; mouth < 2; mouth++) {
             var b = new Bench(ObstacleAvoidanceMiddleware.class);
-            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0}).succeeded(), "no odometry yet");
+            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded(), "no odometry yet");
             b.op("odometry", new Object[] {0.001, 0.09});
             b.op("obstacleLevels", new Object[] {480.0, 300.0});
             b.op("deltaLimit", new Object[] {200.0});
-            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.05, 0.3, 200.0, 0.0, 1.0}).succeeded(), "a reach under a cell");
+            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.05, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded(), "a reach under a cell");
             if (mouth == 1) {
-                assertTrue(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0}).succeeded());
+                assertTrue(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded());
             }
             // a jamb read by each sensor (250: 15 cm from the centre), then the left one nearer: a difference of 250
             b.deliver(value(SensorKind.LEFT_DISTANCE, 250), value(SensorKind.RIGHT_DISTANCE, 250),
