@@ -90,13 +90,6 @@ steerCut(C) :- corridorSteer(_, M, _) & warningLevel(W) & C = math.min(M, W).
 warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
-// not in the thesis: at a passage's mouth (the middleware's mouthLimit: walls or boxes read, at
-// Level or more, on both sides of the line ahead, within Reach m ahead and Side m across, and floor
-// not crossed beyond) a
-// left-right difference signals an obstacle only over Limit: a mouth met at a slant reads one jamb
-// nearer, and the usual limit turned the robot away from the way out of a room it had covered
-mouthLook(300, 0.2, 0.15, 200).
-mouthKeep(3000).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
@@ -115,8 +108,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (mouthLook(Limit, Reach, Side, Level) & mouthKeep(K)) { mouthLimit(Limit, Reach, Side, Level, 0, 0, K) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 

@@ -31,8 +31,6 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private final Map<Long, Long> sighted = new HashMap<>(); // walls and boxes read, and when: for mouthAhead alone
-    private long sightKeep = Long.MAX_VALUE; // how long a reading counts for mouthAhead, ms
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -80,17 +78,6 @@ final class ExplorationMap {
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
-    }
-
-    /** A wall or box read {@code distance} metres from the centre, {@code bearing} degrees left: for {@link #mouthAhead} alone. */
-    void sighting(double bearing, double distance) {
-        double a = heading + Math.toRadians(bearing);
-        sighted.put(key(x + distance * Math.cos(a), z + distance * Math.sin(a)), lastMs);
-    }
-
-    /** Readings count for {@link #mouthAhead} this long, ms (drift moves older ones). */
-    void sightKeep(long ms) {
-        sightKeep = ms;
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -191,42 +178,6 @@ final class ExplorationMap {
         double turn = Math.toDegrees(Math.atan2(wz - z, wx - x) - heading);
         turn = ((turn % 360) + 540) % 360 - 180;
         return new double[] {turn, Math.hypot(wx - x, wz - z)};
-    }
-
-    /**
-     * {@return whether the map shows a passage's mouth ahead (not in the thesis)}: obstacles met or read on
-     * both sides of the line ahead, a cell centre 5 cm to {@code side} metres across it and up to
-     * {@code reach} ahead on the left and one on the right, and floor not crossed on the line just
-     * beyond, {@code reach} to {@code reach} + 0.2 m ahead.
-     */
-    boolean mouthAhead(double reach, double side) {
-        int ci = (int) Math.floor(x / CELL), cj = (int) Math.floor(z / CELL), n = (int) Math.ceil(Math.max(reach, side) / CELL) + 1;
-        double c = Math.cos(heading), s = Math.sin(heading);
-        boolean left = false, right = false;
-        for (int i = ci - n; i <= ci + n; i++) {
-            for (int j = cj - n; j <= cj + n; j++) {
-                Long seen = sighted.get(key(i, j));
-                if (!blocked.contains(key(i, j)) && (seen == null || seen < lastMs - sightKeep)) {
-                    continue;
-                }
-                double dx = (i + 0.5) * CELL - x, dz = (j + 0.5) * CELL - z;
-                double ahead = dx * c + dz * s, across = -dx * s + dz * c;
-                if (ahead > 0 && ahead <= reach && Math.abs(across) >= 0.05 && Math.abs(across) <= side) {
-                    left |= across > 0;
-                    right |= across < 0;
-                }
-            }
-        }
-        if (!(left && right)) {
-            return false;
-        }
-        for (double d = reach; d <= reach + 0.2 + 1e-9; d += CELL / 2) {
-            long k = key(x + d * c, z + d * s);
-            if (!visited.contains(k) && !blocked.contains(k)) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** {@return how many cells the centre crossed for the first time after {@code sinceMs}} */

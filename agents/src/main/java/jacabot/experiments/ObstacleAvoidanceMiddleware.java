@@ -227,44 +227,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return RESPONSE[RESPONSE.length - 1][1];
     }
 
-    /** The looser difference limit at a passage's mouth, and how far the map is looked at (NaN: off). */
-    private double mouthLimit = Double.NaN, mouthReach, mouthSide, mouthLevel = Double.NaN, mouthWindow, mouthBelow;
-
-    /**
-     * From now on, a left-right difference over {@code deltaLimit} signals an obstacle only over
-     * {@code limit} while the map shows a passage's mouth ahead ({@code ExplorationMap.mouthAhead}
-     * up to {@code metres} ahead and {@code side} across; not in the thesis): a mouth met at a slant reads one jamb nearer, and the
-     * usual limit turned the robot away from the way out. Every front reading of {@code level} or more
-     * is kept for that test (apart from {@code markWalls}' marks, which also steer exploreTurn).
-     * Fails before {@code odometry}, for a limit or level not over 0 or a reach under one cell.
-     */
-    @OPERATION
-    void mouthLimit(double limit, double metres, double side, double level, double windowMs, double below, double keepMs) {
-        if (map == null || !(limit > 0) || !(level > 0) || !(metres >= ExplorationMap.CELL) || !(side >= ExplorationMap.CELL)) {
-            failed("mouthLimit needs odometry(SpeedUnit, AxleLength) first, a limit and level > 0 and a reach and side of at least "
-                    + ExplorationMap.CELL + " m, got " + limit + ", " + metres + ", " + side + ", " + level);
-            return;
-        }
-        mouthLimit = limit;
-        mouthReach = metres;
-        mouthSide = side;
-        mouthWindow = windowMs;
-        mouthBelow = below;
-        map.sightKeep(Math.round(keepMs));
-        mouthLevel = level;
-    }
-
-    /** {@return whether a left-right difference signals an obstacle: over the limit, or the mouth's limit at a mouth} */
-    private boolean deltaObstacle(double delta) {
-        double d = Math.abs(delta);
-        if (!deltaBased || d <= deltaLimit) {
-            return false;
-        }
-        long now = simTimeMs();
-        return Double.isNaN(mouthLimit) || d > mouthLimit || (mouthWindow > 0 && (now < mouthWindow
-                || map.freshCellsSince(now - Math.round(mouthWindow)) >= mouthBelow)) || !map.mouthAhead(mouthReach, mouthSide);
-    }
-
     /** Both sensors' level for a corridor, and how far the robot must drive seeing both (NaN: off). */
     private double corridorLevel = Double.NaN, corridorSpan;
     /** Where the robot was (dead reckoning) when both sensors began to read corridorLevel; NaN: not now. */
@@ -312,9 +274,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
-        if (map != null && reading >= mouthLevel) {
-            map.sighting(bearing, RIM + rangeOf(Math.min(reading, 1000)));
-        }
     }
 
     @Override
@@ -341,7 +300,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
-            if (deltaObstacle(delta) || right > warning || left > warning) {
+            if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning) {
                 obstacle = true;
             } else if (right < safe && left < safe && Math.abs(delta) <= (Double.isNaN(deltaClear) ? deltaLimit / 2 : deltaClear) && clearAhead()) {
                 obstacle = false;

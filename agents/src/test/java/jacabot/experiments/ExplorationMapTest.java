@@ -1,7 +1,6 @@
 package jacabot.experiments;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -112,22 +111,6 @@ class ExplorationMapTest {
         map.horizon(0.6);
         assertEquals(180, Math.abs(map.bestTurn()), 1e-9, "within 60 cm only the floor behind is new");
         assertThrows(IllegalArgumentException.class, () -> map.horizon(0.05));
-    }
-
-    @Test
-    void aMouthAheadNeedsWallsReadOnBothSidesAndNewFloorBeyond() {
-        map.sighting(35, 0.2);
-        assertFalse(map.mouthAhead(0.3, 0.3), "a wall on the left alone is no mouth");
-        map.sighting(-35, 0.2);
-        assertTrue(map.mouthAhead(0.3, 0.3), "a jamb each side, 16 cm ahead, and new floor beyond");
-        assertFalse(map.mouthAhead(0.1, 0.3), "the jambs lie beyond a 10 cm reach");
-        ExplorationMap crossed = new ExplorationMap(0.001, 0.09);
-        for (long t = 0; t <= 12_000; t += 40) {   // 60 cm ahead and back: the floor beyond is known
-            crossed.wheels(t, t < 6000 ? 100 : -100, t < 6000 ? 100 : -100);
-        }
-        crossed.sighting(35, 0.2);
-        crossed.sighting(-35, 0.2);
-        assertFalse(crossed.mouthAhead(0.3, 0.3), "no new floor beyond: a gap in a room already crossed");
     }
 
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */

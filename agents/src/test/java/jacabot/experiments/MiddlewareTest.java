@@ -253,31 +253,6 @@ class MiddlewareTest {
     }
 
     @Test
-    void atAMouthReadOnBothSidesOnlyTheMouthsLimitSignalsAnObstacle() throws Exception {
-        Object[] obstacles = new Object[2];
-        for (int mouth = 0; mouth < 2; mouth++) {
-            var b = new Bench(ObstacleAvoidanceMiddleware.class);
-            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded(), "no odometry yet");
-            b.op("odometry", new Object[] {0.001, 0.09});
-            b.op("obstacleLevels", new Object[] {480.0, 300.0});
-            b.op("deltaLimit", new Object[] {200.0});
-            assertFalse(b.op("mouthLimit", new Object[] {300.0, 0.05, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded(), "a reach under a cell");
-            if (mouth == 1) {
-                assertTrue(b.op("mouthLimit", new Object[] {300.0, 0.3, 0.3, 200.0, 0.0, 1.0, 3000.0}).succeeded());
-            }
-            // a jamb read by each sensor (250: 15 cm from the centre), then the left one nearer: a difference of 250
-            b.deliver(value(SensorKind.LEFT_DISTANCE, 250), value(SensorKind.RIGHT_DISTANCE, 250),
-                    new SensorInfo(SensorKind.WHEEL_SPEEDS.id(), new double[] {0, 0}));
-            b.deliver(value(SensorKind.LEFT_DISTANCE, 450), value(SensorKind.RIGHT_DISTANCE, 200));
-            obstacles[mouth] = b.properties.get("obstacle");
-            b.deliver(value(SensorKind.LEFT_DISTANCE, 470), value(SensorKind.RIGHT_DISTANCE, 150));
-            assertEquals(true, b.properties.get("obstacle"), "a difference of 320 is over either limit");
-        }
-        assertEquals(true, obstacles[0], "the usual limit, 200");
-        assertEquals(false, obstacles[1], "at the mouth, 300");
-    }
-
-    @Test
     void walledInOnlyOnceBothSensorsSawAWallForTheSpanDriven() throws Exception {
         var b = new Bench(ObstacleAvoidanceMiddleware.class);
         assertFalse(b.op("corridorSpan", new Object[] {15.0, 0.15}).succeeded(), "no odometry yet");
