@@ -8,10 +8,9 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // no trip while the battery covers the time left, a charge ends once it covers it and 100 J (2 W); near approach at 85
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85).
 !start.
-// route, storage exit, knocked-aside; near the storage point re-aligned at 3 degrees off, not 10 (it passed it 4 cm
-// aside); after the last cylinder out of the storage area towards the charger, not back (delivery's exitHeading)
+// trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
+// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
-exitTowards(Cx, Cz) :- stored(N) & cylinders(N) & charger(Cx, Cz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
 { include("skills/storage-exit.asl") }
@@ -26,6 +25,7 @@ exitTowards(Cx, Cz) :- stored(N) & cylinders(N) & charger(Cx, Cz).
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
+
 // after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.

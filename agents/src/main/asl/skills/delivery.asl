@@ -46,16 +46,12 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
 
 /* At the storage point (Chapter 4 §3.1) */
 
-// the heading out after the put-down: back the way the robot came in, or, not in the thesis, towards an
-// agent's exitTowards(X, Z) (tidy-up's: the charger, after the last cylinder: no turn back and round again)
-exitHeading(O, D) :- not exitTowards(_, _) & D = (O + 180) mod 360.
-exitHeading(_, D) :- exitTowards(Tx, Tz) & location(X, _, Z) & D = (math.atan2(Tz - Z, Tx - X) * 180 / math.pi + 360) mod 360.
 @deliverAtStorage
 +targetReached : delivering & not onErrand & orientation(O)
     <- .drop_desire(balance); .drop_desire(computeGap); .drop_desire(avoid);
        stopAcquireDistance; -delivering; .wait(100);
        .print("TARGET POINT REACHED"); stop; .wait(40);
-       putDown; ?stored(K); -+stored(K + 1); -desired(_); ?exitHeading(O, D2); +desired(D2);
+       putDown; ?stored(K); -+stored(K + 1); -desired(_); D2 = (O + 180) mod 360; +desired(D2);
        !balance; .print("balanced");
        forward; waitExit; .wait("+~around"); -~delivered.
 
