@@ -20,7 +20,8 @@ lookSpacing(1.0).
 // a look point's 60 s are stretched while the robot came nearer it within the last 10 s (look-points.asl;
 // wide tuning 101-160 x 1-2: 108 -> 109 of 120, held out 106 -> 106, classic 143 -> 143)
 lookNearing(10000).
-// a wall is followed the way the robot came (skills/trail-side.asl): a trail point every 0.1 m
+// a wall is followed the way the robot came (skills/trail-side.asl): a trail point every 0.1 m (wide
+// tuning 101-160 x 1-2: 109 -> 110 of 120, 273 -> 284 deliveries; held out 106 -> 107; classic 143 -> 145)
 trailStep(0.1).
 
 !start.

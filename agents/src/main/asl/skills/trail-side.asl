@@ -1,7 +1,7 @@
 // Skill: the side of a wall to follow, taken from the robot's own trail; not in the thesis.
 // way-round chooses the side with the longer free run before the arena's boundary, blind to where
 // the doorway is: in wide worlds 112, 128 and 154 a delivery followed the wall to the boundary first
-// and back (50-120 s and 100-200 J). The robot keeps a trail point every trailStep m driven;
+// and back (128, seed 2: 50 s there, 70 s back). The robot keeps a trail point every trailStep m driven;
 // the most recent one beyond the wall met (past it by trailPast along the arena's axis nearest the
 // way to the target: the worlds' walls run along the axes) is where the robot came from, through
 // the wall's doorway or round its end, and the following goes that way. Without such a point, or
