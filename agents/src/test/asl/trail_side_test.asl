@@ -23,13 +23,15 @@ mock_operation(_, ok).
 +!test_a_point_is_kept_every_trail_step_driven
     <- .abolish(trail(_, _, _)); .abolish(trailLast(_, _, _)); -+location(0, 0, 0);
        !setUpTrailSide;
-       !until(trailLast(0, 0, 0), 2000);
-       -+location(0.05, 0, 0);
+       -+location(0, 0, 0.3);                                           // the first GPS reading
+       !until(trailLast(0, _, _), 2000);
+       !assert_true(trail(0, 0, 0.3));                                  // not the (0, 0) before it
+       -+location(0.05, 0, 0.3);
        .wait(1200);
        !assert_false(trail(1, _, _));                                   // 5 cm: no point
-       -+location(0.2, 0, 0);
-       !until(trail(1, 0.2, 0), 2000);
-       !assert_true(trail(1, 0.2, 0)).
+       -+location(0.2, 0, 0.3);
+       !until(trail(1, 0.2, 0.3), 2000);
+       !assert_true(trail(1, 0.2, 0.3)).
 
 @[test]
 +!test_the_way_came_past_the_wall_gives_the_side

@@ -16,7 +16,8 @@ setUpGoal(setUpTrailSide).
 @setUpTrailSide +!setUpTrailSide : trailStep(_) <- !!trailClock.
 @setUpTrailSideOff +!setUpTrailSide.
 
-@trailFirst +!trailClock : not trailLast(_, _, _) & location(X, _, Z) <- +trail(0, X, Z); +trailLast(0, X, Z); .wait(500); !trailClock.
+// the first point half a second in: before the first GPS reading the location is (0, 0)
+@trailFirst +!trailClock : not trailLast(_, _, _) & location(_, _, _) <- .wait(500); ?location(X, _, Z); +trail(0, X, Z); +trailLast(0, X, Z); !trailClock.
 @trailPoint
 +!trailClock : trailStep(S) & trailLast(N, Lx, Lz) & location(X, _, Z)
     <- if ((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) > S * S) { +trail(N + 1, X, Z); -+trailLast(N + 1, X, Z) };
