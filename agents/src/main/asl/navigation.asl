@@ -20,10 +20,14 @@ lookSpacing(1.0).
 // a look point's 60 s are stretched while the robot came nearer it within the last 10 s (look-points.asl;
 // wide tuning 101-160 x 1-2: 108 -> 109 of 120, held out 106 -> 106, classic 143 -> 143)
 lookNearing(10000).
+// a wall is followed the way the robot came (skills/trail-side.asl): a trail point every 0.1 m (wide
+// tuning 101-160 x 1-2: 109 -> 110 of 120, 273 -> 284 deliveries; held out 106 -> 107; classic 143 -> 145)
+trailStep(0.1).
 
 !start.
 
 { include("skills/initial-phase.asl") }
+{ include("skills/trail-side.asl") }
 { include("skills/way-round.asl") }
 // the sweep's way to a waypoint goes round the storage area (a lane across it led to and fro there)
 { include("skills/storage-bypass.asl") }
