@@ -173,3 +173,24 @@ mock_operation(_, ok).
        !until(mock_called(putDown(_, _)), 5000);
        !assert_false(takenCaught);
        -picking; -caught(false); -myClaim(_); -robotAt(khepera4, _, _).
+
+// with a teammate, a claim whose cylinder was lost from sight is kept while the robot drives back to
+// its place to look again; the search moving on (its next waypoint) releases it
+@[test]
++!test_with_a_teammate_a_claim_lost_from_sight_is_sought_again_then_released
+    <- -homing(_); -myClaim(_); -+picked(false); !forget_calls; .my_name(Me);
+       +robotAt(khepera4, -0.3, -0.3); +searching; +mock_operation(release(3), ok);
+       +mock_operation(searchFrom(_, _, 0.3, -0.2), ok);
+       +myClaim(3); +claimed(3, Me, 0.1, 0.7, 0.1);
+       .system_time(T); -+lastSighted(T - 3000); +homing(T - 5000);
+       -homing(_);                                               // lost from sight 3 s ago
+       !until(seekingClaim(3, _, _, _), 5000);
+       !assert_true(waypoint(0.1, 0.7, _));                      // back to the claim's place
+       !assert_true(myClaim(3));
+       !assert_false(mock_called(release(_)));
+       !nextWaypoint;                                            // reached, skipped or escaped
+       !assert_true(mock_called(release(3)));
+       !assert_false(myClaim(3));
+       !assert_false(seekingClaim(_, _, _, _));
+       !assert_true(waypoint(0.3, -0.2, _));                     // on with the team's search
+       -searching; -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _); .abolish(waypoint(_, _, _)).

@@ -52,7 +52,7 @@ teamSearch :- robotAt(A, _, _) & not .my_name(A).
 
 // the point moved on (its cell seen): head for the new one
 @searchPointMoved
-+!sweepStep : teamSearch & .my_name(Me) & searchPoint(Me, X, Z) & waypoint(Wx, Wz, _) & (X \== Wx | Z \== Wz)
++!sweepStep : teamSearch & not seekingClaim(_, _, _, _) & .my_name(Me) & searchPoint(Me, X, Z) & waypoint(Wx, Wz, _) & (X \== Wx | Z \== Wz)
     <- !searchPointAt(X, Z); !sweepStep.
 // a point reached: the next, without the sweep's look around at each waypoint (points are a cell apart)
 @searchPointReached
