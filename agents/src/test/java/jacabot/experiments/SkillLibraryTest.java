@@ -80,6 +80,18 @@ class SkillLibraryTest {
     }
 
     /** Within one agent (its includes read in), a label names one plan, and every include is found. */
+    /** The module's README is where a user looks a skill up: a skill file without its row is one they miss. */
+    @Test
+    void everySkillFileHasItsRowInTheReadme() throws Exception {
+        String readme = Files.readString(ASL.resolve("../../../README.md").normalize());
+        var missing = new TreeSet<String>();
+        try (Stream<Path> files = Files.list(ASL.resolve("skills"))) {
+            files.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".asl"))
+                    .filter(n -> !readme.contains("| `" + n + "` |")).forEach(missing::add);
+        }
+        assertEquals(Set.of(), missing, "skill files without a row in agents/README.md's skills table");
+    }
+
     @Test
     void everyAgentNamesEachPlanOnce() throws Exception {
         for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up",
