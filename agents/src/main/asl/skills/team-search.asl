@@ -4,8 +4,7 @@
 // search map (the artifact "search") marks the floor each robot's camera has looked over (its place
 // and heading, with every publication of its place: team-places), and gives a searching robot its
 // next search point: a cylinder a teammate sighted on its way to the charger (a spot), else the
-// nearest cell nobody has looked at, away from the other robots' points (of two equally near, the one
-// farther from the storage area: the far floor was searched last).
+// nearest cell nobody has looked at, away from the other robots' points.
 // The sweep (sweep.asl) drives to that point instead of its lanes' next waypoint; the point moves
 // on as soon as anyone sees its cell (searchPoint(Me, X, Z), the map's), and a point reached or
 // given up (the sweep's patience, an escape) is done. A robot alone keeps the sweep's lanes.

@@ -35,8 +35,7 @@ import java.util.Map;
  * searching has no search point), {@code searchFrom(X, Z, ?Px, ?Pz)} (the caller's last search
  * point is done, seen or given up; gives the next: the nearest spot no other robot goes to, else
  * the nearest unseen cell at least {@link #SPREAD} from every other robot's point, or the nearest
- * unseen if none is; nearness less {@link #FAR_WEIGHT} times the cell's distance from the storage
- * area, so the far floor is searched sooner: not in the thesis). Every operation is one artifact step, so two robots never get one spot, and
+ * unseen if none is). Every operation is one artifact step, so two robots never get one spot, and
  * one cell only when every unseen cell lies within {@link #SPREAD} of another's point. An agent
  * that leaves loses its point.
  */
@@ -57,17 +56,9 @@ public class SearchMap extends Artifact {
     static final double SPOT_VIEW = 0.5;
     /** Two robots' search points at least this far apart when the map allows, metres. */
     static final double SPREAD = 0.8;
-    /**
-     * Metres of drive a cell's distance from the storage area is worth, per metre: the nearest-first
-     * search left the floor far from storage for last, and the cylinders never grasped lay there
-     * (1.8-2.7 m from it, on the side searched last).
-     */
-    static final double FAR_WEIGHT = 0.5;
 
     private double width;
     private double depth;
-    private double storageX;
-    private double storageZ;
     private int nx;
     private int nz;
     /** Cells never searched (the storage area) are seen from the start. */
@@ -93,8 +84,6 @@ public class SearchMap extends Artifact {
         }
         width = w;
         depth = d;
-        storageX = sx;
-        storageZ = sz;
         nx = Math.max(1, (int) Math.ceil(w / CELL));
         nz = Math.max(1, (int) Math.ceil(d / CELL));
         never = new boolean[nx * nz];
@@ -227,11 +216,7 @@ public class SearchMap extends Artifact {
         }
     }
 
-    /**
-     * The nearest unseen cell at least SPREAD from the others' points (else the nearest unseen), a
-     * cell's distance counted less by FAR_WEIGHT times its distance from the storage area; all seen,
-     * the map begins again.
-     */
+    /** The nearest unseen cell at least SPREAD from the others' points (else the nearest unseen); all seen, the map begins again. */
     private double[] pointFor(AgentId me, double x, double z) {
         double[] spot = null;
         double spotD = Double.MAX_VALUE;
@@ -262,7 +247,7 @@ public class SearchMap extends Artifact {
             if (seen[i]) {
                 continue;
             }
-            double d = Math.hypot(cx(i) - x, cz(i) - z) - FAR_WEIGHT * Math.hypot(cx(i) - storageX, cz(i) - storageZ);
+            double dx = cx(i) - x, dz = cz(i) - z, d = dx * dx + dz * dz;
             if (d < anyD) {
                 anyD = d;
                 anyBest = i;
