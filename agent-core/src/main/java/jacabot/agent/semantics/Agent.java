@@ -336,8 +336,7 @@ public final class Agent {
     /** Takes the numbers {@code fresh} calls of {@link #freshVar} and {@code internal} of {@link #internalVar} would take. */
     void retakeVars(long fresh, long internal) {
         if (fresh > 0) {
-            skipFreshVars(Math.toIntExact(fresh));
-            freshTaken += fresh;
+            freshSerials(Math.toIntExact(fresh));
         }
         freshSerial += internal;
         internalTaken += internal;
@@ -352,7 +351,7 @@ public final class Agent {
         }
     }
 
-    /** Takes the numbers {@code n} calls of {@link #freshVar} would take, at once. {@return the first of them} */
+    /** Takes the numbers of {@code n} fresh variables, at once (the one place that counts them). {@return the first of them} */
     long freshSerials(int n) {
         freshTaken += n;
         if (parser != null) {
@@ -369,8 +368,7 @@ public final class Agent {
      * come from one counter.
      */
     public Var freshVar(Var like) {
-        freshTaken++;
-        return new Var(like.name(), parser != null ? parser.varCounter().incrementAndGet() : ++freshSerial);
+        return new Var(like.name(), freshSerials(1));
     }
 
     /** {@return a copy of an intention, with its own id and unifiers, not yet running (a branch of {@code .fork})} */
