@@ -144,8 +144,8 @@ teammateWithin(X, Z, D) :- robotAt(A, Ax, Az) & not .my_name(A) & (Ax - X) * (Ax
 +!sweepStep : seekingClaim(Id, Cx, Cz, T0) & myClaim(Id) & claimPlaceInView(Cx, Cz) & not ignoring & not claimViewedSince(_)
     <- .system_time(T); +claimViewedSince(T); !sweepStep.
 @seekClaimOver
-+!sweepStep : seekingClaim(Id, _, _, T0) & .system_time(T) & seekClaimTime(W)
-    & (T - T0 > W | claimViewedSince(V) & T - V > 2000 | not myClaim(Id) | seekingClaim(Id, Cx, Cz, T0) & teammateWithin(Cx, Cz, 0.4))
++!sweepStep : seekingClaim(Id, Cx, Cz, T0) & .system_time(T) & seekClaimTime(W)
+    & (T - T0 > W | claimViewedSince(V) & T - V > 2000 | not myClaim(Id) | teammateWithin(Cx, Cz, 0.4))
     <- !endSeek; !nextWaypoint.
 @seekNextWaypoint +!nextWaypoint : seekingClaim(_, _, _, _) <- !endSeek; !nextWaypoint.
 @endSeek
