@@ -8,6 +8,5 @@ middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 !start.
 
 { include("skills/initial-phase.asl") }
-{ include("skills/flank-steer.asl") }
 { include("skills/coverage.asl") }
 { include("skills/recovery.asl") }

@@ -203,8 +203,6 @@ pausedUntil("-veering") :- veering.
 
 // a straight leg at cruiseSpeed of 5 to 20 s, cut short once it has gone staleLimit ms over floor
 // crossed before: in a big arena a leg over old ground was time lost for coverage
-@straightLeg +!straightLeg <- !cruise; .random(R); !leg(5000 + R * 15000).
-// the leg's wheels (flank-steer.asl, included before, may bend it)
-@cruiseStraight +!cruise : cruiseSpeed(V) <- setSpeeds(V, V).
+@straightLeg +!straightLeg : cruiseSpeed(V) <- setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
 @legDone +!leg(T) : T <= 0.
 @legStep +!leg(T) : staleLimit(L) <- .wait(500); staleTime(S); if (S >= L) { +stale } else { !leg(T - 500) }.

@@ -274,48 +274,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
-        if (map != null && flank != null && reading > 0) {
-            double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
-            flank.add(simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a), getObsProperty("obstacle").booleanValue());
-        }
-    }
-
-    /** The front sensors' recent points, for flankBend (null: off). */
-    private FlankMemory flank;
-    /** The step of flankBend's curvature, 1/m: a smaller change raises no event. */
-    static final double BEND_STEP = 1;
-
-    /**
-     * From now on, the observable property {@code flankBend(K)}: the curvature (1/m, rounded to
-     * {@value #BEND_STEP}; positive: bend right) that would take the robot clear of the points the
-     * front sensors met while an obstacle was signalled, in the last {@code keepMs} ms, that lie in the
-     * strip its body sweeps, {@code reach} m each side of its centre line and {@code length} m ahead,
-     * and no bend towards a side with any point met within {@code clearReach} (not in the thesis;
-     * {@link FlankMemory}; the points are placed by dead reckoning, so none before {@code odometry}).
-     * Fails for a span, reach or length that is not positive.
-     */
-    @OPERATION
-    void flankWatch(double reach, double clearReach, double length, double keepMs) {
-        if (!(reach > 0) || !(clearReach >= reach) || !(length > 0) || !(keepMs > 0)) {
-            failed("flankWatch needs a positive reach, a clear reach as wide or wider, a positive length and span, got "
-                    + reach + ", " + clearReach + ", " + length + ", " + keepMs);
-            return;
-        }
-        flank = new FlankMemory(Math.round(keepMs), reach, clearReach, length);
-        if (!hasObsProperty("flankBend")) {
-            defineObsProperty("flankBend", 0.0);
-        }
-    }
-
-    private void trackFlank() {
-        if (flank == null || map == null) {
-            return;
-        }
-        double k = Math.round(flank.bend(simTimeMs(), map.x(), map.z(), map.headingDegrees()) / BEND_STEP) * BEND_STEP;
-        if (k != getObsProperty("flankBend").doubleValue()) {
-            getObsProperty("flankBend").updateValue(k);
-            markTrigger();
-        }
     }
 
     @Override
@@ -339,7 +297,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            trackFlank();
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
