@@ -371,8 +371,8 @@ final class Physics {
 
     /**
      * The arrays a fan works in, kept from one fan to the next where each fan made its own (a
-     * camera's frame and each distance sensor's reading made a dozen arrays the size of the world's
-     * objects, a fifth of the world's allocation). A fan fills what it reads before reading it: the
+     * camera's frame and each distance sensor's reading made five arrays the size of the world's
+     * objects, a beam per ray and a list per ray for the sectors: a quarter of an agent run's allocation). A fan fills what it reads before reading it: the
      * objects' centres and reaches up to {@code near}'s size, the tries up to their count, a ray's
      * sector list up to its count. The world is stepped by one thread, and a fan calls nothing that
      * casts another.
