@@ -49,6 +49,7 @@ final class Dyn4jWorld extends World<Body> {
             throw new IllegalArgumentException("a body of this world is a TrackedBody, not a " + body.getClass().getSimpleName());
         }
         super.addBody(body);
+        ((TrackedBody) body).graphNode = constraintGraph.getNode(body);
     }
 
     @Override

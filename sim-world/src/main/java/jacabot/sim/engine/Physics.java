@@ -185,10 +185,19 @@ final class Physics {
      * so that the distances are those of its casts to the bit.
      */
     private static final class Beam {
-        final double sx, sy, dx, dy, radians;
+        double sx, sy, dx, dy, radians;
         private Ray ray;
 
         Beam(Vec2 origin, double bearingDeg, BeamDirections directions) {
+            aim(origin, bearingDeg, directions);
+        }
+
+        /** A beam to {@link #aim} before use. */
+        Beam() {
+        }
+
+        /** Points this beam along another bearing (a fan reuses one beam for all its rays). {@return this beam} */
+        Beam aim(Vec2 origin, double bearingDeg, BeamDirections directions) {
             int at = directions.of(bearingDeg);
             double[] v = directions.values();
             radians = v[at + BeamDirections.RADIANS];
@@ -196,6 +205,8 @@ final class Physics {
             sy = origin.z() - BACKOFF * v[at + BeamDirections.SIN];
             dx = v[at + BeamDirections.DX];
             dy = v[at + BeamDirections.DY];
+            ray = null;
+            return this;
         }
 
         /** {@return the same ray for dyn4j} */
@@ -296,8 +307,10 @@ final class Physics {
         int n = bearingsDeg.length;
         double ox = origin.x(), oz = origin.z();
         double length = maxRange + BACKOFF;
-        List<SimObject> near = new ArrayList<>();
-        double[] cx = new double[objects.size()], cz = new double[objects.size()], reach = new double[objects.size()];
+        FanScratch f = scratch.sized(objects.size());
+        List<SimObject> near = f.near;
+        near.clear();
+        double[] cx = f.cx, cz = f.cz, reach = f.reach;
         for (SimObject o : objects.values()) {
             if (o == self || o.carriedBy != null) {
                 continue;
@@ -317,12 +330,13 @@ final class Physics {
             reach[near.size()] = r;
             near.add(o);
         }
-        int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near) : null;
-        int[] order = new int[near.size()];
-        double[] bound = new double[near.size()];
+        int[][] candidates = n >= SECTOR_FAN ? sectors(ox, oz, bearingsDeg, cx, cz, reach, near, f) : null;
+        int[] order = f.order;
+        double[] bound = f.bound;
+        Beam beam = f.beam;
         List<List<RayHit>> fan = new ArrayList<>(n);
         for (int k = 0; k < n; k++) {
-            Beam beam = new Beam(origin, bearingsDeg[k], directions);
+            beam.aim(origin, bearingsDeg[k], directions);
             int[] mine = candidates == null ? null : candidates[k];
             int count = mine == null ? near.size() : mine[0], tries = 0;
             for (int j = 0; j < count; j++) {
@@ -353,6 +367,54 @@ final class Physics {
         return fan;
     }
 
+    private final FanScratch scratch = new FanScratch();
+
+    /**
+     * The arrays a fan works in, kept from one fan to the next where each fan made its own (a
+     * camera's frame and each distance sensor's reading made five arrays the size of the world's
+     * objects, a beam per ray and a list per ray for the sectors: a quarter of an agent run's allocation). A fan fills what it reads before reading it: the
+     * objects' centres and reaches up to {@code near}'s size, the tries up to their count, a ray's
+     * sector list up to its count. The world is stepped by one thread, and a fan calls nothing that
+     * casts another.
+     */
+    private static final class FanScratch {
+        final List<SimObject> near = new ArrayList<>();
+        final Beam beam = new Beam();
+        double[] cx = new double[0], cz = cx, reach = cx, bound = cx;
+        int[] order = new int[0];
+        /** {@link #sectors}' lists by ray, each {@code {count, index...}}, and its rays' bearings. */
+        int[][] lists = new int[0][];
+        double[] offset = cx;
+        final double[] side = new double[2];
+
+        /** {@return this scratch, its per-object arrays holding at least {@code objects}} */
+        FanScratch sized(int objects) {
+            if (cx.length < objects) {
+                cx = new double[objects];
+                cz = new double[objects];
+                reach = new double[objects];
+                bound = new double[objects];
+                order = new int[objects];
+            }
+            return this;
+        }
+
+        /** {@return the sectors' lists for {@code rays} rays, each emptied} */
+        int[][] lists(int rays) {
+            if (lists.length < rays) {
+                lists = Arrays.copyOf(lists, rays);
+                offset = new double[rays];
+            }
+            for (int k = 0; k < rays; k++) {
+                if (lists[k] == null) {
+                    lists[k] = new int[9];
+                }
+                lists[k][0] = 0;
+            }
+            return lists;
+        }
+    }
+
     /**
      * Puts object i with its bound among the first {@code size} tries, in ascending bound (after
      * those with the same bound: equal bounds keep the order they come in). {@return the new size}
@@ -377,7 +439,7 @@ final class Physics {
 
     /**
      * For each ray of a fan, the objects whose bounding circle the ray can cross, as
-     * {@code {count, index...}} in the objects' order; null when the rays' bearings do not grow
+     * {@code {count, index...}} in the objects' order (the scratch's lists, good until the next fan); null when the rays' bearings do not grow
      * from the first (then every ray tries every object). Every ray starts on the line through the
      * origin along its bearing, so it meets the grown circle of radius r around a centre at distance
      * D only when its bearing is within {@code asin(r / D)} of the centre's (so within its tangent,
@@ -388,18 +450,18 @@ final class Physics {
      * candidates as before, so the casts are the same.
      */
     private static int[][] sectors(double ox, double oz, double[] bearingsDeg, double[] cx, double[] cz, double[] reach,
-                                   List<SimObject> near) {
+                                   List<SimObject> near, FanScratch scratch) {
         int n = bearingsDeg.length, objects = near.size();
         double first = Math.toRadians(bearingsDeg[0]);
-        double[] offset = new double[n]; // each ray's bearing after the first's, radians
+        int[][] out = scratch.lists(n);
+        double[] offset = scratch.offset; // each ray's bearing after the first's, radians (the first n)
         for (int k = 0; k < n; k++) {
             offset[k] = Math.toRadians(bearingsDeg[k]) - first;
             if (k > 0 && !(offset[k] >= offset[k - 1]) || offset[k] > Math.PI / 2) {
                 return null;
             }
         }
-        int[][] out = new int[n][];
-        double[] side = new double[2]; // the sector's edges after the centre's bearing, radians (with the slack)
+        double[] side = scratch.side; // the sector's edges after the centre's bearing, radians (with the slack)
         for (int i = 0; i < objects; i++) {
             double ex = cx[i] - ox, ez = cz[i] - oz, r = reach[i];
             double d = Math.sqrt(ex * ex + ez * ez);
@@ -424,22 +486,15 @@ final class Physics {
                     }
                     at += at < 0 ? 2 * Math.PI : -2 * Math.PI;
                 }
-                from = firstAtLeast(offset, at + side[0]);
-                to = firstAtLeast(offset, Math.nextUp(at + side[1])) - 1;
+                from = firstAtLeast(offset, n, at + side[0]);
+                to = firstAtLeast(offset, n, Math.nextUp(at + side[1])) - 1;
             }
             for (int k = from; k <= to; k++) {
                 int[] list = out[k];
-                if (list == null) {
-                    list = out[k] = new int[Math.min(objects, 8) + 1];
-                } else if (list[0] + 1 == list.length) {
+                if (list[0] + 1 == list.length) {
                     list = out[k] = Arrays.copyOf(list, Math.min(objects + 1, 2 * list.length));
                 }
                 list[++list[0]] = i;
-            }
-        }
-        for (int k = 0; k < n; k++) {
-            if (out[k] == null) {
-                out[k] = new int[1];
             }
         }
         return out;
@@ -479,9 +534,9 @@ final class Physics {
         return true;
     }
 
-    /** {@return the first index whose value is at least {@code x}, or the length} */
-    private static int firstAtLeast(double[] sorted, double x) {
-        int lo = 0, hi = sorted.length;
+    /** {@return the first index below {@code length} whose value is at least {@code x}, or the length} */
+    private static int firstAtLeast(double[] sorted, int length, double x) {
+        int lo = 0, hi = length;
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
             if (sorted[mid] < x) {

@@ -6,6 +6,7 @@ import jacabot.sim.geom.Rgb;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Transform;
 
 /** One thing of the world and its dyn4j body. Internal. */
 final class SimObject {
@@ -45,9 +46,35 @@ final class SimObject {
         body.setUserData(this);
     }
 
+    /**
+     * The body's pose. A robot's sensors each ask for it after every physics step in which they read
+     * (six times a control step for the camera and five distance sensors), and the heading is an arc
+     * cosine: the last pose is kept with the transform's bits it was made from, and given again
+     * while they are the same. The pose is a function of those bits, so it is the one made anew.
+     */
     Pose pose() {
-        return new Pose(body.getTransform().getTranslationX(), body.getTransform().getTranslationY(),
-                Math.toDegrees(body.getTransform().getRotationAngle()));
+        Transform t = body.getTransform();
+        double x = t.getTranslationX(), z = t.getTranslationY(), cos = t.getCost(), sin = t.getSint();
+        PoseMade last = lastPose; // read once: a view thread may ask too, and each PoseMade is whole
+        if (last != null && last.madeFrom(x, z, cos, sin)) {
+            return last.pose;
+        }
+        Pose p = new Pose(x, z, Math.toDegrees(t.getRotationAngle()));
+        lastPose = new PoseMade(bits(x), bits(z), bits(cos), bits(sin), p);
+        return p;
+    }
+
+    private PoseMade lastPose;
+
+    /** A pose and the bits of the transform it was made from (translation, cosine, sine). */
+    private record PoseMade(long x, long z, long cos, long sin, Pose pose) {
+        boolean madeFrom(double x, double z, double cos, double sin) {
+            return this.x == bits(x) && this.z == bits(z) && this.cos == bits(cos) && this.sin == bits(sin);
+        }
+    }
+
+    private static long bits(double v) {
+        return Double.doubleToRawLongBits(v);
     }
 
     /** Teleports the body and stops it. */

@@ -1,6 +1,7 @@
 package jacabot.sim.engine;
 
 import org.dyn4j.dynamics.Body;
+import org.dyn4j.world.ConstraintGraphNode;
 
 /**
  * A dyn4j body that holds its own entry in each of the world's two broad phases
@@ -14,6 +15,12 @@ final class TrackedBody extends Body {
     StillFixedBodies.Entry<?> continuousEntry;
     /** {@link Islands}' marks: the last physics step the body was on an island as a moving body, and the last island it joined fixed. */
     long islandStep, staticIsland;
+    /**
+     * The body's node in its world's constraint graph, set when the body joins the world (dyn4j makes
+     * the node then, and anew if it joins again), so that the island walk reads a field where it looked
+     * the body up in the graph's hash map ({@link Dyn4jWorld#addBody}).
+     */
+    ConstraintGraphNode<Body> graphNode;
 
     /**
      * Tells the broad phases that the body was moved from outside dyn4j's step (a teleport): a fixed
