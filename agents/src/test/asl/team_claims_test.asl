@@ -194,3 +194,22 @@ mock_operation(_, ok).
        !assert_false(seekingClaim(_, _, _, _));
        !assert_true(waypoint(0.3, -0.2, _));                     // on with the team's search
        -searching; -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _); .abolish(waypoint(_, _, _)).
+
+// with a teammate, a red side of the image is not reached for while homing (far sight steers to its
+// cylinder) nor in the line of the stored pile; alone, picking's reach turns to it
+@[test]
++!test_with_a_teammate_a_lateral_cylinder_is_left_while_homing_or_in_the_piles_line
+    <- -homing(_); -myClaim(_); -+picked(false); !forget_calls; -+reachCylinder(false);
+       +robotAt(khepera4, -0.3, -0.3); .system_time(T); +homing(T);
+       !!perceive(cylinderLeft); .wait(300);
+       !assert_true(reachCylinder(false));
+       -homing(_); -cylinderLeft;
+       -+orientation(317); -+completed(1);                    // the storage point 20 degrees to the left
+       !!perceive(cylinderLeft); .wait(300);
+       !assert_true(reachCylinder(false));
+       -cylinderLeft; -robotAt(khepera4, _, _);                // alone: reached for
+       !!perceive(cylinderLeft);
+       !until(reachCylinder(true), 5000);
+       !assert_true(reachCylinder(true));
+       !until(reachCylinder(false), 8000);                     // no cylinder comes ahead: the reach fails
+       -cylinderLeft; -completed(1); -+orientation(90).
