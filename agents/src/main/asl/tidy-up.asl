@@ -29,10 +29,10 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 // after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.
-// parking is a trip to the charger that keeps "charging" (the task stays suspended, for good), no steering in its detours, round every box met in the run
+// parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
 +!parkIfDone : stored(N) & cylinders(N) & not charging
-    <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; +wholeDetours; routeRecall(600000); !goToCharger;
+    <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; !goToCharger;
        stopAcquireDistance; .print("Parked on the charger").
 // not done: look for the rest, where a cylinder was seen first (search-memory)
 @searchOn +!parkIfDone : not delivering & not picked(true) <- !searchFromMemory.

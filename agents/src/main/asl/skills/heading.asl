@@ -90,13 +90,10 @@ steerNow(T) :- steerEvery(T).
 // cell to and fro at every plan, and each turn on the spot stopped the robot)
 offBy(A) :- bending & bendTolerance(A).
 offBy(10).
-// not in the thesis: with wholeDetours (the agent's, optional: tidy-up's) no re-alignment during a detour's drive
-// on; the steering turned the robot back into the box it had just turned from, every second, for 16 s (tidy-up 181 x 1)
-detourOn :- wholeDetours & .intend(detour(_)).
 @steer
 +!steer : travelling & not halted & steerNow(T)
     <- .wait(T);
-       if (not avoiding & not .intend(balance) & not detourOn & not halted & travelling & location(X, _, Z) & targetPoint(Tx, Tz)) {
+       if (not avoiding & not .intend(balance) & not halted & travelling & location(X, _, Z) & targetPoint(Tx, Tz)) {
            !aimAt(Tx, Tz); ?aim(Ax, Az); computeAngle(X, Z, Ax, Az, D); ?orientation(O);
            ?offBy(A);
            if (math.abs(O - D) > A & math.abs(O - D) < 360 - A) { -+desired(D); !realign }

@@ -74,19 +74,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     }
 
     /**
-     * From now on an obstacle stays on the route map {@code memoryMs} after it was last seen, the ones
-     * forgotten before included (not in the thesis: tidy-up's way to park); fails before {@code routeMap}.
-     */
-    @OPERATION
-    void routeRecall(double memoryMs) {
-        if (routes == null || !(memoryMs > 0)) {
-            failed("routeRecall(MemoryMs) needs routeMap first and a memory > 0, got " + memoryMs);
-            return;
-        }
-        routes.remember((long) memoryMs);
-    }
-
-    /**
      * Guess that a wall's face seen goes on for {@code metres} past its seen end where the robot has not
      * driven (not in the thesis: {@link RouteMap#guessWalls}); fails before {@code routeMap}.
      */

@@ -43,7 +43,7 @@ final class RouteMap {
 
     private final int cols, rows;
     private final double halfW, halfD, clearance;
-    private long memoryMs;
+    private final long memoryMs;
     /** Per cell: the simulated time of the last sighting of an obstacle there, or {@link #NEVER}. */
     private final long[] seenAt;
     private static final long NEVER = Long.MIN_VALUE;
@@ -118,17 +118,6 @@ final class RouteMap {
         if (c >= 0) {
             seenAt[c] = nowMs;
         }
-    }
-
-    /**
-     * From now on an obstacle stays on the map {@code ms} after its last sighting (not in the thesis):
-     * sightings are kept whatever the memory, so a longer one brings back obstacles forgotten before.
-     */
-    void remember(long ms) {
-        if (ms <= 0) {
-            throw new IllegalArgumentException("a route map's memory is > 0, got " + ms);
-        }
-        memoryMs = ms;
     }
 
     /** The robot's centre stands at (x, z): nothing is there now (a box seen there has moved). */

@@ -63,19 +63,6 @@ class RouteMapTest {
     }
 
     @Test
-    void aLongerMemoryBringsBackABoxForgottenAndTheWayRoundIt() {
-        for (double z = -0.05; z <= 0.05; z += 0.01) {
-            map.obstacle(0, z, 0);
-        }
-        assertArrayEquals(new double[] {0.5, 0}, map.waypoint(-0.5, 0, 0.5, 0, 90_000), 1e-9);
-        map.remember(600_000);
-        assertTrue(map.blocked(0, 0, 90_000), "seen 90 s ago, within the new memory");
-        double[] w = map.waypoint(-0.5, 0, 0.5, 0, 90_000);
-        assertTrue(Math.abs(w[1]) > 0.02, "round the box again: " + w[1]);
-        assertThrows(IllegalArgumentException.class, () -> map.remember(0));
-    }
-
-    @Test
     void noRouteKnownGivesTheTargetItself() {
         // the target enclosed by obstacles seen all round it
         for (double a = 0; a < 2 * Math.PI; a += 0.02) {
