@@ -23,6 +23,9 @@ lookNearing(10000).
 // a wall is followed the way the robot came (skills/trail-side.asl): a trail point every 0.1 m (wide
 // tuning 101-160 x 1-2: 109 -> 110 of 120, 273 -> 284 deliveries; held out 106 -> 107; classic 143 -> 145)
 trailStep(0.1).
+// a look point within 0.6 m of a full look around made in the last 120 s gets none (skills/look-skip.asl;
+// wide tuning 101-160 x 1-2: 110 -> 111 of 120, 284 -> 282 deliveries; held out 107 -> 109, 289 -> 298)
+lookSkip(0.6, 120000).
 
 !start.
 
@@ -40,6 +43,7 @@ trailStep(0.1).
 { include("skills/search-memory.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
+{ include("skills/look-skip.asl") }
 { include("skills/look-points.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
