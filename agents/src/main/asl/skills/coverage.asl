@@ -100,14 +100,8 @@ inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L 
 // robot to the other jamb and back out (wide tuning world 130, seed 2)
 mouthShape(40, 10, 30, 6, 0.015).
 mouthTime(2000).
-// a pinned robot, not in the thesis: both front sensors holding pinnedWatch's Level or more, within
-// Diff of each other and Flat of where they began, for Hold ms while the wheels drive forward is an
-// obstacle: the robot pushes a thin wall's end between its rays or a box along, and dead reckoning
-// believes it crosses new floor, so the leg went on (wide held-out world 297 seed 1: 21.8 s of contact)
-pinnedWatch(250, 40, 15, 1500).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
-setUpGoal(setUpPinned).
 setUpGoal(setUpMouth).
 mouthOpen :- corridorSteer(Level, _, _) & steerCut(M) & leftSensor(L) & rightSensor(R) & L >= Level & R >= Level & L < M & R < M.
 // trapped: trapCount obstacles within trapWindow
@@ -127,8 +121,6 @@ pausedUntil("-veering") :- veering.
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
-@setUpPinned +!setUpPinned : pinnedWatch(Level, Diff, Flat, Hold) <- pinnedWatch(Level, Diff, Flat, Hold).
-@setUpPinnedOff +!setUpPinned.
 @setUpMouth +!setUpMouth : mouthShape(Low, Flat, Rise, Steps, Moved) <- mouthShape(Low, Flat, Rise, Steps, Moved).
 @setUpMouthOff +!setUpMouth.
 
