@@ -92,9 +92,8 @@ warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 // a passage's mouth met head-on, not in the thesis: the sensor looking into the passage reads its
-// side wall at a steady level (mouthShape's Low or more, within Flat over Steps reading pairs, and
-// off it a window before: its ray just went in, not a wall beside the robot) while the other, on the
-// jamb's face, climbs by Rise, the robot having driven Moved m; an obstacle then
+// side wall at a steady level (mouthShape's Low or more, within Flat over Steps reading pairs) while
+// the other, on the jamb's face, climbs by Rise, the robot having driven Moved m; an obstacle then
 // (the jamb's left-right difference) starts the corridor steering at once, for up to mouthTime ms
 // or until the corridor is recognised (walledIn), not the avoidance turn and veer arc that took the
 // robot to the other jamb and back out (wide tuning world 130, seed 2)
