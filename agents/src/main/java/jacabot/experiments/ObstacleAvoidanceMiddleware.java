@@ -270,37 +270,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The mouth's shape watched (null: off). */
-    private MouthShape mouthShape;
-
-    /**
-     * From now on, the observable property {@code mouth(true)} while the front readings have a
-     * passage's mouth's shape ({@link MouthShape}; not in the thesis). Fails before {@code odometry}
-     * or for a window under 2 pairs.
-     */
-    @OPERATION
-    void mouthShape(double low, double flat, double rise, double steps, double moved) {
-        if (map == null || steps < 2) {
-            failed("mouthShape needs odometry(SpeedUnit, AxleLength) first and a window of 2 pairs or more, got " + steps);
-            return;
-        }
-        mouthShape = new MouthShape(low, flat, rise, (int) steps, moved);
-        if (!hasObsProperty("mouth")) {
-            defineObsProperty("mouth", false);
-        }
-    }
-
-    private void trackMouth(double left, double right) {
-        if (mouthShape == null) {
-            return;
-        }
-        boolean mouth = mouthShape.read(left, right, map.x(), map.z());
-        if (mouth != getObsProperty("mouth").booleanValue()) {
-            getObsProperty("mouth").updateValue(mouth);
-            markTrigger();
-        }
-    }
-
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -328,7 +297,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            trackMouth(left, right);
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
