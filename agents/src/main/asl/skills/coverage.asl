@@ -91,26 +91,8 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// a passage's mouth met head-on, not in the thesis: the sensor looking into the passage reads its
-// side wall at a steady level (mouthShape's Low or more, within Flat over Steps reading pairs, and
-// off it a window before: its ray just went in, not a wall beside the robot) while the other, on the
-// jamb's face, climbs by Rise, the robot having driven Moved m; an obstacle then
-// (the jamb's left-right difference) starts the corridor steering at once, for up to mouthTime ms
-// or until the corridor is recognised (walledIn), not the avoidance turn and veer arc that took the
-// robot to the other jamb and back out (wide tuning world 130, seed 2)
-mouthShape(40, 10, 30, 6, 0.015, 40).
-mouthTime(4000).
-mouthSpeed(50).               // the entry's wheel speed: the passage leaves 1.5-2 cm each side
-// a pinned robot, not in the thesis: both front sensors holding pinnedWatch's Level or more, within
-// Diff of each other and Flat of where they began, for Hold ms while the wheels drive forward is an
-// obstacle: the robot pushes a thin wall's end between its rays or a box along, and dead reckoning
-// believes it crosses new floor, so the leg went on (wide held-out world 297 seed 1: 21.8 s of contact)
-pinnedWatch(250, 40, 15, 1500).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
-setUpGoal(setUpPinned).
-setUpGoal(setUpMouth).
-mouthOpen :- corridorSteer(Level, _, _) & steerCut(M) & leftSensor(L) & rightSensor(R) & L >= Level & R >= Level & L < M & R < M.
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
@@ -128,11 +110,6 @@ pausedUntil("-veering") :- veering.
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
-@setUpPinned +!setUpPinned : pinnedWatch(Level, Diff, Flat, Hold) <- pinnedWatch(Level, Diff, Flat, Hold).
-@setUpPinnedOff +!setUpPinned.
-@setUpMouth +!setUpMouth : mouthShape(Low, Flat, Rise, Steps, Moved, Fall) <- mouthShape(Low, Flat, Rise, Steps, Moved, Fall).
-@setUpMouthOff +!setUpMouth.
-
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
 // the obstacle plan ends the random motion that runs (.succeed_goal(move(_))): "avoiding" only
@@ -147,9 +124,6 @@ pausedUntil("-veering") :- veering.
 // docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: no standstill before the turn")
 @coverCorridor
 +obstacle(true) : not avoiding & inCorridor <- +avoiding; -veering; .succeed_goal(move(_)); !steer; -avoiding.
-@coverMouth
-+obstacle(true) : not avoiding & mouth(true) & mouthOpen & mouthTime(D)
-    <- +avoiding; -veering; .succeed_goal(move(_)); .system_time(T); !enter(T + D); -avoiding.
 @coverObstacle
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
@@ -172,16 +146,6 @@ pausedUntil("-veering") :- veering.
        .wait(40); !steer.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
 @steerDone +!steer <- .system_time(T); -+steeredAt(T).
-
-// into a passage's mouth (@coverMouth): steering as in a corridor while both walls are seen; the
-// corridor's own steering once it is recognised
-@enterCorridor +!enter(_) : inCorridor <- !steer.
-@enterOn
-+!enter(U) : .system_time(T) & T < U & mouthOpen & delta(V) & mouthSpeed(S) & cruiseSpeed(Cruise) & corridorSteer(_, _, G)
-    <- C = math.min(S, G * math.abs(V) * S / Cruise); if (V > 0) { setSpeeds(S, S - C) } else { setSpeeds(S - C, S) };
-       .wait(40); !enter(U).
-@enterOut +!enter(_) : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
-@enterDone +!enter(_) <- .system_time(T); -+steeredAt(T).
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
