@@ -91,26 +91,8 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// a passage's mouth met head-on, not in the thesis: the sensor looking into the passage reads its
-// side wall at a steady level (mouthShape's Low or more, within Flat over Steps reading pairs, and
-// off it a window before: its ray just went in, not a wall beside the robot) while the other, on the
-// jamb's face, climbs by Rise, the robot having driven Moved m; an obstacle then
-// (the jamb's left-right difference) starts the corridor steering at once, for up to mouthTime ms
-// or until the corridor is recognised (walledIn), not the avoidance turn and veer arc that took the
-// robot to the other jamb and back out (wide tuning world 130, seed 2)
-mouthShape(40, 10, 30, 6, 0.015, 40).
-mouthTime(2000).
-// and only with mouthWalls' Cells or more cells marked as walls (markWalls) within Reach m on each
-// side of the heading: the falling shape holds at box corners too, where the robot steered between
-// boxes into contact (wide held out 241-300); off where markWalls is (under looseArea)
-mouthWalls(0.4, 1).
-// (the pinned watch, pinnedWatch(Level, Diff, Flat, Hold), is off: with it wide held-out world 290
-// seed 2 stayed wedged for 583 s instead of 216 s)
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
-setUpGoal(setUpPinned).
-setUpGoal(setUpMouth).
-mouthOpen :- corridorSteer(Level, _, _) & steerCut(M) & leftSensor(L) & rightSensor(R) & L >= Level & R >= Level & L < M & R < M.
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
@@ -128,13 +110,6 @@ pausedUntil("-veering") :- veering.
        if (wallMarks(M)) { markWalls(M) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
-@setUpPinned +!setUpPinned : pinnedWatch(Level, Diff, Flat, Hold) <- pinnedWatch(Level, Diff, Flat, Hold).
-@setUpPinnedOff +!setUpPinned.
-@setUpMouth
-+!setUpMouth : mouthShape(Low, Flat, Rise, Steps, Moved, Fall) & mouthWalls(Reach, Cells)
-    <- mouthShape(Low, Flat, Rise, Steps, Moved, Fall); mouthWalls(Reach, Cells).
-@setUpMouthOff +!setUpMouth.
-
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
 // the obstacle plan ends the random motion that runs (.succeed_goal(move(_))): "avoiding" only
@@ -149,9 +124,6 @@ pausedUntil("-veering") :- veering.
 // docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: no standstill before the turn")
 @coverCorridor
 +obstacle(true) : not avoiding & inCorridor <- +avoiding; -veering; .succeed_goal(move(_)); !steer; -avoiding.
-@coverMouth
-+obstacle(true) : not avoiding & mouth(true) & mouthOpen & mouthTime(D)
-    <- +avoiding; -veering; .succeed_goal(move(_)); .system_time(T); !enter(T + D); -avoiding.
 @coverObstacle
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
@@ -174,16 +146,6 @@ pausedUntil("-veering") :- veering.
        .wait(40); !steer.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
 @steerDone +!steer <- .system_time(T); -+steeredAt(T).
-
-// into a passage's mouth (@coverMouth): steering as in a corridor while both walls are seen; the
-// corridor's own steering once it is recognised
-@enterCorridor +!enter(_) : inCorridor <- !steer.
-@enterOn
-+!enter(U) : .system_time(T) & T < U & mouthOpen & delta(V) & cruiseSpeed(S) & corridorSteer(_, _, G)
-    <- C = math.min(S, G * math.abs(V)); if (V > 0) { setSpeeds(S, S - C) } else { setSpeeds(S - C, S) };
-       .wait(40); !enter(U).
-@enterOut +!enter(_) : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
-@enterDone +!enter(_) <- .system_time(T); -+steeredAt(T).
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)

@@ -80,29 +80,6 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
-    /**
-     * {@return the cells with an obstacle met within {@code reach} metres of the centre, 20 to 110
-     * degrees off the heading: {left side, right side}} Cells straight ahead count for neither side.
-     */
-    int[] blockedBeside(double reach) {
-        int[] sides = new int[2];
-        int n = (int) Math.ceil(reach / CELL) + 1, ci = (int) Math.floor(x / CELL), cj = (int) Math.floor(z / CELL);
-        for (int i = ci - n; i <= ci + n; i++) {
-            for (int j = cj - n; j <= cj + n; j++) {
-                if (!blocked.contains(key(i, j))) {
-                    continue;
-                }
-                double dx = (i + 0.5) * CELL - x, dz = (j + 0.5) * CELL - z;
-                double off = Math.toDegrees(Math.atan2(dz, dx) - heading);
-                off = off - 360 * Math.floor((off + 180) / 360);
-                if (Math.hypot(dx, dz) <= reach && Math.abs(off) >= 20 && Math.abs(off) <= 110) {
-                    sides[off > 0 ? 0 : 1]++;
-                }
-            }
-        }
-        return sides;
-    }
-
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;

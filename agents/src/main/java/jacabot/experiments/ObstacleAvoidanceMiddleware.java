@@ -270,84 +270,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The pinned robot watched (null: off), and whether the wheels last drove forward. */
-    private PinnedWatch pinnedWatch;
-    private boolean forward;
-
-    /**
-     * From now on, an obstacle is also signalled when both front sensors have held {@code level} or
-     * more, within {@code diff} of each other and {@code flat} of where they began, for {@code holdMs}
-     * while the wheels drove forward ({@link PinnedWatch}; not in the thesis). Fails for a level under 1.
-     */
-    @OPERATION
-    void pinnedWatch(double level, double diff, double flat, double holdMs) {
-        if (!(level >= 1) || !(holdMs > 0)) {
-            failed("pinnedWatch needs a level of at least 1 and a positive hold, got " + level + ", " + holdMs);
-            return;
-        }
-        pinnedWatch = new PinnedWatch(level, diff, flat, Math.round(holdMs));
-    }
-
-    /** The mouth's shape watched (null: off). */
-    private MouthShape mouthShape;
-
-    /**
-     * From now on, the observable property {@code mouth(true)} while the front readings have a
-     * passage's mouth's shape ({@link MouthShape}; not in the thesis). Fails before {@code odometry}
-     * or for a window under 2 pairs.
-     */
-    @OPERATION
-    void mouthShape(double low, double flat, double rise, double steps, double moved, double fall) {
-        if (map == null || steps < 2) {
-            failed("mouthShape needs odometry(SpeedUnit, AxleLength) first and a window of 2 pairs or more, got " + steps);
-            return;
-        }
-        mouthShape = new MouthShape(low, flat, rise, (int) steps, moved, fall);
-        if (!hasObsProperty("mouth")) {
-            defineObsProperty("mouth", false);
-        }
-    }
-
-    /** How near, in metres, and how many, the walls marked on each side that make a mouth (NaN: not needed). */
-    private double mouthReach = Double.NaN, mouthCells;
-
-    /**
-     * From now on, {@code mouth(true)} also needs {@code cells} or more cells marked by {@code markWalls}
-     * within {@code reach} metres on each side of the heading (not in the thesis): a wall's passage,
-     * not a gap between boxes; without {@code markWalls}, no mouth at all. Fails for a reach under 0.1 m.
-     */
-    @OPERATION
-    void mouthWalls(double reach, double cells) {
-        if (!(reach >= ExplorationMap.CELL)) {
-            failed("mouthWalls needs a reach of at least " + ExplorationMap.CELL + " m, got " + reach);
-            return;
-        }
-        mouthReach = reach;
-        mouthCells = cells;
-    }
-
-    private boolean wallsBothSides() {
-        if (Double.isNaN(mouthReach)) {
-            return true;
-        }
-        if (Double.isNaN(markLevel)) {
-            return false;
-        }
-        int[] sides = map.blockedBeside(mouthReach);
-        return sides[0] >= mouthCells && sides[1] >= mouthCells;
-    }
-
-    private void trackMouth(double left, double right) {
-        if (mouthShape == null) {
-            return;
-        }
-        boolean mouth = mouthShape.read(left, right, map.x(), map.z()) && wallsBothSides();
-        if (mouth != getObsProperty("mouth").booleanValue()) {
-            getObsProperty("mouth").updateValue(mouth);
-            markTrigger();
-        }
-    }
-
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -360,7 +282,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double[] w = info.getDoubleValues();
             if (w.length >= 2) {
                 map.wheels(simTimeMs(), w[0], w[1]);
-                forward = w[0] > 0 && w[1] > 0;
             }
         }
         if (stopDistance) {
@@ -376,12 +297,10 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            trackMouth(left, right);
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
-            boolean pinned = pinnedWatch != null && pinnedWatch.read(left, right, forward, simTimeMs());
-            if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning || pinned) {
+            if (deltaBased && Math.abs(delta) > deltaLimit || right > warning || left > warning) {
                 obstacle = true;
             } else if (right < safe && left < safe && Math.abs(delta) <= (Double.isNaN(deltaClear) ? deltaLimit / 2 : deltaClear) && clearAhead()) {
                 obstacle = false;

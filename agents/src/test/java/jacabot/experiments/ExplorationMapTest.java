@@ -1,6 +1,5 @@
 package jacabot.experiments;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -24,19 +23,6 @@ class ExplorationMapTest {
         map.wheels(2000 + quarter, 0, 0);
         assertEquals(90, map.headingDegrees(), 0.5);
         assertEquals(0.2, map.x(), 1e-9, "a turn on the spot does not move the centre");
-    }
-
-    @Test
-    void obstaclesBesideTheHeadingAreCountedBySide() {
-        map.wheels(0, 0, 0);
-        map.obstacle(60, 0.25); // a wall's mark ahead-left
-        map.obstacle(-60, 0.25); // and ahead-right: a wall's passage
-        map.obstacle(0, 0.25); // straight ahead: neither side
-        map.obstacle(60, 0.8); // out of reach
-        assertArrayEquals(new int[] {1, 1}, map.blockedBeside(0.4));
-        map.obstacle(-90, 0.3);
-        assertArrayEquals(new int[] {1, 2}, map.blockedBeside(0.4));
-        assertArrayEquals(new int[] {0, 0}, map.blockedBeside(0.2), "all marks farther than 0.2 m");
     }
 
     @Test
