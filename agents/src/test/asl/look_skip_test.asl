@@ -1,7 +1,7 @@
 // Skill test of no second look around where the camera has just looked (skills/look-skip.asl): a
 // full look around is recorded where it ends; a look point near a recent one leaves the round
-// (unless none would be left) and, reached, gets no turn, nor does the look every lookEvery ms
-// made there; an old one counts for nothing. The
+// (unless none would be left) and, reached, gets no turn while the round holds another point, nor
+// does the look every lookEvery ms made there; an old one counts for nothing. The
 // operations are mocked (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
@@ -55,6 +55,13 @@ mock_operation(_, ok).
        !sweepStep;
        !assert_false(looked);
        !assert_true(waypoint(-1, -0.5, _)).
+
+@[test]
++!test_a_point_reached_near_a_recent_look_is_looked_at_when_the_round_has_no_other
+    <- .abolish(lookedAt(_, _, _)); -looked; .system_time(T); +lookedAt(0.5, -0.4, T - 5000);
+       -+sweep([[0.9, -0.3]]); -+waypoint(1, -0.5, 0); -+location(1, 0, -0.4);
+       !sweepStep;                                                      // skipped, the round planned anew at once: a loop
+       !assert_true(looked).
 
 @[test]
 +!test_an_old_look_counts_for_nothing

@@ -3,8 +3,8 @@
 // reached near where a full look around was made a little before (the last look point's, or the
 // sweep's look every lookEvery ms) turned again over the same floor. The places of full looks
 // around are kept; a look point within lookSkip's radius of one made within its time is left out
-// of the round; reached anyway (the nearest, when every one left is such) it gets no turn, nor
-// does the look every lookEvery ms there.
+// of the round; reached anyway (the nearest, when every one left is such) it gets no turn while
+// the round still holds a point not looked near, nor does the look every lookEvery ms there.
 // Parameters (the agent's): lookSkip(R, F): R m, F ms; without it this skill does nothing.
 // Reads: lookEvery(L), lastLook(T) (sweep); sweep(Points), waypoint(X, Z, T), lanesOnly, lookReach(R)
 // (look-points); lookingAgain(X, Z, T) (search memory); location.
@@ -28,9 +28,12 @@ lookedNear(X, Z, T) :- lookSkip(R, F) & lookedAt(Lx, Lz, T0) & T - T0 < F & (X -
                  & .findall([X, Z], .member([X, Z], Ps) & not lookedNear(X, Z, T), Keep) & Keep = [_ | _]
     <- -+sweep(Keep); !nextWaypoint.
 
+// (only while the round still holds a point not looked near: in an arena of one look point the round
+// is planned again at once, and skipping it there ran the reasoning away)
 @lookPointSeenReached
 +!sweepStep : lookSkip(_, _) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz) & lookReach(R)
               & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R & .system_time(T) & lookedNear(X, Z, T)
+              & sweep(Ps) & .member([X1, Z1], Ps) & not lookedNear(X1, Z1, T)
     <- !nextWaypoint.
 
 // the sweep's look every lookEvery ms is put off where a full look around was made within the time
