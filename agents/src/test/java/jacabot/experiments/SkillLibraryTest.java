@@ -79,7 +79,6 @@ class SkillLibraryTest {
         assertEquals(List.of(), unlabelled, "plans without a label");
     }
 
-    /** Within one agent (its includes read in), a label names one plan, and every include is found. */
     /** The module's README is where a user looks a skill up: a skill file without its row is one they miss. */
     @Test
     void everySkillFileHasItsRowInTheReadme() throws Exception {
@@ -92,6 +91,7 @@ class SkillLibraryTest {
         assertEquals(Set.of(), missing, "skill files without a row in agents/README.md's skills table");
     }
 
+    /** Within one agent (its includes read in), a label names one plan, and every include is found. */
     @Test
     void everyAgentNamesEachPlanOnce() throws Exception {
         for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up",
