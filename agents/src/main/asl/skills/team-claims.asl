@@ -36,7 +36,7 @@ sightCone(15).         // degrees either side of a sighting's bearing where a ca
 // robotAt(A, X, Z) (team-places), storagePoint(X, Z) (the world), location, orientation, homing(_)
 // (far-sight), cylinderLeft, cylinderRight (the middleware: its plans come before picking's).
 // Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true)), delivery
-// (stored(N)), team-places (teammateNear), team-storage (awayFromStorage). Include it FIRST (after team-places): its plans for
+// (stored(N)), team-places (teammateNear, teammateWithin), team-storage (awayFromStorage). Include it FIRST (after team-places): its plans for
 // !init and !sighted come before the skills' defaults.
 
 setUpGoal(setUpTeam).
@@ -137,7 +137,6 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
 // Not by the storage area (team-storage's awayFromStorage), where the teammates deliver, nor with a
 // teammate within 0.5 m of the robot or of the place, and given up once one comes within 0.4 m of the
 // place: robots seeking again met teammates there (held out, four robots: contact under 2 s in 79 of 90 runs).
-teammateWithin(X, Z, D) :- robotAt(A, Ax, Az) & not .my_name(A) & (Ax - X) * (Ax - X) + (Az - Z) * (Az - Z) < D * D.
 @seekLostClaim
 -homing(_) : teamSearch & searching & myClaim(Id) & not picked(true) & not picking & not charging
     & lastSighted(S) & .system_time(T) & T - S >= 1500 & .my_name(Me) & claimed(Id, Me, Cx, Cz, _)

@@ -15,8 +15,8 @@ teammateClearance(0.15).   // m: a sighting this near a teammate's last publishe
 
 placeDue(_) :- not placePublished(_).
 placeDue(T) :- placePublished(T0) & placeEvery(E) & T - T0 >= E.
-teammateNear(X, Z) :- robotAt(A, Rx, Rz) & not .my_name(A) & teammateClearance(R)
-    & (X - Rx) * (X - Rx) + (Z - Rz) * (Z - Rz) < R * R.
+teammateNear(X, Z) :- teammateClearance(R) & teammateWithin(X, Z, R).
+teammateWithin(X, Z, D) :- robotAt(A, Ax, Az) & not .my_name(A) & (Ax - X) * (Ax - X) + (Az - Z) * (Az - Z) < D * D.
 
 // driven by the GPS percept, so that no drop of every desire (a fallen cylinder) ends it; a skill
 // with a plan for +location that applies now and then (team-storage) is included before this one
