@@ -4,11 +4,9 @@
 // arena(W, D) comes from the world file (the launcher adds it as an initial belief).
 
 middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
-floorDrive(20000, 3, 20000) :- wallMarks(_).  // skills/floor-drive.asl: the drive to uncrossed floor after 20 s with under 3 new cells, where walls seen are marked
 
 !start.
 
 { include("skills/initial-phase.asl") }
-{ include("skills/floor-drive.asl") }
 { include("skills/coverage.asl") }
 { include("skills/recovery.asl") }
