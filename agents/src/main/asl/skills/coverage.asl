@@ -92,6 +92,8 @@ warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
+// no obstacle met nor corridor steered within G ms before Now
+clearFor(Now, G) :- not (obstacleTimes([O | _]) & Now - O < G) & not (steeredAt(C) & Now - C < G).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
@@ -205,4 +207,13 @@ pausedUntil("-veering") :- veering.
 // crossed before: in a big arena a leg over old ground was time lost for coverage
 @straightLeg +!straightLeg : cruiseSpeed(V) <- setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
 @legDone +!leg(T) : T <= 0.
+// not in the thesis, on only in an agent that believes legLook(K): a leg also ends, past flankTime
+// after the last obstacle, once the floor straight ahead (exploreHorizon) holds no cell not crossed
+// while some heading holds K or more (the middleware's freshAhead); @moveExplore then turns towards
+// the new floor. Before, it went on over crossed floor for staleLimit (2 s), and the leg after an
+// avoidance (@moveAway) keeps the heading the avoidance left, new floor or not
+@legLookAhead
++!leg(T) : legLook(K) & staleLimit(L) & flankTime(G)
+    <- .wait(500); staleTime(S); freshAhead(A, B); .system_time(Now);
+       if (S >= L | (A == 0 & B >= K & clearFor(Now, G))) { +stale } else { !leg(T - 500) }.
 @legStep +!leg(T) : staleLimit(L) <- .wait(500); staleTime(S); if (S >= L) { +stale } else { !leg(T - 500) }.

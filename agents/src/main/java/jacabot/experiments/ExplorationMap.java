@@ -94,6 +94,19 @@ final class ExplorationMap {
         return best;
     }
 
+    /**
+     * {@return the cells not yet crossed straight ahead within the horizon, and the most along any of
+     * the {@value #DIRECTIONS} headings} (rays stop at the obstacles met): a leg whose way ahead is
+     * crossed floor while another heading still offers new floor can end early.
+     */
+    int[] freshAhead() {
+        int best = 0;
+        for (int k = 0; k < DIRECTIONS; k++) {
+            best = Math.max(best, (int) score(heading + k * 2 * Math.PI / DIRECTIONS));
+        }
+        return new int[] {(int) score(heading), best};
+    }
+
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);

@@ -141,6 +141,22 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
+     * The cells not crossed yet straight ahead within the horizon, and the most along any heading
+     * (not in the thesis, {@code ExplorationMap.freshAhead}): a straight leg heading into floor
+     * already crossed while another heading offers new floor can end. Fails before {@code odometry}.
+     */
+    @OPERATION
+    void freshAhead(OpFeedbackParam<Double> ahead, OpFeedbackParam<Double> best) {
+        if (map == null) {
+            failed("freshAhead needs odometry(SpeedUnit, AxleLength) first");
+            return;
+        }
+        int[] cells = map.freshAhead();
+        ahead.set((double) cells[0]);
+        best.set((double) cells[1]);
+    }
+
+    /**
      * How many cells the robot crossed for the first time in the last {@code windowMs} ms (not in the
      * thesis): a rate of new floor that falls tells the agent its random walk covers old ground. Fails
      * before {@code odometry}.
