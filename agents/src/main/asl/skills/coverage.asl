@@ -132,6 +132,15 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
+// not in the thesis, on only in an agent that believes turnOn(MaxDegrees, Cells): once clear, the
+// avoidance turn goes on, up to MaxDegrees, to the heading with the most new floor on the map
+// (Cells or more) when straight ahead holds none (the middleware's turnOnToFresh)
+@coverLeftOn
++!avoid(D) : D < 0 & turnOn(Max, K) & turnSpeed(S)
+    <- setSpeeds(-S, S); !clear; turnOnToFresh("left", Max, K, S, Ms); if (Ms > 0) { .wait(Ms) }; +veering; -avoiding; !veer(D).
+@coverRightOn
++!avoid(D) : D > 0 & turnOn(Max, K) & turnSpeed(S)
+    <- setSpeeds(S, -S); !clear; turnOnToFresh("right", Max, K, S, Ms); if (Ms > 0) { .wait(Ms) }; +veering; -avoiding; !veer(D).
 @coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
 @coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 

@@ -157,6 +157,22 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
+     * How long to go on turning on the spot, at wheel speeds ±{@code speed}, towards {@code side}
+     * ("left" or "right"), up to {@code maxDegrees} in 10° steps, to the heading with the most floor not
+     * crossed (at least {@code atLeast} cells within the horizon) when straight ahead holds none; 0
+     * otherwise (not in the thesis). Fails before {@code odometry}.
+     */
+    @OPERATION
+    void turnOnToFresh(String side, double maxDegrees, double atLeast, double speed, OpFeedbackParam<Double> ms) {
+        if (map == null || !(speed > 0)) {
+            failed("turnOnToFresh needs odometry(SpeedUnit, AxleLength) first and a positive speed");
+            return;
+        }
+        double turn = map.turnOnToFresh("left".equals(side) ? 1 : -1, maxDegrees, 10, (int) Math.round(atLeast));
+        ms.set((double) map.turnMillis(turn, speed));
+    }
+
+    /**
      * How many cells the robot crossed for the first time in the last {@code windowMs} ms (not in the
      * thesis): a rate of new floor that falls tells the agent its random walk covers old ground. Fails
      * before {@code odometry}.
