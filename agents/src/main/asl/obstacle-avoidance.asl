@@ -4,9 +4,6 @@
 // arena(W, D) comes from the world file (the launcher adds it as an initial belief).
 
 middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
-// a straight leg ends early once the floor ahead is crossed while 2 cells or more are new along
-// another heading (skills/coverage.asl, @legLookAhead; not in the thesis)
-legLook(2).
 
 !start.
 

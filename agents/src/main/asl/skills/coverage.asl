@@ -92,8 +92,6 @@ warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
-// no obstacle met nor corridor steered within G ms before Now
-clearFor(Now, G) :- not (obstacleTimes([O | _]) & Now - O < G) & not (steeredAt(C) & Now - C < G).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
@@ -132,15 +130,6 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-// not in the thesis, on only in an agent that believes turnOn(MaxDegrees, Cells): once clear, the
-// avoidance turn goes on, up to MaxDegrees, to the heading with the most new floor on the map
-// (Cells or more) when straight ahead holds none (the middleware's turnOnToFresh)
-@coverLeftOn
-+!avoid(D) : D < 0 & turnOn(Max, K) & turnSpeed(S)
-    <- setSpeeds(-S, S); !clear; turnOnToFresh("left", Max, K, S, Ms); if (Ms > 0) { .wait(Ms) }; +veering; -avoiding; !veer(D).
-@coverRightOn
-+!avoid(D) : D > 0 & turnOn(Max, K) & turnSpeed(S)
-    <- setSpeeds(S, -S); !clear; turnOnToFresh("right", Max, K, S, Ms); if (Ms > 0) { .wait(Ms) }; +veering; -avoiding; !veer(D).
 @coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
 @coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
@@ -216,13 +205,4 @@ pausedUntil("-veering") :- veering.
 // crossed before: in a big arena a leg over old ground was time lost for coverage
 @straightLeg +!straightLeg : cruiseSpeed(V) <- setSpeeds(V, V); .random(R); !leg(5000 + R * 15000).
 @legDone +!leg(T) : T <= 0.
-// not in the thesis, on only in an agent that believes legLook(K): a leg also ends, past flankTime
-// after the last obstacle, once the floor straight ahead (exploreHorizon) holds no cell not crossed
-// while some heading holds K or more (the middleware's freshAhead); @moveExplore then turns towards
-// the new floor. Before, it went on over crossed floor for staleLimit (2 s), and the leg after an
-// avoidance (@moveAway) keeps the heading the avoidance left, new floor or not
-@legLookAhead
-+!leg(T) : legLook(K) & staleLimit(L) & flankTime(G)
-    <- .wait(500); staleTime(S); freshAhead(A, B); .system_time(Now);
-       if (S >= L | (A == 0 & B >= K & clearFor(Now, G))) { +stale } else { !leg(T - 500) }.
 @legStep +!leg(T) : staleLimit(L) <- .wait(500); staleTime(S); if (S >= L) { +stale } else { !leg(T - 500) }.

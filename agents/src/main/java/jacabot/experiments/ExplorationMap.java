@@ -94,39 +94,6 @@ final class ExplorationMap {
         return best;
     }
 
-    /**
-     * {@return the cells not yet crossed straight ahead within the horizon, and the most along any of
-     * the {@value #DIRECTIONS} headings} (rays stop at the obstacles met): a leg whose way ahead is
-     * crossed floor while another heading still offers new floor can end early.
-     */
-    int[] freshAhead() {
-        int best = 0;
-        for (int k = 0; k < DIRECTIONS; k++) {
-            best = Math.max(best, (int) score(heading + k * 2 * Math.PI / DIRECTIONS));
-        }
-        return new int[] {(int) score(heading), best};
-    }
-
-    /**
-     * {@return the turn in degrees, on the side of {@code sign} (1 left, -1 right) and at most
-     * {@code maxDegrees}, in steps of {@code stepDegrees}, to the heading with the most cells not
-     * crossed ahead, provided it holds {@code atLeast} or more and straight ahead holds none; else 0}
-     */
-    double turnOnToFresh(int sign, double maxDegrees, double stepDegrees, int atLeast) {
-        if (score(heading) > 0) {
-            return 0;
-        }
-        double best = 0, bestScore = atLeast - 1;
-        for (double t = stepDegrees; t <= maxDegrees + 1e-9; t += stepDegrees) {
-            double sc = score(heading + Math.toRadians(sign * t));
-            if (sc > bestScore) {
-                bestScore = sc;
-                best = sign * t;
-            }
-        }
-        return best;
-    }
-
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);

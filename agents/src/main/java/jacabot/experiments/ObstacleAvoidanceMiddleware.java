@@ -141,38 +141,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * The cells not crossed yet straight ahead within the horizon, and the most along any heading
-     * (not in the thesis, {@code ExplorationMap.freshAhead}): a straight leg heading into floor
-     * already crossed while another heading offers new floor can end. Fails before {@code odometry}.
-     */
-    @OPERATION
-    void freshAhead(OpFeedbackParam<Double> ahead, OpFeedbackParam<Double> best) {
-        if (map == null) {
-            failed("freshAhead needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        int[] cells = map.freshAhead();
-        ahead.set((double) cells[0]);
-        best.set((double) cells[1]);
-    }
-
-    /**
-     * How long to go on turning on the spot, at wheel speeds ±{@code speed}, towards {@code side}
-     * ("left" or "right"), up to {@code maxDegrees} in 10° steps, to the heading with the most floor not
-     * crossed (at least {@code atLeast} cells within the horizon) when straight ahead holds none; 0
-     * otherwise (not in the thesis). Fails before {@code odometry}.
-     */
-    @OPERATION
-    void turnOnToFresh(String side, double maxDegrees, double atLeast, double speed, OpFeedbackParam<Double> ms) {
-        if (map == null || !(speed > 0)) {
-            failed("turnOnToFresh needs odometry(SpeedUnit, AxleLength) first and a positive speed");
-            return;
-        }
-        double turn = map.turnOnToFresh("left".equals(side) ? 1 : -1, maxDegrees, 10, (int) Math.round(atLeast));
-        ms.set((double) map.turnMillis(turn, speed));
-    }
-
-    /**
      * How many cells the robot crossed for the first time in the last {@code windowMs} ms (not in the
      * thesis): a rate of new floor that falls tells the agent its random walk covers old ground. Fails
      * before {@code odometry}.

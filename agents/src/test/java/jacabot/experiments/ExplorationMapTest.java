@@ -113,25 +113,6 @@ class ExplorationMapTest {
         assertThrows(IllegalArgumentException.class, () -> map.horizon(0.05));
     }
 
-    @Test
-    void freshAheadCountsTheNewCellsStraightOnAndTheMostAlongAnyHeading() {
-        map.horizon(0.6);
-        int[] start = map.freshAhead();
-        assertTrue(start[0] >= 5 && start[1] >= start[0], "all new at the start, got " + start[0] + ", " + start[1]);
-        drive(0, 6000, 100);      // 60 cm ahead and back: the floor straight on is crossed
-        drive(6000, 12000, -100);
-        int[] back = map.freshAhead();
-        assertEquals(0, back[0], "nothing new straight on");
-        assertTrue(back[1] >= 5, "behind and to the sides still new, got " + back[1]);
-        for (int bearing = -180; bearing < 180; bearing += 30) { // obstacles met all round, close
-            if (bearing != 0) {
-                map.obstacle(bearing, 0.12);
-            }
-        }
-        // (at a cell's corner a ray may enter one cell before the mark's)
-        assertTrue(map.freshAhead()[1] <= 1, "no heading reaches past the obstacles, got " + map.freshAhead()[1]);
-    }
-
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
     private void drive(long fromMs, long toMs, double speed) {
         for (long t = fromMs; t <= toMs; t += 40) {
