@@ -88,15 +88,13 @@ final class ExplorationMap {
 
     /**
      * An obstacle the sensors signalled, {@code distance} metres away at {@code bearing} degrees: marked as
-     * {@link #obstacle}, and with {@link #shadows} on (not in the thesis), when it came in a turn on the
-     * spot, also the floor behind it out to the horizon, {@value #SHADOW} degrees to either side: a turn
-     * towards new floor beyond a wall not marked met the wall and was turned back by the avoidance, and the
-     * next turn pointed there again. (Every obstacle's shadow hid the floor beyond the boxes too: wide
-     * tuning 101-160 x 1-2, 64 of 120 against 95.)
+     * {@link #obstacle}, and with {@link #shadows} on (not in the thesis) also the floor behind it out to
+     * the horizon, {@value #SHADOW} degrees to either side: a turn towards new floor there, beyond a wall
+     * not marked, met the wall again and was turned back by the avoidance.
      */
     void signalled(double bearing, double distance) {
         obstacle(bearing, distance);
-        if (!shadows || left == 0 || left != -right) {
+        if (!shadows) {
             return;
         }
         for (double b = bearing - SHADOW; b <= bearing + SHADOW + 1e-9; b += SHADOW / 2) {

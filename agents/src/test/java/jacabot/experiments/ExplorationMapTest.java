@@ -56,18 +56,9 @@ class ExplorationMapTest {
         ExplorationMap shaded = new ExplorationMap(0.001, 0.09);
         shaded.horizon(0.6);
         shaded.shadows();
-        ExplorationMap straight = new ExplorationMap(0.001, 0.09);
-        straight.horizon(0.6);
-        straight.shadows();
-        // an obstacle 40 degrees left, 30 cm off, met in a turn on the spot (or, for the last, on a
-        // straight leg): the ray 60 degrees left passes beside its cell
-        map.wheels(0, -100, 100);
-        shaded.wheels(0, -100, 100);
-        straight.wheels(0, 100, 100);
+        // an obstacle 40 degrees left, 30 cm off: the ray 60 degrees left passes beside its cell
         map.signalled(40, 0.3);
         shaded.signalled(40, 0.3);
-        straight.signalled(40, 0.3);
-        assertEquals(map.freshCells(60), straight.freshCells(60), "no shadow on a straight leg");
         assertTrue(map.freshCells(60) >= 4, "without shadows, the floor beside the cell marked, got " + map.freshCells(60));
         assertTrue(shaded.freshCells(60) <= 2, "the floor behind the obstacle hidden, got " + shaded.freshCells(60));
         assertEquals(map.freshCells(-90), shaded.freshCells(-90), "the floor off to the other side stays");
