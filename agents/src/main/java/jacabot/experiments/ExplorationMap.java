@@ -31,7 +31,6 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private boolean shadows;
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -81,33 +80,6 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
-    /** From now on {@link #signalled} also marks the obstacle's shadow. */
-    void shadows() {
-        shadows = true;
-    }
-
-    /**
-     * An obstacle the sensors signalled, {@code distance} metres away at {@code bearing} degrees: marked as
-     * {@link #obstacle}, and with {@link #shadows} on (not in the thesis) also the floor behind it out to
-     * the horizon, {@value #SHADOW} degrees to either side: a turn towards new floor there, beyond a wall
-     * not marked, met the wall again and was turned back by the avoidance.
-     */
-    void signalled(double bearing, double distance) {
-        obstacle(bearing, distance);
-        if (!shadows) {
-            return;
-        }
-        for (double b = bearing - SHADOW; b <= bearing + SHADOW + 1e-9; b += SHADOW / 2) {
-            double a = heading + Math.toRadians(b);
-            for (double d = distance; d <= horizon + 1e-9; d += CELL / 2) {
-                blocked.add(key(x + d * Math.cos(a), z + d * Math.sin(a)));
-            }
-        }
-    }
-
-    /** Half the angle of an obstacle's shadow, degrees. */
-    static final double SHADOW = 20;
-
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
@@ -120,11 +92,6 @@ final class ExplorationMap {
             }
         }
         return best;
-    }
-
-    /** {@return the cells not crossed within the horizon {@code turn} degrees left of the heading} */
-    int freshCells(double turn) {
-        return (int) score(heading + Math.toRadians(turn));
     }
 
     private double score(double a) {

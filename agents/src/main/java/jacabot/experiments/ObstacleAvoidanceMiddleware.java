@@ -113,19 +113,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * From now on an obstacle signalled also hides the floor behind it from {@code exploreTurn} (not in
-     * the thesis, {@code ExplorationMap.signalled}). Fails before {@code odometry}.
-     */
-    @OPERATION
-    void obstacleShadows() {
-        if (map == null) {
-            failed("obstacleShadows needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        map.shadows();
-    }
-
-    /**
      * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */
@@ -320,7 +307,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 if (obstacle && map != null) {
-                    map.signalled(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
+                    map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
                 }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();

@@ -51,21 +51,6 @@ class ExplorationMapTest {
     }
 
     @Test
-    void aShadowHidesTheFloorBehindAnObstacleSignalled() {
-        map.horizon(0.6);
-        ExplorationMap shaded = new ExplorationMap(0.001, 0.09);
-        shaded.horizon(0.6);
-        shaded.shadows();
-        // an obstacle 40 degrees left, 30 cm off: the ray 60 degrees left passes beside its cell
-        map.signalled(40, 0.3);
-        shaded.signalled(40, 0.3);
-        assertTrue(map.freshCells(60) >= 4, "without shadows, the floor beside the cell marked, got " + map.freshCells(60));
-        assertTrue(shaded.freshCells(60) <= 2, "the floor behind the obstacle hidden, got " + shaded.freshCells(60));
-        assertEquals(map.freshCells(-90), shaded.freshCells(-90), "the floor off to the other side stays");
-        assertTrue(shaded.freshCells(-90) >= 4);
-    }
-
-    @Test
     void staleTimeCountsOnlyFloorCrossedBefore() {
         drive(0, 3000, 100); // 30 cm out: fresh cells all the way
         assertTrue(map.staleMillis(3000) < 1000, "the cells just entered were new, got " + map.staleMillis(3000));
