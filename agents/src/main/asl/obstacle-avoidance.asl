@@ -3,9 +3,6 @@
 // recovery of skills/recovery.asl). The thesis' plans as published: as-published/obstacle-avoidance.asl.
 // arena(W, D) comes from the world file (the launcher adds it as an initial belief).
 
-// not in the thesis: new floor a turn met an obstacle on the way to is not turned to again (skills/coverage.asl)
-dropBlockedAims.
-
 middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 
 !start.

@@ -31,10 +31,6 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private boolean dropAims;
-    private double aim;          // radians: the heading the last proposed turn went to
-    private long aimUntil = -1;  // when that turn ends, ms
-    private final Set<Long> unreachable = new HashSet<>(); // new floor an aim met an obstacle on the way to
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -84,41 +80,6 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
-    /**
-     * From now on, an obstacle met during a turn from {@link #aiming} takes the new floor on the heading
-     * turned to out of the count (not in the thesis): it lies beyond what the sensors met (a wall not
-     * marked, the strip along it), and the next turn pointed at it again.
-     */
-    void dropBlockedAims() {
-        dropAims = true;
-    }
-
-    /** The robot turns {@code turn} degrees (a {@link #bestTurn}) until {@code untilMs}. */
-    void aiming(double turn, long untilMs) {
-        aim = heading + Math.toRadians(turn);
-        aimUntil = untilMs;
-    }
-
-    /** An obstacle was met at {@code nowMs}: see {@link #dropBlockedAims}. */
-    void aimMet(long nowMs) {
-        if (!dropAims || aimUntil < 0 || nowMs > aimUntil + AIM_SLACK) {
-            return;
-        }
-        aimUntil = -1;
-        for (double d = CELL / 2; d <= horizon + 1e-9; d += CELL / 2) {
-            long k = key(x + d * Math.cos(aim), z + d * Math.sin(aim));
-            if (blocked.contains(k)) {
-                break;
-            }
-            if (!visited.contains(k)) {
-                unreachable.add(k);
-            }
-        }
-    }
-
-    /** How long after a turn's planned end an obstacle still counts as met in it, ms (the control steps round the turn up). */
-    static final long AIM_SLACK = 80;
-
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
@@ -133,11 +94,6 @@ final class ExplorationMap {
         return best;
     }
 
-    /** {@return the cells not crossed within the horizon {@code turn} degrees left of the heading} */
-    int freshCells(double turn) {
-        return (int) score(heading + Math.toRadians(turn));
-    }
-
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);
@@ -146,7 +102,7 @@ final class ExplorationMap {
             if (blocked.contains(k)) {
                 break;
             }
-            if (k != previous && !visited.contains(k) && !unreachable.contains(k)) {
+            if (k != previous && !visited.contains(k)) {
                 fresh++;
             }
             previous = k;

@@ -113,20 +113,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * From now on an obstacle met during a turn from {@code exploreTurn} takes the new floor it turned
-     * to out of the next turns' count (not in the thesis, {@code ExplorationMap.dropBlockedAims}). Fails
-     * before {@code odometry}.
-     */
-    @OPERATION
-    void dropBlockedAims() {
-        if (map == null) {
-            failed("dropBlockedAims needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        map.dropBlockedAims();
-    }
-
-    /**
      * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */
@@ -138,9 +124,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
         double turn = map.bestTurn();
         side.set(turn >= 0 ? "left" : "right");
-        long turnMs = map.turnMillis(turn, speed);
-        ms.set((double) turnMs);
-        map.aiming(turn, simTimeMs() + turnMs);
+        ms.set((double) map.turnMillis(turn, speed));
     }
 
     /**
@@ -324,7 +308,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 if (obstacle && map != null) {
                     map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
-                    map.aimMet(simTimeMs());
                 }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();

@@ -51,25 +51,6 @@ class ExplorationMapTest {
     }
 
     @Test
-    void anObstacleMetInTheTurnTakesTheFloorTurnedToOutOfTheCount() {
-        map.horizon(0.6);
-        map.dropBlockedAims();
-        ExplorationMap plain = new ExplorationMap(0.001, 0.09);
-        plain.horizon(0.6);
-        assertTrue(map.freshCells(90) >= 4);
-        map.aiming(90, 700);
-        plain.aiming(90, 700);
-        map.aimMet(600);
-        plain.aimMet(600);
-        assertEquals(0, map.freshCells(90), "the floor turned to is out of the count");
-        assertTrue(plain.freshCells(90) >= 4, "kept without dropBlockedAims");
-        assertTrue(map.freshCells(-90) >= 4, "the other side stays");
-        map.aiming(-90, 700);
-        map.aimMet(700 + ExplorationMap.AIM_SLACK + 40);
-        assertTrue(map.freshCells(-90) >= 4, "an obstacle after the turn is not the turn's");
-    }
-
-    @Test
     void staleTimeCountsOnlyFloorCrossedBefore() {
         drive(0, 3000, 100); // 30 cm out: fresh cells all the way
         assertTrue(map.staleMillis(3000) < 1000, "the cells just entered were new, got " + map.staleMillis(3000));
