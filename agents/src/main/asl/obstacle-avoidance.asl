@@ -3,10 +3,6 @@
 // recovery of skills/recovery.asl). The thesis' plans as published: as-published/obstacle-avoidance.asl.
 // arena(W, D) comes from the world file (the launcher adds it as an initial belief).
 
-// not in the thesis: the floor the sensors keep the robot off, next to the obstacles met, is not
-// new floor for the turns (skills/coverage.asl)
-skipMargin.
-
 middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 
 !start.

@@ -25,9 +25,6 @@ staleLimit(2000).             // how long a straight leg may go over floor alrea
 // the floor beyond a wall looked new, so the robot followed the walls (generated worlds: 126 -> 134
 // of 150, held out 126 -> 133)
 exploreHorizon(0.6).
-// an agent that believes skipMargin has exploreTurn count no floor between the robot and an obstacle
-// it met as new (the middleware's exploreMargin): stopped short of the obstacle, the robot never
-// crosses it, and a turn towards it led over crossed floor back to the obstacle
 // in an arena of closeArea m2 or more, closer to obstacles: obstacle at a front reading over 480
 // (about 5 cm; the thesis: 350, about 8 cm), clear under 300 (200), or a left-right difference over
 // 150 (100): with the thesis' levels the floor next to walls and boxes, a large share of a big
@@ -107,7 +104,7 @@ pausedUntil("-veering") :- veering.
 
 @setUpCoverage
 +!setUpCoverage : wheelGeometry(U, A)
-    <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) }; if (skipMargin) { exploreMargin };
+    <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) };
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };

@@ -31,8 +31,6 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private boolean skipMargin;
-    private final Set<Long> margin = new HashSet<>(); // cells between the robot and an obstacle it met
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -76,28 +74,10 @@ final class ExplorationMap {
         right = newRight;
     }
 
-    /**
-     * From now on, the cells between the robot and each obstacle met are not counted as new (not in
-     * the thesis): the robot, stopped by its sensors short of the obstacle, never crosses them, and a
-     * turn towards them led to a leg over crossed floor back to the same obstacle.
-     */
-    void skipMargin() {
-        skipMargin = true;
-    }
-
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        long at = key(x + distance * Math.cos(a), z + distance * Math.sin(a));
-        blocked.add(at);
-        if (skipMargin) {
-            for (double d = CELL / 2; d < distance; d += CELL / 2) {
-                long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-                if (k != at) {
-                    margin.add(k);
-                }
-            }
-        }
+        blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -114,11 +94,6 @@ final class ExplorationMap {
         return best;
     }
 
-    /** {@return the cells not crossed within the horizon {@code turn} degrees left of the heading} */
-    int freshCells(double turn) {
-        return (int) score(heading + Math.toRadians(turn));
-    }
-
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);
@@ -127,7 +102,7 @@ final class ExplorationMap {
             if (blocked.contains(k)) {
                 break;
             }
-            if (k != previous && !visited.contains(k) && !margin.contains(k)) {
+            if (k != previous && !visited.contains(k)) {
                 fresh++;
             }
             previous = k;

@@ -113,19 +113,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * From now on {@code exploreTurn} does not count as new the floor between the robot and each
-     * obstacle it meets (not in the thesis, {@code ExplorationMap.skipMargin}). Fails before {@code odometry}.
-     */
-    @OPERATION
-    void exploreMargin() {
-        if (map == null) {
-            failed("exploreMargin needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        map.skipMargin();
-    }
-
-    /**
      * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */

@@ -51,19 +51,6 @@ class ExplorationMapTest {
     }
 
     @Test
-    void theFloorShortOfAnObstacleMetIsNotNewWithSkipMargin() {
-        map.horizon(0.6);
-        map.skipMargin();
-        ExplorationMap plain = new ExplorationMap(0.001, 0.09);
-        plain.horizon(0.6);
-        map.obstacle(0, 0.25);
-        plain.obstacle(0, 0.25);
-        assertEquals(0, map.freshCells(0), "the cells short of the obstacle are out of the count");
-        assertTrue(plain.freshCells(0) >= 1, "counted without skipMargin");
-        assertEquals(plain.freshCells(90), map.freshCells(90), "the floor to the side stays");
-    }
-
-    @Test
     void staleTimeCountsOnlyFloorCrossedBefore() {
         drive(0, 3000, 100); // 30 cm out: fresh cells all the way
         assertTrue(map.staleMillis(3000) < 1000, "the cells just entered were new, got " + map.staleMillis(3000));
