@@ -21,11 +21,11 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
 { include("skills/search-memory.asl") }
-{ include("skills/last-search.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
+
 // after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.

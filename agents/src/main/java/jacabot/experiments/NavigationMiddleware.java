@@ -31,10 +31,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     private RouteMap routes;
     /** The way the robot has come (not in the thesis), once the agent asked for it. */
     private Trail trail;
-    /** The floor the camera looked over (not in the thesis), kept with the route map. */
-    private ViewMap views;
-    /** The last point {@code unseenNext} gave, null before. */
-    private double[] unseenGiven;
 
     @Override
     protected void defineProperties() {
@@ -75,34 +71,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             return;
         }
         routes = new RouteMap(width, depth, KHEPERA_RADIUS + ROUTE_MARGIN, (long) memoryMs);
-        views = new ViewMap(width, depth);
-    }
-
-    /**
-     * The next search point (not in the thesis: {@link ViewMap}): the last point given is done, and the next
-     * is the centre of the nearest cell to (x, z) the camera has not looked at from within {@code range} m,
-     * farther than {@code clear} from (sx, sz); (x, z) itself when there is none. Fails before {@code routeMap}.
-     */
-    @OPERATION
-    void unseenNext(double x, double z, double range, double sx, double sz, double clear,
-                    OpFeedbackParam<Double> px, OpFeedbackParam<Double> pz) {
-        if (views == null) {
-            failed("unseenNext needs routeMap first");
-            return;
-        }
-        if (unseenGiven != null) {
-            views.giveUp(unseenGiven[0], unseenGiven[1]);
-        }
-        double[] p = views.nearestUnseen(x, z, range, sx, sz, clear);
-        unseenGiven = p == null ? new double[] {x, z} : p;
-        px.set(unseenGiven[0]);
-        pz.set(unseenGiven[1]);
-    }
-
-    /** {@code seen} is 1 when the camera has looked at the cell at (x, z) from within {@code range} m, else 0. */
-    @OPERATION
-    void viewSeen(double x, double z, double range, OpFeedbackParam<Integer> seen) {
-        seen.set(views != null && views.seen(x, z, range) ? 1 : 0);
     }
 
     /**
@@ -219,9 +187,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
                 }
                 if (trail != null) {
                     trail.at(c[0], c[2]);
-                }
-                if (views != null && cameraScanning() && !Double.isNaN(heading())) {
-                    views.looked(c[0], c[2], heading());
                 }
                 super.onReading(info, kind); // the progress watch, location
                 checkTarget(c[0], c[2]);

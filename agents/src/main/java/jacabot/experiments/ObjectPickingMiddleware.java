@@ -166,11 +166,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         return heading;
     }
 
-    /** {@return whether the camera's images are scanned for cylinders now (not while one is held)} */
-    protected boolean cameraScanning() {
-        return scanning && !holding;
-    }
-
     private void sight(SensorInfo camera) {
         if (!scanning || holding || stopDistance || cylinderSignalled || lateralCylinder != null
                 || simTimeMs() - lastSightingMs < sightingEvery) {
