@@ -96,6 +96,19 @@ maxSpeed(100).
        !assert_true(seenCylinder(1, 1));                // another place: kept
        -picked(true).
 
+// the places forgotten are those near the cylinder in the gripper (gripReach 0.05 m ahead), not near
+// the robot's centre: one 0.24 m beyond the cylinder goes, one 0.22 m behind the robot stays
+@[test]
++!test_picking_forgets_the_places_near_the_cylinder_in_the_gripper
+    <- .abolish(seenCylinder(_, _)); -+location(0, 0, 0); -+orientation(90);   // heading +z
+       !assert_true(gripReach(0.05));
+       +seenCylinder(0, 0.29); +seenCylinder(0, -0.22);
+       +picked(true);
+       !until(not seenCylinder(0, 0.29), 500);
+       !assert_false(seenCylinder(0, 0.29));
+       !assert_true(seenCylinder(0, -0.22));
+       -picked(true); -+orientation(0).
+
 @[test]
 +!test_a_search_goes_first_to_the_nearest_cylinder_remembered
     <- .abolish(seenCylinder(_, _)); -searching; -sweep(_); -sweepPlanned;

@@ -6,7 +6,9 @@
 // them again.
 // Parameters:
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
-takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one
+takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one (a sighting's
+                     // place is off by 0.2-0.3 m at 0.4-0.75 m, so this is about one sighting's error)
+gripReach(0.05).     // m ahead of the robot's centre where the gripper holds a cylinder (the model's)
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 // the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
 // the fixed corner the first sweep crossed the arena first
@@ -67,8 +69,12 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
-// the cylinder picked is no longer to be looked for
-@forgetPicked +picked(true) : location(X, _, Z) & takenRadius(R) <- !forgetNear(X, Z, R).
+// the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
+// the robot (near the robot's centre instead, a place 0.245 m from the cylinder delivered stayed
+// and the search went back to it: navigation world 110 × 1)
+pickedAt(Cx, Cz) :- location(X, _, Z) & orientation(O) & gripReach(G) & H = O * math.pi / 180
+    & Cx = X + G * math.cos(H) & Cz = Z + G * math.sin(H).
+@forgetPicked +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- !forgetNear(Cx, Cz, R).
 
 // a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
 // lies beside the robot. The look around after the fall (delivery's lookFirst) starts 10 cm back from
