@@ -70,10 +70,10 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
-// the robot (near the robot's centre instead, a place 0.245 m from the cylinder delivered stayed
-// and the search went back to it: navigation world 110 × 1)
+// the robot, not near the robot's centre; without a compass, near the centre
 pickedAt(Cx, Cz) :- location(X, _, Z) & orientation(O) & gripReach(G) & H = O * math.pi / 180
     & Cx = X + G * math.cos(H) & Cz = Z + G * math.sin(H).
+pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @forgetPicked +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- !forgetNear(Cx, Cz, R).
 
 // a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
