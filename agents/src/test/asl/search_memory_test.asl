@@ -109,6 +109,17 @@ maxSpeed(100).
        !assert_true(seenCylinder(0, -0.22));
        -picked(true); -+orientation(0).
 
+// without a compass the cylinder's place is unknown: the places near the robot's centre go
+@[test]
++!test_picking_without_a_compass_forgets_the_places_near_the_robot
+    <- .abolish(seenCylinder(_, _)); -+location(0, 0, 0); -orientation(_);
+       +seenCylinder(0.2, 0); +seenCylinder(0, 0.3);
+       +picked(true);
+       !until(not seenCylinder(0.2, 0), 500);
+       !assert_false(seenCylinder(0.2, 0));
+       !assert_true(seenCylinder(0, 0.3));
+       -picked(true); +orientation(0).
+
 @[test]
 +!test_a_search_goes_first_to_the_nearest_cylinder_remembered
     <- .abolish(seenCylinder(_, _)); -searching; -sweep(_); -sweepPlanned;
