@@ -25,7 +25,7 @@ import org.dyn4j.geometry.Vector2;
 final class BoundedAdvancement implements TimeOfImpactDetector {
     /** Slack on both sides of the test, far above the rounding of either computation. */
     private static final double RELATIVE_SLACK = 1e-6;
-    private static final double ABSOLUTE_SLACK = 1e-9;
+    static final double ABSOLUTE_SLACK = 1e-9;
 
     private final ConservativeAdvancement exact = new ConservativeAdvancement();
     private long skipped;
@@ -52,11 +52,20 @@ final class BoundedAdvancement implements TimeOfImpactDetector {
      */
     static boolean cannotMeet(Convex convex1, Transform transform1, double dp1x, double dp1y, double da1,
             Convex convex2, Transform transform2, double dp2x, double dp2y, double da2, double t1, double t2) {
+        double reach = reach(convex1, dp1x, dp1y, da1, convex2, dp2x, dp2y, da2, t1, t2);
+        return clearanceExceeds(convex1, transform1, convex2, transform2, ABSOLUTE_SLACK, reach);
+    }
+
+    /**
+     * {@return how far the two shapes may close on each other within the interval, with slack: the
+     * threshold {@link #cannotMeet} tests the clearance less {@link #ABSOLUTE_SLACK} against}
+     */
+    static double reach(Convex convex1, double dp1x, double dp1y, double da1,
+            Convex convex2, double dp2x, double dp2y, double da2, double t1, double t2) {
         double rx = dp1x - dp2x;
         double ry = dp1y - dp2y;
         double speed = Math.sqrt(rx * rx + ry * ry) + (convex1.getRadius() * Math.abs(da1) + convex2.getRadius() * Math.abs(da2));
-        double reach = ((t2 - t1) * (1 + RELATIVE_SLACK) + ABSOLUTE_SLACK) * speed * (1 + RELATIVE_SLACK);
-        return clearanceExceeds(convex1, transform1, convex2, transform2, ABSOLUTE_SLACK, reach);
+        return ((t2 - t1) * (1 + RELATIVE_SLACK) + ABSOLUTE_SLACK) * speed * (1 + RELATIVE_SLACK);
     }
 
     /** {@return how many pairs the test answered without a GJK distance} */

@@ -15,7 +15,9 @@ import org.dyn4j.geometry.Transform;
  * <p>Why the answers are the same: GJK answers {@code false} for shapes a positive distance apart;
  * the test answers {@code false} only past {@link #SLACK}, a micrometre, far above the rounding of
  * either computation, and leaves the penetration untouched, as the world reads it only after
- * {@code true}. Every other pair goes to GJK unchanged ({@code BoundedGjkTest}).
+ * {@code true}. Every other pair goes to GJK unchanged ({@code BoundedGjkTest}). A pair whose
+ * penetration remembers its clearance ({@link ClearancePenetration}) is not measured again while the
+ * remembered bound on its distance stays above the test's threshold by {@link RememberedClearance#SLACK}.
  */
 final class BoundedGjk implements NarrowphaseDetector {
     /** How far apart the test must find two shapes before it answers for GJK, in metres. */
@@ -25,6 +27,13 @@ final class BoundedGjk implements NarrowphaseDetector {
 
     @Override
     public boolean detect(Convex convex1, Transform transform1, Convex convex2, Transform transform2, Penetration penetration) {
+        if (penetration instanceof ClearancePenetration remembering) {
+            RememberedClearance c = remembering.clearance;
+            // the test below's answer: the full clearance is its terms' largest
+            return !c.exceeds(convex1, transform1, convex2, transform2, SLACK)
+                    && !(c.measure(convex1, transform1, convex2, transform2) > SLACK)
+                    && gjk.detect(convex1, transform1, convex2, transform2, penetration);
+        }
         return !apart(convex1, transform1, convex2, transform2) && gjk.detect(convex1, transform1, convex2, transform2, penetration);
     }
 

@@ -5,6 +5,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.dyn4j.collision.CollisionItem;
 import org.dyn4j.collision.CollisionPair;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
@@ -34,6 +35,8 @@ import org.dyn4j.world.listener.ContactListener;
  * moves only its body (the other bodies of its pairs are fixed), so the groups' order does not
  * matter. With time-of-impact listeners, another detector or another mode, dyn4j's own pass runs.
  * {@code BroadPhasesTest} steps worlds with impacts both ways and compares every body at every step.
+ * The pairs it keeps are {@link ClearancePair}s, which skip the test while the clearance they last
+ * measured, less both bodies' motion since, still exceeds what the step can close.
  *
  * <p>Its step is dyn4j's ({@code AbstractPhysicsWorld.step}, line for line) but for the island solve,
  * which marks the bodies instead of filling hash sets ({@link Islands}).
@@ -50,6 +53,12 @@ final class Dyn4jWorld extends World<Body> {
         }
         super.addBody(body);
         ((TrackedBody) body).graphNode = constraintGraph.getNode(body);
+    }
+
+    /** Collision data whose penetration remembers the pair's clearance for {@link BoundedGjk}. */
+    @Override
+    protected WorldCollisionData<Body> createCollisionData(CollisionPair<CollisionItem<Body, BodyFixture>> pair) {
+        return new ClearancePenetration.Data(pair);
     }
 
     @Override
@@ -116,7 +125,8 @@ final class Dyn4jWorld extends World<Body> {
         }
         Iterator<CollisionPair<Body>> found = ccdBroadphase.detectIterator();
         while (found.hasNext()) {
-            ccdCollisionData.add(found.next().copy()); // the broad phase reuses its pair object
+            CollisionPair<Body> next = found.next(); // the broad phase reuses its pair object: copied
+            ccdCollisionData.add(new ClearancePair(next.getFirst(), next.getSecond()));
         }
         double dt = timeStep.getDeltaTime();
         Map<Body, List<Body>> groups = null;
@@ -136,7 +146,8 @@ final class Dyn4jWorld extends World<Body> {
                 continue; // two fixed bodies: dyn4j skips them below
             }
             Body other = mover == body1 ? body2 : body1;
-            if (cannotMeet(mover, other, dt)) {
+            if (pair instanceof ClearancePair remembered && mover.getFixtureCount() == 1 && other.getFixtureCount() == 1
+                    ? remembered.cannotMeet(mover, other, dt) : cannotMeet(mover, other, dt)) {
                 continue;
             }
             // dyn4j's questions, in its order
@@ -176,7 +187,7 @@ final class Dyn4jWorld extends World<Body> {
      * {@return whether the detector answers {@code false} for every fixture pair of the two bodies in
      * this step} The motion is formed as dyn4j forms it for the detector ({@code velocity.product(dt)}).
      */
-    private static boolean cannotMeet(Body mover, Body other, double dt) {
+    static boolean cannotMeet(Body mover, Body other, double dt) {
         Vector2 v1 = mover.getLinearVelocity(), v2 = other.getLinearVelocity();
         double dp1x = v1.x * dt, dp1y = v1.y * dt, dp2x = v2.x * dt, dp2y = v2.y * dt;
         double da1 = mover.getAngularVelocity() * dt, da2 = other.getAngularVelocity() * dt;

@@ -1,0 +1,39 @@
+package jacabot.sim.engine;
+
+import org.dyn4j.collision.CollisionItem;
+import org.dyn4j.collision.CollisionPair;
+import org.dyn4j.collision.narrowphase.Penetration;
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.world.WorldCollisionData;
+
+/**
+ * A contact pair's penetration that also remembers the pair's clearance, so that the narrow phase
+ * ({@link BoundedGjk}) need not measure two shapes again while they have moved too little to touch
+ * ({@link RememberedClearance}). dyn4j hands the narrow phase the penetration of the pair's collision
+ * data, kept from step to step; the world makes its collision data with this penetration
+ * ({@link Dyn4jWorld#createCollisionData}). Its normal and depth are dyn4j's as before.
+ */
+final class ClearancePenetration extends Penetration {
+    final RememberedClearance clearance = new RememberedClearance();
+
+    /** dyn4j's collision data, with a {@link ClearancePenetration} in place of its own penetration. */
+    static final class Data extends WorldCollisionData<Body> {
+        private final ClearancePenetration penetration = new ClearancePenetration();
+
+        Data(CollisionPair<CollisionItem<Body, BodyFixture>> pair) {
+            super(pair);
+        }
+
+        @Override
+        public Penetration getPenetration() {
+            return penetration;
+        }
+
+        @Override
+        public void reset() {
+            super.reset();
+            penetration.clear();
+        }
+    }
+}

@@ -1,0 +1,89 @@
+package jacabot.sim.engine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.dyn4j.collision.continuous.ConservativeAdvancement;
+import org.dyn4j.collision.continuous.TimeOfImpact;
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Geometry;
+import org.dyn4j.geometry.Transform;
+import org.dyn4j.geometry.Vector2;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A pair that remembers its clearance against the plain test and dyn4j's conservative advancement,
+ * on random walks of two bodies (circles and rectangles, turning as well as moving) that drift
+ * towards and away from each other: where the pair measures, its answer is the test's; where it
+ * answers from memory, dyn4j's detector answers no impact.
+ */
+class ClearancePairTest {
+    private final Random rnd = new Random(23);
+
+    private Convex shape() {
+        return rnd.nextBoolean()
+                ? Geometry.createCircle(0.02 + rnd.nextDouble() * 0.3)
+                : Geometry.createRectangle(0.02 + rnd.nextDouble() * 2, 0.02 + rnd.nextDouble() * 0.5);
+    }
+
+    @Test
+    void answersFromMemoryOnlyWhereDyn4jFindsNoImpact() {
+        var dyn4j = new ConservativeAdvancement();
+        double dt = 0.01;
+        long beyondTest = 0, steps = 0, impacts = 0, remembered = 0;
+        for (int walk = 0; walk < 400; walk++) {
+            Body mover = TestBodies.of(false, shape(), 1, true), other = TestBodies.of(false, shape(), 1, rnd.nextBoolean());
+            other.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
+            other.rotate(rnd.nextDouble() * 6);
+            mover.rotate(rnd.nextDouble() * 6);
+            var pair = rnd.nextBoolean() ? new ClearancePair(mover, other) : new ClearancePair(other, mover);
+            for (int step = 0; step < 1_000; step++) {
+                // drift towards the other body, with noise; now and then a jump (a teleport) or a spin
+                Vector2 to = other.getTransform().getTranslation().difference(mover.getTransform().getTranslation());
+                double speed = rnd.nextDouble() * 2;
+                double vx = to.x * speed + rnd.nextGaussian(), vy = to.y * speed + rnd.nextGaussian();
+                mover.setLinearVelocity(vx, vy);
+                mover.setAngularVelocity(rnd.nextInt(4) == 0 ? rnd.nextGaussian() * 3 : 0);
+                other.setLinearVelocity(rnd.nextGaussian() * 0.2, rnd.nextGaussian() * 0.2);
+                other.setAngularVelocity(rnd.nextInt(4) == 0 ? rnd.nextGaussian() : 0);
+                mover.getPreviousTransform().set(mover.getTransform());
+                other.getPreviousTransform().set(other.getTransform());
+                boolean ours = pair.cannotMeet(mover, other, dt);
+                boolean test = Dyn4jWorld.cannotMeet(mover, other, dt);
+                Transform ta = mover.getPreviousTransform(), tb = other.getPreviousTransform();
+                Vector2 dpa = mover.getLinearVelocity().product(dt), dpb = other.getLinearVelocity().product(dt);
+                double daa = mover.getAngularVelocity() * dt, dab = other.getAngularVelocity() * dt;
+                boolean hit = dyn4j.getTimeOfImpact(mover.getFixture(0).getShape(), ta, dpa, daa,
+                        other.getFixture(0).getShape(), tb, dpb, dab, 0.0, 1.0, new TimeOfImpact());
+                if (hit) {
+                    impacts++;
+                    assertFalse(ours, "walk " + walk + ", step " + step + ": answered from memory where dyn4j finds an impact");
+                }
+                if (ours && !test) {
+                    beyondTest++; // the remembered bound is no test's: dyn4j's detector, above, decides
+                } else {
+                    assertEquals(test, ours, "walk " + walk + ", step " + step);
+                }
+                steps++;
+                // the step's motion, and now and then a jump
+                mover.translate(vx * dt, vy * dt);
+                mover.rotate(mover.getAngularVelocity() * dt, mover.getTransform().getTranslation());
+                other.translate(other.getLinearVelocity().product(dt));
+                other.rotate(other.getAngularVelocity() * dt, other.getTransform().getTranslation());
+                if (rnd.nextInt(200) == 0) {
+                    mover.translate(rnd.nextGaussian() * 0.3, rnd.nextGaussian() * 0.3);
+                }
+                if (rnd.nextInt(200) == 0) {
+                    other.rotate(rnd.nextGaussian(), other.getTransform().getTranslation());
+                }
+            }
+            remembered += pair.counts()[1];
+        }
+        // both roads often: answers from memory, and real impacts met
+        assertTrue(impacts > 2_000, "impacts " + impacts);
+        assertTrue(remembered > 50_000, "answered from memory " + remembered + " of " + steps + ", beyond the test " + beyondTest);
+    }
+}
