@@ -46,11 +46,16 @@ final class Physics {
      */
     private static final double GJK_MARGIN = 1e-3;
 
+    /** {@link #castFan}'s relative margin on the squared distances (their rounding is about 1e-16). */
+    private static final double FAR_MARGIN = 1 + 1e-9;
+
     /** How much a fan's broad phase grows each bounding circle, in metres: more than the rectangles' margin. */
     private static final double REACH_MARGIN = 2 * GJK_MARGIN;
 
     private final World<Body> world = new Dyn4jWorld();
     private final Map<String, SimObject> objects = new LinkedHashMap<>();
+    /** {@link #objects}' values in its order, for the rays' loops (no iterator per fan): made again at each add and removal. */
+    private SimObject[] inOrder = new SimObject[0];
     private final BeamDirections directions = new BeamDirections();
 
     Physics(int basicTimeStepMs) {
@@ -131,12 +136,14 @@ final class Physics {
         }
         o.place(x, z, heading);
         objects.put(o.id, o);
+        inOrder = objects.values().toArray(new SimObject[0]);
         world.addBody(o.body);
         return o;
     }
 
     SimObject remove(String id) {
         SimObject o = objects.remove(id);
+        inOrder = objects.values().toArray(new SimObject[0]);
         if (o != null) {
             world.removeBody(o.body);
         }
@@ -223,7 +230,7 @@ final class Physics {
         Beam beam = new Beam(origin, bearingDeg, directions);
         var hits = new NearestFirst();
         int index = 0;
-        for (SimObject o : objects.values()) {
+        for (SimObject o : inOrder) {
             if (o != self && o.carriedBy == null) {
                 RayHit hit = cast(o, beam, maxRange);
                 if (hit != null) {
@@ -311,15 +318,18 @@ final class Physics {
         List<SimObject> near = f.near;
         near.clear();
         double[] cx = f.cx, cz = f.cz, reach = f.reach;
-        for (SimObject o : objects.values()) {
+        for (SimObject o : inOrder) {
             if (o == self || o.carriedBy != null) {
                 continue;
             }
             Transform t = o.body.getTransform();
             double x = t.getTranslationX(), z = t.getTranslationY(), r = o.boundingRadius + REACH_MARGIN;
-            double ex = x - ox, ez = z - oz;
-            if (Math.sqrt(ex * ex + ez * ez) > length + r) {
-                continue; // every ray's start lies within BACKOFF of the origin, its end within maxRange
+            double ex = x - ox, ez = z - oz, far = length + r, squared = ex * ex + ez * ez;
+            // every ray's start lies within BACKOFF of the origin, its end within maxRange; the first
+            // test, on the squares with a margin far above their rounding, answers as the second for
+            // most objects (far from a distance sensor) without its square root
+            if (squared > far * far * FAR_MARGIN || Math.sqrt(squared) > far) {
+                continue;
             }
             if (o.shape instanceof Rectangle box && RayShapes.boxDistance(ox, oz, x, z, t.getCost(), t.getSint(),
                     box.getWidth() / 2, box.getHeight() / 2) > length + BACKOFF + REACH_MARGIN) {

@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.dyn4j.collision.continuous.ConservativeAdvancement;
 import org.dyn4j.collision.continuous.TimeOfImpact;
+import org.dyn4j.collision.narrowphase.Gjk;
+import org.dyn4j.collision.narrowphase.Penetration;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.geometry.Convex;
 import org.dyn4j.geometry.Geometry;
@@ -18,7 +20,8 @@ import org.junit.jupiter.api.Test;
  * A pair that remembers its clearance against the plain test and dyn4j's conservative advancement,
  * on random walks of two bodies (circles and rectangles, turning as well as moving) that drift
  * towards and away from each other: where the pair measures, its answer is the test's; where it
- * answers from memory, dyn4j's detector answers no impact.
+ * answers from memory, dyn4j's detector answers no impact. Likewise the narrow phase with a
+ * penetration that remembers the clearance, against GJK alone.
  */
 class ClearancePairTest {
     private final Random rnd = new Random(23);
@@ -85,5 +88,41 @@ class ClearancePairTest {
         // both roads often: answers from memory, and real impacts met
         assertTrue(impacts > 2_000, "impacts " + impacts);
         assertTrue(remembered > 50_000, "answered from memory " + remembered + " of " + steps + ", beyond the test " + beyondTest);
+    }
+
+    @Test
+    void theNarrowPhaseAnswersAsGjkWithARememberedClearance() {
+        var ours = new BoundedGjk();
+        var gjk = new Gjk();
+        long touching = 0, remembered = 0;
+        for (int walk = 0; walk < 300; walk++) {
+            Convex a = shape(), b = shape();
+            var ta = new Transform();
+            var tb = new Transform();
+            tb.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
+            tb.rotate(rnd.nextDouble() * 6, tb.getTranslation());
+            var penetration = new ClearancePenetration();
+            for (int step = 0; step < 1_000; step++) {
+                Vector2 to = tb.getTranslation().difference(ta.getTranslation());
+                ta.translate(to.x * rnd.nextDouble() * 0.02 + rnd.nextGaussian() * 0.01, to.y * rnd.nextDouble() * 0.02 + rnd.nextGaussian() * 0.01);
+                if (rnd.nextInt(4) == 0) {
+                    ta.rotate(rnd.nextGaussian() * 0.05, ta.getTranslation());
+                }
+                if (rnd.nextInt(200) == 0) {
+                    tb.rotate(rnd.nextGaussian(), tb.getTranslation());
+                }
+                var expected = new Penetration();
+                boolean hit = gjk.detect(a, ta, b, tb, expected);
+                assertEquals(hit, ours.detect(a, ta, b, tb, penetration), "walk " + walk + ", step " + step);
+                if (hit) {
+                    touching++;
+                    assertEquals(expected.getDepth(), penetration.getDepth(), 0.0);
+                    assertEquals(expected.getNormal(), penetration.getNormal());
+                }
+            }
+            remembered += penetration.clearance.counts()[1];
+        }
+        assertTrue(touching > 2_000, "touching " + touching);
+        assertTrue(remembered > 20_000, "answered from memory " + remembered);
     }
 }
