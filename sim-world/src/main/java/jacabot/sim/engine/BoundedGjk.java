@@ -27,11 +27,11 @@ final class BoundedGjk implements NarrowphaseDetector {
 
     @Override
     public boolean detect(Convex convex1, Transform transform1, Convex convex2, Transform transform2, Penetration penetration) {
-        if (penetration instanceof ClearancePenetration remembering) {
-            RememberedClearance c = remembering.clearance;
+        if (penetration instanceof ClearancePenetration p && transform1 == p.body1.getTransform() && transform2 == p.body2.getTransform()) {
+            RememberedClearance c = p.clearance;
             // the test below's answer: the full clearance is its terms' largest
-            return !c.exceeds(convex1, transform1, convex2, transform2, SLACK)
-                    && !(c.measure(convex1, transform1, convex2, transform2) > SLACK)
+            return !c.exceeds(p.body1, p.body2, SLACK)
+                    && !(c.measure(p.body1, convex1, transform1, p.body2, convex2, transform2) > SLACK)
                     && gjk.detect(convex1, transform1, convex2, transform2, penetration);
         }
         return !apart(convex1, transform1, convex2, transform2) && gjk.detect(convex1, transform1, convex2, transform2, penetration);

@@ -4,7 +4,6 @@ import org.dyn4j.collision.AbstractCollisionPair;
 import org.dyn4j.collision.CollisionPair;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.geometry.Convex;
-import org.dyn4j.geometry.Transform;
 import org.dyn4j.geometry.Vector2;
 
 /**
@@ -55,19 +54,20 @@ final class ClearancePair implements CollisionPair<Body> {
 
     /**
      * {@return whether dyn4j's detector answers {@code false} for the bodies' fixtures in this step}
-     * (one fixture each; the mover's and the other's previous transforms and velocities, as dyn4j gives them)
+     * (one fixture each; the mover's and the other's previous transforms, which their odometers last
+     * counted, and velocities, as dyn4j gives them)
      */
-    boolean cannotMeet(Body mover, Body other, double dt) {
+    boolean cannotMeet(TrackedBody mover, TrackedBody other, double dt) {
         Convex a = mover.getFixture(0).getShape(), b = other.getFixture(0).getShape();
-        Transform ta = mover.getPreviousTransform(), tb = other.getPreviousTransform();
         Vector2 v1 = mover.getLinearVelocity(), v2 = other.getLinearVelocity();
         double da1 = mover.getAngularVelocity() * dt, da2 = other.getAngularVelocity() * dt;
         double reach = BoundedAdvancement.reach(a, v1.x * dt, v1.y * dt, da1, b, v2.x * dt, v2.y * dt, da2, 0.0, 1.0);
-        if (clearance.exceeds(a, ta, b, tb, reach + BoundedAdvancement.ABSOLUTE_SLACK)) {
+        if (clearance.exceeds(mover, other, reach + BoundedAdvancement.ABSOLUTE_SLACK)) {
             return true;
         }
         // the test's answer: it stops at its first passing term, and the full clearance is their largest
-        return clearance.measure(a, ta, b, tb) - BoundedAdvancement.ABSOLUTE_SLACK > reach;
+        return clearance.measure(mover, a, mover.getPreviousTransform(), other, b, other.getPreviousTransform())
+                - BoundedAdvancement.ABSOLUTE_SLACK > reach;
     }
 
     /** {@return how many times the pair was measured, and how many the remembered bound answered} */

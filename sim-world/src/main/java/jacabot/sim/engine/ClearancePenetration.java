@@ -16,13 +16,21 @@ import org.dyn4j.world.WorldCollisionData;
  */
 final class ClearancePenetration extends Penetration {
     final RememberedClearance clearance = new RememberedClearance();
+    /** The pair's bodies, in the narrow phase's order. */
+    final TrackedBody body1, body2;
+
+    ClearancePenetration(TrackedBody body1, TrackedBody body2) {
+        this.body1 = body1;
+        this.body2 = body2;
+    }
 
     /** dyn4j's collision data, with a {@link ClearancePenetration} in place of its own penetration. */
     static final class Data extends WorldCollisionData<Body> {
-        private final ClearancePenetration penetration = new ClearancePenetration();
+        private final ClearancePenetration penetration;
 
         Data(CollisionPair<CollisionItem<Body, BodyFixture>> pair) {
             super(pair);
+            penetration = new ClearancePenetration((TrackedBody) getBody1(), (TrackedBody) getBody2());
         }
 
         @Override

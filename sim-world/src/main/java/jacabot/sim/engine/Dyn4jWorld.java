@@ -53,6 +53,7 @@ final class Dyn4jWorld extends World<Body> {
         }
         super.addBody(body);
         ((TrackedBody) body).graphNode = constraintGraph.getNode(body);
+        ((TrackedBody) body).countMotion();
     }
 
     /** Collision data whose penetration remembers the pair's clearance for {@link BoundedGjk}. */
@@ -63,6 +64,7 @@ final class Dyn4jWorld extends World<Body> {
 
     @Override
     protected void step() {
+        countMotion(); // whatever moved the bodies since the last step (teleports)
         int listeners = stepListeners.size();
         for (int i = 0; i < listeners; i++) {
             stepListeners.get(i).begin(timeStep, this);
@@ -110,6 +112,7 @@ final class Dyn4jWorld extends World<Body> {
             solveTOI(mode);
             ccdBroadphase.clearUpdates();
         }
+        countMotion(); // the solve's and the time-of-impact pass's
         detect();
         updateRequired = false;
         for (int i = 0; i < listeners; i++) {
@@ -147,7 +150,7 @@ final class Dyn4jWorld extends World<Body> {
             }
             Body other = mover == body1 ? body2 : body1;
             if (pair instanceof ClearancePair remembered && mover.getFixtureCount() == 1 && other.getFixtureCount() == 1
-                    ? remembered.cannotMeet(mover, other, dt) : cannotMeet(mover, other, dt)) {
+                    ? remembered.cannotMeet((TrackedBody) mover, (TrackedBody) other, dt) : cannotMeet(mover, other, dt)) {
                 continue;
             }
             // dyn4j's questions, in its order
@@ -202,6 +205,18 @@ final class Dyn4jWorld extends World<Body> {
             }
         }
         return true;
+    }
+
+    /**
+     * Advances every body's odometer by its motion since it last counted: at the step's start (what
+     * moved the bodies between steps) and before the step's last detection (the step's own motion),
+     * so that every transform the detections and the time-of-impact pass read is one the odometers
+     * counted ({@link RememberedClearance}).
+     */
+    private void countMotion() {
+        for (int i = 0, n = bodies.size(); i < n; i++) {
+            ((TrackedBody) bodies.get(i)).countMotion();
+        }
     }
 
     /** {@return how many physics steps {@link Islands} solved (the others, dyn4j's own walk)} */

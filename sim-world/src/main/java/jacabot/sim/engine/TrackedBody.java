@@ -1,6 +1,9 @@
 package jacabot.sim.engine;
 
 import org.dyn4j.dynamics.Body;
+import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Transform;
+import org.dyn4j.geometry.Vector2;
 import org.dyn4j.world.ConstraintGraphNode;
 
 /**
@@ -21,6 +24,41 @@ final class TrackedBody extends Body {
      * the body up in the graph's hash map ({@link Dyn4jWorld#addBody}).
      */
     ConstraintGraphNode<Body> graphNode;
+
+    /**
+     * A bound on how far any point of the body has moved, in metres, over the transforms counted so
+     * far ({@link #countMotion}): between two of them no point moved farther than the odometer's
+     * advance (the triangle inequality over the ones between). Read by {@link RememberedClearance}.
+     */
+    double odometer;
+    private double countedX, countedY, countedCos = 1, countedSin;
+
+    /**
+     * Advances the odometer by a bound on how far any point moved from the transform last counted to
+     * the body's transform now: a translation by d and a rotation changed by {@code R - R0} move a
+     * point at {@code p} from the origin by at most {@code |d| + |p| ‖R - R0‖}, {@code ‖R - R0‖} being
+     * the length of the cosine's and sine's change, {@code |p|} at most a fixture's centre's distance
+     * plus its radius.
+     */
+    void countMotion() {
+        Transform t = getTransform();
+        double x = t.getTranslationX(), y = t.getTranslationY(), cos = t.getCost(), sin = t.getSint();
+        if (x == countedX && y == countedY && cos == countedCos && sin == countedSin) {
+            return;
+        }
+        double dx = x - countedX, dy = y - countedY, dc = cos - countedCos, ds = sin - countedSin;
+        double extent = 0;
+        for (int i = 0, n = getFixtureCount(); i < n; i++) {
+            Convex c = getFixture(i).getShape();
+            Vector2 centre = c.getCenter();
+            extent = Math.max(extent, Math.sqrt(centre.x * centre.x + centre.y * centre.y) + c.getRadius());
+        }
+        odometer += Math.sqrt(dx * dx + dy * dy) + extent * Math.sqrt(dc * dc + ds * ds);
+        countedX = x;
+        countedY = y;
+        countedCos = cos;
+        countedSin = sin;
+    }
 
     /**
      * Tells the broad phases that the body was moved from outside dyn4j's step (a teleport): a fixed

@@ -9,7 +9,6 @@ import org.dyn4j.collision.continuous.ConservativeAdvancement;
 import org.dyn4j.collision.continuous.TimeOfImpact;
 import org.dyn4j.collision.narrowphase.Gjk;
 import org.dyn4j.collision.narrowphase.Penetration;
-import org.dyn4j.dynamics.Body;
 import org.dyn4j.geometry.Convex;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.Transform;
@@ -38,7 +37,8 @@ class ClearancePairTest {
         double dt = 0.01;
         long beyondTest = 0, steps = 0, impacts = 0, remembered = 0;
         for (int walk = 0; walk < 400; walk++) {
-            Body mover = TestBodies.of(false, shape(), 1, true), other = TestBodies.of(false, shape(), 1, rnd.nextBoolean());
+            var mover = (TrackedBody) TestBodies.of(true, shape(), 1, true);
+            var other = (TrackedBody) TestBodies.of(true, shape(), 1, rnd.nextBoolean());
             other.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
             other.rotate(rnd.nextDouble() * 6);
             mover.rotate(rnd.nextDouble() * 6);
@@ -54,6 +54,8 @@ class ClearancePairTest {
                 other.setAngularVelocity(rnd.nextInt(4) == 0 ? rnd.nextGaussian() : 0);
                 mover.getPreviousTransform().set(mover.getTransform());
                 other.getPreviousTransform().set(other.getTransform());
+                mover.countMotion(); // as the world counts at a step's start
+                other.countMotion();
                 boolean ours = pair.cannotMeet(mover, other, dt);
                 boolean test = Dyn4jWorld.cannotMeet(mover, other, dt);
                 Transform ta = mover.getPreviousTransform(), tb = other.getPreviousTransform();
@@ -97,11 +99,12 @@ class ClearancePairTest {
         long touching = 0, remembered = 0;
         for (int walk = 0; walk < 300; walk++) {
             Convex a = shape(), b = shape();
-            var ta = new Transform();
-            var tb = new Transform();
+            var bodyA = (TrackedBody) TestBodies.of(true, a, 1, true);
+            var bodyB = (TrackedBody) TestBodies.of(true, b, 1, false);
+            Transform ta = bodyA.getTransform(), tb = bodyB.getTransform();
             tb.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
             tb.rotate(rnd.nextDouble() * 6, tb.getTranslation());
-            var penetration = new ClearancePenetration();
+            var penetration = new ClearancePenetration(bodyA, bodyB);
             for (int step = 0; step < 1_000; step++) {
                 Vector2 to = tb.getTranslation().difference(ta.getTranslation());
                 ta.translate(to.x * rnd.nextDouble() * 0.02 + rnd.nextGaussian() * 0.01, to.y * rnd.nextDouble() * 0.02 + rnd.nextGaussian() * 0.01);
@@ -111,6 +114,8 @@ class ClearancePairTest {
                 if (rnd.nextInt(200) == 0) {
                     tb.rotate(rnd.nextGaussian(), tb.getTranslation());
                 }
+                bodyA.countMotion();
+                bodyB.countMotion();
                 var expected = new Penetration();
                 boolean hit = gjk.detect(a, ta, b, tb, expected);
                 assertEquals(hit, ours.detect(a, ta, b, tb, penetration), "walk " + walk + ", step " + step);
