@@ -64,12 +64,12 @@ final class Dyn4jWorld extends World<Body> {
 
     @Override
     protected void step() {
-        countMotion(); // whatever moved the bodies since the last step (teleports)
         int listeners = stepListeners.size();
         for (int i = 0; i < listeners; i++) {
             stepListeners.get(i).begin(timeStep, this);
         }
         if (updateRequired) {
+            countMotion(); // whatever moved the bodies since the last step (teleports), before this detection reads them
             detect();
             for (int i = 0; i < listeners; i++) {
                 stepListeners.get(i).updatePerformed(timeStep, this);
@@ -89,6 +89,7 @@ final class Dyn4jWorld extends World<Body> {
         ContinuousDetectionMode mode = settings.getContinuousDetectionMode();
         for (int i = 0, n = bodies.size(); i < n; i++) {
             Body body = bodies.get(i);
+            ((TrackedBody) body).countMotion(); // what moved it since the step's last count, in the walk that reads it anyway
             body.getPreviousTransform().set(body.getTransform());
         }
         if (!islands.solve(bodies, !joints.isEmpty(), constraintGraph, contactConstraintSolver, gravity, timeStep, settings)) {
@@ -208,8 +209,9 @@ final class Dyn4jWorld extends World<Body> {
     }
 
     /**
-     * Advances every body's odometer by its motion since it last counted: at the step's start (what
-     * moved the bodies between steps) and before the step's last detection (the step's own motion),
+     * Advances every body's odometer by its motion since it last counted: before a detection the step
+     * begins with (what moved the bodies between steps; otherwise the walk that keeps the previous
+     * transforms counts it) and before the step's last detection (the step's own motion),
      * so that every transform the detections and the time-of-impact pass read is one the odometers
      * counted ({@link RememberedClearance}).
      */
