@@ -38,10 +38,15 @@ final class ClearancePenetration extends Penetration {
             return penetration;
         }
 
+        /** dyn4j's reset but for its own penetration, which nothing reads here ({@link #getPenetration}). */
         @Override
         public void reset() {
-            super.reset();
+            setBroadphaseCollision(false);
+            setNarrowphaseCollision(false);
+            setManifoldCollision(false);
+            setContactConstraintCollision(false);
             penetration.clear();
+            getManifold().clear();
         }
     }
 }

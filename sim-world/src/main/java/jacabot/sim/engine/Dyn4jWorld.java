@@ -53,7 +53,7 @@ final class Dyn4jWorld extends World<Body> {
         }
         super.addBody(body);
         ((TrackedBody) body).graphNode = constraintGraph.getNode(body);
-        ((TrackedBody) body).countMotion();
+        ((TrackedBody) body).joined();
     }
 
     /** Collision data whose penetration remembers the pair's clearance for {@link BoundedGjk}. */
@@ -89,7 +89,9 @@ final class Dyn4jWorld extends World<Body> {
         ContinuousDetectionMode mode = settings.getContinuousDetectionMode();
         for (int i = 0, n = bodies.size(); i < n; i++) {
             Body body = bodies.get(i);
-            ((TrackedBody) body).countMotion(); // what moved it since the step's last count, in the walk that reads it anyway
+            if (!((TrackedBody) body).fixed) {
+                ((TrackedBody) body).countMotion(); // what moved it since the step's last count, in the walk that reads it anyway
+            }
             body.getPreviousTransform().set(body.getTransform());
         }
         if (!islands.solve(bodies, !joints.isEmpty(), constraintGraph, contactConstraintSolver, gravity, timeStep, settings)) {
@@ -213,11 +215,14 @@ final class Dyn4jWorld extends World<Body> {
      * begins with (what moved the bodies between steps; otherwise the walk that keeps the previous
      * transforms counts it) and before the step's last detection (the step's own motion),
      * so that every transform the detections and the time-of-impact pass read is one the odometers
-     * counted ({@link RememberedClearance}).
+     * counted ({@link RememberedClearance}). A fixed body counts its teleports itself ({@link TrackedBody#fixed}).
      */
     private void countMotion() {
         for (int i = 0, n = bodies.size(); i < n; i++) {
-            ((TrackedBody) bodies.get(i)).countMotion();
+            TrackedBody body = (TrackedBody) bodies.get(i);
+            if (!body.fixed) {
+                body.countMotion();
+            }
         }
     }
 

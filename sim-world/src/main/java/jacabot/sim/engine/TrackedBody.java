@@ -32,13 +32,31 @@ final class TrackedBody extends Body {
      */
     double odometer;
     private double countedX, countedY, countedCos = 1, countedSin;
+    /** The farthest a point of the body's fixtures lies from its origin: a fixture's centre's distance plus its radius. */
+    private double extent;
+    /**
+     * Whether the body has infinite mass: nothing but a teleport moves it ({@link StillFixedBodies}),
+     * so its motion is counted there ({@link #teleported()}) and the step's counts pass it by.
+     */
+    boolean fixed;
+
+    /** Called when the body joins a world, its fixtures and mass set: keeps its extent and whether it is fixed, and counts its motion. */
+    void joined() {
+        extent = 0;
+        for (int i = 0, n = getFixtureCount(); i < n; i++) {
+            Convex c = getFixture(i).getShape();
+            Vector2 centre = c.getCenter();
+            extent = Math.max(extent, Math.sqrt(centre.x * centre.x + centre.y * centre.y) + c.getRadius());
+        }
+        fixed = getMass().isInfinite();
+        countMotion();
+    }
 
     /**
      * Advances the odometer by a bound on how far any point moved from the transform last counted to
      * the body's transform now: a translation by d and a rotation changed by {@code R - R0} move a
      * point at {@code p} from the origin by at most {@code |d| + |p| ‖R - R0‖}, {@code ‖R - R0‖} being
-     * the length of the cosine's and sine's change, {@code |p|} at most a fixture's centre's distance
-     * plus its radius.
+     * the length of the cosine's and sine's change, {@code |p|} at most the body's {@link #extent}.
      */
     void countMotion() {
         Transform t = getTransform();
@@ -47,12 +65,6 @@ final class TrackedBody extends Body {
             return;
         }
         double dx = x - countedX, dy = y - countedY, dc = cos - countedCos, ds = sin - countedSin;
-        double extent = 0;
-        for (int i = 0, n = getFixtureCount(); i < n; i++) {
-            Convex c = getFixture(i).getShape();
-            Vector2 centre = c.getCenter();
-            extent = Math.max(extent, Math.sqrt(centre.x * centre.x + centre.y * centre.y) + c.getRadius());
-        }
         odometer += Math.sqrt(dx * dx + dy * dy) + extent * Math.sqrt(dc * dc + ds * ds);
         countedX = x;
         countedY = y;
@@ -62,9 +74,12 @@ final class TrackedBody extends Body {
 
     /**
      * Tells the broad phases that the body was moved from outside dyn4j's step (a teleport): a fixed
-     * body is measured again only then ({@link StillFixedBodies}).
+     * body is measured again only then ({@link StillFixedBodies}), and its motion counted only then.
      */
     void teleported() {
+        if (fixed) {
+            countMotion();
+        }
         if (contactEntry != null) {
             contactEntry.watch();
         }

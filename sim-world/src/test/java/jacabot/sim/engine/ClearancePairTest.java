@@ -31,14 +31,21 @@ class ClearancePairTest {
                 : Geometry.createRectangle(0.02 + rnd.nextDouble() * 2, 0.02 + rnd.nextDouble() * 0.5);
     }
 
+    /** A body as a world holds it: {@link TrackedBody#joined()} keeps the extent its odometer counts rotations by. */
+    private static TrackedBody tracked(Convex shape, boolean movable) {
+        var body = (TrackedBody) TestBodies.of(true, shape, 1, movable);
+        body.joined();
+        return body;
+    }
+
     @Test
     void answersFromMemoryOnlyWhereDyn4jFindsNoImpact() {
         var dyn4j = new ConservativeAdvancement();
         double dt = 0.01;
         long beyondTest = 0, steps = 0, impacts = 0, remembered = 0;
         for (int walk = 0; walk < 400; walk++) {
-            var mover = (TrackedBody) TestBodies.of(true, shape(), 1, true);
-            var other = (TrackedBody) TestBodies.of(true, shape(), 1, rnd.nextBoolean());
+            var mover = tracked(shape(), true);
+            var other = tracked(shape(), rnd.nextBoolean());
             other.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
             other.rotate(rnd.nextDouble() * 6);
             mover.rotate(rnd.nextDouble() * 6);
@@ -99,8 +106,8 @@ class ClearancePairTest {
         long touching = 0, remembered = 0;
         for (int walk = 0; walk < 300; walk++) {
             Convex a = shape(), b = shape();
-            var bodyA = (TrackedBody) TestBodies.of(true, a, 1, true);
-            var bodyB = (TrackedBody) TestBodies.of(true, b, 1, false);
+            var bodyA = tracked(a, true);
+            var bodyB = tracked(b, false);
             Transform ta = bodyA.getTransform(), tb = bodyB.getTransform();
             tb.translate(rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 3 - 1.5);
             tb.rotate(rnd.nextDouble() * 6, tb.getTranslation());
@@ -129,5 +136,22 @@ class ClearancePairTest {
         }
         assertTrue(touching > 2_000, "touching " + touching);
         assertTrue(remembered > 20_000, "answered from memory " + remembered);
+    }
+
+    /** The world's counts pass a fixed body by: its teleport counts its motion, rotation included. */
+    @Test
+    void aFixedBodyCountsItsTeleports() {
+        var fixed = tracked(Geometry.createRectangle(2, 0.5), false);
+        var moving = tracked(Geometry.createRectangle(2, 0.5), true);
+        fixed.translate(0.3, 0.4);
+        fixed.rotate(Math.PI / 2, fixed.getTransform().getTranslation());
+        fixed.teleported();
+        // the end of the 2 m box swings by 1 m * sqrt(2) on top of the 0.5 m translation
+        assertTrue(fixed.odometer >= 0.5 + Math.sqrt(2) - 1e-12, "odometer " + fixed.odometer);
+        moving.translate(0.3, 0.4);
+        moving.teleported();
+        assertEquals(0.0, moving.odometer, "a moving body is counted by the world's step");
+        moving.countMotion();
+        assertEquals(0.5, moving.odometer, 1e-12);
     }
 }
