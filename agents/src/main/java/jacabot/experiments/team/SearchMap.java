@@ -56,15 +56,27 @@ public class SearchMap extends Artifact {
     static final double SPOT_VIEW = 0.5;
     /** Two robots' search points at least this far apart when the map allows, metres. */
     static final double SPREAD = 0.8;
+    /**
+     * How much a cell's distance from the storage point shortens its way in the choice of the next
+     * cell (the way less this times that distance): every delivery passes the floor near the storage
+     * point, and the cylinders never grasped lay in the far part (team tuning worlds: 17 of 19 at
+     * 1.7-3 m from it). Only once the map has begun again: from the start the nearest floor first
+     * (a weight on every choice lost on team tuning worlds).
+     */
+    static final double FAR_WEIGHT = 0.5;
 
     private double width;
     private double depth;
+    private double storageX;
+    private double storageZ;
     private int nx;
     private int nz;
     /** Cells never searched (the storage area) are seen from the start. */
     private boolean[] never;
     private boolean[] seen;
     private int unseen;
+    /** The map has been seen whole and begun again at least once. */
+    private boolean again;
     /** Cylinders sighted by robots that could not go for them (x, z), oldest first. */
     private final List<double[]> spots = new ArrayList<>();
     private final Map<AgentId, ObsProperty> points = new LinkedHashMap<>();
@@ -84,6 +96,8 @@ public class SearchMap extends Artifact {
         }
         width = w;
         depth = d;
+        storageX = sx;
+        storageZ = sz;
         nx = Math.max(1, (int) Math.ceil(w / CELL));
         nz = Math.max(1, (int) Math.ceil(d / CELL));
         never = new boolean[nx * nz];
@@ -216,7 +230,7 @@ public class SearchMap extends Artifact {
         }
     }
 
-    /** The nearest unseen cell at least SPREAD from the others' points (else the nearest unseen); all seen, the map begins again. */
+    /** The nearest unseen cell (the map begun again: its way less FAR_WEIGHT times its distance from the storage point) at least SPREAD from the others' points (else the nearest unseen); all seen, the map begins again. */
     private double[] pointFor(AgentId me, double x, double z) {
         double[] spot = null;
         double spotD = Double.MAX_VALUE;
@@ -237,17 +251,19 @@ public class SearchMap extends Artifact {
     private int cellFor(AgentId me, double x, double z) {
         if (unseen == 0) {
             clear();
+            again = true;
         }
         if (unseen == 0) {
             return cell(x, z);
         }
+        double far = again ? FAR_WEIGHT : 0;
         int best = -1, anyBest = -1;
         double bestD = Double.MAX_VALUE, anyD = Double.MAX_VALUE;
         for (int i = 0; i < seen.length; i++) {
             if (seen[i]) {
                 continue;
             }
-            double dx = cx(i) - x, dz = cz(i) - z, d = dx * dx + dz * dz;
+            double d = Math.hypot(cx(i) - x, cz(i) - z) - far * Math.hypot(cx(i) - storageX, cz(i) - storageZ);
             if (d < anyD) {
                 anyD = d;
                 anyBest = i;
