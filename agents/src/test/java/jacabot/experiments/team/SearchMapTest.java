@@ -16,8 +16,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The team's search map: what one robot has looked over is not another's next search point, two
- * robots' points lie apart, a point moves on once its cell is seen, once the map has begun again the
- * floor far from the storage point comes first, and an agent that leaves loses its point.
+ * robots' points lie apart, a point moves on once its cell is seen, and an agent that leaves loses
+ * its point.
  */
 class SearchMapTest {
     private static double[] searchFrom(Workspace ws, AgentId agent, double x, double z) {
@@ -89,29 +89,6 @@ class SearchMapTest {
             assertEquals(0, map.unseen());
             searchFrom(ws, a, 0.0, 0.0);
             assertEquals(all, map.unseen(), "the map begun again");
-        }
-    }
-
-    @Test
-    void onceBegunAgainOfTwoCellsAsNearTheOneFartherFromTheStoragePointComesFirst() throws CartagoException {
-        try (Workspace ws = Ops.workspace()) {
-            SearchMap map = map(ws);
-            AgentId a = ws.join("a", new Ops.Watcher());
-            ok(ws, a, "search", "searchArea", 2.0, 2.0, -0.9, -0.9, 0.3);
-            // halfway between two cells' centres: at first the nearest, either (the one nearer the storage point)
-            double[] first = searchFrom(ws, a, 0.25, 0.375);
-            assertEquals(0.125, first[0], 1e-9);
-            assertEquals(0.375, first[1], 1e-9);
-            for (double x = -0.875; x < 1; x += 0.25) {
-                for (double z = -0.875; z < 1; z += 0.25) {
-                    ok(ws, a, "search", "looked", x, z, 0.0, false);
-                }
-            }
-            assertEquals(0, map.unseen());
-            // the map begun again: the one farther from the storage point
-            double[] again = searchFrom(ws, a, 0.25, 0.375);
-            assertEquals(0.375, again[0], 1e-9);
-            assertEquals(0.375, again[1], 1e-9);
         }
     }
 
