@@ -56,30 +56,15 @@ public class SearchMap extends Artifact {
     static final double SPOT_VIEW = 0.5;
     /** Two robots' search points at least this far apart when the map allows, metres. */
     static final double SPREAD = 0.8;
-    /**
-     * What a cell outside the robot's own sector adds to its way in the choice of the next cell,
-     * metres. Each robot has a sector, an equal share of the angles round the storage point (robots
-     * in the order they first looked): four robots that all set out from the storage point after a
-     * delivery otherwise searched the same floor (team tuning worlds: a sixth of the robots' time
-     * searching at the run's end with no pick after it).
-     */
-    static final double SECTOR_COST = 0.75;
 
     private double width;
     private double depth;
-    private double storageX;
-    private double storageZ;
     private int nx;
     private int nz;
     /** Cells never searched (the storage area) are seen from the start. */
     private boolean[] never;
     private boolean[] seen;
     private int unseen;
-    /** The angles (radians) from the storage point to the searched cells, least and greatest. */
-    private double angleMin;
-    private double angleMax;
-    /** The map has been seen whole and begun again at least once: from then on the sectors. */
-    private boolean again;
     /** Cylinders sighted by robots that could not go for them (x, z), oldest first. */
     private final List<double[]> spots = new ArrayList<>();
     private final Map<AgentId, ObsProperty> points = new LinkedHashMap<>();
@@ -99,8 +84,6 @@ public class SearchMap extends Artifact {
         }
         width = w;
         depth = d;
-        storageX = sx;
-        storageZ = sz;
         nx = Math.max(1, (int) Math.ceil(w / CELL));
         nz = Math.max(1, (int) Math.ceil(d / CELL));
         never = new boolean[nx * nz];
@@ -108,14 +91,6 @@ public class SearchMap extends Artifact {
             double dx = cx(i) - sx, dz = cz(i) - sz;
             never[i] = dx * dx + dz * dz < clear * clear
                     || Math.abs(cx(i)) > w / 2 - WALL || Math.abs(cz(i)) > d / 2 - WALL;
-        }
-        angleMin = Math.PI;
-        angleMax = -Math.PI;
-        for (int i = 0; i < never.length; i++) {
-            if (!never[i]) {
-                angleMin = Math.min(angleMin, angle(i));
-                angleMax = Math.max(angleMax, angle(i));
-            }
         }
         clear();
     }
@@ -241,7 +216,7 @@ public class SearchMap extends Artifact {
         }
     }
 
-    /** The nearest unseen cell (a cell outside the robot's sector SECTOR_COST farther) at least SPREAD from the others' points (else the nearest unseen); all seen, the map begins again. */
+    /** The nearest unseen cell at least SPREAD from the others' points (else the nearest unseen); all seen, the map begins again. */
     private double[] pointFor(AgentId me, double x, double z) {
         double[] spot = null;
         double spotD = Double.MAX_VALUE;
@@ -262,21 +237,17 @@ public class SearchMap extends Artifact {
     private int cellFor(AgentId me, double x, double z) {
         if (unseen == 0) {
             clear();
-            again = true;
         }
         if (unseen == 0) {
             return cell(x, z);
         }
-        int robots = Math.max(1, places.size()), mine = List.copyOf(places.keySet()).indexOf(me);
-        double share = (angleMax - angleMin) / robots;
         int best = -1, anyBest = -1;
         double bestD = Double.MAX_VALUE, anyD = Double.MAX_VALUE;
         for (int i = 0; i < seen.length; i++) {
             if (seen[i]) {
                 continue;
             }
-            int sector = share > 0 ? Math.min(robots - 1, (int) ((angle(i) - angleMin) / share)) : mine;
-            double d = Math.hypot(cx(i) - x, cz(i) - z) + (sector == mine || !again ? 0 : SECTOR_COST);
+            double dx = cx(i) - x, dz = cz(i) - z, d = dx * dx + dz * dz;
             if (d < anyD) {
                 anyD = d;
                 anyBest = i;
@@ -343,12 +314,6 @@ public class SearchMap extends Artifact {
     private int cell(double x, double z) {
         int i = (int) Math.floor((x + width / 2) / CELL), k = (int) Math.floor((z + depth / 2) / CELL);
         return Math.min(nx - 1, Math.max(0, i)) * nz + Math.min(nz - 1, Math.max(0, k));
-    }
-
-    /** The angle from the storage point to cell i, radians, from the way to the arena's centre (no turn through a half turn by a wall). */
-    private double angle(int i) {
-        double a = Math.atan2(cz(i) - storageZ, cx(i) - storageX) - Math.atan2(-storageZ, -storageX);
-        return Math.atan2(Math.sin(a), Math.cos(a));
     }
 
     private double cx(int i) {
