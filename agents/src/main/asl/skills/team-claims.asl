@@ -145,14 +145,8 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
--homing(_) : myClaim(Id) & not picked(true) & not picking <- !spotClaim(Id); !releaseClaim(Id); .print("Claim ", Id, " released").
-@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !spotClaim(Id); !releaseClaim(Id).
-// Not in the thesis: a claim released untaken is a spot on the team's search map (a robot with no
-// cylinder goes there first): of the cylinders never grasped on team tuning worlds, most had been
-// claimed and released, and nobody looked there again
-@spotClaim
-+!spotClaim(Id) : teamSearch & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & awayFromStorage(Cx, Cz) <- spotted(Cx, Cz).
-@spotClaimNot +!spotClaim(_).
+-homing(_) : myClaim(Id) & not picked(true) & not picking <- !releaseClaim(Id); .print("Claim ", Id, " released").
+@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id).
 
 // the claim sought again: a homing (the same cylinder claimed again, or another) ends the seek
 @seekEndsHoming +homing(_) : seekingClaim(_, _, _, _) <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)).
