@@ -10,7 +10,7 @@ knockedTurn(14000).   // ms the turn lasts at most: a full turn at a quarter spe
 knockFetch(20000).    // ms after a fall by the storage area that picking is allowed there (not in the thesis):
                       // the turn to it and picking's slow approach (a window of 10 s ended 0.2 s after the pick)
 knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall counts as by the storage area
-// Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area), gripReach(G) (search-memory's); picking,
+// Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area), gripPoint (search-memory's: the gripper's point ahead of the robot); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D), location, orientation (the middleware's); storagePoint(X, Z),
 // storageRadius(R) (the world's); stored(N) (delivery).
 // Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
@@ -41,5 +41,5 @@ fallenNearStorage :- knockFetchWithin(M) & storageWithin(M).
 // standing 2.8 cm from the point, and delivered it again; the knocked one was left. With none stored, a robot
 // facing the point as it fell, 11 cm away, still turns to the cylinder: world 174 × 2).
 fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W & not pileAhead.
-pileAhead :- stored(N) & N > 0 & location(X, _, Z) & orientation(O) & gripReach(G) & storagePoint(Sx, Sz) & storageRadius(R)
-    & H = O * math.pi / 180 & Dx = X + G * math.cos(H) - Sx & Dz = Z + G * math.sin(H) - Sz & Dx * Dx + Dz * Dz < R * R.
+pileAhead :- stored(N) & N > 0 & gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & storageRadius(R)
+    & (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz) < R * R.

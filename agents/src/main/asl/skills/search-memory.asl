@@ -71,8 +71,9 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
 // the robot, not near the robot's centre; without a compass, near the centre
-pickedAt(Cx, Cz) :- location(X, _, Z) & orientation(O) & gripReach(G) & H = O * math.pi / 180
+gripPoint(Cx, Cz) :- location(X, _, Z) & orientation(O) & gripReach(G) & H = O * math.pi / 180
     & Cx = X + G * math.cos(H) & Cz = Z + G * math.sin(H).
+pickedAt(Cx, Cz) :- gripPoint(Cx, Cz).
 pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @forgetPicked +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- !forgetNear(Cx, Cz, R).
 
