@@ -23,9 +23,8 @@ import org.junit.jupiter.api.Test;
 /**
  * The default agents are skills composed by include (Chapter 5 §2: a new skill is "new plans and/or
  * beliefs"): no plan is written in two files, no tuning constant is declared in two files (nor one
- * parameter in two skills), every plan
- * carries a label that says what it does, and no agent has two plans of one label. The agents as
- * published (as-published/) are the thesis' listings and are exempt.
+ * parameter in two skills), every plan carries a label that says what it does, and no agent has two
+ * plans of one label. The agents as published (as-published/) are the thesis' listings and are exempt.
  */
 class SkillLibraryTest {
     private static final Path ASL = Path.of(System.getProperty("jacabot.projectDir", ".")).resolve("src/main/asl");
