@@ -120,7 +120,7 @@ class SkillLibraryTest {
     @Test
     void everyAgentNamesEachPlanOnce() throws Exception {
         for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up",
-                "suspend-resume-task", "suspend-resume-energy")) {
+                "suspend-resume-task", "suspend-resume-energy", "team-delivery")) {
             Path file = ASL.resolve(agent + ".asl");
             if (!Files.exists(file)) {
                 continue;
