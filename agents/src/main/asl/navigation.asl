@@ -7,10 +7,6 @@
 // plans as published: as-published/navigation.asl.
 
 middlewareClass("jacabot.experiments.NavigationMiddleware").
-// a waypoint of the sweep is skipped after this long, progress or not (the sweep's progress-based
-// skip measured worse here: generated worlds 129 -> 119 of 150)
-waypointPatience(60000).
-waypointProgress(off).
 // turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
 // 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
 quickTurns.

@@ -11,9 +11,7 @@ middlewareClass("jacabot.experiments.ObjectPickingMiddleware").
 // cylinder is held, the thesis' 50 (at 100 the battery, 1000 J, is empty after about 8 minutes)
 legSpeed(50) :- picked(true).
 legSpeed(V) :- not picked(true) & travelSpeed(V).
-// navigation's: a waypoint of the sweep skipped after this long, and quick turns on the spot
-waypointPatience(60000).
-waypointProgress(off).
+// quick turns on the spot (heading.asl), as navigation's
 quickTurns.
 // the sweep heads for look points at most this far apart (m) and looks around at each, not along
 // lanes (skills/look-points.asl, navigation's search at navigation's 1.0 m: fewer points leave the

@@ -5,6 +5,7 @@
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/skills/search-memory.asl") }
+{ include("../../main/asl/skills/gripper.asl") }   // its gripPoint (picking includes it)
 
 location(0, 0, 0).
 orientation(0).

@@ -6,7 +6,8 @@
 { include("skill_test_support.asl") }
 { include("../../main/asl/skills/delivery.asl") }
 { include("../../main/asl/skills/knocked-aside.asl") }
-{ include("../../main/asl/skills/search-memory.asl") }   // its gripReach
+{ include("../../main/asl/skills/search-memory.asl") }
+{ include("../../main/asl/skills/gripper.asl") }   // its gripPoint (picking includes it)
 
 maxSpeed(100).
 storagePoint(0.4, -0.4).    // the world's, as the launcher gives them

@@ -85,7 +85,7 @@ mock_operation(_, ok).
        -picked(false); !!perceive(picked(true));
        !until(myClaim(7), 5000);
        ?mock_called(take(X, Z, 7));
-       !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27);  // in the gripper, 6 cm ahead
+       !assert_true(X > 0.09 & X < 0.11 & Z > 0.24 & Z < 0.26);  // in the gripper, 5 cm ahead
        !assert_false(myClaim(3)).
 
 @[test]
@@ -94,7 +94,7 @@ mock_operation(_, ok).
        !!unperceive(picked(true));
        !until(mock_called(putDown(_, _)), 5000);
        ?mock_called(putDown(X, Z));
-       !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27).   // where the gripper held it, 6 cm ahead
+       !assert_true(X > 0.09 & X < 0.11 & Z > 0.24 & Z < 0.26).   // where the gripper held it, 5 cm ahead
 
 @[test]
 +!test_a_claim_the_board_voided_does_not_fail_the_next_claim
@@ -168,7 +168,7 @@ mock_operation(_, ok).
        !!perceive(caught(true));
        !until(myClaim(7), 5000);
        ?mock_called(take(X, Z, 7));
-       !assert_true(X > 0.09 & X < 0.11 & Z > 0.25 & Z < 0.27);  // in the gripper, 6 cm ahead
+       !assert_true(X > 0.09 & X < 0.11 & Z > 0.24 & Z < 0.26);  // in the gripper, 5 cm ahead
        -caught(true); !!perceive(caught(false));
        !until(mock_called(putDown(_, _)), 5000);
        !assert_false(takenCaught);

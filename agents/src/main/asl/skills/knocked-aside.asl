@@ -10,7 +10,7 @@ knockedTurn(14000).   // ms the turn lasts at most: a full turn at a quarter spe
 knockFetch(20000).    // ms after a fall by the storage area that picking is allowed there (not in the thesis):
                       // the turn to it and picking's slow approach (a window of 10 s ended 0.2 s after the pick)
 knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall counts as by the storage area
-// Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area), gripPoint (search-memory's: the gripper's point ahead of the robot); picking,
+// Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area), gripPoint (gripper's, which picking includes: the gripper's point ahead of the robot); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D), location, orientation (the middleware's); storagePoint(X, Z),
 // storageRadius(R) (the world's); stored(N) (delivery).
 // Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).

@@ -14,6 +14,8 @@
 // "-+reachCylinder(b)"; the listing's "turnAround; .wait(20000)" before the slow approach would
 // turn the robot's back on the cylinder it has just centred: left out.
 
+{ include("gripper.asl") }
+
 reachCylinder(false).
 
 @reachLeft

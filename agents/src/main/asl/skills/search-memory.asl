@@ -8,7 +8,6 @@
 sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one (a sighting's
                      // place is off by 0.2-0.3 m at 0.4-0.75 m, so this is about one sighting's error)
-gripReach(0.05).     // m ahead of the robot's centre where the gripper holds a cylinder (the model's)
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 // the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
 // the fixed corner the first sweep crossed the arena first
@@ -19,7 +18,8 @@ nearSide(V, -1) :- V >= 0.
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
-// Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting).
+// Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting); gripPoint
+// (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, lookingAgain(X, Z, Since) (the place looked for again,
 // in view since, 0 before).
@@ -70,9 +70,7 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
-// the robot, not near the robot's centre; without a compass, near the centre
-gripPoint(Cx, Cz) :- location(X, _, Z) & orientation(O) & gripReach(G) & H = O * math.pi / 180
-    & Cx = X + G * math.cos(H) & Cz = Z + G * math.sin(H).
+// the robot (gripper's gripPoint), not near the robot's centre; without a compass, near the centre
 pickedAt(Cx, Cz) :- gripPoint(Cx, Cz).
 pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @forgetPicked +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- !forgetNear(Cx, Cz, R).

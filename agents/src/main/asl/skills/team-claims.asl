@@ -29,13 +29,13 @@ claimErrorSlope(0.3).  // ... plus this much per metre of distance (measured on 
                        // worlds: up to 0.45 m off at 1.4 m, 0.28 m at 0.75 m, 0.19 m at 0.4 m)
 seekClaimTime(20000).  // ms a claim lost from sight is kept while its robot looks for it again
 claimBeyond(2).        // the claim reaches this many times its radius beyond the estimate, on the bearing
-gripReach(0.06).       // m from the robot's centre to a cylinder held in the gripper
 sightCone(15).         // degrees either side of a sighting's bearing where a carried cylinder or the
                        // stored pile may be what was sighted
 // Beliefs: myClaim(Id), claimRefused, takenCaught, seekingClaim(Id, X, Z, Since), claimViewedSince(T). Reads: caught(B) (the middleware), teamSearch (team-search), claimed(Id, A, X, Z, R), completed(N) (the board),
 // robotAt(A, X, Z) (team-places), storagePoint(X, Z) (the world), location, orientation, homing(_)
 // (far-sight), cylinderLeft, cylinderRight (the middleware: its plans come before picking's).
-// Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true)), delivery
+// Needs: initial-phase (!init), far-sight (+!sighted, !homeOn), picking (picked(true); its gripper's
+// gripPoint: where a held cylinder is), delivery
 // (stored(N)), team-places (teammateNear, teammateWithin), team-storage (awayFromStorage). Include it FIRST (after team-places): its plans for
 // !init and !sighted come before the skills' defaults.
 
@@ -100,25 +100,21 @@ claimPlaceInView(Cx, Cz) :- location(X, _, Z) & orientation(O) & Dx = Cx - X & D
     & D = math.sqrt(Dx * Dx + Dz * Dz) & D < 0.8 & D > 0.1 & H = O * math.pi / 180
     & Dx * math.cos(H) + Dz * math.sin(H) > D * math.cos(20 * math.pi / 180).
 
-// where the cylinder in the gripper is
-heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * math.pi / 180
-    & Hx = X + G * math.cos(A) & Hz = Z + G * math.sin(A).
-
 // the cylinder in the gripper is this robot's, whoever had claimed its place
 @takePicked
-+picked(true) : heldAt(Hx, Hz) <- .abolish(seekingClaim(_, _, _, _)); -takenCaught; take(Hx, Hz, Id); -myClaim(_); +myClaim(Id).
++picked(true) : gripPoint(Hx, Hz) <- .abolish(seekingClaim(_, _, _, _)); -takenCaught; take(Hx, Hz, Id); -myClaim(_); +myClaim(Id).
 // with teammates, taken as soon as the gripper holds it (caught), the arm still down: until picked
 // (a second later) a teammate's claim on it stood while this robot held it, a double claim (team
 // world 86, two robots, a cylinder reached at the robot's side); let go before it was picked, its
 // claim stays where it is, as a fallen cylinder's
 @takeCaught
-+caught(true) : teamSearch & picking & not picked(true) & heldAt(Hx, Hz)
++caught(true) : teamSearch & picking & not picked(true) & gripPoint(Hx, Hz)
     <- .abolish(seekingClaim(_, _, _, _)); +takenCaught; take(Hx, Hz, Id); -myClaim(_); +myClaim(Id).
 @caughtLetGo
-+caught(false) : takenCaught & not picked(true) & heldAt(Hx, Hz) <- -takenCaught; putDown(Hx, Hz).
++caught(false) : takenCaught & not picked(true) & gripPoint(Hx, Hz) <- -takenCaught; putDown(Hx, Hz).
 // the cylinder let go (put down in the storage area, or fallen): its claim stays where it is
 @putDownClaim
--picked(true) : myClaim(_) & heldAt(Hx, Hz) <- putDown(Hx, Hz).
+-picked(true) : myClaim(_) & gripPoint(Hx, Hz) <- putDown(Hx, Hz).
 // a claim the board voided (another robot took the cylinder) is forgotten
 @claimVoided -claimed(Id, Me, _, _, _) : myClaim(Id) & .my_name(Me) & not claimed(Id, _, _, _, _) & not picked(true) <- -myClaim(Id).
 

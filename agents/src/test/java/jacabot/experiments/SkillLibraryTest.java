@@ -22,9 +22,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The default agents are skills composed by include (Chapter 5 §2: a new skill is "new plans and/or
- * beliefs"): no plan is written in two files, no tuning constant is declared in two files, every plan
- * carries a label that says what it does, and no agent has two plans of one label. The agents as
- * published (as-published/) are the thesis' listings and are exempt.
+ * beliefs"): no plan is written in two files, no tuning constant is declared in two files (nor one
+ * parameter in two skills), every plan carries a label that says what it does, and no agent has two
+ * plans of one label. The agents as published (as-published/) are the thesis' listings and are exempt.
  */
 class SkillLibraryTest {
     private static final Path ASL = Path.of(System.getProperty("jacabot.projectDir", ".")).resolve("src/main/asl");
@@ -59,15 +59,40 @@ class SkillLibraryTest {
         assertEquals(List.of(), copies, "plans written in two files: include the skill that holds them");
     }
 
-    /** A tuning constant: a fact with a number among its arguments, e.g. avoidTimeout(3000). */
+    /** A tuning constant: a fact with a number among its arguments, e.g. avoidTimeout(3000) or quickTurnAt(50, 15). */
+    private static final String CONSTANT = "[^(]*\\((.*[(,\\[])?\\s*-?[0-9].*";
+
+    @Test
+    void theConstantPatternSeesEveryArgument() {
+        assertTrue("avoidTimeout(3000)".matches(CONSTANT));
+        assertTrue("quickTurnAt(50,15)".matches(CONSTANT));
+        assertTrue("lookAt([1,-2])".matches(CONSTANT));
+        assertTrue(!"middlewareClass(\"x\")".matches(CONSTANT) && !"setUpGoal(setUpSweep)".matches(CONSTANT));
+    }
+
     @Test
     void noConstantIsDeclaredInTwoFiles() throws Exception {
         var where = new TreeMap<String, Set<String>>();
         library().forEach((file, program) -> program.beliefs().stream()
-                .filter(b -> b instanceof Literal l && l.toString().matches("[^(]*\\(.*[(,\\[]\\s*-?[0-9].*"))
+                .filter(b -> b instanceof Literal l && l.toString().matches(CONSTANT))
                 .forEach(b -> where.computeIfAbsent(b.toString(), k -> new TreeSet<>()).add(file.toString())));
         var copies = where.entrySet().stream().filter(e -> e.getValue().size() > 1).map(e -> e.getValue() + " " + e.getKey()).toList();
         assertEquals(List.of(), copies, "beliefs declared in two files: declare them once, in the skill that reads them");
+    }
+
+    /** Two skills declaring one parameter, even with two values, give an agent that includes both two beliefs of it. */
+    @Test
+    void noParameterIsDeclaredInTwoSkills() throws Exception {
+        var where = new TreeMap<String, Set<String>>();
+        library().forEach((file, program) -> {
+            if (file.startsWith("skills")) {
+                program.beliefs().stream().filter(b -> b instanceof Literal l && l.toString().matches(CONSTANT))
+                        .forEach(b -> where.computeIfAbsent(((Literal) b).functor() + "/" + ((Literal) b).arity(), k -> new TreeSet<>())
+                                .add(file.toString()));
+            }
+        });
+        var twice = where.entrySet().stream().filter(e -> e.getValue().size() > 1).map(e -> e.getValue() + " " + e.getKey()).toList();
+        assertEquals(List.of(), twice, "parameters declared in two skills: one skill holds it, the others read it");
     }
 
     @Test
@@ -95,7 +120,7 @@ class SkillLibraryTest {
     @Test
     void everyAgentNamesEachPlanOnce() throws Exception {
         for (String agent : List.of("obstacle-avoidance", "object-picking", "navigation", "suspend-resume", "tidy-up",
-                "suspend-resume-task", "suspend-resume-energy")) {
+                "suspend-resume-task", "suspend-resume-energy", "team-delivery")) {
             Path file = ASL.resolve(agent + ".asl");
             if (!Files.exists(file)) {
                 continue;
