@@ -80,6 +80,17 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
+    /** {@return the point {@code distance} metres from the centre, {@code bearing} degrees left of the heading: x, z} */
+    double[] pointAt(double bearing, double distance) {
+        double a = heading + Math.toRadians(bearing);
+        return new double[] {x + distance * Math.cos(a), z + distance * Math.sin(a)};
+    }
+
+    /** Marks an obstacle at the point {@code px, pz} of the map's frame. */
+    void obstacleAt(double px, double pz) {
+        blocked.add(key(px, pz));
+    }
+
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
