@@ -113,12 +113,35 @@ final class ExplorationMap {
             if (blocked.contains(k)) {
                 break;
             }
-            if (k != previous && !visited.contains(k)) {
+            if (k != previous && !visited.contains(k) && !nearMark(k)) {
                 fresh++;
             }
             previous = k;
         }
         return fresh;
+    }
+
+    /** How many cells around a mark the floor does not count as new (0: only the mark's own cell). */
+    private int margin;
+
+    /** New floor within {@code cells} cells of a mark does not count for {@link #bestTurn} from now on. */
+    void margin(int cells) {
+        margin = Math.max(0, cells);
+    }
+
+    private boolean nearMark(long k) {
+        if (margin == 0) {
+            return false;
+        }
+        int i = (int) (k >> 32), j = (int) k;
+        for (int a = -margin; a <= margin; a++) {
+            for (int b = -margin; b <= margin; b++) {
+                if (blocked.contains(key(i + a, j + b))) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     private boolean visit() {

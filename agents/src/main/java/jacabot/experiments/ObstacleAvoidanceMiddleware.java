@@ -133,6 +133,16 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
+    /** New floor within {@code cells} 10 cm cells of a mark does not count for exploreTurn (not in the thesis). */
+    @OPERATION
+    void exploreMargin(double cells) {
+        if (map == null || !(cells >= 0)) {
+            failed("exploreMargin needs odometry(SpeedUnit, AxleLength) first and 0 cells or more, got " + cells);
+            return;
+        }
+        map.margin((int) Math.round(cells));
+    }
+
     /** The weakest front reading marked when a turn towards new floor meets a wall (NaN: off). */
     private double turnMarkLevel = Double.NaN;
     /** When the current turn towards new floor ends (sim ms), with a control step or three to spare. */
