@@ -76,7 +76,6 @@ wallMarks(200) :- arena(W, D) & looseArea(A) & W * D >= A.
 // in smaller arenas, only the walls a turn towards new floor met (the middleware's markTurnWalls):
 // readings of turnMarks or more in a turn that an obstacle cut, and on until it is clear
 turnMarks(200) :- arena(W, D) & looseArea(A) & W * D < A.
-markMargin(1) :- turnMarks(_).
 // corridor steering, not in the thesis: when an obstacle comes while both sensors have read
 // corridorSteer's Level or more for the last corridorSpan m driven (the middleware's walledIn: a
 // wall on each side that long is a passage, where two boxes side by side are not) and neither reads

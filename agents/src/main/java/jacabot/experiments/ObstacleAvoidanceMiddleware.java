@@ -148,6 +148,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     /** When the current turn towards new floor ends (sim ms), with a control step or three to spare. */
     private long turnEndsMs = Long.MIN_VALUE;
     static final long TURN_MARK_GRACE_MS = 120;
+    static final boolean TURN_MARK_AFTER_ONLY = true;
     /** The readings of turnMarkLevel or more during the turn, as points on the map (kept once it meets an obstacle). */
     private final java.util.List<double[]> turnSeen = new java.util.ArrayList<>();
     /** Whether the turn met an obstacle, and the obstacle is not clear yet: its readings are marked. */
@@ -319,7 +320,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double[] p = map.pointAt(bearing, RIM + rangeOf(Math.min(reading, 1000)));
             if (turnMet) {
                 map.obstacleAt(p[0], p[1]);
-            } else if (simTimeMs() <= turnEndsMs) {
+            } else if (simTimeMs() <= turnEndsMs && !TURN_MARK_AFTER_ONLY) {
                 turnSeen.add(p);
             }
         }
