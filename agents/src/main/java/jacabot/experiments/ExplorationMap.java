@@ -64,6 +64,9 @@ final class ExplorationMap {
             x += v * Math.cos(mid) * dt;
             z += v * Math.sin(mid) * dt;
             heading += w * dt;
+            if (!soft.isEmpty() && soft.remove(key(x, z))) {
+                blocked.remove(key(x, z));
+            }
             if (visit()) {
                 lastFreshMs = nowMs;
                 freshTimes.addLast(nowMs);
@@ -89,6 +92,17 @@ final class ExplorationMap {
     /** Marks an obstacle at the point {@code px, pz} of the map's frame. */
     void obstacleAt(double px, double pz) {
         blocked.add(key(px, pz));
+    }
+
+    /** Marks that go once the centre crosses their cell (a turn's marks: a doorway crossed opens again). */
+    private final Set<Long> soft = new HashSet<>();
+
+    /** Marks an obstacle at the point {@code px, pz} until the centre crosses its cell. */
+    void softObstacleAt(double px, double pz) {
+        long k = key(px, pz);
+        if (blocked.add(k)) {
+            soft.add(k);
+        }
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */

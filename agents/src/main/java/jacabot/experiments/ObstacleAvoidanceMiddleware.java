@@ -148,7 +148,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     /** When the current turn towards new floor ends (sim ms), with a control step or three to spare. */
     private long turnEndsMs = Long.MIN_VALUE;
     static final long TURN_MARK_GRACE_MS = 120;
-    static final boolean TURN_MARK_AFTER_ONLY = true;
+    static final boolean TURN_MARK_AFTER_ONLY = false;
     /** The readings of turnMarkLevel or more during the turn, as points on the map (kept once it meets an obstacle). */
     private final java.util.List<double[]> turnSeen = new java.util.ArrayList<>();
     /** Whether the turn met an obstacle, and the obstacle is not clear yet: its readings are marked. */
@@ -319,7 +319,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         } else if (map != null && reading >= turnMarkLevel) {
             double[] p = map.pointAt(bearing, RIM + rangeOf(Math.min(reading, 1000)));
             if (turnMet) {
-                map.obstacleAt(p[0], p[1]);
+                map.softObstacleAt(p[0], p[1]);
             } else if (simTimeMs() <= turnEndsMs && !TURN_MARK_AFTER_ONLY) {
                 turnSeen.add(p);
             }
@@ -334,7 +334,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (obstacle && simTimeMs() <= turnEndsMs) {
             turnMet = true;
             for (double[] p : turnSeen) {
-                map.obstacleAt(p[0], p[1]);
+                map.softObstacleAt(p[0], p[1]);
             }
             turnSeen.clear();
         } else if (!obstacle) {
