@@ -64,9 +64,6 @@ final class ExplorationMap {
             x += v * Math.cos(mid) * dt;
             z += v * Math.sin(mid) * dt;
             heading += w * dt;
-            if (!soft.isEmpty() && soft.remove(key(x, z))) {
-                blocked.remove(key(x, z));
-            }
             if (visit()) {
                 lastFreshMs = nowMs;
                 freshTimes.addLast(nowMs);
@@ -81,28 +78,6 @@ final class ExplorationMap {
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
-    }
-
-    /** {@return the point {@code distance} metres from the centre, {@code bearing} degrees left of the heading: x, z} */
-    double[] pointAt(double bearing, double distance) {
-        double a = heading + Math.toRadians(bearing);
-        return new double[] {x + distance * Math.cos(a), z + distance * Math.sin(a)};
-    }
-
-    /** Marks an obstacle at the point {@code px, pz} of the map's frame. */
-    void obstacleAt(double px, double pz) {
-        blocked.add(key(px, pz));
-    }
-
-    /** Marks that go once the centre crosses their cell (a turn's marks: a doorway crossed opens again). */
-    private final Set<Long> soft = new HashSet<>();
-
-    /** Marks an obstacle at the point {@code px, pz} until the centre crosses its cell. */
-    void softObstacleAt(double px, double pz) {
-        long k = key(px, pz);
-        if (blocked.add(k)) {
-            soft.add(k);
-        }
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -127,35 +102,12 @@ final class ExplorationMap {
             if (blocked.contains(k)) {
                 break;
             }
-            if (k != previous && !visited.contains(k) && !nearMark(k)) {
+            if (k != previous && !visited.contains(k)) {
                 fresh++;
             }
             previous = k;
         }
         return fresh;
-    }
-
-    /** How many cells around a mark the floor does not count as new (0: only the mark's own cell). */
-    private int margin;
-
-    /** New floor within {@code cells} cells of a mark does not count for {@link #bestTurn} from now on. */
-    void margin(int cells) {
-        margin = Math.max(0, cells);
-    }
-
-    private boolean nearMark(long k) {
-        if (margin == 0) {
-            return false;
-        }
-        int i = (int) (k >> 32), j = (int) k;
-        for (int a = -margin; a <= margin; a++) {
-            for (int b = -margin; b <= margin; b++) {
-                if (blocked.contains(key(i + a, j + b))) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 
     private boolean visit() {

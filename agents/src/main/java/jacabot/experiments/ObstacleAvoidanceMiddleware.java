@@ -124,50 +124,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
         double turn = map.bestTurn();
         side.set(turn >= 0 ? "left" : "right");
-        long turnMs = map.turnMillis(turn, speed);
-        ms.set((double) turnMs);
-        if (!Double.isNaN(turnMarkLevel)) {
-            turnEndsMs = simTimeMs() + turnMs + TURN_MARK_GRACE_MS;
-            turnSeen.clear();
-            turnMet = false;
-        }
-    }
-
-    /** New floor within {@code cells} 10 cm cells of a mark does not count for exploreTurn (not in the thesis). */
-    @OPERATION
-    void exploreMargin(double cells) {
-        if (map == null || !(cells >= 0)) {
-            failed("exploreMargin needs odometry(SpeedUnit, AxleLength) first and 0 cells or more, got " + cells);
-            return;
-        }
-        map.margin((int) Math.round(cells));
-    }
-
-    /** The weakest front reading marked when a turn towards new floor meets a wall (NaN: off). */
-    private double turnMarkLevel = Double.NaN;
-    /** When the current turn towards new floor ends (sim ms), with a control step or three to spare. */
-    private long turnEndsMs = Long.MIN_VALUE;
-    static final long TURN_MARK_GRACE_MS = 120;
-    static final boolean TURN_MARK_AFTER_ONLY = false;
-    /** The readings of turnMarkLevel or more during the turn, as points on the map (kept once it meets an obstacle). */
-    private final java.util.List<double[]> turnSeen = new java.util.ArrayList<>();
-    /** Whether the turn met an obstacle, and the obstacle is not clear yet: its readings are marked. */
-    private boolean turnMet;
-
-    /**
-     * Marks on the map the walls or boxes a turn towards new floor met (not in the thesis): every front
-     * reading of {@code level} or more during an {@code exploreTurn}'s turn, where it puts the wall, but
-     * only if an obstacle is signalled during that turn, and then every such reading until the obstacle
-     * is clear (the avoidance turn sweeps the sensors along the wall). The next exploreTurn then does
-     * not aim at the floor beyond that wall again. Fails before {@code odometry} or for a level under 1.
-     */
-    @OPERATION
-    void markTurnWalls(double level) {
-        if (map == null || !(level >= 1)) {
-            failed("markTurnWalls needs odometry(SpeedUnit, AxleLength) first and a level of at least 1, got " + level);
-            return;
-        }
-        turnMarkLevel = level;
+        ms.set((double) map.turnMillis(turn, speed));
     }
 
     /**
@@ -316,31 +273,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
-        } else if (map != null && reading >= turnMarkLevel) {
-            double[] p = map.pointAt(bearing, RIM + rangeOf(Math.min(reading, 1000)));
-            if (turnMet) {
-                map.softObstacleAt(p[0], p[1]);
-            } else if (simTimeMs() <= turnEndsMs && !TURN_MARK_AFTER_ONLY) {
-                turnSeen.add(p);
-            }
-        }
-    }
-
-    /** The obstacle signal changed: a turn towards new floor that meets it keeps what it saw, until clear. */
-    private void turnObstacle(boolean obstacle) {
-        if (Double.isNaN(turnMarkLevel)) {
-            return;
-        }
-        if (obstacle && simTimeMs() <= turnEndsMs) {
-            turnMet = true;
-            for (double[] p : turnSeen) {
-                map.softObstacleAt(p[0], p[1]);
-            }
-            turnSeen.clear();
-        } else if (!obstacle) {
-            turnMet = false;
-            turnEndsMs = Long.MIN_VALUE;
-            turnSeen.clear();
         }
     }
 
@@ -376,9 +308,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 if (obstacle && map != null) {
                     map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
-                }
-                if (map != null) {
-                    turnObstacle(obstacle);
                 }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();
