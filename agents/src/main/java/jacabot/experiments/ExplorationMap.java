@@ -91,7 +91,14 @@ final class ExplorationMap {
                 best = turn;
             }
         }
-        return best;
+        return bestScore + 0.5 < minimum ? 0 : best;
+    }
+
+    /** Fewer new cells than this on the best heading: no turn (straight on). */
+    private int minimum;
+
+    void minimum(int cells) {
+        minimum = cells;
     }
 
     private double score(double a) {
