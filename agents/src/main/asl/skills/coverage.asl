@@ -73,7 +73,6 @@ deltaLevels(200, 190) :- arena(W, D) & looseArea(A) & W * D >= A.
 // every arena); held out 241-300: 84 -> 90; classic 146 -> 146, held out 51-100 145 -> 147
 // (docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: the walls seen marked on the map")
 wallMarks(200) :- arena(W, D) & looseArea(A) & W * D >= A.
-exploreAtLeast(2) :- arena(W, D) & looseArea(A) & W * D < A.
 // corridor steering, not in the thesis: when an obstacle comes while both sensors have read
 // corridorSteer's Level or more for the last corridorSpan m driven (the middleware's walledIn: a
 // wall on each side that long is a passage, where two boxes side by side are not) and neither reads
@@ -109,7 +108,6 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (exploreAtLeast(K)) { exploreMinimum(K) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */

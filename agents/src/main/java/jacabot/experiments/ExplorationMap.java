@@ -91,14 +91,7 @@ final class ExplorationMap {
                 best = turn;
             }
         }
-        return bestScore + 0.5 < minimum ? 0 : best;
-    }
-
-    /** Fewer new cells than this on the best heading: no turn (straight on). */
-    private int minimum;
-
-    void minimum(int cells) {
-        minimum = cells;
+        return best;
     }
 
     private double score(double a) {

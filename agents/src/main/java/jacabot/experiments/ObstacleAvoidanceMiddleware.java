@@ -127,16 +127,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         ms.set((double) map.turnMillis(turn, speed));
     }
 
-    /** exploreTurn turns only towards {@code cells} new cells or more, else not at all (not in the thesis). */
-    @OPERATION
-    void exploreMinimum(double cells) {
-        if (map == null || !(cells >= 0)) {
-            failed("exploreMinimum needs odometry(SpeedUnit, AxleLength) first and 0 cells or more, got " + cells);
-            return;
-        }
-        map.minimum((int) Math.round(cells));
-    }
-
     /**
      * How long the robot has gone over floor already crossed (not in the thesis), in ms: a straight leg over
      * old ground is cut short. Fails before {@code odometry}.
