@@ -2,8 +2,7 @@
 // centres of a grid lookSpacing apart, none in the storage area, the nearest first; a point reached
 // within lookReach gives the next and a look around; with none left a new round begins; a place
 // looked for again too long gives way to the look points; an avoidance cut off is cleared on no
-// progress; with points at most lookEveryWithin apart the sweep makes no look every lookEvery ms.
-// The operations are mocked (agents/README.md "Testing skills").
+// progress. The operations are mocked (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/skills/look-points.asl") }
@@ -86,14 +85,3 @@ mock_operation(_, ok).
        !sweepStep;                                                      // 121 s in all: skipped
        !assert_true(waypoint(0, 0.5, _));
        -waypointPatience(60000); -lookNearing(10000).
-
-@[test]
-+!test_look_points_1_m_apart_make_no_look_every_while
-    <- -looked; .system_time(T); -+lastLook(T - 30000); -+sweep([]); -+waypoint(-1, -0.5, T); -+closest(1000); -+location(0, 0, -0.3);
-       !sweepStep;
-       !assert_false(looked);
-       !assert_true(lastLook(L) & L >= T);
-       -+lookSpacing(1.5); -+lastLook(T - 30000);
-       !sweepStep;                                                      // 1.5 m apart (object picking's): the look around
-       -+lookSpacing(1);
-       !assert_true(looked).

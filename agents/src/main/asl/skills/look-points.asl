@@ -16,10 +16,6 @@ lookAgainFor(40000).
 // began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
 loopAfter(8000).
 loopRadius(0.08).
-// m: with look points at most this far apart the sweep's look every lookEvery ms is not made: each
-// point's look around sees the floor within lookSpacing / 2 * sqrt(2), and the look every 25 s came
-// twice as often as the points' own (wide worlds 107, 110, 112: 34 against 17, 151 s and 221 J of 3000 s)
-lookEveryWithin(1.0).
 // Optional (the agent's): lookNearing(G), ms: a look point whose patience (sweep's) has run out is
 // kept while the robot came nearer it within the last G ms, up to lookPointMost ms in all (wide
 // world 128, seed 1: 0.33 m from a point in a doorway when its 60 s ran out).
@@ -67,11 +63,6 @@ lookPointMost(120000).
 +!sweepStep : lookNearing(G) & waypoint(X, Z, T0) & not lookingAgain(X, Z, _) & patience(P) & .system_time(T) & T - T0 > P
               & closerAt(C) & T - C < G & lookPointSet(X, Z, S) & lookPointMost(M) & T - S < M
     <- -+waypoint(X, Z, C + G - P); !sweepStep.
-
-// the sweep's look every lookEvery ms, where the look points cover the floor: its clock set again
-@lookEveryCovered
-+!sweepStep : lookSpacing(S) & lookEveryWithin(C) & S <= C & not lanesOnly & lookEvery(L) & lastLook(T0) & .system_time(T) & T - T0 > L
-    <- -+lastLook(T); !sweepStep.
 
 @lookAgainStarted +lookingAgain(X, Z, 0) : lookSpacing(_) <- .system_time(T); .abolish(lookAgainFrom(_, _, _)); +lookAgainFrom(X, Z, T).
 @lookAgainTooLong
