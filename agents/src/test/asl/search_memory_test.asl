@@ -1,7 +1,7 @@
 // Skill test of the search memory (skills/search-memory.asl): a cylinder seen and not gone for is
 // remembered where the sighting puts it, once however often it is seen, never in the storage
-// area; picking it forgets it, and a place put from afar is that cylinder within its own error; a
-// search goes first to the nearest one remembered, else on along the sweep's lanes. The operations are mocked (agents/README.md "Testing skills").
+// area; picking it forgets it; a search goes first to the nearest one remembered, else on along
+// the sweep's lanes. The operations are mocked (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/skills/search-memory.asl") }
@@ -222,43 +222,3 @@ maxSpeed(100).
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// a place put from afar is that cylinder within its own error (sightError of the sighting's
-// distance): a pick 0.5 m from a place seen 1.53 m away forgets it, one 0.35 m from a place seen
-// 0.5 m away keeps that
-@[test]
-+!test_picking_forgets_a_place_put_from_afar_within_its_error
-    <- .abolish(seenCylinder(_, _)); .abolish(placeErr(_, _, _)); -+location(0, 0, 0); -+orientation(90);   // heading +z
-       ?placeError(1.53, Far); ?placeError(0.5, Near);
-       +seenCylinder(0, 0.55); +placeErr(0, 0.55, Far); +seenCylinder(0, -0.3); +placeErr(0, -0.3, Near);
-       +picked(true);
-       !until(not seenCylinder(0, 0.55), 500);
-       !assert_false(seenCylinder(0, 0.55));
-       !assert_true(seenCylinder(0, -0.3));
-       -picked(true); .abolish(seenCylinder(_, _)); .abolish(placeErr(_, _, _)); -+orientation(0).
-
-// a sighting from afar within its error of a place seen nearer is that cylinder: not remembered again
-@[test]
-+!test_a_sighting_from_afar_near_a_surer_place_is_not_remembered
-    <- .abolish(seenCylinder(_, _)); .abolish(placeErr(_, _, _)); -+location(0, 0, 0); -+orientation(0);
-       +cylinderSighted(0, 0.5);                        // 0.5 m ahead (+x)
-       !until(seenCylinder(_, _), 500);
-       -cylinderSighted(0, 0.5); +cylinderSighted(0, 0.76);  // the same one, its distance from fewer columns
-       .wait(200);
-       .count(seenCylinder(_, _), N); !assert_true(N == 1);
-       !assert_true(seenCylinder(0.5, 0));
-       -cylinderSighted(0, 0.76); .abolish(seenCylinder(_, _)); .abolish(placeErr(_, _, _)).
-
-// a place put from afar is reached within its error: a look around there, and on to the next
-@[test]
-+!test_a_place_put_from_afar_is_reached_within_its_error
-    <- .abolish(seenCylinder(_, _)); .abolish(placeErr(_, _, _)); .abolish(lookingAgain(_, _, _)); -lookedAround;
-       -+location(0, 0, 0); -+orientation(180);          // the place behind the robot: not in view
-       ?placeError(1.53, E);
-       +seenCylinder(0.5, 0); +placeErr(0.5, 0, E); +searching; !lookAgain;
-       !assert_true(waypoint(0.5, 0, _));
-       !sweepStep;
-       !assert_true(lookedAround);
-       !assert_false(lookingAgain(_, _, _));
-       !assert_true(waypoint(0.5, 0.5, _));
-       -searching; -+orientation(0).

@@ -9,11 +9,6 @@ sameSighting(0.2).   // m: sightings this near each other are one cylinder
 takenRadius(0.25).   // m: a cylinder picked this near a remembered one was that one (a sighting's
                      // place is off by 0.2-0.3 m at 0.4-0.75 m, so this is about one sighting's error)
 gripReach(0.05).     // m ahead of the robot's centre where the gripper holds a cylinder (the model's)
-// share of a sighting's distance by which its place may be off: the distance comes from the image's
-// columns (one column 1.53 m, two 0.76 m); four in five sightings at 1.53 m fell within 0.59 m of a
-// cylinder, at 0.76 m within 0.34 m. A place is that cylinder within its own error, at least the
-// fixed radius (sameSighting, takenRadius), and one put from afar is reached within its error
-sightError(0.4).
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 // the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
 // the fixed corner the first sweep crossed the arena first
@@ -46,12 +41,7 @@ towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(
     & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
     & Along > 0 & Along < 4 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
 nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
-placeError(Dist, E) :- sightError(K) & E = K * Dist.
-placeRadius(X, Z, R, Rp) :- placeErr(X, Z, E) & Rp = math.max(R, E).
-placeRadius(X, Z, R, R) :- not placeErr(X, Z, _).
-seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & placeRadius(X, Z, R, Rp) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < Rp * Rp.
-// a place remembered nearer the new one than the new one's error and surer than it: the same cylinder
-surerNear(Cx, Cz, E) :- seenCylinder(X, Z) & placeErr(X, Z, Eo) & Eo < E & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < E * E.
+seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
 /* Remembering and forgetting */
 
@@ -62,8 +52,7 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 @rememberSighting
 +cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
-                              & placeError(Dist, E) & not surerNear(Cx, Cz, E)
-    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); +placeErr(Cx, Cz, E).
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
 // a homing that lost sight of its cylinder (far sight then looks away a while): the cylinder is
@@ -72,13 +61,13 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 // behind a box 0.2 m away was left for the lanes for minutes); not a homing stale since the last
 // pick, nor one given up (its last sighting is recent). Placed ahead on the pose at the loss, it
 // was off by the turn made since (world 131: 0.7 m off, a 40 s detour)
-@sightPlace +sightOffset(Off) : sightDistance(D) & sightedAt(Off, D, Cx, Cz) & placeError(D, E) <- -+lastSightedAt(Cx, Cz); -+lastSightError(E).
+@sightPlace +sightOffset(Off) : sightDistance(D) & sightedAt(Off, D, Cx, Cz) <- -+lastSightedAt(Cx, Cz).
 @lostFromSight
 -homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
-              & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R) & lastSightError(E)
-    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); +placeErr(Cx, Cz, E); if (searching) { !lookAgain }.
+              & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R)
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
 
-@forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z); .abolish(placeErr(X, Z, _)) }.
+@forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
 // the robot, not near the robot's centre; without a compass, near the centre
@@ -119,7 +108,6 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
        .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz); .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
-       if (placeErr(Cx, Cz, E)) { -+lookAgainError(E) } else { -+lookAgainError(0) }; .abolish(placeErr(Cx, Cz, _));
        println("Looking again where a cylinder was seen");
        .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 
@@ -139,9 +127,3 @@ inView(Cx, Cz) :- location(X, _, Z) & orientation(O) & emptyView(A, R) & Dx = Cx
 +!sweepStep : searching & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, T0) & T0 > 0 & .system_time(T) & T - T0 > 2000
               & inView(Cx, Cz) & not ignoring
     <- -lookingAgain(Cx, Cz, T0); println("Nothing where a cylinder was seen: on to the next"); !nextWaypoint.
-// a place put from afar, off by more than takenRadius, is reached within its error: a look around
-// there sees the floor it may lie on
-@nearUncertain
-+!sweepStep : searching & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, _) & lookAgainError(E) & takenRadius(R) & E > R
-              & location(X, _, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < E * E
-    <- .abolish(lookingAgain(_, _, _)); println("Within its error of where a cylinder was seen: looking around"); !nextWaypoint; !lookAround.
