@@ -184,7 +184,7 @@ public final class Camera extends Sensor {
             bearings[c] = p.heading() - fov / 2 + (c + 0.5) * fov / width;
         }
         // one broad phase for all columns; a column reads nothing behind a hit that fills its top row
-        List<List<RayHit>> fan = caster.castFan(p.position(), bearings, range, sight);
+        List<List<RayHit>> fan = caster.castFan(p.position(), bearings, range, this::fillsTopRow);
         for (int c = 0; c < width; c++) {
             renderColumn(img, c, fan.get(c));
         }
@@ -199,30 +199,6 @@ public final class Camera extends Sensor {
     private static boolean stops(double y, RayHit hit) {
         return y < 0 || y <= hit.height();
     }
-
-    /**
-     * What a column reads of its hits: the top row's stop hides the rest; a hit's distance decides
-     * only, row by row, whether it stops the ray and whether the floor came first ({@link
-     * #renderColumn}), each row's height along the ray growing (or falling) with the distance, so
-     * two distances that agree on every row agree on all between.
-     */
-    private final RayCaster.Sight sight = new RayCaster.Sight() {
-        @Override
-        public boolean opaque(RayHit hit) {
-            return fillsTopRow(hit);
-        }
-
-        @Override
-        public boolean sameFrom(double near, double far, double objectHeight) {
-            for (double slope : rowSlopes) {
-                double a = mountHeight + near * slope, b = mountHeight + far * slope;
-                if (a < 0 != b < 0 || a <= objectHeight != b <= objectHeight) {
-                    return false;
-                }
-            }
-            return true;
-        }
-    };
 
     /** Whether a hit stops the top row's ray, and so every row's (see {@link #stops}): nothing behind it is seen. */
     private boolean fillsTopRow(RayHit hit) {

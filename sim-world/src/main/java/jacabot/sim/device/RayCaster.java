@@ -33,32 +33,6 @@ public interface RayCaster {
         return castFan(origin, bearingsDeg, maxRange);
     }
 
-    /**
-     * What a camera reads of a ray's hits: which hide what lies behind them, and whether a hit's
-     * distance matters within a bracket.
-     */
-    interface Sight {
-        /** {@return whether the hit hides everything behind it} (as the predicate of a fan) */
-        boolean opaque(RayHit hit);
-
-        /**
-         * {@return whether a hit on an object of this height reads the same at every distance from
-         * {@code near} to {@code far}} (both within range, {@code near <= far}): its opacity
-         * included. The reader then takes it at any distance of the bracket.
-         */
-        boolean sameFrom(double near, double far, double height);
-    }
-
-    /**
-     * A fan as {@link #castFan(Vec2, double[], double, Predicate)} casts it with {@code sight}'s
-     * opaque test, for a reader of the hits' distances that {@code sight} describes: a hit's distance
-     * may be given as any within a bracket around its own over which {@link Sight#sameFrom} holds,
-     * the order of the hits being theirs (the brackets keep apart the hits they would swap).
-     */
-    default List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange, Sight sight) {
-        return castFan(origin, bearingsDeg, maxRange, sight::opaque);
-    }
-
     /** {@return the nearest object within range, or null} */
     default RayHit cast(Vec2 origin, double bearingDeg, double maxRange) {
         List<RayHit> hits = castAll(origin, bearingDeg, maxRange);

@@ -168,17 +168,12 @@ final class Physics {
 
             @Override
             public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange) {
-                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, null, null);
+                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, null);
             }
 
             @Override
             public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange, Predicate<RayHit> opaque) {
-                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, opaque, null);
-            }
-
-            @Override
-            public List<List<RayHit>> castFan(Vec2 origin, double[] bearingsDeg, double maxRange, Sight sight) {
-                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, sight::opaque, sight);
+                return Physics.this.castFan(self, origin, bearingsDeg, maxRange, opaque);
             }
         };
     }
@@ -308,7 +303,7 @@ final class Physics {
      * hit, so the hits up to the first opaque one are those of {@link #castAll}.
      */
     private List<List<RayHit>> castFan(SimObject self, Vec2 origin, double[] bearingsDeg, double maxRange,
-                                       Predicate<RayHit> opaque, RayCaster.Sight sight) {
+                                       Predicate<RayHit> opaque) {
         int n = bearingsDeg.length;
         double ox = origin.x(), oz = origin.z();
         double length = maxRange + BACKOFF;
@@ -356,70 +351,20 @@ final class Physics {
                     }
                 }
             }
-            NearestFirst hits = castRay(beam, near, order, bound, tries, maxRange, opaque, sight);
-            if (sight != null && !hits.apart()) {
-                hits = castRay(beam, near, order, bound, tries, maxRange, opaque, null); // every distance exact
+            var hits = new NearestFirst();
+            double stop = Double.POSITIVE_INFINITY; // the nearest opaque hit's distance
+            for (int j = 0; j < tries && !(bound[j] - BACKOFF > stop); j++) {
+                RayHit hit = castShape(near.get(order[j]), beam, maxRange);
+                if (hit != null) {
+                    hits.add(hit, order[j]);
+                    if (opaque != null && hit.distance() < stop && opaque.test(hit)) {
+                        stop = hit.distance();
+                    }
+                }
             }
             fan.add(hits.list());
         }
         return fan;
-    }
-
-    /**
-     * One ray of a fan: casts its tries in order, up to the first whose bound lies beyond an opaque
-     * hit. With {@code sight}, a rectangle that the ray crosses gets no GJK cast when its bracket
-     * ({@link #gjkAtMost}) reads the same to {@code sight}: its hit is given at the bracket's near end.
-     */
-    private NearestFirst castRay(Beam beam, List<SimObject> near, int[] order, double[] bound, int tries, double maxRange,
-                                 Predicate<RayHit> opaque, RayCaster.Sight sight) {
-        var hits = new NearestFirst();
-        double stop = Double.POSITIVE_INFINITY; // the nearest opaque hit's distance (or its bracket's far end)
-        for (int j = 0; j < tries && !(bound[j] - BACKOFF > stop); j++) {
-            SimObject o = near.get(order[j]);
-            RayHit hit = null;
-            double far = Double.NaN;
-            if (sight != null && bound[j] > 0 && o.shape instanceof Rectangle r) {
-                far = gjkAtMost(o, r, beam, maxRange);
-                double from = Math.max(0, bound[j] - BACKOFF); // GJK stops no nearer (reachFrom)
-                if (!Double.isNaN(far) && from <= far && sight.sameFrom(from, far, o.height)) {
-                    hit = new RayHit(from, o.color, o.height, o.id, o.reflectance);
-                }
-            }
-            if (hit == null) {
-                hit = castShape(o, beam, maxRange);
-                far = hit == null ? Double.NaN : hit.distance();
-            }
-            if (hit != null) {
-                hits.add(hit, order[j], far);
-                if (opaque != null && far < stop && opaque.test(hit)) {
-                    stop = far;
-                }
-            }
-        }
-        return hits;
-    }
-
-    /** How far inside a rectangle's outline {@link #gjkAtMost} measures, in metres: far above the casts' rounding. */
-    private static final double INSIDE = 1e-6;
-
-    /**
-     * A bound on a rectangle's hit without its GJK cast, for a ray that starts outside it (grown by
-     * {@link #GJK_MARGIN}) and crosses it: GJK's ray cast is a conservative advancement, each of its
-     * steps moving the point on the ray to a line that bounds the rectangle, so it stops no farther
-     * than where the ray enters the rectangle, and it answers a hit (RayShapesTest holds it to that).
-     * {@return the hit's distance at most, within range; NaN when the ray does not cross the rectangle
-     * shrunk by {@link #INSIDE}, or another detector casts}
-     */
-    private double gjkAtMost(SimObject o, Rectangle r, Beam beam, double maxRange) {
-        double hx = r.getWidth() / 2 - INSIDE, hy = r.getHeight() / 2 - INSIDE;
-        if (!(hx > 0 && hy > 0) || !(world.getRaycastDetector() instanceof Gjk)) {
-            return Double.NaN;
-        }
-        Transform t = o.body.getTransform();
-        double enter = RayShapes.box(beam.sx, beam.sy, beam.dx, beam.dy, t.getTranslationX(), t.getTranslationY(),
-                t.getCost(), t.getSint(), hx, hy, maxRange + BACKOFF);
-        double at = Math.max(0, enter - BACKOFF);
-        return at <= maxRange ? at : Double.NaN; // NaN stays NaN
     }
 
     private final FanScratch scratch = new FanScratch();
