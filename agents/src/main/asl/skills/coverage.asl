@@ -53,9 +53,6 @@ seekBelow(6).
 seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
-squeezeTime(1500).            // an obstacle on the other side this soon after an avoidance: a gap too narrow
-squeezeTurn(1400).            // the turn on the spot out of such a gap (about 180 degrees at turnSpeed 100)
-lastTurn(none, 0).            // the last avoidance turn's side and time (@coverLeft, @coverRight)
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
 // and clears under 190, not 150 and 75 (deltaLevels; the middleware's deltaLimit, deltaClear): there
@@ -133,24 +130,8 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-// a gap narrower than the robot (not in the thesis): an obstacle on one side within squeezeTime of
-// one avoided on the other. The short turn and the veer arc away from the second took the flank on
-// to the first, out of the sensors' sight (the reference's contact failures on wide tuning: 19 of
-// their 49 s of touch came after such a pair). Instead the robot turns on the spot the same way
-// for squeezeTurn (about half a turn at turnSpeed 100: a disc turning on the spot meets nothing
-// new) and leaves the way it came, without a veer.
-@coverSqueezeLeft
-+!avoid(D) : D < 0 & lastTurn(right, T0) & .system_time(T) & squeezeTime(G) & T - T0 < G & turnSpeed(S) & squeezeTurn(W)
-    <- -+lastTurn(none, T); setSpeeds(-S, S); .wait(W); !clear; -avoiding.
-@coverSqueezeRight
-+!avoid(D) : D > 0 & lastTurn(left, T0) & .system_time(T) & squeezeTime(G) & T - T0 < G & turnSpeed(S) & squeezeTurn(W)
-    <- -+lastTurn(none, T); setSpeeds(S, -S); .wait(W); !clear; -avoiding.
-@coverLeft
-+!avoid(D) : D < 0 & turnSpeed(S)
-    <- .system_time(T); -+lastTurn(left, T); setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
-@coverRight
-+!avoid(D) : turnSpeed(S)
-    <- .system_time(T); -+lastTurn(right, T); setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
