@@ -18,7 +18,7 @@ setUpGoal(setUpFloorDrive).
 // obstacleTimes, pausedUntil (coverage.asl's); its own driving(Until) and droveAt(T).
 
 @setUpFloorDrive +!setUpFloorDrive : floorDrive(_, _, _) & regionWallLevel(L)
-    <- regionWalls(L); if (doorOpen) { forgetCrossedMarks }; if (doorOpenTurns) { forgetCrossedTurns }; if (regionFar(F)) { regionFar(F) }; if (doorSeen(A, B, R, S)) { openSeenFloor(A, B, R, S) }.
+    <- regionWalls(L); if (doorOpen) { forgetCrossedMarks }; if (doorOpenTurns) { forgetCrossedTurns }; if (regionFar(F)) { regionFar(F) }.
 @setUpNoFloorDrive +!setUpFloorDrive.
 
 @driveLeg

@@ -112,37 +112,6 @@ final class ExplorationMap {
         regionFar = cells;
     }
 
-    /** Cells a front sensor's reading passed through (it read farther): floor seen open, for {@link #regionWaypoint} alone. */
-    private final Set<Long> seenOpen = new HashSet<>();
-    private boolean openRays, openGaps;
-
-    /**
-     * From now on (not in the thesis), a front reading that passes through a cell, the sensor reading
-     * farther than the cell, forgets the drive's mark there ({@code rays}), and the region count
-     * passes through a cell next to a mark when a reading passed through it ({@code gaps}): a doorway
-     * of 12-20 cm seen from the side, all of whose cells are next to the jambs' marks, opens onto the
-     * floor beyond before it is crossed.
-     */
-    void openSeen(boolean rays, boolean gaps) {
-        openRays = rays;
-        openGaps = gaps;
-    }
-
-    /** A front reading from the rim's point {@code bearing} degrees left of the heading found nothing nearer than {@code distance} metres from the centre. */
-    void seenFree(double bearing, double rim, double distance) {
-        if (!openRays && !openGaps) {
-            return;
-        }
-        double a = heading + Math.toRadians(bearing);
-        for (double d = rim; d <= distance; d += CELL / 4) {
-            long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            seenOpen.add(k);
-            if (openRays) {
-                driveMarks.remove(k);
-            }
-        }
-    }
-
     /** The same forgetting for {@link #bestTurn} too: its rays pass a crossed cell's mark. */
     void forgetForTurns(boolean on) {
         forgetForTurns = on;
@@ -326,8 +295,7 @@ final class ExplorationMap {
             for (int[] d : steps) {
                 int a = (int) c[0] + d[0], b = (int) c[1] + d[1];
                 long n = key(a, b);
-                if (Math.abs(a - i) > radius || Math.abs(b - j) > radius || seen.contains(n) || visited.contains(n)
-                        || (nearWall(a, b) && !(openGaps && seenOpen.contains(n) && !walled(n)))) {
+                if (Math.abs(a - i) > radius || Math.abs(b - j) > radius || seen.contains(n) || visited.contains(n) || nearWall(a, b)) {
                     continue;
                 }
                 seen.add(n);

@@ -100,7 +100,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         map.forgetCrossed(forgetCrossed);
         map.forgetForTurns(forgetForTurns);
         map.regionFar(regionFar);
-        map.openSeen(openRays, openGaps);
     }
 
     /**
@@ -295,9 +294,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     private void markReading(double reading, double bearing) {
-        if (map != null && (openRays || openGaps) && reading <= seenBelow) {
-            map.seenFree(bearing, RIM, RIM + rangeOf(reading) - seenShort);
-        }
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
@@ -318,26 +314,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    private boolean forgetCrossed, forgetForTurns, openRays, openGaps;
+    private boolean forgetCrossed, forgetForTurns;
     private int regionFar;
-    /** The highest reading that sees floor open, and how much short of its range, metres. */
-    private double seenBelow = 999, seenShort = 0.02;
-
-    /**
-     * From now on (not in the thesis) a front reading forgets {@code regionTurn}'s marks in the cells
-     * it passed through ({@code rays} 1) and the region count passes through a cell next to a mark
-     * that a reading passed through ({@code gaps} 1): a doorway seen before it is crossed.
-     */
-    @OPERATION
-    void openSeenFloor(double rays, double gaps, double below, double shortOf) {
-        seenBelow = below;
-        seenShort = shortOf;
-        openRays = rays > 0;
-        openGaps = gaps > 0;
-        if (map != null) {
-            map.openSeen(openRays, openGaps);
-        }
-    }
 
     /** From now on {@code regionTurn} passes over regions fewer than {@code cells} cells away along crossed floor (not in the thesis). */
     @OPERATION
