@@ -138,20 +138,6 @@ maxSpeed(100).
        !assert_true(Fx2 == 1 & Fz2 == -1);
        -+location(0, 0, 0).
 
-// the last cylinder's search (lastFromFar, all but one stored) plans the lanes afresh once, from the
-// corner farthest from the storage point (here (-1, -1): the lanes begin at the corner (+x, +z)),
-// wherever the robot stands; a second search (after a charge, say) goes on along them
-@[test]
-+!test_the_last_cylinder_is_looked_for_along_new_lanes_from_the_corner_farthest_from_storage
-    <- .abolish(seenCylinder(_, _)); +lastFromFar; +cylinders(3); +stored(2); -lastLanes;
-       +searching; -+sweep([[0.5, 0.5]]); -sweepPlanned; -+location(-0.8, 0, -0.8);
-       !searchFromMemory;
-       !assert_true(lastLanes & searching & sweepPlanned);
-       ?sweepFrom(Fx, Fz); !assert_true(Fx == -1 & Fz == -1);
-       -sweepPlanned; !searchFromMemory;
-       !assert_false(sweepPlanned);
-       -lastFromFar; -cylinders(3); -stored(2); -lastLanes; -+location(0, 0, 0).
-
 // a look again with nothing left remembered (another intention took the last place first) ends
 // quietly and leaves the waypoint as it was: its failure ended the robot's motion loop
 @[test]

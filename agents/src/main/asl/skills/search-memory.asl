@@ -12,14 +12,7 @@ gripReach(0.05).     // m ahead of the robot's centre where the gripper holds a 
 resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 // the sweep's lanes begin at the arena's corner nearest the robot (sweep.asl's sweepCorner): from
 // the fixed corner the first sweep crossed the arena first
-sweepFrom(Fx, Fz) :- not lastLanes & location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
-// the search for the last cylinder (cylinders(C) known, all but one stored) plans the lanes afresh, from
-// the corner farthest from the storage point (lastFromFar, the agent's, optional): every delivery brings
-// the robot back to the storage area, so the floor near it is the floor seen most, and the lanes went on
-// where the last search had left them, across floor searched before (world 190: the fourth cylinder,
-// in the far half, picked at 483-592 s or never, 8 of 8 runs late)
-sweepFrom(Fx, Fz) :- lastLanes & storagePoint(Sx, Sz) & Nx = -Sx & Nz = -Sz & nearSide(Nx, Fx) & nearSide(Nz, Fz).
-lastOne :- cylinders(C) & stored(N) & N = C - 1.
+sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
@@ -27,8 +20,7 @@ nearSide(V, -1) :- V >= 0.
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
 // Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting).
-// Reads too: cylinders(N) (the world file's, optional), lastFromFar (the agent's, optional: the last cylinder's lanes).
-// Beliefs: lastLanes (the lanes for the last cylinder planned), seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
+// Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, lookingAgain(X, Z, Since) (the place looked for again,
 // in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
@@ -98,9 +90,6 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 
-@lastLanesFromFar
-+!searchFromMemory : lastFromFar & lastOne & not lastLanes
-    <- +lastLanes; .abolish(sweep(_)); -searching; !searchFromMemory.
 @recallNearest
 +!searchFromMemory : seenCylinder(_, _)
     <- if (not sweep([_ | _])) { !planSweep }; +searching; !lookAgain.
