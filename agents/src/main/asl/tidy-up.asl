@@ -9,7 +9,7 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85).
 !start.
 // trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
-// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)
+// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle, one by the pile stored (knocked-aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
@@ -26,12 +26,13 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
 
-// after each delivery and each recharge: is every cylinder stored? If not, a look around first
+// after each delivery and each recharge (a look around first if not), and a cylinder counted by the pile: every one stored?
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.
+@doneByPile +countedByPile <- !parkIfDone.
 // parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
-+!parkIfDone : stored(N) & cylinders(N) & not charging
++!parkIfDone : storedOrByPile(N) & cylinders(N) & not charging
     <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; !goToCharger;
        stopAcquireDistance; .print("Parked on the charger").
 // not done: look for the rest, where a cylinder was seen first (search-memory)
