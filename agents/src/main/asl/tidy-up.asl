@@ -26,10 +26,9 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
 
-// after each delivery and each recharge (a look around first if not), and a cylinder counted by the pile: every one stored?
+// after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.
-@doneByPile +countedByPile <- !parkIfDone.
 // parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
 +!parkIfDone : storedOrByPile(N) & cylinders(N) & not charging

@@ -32,4 +32,4 @@ mock_operation(_, ok).
        !assert_false(fetchedByPile); // counted: a pick far from the storage area is another cylinder
        -+location(0.4, 0, -0.2);     // 0.2 m from the storage point: one picked there is that one
        !assert_true(fetchedByPile);
-       -lostByPile(_); -countedByPile; -+knockCounted(30000); -orientation(_); -stored(_); -+location(0, 0, 0).
+       -lostByPile(_); -+knockCounted(30000); -orientation(_); -stored(_); -+location(0, 0, 0).

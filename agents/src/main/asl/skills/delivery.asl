@@ -81,7 +81,7 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
 
 @deliverPicked
 +!go_ahead : picked(true)
-    <- println("Cylinder picked up"); -picking; if (fetchedByPile) { -lostByPile(_); -countedByPile }; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
+    <- println("Cylinder picked up"); -picking; if (fetchedByPile) { -lostByPile(_) }; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
 
 @moveWhileDelivering +!move(N) : delivering <- .wait("-~delivered"); .print("Delivered!"); !move(N).
 
