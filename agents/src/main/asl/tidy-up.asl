@@ -9,7 +9,7 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85).
 !start.
 // trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
-// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle, one by the pile stored (knocked-aside)
+// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
@@ -31,7 +31,7 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 @doneRecharging -charging <- +lookFirst; !parkIfDone.
 // parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
-+!parkIfDone : storedOrByPile(N) & cylinders(N) & not charging
++!parkIfDone : stored(N) & cylinders(N) & not charging
     <- .print("All ", N, " cylinders stored: parking on the charger"); +charging; !goToCharger;
        stopAcquireDistance; .print("Parked on the charger").
 // not done: look for the rest, where a cylinder was seen first (search-memory)

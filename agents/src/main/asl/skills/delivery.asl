@@ -81,19 +81,18 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
 
 @deliverPicked
 +!go_ahead : picked(true)
-    <- println("Cylinder picked up"); -picking; if (fetchedByPile) { -lostByPile(_) }; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
+    <- println("Cylinder picked up"); -picking; +~delivered; +delivering; !found; -+detours(0); !computeGap; !balance; !!steer.
 
 @moveWhileDelivering +!move(N) : delivering <- .wait("-~delivered"); .print("Delivered!"); !move(N).
 
 // Recovery, not in the thesis: the thesis stops for good ("stopAcquire; stop"); the robot drops
 // everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again);
 // a skill's beliefs to forget then are its forgetOnFall(B) beliefs (suspension: charging; way-round: a following);
-// with knocked-aside's fallenNearStorage (tidy-up's) a fall by the storage area is noted as a knock there too,
-// and its fallenByPile one by the pile (lostByPile), forgotten at a pick its fetchedByPile says was of that cylinder.
+// with knocked-aside's fallenNearStorage (tidy-up's) a fall by the storage area is noted as a knock there too.
 @fallCylinder[atomic]
 +fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;
-       if (fallenNearStorage) { .system_time(Tf); -+fellNearStorageAt(Tf); -+knockedAt(Tf); if (fallenByPile) { -+lostByPile(Tf) } };
+       if (fallenNearStorage) { .system_time(Tf); -+fellNearStorageAt(Tf); -+knockedAt(Tf) };
        -delivering; -picking; -avoiding; -insideArea; -firstTime; -~delivered; -+reachCylinder(false);
        for (forgetOnFall(B)) { .abolish(B) }; restartAcquireDistance; ?ray(R); setThreshold(R);
        ?storagePoint(Sx, Sz); -+targetPoint(Sx, Sz); setUpTargetPoint(Sx, 0, Sz);

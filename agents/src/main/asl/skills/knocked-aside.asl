@@ -10,13 +10,10 @@ knockedTurn(14000).   // ms the turn lasts at most: a full turn at a quarter spe
 knockFetch(20000).    // ms after a fall by the storage area that picking is allowed there (not in the thesis):
                       // the turn to it and picking's slow approach (a window of 10 s ended 0.2 s after the pick)
 knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall counts as by the storage area
-knockCounted(30000).  // ms after a fall by the pile, no cylinder picked, that it counts as in the pile: the fetch's
-                      // 20 s and a pick begun as they end (world 174 × 1: picked 20.3 s after the fall, 0.19 m away)
 // Reads: lostBeside (search-memory's, added when a delivery ends outside the storage area), gripPoint (search-memory's: the gripper's point ahead of the robot); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D), location, orientation (the middleware's); storagePoint(X, Z),
-// storageRadius(R) (the world's); stored(N), storageClearance(C) (delivery).
-// Rules it offers: storedOrByPile(N) (the end condition's count: tidy-up's @park), fallenByPile, fetchedByPile (delivery's).
-// Beliefs: knockedAt(T); lostByPile(T) (noted by delivery's fall plan, forgotten by its pick plan); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
+// storageRadius(R) (the world's); stored(N) (delivery).
+// Beliefs: knockedAt(T); avoiding (avoidance's: every move, avoidance and far sight wait meanwhile).
 // Needs: search-memory (@backOffFirst), avoidance. Include it before avoidance (its obstacle plans come after).
 
 @knockedBeside +lostBeside <- .system_time(T); -+knockedAt(T).
@@ -46,19 +43,3 @@ fallenNearStorage :- knockFetchWithin(M) & storageWithin(M).
 fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W & not pileAhead.
 pileAhead :- stored(N) & N > 0 & gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & storageRadius(R)
     & (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz) < R * R.
-
-// A cylinder knocked out with the gripper's point within the storage clearance lies by the pile, where far sight
-// signals none and no pick is allowed but the fetch's. Not picked again within knockCounted, it counts with the
-// stored ones at the next look whether all are stored (countedByPile): the camera cannot count the pile (its
-// cylinders side by side are one wide red run, search-memory's towardsStored), so the robot's own record of the
-// fall stands for a look at it. Tidy-up world 202 × 8: knocked out 0.1 m from the storage point, pushed into the
-// area by the next deliveries, and searched for from 377 s to the end. Any pick before the count, or by the
-// storage area after it, was of that cylinder. (A plan that waited knockCounted and then looked whether all were
-// stored changed the fetch: world 174 lost it on 8 of 8 seeds.)
-fallenByPile :- gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & storageClearance(C)
-    & (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz) < C * C.
-countedByPile :- lostByPile(T0) & knockCounted(W) & .system_time(T) & T - T0 >= W.
-fetchedByPile :- lostByPile(_) & not countedByPile.
-fetchedByPile :- countedByPile & fallenNearStorage.
-storedOrByPile(M) :- stored(N) & countedByPile & M = N + 1.
-storedOrByPile(N) :- stored(N) & not countedByPile.
