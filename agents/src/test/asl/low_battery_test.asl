@@ -97,6 +97,29 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        -lowBattery; -+stored(0); -cylinders(2); -~delivered; -deliverFirst(300).
 
+// a delivery that went on first keeps on while the battery less deliverOn's reserve covers the way
+// via the storage point to the charger (a drain has come); under it, the trip
+@[test]
++!test_a_delivery_that_went_on_first_keeps_on_after_a_drain_under_the_smaller_reserve
+    <- !until(not charging, 10000); +deliverFirst(300); +deliverOn(50); +~delivered; -+lastFound(1); !forget_calls;
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.3); -+battery(470);   // 1.27 m: 64 J
+       !!perceive(lowBattery); .wait(300);
+       !assert_false(charging);
+       !assert_true(deliveringFirst(1));                            // picked at 1
+       -lowBattery; -+battery(200); !!perceive(lowBattery); .wait(300);   // a drain: 150 J over 50 cover it
+       !assert_false(charging);
+       !assert_false(mock_called(mark));
+       -lowBattery; -+battery(100); !!perceive(lowBattery);              // 50 J over it do not
+       !until(.intend(reachCharger), 10000);
+       !assert_true(charging);
+       -targetReached; !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -charged; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       -lowBattery; -~delivered; -deliverOn(50); -deliverFirst(300); .abolish(deliveringFirst(_)).
+
 // a task that ends at a known time (tidy-up) makes no trip while the battery covers the time left
 // at full power (2.5 W): 470 J cover 100 s, not 300 s
 @[test]
