@@ -148,11 +148,11 @@ mock_operation(_, ok).
     <- -homing(_); -myClaim(_); !forget_calls; -+picked(false);
        +mock_operation(release(3), ok);   // (an earlier test's abolish of claimAlong's mocks took the catch-all)
        +myClaim(3);
-       !releaseClaim(3);
+       !releaseClaim(3, test);
        !until(mock_called(release(3)), 1000);
        !assert_true(mock_called(release(3)));
        !forget_calls;
-       !releaseClaim(3); .wait(100);
+       !releaseClaim(3, test); .wait(100);
        !assert_false(mock_called(release(_)));
        !assert_false(myClaim(3)).
 

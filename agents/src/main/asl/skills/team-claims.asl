@@ -87,12 +87,17 @@ lateralOff(Off) :- carrierInSight(Off).
        if (not claimRefused) { !homeOn(Off, Dist) }.
 
 // the board gives the same claim back for a disc that overlaps the caller's own; another is a new cylinder
-@claim +!claim(Cx, Cz, R, Fx, Fz) <- claimAlong(Cx, Cz, R, Fx, Fz, Id); !dropOtherClaim(Id); -+myClaim(Id).
+@claim +!claim(Cx, Cz, R, Fx, Fz) <- claimAlong(Cx, Cz, R, Fx, Fz, Id); !dropOtherClaim(Id); !noteClaim(Id, Cx, Cz, R); -+myClaim(Id).
+// a claim made is logged with its place (a renewal of the robot's claim is not)
+@noteNewClaim +!noteClaim(Id, Cx, Cz, R) : not myClaim(Id) & roundedTo(Cx, X) & roundedTo(Cz, Z) & roundedTo(R, Rr)
+    <- .print("Claim ", Id, " made at (", X, ", ", Z, ") r ", Rr).
+@noteRenewedClaim +!noteClaim(_, _, _, _).
+roundedTo(V, R) :- R = math.round(V * 100) / 100.
 @claimedByOther
 -!claim(_, _, _, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
 @claimFailed -!claim(_, _, _, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
-@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
+@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old, another(Id)).
 @keepClaim +!dropOtherClaim(_).
 
 // the claim's place near and ahead, where far sight shows a cylinder (within 20 degrees, 0.1-0.8 m)
@@ -145,8 +150,17 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
--homing(_) : myClaim(Id) & not picked(true) & not picking <- !releaseClaim(Id); .print("Claim ", Id, " released").
-@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id).
+-homing(_) : myClaim(Id) & not picked(true) & not picking & .findall(W, unsoughtWhy(W), Why) <- !releaseClaim(Id, homingOver(Why)).
+@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id, charging).
+// why a homing's end did not seek its claim again (@seekLostClaim): the release's reasons in the log
+unsoughtWhy(alone) :- not teamSearch.
+unsoughtWhy(notSearching) :- not searching.
+unsoughtWhy(charging) :- charging.
+unsoughtWhy(inSight) :- lastSighted(S) & .system_time(T) & T - S < 1500.
+unsoughtWhy(byStorage) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & not awayFromStorage(Cx, Cz).
+unsoughtWhy(teammateByRobot) :- location(X, _, Z) & teammateWithin(X, Z, 0.5).
+unsoughtWhy(teammateByClaim) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & teammateWithin(Cx, Cz, 0.5).
+unsoughtWhy(ignoring) :- ignoring.
 
 // the claim sought again: a homing (the same cylinder claimed again, or another) ends the seek
 @seekEndsHoming +homing(_) : seekingClaim(_, _, _, _) <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)).
@@ -162,13 +176,17 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
 @endSeek
 +!endSeek : seekingClaim(Id, _, _, _)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_));
-       if (myClaim(Id)) { !releaseClaim(Id); .print("Claim ", Id, " released: not found again") }.
+       if (myClaim(Id)) { !releaseClaim(Id, notFoundAgain) }.
 @endSeekNone +!endSeek <- .abolish(claimViewedSince(_)).
 
 // the belief goes first: a claim the board has voided meanwhile (another robot took its cylinder)
 // is not this robot's any more, and no later claim must fail on releasing it. A claim is released
 // once: a homing given up as the battery runs low had both release it (-homing, +charging), and the
 // second release failed inside the recharge trip's atomic start (team world 80, two robots, seed 2)
-@releaseClaim +!releaseClaim(Id) : myClaim(Id) <- -myClaim(Id); release(Id).
-@claimReleasedAlready +!releaseClaim(_).
-@claimGoneAlready -!releaseClaim(_).
+// the release is logged with its reason and the claim's place
+@releaseClaim
++!releaseClaim(Id, Why) : myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & roundedTo(Cx, X) & roundedTo(Cz, Z)
+    <- -myClaim(Id); release(Id); .print("Claim ", Id, " released (", Why, ") at (", X, ", ", Z, ")").
+@releaseClaimUnseen +!releaseClaim(Id, Why) : myClaim(Id) <- -myClaim(Id); release(Id); .print("Claim ", Id, " released (", Why, ")").
+@claimReleasedAlready +!releaseClaim(_, _).
+@claimGoneAlready -!releaseClaim(_, _).
