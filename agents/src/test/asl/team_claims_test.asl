@@ -195,6 +195,28 @@ mock_operation(_, ok).
        !assert_true(waypoint(0.3, -0.2, _));                     // on with the team's search
        -searching; -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _); .abolish(waypoint(_, _, _)).
 
+// a teammate beside the robot (not by the claim's place) does not end the claim lost from sight: the
+// robot seeks it again (released at once, its cylinder was left: team tuning worlds 3 and 11, four
+// robots, 22 of 38 releases); one by the claim's place does
+@[test]
++!test_with_a_teammate_beside_the_robot_a_claim_lost_from_sight_is_sought_again
+    <- -homing(_); -myClaim(_); -+picked(false); !forget_calls; .my_name(Me);
+       -+location(0.1, 0, 0.2); +robotAt(khepera4, 0.3, 0.0); +searching; +mock_operation(release(3), ok);
+       +myClaim(3); +claimed(3, Me, 0.1, 0.7, 0.1);
+       .system_time(T); -+lastSighted(T - 3000); +homing(T - 5000);
+       -homing(_);                                               // lost from sight, the teammate 0.28 m away
+       !until(seekingClaim(3, _, _, _), 5000);
+       !assert_true(seekingClaim(3, _, _, _));
+       !assert_false(mock_called(release(_)));
+       !endSeek; !forget_calls; .abolish(waypoint(_, _, _));
+       -robotAt(khepera4, _, _); +robotAt(khepera4, 0.2, 0.5);   // 0.22 m from the claim's place
+       +myClaim(3); .system_time(T2); -+lastSighted(T2 - 3000); +homing(T2 - 5000);
+       -homing(_);
+       !until(mock_called(release(3)), 5000);
+       !assert_true(mock_called(release(3)));
+       !assert_false(seekingClaim(_, _, _, _));
+       -searching; -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _); .abolish(waypoint(_, _, _)).
+
 // with a teammate, a red side of the image is not reached for while homing (far sight steers to its
 // cylinder) nor in the line of the stored pile; alone, picking's reach turns to it
 @[test]

@@ -145,7 +145,7 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
 @seekLostClaim
 -homing(_) : teamSearch & searching & myClaim(Id) & not picked(true) & not picking & not charging
     & lastSighted(S) & .system_time(T) & T - S >= 1500 & .my_name(Me) & claimed(Id, Me, Cx, Cz, _)
-    & awayFromStorage(Cx, Cz) & location(X, _, Z) & not teammateWithin(X, Z, 0.5) & not teammateWithin(Cx, Cz, 0.5)
+    & awayFromStorage(Cx, Cz) & not teammateWithin(Cx, Cz, 0.5)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)); +seekingClaim(Id, Cx, Cz, T);
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
@@ -158,7 +158,6 @@ unsoughtWhy(notSearching) :- not searching.
 unsoughtWhy(charging) :- charging.
 unsoughtWhy(inSight) :- lastSighted(S) & .system_time(T) & T - S < 1500.
 unsoughtWhy(byStorage) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & not awayFromStorage(Cx, Cz).
-unsoughtWhy(teammateByRobot) :- location(X, _, Z) & teammateWithin(X, Z, 0.5).
 unsoughtWhy(teammateByClaim) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & teammateWithin(Cx, Cz, 0.5).
 unsoughtWhy(ignoring) :- ignoring.
 
