@@ -87,12 +87,7 @@ lateralOff(Off) :- carrierInSight(Off).
        if (not claimRefused) { !homeOn(Off, Dist) }.
 
 // the board gives the same claim back for a disc that overlaps the caller's own; another is a new cylinder
-@claim +!claim(Cx, Cz, R, Fx, Fz) <- claimAlong(Cx, Cz, R, Fx, Fz, Id); !dropOtherClaim(Id); !noteClaim(Id, Cx, Cz, R); -+myClaim(Id).
-// a claim made is logged with its place (a renewal of the robot's claim is not)
-@noteNewClaim +!noteClaim(Id, Cx, Cz, R) : not myClaim(Id) & roundedTo(Cx, X) & roundedTo(Cz, Z) & roundedTo(R, Rr)
-    <- .print("Claim ", Id, " made at (", X, ", ", Z, ") r ", Rr).
-@noteRenewedClaim +!noteClaim(_, _, _, _).
-roundedTo(V, R) :- R = math.round(V * 100) / 100.
+@claim +!claim(Cx, Cz, R, Fx, Fz) <- claimAlong(Cx, Cz, R, Fx, Fz, Id); !dropOtherClaim(Id); -+myClaim(Id).
 @claimedByOther
 -!claim(_, _, _, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
 @claimFailed -!claim(_, _, _, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
@@ -145,21 +140,23 @@ heldAt(Hx, Hz) :- location(X, _, Z) & orientation(O) & gripReach(G) & A = O * ma
 @seekLostClaim
 -homing(_) : teamSearch & searching & myClaim(Id) & not picked(true) & not picking & not charging
     & lastSighted(S) & .system_time(T) & T - S >= 1500 & .my_name(Me) & claimed(Id, Me, Cx, Cz, _)
-    & awayFromStorage(Cx, Cz) & not teammateWithin(Cx, Cz, 0.5)
+    & awayFromStorage(Cx, Cz) & location(X, _, Z) & not teammateWithin(X, Z, 0.5) & not teammateWithin(Cx, Cz, 0.5)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)); +seekingClaim(Id, Cx, Cz, T);
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
--homing(_) : myClaim(Id) & not picked(true) & not picking & .findall(W, unsoughtWhy(W), Why) <- !releaseClaim(Id, homingOver(Why)).
+-homing(_) : myClaim(Id) & not picked(true) & not picking & .findall(W, unsoughtWhy(W), Why)
+    <- !releaseClaim(Id, homingOver(Why)); .print("Claim ", Id, " released").
 @releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id, charging).
-// why a homing's end did not seek its claim again (@seekLostClaim): the release's reasons in the log
+// why a homing's end did not seek its claim again (@seekLostClaim's conditions that failed), for the
+// board's log of the release
 unsoughtWhy(alone) :- not teamSearch.
 unsoughtWhy(notSearching) :- not searching.
 unsoughtWhy(charging) :- charging.
 unsoughtWhy(inSight) :- lastSighted(S) & .system_time(T) & T - S < 1500.
 unsoughtWhy(byStorage) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & not awayFromStorage(Cx, Cz).
+unsoughtWhy(teammateByRobot) :- location(X, _, Z) & teammateWithin(X, Z, 0.5).
 unsoughtWhy(teammateByClaim) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & teammateWithin(Cx, Cz, 0.5).
-unsoughtWhy(ignoring) :- ignoring.
 
 // the claim sought again: a homing (the same cylinder claimed again, or another) ends the seek
 @seekEndsHoming +homing(_) : seekingClaim(_, _, _, _) <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)).
@@ -175,17 +172,16 @@ unsoughtWhy(ignoring) :- ignoring.
 @endSeek
 +!endSeek : seekingClaim(Id, _, _, _)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_));
-       if (myClaim(Id)) { !releaseClaim(Id, notFoundAgain) }.
+       if (myClaim(Id)) { !releaseClaim(Id, notFoundAgain); .print("Claim ", Id, " released: not found again") }.
 @endSeekNone +!endSeek <- .abolish(claimViewedSince(_)).
 
 // the belief goes first: a claim the board has voided meanwhile (another robot took its cylinder)
 // is not this robot's any more, and no later claim must fail on releasing it. A claim is released
 // once: a homing given up as the battery runs low had both release it (-homing, +charging), and the
 // second release failed inside the recharge trip's atomic start (team world 80, two robots, seed 2)
-// the release is logged with its reason and the claim's place
-@releaseClaim
-+!releaseClaim(Id, Why) : myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & roundedTo(Cx, X) & roundedTo(Cz, Z)
-    <- -myClaim(Id); release(Id); .print("Claim ", Id, " released (", Why, ") at (", X, ", ", Z, ")").
-@releaseClaimUnseen +!releaseClaim(Id, Why) : myClaim(Id) <- -myClaim(Id); release(Id); .print("Claim ", Id, " released (", Why, ")").
+// the reason goes to the board, which logs the release with it and the claim's place: another(New)
+// (a new claim), homingOver(Why) (the homing ended, not sought again: unsoughtWhy), notFoundAgain
+// (sought again), charging
+@releaseClaim +!releaseClaim(Id, Why) : myClaim(Id) <- -myClaim(Id); release(Id, Why).
 @claimReleasedAlready +!releaseClaim(_, _).
 @claimGoneAlready -!releaseClaim(_, _).
