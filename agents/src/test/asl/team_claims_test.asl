@@ -195,22 +195,6 @@ mock_operation(_, ok).
        !assert_true(waypoint(0.3, -0.2, _));                     // on with the team's search
        -searching; -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _); .abolish(waypoint(_, _, _)).
 
-// a claim sought again (lost from sight) and left for another is a spot on the team's search map;
-// one left while homing is not
-@[test]
-+!test_with_a_teammate_a_sought_claim_left_for_another_is_a_spot
-    <- -homing(_); -myClaim(_); -+picked(false); !forget_calls; .my_name(Me);
-       +robotAt(khepera4, -0.3, -0.3); +mock_operation(release(3, _), ok); +mock_operation(spotted(_, _), ok);
-       +myClaim(3); +claimed(3, Me, 0.1, 0.7, 0.1); .system_time(T); +seekingClaim(3, 0.1, 0.7, T);
-       !dropOtherClaim(4);
-       !assert_true(mock_called(spotted(0.1, 0.7)));
-       !assert_true(mock_called(release(3, another(4))));
-       .abolish(seekingClaim(_, _, _, _)); !forget_calls;
-       +myClaim(3); !dropOtherClaim(4);                          // homing on it, not seeking
-       !assert_false(mock_called(spotted(_, _)));
-       !assert_true(mock_called(release(3, another(4))));
-       -claimed(3, Me, _, _, _); -robotAt(khepera4, _, _).
-
 // with a teammate, a red side of the image is not reached for while homing (far sight steers to its
 // cylinder) nor in the line of the stored pile; alone, picking's reach turns to it
 @[test]

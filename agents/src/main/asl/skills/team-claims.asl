@@ -92,14 +92,6 @@ lateralOff(Off) :- carrierInSight(Off).
 -!claim(_, _, _, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
 @claimFailed -!claim(_, _, _, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
-// Not in the thesis: a claim left for another while its robot sought it again (lost from sight) is a
-// spot on the team's search map (team-search: a robot with no cylinder goes there first), not by the
-// storage area: 60 of 92 claims left for another were so (four robots, team tuning worlds 1-24), and
-// of the cylinders never grasped most had been claimed and released
-@dropSoughtClaim
-+!dropOtherClaim(Id) : myClaim(Old) & Old \== Id & seekingClaim(Old, _, _, _) & teamSearch & .my_name(Me)
-    & claimed(Old, Me, Cx, Cz, _) & awayFromStorage(Cx, Cz)
-    <- spotted(Cx, Cz); !releaseClaim(Old, another(Id)).
 @dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old, another(Id)).
 @keepClaim +!dropOtherClaim(_).
 
