@@ -186,6 +186,36 @@ mock_operation(_, ok).
        !assert_true(mock_called(setSpeeds(100, 100)));
        !assert_false(escaped).
 
+// in the area nothing steers: come in a few degrees off, the robot missed the point and slid along
+// the wall beside it, never stuck; areaLimit after coming in without the put-down, it turns to the
+// storage point again and goes on (and again after another areaLimit)
+@[test]
++!test_no_put_down_soon_after_entering_the_area_heads_for_the_storage_point
+    <- !forget_calls; -+areaLimit(300); -+orientation(90); +delivering; +firstTime;
+       !!perceive(noAccess);
+       !until(insideArea, 2000);
+       .wait(100);
+       !assert_false(mock_called(computeAngle(_, _, 0.4, -0.4, _)));   // not yet
+       !until(mock_called(computeAngle(_, _, 0.4, -0.4, _)), 2000);
+       !assert_true(mock_called(computeAngle(_, _, 0.4, -0.4, _)));
+       !until(mock_called(setSpeeds(100, 100)), 2000);
+       !assert_true(mock_called(setSpeeds(100, 100)));
+       !forget_calls;
+       !until(mock_called(computeAngle(_, _, 0.4, -0.4, _)), 2000);
+       !assert_true(mock_called(computeAngle(_, _, 0.4, -0.4, _)));    // again
+       -noAccess; -insideArea; -delivering; .wait(400); -+areaLimit(10000).
+
+// put down in time, the watch does nothing
+@[test]
++!test_a_put_down_in_time_ends_the_area_watch
+    <- !forget_calls; -+areaLimit(300); -+orientation(90); +delivering; +firstTime;
+       !!perceive(noAccess);
+       !until(insideArea, 2000);
+       -insideArea; -delivering;                                        // put down, out
+       .wait(500);
+       -noAccess; -+areaLimit(10000);
+       !assert_false(mock_called(computeAngle(_, _, 0.4, -0.4, _))).
+
 @[test]
 +!test_random_motion_waits_while_delivering
     <- -moved(_); +delivering; +~delivered;

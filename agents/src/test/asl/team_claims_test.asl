@@ -146,14 +146,14 @@ mock_operation(_, ok).
 @[test]
 +!test_a_claim_is_released_once
     <- -homing(_); -myClaim(_); !forget_calls; -+picked(false);
-       +mock_operation(release(3), ok);   // (an earlier test's abolish of claimAlong's mocks took the catch-all)
+       +mock_operation(release(3, _), ok);   // (an earlier test's abolish of claimAlong's mocks took the catch-all)
        +myClaim(3);
-       !releaseClaim(3);
-       !until(mock_called(release(3)), 1000);
-       !assert_true(mock_called(release(3)));
+       !releaseClaim(3, test);
+       !until(mock_called(release(3, _)), 1000);
+       !assert_true(mock_called(release(3, _)));
        !forget_calls;
-       !releaseClaim(3); .wait(100);
-       !assert_false(mock_called(release(_)));
+       !releaseClaim(3, test); .wait(100);
+       !assert_false(mock_called(release(_, _)));
        !assert_false(myClaim(3)).
 
 // with a teammate, the cylinder is taken once the gripper holds it, before it is picked up; let go
@@ -179,7 +179,7 @@ mock_operation(_, ok).
 @[test]
 +!test_with_a_teammate_a_claim_lost_from_sight_is_sought_again_then_released
     <- -homing(_); -myClaim(_); -+picked(false); !forget_calls; .my_name(Me);
-       +robotAt(khepera4, -0.3, -0.3); +searching; +mock_operation(release(3), ok);
+       +robotAt(khepera4, -0.3, -0.3); +searching; +mock_operation(release(3, _), ok);
        +mock_operation(searchFrom(_, _, 0.3, -0.2), ok);
        +myClaim(3); +claimed(3, Me, 0.1, 0.7, 0.1);
        .system_time(T); -+lastSighted(T - 3000); +homing(T - 5000);
@@ -187,9 +187,9 @@ mock_operation(_, ok).
        !until(seekingClaim(3, _, _, _), 5000);
        !assert_true(waypoint(0.1, 0.7, _));                      // back to the claim's place
        !assert_true(myClaim(3));
-       !assert_false(mock_called(release(_)));
+       !assert_false(mock_called(release(_, _)));
        !nextWaypoint;                                            // reached, skipped or escaped
-       !assert_true(mock_called(release(3)));
+       !assert_true(mock_called(release(3, notFoundAgain)));     // the board logs the reason
        !assert_false(myClaim(3));
        !assert_false(seekingClaim(_, _, _, _));
        !assert_true(waypoint(0.3, -0.2, _));                     // on with the team's search

@@ -92,7 +92,7 @@ lateralOff(Off) :- carrierInSight(Off).
 -!claim(_, _, _, _, _)[env_failure_reason(claimed_by(Other, _))] <- +claimRefused; .print("That cylinder is ", Other, "'s: looking elsewhere").
 @claimFailed -!claim(_, _, _, _, _)[error_msg(M)] <- +claimRefused; .print("claim failed: ", M).
 
-@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old).
+@dropOtherClaim +!dropOtherClaim(Id) : myClaim(Old) & Old \== Id <- !releaseClaim(Old, another(Id)).
 @keepClaim +!dropOtherClaim(_).
 
 // the claim's place near and ahead, where far sight shows a cylinder (within 20 degrees, 0.1-0.8 m)
@@ -141,8 +141,18 @@ claimPlaceInView(Cx, Cz) :- location(X, _, Z) & orientation(O) & Dx = Cx - X & D
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
 @releaseOnGiveUp
--homing(_) : myClaim(Id) & not picked(true) & not picking <- !releaseClaim(Id); .print("Claim ", Id, " released").
-@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id).
+-homing(_) : myClaim(Id) & not picked(true) & not picking & .findall(W, unsoughtWhy(W), Why)
+    <- !releaseClaim(Id, homingOver(Why)); .print("Claim ", Id, " released").
+@releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id, charging).
+// why a homing's end did not seek its claim again (@seekLostClaim's conditions that failed), for the
+// board's log of the release
+unsoughtWhy(alone) :- not teamSearch.
+unsoughtWhy(notSearching) :- not searching.
+unsoughtWhy(charging) :- charging.
+unsoughtWhy(inSight) :- lastSighted(S) & .system_time(T) & T - S < 1500.
+unsoughtWhy(byStorage) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & not awayFromStorage(Cx, Cz).
+unsoughtWhy(teammateByRobot) :- location(X, _, Z) & teammateWithin(X, Z, 0.5).
+unsoughtWhy(teammateByClaim) :- myClaim(Id) & .my_name(Me) & claimed(Id, Me, Cx, Cz, _) & teammateWithin(Cx, Cz, 0.5).
 
 // the claim sought again: a homing (the same cylinder claimed again, or another) ends the seek
 @seekEndsHoming +homing(_) : seekingClaim(_, _, _, _) <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)).
@@ -158,13 +168,16 @@ claimPlaceInView(Cx, Cz) :- location(X, _, Z) & orientation(O) & Dx = Cx - X & D
 @endSeek
 +!endSeek : seekingClaim(Id, _, _, _)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_));
-       if (myClaim(Id)) { !releaseClaim(Id); .print("Claim ", Id, " released: not found again") }.
+       if (myClaim(Id)) { !releaseClaim(Id, notFoundAgain); .print("Claim ", Id, " released: not found again") }.
 @endSeekNone +!endSeek <- .abolish(claimViewedSince(_)).
 
 // the belief goes first: a claim the board has voided meanwhile (another robot took its cylinder)
 // is not this robot's any more, and no later claim must fail on releasing it. A claim is released
 // once: a homing given up as the battery runs low had both release it (-homing, +charging), and the
 // second release failed inside the recharge trip's atomic start (team world 80, two robots, seed 2)
-@releaseClaim +!releaseClaim(Id) : myClaim(Id) <- -myClaim(Id); release(Id).
-@claimReleasedAlready +!releaseClaim(_).
-@claimGoneAlready -!releaseClaim(_).
+// the reason goes to the board, which logs the release with it and the claim's place: another(New)
+// (a new claim), homingOver(Why) (the homing ended, not sought again: unsoughtWhy), notFoundAgain
+// (sought again), charging
+@releaseClaim +!releaseClaim(Id, Why) : myClaim(Id) <- -myClaim(Id); release(Id, Why).
+@claimReleasedAlready +!releaseClaim(_, _).
+@claimGoneAlready -!releaseClaim(_, _).

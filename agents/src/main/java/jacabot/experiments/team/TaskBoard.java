@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
@@ -34,8 +35,10 @@ import java.util.Set;
  * the disc's radius), and {@code completed(N)}, the team's deliveries. Operations:
  * {@code claim(X, Z, R, ?Id)}, {@code claim(X, Z)} and {@code claim(X, Z, ?Id)} (R half the
  * board's radius), {@code claimAlong(X, Z, R, ToX, ToZ, ?Id)} (a sighting's disc swept on along its
- * bearing: the board tests the whole shape, the property shows the disc), {@code take(X, Z, ?Id)}, {@code putDown(X, Z)}, {@code release(Id)},
- * {@code complete(Id)}, {@code releaseAll}. Every operation is one artifact step: the test and
+ * bearing: the board tests the whole shape, the property shows the disc), {@code take(X, Z, ?Id)}, {@code putDown(X, Z)}, {@code release(Id)} and
+ * {@code release(Id, Why)} (why: the agent's reason, logged),
+ * {@code complete(Id)}, {@code releaseAll}. The board logs every claim made (its place and
+ * radius), every release (its place and reason) and every claim voided by a take. Every operation is one artifact step: the test and
  * the claim are one, so two agents can never hold overlapping claims, however their calls
  * interleave. An agent that leaves the workspace (its process ended) loses its claims:
  * {@link #agentLeft} frees them and signals {@code claimsFreed(Agent, N)}.
@@ -268,6 +271,9 @@ public class TaskBoard extends Artifact {
             if (there && c.agent().equals(me) && kept == null) {
                 kept = c;
             } else if (c.agent().equals(me) || there && !carried.contains(c.id())) {
+                if (!c.agent().equals(me)) {
+                    log(c.agent().name() + "'s claim " + c.id() + " at " + place(c) + " void: " + me.name() + " took the cylinder");
+                }
                 drop(c);
             }
         }
@@ -301,7 +307,18 @@ public class TaskBoard extends Artifact {
     /** Gives up the caller's claim {@code id}: another agent may claim that cylinder now. */
     @OPERATION
     void release(int id) {
-        drop(owned(id));
+        release(id, "no reason given");
+    }
+
+    /**
+     * Gives up the caller's claim {@code id}, and logs its place and {@code why} (the agent's
+     * reason, any term), so that a run's console says where each claim ended and why.
+     */
+    @OPERATION
+    void release(int id, Object why) {
+        Claim c = owned(id);
+        log(c.agent().name() + " releases claim " + id + " at " + place(c) + ": " + why);
+        drop(c);
     }
 
     /** The caller's claim {@code id} is done (its cylinder delivered): the claim goes, {@code completed} counts it. */
@@ -345,7 +362,13 @@ public class TaskBoard extends Artifact {
         int next = ++lastId;
         Claim c = new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r));
         claims.put(next, c);
+        log(agent.name() + " claims " + next + " at " + place(c) + " r " + String.format(Locale.ROOT, "%.2f", r));
         return c;
+    }
+
+    /** {@return a claim's place for the log, to the centimetre} */
+    private static String place(Claim c) {
+        return String.format(Locale.ROOT, "(%.2f, %.2f)", c.x(), c.z());
     }
 
     private void publishStorage() {

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.cartago.AgentId;
 import jacabot.cartago.CartagoException;
+import jacabot.cartago.CartagoLogger;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.cartago.OpOutcome;
 import jacabot.cartago.Workspace;
@@ -49,6 +50,35 @@ class TaskBoardTest {
             assertEquals(1, claim(ws, a, 0.31, 0.21), "a's own claim again: the same id, a newer place");
             assertEquals(List.of(List.of(1, a, 0.31, 0.21, 0.05), List.of(2, b, 0.45, 0.20, 0.05)), sees.values("claimed"));
             assertEquals(List.of(List.of(0)), sees.values("completed"));
+        }
+    }
+
+    @Test
+    void theBoardLogsEachClaimItsReleaseWithTheReasonAndAVoidedClaim() throws CartagoException {
+        List<String> lines = new ArrayList<>();
+        CartagoLogger logger = new CartagoLogger() {
+            @Override
+            public void info(String source, String message) {
+                lines.add(source + ": " + message);
+            }
+
+            @Override
+            public void warning(String source, String message, Throwable cause) {
+                lines.add(source + " warning: " + message);
+            }
+        };
+        try (Workspace ws = Workspace.builder("team").logger(logger).build()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            int id = claim(ws, a, 0.3, -0.2, 0.25);
+            ok(ws, a, "board", "release", id, "notFoundAgain");
+            claim(ws, a, 1.0, 1.0, 0.1);
+            ok(ws, b, "board", "take", 1.0, 1.0, new OpFeedbackParam<Integer>());
+            assertEquals(List.of("board: a claims 1 at (0.30, -0.20) r 0.25",
+                    "board: a releases claim 1 at (0.30, -0.20): notFoundAgain",
+                    "board: a claims 2 at (1.00, 1.00) r 0.10",
+                    "board: a's claim 2 at (1.00, 1.00) void: b took the cylinder",
+                    "board: b claims 3 at (1.00, 1.00) r 0.20"), lines);
         }
     }
 
