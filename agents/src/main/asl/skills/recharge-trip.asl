@@ -41,6 +41,9 @@ markedDistance(D) :- targetPoint(Tx, Tz) & distanceTo(Tx, Tz, D).
 storageNearer :- location(X, _, Z) & storagePoint(Sx, Sz) & charger(Cx, Cz)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz).
 lastToStore :- cylinders(M) & stored(N) & N + 1 >= M.
+// a delivery under way (or a knocked cylinder's fetch) goes on before a trip: the storage point nearer
+// or the last cylinder to store, and the battery less R covers the way (deliverFirst's and deliverOn's)
+deliveryGoesOn(R) :- (~delivered | fetchingKnocked) & not charging & (storageNearer | lastToStore) & wayCovered(R).
 // taskEnd: the battery covers the task's time left, the wheels at full speed all along, or at the
 // agent's own meanPower(W): tidy-up's wheels are at full speed part of the time only (1.7-1.8 W on
 // the whole), and a second trip the full-speed sum forced late in the run (370-494 s, 15 of 80
@@ -85,12 +88,12 @@ forgetOnFall(atCharger).
 // 3.6 m away and back, delivered at 257-272 s, and 5 of 8 runs ended late)
 @rechargeNotNeeded +lowBattery : not charging & .system_time(T) & batteryLasts(T).
 @rechargeAfterDeliveryDecided
-+lowBattery : deliverFirst(R) & deliverOn(_) & lastFound(T) & not deliveringFirst(T) & (~delivered | fetchingKnocked) & not charging & (storageNearer | lastToStore) & wayCovered(R)
++lowBattery : deliverFirst(R) & deliverOn(_) & lastFound(T) & not deliveringFirst(T) & deliveryGoesOn(R)
     <- -+deliveringFirst(T).
 @rechargeAfterDelivery
-+lowBattery : deliverFirst(R) & (~delivered | fetchingKnocked) & not charging & (storageNearer | lastToStore) & wayCovered(R).
++lowBattery : deliverFirst(R) & deliveryGoesOn(R).
 @deliveryKeptOn
-+lowBattery : deliverOn(R) & lastFound(T) & deliveringFirst(T) & (~delivered | fetchingKnocked) & not charging & (storageNearer | lastToStore) & wayCovered(R).
++lowBattery : deliverOn(R) & lastFound(T) & deliveringFirst(T) & deliveryGoesOn(R).
 @rechargeSuspend[atomic]
 +lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
     <- +charging; !!rechargeTrip(X, Y, Z, O).
