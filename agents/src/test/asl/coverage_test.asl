@@ -58,32 +58,6 @@ mock_operation(_, ok).
        ?obstacleTimes(L);
        !assert_equals(1, .length(L)).                                     // noted for the trap count
 
-// a gap narrower than the body: the last avoidance turned left (a box on the right) a moment ago,
-// now a box on the left, and the two points read lie 8 cm apart: a half turn the same way, no veer
-@[test]
-+!test_a_gap_narrower_than_the_body_makes_a_half_turn_without_the_veer
-    <- !forget_calls; -+obstacleTimes([]); .system_time(T); -turnedTo(_, _); +turnedTo("left", T);
-       +mock_operation(gapWidth(0.08), ok);
-       !obstacle_ahead(40);
-       !until(not avoiding & mock_called(gapWidth(_)), 4000);
-       -mock_operation(gapWidth(0.08), ok);
-       !assert_true(mock_called(setSpeeds(100, -100)));                  // on the spot, away from it
-       !assert_false(mock_called(setSpeeds(100, V)) & V < 100 & V > 0);  // no arc towards the first box
-       !assert_false(veering);
-       !assert_false(turnedTo(_, _)).
-
-// the same two avoidances with the points 20 cm apart: the usual turn and veer
-@[test]
-+!test_a_gap_wider_than_the_body_keeps_the_usual_turn_and_veer
-    <- !forget_calls; -+obstacleTimes([]); .system_time(T); -turnedTo(_, _); +turnedTo("left", T);
-       +mock_operation(gapWidth(0.2), ok);
-       !obstacle_ahead(40);
-       !until(mock_called(setSpeeds(100, V)) & V < 100 & V > 0, 2000);
-       !until(not veering, 2000);
-       -mock_operation(gapWidth(0.2), ok);
-       !assert_true(mock_called(gapWidth(_)));
-       !assert_true(turnedTo("right", _)).
-
 @[test]
 +!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(0);

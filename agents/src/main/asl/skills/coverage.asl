@@ -91,13 +91,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// a gap too narrow to pass (@coverSqueeze): two avoidances to opposite sides within squeezeTime ms,
-// the closest points read (at gapWatch's level or more) less than gapMin m apart; then a turn of
-// squeezeTurn ms
-squeezeTime(1500).
-gapWatch(150).
-gapMin(0.12).
-squeezeTurn(1400).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -115,7 +108,6 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (gapWatch(GL) & squeezeTime(GW)) { gapWatch(GL, GW) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
@@ -138,28 +130,8 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-// a gap narrower than the body (gapMin): the avoidance would turn back towards the side the last
-// one turned away from, squeezeTime ms ago or less, and the closest points the two sensors read in
-// that time (the middleware's gapWidth) lie less than gapMin apart. The box avoided first lies
-// beside the robot, out of the sensors' sight; the turn towards it, the veer's arc and the leg
-// swung the flank on to it. Instead the robot turns on the spot the same way for squeezeTurn ms
-// (about a half turn; a disc turning on the spot starts no touch) and leaves the way it came, no veer.
-@coverSqueeze
-+!avoid(D) : D \== 0 & turnedTo(Prev, T) & (D < 0 & Prev == "right" | D > 0 & Prev == "left")
-           & .system_time(Now) & squeezeTime(ST) & Now - T < ST & turnSpeed(S) & gapMin(G)
-    <- gapWidth(W);
-       if (D < 0) { setSpeeds(-S, S) } else { setSpeeds(S, -S) };
-       if (W >= 0 & W < G) {
-           -turnedTo(_, _); ?squeezeTurn(Half); .wait(Half); !clear; -avoiding
-       } else {
-           !noteTurn(D); !clear; +veering; -avoiding; !veer(D)
-       }.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- !noteTurn(D); setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- !noteTurn(D); setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
-
-// the side an avoidance turned to, and when (@coverSqueeze)
-@noteTurnLeft +!noteTurn(D) : D < 0 <- .system_time(T); -turnedTo(_, _); +turnedTo("left", T).
-@noteTurnRight +!noteTurn(_) <- .system_time(T); -turnedTo(_, _); +turnedTo("right", T).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.

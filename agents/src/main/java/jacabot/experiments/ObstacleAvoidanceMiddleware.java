@@ -4,7 +4,6 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
-import java.util.ArrayDeque;
 
 /**
  * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
@@ -271,65 +270,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The gap watch's level and window (NaN: off), and each side's closest point read in the window. */
-    private double gapLevel = Double.NaN, gapWindowMs;
-    private final ArrayDeque<double[]> leftPoints = new ArrayDeque<>(), rightPoints = new ArrayDeque<>();
-
-    /**
-     * From now on, remembers for {@code windowMs} ms where each front sensor read {@code level} or
-     * more (dead reckoning, where the reading puts the point, as {@code markWalls} does), for
-     * {@code gapWidth} (not in the thesis). Fails before {@code odometry}, for a level under 1 or a
-     * window under 40 ms.
-     */
-    @OPERATION
-    void gapWatch(double level, double windowMs) {
-        if (map == null || !(level >= 1) || !(windowMs >= 40)) {
-            failed("gapWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and a window of 40 ms or more, got "
-                    + level + ", " + windowMs);
-            return;
-        }
-        gapLevel = level;
-        gapWindowMs = windowMs;
-    }
-
-    /**
-     * The distance, metres, between the closest points the left and the right sensor read in the gap
-     * watch's window (their highest readings), or -1 when a side read none (not in the thesis): two
-     * boxes read on either side within the window, less than the body's width apart, are a gap the
-     * robot cannot pass. Fails before {@code gapWatch}.
-     */
-    @OPERATION
-    void gapWidth(OpFeedbackParam<Double> metres) {
-        if (Double.isNaN(gapLevel)) {
-            failed("gapWidth needs gapWatch(Level, WindowMs) first");
-            return;
-        }
-        long now = simTimeMs();
-        double[] l = closest(leftPoints, now), r = closest(rightPoints, now);
-        metres.set(l == null || r == null ? -1.0 : Math.hypot(l[1] - r[1], l[2] - r[2]));
-    }
-
-    private double[] closest(ArrayDeque<double[]> points, long now) {
-        while (!points.isEmpty() && now - points.peekFirst()[0] > gapWindowMs) {
-            points.pollFirst();
-        }
-        double[] best = null;
-        for (double[] p : points) {
-            if (best == null || p[3] > best[3]) {
-                best = p;
-            }
-        }
-        return best;
-    }
-
-    private void watchGap(double reading, double bearing, ArrayDeque<double[]> points) {
-        if (map == null || Double.isNaN(gapLevel) || reading < gapLevel) {
-            return;
-        }
-        double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
-        points.addLast(new double[] {simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a), reading});
-    }
-
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -350,12 +290,10 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
-            watchGap(info.getVal(), SENSOR_ANGLE, leftPoints);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
-            watchGap(right, -SENSOR_ANGLE, rightPoints);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
