@@ -58,10 +58,6 @@ forgetOnFall(atCharger).
 +!setUpRecharge : lowBatteryLevel(L) & chargedLevel(C) <- batteryLevels(L, C).
 
 @stuckAtCharger +stuck : atCharger.
-// a robot that goes on from the charger (resumeAtCharger) stood there still: the progress watch's
-// first window (stuckWindows) since the charge ended reads its first turn as no progress
-justCharged :- chargeEndedAt(T0) & .system_time(T) & stuckWindows(W, _, _, _) & T - T0 < W.
-@stuckJustCharged +stuck : resumeAtCharger & justCharged.
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
 // the charger mid-charge (tidy-up, generated world 3)
@@ -104,7 +100,7 @@ justCharged :- chargeEndedAt(T0) & .system_time(T) & stuckWindows(W, _, _, _) & 
 @rechargeTrip
 +!rechargeTrip(X, Y, Z, O)
     <- mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
-       !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger; .system_time(Tc); -+chargeEndedAt(Tc);
+       !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        !backToTask(X, Y, Z, O).
