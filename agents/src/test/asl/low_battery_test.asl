@@ -62,11 +62,12 @@ mock_operation(_, ok).
        !assert_false(charging);
        -+tripTimeout(150000).
 
-// an agent whose task goes on from anywhere (tidy-up) resumes at the charger
+// an agent whose task goes on from anywhere (tidy-up) resumes at the charger, and turns to no
+// heading marked far from there (200 degrees when the battery went low)
 @[test]
 +!test_an_agent_that_resumes_at_the_charger_does_not_go_back_to_the_marked_point
     <- !until(not charging, 10000); +resumeAtCharger; !forget_calls;
-       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470); -+orientation(200);
        !!perceive(lowBattery);
        !until(.intend(reachCharger), 10000);
        !!perceive(targetReached);
@@ -75,7 +76,8 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        !assert_false(charging);
        !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.1)));  // no way back
-       -resumeAtCharger.
+       !assert_false(desired(200));                                  // nor the heading marked
+       -+orientation(90); -resumeAtCharger.
 
 // the last cylinder of a task that ends at the charger is delivered first wherever the robot is
 @[test]
