@@ -9,9 +9,6 @@
 { include("recharge-trip.asl") }
 
 // the task is this agent's own: "charging" suspends it; back at the marked point the storage point
-// is the target again, the marked orientation restored, and the task resumes. An agent that goes on
-// from the charger (resumeAtCharger, recharge-trip's) turns to no heading marked far from there: its
-// delivery aims at the storage point, its search at its waypoint
+// is the target again, the marked orientation restored, and the task resumes
 @suspendInPlace +!suspendTask.
-@resumeAsFacing +!resumeTask(_) : resumeAtCharger <- !restoreTarget; -charging.
 @resumeInPlace +!resumeTask(O) <- !restoreTarget; !restoreOrientation(O); -charging.
