@@ -26,9 +26,9 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
 
-// after each delivery and each recharge: is every cylinder stored? If not, a look around first after a delivery only
+// after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
-@doneRecharging -charging <- !parkIfDone.
+@doneRecharging -charging <- +lookFirst; !parkIfDone.
 // parking is a trip to the charger that keeps "charging" (the task stays suspended, for good)
 @park
 +!parkIfDone : stored(N) & cylinders(N) & not charging
