@@ -7,14 +7,9 @@
 // plans as published: as-published/navigation.asl.
 
 middlewareClass("jacabot.experiments.NavigationMiddleware").
-// turns on the spot quickly but for the last 15 degrees (heading.asl; tidy-up's): the listing's
+// turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
 // 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
 quickTurns.
-// those turns, and the turn away from an obstacle (avoidance.asl), at full speed, not half: nine in ten
-// avoidances are turned back within 8 s by a re-aim, and the battery's idle drain makes a degree turned
-// at full speed a fifth cheaper (wide tuning 101-160 x 1-2: 111 -> 112 of 120, deliveries 280 -> 290)
-quickTurnSpeed(100).
-avoidTurnSpeed(100).
 // the sweep heads for look points at most this far apart (m) and looks around at each, not along
 // lanes (skills/look-points.asl; wide tuning 101-160 x 1-2: 98 -> 107 of 120, held out 103 -> 106)
 lookSpacing(1.0).

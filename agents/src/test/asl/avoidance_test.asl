@@ -41,18 +41,6 @@ mock_operation(_, ok).
        !until(cleared & not avoiding, 2000);
        !assert_true(mock_called(setSpeeds(-50, 50))).
 
-// an agent's avoidTurnSpeed(V) (navigation's 100) replaces the thesis' half of maxSpeed
-@[test]
-+!test_an_agents_avoid_turn_speed
-    <- !forget_calls; -cleared; +avoidTurnSpeed(100); !obstacle_ahead(40);
-       !until(cleared & not avoiding, 2000);
-       -cleared; !obstacle_ahead(-40);
-       !until(cleared & not avoiding, 2000);
-       -avoidTurnSpeed(100);
-       !assert_true(mock_called(setSpeeds(100, -100)));
-       !assert_true(mock_called(setSpeeds(-100, 100)));
-       !assert_false(mock_called(setSpeeds(50, -50)) | mock_called(setSpeeds(-50, 50))).
-
 @[test]
 // as the thesis' listing (!avoid(-1)): the turn a front obstacle on the right gets
 +!test_a_lateral_obstacle_on_the_left_is_avoided_turning_left

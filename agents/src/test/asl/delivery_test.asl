@@ -82,7 +82,7 @@ mock_operation(_, ok).
        -quickTurn(50, 15);
        !assert_true(mock_called(setSpeeds(-50, 50))).                   // left
 
-// quickTurns: the skill's quickTurnAt(50, 15), as tidy-up believes it
+// quickTurns: the skill's quickTurnAt(50, 15), as navigation and tidy-up believe it
 @[test]
 +!test_quick_turns_at_the_skills_speed
     <- !forget_calls; +quickTurns; -+desired(90); -+orientation(30);
@@ -93,21 +93,6 @@ mock_operation(_, ok).
        -quickTurns;
        !assert_true(mock_called(setSpeeds(50, -50)));
        !assert_false(mock_called(setSpeeds(25, -10))).
-
-// quickTurns with quickTurnSpeed(V), as navigation believes them: the quick turn at V, the last 15
-// degrees slowly as before
-@[test]
-+!test_quick_turns_at_the_agents_speed
-    <- !forget_calls; +quickTurns; +quickTurnSpeed(100); -+desired(90); -+orientation(30);
-       !!balance;
-       !until(mock_called(setSpeeds(100, -100)), 2000);
-       -+orientation(80);                                               // 10 degrees off: slowly
-       !until(mock_called(setSpeeds(25, -10)), 2000);
-       -+orientation(90);
-       !until(mock_called(setSpeeds(100, 100)), 2000);
-       -quickTurns; -quickTurnSpeed(100);
-       !assert_true(mock_called(setSpeeds(100, -100)));
-       !assert_false(mock_called(setSpeeds(50, -50))).
 
 @[test]
 +!test_balanced_across_north

@@ -2,8 +2,6 @@
 // obstacle(true) (front) and lateralObstacle(S) (a side) make the robot back off and turn away
 // from the obstacle's side until it clears; the coordination belief "avoiding" suspends random
 // motion meanwhile.
-// Parameter: avoidTurnSpeed(V) (the agent's, optional): the wheel speed of the turn away from a side
-// obstacle; without it the thesis' half of maxSpeed.
 // Reads: maxSpeed(M); delta(D) (the middleware's left-right difference); the states of the skills
 // it stands aside for: picking, reachCylinder(true), picked(true) (picking), travelling (delivery,
 // recharge: they go round obstacles their own way), homing(_) (far sight), avoidingInMove (recovery).
@@ -24,11 +22,9 @@
 +lateralObstacle(S) : not avoiding & not picking & not reachCylinder(true) & not picked(true) & not travelling
     <- +avoiding; .succeed_goal(move(_)); stop; if (S == "left") { !avoid(-1) } else { !avoid(1) }.
 
-avoidTurn(V) :- avoidTurnSpeed(V).
-avoidTurn(V) :- not avoidTurnSpeed(_) & maxSpeed(M) & V = M / 2.
 @avoidFront +!avoid(0) <- backward; turnAround; !clear; -avoiding; !afterAvoid.
-@avoidRight +!avoid(D) : D > 0 & avoidTurn(V) <- backward; setSpeeds(V, -V); !clear; -avoiding; !afterAvoid.
-@avoidLeft +!avoid(_) : avoidTurn(V) <- backward; setSpeeds(-V, V); !clear; -avoiding; !afterAvoid.
+@avoidRight +!avoid(D) : D > 0 & maxSpeed(M) <- backward; setSpeeds(M / 2, -M / 2); !clear; -avoiding; !afterAvoid.
+@avoidLeft +!avoid(_) : maxSpeed(M) <- backward; setSpeeds(-M / 2, M / 2); !clear; -avoiding; !afterAvoid.
 // homing on a far cylinder when the obstacle came: go round it first (far sight)
 @afterAvoidGoRound +!afterAvoid : homing(_) & not travelling <- !goRound.
 @afterAvoid +!afterAvoid.

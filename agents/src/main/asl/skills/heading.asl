@@ -14,8 +14,7 @@ speedOnTheWay(V) :- travelSpeed(V).
 speedOnTheWay(100) :- not travelSpeed(_).
 // Reads: targetPoint(X, Z) (the skill that sends the robot: delivery, recharge); location, orientation,
 // delta (the middleware); travelling, halted, insideArea (rules of the skills that send the robot),
-// avoiding (avoidance); quickTurns, quickTurnSpeed(V) or quickTurn(V, A) (the agent's, optional: see
-// @balanceQuickRight).
+// avoiding (avoidance); quickTurns or quickTurn(V, A) (the agent's, optional: see @balanceQuickRight).
 // An agent may put a rule offBy(A) of its own before its includes (the first that holds is taken: tidy-up's
 // 3 degrees near the storage point).
 // Beliefs: desired(Degrees), firstTime, ~around (delivery reads them), aim(X, Z) (the point headed
@@ -63,10 +62,7 @@ desiredOnTheRight :- desired(D) & orientation(O) & ((O - D >= -180 & O - D < 0) 
 // wheel speed V while the heading is more than A degrees off (quickTurnAt(V, A)), and slowly only
 // for the last A: the thesis' slow turn took 9 s for a half turn, 60-100 s of a ten-minute tidy-up
 // run; an agent may believe quickTurn(V, A) itself instead
-// an agent's quickTurnSpeed(V) replaces the wheel speed (navigation's full speed: a degree turned at full
-// speed costs a fifth less of the battery, its idle drain spread over half the time)
-quickTurn(V, A) :- quickTurns & quickTurnSpeed(V) & quickTurnAt(_, A).
-quickTurn(V, A) :- quickTurns & not quickTurnSpeed(_) & quickTurnAt(V, A).
+quickTurn(V, A) :- quickTurns & quickTurnAt(V, A).
 // the straight distance (m) from the robot to (Tx, Tz): recharge-trip's and team-charger's
 distanceTo(Tx, Tz, D) :- location(X, _, Z) & D = math.sqrt((X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)).
 headingOff(G) :- desired(D) & orientation(O) & R = math.abs(O - D) & G = math.min(R, 360 - R).
