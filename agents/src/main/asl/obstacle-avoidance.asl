@@ -10,9 +10,6 @@ middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 floorDrive(30000, 3, 30000) :- arena(W, D) & W * D >= 4.
 doorOpen.
 regionFar(10).
-// the doorway seen before it is crossed (form G6), and a gap a drive ended at shut again
-doorSeen(1, 1, 199, 0.05).
-gapShut.
 
 !start.
 

@@ -18,7 +18,7 @@ setUpGoal(setUpFloorDrive).
 // obstacleTimes, pausedUntil (coverage.asl's); its own driving(Until) and droveAt(T).
 
 @setUpFloorDrive +!setUpFloorDrive : floorDrive(_, _, _) & regionWallLevel(L)
-    <- regionWalls(L); if (doorOpen) { forgetCrossedMarks }; if (doorOpenTurns) { forgetCrossedTurns }; if (regionFar(F)) { regionFar(F) }; if (doorSeen(A, B, R, S)) { openSeenFloor(A, B, R, S) }; if (gapShut) { shutDriveGaps }; if (doorSeenFar(M)) { seenFarFloor(M) }; if (gapEndsDrive) { endDriveAtGap }; if (doorRadius(DR)) { doorRegion(DR) }.
+    <- regionWalls(L); if (doorOpen) { forgetCrossedMarks }; if (doorOpenTurns) { forgetCrossedTurns }; if (regionFar(F)) { regionFar(F) }; if (doorSeen(A, B, R, S)) { openSeenFloor(A, B, R, S) }.
 @setUpNoFloorDrive +!setUpFloorDrive.
 
 @driveLeg
@@ -26,16 +26,16 @@ setUpGoal(setUpFloorDrive).
           & not (obstacleTimes([L | _]) & T - L < FT) & turnSpeed(S) & cruiseSpeed(V) & wheelGeometry(Unit, _)
           & regionShape(R, C) & newFloor(NW, NK)
     <- freshCells(NW, New);
-       if (New >= NK) { -driving(U); -+droveAt(T); driveOver; println("New floor reached: random motion again"); !move(N) }
+       if (New >= NK) { -driving(U); -+droveAt(T); println("New floor reached: random motion again"); !move(N) }
        else {
            regionTurn(S, R, C, Side, Ms, D);
-           if (Side == "none") { -driving(U); -+droveAt(T); driveOver; println("No uncrossed region left: random motion again"); !move(N) }
+           if (Side == "none") { -driving(U); -+droveAt(T); println("No uncrossed region left: random motion again"); !move(N) }
            else {
                if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
                setSpeeds(V, V); .wait(D / (V * Unit) * 1000)
            }
        }.
-@driveEnd +!move(N) : driving(U) & .system_time(T) & T >= U <- -driving(U); -+droveAt(T); driveOver; if (doorSeen(_, _, _, _) & seenForget) { forgetSeenFloor }; !move(N).
+@driveEnd +!move(N) : driving(U) & .system_time(T) & T >= U <- -driving(U); -+droveAt(T); if (doorSeen(_, _, _, _) & seenForget) { forgetSeenFloor }; !move(N).
 @driveStart
 +!move(N) : floorDrive(W, K, B) & not driving(_) & not pausedUntil(_) & .system_time(T) & T > W & not (droveAt(F) & T - F < W)
     <- freshCells(W, C);

@@ -141,67 +141,9 @@ final class ExplorationMap {
         double a = heading + Math.toRadians(bearing);
         for (double d = rim; d <= distance; d += CELL / 4) {
             long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            if (shut.contains(k)) {
-                continue;
-            }
             seenOpen.add(k);
-            if (openRays && driveMarks.remove(k)) {
-                rayOpened.add(k);
-            }
-        }
-    }
-
-    /**
-     * A front reading of 0 from the rim's point {@code bearing} degrees left of the heading (not in
-     * the thesis): nothing within the sensor's range, so the floor from {@code from} to {@code to}
-     * metres from the centre counts as seen open for the region count alone (its marks stay): a
-     * doorway seen from the side opens onto the floor beyond its jambs.
-     */
-    void seenFar(double bearing, double from, double to) {
-        if (!openGaps) {
-            return;
-        }
-        double a = heading + Math.toRadians(bearing);
-        for (double d = from; d <= to; d += CELL / 4) {
-            long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            if (!shut.contains(k)) {
-                seenOpen.add(k);
-            }
-        }
-    }
-
-    private int doorRadius;
-
-    /**
-     * From now on (not in the thesis) a cell seen open next to a mark, a doorway's, counts its region
-     * within {@code radius} cells: behind a straight wall, a radius of 3 holds at most 28 cells.
-     */
-    void doorRadius(int radius) {
-        doorRadius = radius;
-    }
-
-    /** Cells whose drive mark a reading forgot, and cells a drive's obstacle shut for good (readings no longer open them). */
-    private final Set<Long> rayOpened = new HashSet<>(), shut = new HashSet<>();
-
-    /**
-     * A drive to an uncrossed region met an obstacle {@code distance} metres from the centre,
-     * {@code bearing} degrees left of the heading (not in the thesis): the gap there was not a
-     * doorway. The obstacle's cell and its eight neighbours are shut: a mark a reading forgot comes
-     * back, the cells no longer count as seen open, and later readings through them open nothing.
-     */
-    void gapShut(double bearing, double distance) {
-        double a = heading + Math.toRadians(bearing);
-        long c = key(x + distance * Math.cos(a), z + distance * Math.sin(a));
-        int i = (int) (c >> 32), j = (int) c;
-        driveMarks.add(c);
-        for (int p = -1; p <= 1; p++) {
-            for (int q = -1; q <= 1; q++) {
-                long n = key(i + p, j + q);
-                shut.add(n);
-                seenOpen.remove(n);
-                if (rayOpened.remove(n)) {
-                    driveMarks.add(n);
-                }
+            if (openRays) {
+                driveMarks.remove(k);
             }
         }
     }
@@ -364,7 +306,7 @@ final class ExplorationMap {
                 if (visited.contains(n)) {
                     queue.add(n);
                 } else if (depth.get(n) >= regionFar && regionTargets.getOrDefault(n, 0) < REGION_TRIES && regionLegs.getOrDefault(n, 0) < REGION_LEGS
-                        && regionSize(i + d[0], j + d[1], doorRadius > radius && seenOpen.contains(n) && nearWall(i + d[0], j + d[1]) ? doorRadius : radius) >= minCells) {
+                        && regionSize(i + d[0], j + d[1], radius) >= minCells) {
                     if (n != lastRegionTarget) {
                         regionTargets.merge(n, 1, Integer::sum);
                     }

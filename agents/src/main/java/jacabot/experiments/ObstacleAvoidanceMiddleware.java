@@ -101,7 +101,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         map.forgetForTurns(forgetForTurns);
         map.regionFar(regionFar);
         map.openSeen(openRays, openGaps);
-        map.doorRadius(doorRadius);
     }
 
     /**
@@ -197,9 +196,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             failed("regionTurn needs odometry(SpeedUnit, AxleLength) first, a positive speed, a radius and a size of at least 1");
             return;
         }
-        double[] way = legBlocked && endAtGap ? null : map.regionWaypoint((int) radius, (int) minCells);
-        legBlocked = false;
-        onDriveLeg = shutGaps && way != null;
+        double[] way = map.regionWaypoint((int) radius, (int) minCells);
         side.set(way == null ? "none" : way[0] >= 0 ? "left" : "right");
         ms.set(way == null ? 0.0 : (double) map.turnMillis(way[0], speed));
         metres.set(way == null ? 0.0 : way[1]);
@@ -300,9 +297,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     private void markReading(double reading, double bearing) {
         if (map != null && (openRays || openGaps) && reading <= seenBelow) {
             map.seenFree(bearing, RIM, RIM + rangeOf(reading) - seenShort);
-            if (reading <= 0 && seenFar > 0) {
-                map.seenFar(bearing, RIM + rangeOf(reading) - seenShort, seenFar);
-            }
         }
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -325,55 +319,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     private boolean forgetCrossed, forgetForTurns, openRays, openGaps;
-    /** Whether an obstacle on a drive's leg shuts the gap it meets ({@code shutDriveGaps}), and whether a leg is under way. */
-    private boolean shutGaps, onDriveLeg;
-    /** Whether a drive ends once a leg of it met an obstacle ({@code endDriveAtGap}), and whether one did. */
-    private boolean endAtGap, legBlocked;
-
-    /** From now on (not in the thesis) the drive ends, {@code regionTurn} finding no region, once a leg of it met an obstacle. */
-    @OPERATION
-    void doorRegion(double radius) {
-        doorRadius = (int) radius;
-        if (map != null) {
-            map.doorRadius(doorRadius);
-        }
-    }
-
-    private int doorRadius;
-
-    @OPERATION
-    void endDriveAtGap() {
-        endAtGap = true;
-    }
-
-    /**
-     * From now on (not in the thesis) an obstacle signalled on a leg of {@code regionTurn}'s drive shuts
-     * the seen-open floor around it ({@code ExplorationMap.gapShut}): a gap that a drive into it ended
-     * at is not a doorway, and the robot does not keep trying it.
-     */
-    @OPERATION
-    void shutDriveGaps() {
-        shutGaps = true;
-    }
-
-    /** How far from the centre a reading of 0 sees floor open for the region count (0: only its range; {@code seenFarFloor}). */
-    private double seenFar;
-
-    /**
-     * From now on (not in the thesis) a front reading of 0 counts the floor up to {@code metres} from
-     * the robot's centre as seen open for the region count ({@code ExplorationMap.seenFar}).
-     */
-    @OPERATION
-    void seenFarFloor(double metres) {
-        seenFar = metres;
-    }
-
-    /** The drive is over: an obstacle from now on is random motion's, not the drive's (not in the thesis). */
-    @OPERATION
-    void driveOver() {
-        onDriveLeg = false;
-        legBlocked = false;
-    }
     private int regionFar;
     /** The highest reading that sees floor open, and how much short of its range, metres. */
     private double seenBelow = 999, seenShort = 0.02;
@@ -468,11 +413,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 if (obstacle && map != null) {
                     map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
-                    if (onDriveLeg) {
-                        map.gapShut(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
-                        onDriveLeg = false;
-                        legBlocked = true;
-                    }
                 }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();
