@@ -77,86 +77,7 @@ final class ExplorationMap {
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        long k = key(x + distance * Math.cos(a), z + distance * Math.sin(a));
-        if (!forgetForTurns || !visited.contains(k)) {
-            blocked.add(k);
-        }
-        if (!visited.contains(k) || !forgetCrossed) {
-            driveMarks.add(k);
-        }
-    }
-
-    /** A wall or box read {@code distance} metres from the centre, {@code bearing} degrees left of the heading, for {@link #regionWaypoint} alone. */
-    void wallSeen(double bearing, double distance) {
-        double a = heading + Math.toRadians(bearing);
-        long k = key(x + distance * Math.cos(a), z + distance * Math.sin(a));
-        if (!visited.contains(k) || !forgetCrossed) {
-            driveMarks.add(k);
-        }
-    }
-
-    /**
-     * From now on, a mark in a cell the centre has crossed is forgotten for {@link #regionWaypoint}
-     * (not in the thesis): the jambs of a doorway of 12-20 cm put marks into the doorway's cells, and
-     * a way the robot drove once was shut on the map.
-     */
-    void forgetCrossed(boolean on) {
-        forgetCrossed = on;
-    }
-
-    private boolean forgetCrossed, forgetForTurns;
-    private int regionFar;
-
-    /** {@link #regionWaypoint} passes over regions fewer than {@code cells} cells away along crossed floor (default 0). */
-    void regionFar(int cells) {
-        regionFar = cells;
-    }
-
-    /** Cells a front sensor's reading passed through (it read farther): floor seen open, for {@link #regionWaypoint} alone. */
-    private final Set<Long> seenOpen = new HashSet<>();
-    private boolean openRays, openGaps;
-
-    /**
-     * From now on (not in the thesis), a front reading that passes through a cell, the sensor reading
-     * farther than the cell, forgets the drive's mark there ({@code rays}), and the region count
-     * passes through a cell next to a mark when a reading passed through it ({@code gaps}): a doorway
-     * of 12-20 cm seen from the side, all of whose cells are next to the jambs' marks, opens onto the
-     * floor beyond before it is crossed.
-     */
-    void openSeen(boolean rays, boolean gaps) {
-        openRays = rays;
-        openGaps = gaps;
-    }
-
-    /** Forgets every cell seen open so far (a drive that ran its bound did not pass them). */
-    void forgetSeen() {
-        seenOpen.clear();
-    }
-
-    /** A front reading from the rim's point {@code bearing} degrees left of the heading found nothing nearer than {@code distance} metres from the centre. */
-    void seenFree(double bearing, double rim, double distance) {
-        if (!openRays && !openGaps) {
-            return;
-        }
-        double a = heading + Math.toRadians(bearing);
-        for (double d = rim; d <= distance; d += CELL / 4) {
-            long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            seenOpen.add(k);
-            if (openRays) {
-                driveMarks.remove(k);
-            }
-        }
-    }
-
-    /** The same forgetting for {@link #bestTurn} too: its rays pass a crossed cell's mark. */
-    void forgetForTurns(boolean on) {
-        forgetForTurns = on;
-    }
-    /** The marks {@link #regionWaypoint} reads: obstacles met and walls seen, less those forgotten. */
-    private final Set<Long> driveMarks = new HashSet<>();
-
-    private boolean walled(long k) {
-        return driveMarks.contains(k);
+        blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -190,14 +111,7 @@ final class ExplorationMap {
     }
 
     private boolean visit() {
-        long k = key(x, z);
-        if (forgetCrossed) {
-            driveMarks.remove(k);
-        }
-        if (forgetForTurns) {
-            blocked.remove(k);
-        }
-        return visited.add(k);
+        return visited.add(key(x, z));
     }
 
     /** {@return how long, up to {@code nowMs}, the centre has crossed only cells crossed before, in ms} */
@@ -264,124 +178,6 @@ final class ExplorationMap {
         double turn = Math.toDegrees(Math.atan2(wz - z, wx - x) - heading);
         turn = ((turn % 360) + 540) % 360 - 180;
         return new double[] {turn, Math.hypot(wx - x, wz - z)};
-    }
-
-    /** How many times, and legs in all, a region's nearest cell may be the target of {@link #regionWaypoint} while it stays uncrossed. */
-    static final int REGION_TRIES = 2, REGION_LEGS = 8;
-    /** How far a waypoint to an uncrossed region may lie, cells: dead reckoning is planned again after it. */
-    static final int REGION_REACH = 10;
-    private final Map<Long, Integer> regionTargets = new HashMap<>(), regionLegs = new HashMap<>();
-    private long lastRegionTarget = Long.MIN_VALUE;
-
-    /**
-     * The way to the nearest uncrossed region (not in the thesis; a frontier in the sense of ROS'
-     * explore_lite): the nearest cell not crossed yet, reached through crossed cells with no obstacle
-     * met, from which {@code minCells} or more cells not crossed and with no obstacle met in them
-     * are reached within {@code radius} cells each way without passing a mark (floor, not the strip
-     * along a wall nor the far side of a wall seen). A cell that was the target {@value #REGION_TRIES}
-     * times (legs in a row to it count once) or for {@value #REGION_LEGS} legs and is still not crossed is passed over (floor the robot cannot reach: under a box, or
-     * in the margin it keeps). {@return {turn in degrees, left positive; distance in metres} to the
-     * farthest cell of the way, up to {@value #REGION_REACH} cells on, reached in a straight line over
-     * crossed cells, or null when there is no such region}
-     */
-    double[] regionWaypoint(int radius, int minCells) {
-        long start = key(x, z);
-        Map<Long, Integer> depth = new HashMap<>();
-        depth.put(start, 0);
-        Map<Long, Long> parent = new HashMap<>();
-        Deque<Long> queue = new ArrayDeque<>();
-        parent.put(start, start);
-        queue.add(start);
-        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        while (!queue.isEmpty()) {
-            long k = queue.poll();
-            int i = (int) (k >> 32), j = (int) k;
-            for (int[] d : steps) {
-                long n = key(i + d[0], j + d[1]);
-                if (parent.containsKey(n) || walled(n)) {
-                    continue;
-                }
-                parent.put(n, k);
-                depth.put(n, depth.get(k) + 1);
-                if (visited.contains(n)) {
-                    queue.add(n);
-                } else if (depth.get(n) >= regionFar && regionTargets.getOrDefault(n, 0) < REGION_TRIES && regionLegs.getOrDefault(n, 0) < REGION_LEGS
-                        && regionSize(i + d[0], j + d[1], radius) >= minCells) {
-                    if (n != lastRegionTarget) {
-                        regionTargets.merge(n, 1, Integer::sum);
-                    }
-                    regionLegs.merge(n, 1, Integer::sum);
-                    lastRegionTarget = n;
-                    return straightWaypoint(parent, n, start);
-                }
-            }
-        }
-        return null;
-    }
-
-    /** {@return how many cells neither crossed nor next to a mark are reached from (i, j) within radius cells each way} */
-    private int regionSize(int i, int j, int radius) {
-        Set<Long> seen = new HashSet<>();
-        Deque<long[]> queue = new ArrayDeque<>();
-        seen.add(key(i, j));
-        queue.add(new long[] {i, j});
-        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        while (!queue.isEmpty()) {
-            long[] c = queue.poll();
-            for (int[] d : steps) {
-                int a = (int) c[0] + d[0], b = (int) c[1] + d[1];
-                long n = key(a, b);
-                if (Math.abs(a - i) > radius || Math.abs(b - j) > radius || seen.contains(n) || visited.contains(n)
-                        || (nearWall(a, b) && !(openGaps && seenOpen.contains(n) && !walled(n)))) {
-                    continue;
-                }
-                seen.add(n);
-                queue.add(new long[] {a, b});
-            }
-        }
-        return seen.size();
-    }
-
-    /** {@return whether cell (i, j) or one of its eight neighbours has a mark: the margin the robot keeps from walls and boxes} */
-    private boolean nearWall(int i, int j) {
-        for (int a = -1; a <= 1; a++) {
-            for (int b = -1; b <= 1; b++) {
-                if (walled(key(i + a, j + b))) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    private double[] straightWaypoint(Map<Long, Long> parent, long target, long start) {
-        List<Long> path = new ArrayList<>();
-        for (long k = target; k != start; k = parent.get(k)) {
-            path.add(0, k);
-        }
-        long w = path.get(0);
-        for (int p = 1; p < Math.min(REGION_REACH, path.size()); p++) {
-            if (inSight(path.get(p), target)) {
-                w = path.get(p);
-            }
-        }
-        double wx = ((int) (w >> 32) + 0.5) * CELL, wz = ((int) w + 0.5) * CELL;
-        double turn = Math.toDegrees(Math.atan2(wz - z, wx - x) - heading);
-        turn = ((turn % 360) + 540) % 360 - 180;
-        return new double[] {turn, Math.hypot(wx - x, wz - z)};
-    }
-
-    /** {@return whether the straight line from the centre to cell w's middle crosses only crossed cells (or the target) and no mark} */
-    private boolean inSight(long w, long target) {
-        double wx = ((int) (w >> 32) + 0.5) * CELL, wz = ((int) w + 0.5) * CELL;
-        double length = Math.hypot(wx - x, wz - z);
-        for (double s = 0; s <= length; s += CELL / 4) {
-            long k = key(x + (wx - x) * s / length, z + (wz - z) * s / length);
-            if (walled(k) || (!visited.contains(k) && k != target)) {
-                return false;
-            }
-        }
-        return true;
     }
 
     /** {@return how many cells the centre crossed for the first time after {@code sinceMs}} */

@@ -97,10 +97,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     @OPERATION
     void odometry(double speedUnit, double axleLength) {
         map = new ExplorationMap(speedUnit, axleLength);
-        map.forgetCrossed(forgetCrossed);
-        map.forgetForTurns(forgetForTurns);
-        map.regionFar(regionFar);
-        map.openSeen(openRays, openGaps);
     }
 
     /**
@@ -180,26 +176,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         side.set(way[0] >= 0 ? "left" : "right");
         ms.set((double) map.turnMillis(way[0], speed));
         metres.set(way[1]);
-    }
-
-    /**
-     * The turn on the spot towards the way to the nearest uncrossed region (not in the thesis,
-     * {@code ExplorationMap.regionWaypoint}: at least {@code minCells} cells neither crossed nor
-     * marked within {@code radius} cells): {@code side} "left", "right" or "none" (no such region),
-     * how long to turn at wheel speeds ±{@code speed}, and how far the waypoint is then, in metres.
-     * Fails before {@code odometry}.
-     */
-    @OPERATION
-    void regionTurn(double speed, double radius, double minCells, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms,
-            OpFeedbackParam<Double> metres) {
-        if (map == null || !(speed > 0) || !(radius >= 1) || !(minCells >= 1)) {
-            failed("regionTurn needs odometry(SpeedUnit, AxleLength) first, a positive speed, a radius and a size of at least 1");
-            return;
-        }
-        double[] way = map.regionWaypoint((int) radius, (int) minCells);
-        side.set(way == null ? "none" : way[0] >= 0 ? "left" : "right");
-        ms.set(way == null ? 0.0 : (double) map.turnMillis(way[0], speed));
-        metres.set(way == null ? 0.0 : way[1]);
     }
 
     /**
@@ -295,90 +271,9 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     private void markReading(double reading, double bearing) {
-        if (map != null && (openRays || openGaps) && reading <= seenBelow) {
-            map.seenFree(bearing, RIM, RIM + rangeOf(reading) - seenShort);
-        }
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
-        if (map != null && reading >= regionWallLevel) {
-            map.wallSeen(bearing, RIM + rangeOf(Math.min(reading, 1000)));
-        }
-    }
-
-    /**
-     * From now on, {@code regionTurn} forgets every mark in a cell the robot's centre has crossed (not
-     * in the thesis): a doorway crossed once stays open on its map.
-     */
-    @OPERATION
-    void forgetCrossedMarks() {
-        forgetCrossed = true;
-        if (map != null) {
-            map.forgetCrossed(true);
-        }
-    }
-
-    private boolean forgetCrossed, forgetForTurns, openRays, openGaps;
-    private int regionFar;
-    /** The highest reading that sees floor open, and how much short of its range, metres. */
-    private double seenBelow = 999, seenShort = 0.02;
-
-    /**
-     * From now on (not in the thesis) a front reading forgets {@code regionTurn}'s marks in the cells
-     * it passed through ({@code rays} 1) and the region count passes through a cell next to a mark
-     * that a reading passed through ({@code gaps} 1): a doorway seen before it is crossed.
-     */
-    @OPERATION
-    void forgetSeenFloor() {
-        if (map != null) {
-            map.forgetSeen();
-        }
-    }
-
-    @OPERATION
-    void openSeenFloor(double rays, double gaps, double below, double shortOf) {
-        seenBelow = below;
-        seenShort = shortOf;
-        openRays = rays > 0;
-        openGaps = gaps > 0;
-        if (map != null) {
-            map.openSeen(openRays, openGaps);
-        }
-    }
-
-    /** From now on {@code regionTurn} passes over regions fewer than {@code cells} cells away along crossed floor (not in the thesis). */
-    @OPERATION
-    void regionFar(double cells) {
-        regionFar = (int) cells;
-        if (map != null) {
-            map.regionFar(regionFar);
-        }
-    }
-
-    /** From now on {@code exploreTurn} too forgets every mark in a cell the robot's centre has crossed (not in the thesis). */
-    @OPERATION
-    void forgetCrossedTurns() {
-        forgetForTurns = true;
-        if (map != null) {
-            map.forgetForTurns(true);
-        }
-    }
-
-    /** The weakest front reading marked as a wall for {@code regionTurn} alone (NaN: none). */
-    private double regionWallLevel = Double.NaN;
-
-    /**
-     * Marks for {@code regionTurn} alone, from now on, every wall or box a front sensor reads at
-     * {@code level} or more (not in the thesis): where {@code markWalls} is off, the floor beyond a
-     * wall seen would count as an uncrossed region. Fails for a level under 1.
-     */
-    @OPERATION
-    void regionWalls(double level) {
-        if (!(level >= 1)) {
-            failed("regionWalls needs a level of at least 1, got " + level);
-            return;
-        }
-        regionWallLevel = level;
     }
 
     @Override

@@ -92,52 +92,6 @@ class ExplorationMapTest {
         assertNull(map.frontierWaypoint());
     }
 
-    @Test
-    void anUncrossedRegionIsOpenFloorNotTheStripAlongAWall() {
-        // a lane of ten cells along x, crossed; walls right beside it on one side, and two cells off
-        // on the other: the strip of one cell between lane and wall is no region
-        drive(0, 9_500, 100);
-        for (int i = -1; i <= 11; i++) {
-            mark(i, -1);
-            mark(i, 2);
-        }
-        mark(-1, 0);
-        mark(-1, 1);
-        mark(11, 0);
-        mark(11, 1);
-        assertNull(map.regionWaypoint(2, 8), "only the strip along the wall is uncrossed");
-        // the same lane with an opening five cells wide in the far wall, near the lane's start
-        ExplorationMap open = new ExplorationMap(0.001, 0.09);
-        for (long t = 0; t <= 9_500; t += 40) {
-            open.wheels(t, 100, 100);
-        }
-        for (int i = -1; i <= 11; i++) {
-            markOn(open, i, -1);
-            if (i < 2 || i > 6) {
-                markOn(open, i, 2);
-            }
-        }
-        for (int[] end : new int[][] {{-1, 0}, {-1, 1}, {11, 0}, {11, 1}}) {
-            markOn(open, end[0], end[1]);
-        }
-        double[] way = open.regionWaypoint(2, 8);
-        assertTrue(way != null, "the floor through the opening is a region");
-        // the robot at the lane's far end (cell 9): the way runs back along the lane
-        assertTrue(Math.abs(way[0]) > 90, "back along the lane, got " + way[0]);
-        assertTrue(way[1] >= 0.25 && way[1] <= 1.0, "a straight leg along the crossed lane, got " + way[1]);
-        // a target not reached after REGION_LEGS legs is passed over for the next
-        for (int leg = 1; leg < ExplorationMap.REGION_LEGS; leg++) {
-            open.regionWaypoint(2, 8);
-        }
-        double[] next = open.regionWaypoint(2, 8);
-        assertTrue(next == null || next[0] != way[0] || next[1] != way[1], "the unreached target was dropped");
-    }
-
-    private static void markOn(ExplorationMap m, int i, int j) {
-        double dx = (i + 0.5) * ExplorationMap.CELL - m.x(), dz = (j + 0.5) * ExplorationMap.CELL - m.z();
-        m.obstacle(Math.toDegrees(Math.atan2(dz, dx)), Math.hypot(dx, dz));
-    }
-
     /** An obstacle met in cell (i, j), marked from where the robot is (heading 0, as {@code drive} leaves it). */
     private void mark(int i, int j) {
         double dx = (i + 0.5) * ExplorationMap.CELL - map.x(), dz = (j + 0.5) * ExplorationMap.CELL - map.z();
