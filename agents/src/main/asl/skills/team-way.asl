@@ -101,27 +101,6 @@ stopDue(A) :- stoppedFor(A, T0) & .system_time(T) & wayStopLimit(L) & T - T0 < L
 +robotAt(A, Ax, Az) : rightOfWay(A) & tooClose(Ax, Az) & not givingWay & not cannotGiveWay & waySpeed(V) & wayTime(T)
     <- +givingWay; .print("Giving way to ", A); setSpeeds(V, V); !waitPublishing(T); stop; -givingWay.
 
-// A teammate that stands publishes no new place (team-places publishes on a new GPS reading), so no
-// +robotAt comes from it, and a robot that stands gets none of its own: two robots standing within
-// wayClearance, or one that came to stand by a standing teammate, stayed so (a robot starting
-// team-follow's wait touching a teammate queued at the charger stood so 13 s: held-out world 91,
-// four robots). A robot that has stood for standStillAfter looks at the places on each battery
-// reading (every control step) and gives way by the same rule.
-standStillAfter(600). // ms without a new place of its own: the robot stands
-standingStill :- placePublished(T0) & .system_time(T) & standStillAfter(S) & T - T0 > S.
-@stepAsideStanding[atomic]
-+battery(_) : standingStill & not givingWay & not cannotGiveWay & robotAt(A, Ax, Az) & rightOfWay(A) & tooClose(Ax, Az)
-    & aheadOfMe(Ax, Az)
-    <- +givingWay; .print("Stepping aside for ", A, ", standing"); !sideStep(Ax, Az); -givingWay.
-@stepAsideStandingBoxedIn[atomic]
-+battery(_) : standingStill & not givingWay & not cannotGiveWay & robotAt(A, Ax, Az) & rightOfWay(A) & tooClose(Ax, Az)
-    & teammateInMyWay(Bx, Bz)
-    <- +givingWay; .print("Stepping aside for ", A, ", standing: a teammate ahead"); !sideStep(Bx, Bz); -givingWay.
-@giveWayStanding[atomic]
-+battery(_) : standingStill & not givingWay & not cannotGiveWay & robotAt(A, Ax, Az) & rightOfWay(A) & tooClose(Ax, Az)
-    & waySpeed(V) & wayTime(T)
-    <- +givingWay; .print("Giving way to ", A, ", standing"); setSpeeds(V, V); !waitPublishing(T); stop; -givingWay.
-
 // the robot with the right of way does not push a teammate giving way right ahead of it
 @stopForTeammate[atomic]
 +robotAt(A, Ax, Az) : drivingOn & givesWayToMe(A) & rightAhead(Ax, Az) & stopDue(A) & wayStopTime(T)
