@@ -161,3 +161,19 @@ mock_operation(_, ok).
        !assert_true(mock_called(setSpeeds(100, 100)));
        !assert_false(mock_called(setSpeeds(-50, 50)));          // no look around yet
        -storageLeaving(_); -handedOverTo(_); -robotAt(khepera2, _, _); -+storageQueue([]).
+
+// a holder back in the area with another cylinder (picked beside it while the turn was still held):
+// the first leaving's timeout, long past, does not give the turn up while it puts this one down
+@[test]
++!test_a_holder_back_in_the_area_keeps_its_turn_past_the_leaving_timeout
+    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]); -+robotAt(khepera2, 0.1, -0.41);
+       +storageLeaving(-100000); +delivering; !forget_calls;
+       +insideArea;                                               // came in again
+       -location(_, _, _); !!perceive(location(0.38, 0, -0.38));  // at the storage point
+       .wait(400);
+       !assert_false(mock_called(storageDone));
+       !assert_true(storageTurnMine);
+       !assert_false(storageLeaving(_));
+       -delivering; -insideArea;                                  // out again: the leaving starts anew
+       !assert_true(storageLeaving(_));
+       -storageLeaving(_); -storageTurnMine; -robotAt(khepera2, _, _); -+storageQueue([]).

@@ -133,6 +133,11 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 // out of the area after a delivery, or a fallen cylinder (delivery forgets insideArea): the turn
 // is kept until the robot is away (storageTurnAway)
 @storageLeft -insideArea : storageTurnMine & .system_time(T) <- -+storageLeaving(T).
+// back in the area with another cylinder (one picked beside it while the turn was still held): the
+// leaving is over, so its storageLeaveTimeout does not give the turn up while this cylinder is put
+// down (it did, and the robot waiting drove in onto it: team world 25, four robots, 8.7 s); the next
+// -insideArea starts the leaving again
+@storageBackIn +insideArea : storageLeaving(_) & storageTurnMine <- -storageLeaving(_); -handedOverTo(_).
 // the delivery ended or paused before the area was reached (a fall, a low battery)
 @storageNotReached -delivering : storageTurnMine & not insideArea <- !giveStorageTurn.
 @storageChargingFirst +charging : storageTurnMine & not insideArea <- !giveStorageTurn.
