@@ -53,6 +53,20 @@ mock_operation(_, ok).
        !assert_true(sweep([[0.75, -0.75], [0.75, -0.25], [-0.75, -0.25], [-0.75, 0.25], [0.75, 0.25],
                            [0.75, 0.75], [-0.75, 0.75], [-0.75, -0.75]])).
 
+// an arena under two spacings deep (0.96 m: one lane at z = -0.23) whose lane's other end lies by
+// the storage area would leave one waypoint: it gets two lanes, at -0.23 and 0.23
+@[test]
++!test_a_shallow_arena_with_one_waypoint_left_gets_two_lanes
+    <- -sweep(_); -+arena(0.96, 0.96); -+storagePoint(0.384, -0.384);
+       !planSweep;
+       -+arena(2, 2); -+storagePoint(0.75, 0.75);
+       ?waypoint(X0, Z0, _);
+       !assert_equals(-0.23, X0, 0.001); !assert_equals(-0.23, Z0, 0.001);
+       ?sweep([[X1, Z1], [X2, Z2], [X3, Z3]]);                           // three, the first at the end
+       !assert_equals(0.23, X1, 0.001); !assert_equals(0.23, Z1, 0.001);
+       !assert_equals(-0.23, X2, 0.001); !assert_equals(0.23, Z2, 0.001);
+       !assert_equals(-0.23, X3, 0.001); !assert_equals(-0.23, Z3, 0.001).
+
 @[test]
 +!test_a_step_aligns_towards_the_waypoint_and_goes_on
     <- !forget_calls; -balanced; !recently_looked;
