@@ -100,19 +100,6 @@ mock_operation(_, ok).
        !until(not followingWall(_, _, _), 1000).
 
 @[test]
-+!test_a_wall_followed_the_other_way_is_left_only_once_the_robot_has_turned_round
-    <- .system_time(T); +delivering; -+location(0.95, 0, 0); -+detours(0); -+rightSensor(0);
-       -+orientation(5); +turnedBackFrom(90);                     // 85 degrees into the half turn
-       +followingWall(left, T - 5000, 1);
-       !!followWall;                                              // the target 40 degrees to the free side
-       .wait(300);
-       !assert_true(followingWall(left, _, _));                   // still turning: not left
-       -+orientation(280);                                        // turned round, the target 125 degrees to it
-       !until(not followingWall(_, _, _), 1000);
-       !assert_false(followingWall(_, _, _) | turnedBackFrom(_));
-       -delivering; -+location(0.5, 0, 0); -+orientation(45).
-
-@[test]
 +!test_the_target_on_the_free_side_ends_the_following
     <- !assert_true(canLeave(right, 1, -90));                    // wall on the right, target to the left
        !assert_false(canLeave(right, 1, 90));                    // target behind the wall

@@ -23,7 +23,6 @@ stallTime(20000).     // ms the sweep may come no nearer its waypoint before the
 sweepFollowLimit(60000). // ms of following towards a sweep's waypoint before it is skipped
 sweepFollows(2).      // followings towards one waypoint at most (the second on the other side)
 wallNear(200).        // a front sensor's reading over this: something near ahead (under it: that side is free)
-turnedBack(135).      // degrees the robot turns from its heading at the boundary before the target's side may end the following
 // a fall drops every desire (delivery's @fallCylinder): a following it cut short is forgotten with them,
 // else every obstacle met after it was taken for the wall (@obstacleWhileFollowing) and not avoided
 forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
@@ -39,8 +38,7 @@ forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // sensors), centralSensor, obstacle(B), delta(D); arena(W, D); maxSpeed(M).
 // Beliefs: hitPoint(X, Z) (where obstacles were met on this trip), followingWall(Side, Since, Dist)
 // (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
-// gaveUpSide(Side), turnedBackFrom(O) (the heading when the wall was followed the other way from the
-// arena's boundary), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
+// gaveUpSide(Side), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
 // (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it).
 // An agent with route.asl (routePlanning) plans its way round what it met instead: no following;
 // one with way-back.asl goes back the way it came when its trail knows one (the hook !wallMet).
@@ -133,7 +131,7 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @followDropped -!followWall <- !endFollowing.
 
 @leaveWall
-+!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & not turningBack & canLeave(S, Dist0, Rel)
++!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & canLeave(S, Dist0, Rel)
     <- println("The target is on the free side: heading for it again"); !endFollowing; !headAgain(left).
 // a skill's rule followLooped (look-points.asl's: round a box and back where the following began)
 // gives the following up as one that found no way round
@@ -149,17 +147,12 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 // side, along the same wall (Bug would go round the whole room first)
 @turnBackAtBoundary
 +!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & atBoundary
-                                    & math.abs(Rel) > 135 & not gaveUpSide(S) & orientation(O)
+                                    & math.abs(Rel) > 135 & not gaveUpSide(S)
     <- println("The wall ends at the arena's boundary: following it the other way"); +gaveUpSide(S);
-       !otherSide(S, S2); -followingWall(S, T0, Dist0); +followingWall(S2, T, Dist0); -+turnedBackFrom(O); !followWall.
-// still turning round at the boundary (on the spot, 6-7 s for half a turn, longer than minFollow):
-// the target's side is not yet the free side's (in a room split by a wall, the target beyond it lay
-// to the new free side mid-turn; the following ended facing the wall, and the sweep slid back along
-// it to the boundary, followed it there and turned back, 300 s of a 1.6 m split arena)
-turningBack :- turnedBackFrom(O0) & orientation(O) & turnedBack(A) & R = math.abs(O - O0) & math.min(R, 360 - R) < A.
+       !otherSide(S, S2); -followingWall(S, T0, Dist0); +followingWall(S2, T, Dist0); !followWall.
 @followStep +!followOrLeave(S, _, _, _) : followEvery(E) <- !alongWall(S); .wait(E); !followWall.
 
-@endFollowing +!endFollowing <- .abolish(followingWall(_, _, _)); .abolish(followTarget(_, _)); .abolish(turnedBackFrom(_)); -avoiding.
+@endFollowing +!endFollowing <- .abolish(followingWall(_, _, _)); .abolish(followTarget(_, _)); -avoiding.
 // the trip turns to its target again (heading); the sweep heads for its waypoint again, its clock
 // started again, or skips it when no way round was found
 @headAgainOnTrip +!headAgain(_) : travelling <- !computeGap; !balance; !wallStillAhead.
