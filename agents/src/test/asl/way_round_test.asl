@@ -108,10 +108,7 @@ mock_operation(_, ok).
        !assert_true(canLeave(left, 1, 90));
        -+leftSensor(300);
        !assert_false(canLeave(right, 1, -90));                   // something ahead on the free side
-       -+leftSensor(0);
-       -+centralSensor(544);
-       !assert_false(canLeave(left, 1, 62));                     // facing the wall, turning round at the boundary
-       -+centralSensor(0).
+       -+leftSensor(0).
 
 @[test]
 +!test_the_front_sensors_keep_the_wall_at_the_side

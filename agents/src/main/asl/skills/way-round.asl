@@ -167,13 +167,9 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @headAgainEnded +!headAgain(_).
 
 // leave when the target is well to the free side, neither ahead (a corridor's far wall may be in
-// the way) nor behind (its bearing there flips between -180 and 180), and no wall straight ahead:
-// turning round at the arena's boundary, the robot faced the wall it followed (the central sensor
-// at 544) while the target beyond it lay 62 degrees to the free side; it left the wall there and
-// slid back along it, 300 s of a 1.6 m arena split by a wall
-canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & wallNear(L) & F < L & not wallStraightAhead.
-canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & wallNear(L) & F < L & not wallStraightAhead.
-wallStraightAhead :- centralSensor(C) & wallNear(L) & C > L.
+// the way) nor behind (its bearing there flips between -180 and 180)
+canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & wallNear(L) & F < L.
+canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & wallNear(L) & F < L.
 
 // the sensor on the wall's side (N) keeps the wall at 2-4 cm; the other (F) sees what comes ahead
 @alongRight +!alongWall(right) : leftSensor(F) & rightSensor(N) <- !steerAlong(N, F, 1).
