@@ -100,20 +100,6 @@ mock_operation(_, ok).
        !until(not followingWall(_, _, _), 1000).
 
 @[test]
-+!test_turning_round_at_the_boundary_facing_the_wall_is_neither_left_nor_a_loop
-    <- .system_time(T); +delivering; -+location(0.95, 0, 0); -+detours(0); -+rightSensor(0);
-       -+orientation(5); -+centralSensor(544); +turningRound;    // facing the wall followed
-       +followingWall(left, T - 5000, 1);
-       !!followWall;                                              // the target 40 degrees to the free side
-       .wait(300);
-       !assert_true(followingWall(left, T - 5000, 1));            // still turning: not left
-       -+orientation(280); -+centralSensor(0);                    // turned round
-       !until(not turningRound, 1000);
-       !assert_true(followingWall(left, T2, _) & T2 > T);         // the following the other way begins now
-       -delivering; -+location(0.5, 0, 0); -+orientation(45);
-       !until(not followingWall(_, _, _), 1000).
-
-@[test]
 +!test_the_target_on_the_free_side_ends_the_following
     <- !assert_true(canLeave(right, 1, -90));                    // wall on the right, target to the left
        !assert_false(canLeave(right, 1, 90));                    // target behind the wall

@@ -38,7 +38,7 @@ forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // sensors), centralSensor, obstacle(B), delta(D); arena(W, D); maxSpeed(M).
 // Beliefs: hitPoint(X, Z) (where obstacles were met on this trip), followingWall(Side, Since, Dist)
 // (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
-// gaveUpSide(Side), turningRound (turning to follow the wall the other way), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
+// gaveUpSide(Side), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
 // (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it).
 // An agent with route.asl (routePlanning) plans its way round what it met instead: no following;
 // one with way-back.asl goes back the way it came when its trail knows one (the hook !wallMet).
@@ -130,15 +130,6 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @followEnded +!followWall <- !endFollowing.
 @followDropped -!followWall <- !endFollowing.
 
-// turning round at the arena's boundary (on the spot, 6-7 s for half a turn) while a wall is
-// straight ahead: neither the leave test nor the loop test yet (facing the wall it followed, the
-// target beyond it lay 62 degrees to the new free side, and a robot still where the turn began
-// after loopAfter had "gone round a box": 300 s of a 1.6 m arena split by a wall); the following
-// the other way begins when the turn is done
-@stillTurningRound +!followOrLeave(S, _, _, _) : turningRound & wallStraightAhead & followEvery(E) <- !alongWall(S); .wait(E); !followWall.
-@turnedRound
-+!followOrLeave(S, T0, Dist0, _) : turningRound & .system_time(T)
-    <- -turningRound; -followingWall(S, T0, Dist0); +followingWall(S, T, Dist0); !followWall.
 @leaveWall
 +!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & canLeave(S, Dist0, Rel)
     <- println("The target is on the free side: heading for it again"); !endFollowing; !headAgain(left).
@@ -158,10 +149,10 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 +!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & atBoundary
                                     & math.abs(Rel) > 135 & not gaveUpSide(S)
     <- println("The wall ends at the arena's boundary: following it the other way"); +gaveUpSide(S);
-       !otherSide(S, S2); -followingWall(S, T0, Dist0); +followingWall(S2, T, Dist0); +turningRound; !followWall.
+       !otherSide(S, S2); -followingWall(S, T0, Dist0); +followingWall(S2, T, Dist0); !followWall.
 @followStep +!followOrLeave(S, _, _, _) : followEvery(E) <- !alongWall(S); .wait(E); !followWall.
 
-@endFollowing +!endFollowing <- .abolish(followingWall(_, _, _)); .abolish(followTarget(_, _)); -turningRound; -avoiding.
+@endFollowing +!endFollowing <- .abolish(followingWall(_, _, _)); .abolish(followTarget(_, _)); -avoiding.
 // the trip turns to its target again (heading); the sweep heads for its waypoint again, its clock
 // started again, or skips it when no way round was found
 @headAgainOnTrip +!headAgain(_) : travelling <- !computeGap; !balance; !wallStillAhead.
@@ -179,7 +170,6 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 // the way) nor behind (its bearing there flips between -180 and 180)
 canLeave(right, _, Rel) :- leaveAngle(A) & Rel < -A & Rel > A - 180 & leftSensor(F) & wallNear(L) & F < L.
 canLeave(left, _, Rel) :- leaveAngle(A) & Rel > A & Rel < 180 - A & rightSensor(F) & wallNear(L) & F < L.
-wallStraightAhead :- centralSensor(C) & wallNear(L) & C > L.
 
 // the sensor on the wall's side (N) keeps the wall at 2-4 cm; the other (F) sees what comes ahead
 @alongRight +!alongWall(right) : leftSensor(F) & rightSensor(N) <- !steerAlong(N, F, 1).
