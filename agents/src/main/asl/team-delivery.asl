@@ -19,10 +19,6 @@ resumeAtCharger.
 // battery less 300 J covers the way on to the charger: a trip begun in the storage area left the
 // robot believing itself in it, halted and blind, against a wall (team world 2, four robots)
 deliverFirst(300).
-// a wall between a robot and its target is followed round (way-round) once two obstacles were met near
-// there on the trip (a single box met twice is gone round by a detour), the side taken from its trail
-trailStep(0.1).
-rehitsToFollow(2).
 
 !start.
 
@@ -36,8 +32,6 @@ rehitsToFollow(2).
 { include("skills/team-search.asl") }
 { include("skills/initial-phase.asl") }
 { include("skills/recharge.asl") }
-{ include("skills/trail-side.asl") }
-{ include("skills/way-round.asl") }
 { include("skills/delivery.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
