@@ -1,5 +1,6 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
 import jacabot.app.run.AgentSource;
 import jacabot.app.sweep.SweepPlan;
@@ -7,6 +8,7 @@ import jacabot.app.sweep.SweepRun;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
 import jacabot.app.world.WorldGenerator;
+import jacabot.robot.Experiment;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
@@ -27,6 +29,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,13 +39,14 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code jacabot sweep team-delivery}: teams of 1, 2, 4 ... robots, coordinated (agents) and not
- * (the procedural baseline), on generated team worlds x seeds. Each generator seed gives one arena
- * for every team size (the first robots keep their places), so the sizes compare. Writes
+ * (the procedural baseline), on generated team worlds x seeds, or on a folder of team world files
+ * ({@code --worlds}). Each arena serves every team size (a team of N keeps the first N robots, in
+ * their places), so the sizes compare. Writes
  * OUT/runs.csv (a row per run) and OUT/report.md (deliveries per team size and controller, and
  * each size's ratio to one robot on the same worlds and seeds).
  */
 @Command(name = "sweep", mixinStandardHelpOptions = true,
-        description = {"Runs team-delivery over generated team worlds x seeds for each team size, agents and the "
+        description = {"Runs team-delivery over generated team worlds (or the team world files of --worlds) x seeds for each team size, agents and the "
                 + "procedural baseline, and judges each run by the team criteria (docs/teams.md).",
                 "Writes OUT/runs.csv and OUT/report.md. Exit 0 when every run was made (failed runs included), 2 on bad usage."})
 final class TeamSweepCommand implements Callable<Integer> {
@@ -53,8 +57,13 @@ final class TeamSweepCommand implements Callable<Integer> {
     private List<Integer> robots = List.of(1, 2, 4);
 
     @Option(names = "--world-seeds", paramLabel = "SEEDS", description = "generated team worlds of these generator seeds: "
-            + "1..K or a list (default ${DEFAULT-VALUE})")
-    private String worldSeeds = "1..5";
+            + "1..K or a list (default 1..5)")
+    private String worldSeeds;
+
+    @Option(names = "--worlds", paramLabel = "DIR", description = "team world files instead of generated worlds: the *.json in "
+            + "DIR named team-delivery... or for no single-robot experiment, in name order; each must hold as many Kheperas "
+            + "as the largest team, a storage point and a charger")
+    private Path worldFiles;
 
     @Option(names = "--cylinders", paramLabel = "MIN..MAX", description = "the generated worlds' red cylinders, drawn in "
             + "MIN..MAX (default 10..14, the range the team's targets were set on; another range gives other worlds)")
@@ -89,7 +98,7 @@ final class TeamSweepCommand implements Callable<Integer> {
     private CommandSpec commandSpec;
 
     /** One run of the sweep and what it gave: its outcome, or why it crashed (then {@code outcome} is null). */
-    record Row(long world, int robots, String controller, long seed, TeamDeliveryRun.Outcome outcome, String crash) {
+    record Row(String world, int robots, String controller, long seed, TeamDeliveryRun.Outcome outcome, String crash) {
         boolean crashed() {
             return outcome == null;
         }
@@ -103,11 +112,13 @@ final class TeamSweepCommand implements Callable<Integer> {
         ConsoleLog log = verbosity.console(commandSpec);
         double seconds = ExperimentCommand.duration(duration);
         List<Long> runSeeds = seedsOf("--seeds", seeds);
-        List<Long> worlds = seedsOf("--world-seeds", worldSeeds);
         WorldGenerator.CylinderRange range = cylinders == null ? WorldGenerator.CylinderRange.TEAM
                 : WorldCommand.Generate.cylinderRange(cylinders);
         if (jobs < 1 || robots.stream().anyMatch(n -> n < 1 || n > WorldGenerator.MAX_TEAM)) {
             throw new UserError("--jobs must be at least 1, --robots 1.." + WorldGenerator.MAX_TEAM);
+        }
+        if (worldFiles != null && (worldSeeds != null || cylinders != null)) {
+            throw new UserError("--worlds excludes --world-seeds and --cylinders (they make generated worlds)");
         }
         for (String c : controllers) {
             if (!c.equals("agents") && !c.equals("baseline")) {
@@ -116,6 +127,9 @@ final class TeamSweepCommand implements Callable<Integer> {
         }
         Files.createDirectories(out);
         int largest = robots.stream().mapToInt(Integer::intValue).max().orElse(1);
+        // every world is read and checked before the first run: a bad file is one line, not a sweep of crashes
+        List<Arena> arenas = worldFiles != null ? worldFiles(Installation.locate(worldFiles), largest)
+                : generated(seedsOf("--world-seeds", worldSeeds == null ? "1..5" : worldSeeds), largest, range);
         AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         ExecutorService pool = Executors.newFixedThreadPool(jobs);
@@ -123,20 +137,20 @@ final class TeamSweepCommand implements Callable<Integer> {
         // runs.csv is written again as each run ends, so a sweep stopped midway keeps the runs it made
         Map<Integer, Row> finished = new ConcurrentSkipListMap<>();
         Path csvFile = out.resolve("runs.csv");
-        for (long w : worlds) {
-            WorldSpec spec = WorldGenerator.team(largest, w).cylinders(range).generate().spec();
+        for (Arena arena : arenas) {
+            WorldSpec spec = arena.spec();
             for (long seed : runSeeds) {
                 for (int n : robots) {
                     WorldSpec team = TeamWorld.firstRobots(spec, n);
                     for (String c : controllers) {
-                        long world = w;
+                        String world = arena.name();
                         int index = futures.size();
                         futures.add(pool.submit(() -> {
                             Row row;
                             // one run's exception is that run's crash: the sweep goes on, as the single-robot sweep does
                             try {
                                 Path dir = logs && c.equals("agents")
-                                        ? out.resolve("logs").resolve(world + "-" + n + "r-s" + seed) : null;
+                                        ? out.resolve("logs").resolve(arena.logName() + "-" + n + "r-s" + seed) : null;
                                 TeamDeliveryRun.Outcome o;
                                 if (c.equals("baseline")) {
                                     o = TeamDeliveryRun.baseline(team, seed, seconds);
@@ -150,7 +164,7 @@ final class TeamSweepCommand implements Callable<Integer> {
                                 row = new Row(world, n, c, seed, null, SweepRun.describe(e));
                             }
                             if (!noProgress) {
-                                log.info(String.format(Locale.ROOT, "world %d seed %d, %d robot%s, %s: %s", world, seed, n,
+                                log.info(String.format(Locale.ROOT, "world %s seed %d, %d robot%s, %s: %s", arena.logName(), seed, n,
                                         n == 1 ? "" : "s", c, row.crashed() ? "crash (" + row.crash() + ")"
                                                 : row.outcome().deliveries() + " deliveries"
                                                         + (success(row.outcome()) ? "" : " (" + reason(row.outcome()) + ")")));
@@ -173,6 +187,43 @@ final class TeamSweepCommand implements Callable<Integer> {
         report.lines().forEach(log::result);
         log.result("Written: " + out.resolve("runs.csv") + ", " + out.resolve("report.md"));
         return 0;
+    }
+
+    /** A world of the sweep: its name in runs.csv, the start of its runs' log folders, and the world itself. */
+    private record Arena(String name, String logName, WorldSpec spec) {
+    }
+
+    /** {@return the generated team worlds of these generator seeds (team-delivery-gen-S; logs S-Nr-sR)} */
+    private static List<Arena> generated(List<Long> seeds, int largest, WorldGenerator.CylinderRange range) {
+        return seeds.stream().map(w -> new Arena(WorldGenerator.TEAM_DELIVERY + "-gen-" + w, Long.toString(w),
+                WorldGenerator.team(largest, w).cylinders(range).generate().spec())).toList();
+    }
+
+    /** {@return DIR's team world files in name order, each named by its file name without .json} @throws UserError on a bad one */
+    private static List<Arena> worldFiles(Path dir, int largest) throws IOException {
+        if (!Files.isDirectory(dir)) {
+            throw new UserError("--worlds: " + dir + ": no such directory");
+        }
+        List<Path> files;
+        try (var s = Files.list(dir)) {
+            files = s.filter(p -> Files.isRegularFile(p) && teamFile(p.getFileName().toString())).sorted().toList();
+        }
+        if (files.isEmpty()) {
+            throw new UserError("--worlds: " + dir + ": no team world files (*.json not named for a single-robot experiment)");
+        }
+        List<Arena> out = new ArrayList<>();
+        for (Path f : files) {
+            String name = f.getFileName().toString();
+            name = name.substring(0, name.length() - ".json".length());
+            out.add(new Arena(name, name, TeamExperimentCommand.teamWorld(f, largest)));
+        }
+        return out;
+    }
+
+    /** {@return whether a file is a team world: as the single-robot sweep's rule, named for the team or for no experiment} */
+    private static boolean teamFile(String name) {
+        return name.endsWith(".json") && (name.startsWith(WorldGenerator.TEAM_DELIVERY)
+                || Stream.of(Experiment.values()).noneMatch(e -> name.startsWith(e.id())));
     }
 
     /** The agents' run, its console (each line after its simulated time), event logs and world written to {@code dir}. */
@@ -233,7 +284,7 @@ final class TeamSweepCommand implements Callable<Integer> {
                 + "double_claims,charger_waits,longest_charger_wait_s,batteries_empty,success,reason,battery_min\n");
         for (Row r : rows) {
             if (r.crashed()) {
-                sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,0,,,,,,,,,false,\"%s\",%n", r.world(), r.robots(),
+                sb.append(String.format(Locale.ROOT, "%s,%d,%s,%d,0,,,,,,,,,false,\"%s\",%n", r.world(), r.robots(),
                         r.controller(), r.seed(), ("crash: " + r.crash()).replace("\"", "\"\"")));
                 continue;
             }
@@ -243,7 +294,7 @@ final class TeamSweepCommand implements Callable<Integer> {
             // each robot's lowest energy, J: a battery near empty shows before one runs empty
             String lowest = o.robots().stream().map(s -> s.batteryMin() == null ? "-" : String.format(Locale.ROOT, "%.0f", s.batteryMin()))
                     .collect(Collectors.joining(" "));
-            sb.append(String.format(Locale.ROOT, "team-delivery-gen-%d,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\",%s%n",
+            sb.append(String.format(Locale.ROOT, "%s,%d,%s,%d,%d,%s,%.1f,%.1f,%d,%d,%d,%.1f,%d,%s,\"%s\",%s%n",
                     r.world(), r.robots(), r.controller(), r.seed(), o.deliveries(), per, contact, o.figures().maxRobotContact(),
                     o.claims(), o.figures().doubleClaims(), o.chargerWaits(), o.figures().longestChargerWait(),
                     o.figures().batteriesEmptied(), success(o), reason(o).replace("\"", "\"\""), lowest));

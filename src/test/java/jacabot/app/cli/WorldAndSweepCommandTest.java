@@ -126,9 +126,31 @@ class WorldAndSweepCommandTest {
         assertTrue(lines.get(2).startsWith("team-delivery-gen-1,2,baseline,1,"), lines.get(2));
         assertFalse(Files.exists(dir.resolve("runs.csv.part")));
         String crash = TeamSweepCommand.csv(List.of(
-                new TeamSweepCommand.Row(7, 4, "agents", 2, null, "IllegalStateException: \"no robot\" at TeamLockstepRun.step:12")));
+                new TeamSweepCommand.Row("team-delivery-gen-7", 4, "agents", 2, null, "IllegalStateException: \"no robot\" at TeamLockstepRun.step:12")));
         assertEquals("team-delivery-gen-7,4,agents,2,0,,,,,,,,,false,\"crash: IllegalStateException: \"\"no robot\"\" at "
                 + "TeamLockstepRun.step:12\",", crash.lines().skip(1).findFirst().orElseThrow());
+    }
+
+    @Test
+    void aTeamSweepRunsAFoldersTeamWorldFilesAndRejectsABadOneBeforeAnyRun(@TempDir Path dir) throws Exception {
+        Path worlds = Files.createDirectories(dir.resolve("worlds"));
+        Files.copy(ROOT.resolve("worlds/team-delivery.json"), worlds.resolve("mine.json"));
+        var r = CliRun.run("sweep", "team-delivery", "--worlds", worlds.toString(), "--robots", "1,2", "--seeds", "1",
+                "--duration", "3s", "--controllers", "baseline", "--no-progress", "--out", dir.resolve("out").toString());
+        assertEquals("0", r[0], r[2]);
+        var lines = Files.readAllLines(dir.resolve("out/runs.csv"));
+        assertEquals(3, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(1).startsWith("mine,1,baseline,1,"), lines.get(1));
+        assertTrue(lines.get(2).startsWith("mine,2,baseline,1,"), lines.get(2));
+        Files.writeString(worlds.resolve("torn.json"), "{ \"name\": \"torn\",\n");
+        var bad = CliRun.run("sweep", "team-delivery", "--worlds", worlds.toString(), "--robots", "2", "--seeds", "1",
+                "--duration", "3s", "--out", dir.resolve("bad").toString());
+        assertEquals("2", bad[0]);
+        assertEquals(1, bad[2].strip().lines().count(), bad[2]);
+        assertTrue(bad[2].contains("torn.json") && bad[2].contains("line 2"), bad[2]);
+        assertFalse(Files.exists(dir.resolve("bad/runs.csv")));
+        var both = CliRun.run("sweep", "team-delivery", "--worlds", worlds.toString(), "--world-seeds", "1");
+        assertEquals("2", both[0]);
     }
 
     @Test
