@@ -148,7 +148,7 @@ class WorldAndSweepCommandTest {
         assertEquals("2", bad[0]);
         assertEquals(1, bad[2].strip().lines().count(), bad[2]);
         assertTrue(bad[2].contains("torn.json") && bad[2].contains("line 2"), bad[2]);
-        assertFalse(Files.exists(dir.resolve("bad/runs.csv")));
+        assertFalse(Files.exists(dir.resolve("bad")));                  // nothing written
         var both = CliRun.run("sweep", "team-delivery", "--worlds", worlds.toString(), "--world-seeds", "1");
         assertEquals("2", both[0]);
     }
