@@ -38,15 +38,6 @@ mock_operation(_, ok).
        !assert_true(mock_called(obstacleLevels(480, 300)));
        !assert_true(mock_called(deltaLimit(150))).
 
-// narrowSide is for a corridor-like arena (under 1 m across, 1 m or more long); a small arena
-// under 1 m each way keeps the thesis' wider margin, as a 1 m one does: with the closer levels a
-// 0.7-0.85 m arena with boxes 10-15 cm from the walls touched them 2-8 s a run
-@[test]
-+!test_set_up_in_a_small_arena_under_one_metre_each_way_keeps_the_thesis_obstacle_levels
-    <- !forget_calls; -+arena(0.8, 0.85); !setUpCoverage; -+arena(3, 3);
-       !assert_true(mock_called(odometry(_, _)));
-       !assert_false(mock_called(obstacleLevels(_, _))).
-
 // from 1.5 m2 on (closeArea), not only 2: a room of a split arena of 1.5-2 m2 stayed unvisited
 @[test]
 +!test_set_up_from_one_and_a_half_square_metres_gives_closer_obstacle_levels

@@ -37,10 +37,7 @@ exploreHorizon(0.6).
 // and 2; the default 1 m world keeps the thesis' levels). closeArea 1.5 m2, not 2: a room of an
 // arena of 1.5-2 m2 split by a wall (wide tuning world 122, 1.17 x 1.46 m) stayed the robot's own
 // with the thesis' margin, 36 and 45 % against 65 and 64 % (wide tuning 101-160 x 1-2: 93 -> 95,
-// no other run changed; docs/comparison-obstacle-avoidance.md, "closer levels from 1.5 m2").
-// narrowSide is a corridor's: under 1 m across and 1 m or more long. An arena under 1 m each way
-// keeps the thesis' margin, as the 1 m default world does (small arenas with boxes 10-15 cm from
-// the walls: with the closer levels the flank slid along the boxes, 2-8 s of contact a run)
+// no other run changed; docs/comparison-obstacle-avoidance.md, "closer levels from 1.5 m2")
 closeArea(1.5).
 narrowSide(1).
 // seeking, not in the thesis, and on only in an agent that believes seekShare(S) (S = 0.3 was
@@ -56,7 +53,7 @@ seekBelow(6).
 seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
-obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N & math.max(W, D) >= N).
+obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
 // and clears under 190, not 150 and 75 (deltaLevels; the middleware's deltaLimit, deltaClear): there
 // half the floor is 40 % or more of what ten minutes' drive crosses, and the long avoidance turns of
