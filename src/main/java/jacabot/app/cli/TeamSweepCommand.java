@@ -8,7 +8,6 @@ import jacabot.app.sweep.SweepRun;
 import jacabot.app.sweep.TeamDeliveryRun;
 import jacabot.app.world.TeamWorld;
 import jacabot.app.world.WorldGenerator;
-import jacabot.robot.Experiment;
 import jacabot.robot.run.RunSummary;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
@@ -29,7 +28,6 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -222,8 +220,7 @@ final class TeamSweepCommand implements Callable<Integer> {
 
     /** {@return whether a file is a team world: as the single-robot sweep's rule, named for the team or for no experiment} */
     private static boolean teamFile(String name) {
-        return name.endsWith(".json") && (name.startsWith(WorldGenerator.TEAM_DELIVERY)
-                || Stream.of(Experiment.values()).noneMatch(e -> name.startsWith(e.id())));
+        return name.endsWith(".json") && (name.startsWith(WorldGenerator.TEAM_DELIVERY) || SweepPlan.namedForNoExperiment(name));
     }
 
     /** The agents' run, its console (each line after its simulated time), event logs and world written to {@code dir}. */

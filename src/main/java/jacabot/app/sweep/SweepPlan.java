@@ -75,6 +75,15 @@ public final class SweepPlan {
     }
 
     /**
+     * {@return whether a world file's name starts with no experiment's id, the team's included: such a
+     * file belongs to whichever single experiment (or the team) a sweep of a folder is for}
+     */
+    public static boolean namedForNoExperiment(String fileName) {
+        return Stream.of(Experiment.values()).noneMatch(x -> fileName.startsWith(x.id()))
+                && !fileName.startsWith(WorldGenerator.TEAM_DELIVERY);
+    }
+
+    /**
      * {@return the world files of a directory (and its subdirectories) for each experiment: those whose
      * name starts with the experiment's id; when only one experiment is swept, also those that start
      * with no experiment's id nor the team experiment's}. A file the loader rejects stays in the list with its message.
@@ -89,9 +98,7 @@ public final class SweepPlan {
             for (Path f : files) {
                 String name = f.getFileName().toString();
                 boolean mine = name.startsWith(e.id());
-                boolean nobody = Stream.of(Experiment.values()).noneMatch(x -> name.startsWith(x.id()))
-                        && !name.startsWith(WorldGenerator.TEAM_DELIVERY); // a team's world is no single robot's
-                if (mine || nobody && experiments.size() == 1) {
+                if (mine || namedForNoExperiment(name) && experiments.size() == 1) {
                     String label = name.substring(0, name.length() - 5);
                     try {
                         out.add(new World(e, label, f, WorldFileReader.read(f), null));
