@@ -134,9 +134,8 @@ claimPlaceInView(Cx, Cz) :- location(X, _, Z) & orientation(O) & Dx = Cx - X & D
 // teammate within 0.5 m of the robot or of the place, and given up once one comes within 0.4 m of the
 // place: robots seeking again met teammates there (held out, four robots: contact under 2 s in 79 of 90 runs).
 @seekLostClaim
--homing(_) : teamSearch & searching & myClaim(Id) & not picked(true) & not picking & not charging
-    & lastSighted(S) & .system_time(T) & T - S >= 1500 & .my_name(Me) & claimed(Id, Me, Cx, Cz, _)
-    & awayFromStorage(Cx, Cz) & location(X, _, Z) & not teammateWithin(X, Z, 0.5) & not teammateWithin(Cx, Cz, 0.5)
+-homing(_) : myClaim(Id) & not picked(true) & not picking & lastSighted(_) & location(_, _, _) & .my_name(Me)
+    & claimed(Id, Me, Cx, Cz, _) & not unsoughtWhy(_) & .system_time(T)
     <- .abolish(seekingClaim(_, _, _, _)); .abolish(claimViewedSince(_)); +seekingClaim(Id, Cx, Cz, T);
        -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T); .print("Claim ", Id, " lost from sight: looking again").
 // recovery plans that give a cylinder up give its claim up
@@ -144,8 +143,8 @@ claimPlaceInView(Cx, Cz) :- location(X, _, Z) & orientation(O) & Dx = Cx - X & D
 -homing(_) : myClaim(Id) & not picked(true) & not picking & .findall(W, unsoughtWhy(W), Why)
     <- !releaseClaim(Id, homingOver(Why)); .print("Claim ", Id, " released").
 @releaseOnCharging +charging : myClaim(Id) & not picked(true) <- .abolish(seekingClaim(_, _, _, _)); !releaseClaim(Id, charging).
-// why a homing's end did not seek its claim again (@seekLostClaim's conditions that failed), for the
-// board's log of the release
+// why a homing's end does not seek its claim again: @seekLostClaim's context is that none holds (with
+// the last sighting, the robot's place and the claim known); the board's log of a release gives them
 unsoughtWhy(alone) :- not teamSearch.
 unsoughtWhy(notSearching) :- not searching.
 unsoughtWhy(charging) :- charging.
