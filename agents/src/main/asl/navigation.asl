@@ -31,6 +31,8 @@ lookSkip(0.6, 120000).
 // the sweep's way to a waypoint goes round the storage area (a lane across it led to and fro there)
 { include("skills/storage-bypass.asl") }
 { include("skills/delivery.asl") }
+// a cylinder knocked out of the gripper by the storage area is turned to and fetched (picking is off there otherwise)
+{ include("skills/knock-fetch.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }

@@ -41,6 +41,8 @@ quickTurns.
 // no progress in the storage area after the put-down: out towards the arena's centre
 { include("skills/storage-exit.asl") }
 { include("skills/delivery.asl") }
+// a cylinder knocked out of the gripper by the storage area is turned to and fetched (picking is off there otherwise)
+{ include("skills/knock-fetch.asl") }
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }

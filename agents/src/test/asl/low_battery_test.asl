@@ -219,3 +219,14 @@ mock_operation(_, ok).
        !assert_true(mock_called(computeAngle(0.47, -0.47, 0, 0, _)));   // towards the centre
        !assert_true(mock_called(forward));
        -insideArea; -~delivered; -stuck.
+
+// a cylinder knocked out of the gripper by the storage area may be picked there just after the fall
+// (knock-fetch.asl, as navigation and tidy-up): it lay within the storage clearance, never picked again
+@[test]
++!test_a_cylinder_knocked_out_by_the_storage_area_may_be_picked_there
+    <- ?location(X0, Y0, Z0); -+location(0.41, 0, -0.31);   // 0.1 m from the storage point
+       -fellNearStorageAt(_);
+       !assert_true(fallenNearStorage);
+       .system_time(T); +fellNearStorageAt(T);
+       !assert_true(fetchingKnocked);
+       -fellNearStorageAt(_); -+location(X0, Y0, Z0).

@@ -1,5 +1,5 @@
-// Skill test of a cylinder knocked out by the storage area (skills/knocked-aside.asl with delivery.asl,
-// tidy-up's): a fall within the storage clearance and knockFetchWithin counts as by the area; for
+// Skill test of a cylinder knocked out by the storage area (skills/knock-fetch.asl, which knocked-aside.asl
+// includes, with delivery.asl): a fall within the storage clearance and knockFetchWithin counts as by the area; for
 // knockFetch ms after it (fellNearStorageAt, noted by delivery's fall plan) a cylinder may be picked
 // near the storage point, where delivery otherwise allows none. The operations are mocked.
 { include("tester_agent.asl") }
