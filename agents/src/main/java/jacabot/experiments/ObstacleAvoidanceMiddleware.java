@@ -4,6 +4,7 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
+import java.util.ArrayDeque;
 
 /**
  * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
@@ -270,6 +271,110 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
+    /** The flank watch's level, window, margin and reach (NaN level: off), and the points it remembers: {ms, x, z}. */
+    private double flankLevel = Double.NaN, flankWindowMs, flankMargin, flankReach;
+    private final ArrayDeque<double[]> flankPoints = new ArrayDeque<>();
+    /** The wheel speeds in effect (the last wheel reading). */
+    private double wheelLeft, wheelRight;
+
+    /**
+     * From now on, remembers for {@code windowMs} ms where each front sensor read {@code level} or
+     * more (dead reckoning, where the reading puts the point, as {@code markWalls} does), and keeps
+     * the observable property {@code flankAhead(Side)} (not in the thesis): "left" or "right" while
+     * the robot drives forward and a remembered point lies in the strip its body sweeps
+     * ({@code margin} m wider than the body on each side), ahead of its centre and at most
+     * {@code reach} m beyond its rim, the side of the closest; else "none". A box beside the robot,
+     * out of the front sensors' sight once it has passed their cones, is what the flank touched after
+     * an avoidance turn. Fails before {@code odometry}, for a level under 1, a window under 40 ms, or
+     * a negative margin or reach.
+     */
+    @OPERATION
+    void flankWatch(double level, double windowMs, double margin, double reach) {
+        if (map == null || !(level >= 1) || !(windowMs >= 40) || !(margin >= 0) || !(reach >= 0)) {
+            failed("flankWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1, a window of 40 ms or more"
+                    + " and a margin and reach of 0 m or more, got " + level + ", " + windowMs + ", " + margin + ", " + reach);
+            return;
+        }
+        flankLevel = level;
+        flankWindowMs = windowMs;
+        flankMargin = margin;
+        flankReach = reach;
+        if (!hasObsProperty("flankAhead")) {
+            defineObsProperty("flankAhead", "none");
+        }
+    }
+
+    /**
+     * The smallest turn on the spot after which driving forward meets none of the flank watch's
+     * points (not in the thesis): {@code side} "left" or "right" (away from the closest point first
+     * on a tie) and how long to turn at wheel speeds ±{@code speed}; "none" when no turn of up to a
+     * half turn clears them. Fails before {@code flankWatch}.
+     */
+    @OPERATION
+    void flankTurn(double speed, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms) {
+        if (Double.isNaN(flankLevel) || !(speed > 0)) {
+            failed("flankTurn needs flankWatch(Level, WindowMs, Margin, Reach) first and a positive speed");
+            return;
+        }
+        forgetFlankPoints();
+        int away = -blockedSide(0);
+        for (int deg = 5; deg <= 180; deg += 5) {
+            for (int sign : new int[] {away == 0 ? 1 : away, away == 0 ? -1 : -away}) {
+                if (blockedSide(Math.toRadians(sign * deg)) == 0) {
+                    side.set(sign > 0 ? "left" : "right");
+                    ms.set((double) map.turnMillis(deg, speed));
+                    return;
+                }
+            }
+        }
+        side.set("none");
+        ms.set(0.0);
+    }
+
+    private void forgetFlankPoints() {
+        long now = simTimeMs();
+        while (!flankPoints.isEmpty() && now - flankPoints.peekFirst()[0] > flankWindowMs) {
+            flankPoints.pollFirst();
+        }
+    }
+
+    /** {@return 1 (left), -1 (right) or 0: the side of the closest remembered point in the path after a turn of {@code turn} radians (left positive)} */
+    private int blockedSide(double turn) {
+        double h = Math.toRadians(map.headingDegrees()) + turn, c = Math.cos(h), s = Math.sin(h);
+        double best = Double.POSITIVE_INFINITY;
+        int side = 0;
+        for (double[] p : flankPoints) {
+            double dx = p[1] - map.x(), dz = p[2] - map.z();
+            double ahead = dx * c + dz * s, left = -dx * s + dz * c, d = Math.hypot(ahead, left);
+            if (ahead > 0 && Math.abs(left) < RIM + flankMargin && d <= RIM + flankReach && d < best) {
+                best = d;
+                side = left >= 0 ? 1 : -1;
+            }
+        }
+        return side;
+    }
+
+    private void rememberFlankPoint(double reading, double bearing) {
+        if (map == null || Double.isNaN(flankLevel) || reading < flankLevel) {
+            return;
+        }
+        double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
+        flankPoints.addLast(new double[] {simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a)});
+    }
+
+    private void trackFlank() {
+        if (Double.isNaN(flankLevel)) {
+            return;
+        }
+        forgetFlankPoints();
+        int side = wheelLeft > 0 && wheelRight > 0 ? blockedSide(0) : 0;
+        String now = side > 0 ? "left" : side < 0 ? "right" : "none";
+        if (!now.equals(getObsProperty("flankAhead").stringValue())) {
+            getObsProperty("flankAhead").updateValue(now);
+            markTrigger();
+        }
+    }
+
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -282,6 +387,8 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double[] w = info.getDoubleValues();
             if (w.length >= 2) {
                 map.wheels(simTimeMs(), w[0], w[1]);
+                wheelLeft = w[0];
+                wheelRight = w[1];
             }
         }
         if (stopDistance) {
@@ -290,13 +397,16 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
+            rememberFlankPoint(info.getVal(), SENSOR_ANGLE);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
+            rememberFlankPoint(right, -SENSOR_ANGLE);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
+            trackFlank();
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
