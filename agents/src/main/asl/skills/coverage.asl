@@ -60,8 +60,9 @@ flankTime(2000).              // how long after an obstacle the robot may still 
 // its rim): a box the avoidance turn or its veer brought beside the body, out of the front sensors'
 // sight, which the leg after it touched (of the flank touches on wide tuning 101-160, seeds 1-2, most
 // are on the side the last avoidance turned to). Then the robot turns on the spot the least that
-// clears every point remembered (flankTurn), and a straight leg follows as after an obstacle
-flankWatch(200, 3000, 0.005, 0.03).
+// clears every point remembered (flankTurn), and a straight leg follows as after an obstacle.
+// Only in arenas under looseArea (below): in the big ones the turns cost more floor than the touches
+flankWatch(100, 3000, 0.005, 0.03) :- arena(W, D) & looseArea(A) & W * D < A.
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
 // and clears under 190, not 150 and 75 (deltaLevels; the middleware's deltaLimit, deltaClear): there

@@ -354,12 +354,36 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return side;
     }
 
-    private void rememberFlankPoint(double reading, double bearing) {
-        if (map == null || Double.isNaN(flankLevel) || reading < flankLevel) {
-            return;
+    /**
+     * The MyBot's sensor casts three rays, on its axis and {@value #RAY_SPREAD} degrees either side,
+     * the outer ones weighing {@value #OUTER_SHARE} of the reading: a box seen by the outer ray alone
+     * reads that share of what the ray meets.
+     */
+    static final double RAY_SPREAD = 15, OUTER_SHARE = 0.3045;
+    /** Each sensor's last outer-ray point not yet committed: {ms, x, z, reading}; null: none. */
+    private double[] leftGlimpse, rightGlimpse;
+
+    /**
+     * The last glimpse of a box leaving a sensor's cone outwards (the robot driving on, or turning
+     * away from that side), read as the outer ray's alone: the point that share of the reading puts
+     * it at, then at the flank, out of the front sensors' sight. A glimpse is kept once the reading
+     * falls to a third or under the level.
+     */
+    private double[] glimpse(double reading, double bearing, double[] last) {
+        if (map == null || Double.isNaN(flankLevel)) {
+            return null;
         }
-        double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
-        flankPoints.addLast(new double[] {simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a)});
+        double side = Math.signum(bearing);
+        boolean turningToward = side * (wheelRight - wheelLeft) > 0 && !(wheelLeft > 0 && wheelRight > 0);
+        if (last != null && (reading < last[3] / 3 || reading < flankLevel) && !turningToward) {
+            flankPoints.addLast(new double[] {last[0], last[1], last[2]});
+        }
+        if (reading < flankLevel || reading > OUTER_SHARE * 1000) {
+            return null;
+        }
+        double h = Math.toRadians(map.headingDegrees()), m = h + Math.toRadians(bearing), a = m + Math.toRadians(side * RAY_SPREAD);
+        double d = rangeOf(reading / OUTER_SHARE);
+        return new double[] {simTimeMs(), map.x() + RIM * Math.cos(m) + d * Math.cos(a), map.z() + RIM * Math.sin(m) + d * Math.sin(a), reading};
     }
 
     private void trackFlank() {
@@ -397,12 +421,12 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
-            rememberFlankPoint(info.getVal(), SENSOR_ANGLE);
+            leftGlimpse = glimpse(info.getVal(), SENSOR_ANGLE, leftGlimpse);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
-            rememberFlankPoint(right, -SENSOR_ANGLE);
+            rightGlimpse = glimpse(right, -SENSOR_ANGLE, rightGlimpse);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
