@@ -105,9 +105,6 @@ obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
-// the last obstacle, or the last turn away from a point at the flank
-avoidedAt(T) :- obstacleTimes([T | _]).
-avoidedAt(T) :- flankAt(T).
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
@@ -217,7 +214,7 @@ pausedUntil("-veering") :- veering.
 @moveRedraw +!move(N) : N <= 0.3 & stale <- .random(R); !move(R).
 // just after an obstacle, no turn on the spot: the robot may still touch it at its flank, out of
 // the sensors' sight; a straight leg leaves
-@moveAway +!move(N) : N > 0.3 & avoidedAt(T) & .system_time(Now) & flankTime(FT) & Now - T < FT <- !straightLeg.
+@moveAway +!move(N) : N > 0.3 & obstacleTimes([T | _]) & .system_time(Now) & flankTime(FT) & Now - T < FT <- !straightLeg.
 @moveOnCorridor +!move(N) : N > 0.3 & steeredAt(T) & .system_time(Now) & flankTime(FT) & Now - T < FT <- !straightLeg.
 // the turn towards the floor not yet crossed (exploreTurn, from dead reckoning), then a leg
 @moveExplore
