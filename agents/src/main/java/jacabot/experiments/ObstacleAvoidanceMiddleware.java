@@ -360,8 +360,11 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * reads that share of what the ray meets.
      */
     static final double RAY_SPREAD = 15, OUTER_SHARE = 0.3045;
-    /** Each sensor's last outer-ray point not yet committed: {ms, x, z, reading}; null: none. */
+    /** Each sensor's last outer-ray point not yet committed: {ms, x, z, reading, previous reading, outer ray alone (1) or not (0)}; null: none. */
     private double[] leftGlimpse, rightGlimpse;
+    /** Each sensor's previous reading, and whether its outer ray alone sees the box (a drop since the last rise). */
+    private double leftPrevious, rightPrevious;
+    private boolean leftOuter, rightOuter;
 
     /**
      * The last glimpse of a box leaving a sensor's cone outwards (the robot driving on, or turning
@@ -369,13 +372,13 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * it at, then at the flank, out of the front sensors' sight. A glimpse is kept once the reading
      * falls to a third or under the level.
      */
-    private double[] glimpse(double reading, double bearing, double[] last) {
+    private double[] glimpse(double reading, double bearing, double[] last, boolean outer) {
         if (map == null || Double.isNaN(flankLevel)) {
             return null;
         }
         double side = Math.signum(bearing);
         boolean turningToward = side * (wheelRight - wheelLeft) > 0 && !(wheelLeft > 0 && wheelRight > 0);
-        if (last != null && (reading < last[3] / 3 || reading < flankLevel) && !turningToward) {
+        if (last != null && (reading < last[3] / 3 || reading < flankLevel) && !turningToward && outer) {
             flankPoints.addLast(new double[] {last[0], last[1], last[2]});
         }
         if (reading < flankLevel || reading > OUTER_SHARE * 1000) {
@@ -384,6 +387,14 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         double h = Math.toRadians(map.headingDegrees()), m = h + Math.toRadians(bearing), a = m + Math.toRadians(side * RAY_SPREAD);
         double d = rangeOf(reading / OUTER_SHARE);
         return new double[] {simTimeMs(), map.x() + RIM * Math.cos(m) + d * Math.cos(a), map.z() + RIM * Math.sin(m) + d * Math.sin(a), reading};
+    }
+
+    /** {@return whether the outer ray alone sees the box now: a drop to under 0.6 of the reading before (the axis ray left: with the three rays at one distance, 0.44; the inner ray, 0.70) since the last rise, in the outer ray's range} */
+    private static boolean outerAlone(boolean was, double previous, double reading) {
+        if (reading > OUTER_SHARE * 1000 || reading > previous * 1.3) {
+            return false;
+        }
+        return was || reading < previous * 0.6;
     }
 
     private void trackFlank() {
@@ -421,12 +432,19 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
-            leftGlimpse = glimpse(info.getVal(), SENSOR_ANGLE, leftGlimpse);
+            double left = info.getVal();
+            boolean outer = leftOuter;
+            leftOuter = outerAlone(leftOuter, leftPrevious, left);
+            leftPrevious = left;
+            leftGlimpse = glimpse(left, SENSOR_ANGLE, leftGlimpse, outer);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
-            rightGlimpse = glimpse(right, -SENSOR_ANGLE, rightGlimpse);
+            boolean outer = rightOuter;
+            rightOuter = outerAlone(rightOuter, rightPrevious, right);
+            rightPrevious = right;
+            rightGlimpse = glimpse(right, -SENSOR_ANGLE, rightGlimpse, outer);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
