@@ -53,16 +53,6 @@ seekBelow(6).
 seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
-// the flank watch, not in the thesis (the middleware's flankWatch(Level, WindowMs, Margin, Reach)):
-// every front reading of Level or more is remembered for WindowMs ms where it puts the wall or box
-// (dead reckoning), and flankAhead(Side) says when the robot drives forward towards one of those
-// points in the strip its body sweeps (Margin m wider than the body each side, up to Reach m beyond
-// its rim): a box the avoidance turn or its veer brought beside the body, out of the front sensors'
-// sight, which the leg after it touched (of the flank touches on wide tuning 101-160, seeds 1-2, most
-// are on the side the last avoidance turned to). Then the robot turns on the spot the least that
-// clears every point remembered (flankTurn), and a straight leg follows as after an obstacle.
-// Only in arenas under looseArea (below): in the big ones the turns cost more floor than the touches
-flankWatch(100, 3000, 0.005, 0.03) :- arena(W, D) & looseArea(A) & W * D < A.
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
 // and clears under 190, not 150 and 75 (deltaLevels; the middleware's deltaLimit, deltaClear): there
@@ -108,7 +98,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
-// Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn, flankAhead (the middleware's); seekShare(S) (the agent's, if any); its own
+// Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
 // seeking(Until) and soughtAt(T). Needs: !clear (recovery). Include it before recovery (its escape,
 // a turn on the spot, is the one this robot uses).
 
@@ -118,8 +108,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (flankWatch(FL, FW, FM, FR)) { flankWatch(FL, FW, FM, FR) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
@@ -157,17 +146,6 @@ pausedUntil("-veering") :- veering.
        .wait(40); !steer.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
 @steerDone +!steer <- .system_time(T); -+steeredAt(T).
-
-// a remembered point in the path beside the body (flankWatch above): the least turn on the spot that
-// clears them all, else the escape; the move or veer under way ends, the next move is a straight leg
-@flankAway
-+flankAhead(S) : S \== "none" & not avoiding & turnSpeed(V)
-    <- +avoiding; -veering; .succeed_goal(move(_)); .succeed_goal(veer(_));
-       .system_time(T); -+flankAt(T); flankTurn(V, Side, Ms);
-       if (Side == "left") { setSpeeds(-V, V); .wait(Ms); stop }
-       elif (Side == "right") { setSpeeds(V, -V); .wait(Ms); stop }
-       else { !escape };
-       -avoiding.
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)

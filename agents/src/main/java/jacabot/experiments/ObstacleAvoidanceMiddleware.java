@@ -4,7 +4,6 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
-import java.util.ArrayDeque;
 
 /**
  * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
@@ -271,145 +270,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The flank watch's level, window, margin and reach (NaN level: off), and the points it remembers: {ms, x, z}. */
-    private double flankLevel = Double.NaN, flankWindowMs, flankMargin, flankReach;
-    private final ArrayDeque<double[]> flankPoints = new ArrayDeque<>();
-    /** The wheel speeds in effect (the last wheel reading). */
-    private double wheelLeft, wheelRight;
-
-    /**
-     * From now on, remembers for {@code windowMs} ms where each front sensor read {@code level} or
-     * more (dead reckoning, where the reading puts the point, as {@code markWalls} does), and keeps
-     * the observable property {@code flankAhead(Side)} (not in the thesis): "left" or "right" while
-     * the robot drives forward and a remembered point lies in the strip its body sweeps
-     * ({@code margin} m wider than the body on each side), ahead of its centre and at most
-     * {@code reach} m beyond its rim, the side of the closest; else "none". A box beside the robot,
-     * out of the front sensors' sight once it has passed their cones, is what the flank touched after
-     * an avoidance turn. Fails before {@code odometry}, for a level under 1, a window under 40 ms, or
-     * a negative margin or reach.
-     */
-    @OPERATION
-    void flankWatch(double level, double windowMs, double margin, double reach) {
-        if (map == null || !(level >= 1) || !(windowMs >= 40) || !(margin >= 0) || !(reach >= 0)) {
-            failed("flankWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1, a window of 40 ms or more"
-                    + " and a margin and reach of 0 m or more, got " + level + ", " + windowMs + ", " + margin + ", " + reach);
-            return;
-        }
-        flankLevel = level;
-        flankWindowMs = windowMs;
-        flankMargin = margin;
-        flankReach = reach;
-        if (!hasObsProperty("flankAhead")) {
-            defineObsProperty("flankAhead", "none");
-        }
-    }
-
-    /**
-     * The smallest turn on the spot after which driving forward meets none of the flank watch's
-     * points (not in the thesis): {@code side} "left" or "right" (away from the closest point first
-     * on a tie) and how long to turn at wheel speeds ±{@code speed}; "none" when no turn of up to a
-     * half turn clears them. Fails before {@code flankWatch}.
-     */
-    @OPERATION
-    void flankTurn(double speed, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms) {
-        if (Double.isNaN(flankLevel) || !(speed > 0)) {
-            failed("flankTurn needs flankWatch(Level, WindowMs, Margin, Reach) first and a positive speed");
-            return;
-        }
-        forgetFlankPoints();
-        int away = -blockedSide(0);
-        for (int deg = 5; deg <= 180; deg += 5) {
-            for (int sign : new int[] {away == 0 ? 1 : away, away == 0 ? -1 : -away}) {
-                if (blockedSide(Math.toRadians(sign * deg)) == 0) {
-                    side.set(sign > 0 ? "left" : "right");
-                    ms.set((double) map.turnMillis(deg, speed));
-                    return;
-                }
-            }
-        }
-        side.set("none");
-        ms.set(0.0);
-    }
-
-    private void forgetFlankPoints() {
-        long now = simTimeMs();
-        while (!flankPoints.isEmpty() && now - flankPoints.peekFirst()[0] > flankWindowMs) {
-            flankPoints.pollFirst();
-        }
-    }
-
-    /** {@return 1 (left), -1 (right) or 0: the side of the closest remembered point in the path after a turn of {@code turn} radians (left positive)} */
-    private int blockedSide(double turn) {
-        double h = Math.toRadians(map.headingDegrees()) + turn, c = Math.cos(h), s = Math.sin(h);
-        double best = Double.POSITIVE_INFINITY;
-        int side = 0;
-        for (double[] p : flankPoints) {
-            double dx = p[1] - map.x(), dz = p[2] - map.z();
-            double ahead = dx * c + dz * s, left = -dx * s + dz * c, d = Math.hypot(ahead, left);
-            if (ahead > 0 && Math.abs(left) < RIM + flankMargin && d <= RIM + flankReach && d < best) {
-                best = d;
-                side = left >= 0 ? 1 : -1;
-            }
-        }
-        return side;
-    }
-
-    /**
-     * The MyBot's sensor casts three rays, on its axis and {@value #RAY_SPREAD} degrees either side,
-     * the outer ones weighing {@value #OUTER_SHARE} of the reading: a box seen by the outer ray alone
-     * reads that share of what the ray meets.
-     */
-    static final double RAY_SPREAD = 15, OUTER_SHARE = 0.3045;
-    /** Each sensor's last outer-ray point not yet committed: {ms, x, z, reading, previous reading, outer ray alone (1) or not (0)}; null: none. */
-    private double[] leftGlimpse, rightGlimpse;
-    /** Each sensor's previous reading, and whether its outer ray alone sees the box (a drop since the last rise). */
-    private double leftPrevious, rightPrevious;
-    private boolean leftOuter, rightOuter;
-
-    /**
-     * The last glimpse of a box leaving a sensor's cone outwards (the robot driving on, or turning
-     * away from that side), read as the outer ray's alone: the point that share of the reading puts
-     * it at, then at the flank, out of the front sensors' sight. A glimpse is kept once the reading
-     * falls to a third or under the level.
-     */
-    private double[] glimpse(double reading, double bearing, double[] last, boolean outer) {
-        if (map == null || Double.isNaN(flankLevel)) {
-            return null;
-        }
-        double side = Math.signum(bearing);
-        boolean turningToward = side * (wheelRight - wheelLeft) > 0 && !(wheelLeft > 0 && wheelRight > 0);
-        if (last != null && (reading < last[3] / 3 || reading < flankLevel) && !turningToward && outer) {
-            flankPoints.addLast(new double[] {last[0], last[1], last[2]});
-        }
-        if (reading < flankLevel || reading > OUTER_SHARE * 1000) {
-            return null;
-        }
-        double h = Math.toRadians(map.headingDegrees()), m = h + Math.toRadians(bearing), a = m + Math.toRadians(side * RAY_SPREAD);
-        double d = rangeOf(reading / OUTER_SHARE);
-        return new double[] {simTimeMs(), map.x() + RIM * Math.cos(m) + d * Math.cos(a), map.z() + RIM * Math.sin(m) + d * Math.sin(a), reading};
-    }
-
-    /** {@return whether the outer ray alone sees the box now: a drop to under 0.6 of the reading before (the axis ray left: with the three rays at one distance, 0.44; the inner ray, 0.70) since the last rise, in the outer ray's range} */
-    private static boolean outerAlone(boolean was, double previous, double reading) {
-        if (reading > OUTER_SHARE * 1000 || reading > previous * 1.3) {
-            return false;
-        }
-        return was || reading < previous * 0.6;
-    }
-
-    private void trackFlank() {
-        if (Double.isNaN(flankLevel)) {
-            return;
-        }
-        forgetFlankPoints();
-        int side = wheelLeft > 0 && wheelRight > 0 ? blockedSide(0) : 0;
-        String now = side > 0 ? "left" : side < 0 ? "right" : "none";
-        if (!now.equals(getObsProperty("flankAhead").stringValue())) {
-            getObsProperty("flankAhead").updateValue(now);
-            markTrigger();
-        }
-    }
-
     private void markReading(double reading, double bearing) {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
@@ -422,8 +282,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double[] w = info.getDoubleValues();
             if (w.length >= 2) {
                 map.wheels(simTimeMs(), w[0], w[1]);
-                wheelLeft = w[0];
-                wheelRight = w[1];
             }
         }
         if (stopDistance) {
@@ -432,23 +290,13 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
-            double left = info.getVal();
-            boolean outer = leftOuter;
-            leftOuter = outerAlone(leftOuter, leftPrevious, left);
-            leftPrevious = left;
-            leftGlimpse = glimpse(left, SENSOR_ANGLE, leftGlimpse, outer);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
-            boolean outer = rightOuter;
-            rightOuter = outerAlone(rightOuter, rightPrevious, right);
-            rightPrevious = right;
-            rightGlimpse = glimpse(right, -SENSOR_ANGLE, rightGlimpse, outer);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            trackFlank();
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
