@@ -85,22 +85,13 @@ final class ExplorationMap {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < DIRECTIONS; k++) {
             double turn = k <= DIRECTIONS / 2 ? k * 360.0 / DIRECTIONS : (k - DIRECTIONS) * 360.0 / DIRECTIONS;
-            double score = score(heading + Math.toRadians(turn)) - turnCells(turn);
+            double score = score(heading + Math.toRadians(turn)) - Math.abs(turn) / 360.0;
             if (score > bestScore) {
                 bestScore = score;
                 best = turn;
             }
         }
         return best;
-    }
-
-    /**
-     * What a turn of {@code degrees} on the spot costs, in cells: the distance a wheel travels in it
-     * (half the axle times the angle), which the robot would have driven straight in the same time at the
-     * same wheel speed.
-     */
-    double turnCells(double degrees) {
-        return Math.toRadians(Math.abs(degrees)) * axle / 2 / CELL;
     }
 
     private double score(double a) {
