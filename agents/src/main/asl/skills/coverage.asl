@@ -25,7 +25,6 @@ staleLimit(2000).             // how long a straight leg may go over floor alrea
 // the floor beyond a wall looked new, so the robot followed the walls (generated worlds: 126 -> 134
 // of 150, held out 126 -> 133)
 exploreHorizon(0.6).
-squareDry(30000, 3).
 // in an arena of closeArea m2 or more, closer to obstacles: obstacle at a front reading over 480
 // (about 5 cm; the thesis: 350, about 8 cm), clear under 300 (200), or a left-right difference over
 // 150 (100): with the thesis' levels the floor next to walls and boxes, a large share of a big
@@ -109,7 +108,6 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (squareDry(SW, SK)) { squareWhenDry(SW, SK) };
        if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */

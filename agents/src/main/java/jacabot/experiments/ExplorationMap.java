@@ -32,9 +32,6 @@ final class ExplorationMap {
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
-    private double axisC, axisS; // the walls' orientation met square on: mean of (cos 4h, sin 4h), decaying
-    private long dryWindowMs = -1;
-    private int dryCells;
 
     /**
      * @param speedUnit metres per second of one wheel speed unit
@@ -83,56 +80,8 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
-    /** A wall met square on now (both front sensors alike): its orientation, heading modulo 90 degrees, is learnt when the robot drives straight ahead. */
-    void squareOn() {
-        if (left > 0 && left == right) {
-            axisC = 0.8 * axisC + 0.2 * Math.cos(4 * heading);
-            axisS = 0.8 * axisS + 0.2 * Math.sin(4 * heading);
-        }
-    }
-
-    /** Once fewer than {@code cells} new cells came in the last {@code windowMs}, a turn with no new floor in sight squares the heading on the walls' orientation. */
-    void squareWhenDry(long windowMs, int cells) {
-        dryWindowMs = windowMs;
-        dryCells = cells;
-    }
-
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
-        if (dryWindowMs >= 0 && Math.hypot(axisC, axisS) > 0.3 && freshCellsSince(lastMs - dryWindowMs) < dryCells) {
-            double axis = Math.atan2(axisS, axisC) / 4;
-            double d = Math.toDegrees(axis - heading);
-            double near = ((d % 90) + 135) % 90 - 45, best = near, bestScore = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < 4; k++) {
-                double t = ((near + 90 * k) % 360 + 540) % 360 - 180;
-                double sc = score(heading + Math.toRadians(t)) - Math.abs(t) / 360.0;
-                if (sc > bestScore) {
-                    bestScore = sc;
-                    best = t;
-                }
-            }
-            return best;
-        }
-        double turn = freshTurn();
-        if (turn == 0 && dryWindowMs >= 0 && Math.hypot(axisC, axisS) > 0.3 && freshCellsSince(lastMs - dryWindowMs) < dryCells
-                && score(heading) <= 0) {
-            double axis = Math.atan2(axisS, axisC) / 4;
-            double d = Math.toDegrees(axis - heading);
-            double near = ((d % 90) + 135) % 90 - 45, best = near, bestScore = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < 4; k++) {
-                double t = ((near + 90 * k) % 360 + 540) % 360 - 180;
-                double sc = score(heading + Math.toRadians(t), HORIZON) - Math.abs(t) / 360.0;
-                if (sc > bestScore) {
-                    bestScore = sc;
-                    best = t;
-                }
-            }
-            return best;
-        }
-        return turn;
-    }
-
-    private double freshTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < DIRECTIONS; k++) {
             double turn = k <= DIRECTIONS / 2 ? k * 360.0 / DIRECTIONS : (k - DIRECTIONS) * 360.0 / DIRECTIONS;
@@ -146,10 +95,6 @@ final class ExplorationMap {
     }
 
     private double score(double a) {
-        return score(a, horizon);
-    }
-
-    private double score(double a, double horizon) {
         int fresh = 0;
         long previous = key(x, z);
         for (double d = CELL / 2; d <= horizon + 1e-9; d += CELL / 2) {

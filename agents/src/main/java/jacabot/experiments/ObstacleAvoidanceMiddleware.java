@@ -104,15 +104,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
      * Fails before {@code odometry} or under 0.1 m.
      */
     @OPERATION
-    void squareWhenDry(double windowMs, double cells) {
-        if (map == null) {
-            failed("squareWhenDry needs odometry first");
-            return;
-        }
-        map.squareWhenDry(Math.round(windowMs), (int) cells);
-    }
-
-    @OPERATION
     void exploreHorizon(double metres) {
         if (map == null || !(metres >= ExplorationMap.CELL)) {
             failed("exploreHorizon needs odometry(SpeedUnit, AxleLength) first and at least " + ExplorationMap.CELL + " m, got " + metres);
@@ -306,9 +297,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
-            if (map != null && left >= 200 && right >= 200 && Math.abs(left - right) <= 0.1 * Math.max(left, right)) {
-                map.squareOn();
-            }
             double delta = Math.round(left - right);
             getObsProperty("delta").updateValue(delta);
             boolean obstacle = getObsProperty("obstacle").booleanValue();
