@@ -64,9 +64,11 @@ final class RouteMap {
     private List<Integer> lastPlan;
     /** Per cell: whether the robot's centre has stood there (a doorway it drove through is open). */
     private final BitSet driven;
+    /** Per cell: whether a distance sensor saw the floor there free (a guessed face ends there: {@link #seenFree}). */
+    private final BitSet seenFree;
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
-    private int lastDriven = -1;
+    private int lastDriven = -1, lastSeenFree = -1;
 
     /**
      * @param width     the arena's side along x, metres
@@ -88,6 +90,7 @@ final class RouteMap {
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
         driven = new BitSet(cols * rows);
+        seenFree = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -130,10 +133,24 @@ final class RouteMap {
     }
 
     /**
+     * A distance sensor saw no obstacle at (x, z), within its reach: a face guessed to go on ends there
+     * ({@link #guessWalls}: the doorway beside a wall the robot drives along, seen open, is taken).
+     */
+    void seenFree(double x, double z) {
+        int c = cell(x, z);
+        if (c >= 0) {
+            seenFree.set(c);
+        }
+    }
+
+    /**
      * Guess that a wall's face seen goes on for {@code metres} past its seen end, where the robot has not
-     * driven (not in the thesis): crossing that line costs as much as a cell within the clearance, so a
-     * route takes a doorway the robot drove through before a way round the face's unseen end (floor
-     * never seen is free otherwise). 0 turns the guess off.
+     * driven or seen free (not in the thesis): crossing a cell of that line costs twice the guess's
+     * length, more than the way round its far end and back, so a route takes a doorway the robot drove
+     * through before a way round the face's unseen end (floor never seen is free otherwise), and along
+     * the face it goes on beside the wall until the wall's end or a doorway is seen, where a route
+     * through the part of the face not seen yet turned the robot into the wall at every plan (it
+     * crept along a long wall at 1 cm/s). 0 turns the guess off.
      */
     void guessWalls(double metres) {
         guessCells = (int) Math.round(Math.max(0, metres) / CELL);
@@ -163,10 +180,12 @@ final class RouteMap {
             return new double[] {tx, tz};
         }
         BitSet live = live(nowMs);
-        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven);
+        boolean sameMap = live.equals(lastLive)
+                && (guessCells == 0 || driven.cardinality() == lastDriven && seenFree.cardinality() == lastSeenFree);
         if (!sameMap) {
             lastLive = live;
             lastDriven = driven.cardinality();
+            lastSeenFree = seenFree.cardinality();
             lastNear = nearCosts(live);
             lastPlan = null;
         }
@@ -236,8 +255,9 @@ final class RouteMap {
         return near;
     }
 
-    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven cell. */
+    /** Raises the cells past each face's seen end, along it, to twice {@link #guessCells}, up to {@link #guessCells} or a driven or seen free cell. */
     private void guessFaces(BitSet live, double[] near) {
+        double guessCost = Math.max(NEAR_COST, 2.0 * guessCells);
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
             int i = c % cols, j = c / cols;
@@ -247,10 +267,11 @@ final class RouteMap {
                 }
                 for (int k = 1; k <= guessCells; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
-                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || band(live, a, b, d)) {
+                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || seenFree.get(index(a, b))
+                            || band(live, a, b, d)) {
                         break;
                     }
-                    raise(near, index(a, b), NEAR_COST);
+                    raise(near, index(a, b), guessCost);
                 }
             }
         }
