@@ -40,14 +40,6 @@ final class RouteMap {
      * wall's face, when the map guesses walls on ({@link #guessWalls}).
      */
     static final int FACE_RUN = 8;
-    /**
-     * A cell of a face guessed to go on costs this much more than the next one farther from the face's
-     * seen end: more than the two cells of path a crossing one cell farther adds (out along the face
-     * and back), so a route that crosses the guessed line crosses it at its far end, and the robot goes
-     * along the wall, where a route through the part of the face just past its seen end turned it into
-     * the wall at every plan (it crept along a long wall at 1-2 cm/s).
-     */
-    static final double GUESS_SLOPE = 4;
 
     private final int cols, rows;
     private final double halfW, halfD, clearance;
@@ -153,10 +145,9 @@ final class RouteMap {
 
     /**
      * Guess that a wall's face seen goes on for {@code metres} past its seen end, where the robot has not
-     * driven or seen free (not in the thesis): crossing that line costs at least as much as a cell
-     * within the clearance, and more the nearer the seen end ({@link #GUESS_SLOPE}), so a route takes a
-     * doorway the robot drove through before a way round the face's unseen end (floor never seen is
-     * free otherwise), and goes on beside the wall until its end or a doorway is seen free. 0 turns the
+     * driven or seen free by a side sensor (not in the thesis): crossing that line costs as much as a
+     * cell within the clearance, so a route takes a doorway the robot drove through or saw open beside
+     * it before a way round the face's unseen end (floor never seen is free otherwise). 0 turns the
      * guess off.
      */
     void guessWalls(double metres) {
@@ -262,10 +253,7 @@ final class RouteMap {
         return near;
     }
 
-    /**
-     * Raises the cells past each face's seen end, along it, up to {@link #guessCells} or a driven or seen
-     * free cell: the last by {@link #NEAR_COST}, each nearer the seen end by {@link #GUESS_SLOPE} more.
-     */
+    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven or seen free cell. */
     private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
@@ -280,7 +268,7 @@ final class RouteMap {
                             || band(live, a, b, d)) {
                         break;
                     }
-                    raise(near, index(a, b), NEAR_COST + GUESS_SLOPE * (guessCells - k));
+                    raise(near, index(a, b), NEAR_COST);
                 }
             }
         }
