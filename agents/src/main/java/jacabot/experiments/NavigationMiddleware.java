@@ -155,10 +155,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         return CALIBRATION[CALIBRATION.length - 1][1];
     }
 
-    /**
-     * Puts what a distance sensor sees on the route map: the point of the obstacle's surface, or, under
-     * {@link #MAP_LEVEL}, the floor along a side sensor's ray within the level's reach seen free.
-     */
+    /** Puts what a distance sensor sees on the route map: the point of the obstacle's surface. */
     private void mapReading(SensorKind kind, double value) {
         if (routes == null) {
             return; // no map asked for: nothing more per reading
@@ -166,23 +163,10 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         Double bearing = SENSOR_BEARING.get(kind);
         double[] here = position();
         double compass = heading();
-        if (bearing == null || here == null || Double.isNaN(compass)) {
+        if (bearing == null || here == null || Double.isNaN(compass) || !(value > MAP_LEVEL)) {
             return;
         }
-        double a = Math.toRadians(compass + bearing);
-        if (!(value > MAP_LEVEL)) {
-            // a side sensor sees nothing within the level's reach: the floor there seen free, beside the
-            // robot (the sensors ahead, looking along a wall's face past its seen end, fell short of it by
-            // less than a cell of the map and took the face's cells for free floor)
-            if (Math.abs(bearing) != 90) {
-                return;
-            }
-            for (double r = KHEPERA_RADIUS; r <= KHEPERA_RADIUS + rangeOf(MAP_LEVEL); r += RouteMap.CELL / 2) {
-                routes.seenFree(here[0] + r * Math.cos(a), here[1] + r * Math.sin(a));
-            }
-            return;
-        }
-        double d = KHEPERA_RADIUS + rangeOf(value);
+        double a = Math.toRadians(compass + bearing), d = KHEPERA_RADIUS + rangeOf(value);
         double px = here[0] + d * Math.cos(a), pz = here[1] + d * Math.sin(a);
         if (getObsProperty("caught").booleanValue()) {
             double h = Math.toRadians(compass);

@@ -64,11 +64,9 @@ final class RouteMap {
     private List<Integer> lastPlan;
     /** Per cell: whether the robot's centre has stood there (a doorway it drove through is open). */
     private final BitSet driven;
-    /** Per cell: whether a distance sensor saw the floor there free (a guessed face ends there: {@link #seenFree}). */
-    private final BitSet seenFree;
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
-    private int lastDriven = -1, lastSeenFree = -1;
+    private int lastDriven = -1;
 
     /**
      * @param width     the arena's side along x, metres
@@ -90,7 +88,6 @@ final class RouteMap {
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
         driven = new BitSet(cols * rows);
-        seenFree = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -133,22 +130,10 @@ final class RouteMap {
     }
 
     /**
-     * A distance sensor saw no obstacle at (x, z), within its reach: a face guessed to go on ends there
-     * ({@link #guessWalls}: the doorway beside a wall the robot drives along, seen open, is taken).
-     */
-    void seenFree(double x, double z) {
-        int c = cell(x, z);
-        if (c >= 0) {
-            seenFree.set(c);
-        }
-    }
-
-    /**
      * Guess that a wall's face seen goes on for {@code metres} past its seen end, where the robot has not
-     * driven or seen free by a side sensor (not in the thesis): crossing that line costs as much as a
-     * cell within the clearance, so a route takes a doorway the robot drove through or saw open beside
-     * it before a way round the face's unseen end (floor never seen is free otherwise). 0 turns the
-     * guess off.
+     * driven (not in the thesis): crossing that line costs as much as a cell within the clearance, so a
+     * route takes a doorway the robot drove through before a way round the face's unseen end (floor
+     * never seen is free otherwise). 0 turns the guess off.
      */
     void guessWalls(double metres) {
         guessCells = (int) Math.round(Math.max(0, metres) / CELL);
@@ -178,12 +163,10 @@ final class RouteMap {
             return new double[] {tx, tz};
         }
         BitSet live = live(nowMs);
-        boolean sameMap = live.equals(lastLive)
-                && (guessCells == 0 || driven.cardinality() == lastDriven && seenFree.cardinality() == lastSeenFree);
+        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven);
         if (!sameMap) {
             lastLive = live;
             lastDriven = driven.cardinality();
-            lastSeenFree = seenFree.cardinality();
             lastNear = nearCosts(live);
             lastPlan = null;
         }
@@ -253,7 +236,7 @@ final class RouteMap {
         return near;
     }
 
-    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven or seen free cell. */
+    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven cell. */
     private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
@@ -264,8 +247,7 @@ final class RouteMap {
                 }
                 for (int k = 1; k <= guessCells; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
-                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || seenFree.get(index(a, b))
-                            || band(live, a, b, d)) {
+                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || band(live, a, b, d)) {
                         break;
                     }
                     raise(near, index(a, b), NEAR_COST);

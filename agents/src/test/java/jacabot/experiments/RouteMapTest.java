@@ -109,35 +109,6 @@ class RouteMapTest {
         assertTrue(guessed > -0.95 && guessed < -0.8, "with it, through the doorway driven through: z = " + guessed);
     }
 
-    /**
-     * A long wall's face seen along z = -0.3 from x = -1 to 0, the robot beside it at its seen end, the
-     * target behind it. The face is guessed to go on a metre: the route crosses the guessed line just
-     * past the seen end (the cheapest crossing); where a side sensor saw the floor on the face's line
-     * free (a doorway beside the robot), the guess ends and the route takes the doorway.
-     */
-    @Test
-    void aFaceGuessedToGoOnEndsWhereItsLineIsSeenFree() {
-        RouteMap guessing = new RouteMap(3, 3, 0.04, 60_000);
-        guessing.guessWalls(1.0);
-        for (double x = -1; x <= 0; x += 0.01) {
-            guessing.obstacle(x, -0.301, 0);
-        }
-        guessing.waypoint(-0.1, -0.23, 0.3, -0.9, 100);
-        double guessed = lineCrossingOf(guessing.lastRoute());
-        assertTrue(guessed < 0.15, "across the guessed line past the seen end: x = " + guessed);
-        for (double x = 0.25; x <= 0.45; x += 0.01) {
-            guessing.seenFree(x, -0.301);
-        }
-        guessing.waypoint(-0.1, -0.23, 0.3, -0.9, 200);
-        double doorway = lineCrossingOf(guessing.lastRoute());
-        assertTrue(doorway > 0.2 && doorway < 0.45, "through the line seen free: x = " + doorway);
-    }
-
-    /** {@return x where the route first passes z = -0.32, beyond the face's line} */
-    private static double lineCrossingOf(List<double[]> route) {
-        return route.stream().filter(p -> p[1] < -0.32).findFirst().orElseThrow()[0];
-    }
-
     private static double crossingOf(List<double[]> route) {
         return route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow()[1];
     }
