@@ -8,8 +8,8 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // while the battery covers the time left, a charge ends once it covers it and 100 J (2 W); near approach at 85
 resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85).
 !start.
-// trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point re-aligned when 3 degrees
-// off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside); the lanes in vain: the storage area's rim (pile-rim)
+// trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
+// re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)
 offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/initial-phase.asl") }
 { include("skills/route.asl") }
@@ -21,11 +21,11 @@ offBy(3) :- delivering & targetPoint(Tx, Tz) & nearTarget(Tx, Tz).
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
 { include("skills/search-memory.asl") }
-{ include("skills/pile-rim.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }
 { include("skills/random-walk.asl") }
+
 // after each delivery and each recharge: is every cylinder stored? If not, a look around first
 @doneDelivering -~delivered <- +lookFirst; !parkIfDone.
 @doneRecharging -charging <- +lookFirst; !parkIfDone.

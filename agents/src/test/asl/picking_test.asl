@@ -1,6 +1,6 @@
 // Skill test of picking a red cylinder up (skills/picking.asl): a cylinder ahead is caught and
 // lifted, each step checked within its time limit, and then handed on (!go_ahead); a lateral one
-// is turned to and approached first (not while reachOff holds); none is taken while pickingOff holds; a missed catch or an
+// is turned to and approached first; none is taken while pickingOff holds; a missed catch or an
 // arm that does not rise lets the cylinder go. The operations are mocked (agents/README.md
 // "Testing skills").
 { include("tester_agent.asl") }
@@ -52,15 +52,6 @@ mock_operation(_, ok).
        .wait(300); -pickingOff; -cylinderDetected; -cylinderRight;
        !assert_false(picking);
        !assert_false(mock_called(catching));
-       !assert_false(mock_called(setSpeeds(10, 0))).
-
-// a skill's reachOff (pile-rim's, by the stored pile) stops the lateral reaches, not the pick ahead
-@[test]
-+!test_no_lateral_reach_while_reach_is_off
-    <- !forget_calls; +reachOff; !!perceive(cylinderLeft); !!perceive(cylinderRight);
-       .wait(300); -reachOff; -cylinderLeft; -cylinderRight;
-       !assert_true(reachCylinder(false));
-       !assert_false(mock_called(setSpeeds(0, 10)));
        !assert_false(mock_called(setSpeeds(10, 0))).
 
 // a lateral reach whose cylinder comes in front once picking is off (a low battery meanwhile): the

@@ -7,8 +7,7 @@
 // time (the cylinder moved away), the arm does not rise.
 // Beliefs: reachCylinder(true|false), picking.
 // Reads: maxSpeed(M); pickingOff (a rule other skills extend: no cylinder is taken while it holds,
-// e.g. while delivering or charging); reachOff (a rule a skill may define: no lateral reach while it
-// holds, e.g. pile-rim's by the stored pile).
+// e.g. while delivering or charging).
 // Needs: +!go_ahead : picked(true) (what to do with the cylinder: the agent's, or delivery's);
 // !escape (recovery). Include it after avoidance, before far sight.
 // Fixed from the listings: "+reachCylinder(b)" that added a second reachCylinder belief is
@@ -20,10 +19,10 @@
 reachCylinder(false).
 
 @reachLeft
-+cylinderLeft : reachCylinder(false) & not picking & not pickingOff & not reachOff
++cylinderLeft : reachCylinder(false) & not picking & not pickingOff
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
 @reachRight
-+cylinderRight : reachCylinder(false) & not picking & not pickingOff & not reachOff
++cylinderRight : reachCylinder(false) & not picking & not pickingOff
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 @approachCentred
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
