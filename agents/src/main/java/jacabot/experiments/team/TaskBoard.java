@@ -29,7 +29,8 @@ import java.util.Set;
  * Distance)} from where it stands); a cylinder's name is the world file's, which no robot sees.
  * A robot's claim shrinks as it comes nearer (its newer estimate, the same claim), and the
  * cylinder it carries is claimed where the robot is ({@code at}), so that nobody claims it on its
- * way to the storage area.
+ * way to the storage area. A board made with the arena's width and depth keeps a sighting's claim
+ * on the floor: an estimate beyond the walls is moved back along its bearing to the floor's edge.
  *
  * <p>Observable properties: {@code claimed(Id, Agent, X, Z, R)}, one per claim (Agent an atom, R
  * the disc's radius), and {@code completed(N)}, the team's deliveries. Operations:
@@ -58,6 +59,11 @@ public class TaskBoard extends Artifact {
      * place (about once a second, so up to a second of travel behind) and 6 cm ahead of that.
      */
     static final double CARRIED_RADIUS = 0.2;
+    /**
+     * How far inside the arena's walls a claim's place lies at least, metres: a cylinder's centre
+     * is its radius (2-3 cm) from a wall it touches, and the walls stand just outside the floor.
+     */
+    static final double FLOOR_MARGIN = 0.05;
 
     /**
      * A claim: the disc of radius r round the estimated place (x, z), swept on to (fx, fz) when the
@@ -128,6 +134,9 @@ public class TaskBoard extends Artifact {
     private final Map<AgentId, ObsProperty> places = new LinkedHashMap<>();
     private final TurnQueue storage = new TurnQueue();
     private double radius;
+    /** Half the floor a claim's place may lie on, less {@link #FLOOR_MARGIN}; unbounded when the board knows no arena. */
+    private double halfX = Double.POSITIVE_INFINITY;
+    private double halfZ = Double.POSITIVE_INFINITY;
     private int lastId;
 
     /** A claim as a run's checks read it (no two claimers on one cylinder): the agent's name and the place. */
@@ -145,6 +154,19 @@ public class TaskBoard extends Artifact {
         this.radius = radius;
         defineObsProperty("completed", 0);
         defineObsProperty("storageQueue", List.of());
+    }
+
+    /**
+     * A board for a team on an arena of the given width (x) and depth (z), centred on the origin:
+     * a claim's place lies on that floor (see {@link #claimAlong}).
+     */
+    void init(double radius, double width, double depth) {
+        if (!(width > 0 && depth > 0)) {
+            failed("the arena's width and depth must be positive, got " + width + " and " + depth, "bad_arena", width, depth);
+        }
+        init(radius);
+        halfX = Math.max(0, width / 2 - FLOOR_MARGIN);
+        halfZ = Math.max(0, depth / 2 - FLOOR_MARGIN);
     }
 
     /** Publishes where the caller's robot is: {@code robotAt(Agent, X, Z)}, one per robot. */
@@ -230,6 +252,12 @@ public class TaskBoard extends Artifact {
         if (!(r > 0)) {
             failed("a claim's radius must be positive, got " + r, "bad_radius", r);
         }
+        double[] on = onFloor(x, z, toX, toZ);
+        double sightedX = x, sightedZ = z;
+        x = on[0];
+        z = on[1];
+        toX = on[2];
+        toZ = on[3];
         AgentId me = getCurrentOpAgentId();
         Claim mine = null;
         for (Claim c : claims.values()) {
@@ -248,9 +276,71 @@ public class TaskBoard extends Artifact {
             id.set(mine.id());
             return;
         }
-        Claim made = newClaim(me, x, z, r);
+        Claim made = newClaim(me, x, z, r, x == sightedX && z == sightedZ ? ""
+                : " (estimated at " + place(sightedX, sightedZ) + ", beyond the walls)");
         made.sweepTo(toX, toZ);
         id.set(made.id());
+    }
+
+    /**
+     * A sighting's claim cut at the walls, as {x, z, toX, toZ}: no cylinder lies beyond them (a
+     * camera's distance, from a cylinder's apparent width, put claims up to half a metre beyond,
+     * and a robot that sought its lost claim again drove to that place). The bearing is good and
+     * the distance is not, so an estimate beyond the walls is moved back along the bearing (from
+     * the far end through the estimate) to where it meets the floor, and the far end comes with it;
+     * a far end beyond the walls is cut where the bearing leaves the floor. A place with no bearing
+     * (a claim's far end at its estimate), or whose bearing misses the floor, is moved to the
+     * floor's nearest point.
+     */
+    private double[] onFloor(double x, double z, double toX, double toZ) {
+        double dx = toX - x, dz = toZ - z;
+        if (inside(x, z)) {
+            if (inside(toX, toZ)) {
+                return new double[] {x, z, toX, toZ};
+            }
+            double t = Math.min(exit(x, dx, halfX), exit(z, dz, halfZ));
+            return new double[] {x, z, x + t * dx, z + t * dz};
+        }
+        if (dx != 0 || dz != 0) {
+            // back along the bearing: p(s) = (x, z) - s (dx, dz), s >= 0; the floor's slab crossings
+            double[] sx = slab(x, -dx, halfX), sz = slab(z, -dz, halfZ);
+            double in = Math.max(Math.max(sx[0], sz[0]), 0), out = Math.min(sx[1], sz[1]);
+            if (in <= out) {
+                double px = clamp(x - in * dx, halfX), pz = clamp(z - in * dz, halfZ);
+                return new double[] {px, pz, px, pz};
+            }
+        }
+        double px = clamp(x, halfX), pz = clamp(z, halfZ);
+        return new double[] {px, pz, px, pz};
+    }
+
+    private boolean inside(double x, double z) {
+        return Math.abs(x) <= halfX && Math.abs(z) <= halfZ;
+    }
+
+    /** {@return the t >= 0 at which v + t d leaves [-half, half] (v inside), at most 1} */
+    private static double exit(double v, double d, double half) {
+        if (d > 0) {
+            return Math.min(1, (half - v) / d);
+        }
+        if (d < 0) {
+            return Math.min(1, (-half - v) / d);
+        }
+        return 1;
+    }
+
+    /** {@return the interval of s where v + s d lies in [-half, half]} */
+    private static double[] slab(double v, double d, double half) {
+        if (d == 0) {
+            return Math.abs(v) <= half ? new double[] {Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY}
+                    : new double[] {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        }
+        double a = (-half - v) / d, b = (half - v) / d;
+        return new double[] {Math.min(a, b), Math.max(a, b)};
+    }
+
+    private static double clamp(double v, double half) {
+        return Math.max(-half, Math.min(half, v));
     }
 
     /**
@@ -359,16 +449,24 @@ public class TaskBoard extends Artifact {
     }
 
     private Claim newClaim(AgentId agent, double x, double z, double r) {
+        return newClaim(agent, x, z, r, "");
+    }
+
+    private Claim newClaim(AgentId agent, double x, double z, double r, String note) {
         int next = ++lastId;
         Claim c = new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r));
         claims.put(next, c);
-        log(agent.name() + " claims " + next + " at " + place(c) + " r " + String.format(Locale.ROOT, "%.2f", r));
+        log(agent.name() + " claims " + next + " at " + place(c) + " r " + String.format(Locale.ROOT, "%.2f", r) + note);
         return c;
     }
 
     /** {@return a claim's place for the log, to the centimetre} */
     private static String place(Claim c) {
-        return String.format(Locale.ROOT, "(%.2f, %.2f)", c.x(), c.z());
+        return place(c.x(), c.z());
+    }
+
+    private static String place(double x, double z) {
+        return String.format(Locale.ROOT, "(%.2f, %.2f)", x, z);
     }
 
     private void publishStorage() {

@@ -273,6 +273,50 @@ class TaskBoardTest {
         }
     }
 
+    /**
+     * A camera's distance put cylinders beyond the arena's walls (a corridor world, 2 m by 1.2 m):
+     * the board made with the arena moves such an estimate back along its bearing onto the floor,
+     * 5 cm inside the walls, where a teammate's sighting of the same cylinder by the wall meets it;
+     * a claim with no bearing beyond the walls goes to the floor's nearest point.
+     */
+    @Test
+    void aSightingEstimatedBeyondTheWallsIsClaimedOnTheFloorAlongItsBearing() throws CartagoException {
+        List<String> lines = new ArrayList<>();
+        CartagoLogger logger = new CartagoLogger() {
+            @Override
+            public void info(String source, String message) {
+                lines.add(message);
+            }
+
+            @Override
+            public void warning(String source, String message, Throwable cause) {
+                lines.add(message);
+            }
+        };
+        try (Workspace ws = Workspace.builder("team").logger(logger).build()) {
+            ws.createArtifact("board", TaskBoard.class, 0.2, 2.0, 1.2);
+            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
+            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
+
+            // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6), beyond the walls at x 1 and z 0.6
+            int id = claimAlong(ws, a, 1.3, 0.6, 0.38, sweep(0.5, 0.0, 1.3, 0.6, 0.38));
+            assertPlace(0.95, 0.3375, sees.values("claimed").get(0)); // x 5 cm inside the wall, on the bearing
+            assertEquals("a claims 1 at (0.95, 0.34) r 0.38 (estimated at (1.30, 0.60), beyond the walls)", lines.get(0));
+            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.93, 0.33, 0.05, new OpFeedbackParam<Integer>());
+            claim(ws, b, 1.5, -0.9, 0.05); // no bearing: the floor's corner
+            assertPlace(0.95, -0.55, sees.values("claimed").get(1));
+            // an estimate on the floor whose sweep runs beyond the wall: the estimate stays
+            claimAlong(ws, b, 0.7, -0.2, 0.1, sweep(0.2, -0.2, 0.7, -0.2, 0.1));
+            assertPlace(0.7, -0.2, sees.values("claimed").get(2));
+        }
+    }
+
+    /** A claimed(Id, Agent, X, Z, R) property's place is (x, z), to a nanometre. */
+    private static void assertPlace(double x, double z, List<Object> claimed) {
+        assertEquals(x, ((Number) claimed.get(2)).doubleValue(), 1e-9, "x of " + claimed);
+        assertEquals(z, ((Number) claimed.get(3)).doubleValue(), 1e-9, "z of " + claimed);
+    }
+
     /** {@return the far end of a sighting's claim from (x, z) estimated at (ex, ez): twice r beyond the estimate} */
     private static double[] sweep(double x, double z, double ex, double ez, double r) {
         double d = Math.hypot(ex - x, ez - z);
