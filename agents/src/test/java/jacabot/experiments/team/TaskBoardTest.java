@@ -275,9 +275,8 @@ class TaskBoardTest {
 
     /**
      * A camera's distance put cylinders beyond the arena's walls (a corridor world, 2 m by 1.2 m):
-     * the board made with the arena moves such an estimate back along its bearing onto the floor,
-     * 5 cm inside the walls, where a teammate's sighting of the same cylinder by the wall meets it;
-     * a claim with no bearing beyond the walls goes to the floor's nearest point.
+     * the board made with the arena moves such an estimate to the floor's nearest point, 5 cm inside
+     * the walls, where a teammate's sighting of the same cylinder by the wall meets it.
      */
     @Test
     void aSightingEstimatedBeyondTheWallsIsClaimedOnTheFloorAlongItsBearing() throws CartagoException {
@@ -300,12 +299,12 @@ class TaskBoardTest {
 
             // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6), beyond the walls at x 1 and z 0.6
             int id = claimAlong(ws, a, 1.3, 0.6, 0.38, sweep(0.5, 0.0, 1.3, 0.6, 0.38));
-            assertPlace(0.95, 0.3375, sees.values("claimed").get(0)); // x 5 cm inside the wall, on the bearing
-            assertEquals("a claims 1 at (0.95, 0.34) r 0.38 (estimated at (1.30, 0.60), beyond the walls)", lines.get(0));
+            assertPlace(0.95, 0.55, sees.values("claimed").get(0)); // 5 cm inside both walls
+            assertEquals("a claims 1 at (0.95, 0.55) r 0.38 (estimated at (1.30, 0.60), beyond the walls)", lines.get(0));
             fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.93, 0.33, 0.05, new OpFeedbackParam<Integer>());
-            claim(ws, b, 1.5, -0.9, 0.05); // no bearing: the floor's corner
+            claim(ws, b, 1.5, -0.9, 0.05);
             assertPlace(0.95, -0.55, sees.values("claimed").get(1));
-            // an estimate on the floor whose sweep runs beyond the wall: the estimate stays
+            // an estimate on the floor: it stays
             claimAlong(ws, b, 0.7, -0.2, 0.1, sweep(0.2, -0.2, 0.7, -0.2, 0.1));
             assertPlace(0.7, -0.2, sees.values("claimed").get(2));
         }
