@@ -177,17 +177,3 @@ mock_operation(_, ok).
        -delivering; -insideArea;                                  // out again: the leaving starts anew
        !assert_true(storageLeaving(_));
        -storageLeaving(_); -storageTurnMine; -robotAt(khepera2, _, _); -+storageQueue([]).
-
-// out of the area and not yet away, on the teammate's side (no early hand-over), no look around due:
-// the turn is given up storageLeaveTimeout after the holder left the area, 10 s (it was 15 s: of the
-// waits for the turn, most of the time went after the holder had left the area)
-@[test]
-+!test_the_turn_is_given_up_10_s_after_leaving_the_area_if_not_yet_away
-    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]); -+robotAt(khepera2, 0.1, -0.41);
-       .system_time(T); -+lastLook(T); +storageLeaving(T - 10500); !forget_calls;
-       -location(_, _, _); !!perceive(location(0.25, 0, -0.3));   // 0.19 m from the point, on the teammate's side
-       !until(mock_called(storageDone), 3000);
-       !assert_true(mock_called(storageDone));
-       !assert_false(storageTurnMine);
-       !assert_false(storageLeaving(_));
-       -robotAt(khepera2, _, _); -+storageQueue([]).

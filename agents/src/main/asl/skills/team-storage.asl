@@ -28,7 +28,7 @@
 storageQueueRadius(0.35).   // m from the storage point where a robot with a cylinder asks its turn
 storageTurnLimit(60000).    // ms a turn may last (a robot stuck inside must not keep the others out)
 storageLeaveClearance(0.3). // m out of the area (storageClearance, delivery's) where a robot gives its turn up
-storageLeaveTimeout(10000). // ms it may take to get that far (boxed in, it gives the turn up then)
+storageLeaveTimeout(15000). // ms it may take to get that far (boxed in, it gives the turn up then)
 clearOutStep(1000).         // ms of one step straight off while clearing out (then the heading again)
 clearOutMargin(0.2).        // m from the arena's wall within which the way off does not lead towards it
 lookInTurnLimit(9000).      // ms after storageLeaveTimeout the turn is kept for a look around (it lasts 7 s)
