@@ -276,7 +276,8 @@ class TaskBoardTest {
     /**
      * A camera's distance put cylinders beyond the arena's walls (a corridor world, 2 m by 1.2 m):
      * the board made with the arena moves such an estimate to the floor's nearest point, 5 cm inside
-     * the walls, where a teammate's sighting of the same cylinder by the wall meets it.
+     * the walls, its disc shrunk by as much (to half the board's radius at least), where a
+     * teammate's sighting of the same cylinder by the wall meets it.
      */
     @Test
     void aSightingEstimatedBeyondTheWallsIsClaimedOnTheFloorAlongItsBearing() throws CartagoException {
@@ -300,10 +301,12 @@ class TaskBoardTest {
             // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6), beyond the walls at x 1 and z 0.6
             int id = claimAlong(ws, a, 1.3, 0.6, 0.38, sweep(0.5, 0.0, 1.3, 0.6, 0.38));
             assertPlace(0.95, 0.55, sees.values("claimed").get(0)); // 5 cm inside both walls
-            assertEquals("a claims 1 at (0.95, 0.55) r 0.38 (estimated at (1.30, 0.60), beyond the walls)", lines.get(0));
-            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.93, 0.33, 0.05, new OpFeedbackParam<Integer>());
+            assertEquals(0.1, ((Number) sees.values("claimed").get(0).get(4)).doubleValue(), 1e-9, "0.38 less 0.35 moved: 0.1");
+            assertEquals("a claims 1 at (0.95, 0.55) r 0.10 (estimated at (1.30, 0.60) r 0.38, beyond the walls)", lines.get(0));
+            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.85, 0.45, 0.05, new OpFeedbackParam<Integer>());
             claim(ws, b, 1.5, -0.9, 0.05);
             assertPlace(0.95, -0.55, sees.values("claimed").get(1));
+            assertEquals(0.05, ((Number) sees.values("claimed").get(1).get(4)).doubleValue(), 1e-9, "a disc never grows");
             // an estimate on the floor: it stays
             claimAlong(ws, b, 0.7, -0.2, 0.1, sweep(0.2, -0.2, 0.7, -0.2, 0.1));
             assertPlace(0.7, -0.2, sees.values("claimed").get(2));
