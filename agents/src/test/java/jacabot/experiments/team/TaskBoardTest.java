@@ -276,8 +276,8 @@ class TaskBoardTest {
     /**
      * A camera's distance put cylinders beyond the arena's walls (a corridor world, 2 m by 1.2 m):
      * the board made with the arena moves such an estimate to the floor's nearest point, 5 cm inside
-     * the walls, its disc shrunk by as much (to half the board's radius at least), where a
-     * teammate's sighting of the same cylinder by the wall meets it.
+     * the walls, its disc shrunk to the floor's part of it (sqrt(r^2 - m^2), m the distance moved),
+     * where a teammate's sighting of the same cylinder by the wall meets it.
      */
     @Test
     void aSightingEstimatedBeyondTheWallsIsClaimedOnTheFloorAlongItsBearing() throws CartagoException {
@@ -298,12 +298,13 @@ class TaskBoardTest {
             AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
             Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
 
-            // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6), beyond the walls at x 1 and z 0.6
-            int id = claimAlong(ws, a, 1.3, 0.6, 0.38, sweep(0.5, 0.0, 1.3, 0.6, 0.38));
-            assertPlace(0.95, 0.55, sees.values("claimed").get(0)); // 5 cm inside both walls
-            assertEquals(0.1, ((Number) sees.values("claimed").get(0).get(4)).doubleValue(), 1e-9, "0.38 less 0.35 moved: 0.1");
-            assertEquals("a claims 1 at (0.95, 0.55) r 0.10 (estimated at (1.30, 0.60) r 0.38, beyond the walls)", lines.get(0));
-            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.85, 0.45, 0.05, new OpFeedbackParam<Integer>());
+            // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6) give or take 0.5, beyond the walls at x 1 and z 0.6
+            int id = claimAlong(ws, a, 1.3, 0.6, 0.5, sweep(0.5, 0.0, 1.3, 0.6, 0.5));
+            assertPlace(0.95, 0.55, sees.values("claimed").get(0)); // 5 cm inside both walls, 0.354 m moved
+            assertEquals(Math.sqrt(0.25 - 0.125), ((Number) sees.values("claimed").get(0).get(4)).doubleValue(), 1e-9);
+            assertEquals("a claims 1 at (0.95, 0.55) r 0.35 (estimated at (1.30, 0.60) r 0.50, beyond the walls)", lines.get(0));
+            // a teammate's sighting by the wall, 0.46 m from the estimate (within its bound), 0.25 m from the new place
+            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.95, 0.3, 0.05, new OpFeedbackParam<Integer>());
             claim(ws, b, 1.5, -0.9, 0.05);
             assertPlace(0.95, -0.55, sees.values("claimed").get(1));
             assertEquals(0.05, ((Number) sees.values("claimed").get(1).get(4)).doubleValue(), 1e-9, "a disc never grows");
