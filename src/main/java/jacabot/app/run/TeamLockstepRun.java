@@ -90,8 +90,7 @@ public final class TeamLockstepRun extends SteppedPlatform {
         Workspace workspace = workspace();
         LocalMAS mas = mas();
         mas.onAgentDied(this::agentDied);
-        ArtifactId boardId = workspace.createArtifact(BOARD, TaskBoard.class.getName(), CLAIM_RADIUS,
-                world.spec().arena().width(), world.spec().arena().depth());
+        ArtifactId boardId = workspace.createArtifact(BOARD, TaskBoard.class.getName(), CLAIM_RADIUS);
         board = workspace.artifactObject(boardId, TaskBoard.class).orElseThrow();
         ArtifactId chargerId = workspace.createArtifact(CHARGER, ChargerQueue.class.getName());
         charger = workspace.artifactObject(chargerId, ChargerQueue.class).orElseThrow();

@@ -29,9 +29,7 @@ import java.util.Set;
  * Distance)} from where it stands); a cylinder's name is the world file's, which no robot sees.
  * A robot's claim shrinks as it comes nearer (its newer estimate, the same claim), and the
  * cylinder it carries is claimed where the robot is ({@code at}), so that nobody claims it on its
- * way to the storage area. A board made with the arena's width and depth keeps a sighting's claim
- * on the floor: an estimate beyond the walls is moved to the floor's nearest point, its disc
- * shrunk to the floor's part of it.
+ * way to the storage area.
  *
  * <p>Observable properties: {@code claimed(Id, Agent, X, Z, R)}, one per claim (Agent an atom, R
  * the disc's radius), and {@code completed(N)}, the team's deliveries. Operations:
@@ -60,11 +58,6 @@ public class TaskBoard extends Artifact {
      * place (about once a second, so up to a second of travel behind) and 6 cm ahead of that.
      */
     static final double CARRIED_RADIUS = 0.2;
-    /**
-     * How far inside the arena's walls a claim's place lies at least, metres: a cylinder's centre
-     * is its radius (2-3 cm) from a wall it touches, and the walls stand just outside the floor.
-     */
-    static final double FLOOR_MARGIN = 0.05;
 
     /**
      * A claim: the disc of radius r round the estimated place (x, z), swept on to (fx, fz) when the
@@ -135,9 +128,6 @@ public class TaskBoard extends Artifact {
     private final Map<AgentId, ObsProperty> places = new LinkedHashMap<>();
     private final TurnQueue storage = new TurnQueue();
     private double radius;
-    /** Half the floor a claim's place may lie on, less {@link #FLOOR_MARGIN}; unbounded when the board knows no arena. */
-    private double halfX = Double.POSITIVE_INFINITY;
-    private double halfZ = Double.POSITIVE_INFINITY;
     private int lastId;
 
     /** A claim as a run's checks read it (no two claimers on one cylinder): the agent's name and the place. */
@@ -155,19 +145,6 @@ public class TaskBoard extends Artifact {
         this.radius = radius;
         defineObsProperty("completed", 0);
         defineObsProperty("storageQueue", List.of());
-    }
-
-    /**
-     * A board for a team on an arena of the given width (x) and depth (z), centred on the origin:
-     * a claim's place lies on that floor (see {@link #claimAlong}).
-     */
-    void init(double radius, double width, double depth) {
-        if (!(width > 0 && depth > 0)) {
-            failed("the arena's width and depth must be positive, got " + width + " and " + depth, "bad_arena", width, depth);
-        }
-        init(radius);
-        halfX = Math.max(0, width / 2 - FLOOR_MARGIN);
-        halfZ = Math.max(0, depth / 2 - FLOOR_MARGIN);
     }
 
     /** Publishes where the caller's robot is: {@code robotAt(Agent, X, Z)}, one per robot. */
@@ -253,11 +230,6 @@ public class TaskBoard extends Artifact {
         if (!(r > 0)) {
             failed("a claim's radius must be positive, got " + r, "bad_radius", r);
         }
-        double[] on = onFloor(x, z, r);
-        double sightedX = x, sightedZ = z, sightedR = r;
-        x = on[0];
-        z = on[1];
-        r = on[2];
         AgentId me = getCurrentOpAgentId();
         Claim mine = null;
         for (Claim c : claims.values()) {
@@ -276,34 +248,9 @@ public class TaskBoard extends Artifact {
             id.set(mine.id());
             return;
         }
-        Claim made = newClaim(me, x, z, r, x == sightedX && z == sightedZ ? ""
-                : String.format(Locale.ROOT, " (estimated at %s r %.2f, beyond the walls)", place(sightedX, sightedZ), sightedR));
+        Claim made = newClaim(me, x, z, r);
         made.sweepTo(toX, toZ);
         id.set(made.id());
-    }
-
-    /**
-     * A sighting's claim with its estimate on the floor, as {x, z, r}: no cylinder lies beyond the
-     * walls (a camera's distance, from a cylinder's apparent width, put estimates up to half a
-     * metre beyond them, and a robot that sought its lost claim again drove to that place), so an
-     * estimate beyond them is moved the distance m to the floor's nearest point, {@link #FLOOR_MARGIN}
-     * inside, and its disc of radius r becomes the one of radius sqrt(r^2 - m^2) there: the floor
-     * being convex, every floor point within r of the estimate lies within that of the new place, so
-     * the claim still covers its cylinder wherever the estimate's bound allows, and takes little more
-     * of the floor than the sighting's did. A disc that reached no floor point is half the board's
-     * radius (never more than it was). (With the disc kept, a far sighting's wide disc came onto the
-     * floor and teammates' sightings were refused a quarter more often; shrunk by m, two claims of
-     * one cylinder missed each other: team tuning worlds 1-48, four robots.)
-     */
-    private double[] onFloor(double x, double z, double r) {
-        double px = clamp(x, halfX), pz = clamp(z, halfZ);
-        double m = Math.hypot(x - px, z - pz);
-        double within = m < r ? Math.sqrt(r * r - m * m) : 0;
-        return new double[] {px, pz, Math.min(r, Math.max(within, radius / 2))};
-    }
-
-    private static double clamp(double v, double half) {
-        return Math.max(-half, Math.min(half, v));
     }
 
     /**
@@ -412,24 +359,16 @@ public class TaskBoard extends Artifact {
     }
 
     private Claim newClaim(AgentId agent, double x, double z, double r) {
-        return newClaim(agent, x, z, r, "");
-    }
-
-    private Claim newClaim(AgentId agent, double x, double z, double r, String note) {
         int next = ++lastId;
         Claim c = new Claim(next, agent, defineObsProperty("claimed", next, agent, x, z, r));
         claims.put(next, c);
-        log(agent.name() + " claims " + next + " at " + place(c) + " r " + String.format(Locale.ROOT, "%.2f", r) + note);
+        log(agent.name() + " claims " + next + " at " + place(c) + " r " + String.format(Locale.ROOT, "%.2f", r));
         return c;
     }
 
     /** {@return a claim's place for the log, to the centimetre} */
     private static String place(Claim c) {
-        return place(c.x(), c.z());
-    }
-
-    private static String place(double x, double z) {
-        return String.format(Locale.ROOT, "(%.2f, %.2f)", x, z);
+        return String.format(Locale.ROOT, "(%.2f, %.2f)", c.x(), c.z());
     }
 
     private void publishStorage() {

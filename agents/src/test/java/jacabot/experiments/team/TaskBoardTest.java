@@ -273,53 +273,6 @@ class TaskBoardTest {
         }
     }
 
-    /**
-     * A camera's distance put cylinders beyond the arena's walls (a corridor world, 2 m by 1.2 m):
-     * the board made with the arena moves such an estimate to the floor's nearest point, 5 cm inside
-     * the walls, its disc shrunk to the floor's part of it (sqrt(r^2 - m^2), m the distance moved),
-     * where a teammate's sighting of the same cylinder by the wall meets it.
-     */
-    @Test
-    void aSightingEstimatedBeyondTheWallsIsClaimedOnTheFloorAlongItsBearing() throws CartagoException {
-        List<String> lines = new ArrayList<>();
-        CartagoLogger logger = new CartagoLogger() {
-            @Override
-            public void info(String source, String message) {
-                lines.add(message);
-            }
-
-            @Override
-            public void warning(String source, String message, Throwable cause) {
-                lines.add(message);
-            }
-        };
-        try (Workspace ws = Workspace.builder("team").logger(logger).build()) {
-            ws.createArtifact("board", TaskBoard.class, 0.2, 2.0, 1.2);
-            AgentId a = ws.join("a", new Ops.Watcher()), b = ws.join("b", new Ops.Watcher());
-            Ops.Watcher sees = Ops.watch(ws, "watcher", "board");
-
-            // from (0.5, 0) on the bearing (0.8, 0.6), 1 m: (1.3, 0.6) give or take 0.5, beyond the walls at x 1 and z 0.6
-            int id = claimAlong(ws, a, 1.3, 0.6, 0.5, sweep(0.5, 0.0, 1.3, 0.6, 0.5));
-            assertPlace(0.95, 0.55, sees.values("claimed").get(0)); // 5 cm inside both walls, 0.354 m moved
-            assertEquals(Math.sqrt(0.25 - 0.125), ((Number) sees.values("claimed").get(0).get(4)).doubleValue(), 1e-9);
-            assertEquals("a claims 1 at (0.95, 0.55) r 0.35 (estimated at (1.30, 0.60) r 0.50, beyond the walls)", lines.get(0));
-            // a teammate's sighting by the wall, 0.46 m from the estimate (within its bound), 0.25 m from the new place
-            fails("claimed_by", List.of(a, id), ws, b, "board", "claim", 0.95, 0.3, 0.05, new OpFeedbackParam<Integer>());
-            claim(ws, b, 1.5, -0.9, 0.05);
-            assertPlace(0.95, -0.55, sees.values("claimed").get(1));
-            assertEquals(0.05, ((Number) sees.values("claimed").get(1).get(4)).doubleValue(), 1e-9, "a disc never grows");
-            // an estimate on the floor: it stays
-            claimAlong(ws, b, 0.7, -0.2, 0.1, sweep(0.2, -0.2, 0.7, -0.2, 0.1));
-            assertPlace(0.7, -0.2, sees.values("claimed").get(2));
-        }
-    }
-
-    /** A claimed(Id, Agent, X, Z, R) property's place is (x, z), to a nanometre. */
-    private static void assertPlace(double x, double z, List<Object> claimed) {
-        assertEquals(x, ((Number) claimed.get(2)).doubleValue(), 1e-9, "x of " + claimed);
-        assertEquals(z, ((Number) claimed.get(3)).doubleValue(), 1e-9, "z of " + claimed);
-    }
-
     /** {@return the far end of a sighting's claim from (x, z) estimated at (ex, ez): twice r beyond the estimate} */
     private static double[] sweep(double x, double z, double ex, double ez, double r) {
         double d = Math.hypot(ex - x, ez - z);
