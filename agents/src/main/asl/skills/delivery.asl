@@ -35,11 +35,11 @@ storageClearance(0.15) :- not storageRadius(_).
 setUpGoal(setUpDelivery).
 travelling :- delivering.
 pickingOff :- delivering.
-pickingOff :- nearStorage & not fetchingKnocked.   // fetchingKnocked: knocked-aside's (tidy-up's)
+pickingOff :- nearStorage & not fetchingKnocked.   // fetchingKnocked: knock-fetch's (navigation's, suspend/resume's, tidy-up's)
 pickingOff :- insideArea.
 halted :- insideArea.
 nearStorage :- storageWithin(0).
-// within the storage clearance and E m more (knocked-aside's fallenNearStorage reads it too)
+// within the storage clearance and E m more (knock-fetch's fallenNearStorage reads it too)
 storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + E) * (C + E).
 
@@ -105,7 +105,7 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
 // Recovery, not in the thesis: the thesis stops for good ("stopAcquire; stop"); the robot drops
 // everything, lets the cylinder go and looks for a cylinder again (it may pick this one up again);
 // a skill's beliefs to forget then are its forgetOnFall(B) beliefs (suspension: charging; way-round: a following);
-// with knocked-aside's fallenNearStorage (tidy-up's) a fall by the storage area is noted as a knock there too.
+// with knock-fetch's fallenNearStorage (navigation's, suspend/resume's, tidy-up's) a fall by the storage area is noted as a knock there too.
 @fallCylinder[atomic]
 +fallen
     <- .drop_all_desires; .print("Cylinder has fallen. Anybody retrieve it"); stop;

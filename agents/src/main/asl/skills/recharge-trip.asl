@@ -78,7 +78,7 @@ forgetOnFall(atCharger).
 // The last cylinder of a task that ends at the charger (tidy-up: cylinders(N) known) is delivered
 // first wherever the robot is: the trip after it is the one to the charger anyway. Either only
 // while the battery less the reserve (the worst drain) covers the way on to the charger. A cylinder
-// knocked out by the storage area (knocked-aside's fetchingKnocked, tidy-up's) is fetched first too.
+// knocked out by the storage area (knock-fetch's fetchingKnocked) is fetched first too.
 // A task that ends at a known time (taskEnd) makes no trip while the battery covers what is left: a
 // trip in the last minutes took what was left for the last cylinder (tidy-up: 83-156 s of 600).
 // deliverOn(R2) (the agent's, optional): a delivery that went on first (deliveringFirst(T), T the
