@@ -24,7 +24,7 @@ storageClearance(0.15) :- not storageRadius(_).
 // onErrand, halted (rules a skill that sends the robot elsewhere extends, e.g. recharge).
 // Beliefs: delivering, insideArea, firstTime, ~delivered, targetPoint(X, Z), enteredAreaAt(T).
 // Rules it offers: travelling (on the way to a target: obstacles are gone round, not avoided),
-// pickingOff (no cylinder is taken), nearStorage.
+// pickingOff (no cylinder is taken), nearStorage, gripToStorage(D2).
 // Includes heading.asl (the compass: computeGap, balance, steer, detour).
 // Needs: picking (it supplies +!go_ahead : picked(true)), avoidance (!avoid), recovery (!escape),
 // sweep (!found, !nextWaypoint, searchClock). Include it after recharge, before avoidance.
@@ -66,8 +66,9 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
 // 6 cm storage area, and counted it as stored. With the gripper's point (gripper.asl) outside
 // the area less gripMargin it turns on the spot to the storage point first: the gripper's point
 // then lies within a few centimetres of it. Without gripPoint (no gripper.asl) it puts down at once.
-gripOutsideStorage :- gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & storageRadius(R) & gripMargin(M)
-    & (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz) > (R - M) * (R - M).
+gripOutsideStorage :- gripToStorage(D2) & storageRadius(R) & gripMargin(M) & D2 > (R - M) * (R - M).
+// the square of the distance from the gripper's point to the storage point (knock-fetch's pileAhead reads it too)
+gripToStorage(D2) :- gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & D2 = (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz).
 @turnGripToStorage
 +!gripOverStorage : gripOutsideStorage & location(X, _, Z) & storagePoint(Sx, Sz)
     <- .print("The gripper is outside the storage area: turning to the storage point");

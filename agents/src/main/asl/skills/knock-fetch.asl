@@ -18,7 +18,7 @@ knockFetchWithin(0.08). // m beyond delivery's storage clearance that a fall cou
 // Reads: knockedAt(T) (set by delivery's fall plan by the storage area, and by knocked-aside.asl); picking,
 // reachCylinder (picking); maxSpeed(M); delta(D), location, orientation (the middleware's); gripPoint
 // (gripper's, which picking includes: the gripper's point ahead of the robot); storagePoint(X, Z),
-// storageRadius(R) (the world's); stored(N), storageWithin(M) (delivery).
+// storageRadius(R) (the world's); stored(N), storageWithin(M), gripToStorage(D2) (delivery).
 // Beliefs: fellNearStorageAt(T) (delivery's fall plan); avoiding (avoidance's: every move, avoidance
 // and far sight wait meanwhile).
 // Rules it offers: fallenNearStorage, fetchingKnocked (delivery's pickingOff and recharge-trip read it).
@@ -47,5 +47,4 @@ fallenNearStorage :- knockFetchWithin(M) & storageWithin(M).
 // standing 2.8 cm from the point, and delivered it again; the knocked one was left. With none stored, a robot
 // facing the point as it fell, 11 cm away, still turns to the cylinder: world 174 × 2).
 fetchingKnocked :- fellNearStorageAt(T0) & knockFetch(W) & .system_time(T) & T - T0 < W & not pileAhead.
-pileAhead :- stored(N) & N > 0 & gripPoint(Gx, Gz) & storagePoint(Sx, Sz) & storageRadius(R)
-    & (Gx - Sx) * (Gx - Sx) + (Gz - Sz) * (Gz - Sz) < R * R.
+pileAhead :- stored(N) & N > 0 & gripToStorage(D2) & storageRadius(R) & D2 < R * R.
