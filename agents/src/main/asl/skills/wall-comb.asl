@@ -17,11 +17,11 @@ combBelow(3).
 combShare(0.6).
 combTime(90000).
 combNear(100).        // the front reading (about 16 cm from the rim) the robot stops at
-combCap(140).         // nearer (a reading over it) the robot backs off before the step, and squares up no further
-combTolerance(15).    // the left-right difference of a robot square to the wall
-combStep(0.06).       // the sideways step, m: under the narrowest passage the robot enters less its body
-combReach(0.3).       // no wall within this many m after a step: a gap
+combCap(140).         // nearer (a reading over it) the robot backs off before the step
+combStep(0.04).       // the sideways step, m
+combReach(0.04).      // the wall not met within this many m after a step (where it stood before): a gap
 combFirst(3).         // how far, m, the first drive to a wall may go
+combWalls(4).         // the walls combed in a run at most
 
 @moveCombEnd +!move(N) : combing(U, _, _, _) & .system_time(T) & T >= U <- -combing(U, _, _, _); +combedAt(T); !move(N).
 // a side step cut short by an obstacle: the wall ends there; the other way along it, then the next wall
@@ -38,7 +38,7 @@ combFirst(3).         // how far, m, the first drive to a wall may go
        if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
        !combDrive(F).
 @moveCombStart
-+!move(N) : N > 0.3 & not combing(_, _, _, _) & combWindow(W) & .system_time(T) & T > W & not (combedAt(F) & T - F < W)
++!move(N) : N > 0.3 & not combing(_, _, _, _) & combEpisodes(E) & combWalls(MaxW) & E < MaxW & combWindow(W) & .system_time(T) & T > W & not (combedAt(F) & T - F < W)
     <- freshCells(W, C); visitedArea(Crossed); ?arena(AW, AD); ?combShare(Share); ?combBelow(K);
        if (C < K & Crossed < Share * AW * AD) {
            ?combTime(D); .random(R); if (R < 0.5) { Side = "left" } else { Side = "right" };
@@ -54,7 +54,7 @@ combEpisodes(0).
 @combDrive +!combDrive(Reach) : cruiseSpeed(V) & wheelGeometry(U, _) <- setSpeeds(V, V); !combAhead(Reach / (V * U) * 1000).
 @combAtWall
 +!combAhead(_) : leftSensor(L) & rightSensor(R) & combNear(K) & (L >= K | R >= K)
-    <- stop; !combBack(25); !combSquare(12); !combSideStep.
+    <- stop; !combBack(25); !combSideStep.
 @combGap
 +!combAhead(Ms) : Ms <= 0 & combing(U, S, H, C) & .system_time(T)
     <- -combing(U, S, H, C); +combedAt(T); println("Combing: a gap"); !straightLeg.
@@ -67,19 +67,12 @@ combEpisodes(0).
     <- setSpeeds(-V, -V); .wait(40); !combBack(K - 1).
 @combBackDone +!combBack(_) <- stop.
 
-// square to the wall: a short turn towards the sensor that reads more, at most K times
-@combSquareTurn
-+!combSquare(K) : K > 0 & leftSensor(L) & rightSensor(R) & combTolerance(Tol) & math.abs(L - R) > Tol & combCap(C) & math.max(L, R) < C & turnSpeed(S)
-    <- if (L > R) { setSpeeds(-S / 2, S / 2) } else { setSpeeds(S / 2, -S / 2) }; .wait(40); stop; .wait(40);
-       !combSquare(K - 1).
-@combSquareDone +!combSquare(_).
-
 // a quarter turn to the comb's side, the step, a quarter turn back, and to the wall again
 @combSideStep
-+!combSideStep : combing(_, Side, _, _) & turnSpeed(S) & cruiseSpeed(V) & wheelGeometry(U, A) & combStep(D) & combReach(Reach)
++!combSideStep : combing(_, Side, H, _) & turnSpeed(S) & cruiseSpeed(V) & wheelGeometry(U, A) & combStep(D) & combReach(Reach)
     <- Q = 1000 * (3.14159265 / 2) / (2 * S * U / A); +combStepping;
        if (Side == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Q);
        setSpeeds(V, V); .wait(D / (V * U) * 1000);
-       if (Side == "left") { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(Q);
+       headingTurn(H, S, Back, Ms); if (Back == "left") { setSpeeds(-S, S) } else { setSpeeds(S, -S) }; .wait(Ms);
        -combStepping; !combDrive(Reach).
 @combSideStepEnd +!combSideStep.
