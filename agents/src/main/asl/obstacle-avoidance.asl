@@ -8,6 +8,5 @@ middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 !start.
 
 { include("skills/initial-phase.asl") }
-{ include("skills/wall-comb.asl") }
 { include("skills/coverage.asl") }
 { include("skills/recovery.asl") }

@@ -180,50 +180,6 @@ final class ExplorationMap {
         return new double[] {turn, Math.hypot(wx - x, wz - z)};
     }
 
-    /**
-     * The heading, in degrees of this map's frame, of the wall to comb for the {@code episode}-th time
-     * (not in the thesis): the crossed cells' bounding box is turned to its least area (its sides then lie
-     * along the room's walls); of its two axes, the arena extends further along the one whose extent falls
-     * shorter of the arena side it is matched with (the match that leaves the other axis nearest its side);
-     * episodes 0 and 1 face that axis' two ends, 2 and 3 the other axis' ends, and so on round.
-     */
-    double combHeading(double arenaW, double arenaD, int episode) {
-        double bestAngle = 0, bestArea = Double.POSITIVE_INFINITY, eu = 0, ev = 0;
-        for (int deg = 0; deg < 90; deg += 3) {
-            double a = Math.toRadians(deg), c = Math.cos(a), s = Math.sin(a);
-            double uMin = Double.POSITIVE_INFINITY, uMax = Double.NEGATIVE_INFINITY, vMin = uMin, vMax = uMax;
-            for (long k : visited) {
-                double px = ((int) (k >> 32) + 0.5) * CELL, pz = ((int) k + 0.5) * CELL;
-                double u = px * c + pz * s, v = -px * s + pz * c;
-                uMin = Math.min(uMin, u);
-                uMax = Math.max(uMax, u);
-                vMin = Math.min(vMin, v);
-                vMax = Math.max(vMax, v);
-            }
-            double area = (uMax - uMin + CELL) * (vMax - vMin + CELL);
-            if (area < bestArea) {
-                bestArea = area;
-                bestAngle = deg;
-                eu = uMax - uMin + CELL;
-                ev = vMax - vMin + CELL;
-            }
-        }
-        // u matched with the width and v with the depth, or the other way round: the match whose nearer
-        // axis is nearer its side; the comb's axis is the other one
-        double fitA = Math.min(Math.abs(arenaW - eu), Math.abs(arenaD - ev));
-        double fitB = Math.min(Math.abs(arenaD - eu), Math.abs(arenaW - ev));
-        double missU = fitA <= fitB ? arenaW - eu : arenaD - eu, missV = fitA <= fitB ? arenaD - ev : arenaW - ev;
-        double axis = missU >= missV ? bestAngle : bestAngle + 90;
-        int turnIndex = Math.floorMod(episode, 4);
-        return axis + (turnIndex >= 2 ? 90 : 0) + (turnIndex % 2 == 1 ? 180 : 0);
-    }
-
-    /** {@return the turn in degrees (positive: left, -180 to 180) to face {@code headingDegrees} of this map's frame} */
-    double turnTo(double headingDegrees) {
-        double turn = headingDegrees - Math.toDegrees(heading);
-        return ((turn % 360) + 540) % 360 - 180;
-    }
-
     /** {@return how many cells the centre crossed for the first time after {@code sinceMs}} */
     int freshCellsSince(long sinceMs) {
         int n = 0;

@@ -179,35 +179,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * The heading, in degrees of the dead-reckoning frame, of the wall to comb for the {@code episode}-th
-     * time in an arena of {@code width} by {@code depth} m (not in the thesis, {@code ExplorationMap.combHeading}).
-     * Fails before {@code odometry}.
-     */
-    @OPERATION
-    void combHeading(double width, double depth, double episode, OpFeedbackParam<Double> degrees) {
-        if (map == null) {
-            failed("combHeading needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        degrees.set(map.combHeading(width, depth, (int) Math.round(episode)));
-    }
-
-    /**
-     * The turn on the spot to face {@code degrees} of the dead-reckoning frame (not in the thesis): {@code side}
-     * "left" or "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
-     */
-    @OPERATION
-    void headingTurn(double degrees, double speed, OpFeedbackParam<String> side, OpFeedbackParam<Double> ms) {
-        if (map == null || !(speed > 0)) {
-            failed("headingTurn needs odometry(SpeedUnit, AxleLength) first and a positive speed");
-            return;
-        }
-        double turn = map.turnTo(degrees);
-        side.set(turn >= 0 ? "left" : "right");
-        ms.set((double) map.turnMillis(turn, speed));
-    }
-
-    /**
      * The floor the robot's centre has crossed, in m² (its 10 cm cells, not in the thesis). Fails before
      * {@code odometry}.
      */
