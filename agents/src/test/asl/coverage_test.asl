@@ -74,6 +74,25 @@ mock_operation(_, ok).
        !until(not avoiding & mock_called(turnAround), 2000);
        !assert_false(veering).
 
+// corridor steering ended by an obstacle avoids it and veers; a new obstacle during that veer starts
+// an avoidance of its own (here a trap's escape, which takes a while), whose "avoiding" the
+// steering's intention must not take away when its veer ends: random motion would then avoid too
+@[test]
++!test_a_steering_ended_in_a_veer_leaves_a_new_avoidance_believed
+    <- !forget_calls; -+obstacleTimes([]); -+leftSensor(100); -+rightSensor(60); -+walledIn(true);
+       !obstacle_ahead(40);                                               // both walls seen: steering
+       !until(mock_called(setSpeeds(100, V)) & V < 100 & V > 50, 1000);
+       -+walledIn(false);                                                 // out of the corridor, the obstacle there
+       !until(veering, 1000);                                             // avoided, and the veer under way
+       .system_time(T); -+obstacleTimes([T, T, T, T]);
+       !obstacle_ahead(40);                                               // a trap: the escape
+       !until(.intend(escape), 1000);
+       .wait(400);                                                        // the first veer (300 ms) over
+       !assert_true(.intend(escape));
+       !assert_true(avoiding);
+       !until(not avoiding, 4000);
+       -+obstacleTimes([]); -leftSensor(_); -rightSensor(_).
+
 @[test]
 +!test_obstacles_too_often_lead_to_an_escape
     <- !forget_calls; .system_time(T);

@@ -123,7 +123,7 @@ pausedUntil("-veering") :- veering.
 // they are floor the wide arenas missed (held-out wide worlds, run seeds 1 and 2: 78 -> 89 of 150;
 // docs/comparison-obstacle-avoidance.md, "Obstacle avoidance: no standstill before the turn")
 @coverCorridor
-+obstacle(true) : not avoiding & inCorridor <- +avoiding; -veering; .succeed_goal(move(_)); !steer; -avoiding.
++obstacle(true) : not avoiding & inCorridor <- +avoiding; -veering; .succeed_goal(move(_)); !steer.
 @coverObstacle
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
@@ -139,13 +139,17 @@ pausedUntil("-veering") :- veering.
 @veerNot +!veer(_) <- -veering.
 
 // steering through the corridor, a control step (40 ms) at a time; out of it, an obstacle still
-// there is avoided the usual way, and a straight leg follows the corridor (@moveAway)
+// there is avoided the usual way, and a straight leg follows the corridor (@moveAway). "avoiding"
+// ends where the steering does (@steerDone) or with that avoidance, not after !steer: an avoidance
+// ends in a veer, during which a new obstacle starts another avoidance (@coverObstacle), and the
+// steering's intention, ending with the veer, took that one's "avoiding" away; random motion then
+// ran an avoidance or an escape of its own at the same time, the two driving the wheels in turn
 @steerOn
 +!steer : inCorridor & delta(V) & cruiseSpeed(S) & corridorSteer(_, _, G)
     <- C = math.min(S, G * math.abs(V)); if (V > 0) { setSpeeds(S, S - C) } else { setSpeeds(S - C, S) };
        .wait(40); !steer.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
-@steerDone +!steer <- .system_time(T); -+steeredAt(T).
+@steerDone +!steer <- .system_time(T); -+steeredAt(T); -avoiding.
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
@@ -163,7 +167,7 @@ pausedUntil("-veering") :- veering.
 /* Random motion towards new floor, suspended while avoiding (Chapter 4 §1.2, §5) */
 
 @movePaused +!move(N) : pausedUntil(E) <- .wait(E); !move(N).
-@coverSteerStill +!move(_) : obstacle(true) & inCorridor <- +avoiding; !steer; -avoiding.
+@coverSteerStill +!move(_) : obstacle(true) & inCorridor <- +avoiding; !steer.
 @coverAvoidStill +!move(N) : obstacle(true) & delta(V) <- +avoiding; stop; !noteObstacle; !avoid(V).
 // seeking (seekWindow above): the turn towards the next waypoint to the frontier, then the leg there
 // (just after an obstacle, the plans below: no turn on the spot then)
