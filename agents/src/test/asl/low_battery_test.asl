@@ -183,35 +183,6 @@ mock_operation(_, ok).
        !until(not charging, 10000);
        -taskEnd(_); -chargeUntilLasts(100); -lowBattery.
 
-// an agent that charges on the way (tidy-up: chargeOnTheWay, asked after a delivery) starts the trip
-// with a cylinder still to store, the charger within D m of the storage point (here 1.12 m) and the
-// battery short of the time left at its power; not while the battery covers it, nor with a farther charger
-@[test]
-+!test_a_charge_on_the_way_when_the_charger_is_near_and_the_battery_short_of_the_time_left
-    <- !until(not charging, 10000); +meanPower(2); +cylinders(3); -+stored(1); +chargeOnTheWay(1.2, 0); !forget_calls;
-       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.3); -+battery(600);
-       .system_time(T); +taskEnd(T + 200000);                        // 200 s at 2 W: 400 J, covered
-       !chargeOnTheWay; .wait(300);
-       !assert_false(charging);
-       -taskEnd(_); .system_time(T2); +taskEnd(T2 + 400000);         // 400 s: 800 J, short
-       -chargeOnTheWay(_, _); +chargeOnTheWay(1.0, 0);               // the charger farther than 1 m
-       !chargeOnTheWay; .wait(300);
-       !assert_false(charging);
-       -+stored(3); -chargeOnTheWay(_, _); +chargeOnTheWay(1.2, 0);  // every cylinder stored: the park's
-       !chargeOnTheWay; .wait(300);
-       !assert_false(charging);
-       -+stored(1); !chargeOnTheWay;
-       !until(.intend(reachCharger), 10000);
-       !assert_true(charging);
-       !assert_true(mock_called(mark));
-       -targetReached; !!perceive(targetReached);
-       !until(.intend(waitCharged), 10000);
-       -+battery(950); -charged; !!perceive(charged);
-       !until(.intend(reachMarked), 10000);
-       -targetReached; !!perceive(targetReached);
-       !until(not charging, 10000);
-       -taskEnd(_); -meanPower(2); -cylinders(3); -+stored(0); -chargeOnTheWay(_, _).
-
 // an agent that delivers first (tidy-up) ends a delivery under way nearer the storage point than
 // the charger before the trip; once it is over, the next lowBattery starts the trip
 @[test]

@@ -18,8 +18,7 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
 // deliverOn(R) (the agent's, optional: see @deliveryKeptOn); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
-// power those two sums assume instead of fullPower); chargeOnTheWay(D, M) (the agent's, optional, with
-// taskEnd: see @chargeOnTheWay, which the agent calls, !chargeOnTheWay). Rules it extends:
+// power those two sums assume instead of fullPower). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
@@ -105,19 +104,6 @@ forgetOnFall(atCharger).
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);
        !backToTask(X, Y, Z, O).
-
-// chargeOnTheWay(D, M): a charge on the way, not in the thesis. Every tidy-up run starts with 560 J and charges at
-// its first low battery; a second trip came in the middle of a search from wherever the robot was, often
-// carrying a cylinder (tidy-up worlds 176, 178, 181, 188). When the agent calls !chargeOnTheWay (tidy-up:
-// after a delivery, a cylinder still to store) with the charger within D m of the storage point and the battery M J or more
-// short of the time left at the agent's power, the trip starts there, and the search goes on from the charger
-chargeShort(M) :- .system_time(T) & taskEnd(End) & T < End & battery(B) & spendingPower(P) & B + M < P * (End - T) / 1000.
-chargerWithin(D) :- storagePoint(X, Z) & charger(Cx, Cz) & (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz) < D * D.
-@chargeOnTheWay[atomic]
-+!chargeOnTheWay : chargeOnTheWay(D, M) & not charging & cylinders(C) & stored(N) & N < C & chargerWithin(D) & chargeShort(M)
-                   & location(X, Y, Z) & orientation(O)
-    <- .print("The charger near, the battery short of the time left: charging on the way"); +charging; !!rechargeTrip(X, Y, Z, O).
-@noChargeOnTheWay +!chargeOnTheWay.
 
 // back to the marked point, and the task resumes there (the thesis'); an agent whose task goes on
 // from anywhere (a search: tidy-up) believes resumeAtCharger and resumes where it charged
