@@ -142,6 +142,23 @@ mock_operation(_, ok).
        !assert_true(mock_called(forward));
        !assert_true(nextWaypointCalled).                                // the search goes on
 
+// an agent that believes waypointPastStorage (tidy-up) keeps a waypoint away from the storage point
+// (here (0.4, -0.4), the robot at (0.3, -0.3)), and gives up one beyond it
+@[test]
++!test_a_waypoint_away_from_the_storage_area_is_kept_at_its_edge
+    <- !forget_calls; -nextWaypointCalled; -+orientation(90); +searching; -+location(0.3, 0, -0.3);
+       +waypointPastStorage; +waypoint(-0.8, 0.5, 0);
+       !!perceive(noAccess);
+       !until(mock_called(forward), 4000); .wait(300);
+       -noAccess;
+       !assert_true(mock_called(forward));                              // out, away from the area
+       !assert_false(nextWaypointCalled);                               // the waypoint kept
+       -waypoint(_, _, _); +waypoint(0.8, -0.8, 0); !forget_calls;
+       !!perceive(noAccess);
+       !until(nextWaypointCalled, 4000);
+       -noAccess; -searching; -waypointPastStorage; -waypoint(_, _, _);
+       !assert_true(nextWaypointCalled).                                // the way led past the storage point
+
 @[test]
 +!test_with_a_cylinder_the_robot_enters_the_storage_area
     <- !forget_calls; +delivering; +firstTime;
