@@ -162,28 +162,6 @@ mock_operation(_, ok).
        !assert_false(mock_called(setSpeeds(-50, 50)));          // no look around yet
        -storageLeaving(_); -handedOverTo(_); -robotAt(khepera2, _, _); -+storageQueue([]).
 
-// beside the teammate's way in (its line to the storage point), far enough out of the area: handed
-// over, though not on the far side and nearer the teammate than handOverGap (a storage point in a
-// corner has no far side); near that line, or not yet far enough out, the turn is kept
-@[test]
-+!test_the_turn_is_handed_over_beside_the_teammates_way_in
-    <- .my_name(Me); +storageTurnMine; -+storageQueue([Me, khepera2]); -+orientation(90);
-       -+robotAt(khepera2, 0.1, -0.41);                           // waiting west of the storage point
-       .system_time(T); +storageLeaving(T); !forget_calls;
-       -location(_, _, _); !!perceive(location(0.2, 0, -0.33));   // 0.22 m from the point, 0.08 m off the way in
-       .wait(400);
-       !assert_false(mock_called(storageDone));
-       -location(_, _, _); !!perceive(location(0.33, 0, -0.15));  // 0.27 m from the point: not 0.1 m out yet
-       .wait(400);
-       !assert_false(mock_called(storageDone));
-       !assert_true(storageTurnMine);
-       -location(_, _, _); !!perceive(location(0.2, 0, -0.2));    // 0.3 m from the point, 0.21 m off the way in
-       !until(mock_called(storageDone), 3000);
-       !assert_false(storageTurnMine);
-       !assert_true(handedOverTo(khepera2));
-       !assert_true(storageLeaving(_));                           // still clearing out
-       -storageLeaving(_); -handedOverTo(_); -robotAt(khepera2, _, _); -+storageQueue([]).
-
 // a holder back in the area with another cylinder (picked beside it while the turn was still held):
 // the first leaving's timeout, long past, does not give the turn up while it puts this one down
 @[test]

@@ -33,8 +33,6 @@ clearOutStep(1000).         // ms of one step straight off while clearing out (t
 clearOutMargin(0.2).        // m from the arena's wall within which the way off does not lead towards it
 lookInTurnLimit(9000).      // ms after storageLeaveTimeout the turn is kept for a look around (it lasts 7 s)
 handOverGap(0.3).           // m between the holder and the teammate waiting for an early hand-over
-wayInGap(0.15).             // m off the teammate's way in (its line to the storage point) for a hand-over beside it ...
-wayInOut(0.1).              // ... the holder this far out of the area
 // Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T), lookInTurn(T), handedOverTo(A). Rules it extends: halted, waitingTurn,
 // quickTurn(V, A) (heading's).
 // Reads: storageQueue(L), robotAt(A, X, Z) (the board), arena(W, D), searching, lastLook(T), lookEvery(L) (sweep), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), justAvoided(T) (sweep), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
@@ -56,18 +54,6 @@ clearingFrom(W) :- handedOverTo(W).
 // out of the area on the far side of the storage point from the teammate waiting, and apart from it
 handOverBehind(X, Z) :- turnWaitedFor(W) & robotAt(W, Wx, Wz) & storagePoint(Sx, Sz) & handOverGap(G)
     & (X - Sx) * (Wx - Sx) + (Z - Sz) * (Wz - Sz) < 0 & (X - Wx) * (X - Wx) + (Z - Wz) * (Z - Wz) >= G * G.
-// or wayInOut out of the area and wayInGap off the teammate's way in, the segment from where it waits
-// to the storage point (it drives in straight): a storage point in a corner has no far side, and a
-// holder that met a box on its way off stayed 0.3-0.4 m from the point until storageLeaveTimeout;
-// not while a third robot is on that way (one stepping aside there was driven into)
-handOverBehind(X, Z) :- turnWaitedFor(W) & robotAt(W, Wx, Wz) & storagePoint(Sx, Sz) & storageClearance(C)
-    & wayInOut(O) & wayInGap(G) & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) >= (C + O) * (C + O)
-    & Ux = Sx - Wx & Uz = Sz - Wz & L2 = Ux * Ux + Uz * Uz & L2 > 0
-    & offWayIn(X, Z, Wx, Wz, Ux, Uz, L2, G)
-    & not (robotAt(A, Ax, Az) & A \== W & not .my_name(A) & not offWayIn(Ax, Az, Wx, Wz, Ux, Uz, L2, G)).
-// (X, Z) at least G off the segment from (Wx, Wz) along (Ux, Uz), L2 its length squared
-offWayIn(X, Z, Wx, Wz, Ux, Uz, L2, G) :- K = math.max(0, math.min(1, ((X - Wx) * Ux + (Z - Wz) * Uz) / L2))
-    & (X - Wx - K * Ux) * (X - Wx - K * Ux) + (Z - Wz - K * Uz) * (Z - Wz - K * Uz) >= G * G.
 // the way off: away from the storage point and from the teammate waiting (the sum of the two unit
 // vectors); with that teammate straight ahead on the way out, square to it, on the arena centre's side
 clearOutTo(Tx, Tz) :- location(X, _, Z) & storagePoint(Sx, Sz) & clearingFrom(W) & robotAt(W, Wx, Wz)
