@@ -22,8 +22,6 @@ trailStep(0.1).
 // a look point within 0.6 m of a full look around made in the last 120 s gets none (skills/look-skip.asl;
 // wide tuning 101-160 x 1-2: 110 -> 111 of 120, 284 -> 282 deliveries; held out 107 -> 109, 289 -> 298)
 lookSkip(0.6, 120000).
-// a look point within 0.4 m that the robot came no nearer to for 10 s is reached (skills/look-points.asl)
-lookStalled(0.4, 10000).
 
 !start.
 

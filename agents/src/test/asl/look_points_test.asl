@@ -85,23 +85,3 @@ mock_operation(_, ok).
        !sweepStep;                                                      // 121 s in all: skipped
        !assert_true(waypoint(0, 0.5, _));
        -waypointPatience(60000); -lookNearing(10000).
-
-// with lookStalled(R, Ms), a look point within R m that the robot came no nearer to for Ms (a wall or
-// boxes between) is reached: a look around here and the next point; one neared lately is driven to,
-// and so is one farther off
-@[test]
-+!test_a_look_point_held_off_near_is_reached_where_the_robot_is
-    <- -looked; +lookStalled(0.4, 10000); -+sweep([[0, 0.5]]); -+location(-0.75, 0, -0.3);
-       .system_time(T); -+waypoint(-1, -0.5, T - 15000); -+closest(0.32); -+closerAt(T - 11000);
-       !sweepStep;                                                      // 0.32 m off, no nearer for 11 s
-       !assert_true(looked);
-       !assert_true(waypoint(0, 0.5, _));
-       -looked; -+sweep([[0, 0.5]]); -+waypoint(-1, -0.5, T - 15000); -+closerAt(T - 5000);
-       !sweepStep;                                                      // neared 5 s ago: on towards it
-       !assert_false(looked);
-       !assert_true(waypoint(-1, -0.5, _));
-       -+location(-0.5, 0, -0.3); -+closerAt(T - 11000);
-       !sweepStep;                                                      // 0.54 m off: on towards it
-       !assert_false(looked);
-       !assert_true(waypoint(-1, -0.5, _));
-       -lookStalled(0.4, 10000).

@@ -20,8 +20,6 @@ lookAgainFor(40000).
 // began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
 loopAfter(8000).
 loopRadius(0.08).
-// Optional (the agent's): lookStalled(R, Ms): a look point within R m that the robot came no nearer
-// to for Ms is reached (@lookPointHeldOff).
 // Optional (the agent's): lookNearing(G), ms: a look point whose patience (sweep's) has run out is
 // kept while the robot came nearer it within the last G ms, up to lookPointMost ms in all (wide
 // world 128, seed 1: 0.33 m from a point in a doorway when its 60 s ran out).
@@ -62,15 +60,6 @@ lookPointMost(120000).
 +!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz) & lookReach(R)
               & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R
     <- !nextWaypoint; !lookAround.
-
-// a look point near (within lookStalled's R m) that the robot has come no nearer to for its Ms is
-// reached too: a wall or boxes hold the robot off, and the look around from here sees about as far
-// (wide world 128, seed 2: two look points in a 0.29 m thick inner wall, its doorway and its face,
-// each followed along the wall for its 60 s from 0.27 m and 0.25 m off: 150 s of the first search)
-@lookPointHeldOff
-+!sweepStep : lookStalled(R, S) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz)
-              & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R & closerAt(C) & .system_time(T) & T - C > S
-    <- println("A look point held off near: looking around here"); !nextWaypoint; !lookAround.
 
 // the patience run out while the robot still comes nearer: the point's clock set so that it runs
 // out lookNearing after the last approach (sweep's closerAt)
