@@ -22,6 +22,9 @@ trailStep(0.1).
 // a look point within 0.6 m of a full look around made in the last 120 s gets none (skills/look-skip.asl;
 // wide tuning 101-160 x 1-2: 110 -> 111 of 120, 284 -> 282 deliveries; held out 107 -> 109, 289 -> 298)
 lookSkip(0.6, 120000).
+// the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
+// (skills/search-memory.asl)
+fallLookKept.
 
 !start.
 

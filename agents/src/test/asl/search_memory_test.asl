@@ -180,6 +180,24 @@ maxSpeed(100).
        !assert_false(lostBeside);
        -insideArea.
 
+// an avoidance during the back-off after a fall ends the move (the box a wall following was along):
+// with fallLookKept the look around is not lost with it, it comes at the next move, and once only
+@[test]
++!test_a_back_off_cut_short_by_an_avoidance_still_gives_the_look_around_at_the_next_move
+    <- !forget_calls; -lookedAround; +ignoring; +fallLookKept;
+       +delivering; -delivering;                        // the cylinder fell on the way
+       !until(lostBeside, 500);
+       +lookFirst; !!move(0.5);
+       !until(mock_called(setSpeeds(-50, -50)), 500);
+       .succeed_goal(move(_));                          // the avoidance's
+       !assert_false(lookedAround);
+       !move(0.5);                                      // the move after the avoidance
+       !assert_true(lookedAround);
+       !assert_false(ignoring);
+       !assert_false(lookFirst);
+       !assert_false(backingOff);
+       -fallLookKept.
+
 // a place looked for again, straight ahead and near, with no sighting for 2 s: nothing is there, and
 // the search goes on to the next place (the sweep's waypoint, here) instead of driving to it
 @[test]

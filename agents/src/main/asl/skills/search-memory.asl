@@ -14,6 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -21,8 +22,8 @@ nearSide(V, -1) :- V >= 0.
 // Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting); gripPoint
 // (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
-// cylinder), lostBeside, lookingAgain(X, Z, Since) (the place looked for again,
-// in view since, 0 before).
+// cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
+// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -73,7 +74,8 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 // the robot (gripper's gripPoint), not near the robot's centre; without a compass, near the centre
 pickedAt(Cx, Cz) :- gripPoint(Cx, Cz).
 pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
-@forgetPicked +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- !forgetNear(Cx, Cz, R).
+@forgetPicked
++picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- if (backingOff) { -backingOff; -lookFirst }; !forgetNear(Cx, Cz, R).
 
 // a delivery that ends outside the storage area lost its cylinder: knocked out of the gripper, it
 // lies beside the robot. The look around after the fall (delivery's lookFirst) starts 10 cm back from
@@ -82,9 +84,19 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // later, if ever; from 5 cm back the turn met it 8 cm off at the side, and the lateral reach
 // pushed it away: found again 194 s later instead of 22 s)
 @lostBeside -delivering : not insideArea <- +lostBeside.
+// An avoidance during the back-off or the look around (the box a wall following was along) ends the
+// move, and the look around with it; an agent that believes fallLookKept keeps lookFirst until a look
+// around is whole (or a cylinder is picked), and the next move gives it again (wide world 107: the
+// second cylinder fell during a following, the back-off was cut after 40 ms, and it was picked
+// again 115 s later, seeds 1-3 alike)
+@backOffKept
++!move(_) : fallLookKept & lookFirst & lostBeside & maxSpeed(M)
+    <- -lostBeside; +backingOff; setSpeeds(-M / 2, -M / 2); .wait(4000); stop; !lookAfterFall.
 @backOffFirst
 +!move(_) : lookFirst & lostBeside & maxSpeed(M)
     <- -lostBeside; -lookFirst; setSpeeds(-M / 2, -M / 2); .wait(4000); stop; -ignoring; !lookAround.
+@lookAfterBackOff +!move(_) : lookFirst & backingOff <- !lookAfterFall.
+@lookAfterFall +!lookAfterFall <- -ignoring; !lookAround; -backingOff; -lookFirst.
 
 /* Searching: the nearest remembered cylinder first, then the lanes not yet driven */
 
