@@ -6,6 +6,11 @@
 
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 
+// the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
+// (skills/search-memory.asl; as navigation's: wide tuning 101-160 x 1-2 110 -> 111 of 120, x 3-4
+// 109 -> 110, held out 241-300 x 1-2 113 -> 113 (244 -> 245 deliveries), classic 1-50 x 1-3 150 -> 150)
+fallLookKept.
+
 !start.
 
 // the sweep keeps its route's point up to 6 s (until reached or an obstacle met: route.asl), where
