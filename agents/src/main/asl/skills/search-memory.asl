@@ -91,10 +91,12 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // again 115 s later, seeds 1-3 alike)
 @backOffKept
 +!move(_) : fallLookKept & lookFirst & lostBeside & maxSpeed(M)
-    <- -lostBeside; +backingOff; setSpeeds(-M / 2, -M / 2); .wait(4000); stop; !lookAfterFall.
+    <- -lostBeside; +backingOff; !backOffAfterFall(M); !lookAfterFall.
 @backOffFirst
 +!move(_) : lookFirst & lostBeside & maxSpeed(M)
-    <- -lostBeside; -lookFirst; setSpeeds(-M / 2, -M / 2); .wait(4000); stop; -ignoring; !lookAround.
+    <- -lostBeside; -lookFirst; !backOffAfterFall(M); -ignoring; !lookAround.
+// 4 s back at half speed: the look around starts 10 cm back from where the cylinder fell (above)
+@backOffAfterFall +!backOffAfterFall(M) <- setSpeeds(-M / 2, -M / 2); .wait(4000); stop.
 @lookAfterBackOff +!move(_) : lookFirst & backingOff <- !lookAfterFall.
 @lookAfterFall +!lookAfterFall <- -ignoring; !lookAround; -backingOff; -lookFirst.
 
