@@ -91,14 +91,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// the turn past a box swept close by, not in the thesis: every front reading of nearWatch's Level
-// or more is kept as a point (the middleware's nearWatch, for WindowMs); when an avoidance turn has
-// cleared, it goes on (at most turnPast's MaxDegrees) until no such point lies ahead of the body,
-// within Margin m of its sides and Reach m of its rim: a turn on the spot sweeps a box past a
-// sensor and leaves it beside the body, out of both cones, and the veer and the leg after it slid
-// along it
-nearWatch(480, 3000) :- arena(W, D) & looseArea(A) & W * D < A.
-turnPast(0.005, 0.03, 180).
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -116,8 +108,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (nearWatch(NL, NW)) { nearWatch(NL, NW) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
@@ -139,14 +130,8 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; !turnPast("left"); +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; !turnPast("right"); +veering; -avoiding; !veer(D).
-
-// the turn on the spot under way goes on past the points read close by (nearWatch above)
-@turnPastNear
-+!turnPast(Side) : nearWatch(_, _) & turnPast(M, R, Max) & turnSpeed(S)
-    <- turnPast(S, Side, M, R, Max, Ms); if (Ms > 0) { .wait(Ms) }.
-@turnPastNone +!turnPast(_).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
@@ -177,10 +162,7 @@ pausedUntil("-veering") :- veering.
 +!escape : maxSpeed(M) & turnSpeed(S)
     <- println("Trapped: turning away"); -+obstacleTimes([]);
        .random(R); W = (1800 + R * 1800) * M / 2 / S;
-       !stepBack; setSpeeds(S, -S); .wait(W); stop.
-// no step back when a point read close by lies behind (nearWatch above): it backed into that box,
-// and the spin after it stayed in touch
-@stepBack +!stepBack : turnSpeed(S) <- nearBehind(0.01, 0.02, B); if (B \== "yes") { setSpeeds(-S, -S); .wait(150) }.
+       setSpeeds(-S, -S); .wait(150); setSpeeds(S, -S); .wait(W); stop.
 
 /* Random motion towards new floor, suspended while avoiding (Chapter 4 §1.2, §5) */
 

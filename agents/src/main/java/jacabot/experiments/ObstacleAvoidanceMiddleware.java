@@ -210,23 +210,10 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * Whether a point read close by lies behind the body, within {@code margin} m of its sides and
-     * {@code reach} m of its rim (not in the thesis): "yes" or "no" ("no" before {@code nearWatch}).
-     */
-    @OPERATION
-    void nearBehind(double margin, double reach, OpFeedbackParam<String> answer) {
-        boolean behind = near != null && near.anyBehind(map.x(), map.z(), Math.toRadians(map.headingDegrees()), RIM, margin, reach,
-                simTimeMs());
-        answer.set(behind ? "yes" : "no");
-    }
-
-    /**
      * The MyBot's front sensors: on the rim and looking this many degrees off the heading, and their
      * response (the world's lookup table: 480 at 5 cm from the rim, 350 at 8 cm, 200 at 12 cm, 0 at 20 cm).
      */
     static final double SENSOR_ANGLE = 20, RIM = 0.045;
-    /** The MyBot sensor's rays, degrees off its axis (a 30 degree cone of three rays). */
-    private static final double[] RAYS = {-15, 0, 15};
     private static final double[][] RESPONSE = {{1000, 0}, {480, 0.05}, {350, 0.08}, {200, 0.12}, {0, 0.20}};
 
     /** {@return the distance from the rim, metres, at which the MyBot's sensor gives {@code reading}} */
@@ -287,53 +274,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (map != null && reading >= markLevel) {
             map.obstacle(bearing, RIM + rangeOf(Math.min(reading, 1000)));
         }
-        if (near != null && reading >= nearLevel) {
-            // the sensor on the rim; the box somewhere across its cone, at the reading's range along each ray
-            double h = map.headingDegrees(), a = Math.toRadians(h + bearing), range = rangeOf(Math.min(reading, 1000));
-            double sx = map.x() + RIM * Math.cos(a), sz = map.z() + RIM * Math.sin(a);
-            for (double ray : RAYS) {
-                double b = Math.toRadians(h + bearing + ray);
-                near.add(sx + range * Math.cos(b), sz + range * Math.sin(b), simTimeMs());
-            }
-        }
-    }
-
-    /** The points read close by (null: off) and the weakest reading kept as one. */
-    private NearPoints near;
-    private double nearLevel;
-
-    /**
-     * Keeps, from now on, every front reading of {@code level} or more as a point where the reading
-     * puts it, for {@code windowMs} ms (not in the thesis; {@link NearPoints}). Fails before
-     * {@code odometry}, for a level under 1 or a window under 1 ms.
-     */
-    @OPERATION
-    void nearWatch(double level, double windowMs) {
-        if (map == null || !(level >= 1) || !(windowMs >= 1)) {
-            failed("nearWatch needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and a window of 1 ms or more, got "
-                    + level + ", " + windowMs);
-            return;
-        }
-        near = new NearPoints(Math.round(windowMs));
-        nearLevel = level;
-    }
-
-    /**
-     * How much longer, in ms at wheel speeds ±{@code speed}, a turn on the spot towards {@code side}
-     * ("left" or "right") must go on before no point read close by lies ahead of the body, within
-     * {@code margin} m of its sides and {@code reach} m of its rim (not in the thesis); 0 when none
-     * lies there, or when no turn up to {@code maxDegrees} clears. Fails before {@code nearWatch}.
-     */
-    @OPERATION
-    void turnPast(double speed, String side, double margin, double reach, double maxDegrees, OpFeedbackParam<Double> ms) {
-        if (near == null || !(speed > 0) || !("left".equals(side) || "right".equals(side))) {
-            failed("turnPast needs nearWatch(Level, WindowMs) first, a positive speed and side \"left\" or \"right\", got "
-                    + speed + ", " + side);
-            return;
-        }
-        double turn = near.turnPast(map.x(), map.z(), Math.toRadians(map.headingDegrees()), "left".equals(side), RIM, margin, reach,
-                maxDegrees, simTimeMs());
-        ms.set(turn > 0 ? (double) map.turnMillis(turn, speed) : 0.0);
     }
 
     @Override
