@@ -91,15 +91,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// a funnel, not in the thesis (tried and dropped: docs/comparison-obstacle-avoidance.md, "a funnel at
-// a passage's mouth steered through"): trapped while both sensors read corridorSteer's Level or more
-// and under funnelCut, the room dry (fewer than seekBelow cells new in seekWindow ms) and 2 or more
-// cells not crossed on the line 0.15-0.5 m ahead (the middleware's freshAhead), the robot steers on
-// between the two jambs for up to funnelTime ms, as in a corridor, instead of the trap escape's spin
-funnelTime(1500).
-funnelCut(200).
-inFunnel :- corridorSteer(C, _, _) & funnelCut(M) & leftSensor(L) & rightSensor(R) & L >= C & R >= C & L < M & R < M.
-inCorridor :- funnelUntil(U) & .system_time(T) & T < U & inFunnel.
 obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
@@ -137,10 +128,6 @@ pausedUntil("-veering") :- veering.
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
 
-@coverFunnel
-+!avoid(_) : trapped & inFunnel & funnelTime(F) & seekWindow(W) & seekBelow(K)
-    <- freshCells(W, C); freshAhead(0.15, 0.5, A);
-       if (C < K & A >= 2) { -+obstacleTimes([]); .system_time(T); -+funnelUntil(T + F); !steer } else { !escape; -avoiding }.
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
 @coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).

@@ -110,23 +110,6 @@ final class ExplorationMap {
         return fresh;
     }
 
-    /**
-     * {@return how many cells the centre has not crossed on the line straight ahead, from {@code from}
-     * to {@code to} metres, marks not counted}: whether the way on leads to floor not crossed yet
-     */
-    int freshAhead(double from, double to) {
-        int fresh = 0;
-        long previous = key(x, z);
-        for (double d = from; d <= to + 1e-9; d += CELL / 2) {
-            long k = key(x + d * Math.cos(heading), z + d * Math.sin(heading));
-            if (k != previous && !visited.contains(k)) {
-                fresh++;
-            }
-            previous = k;
-        }
-        return fresh;
-    }
-
     private boolean visit() {
         return visited.add(key(x, z));
     }

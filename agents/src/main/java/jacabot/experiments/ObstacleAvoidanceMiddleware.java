@@ -179,21 +179,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * How many 10 cm cells on the line straight ahead, from {@code from} to {@code to} metres, the
-     * robot's centre has not crossed (not in the thesis; walls and boxes met not counted): whether
-     * the way on leads to floor not crossed yet. Fails before {@code odometry} or for a range not
-     * from 0 m up.
-     */
-    @OPERATION
-    void freshAhead(double from, double to, OpFeedbackParam<Double> cells) {
-        if (map == null || !(from >= 0) || !(to >= from)) {
-            failed("freshAhead needs odometry(SpeedUnit, AxleLength) first and 0 <= From <= To, got " + from + ", " + to);
-            return;
-        }
-        cells.set((double) map.freshAhead(from, to));
-    }
-
-    /**
      * The floor the robot's centre has crossed, in m² (its 10 cm cells, not in the thesis). Fails before
      * {@code odometry}.
      */
