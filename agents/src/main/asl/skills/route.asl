@@ -21,8 +21,7 @@ routeReach(0.1).
 // its route gave for up to H ms, until it is within routeReach of it or an obstacle was avoided
 // since, instead of planning again every step, where the aim, re-planned from each new spot, swung
 // left and right near its waypoint: docs/comparison-wide.md); travelling (delivery: the trips plan
-// at every re-alignment); detourFirst (an agent's option, e.g. suspend/resume's: @realignAfterDetour),
-// detour(_) (heading's goal, intended while a detour runs).
+// at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
 // routeHold: the sweep's target and when its aim was planned); the rule nearTarget(X, Z) (within
