@@ -3,8 +3,6 @@
 // the target it heads for the target itself; the boundary following of way-round stands aside; with
 // routeHold the sweep keeps its point until it is reached or an obstacle met.
 // The operations are mocked (agents/README.md "Testing skills").
-// a detour that only drives on (heading's @detour avoids first): before the includes, so it is taken first
-@testDetour +!detour(_) : testDetour <- .wait(3000).
 { include("tester_agent.asl") }
 { include("skill_test_support.asl") }
 { include("../../main/asl/skills/route.asl") }
@@ -51,18 +49,6 @@ mock_operation(_, ok).
        .wait(100);
        !assert_false(followingWall(_, _, _));
        -delivering; -obstacle(true).
-
-// detourFirst (suspend/resume's): the steering's re-alignment along a bending route waits while a
-// detour drives on; without it the re-alignment turns the robot at once
-@[test]
-+!test_a_detours_drive_is_not_cut_short_by_the_steerings_realignment
-    <- -+aim(0.2, -0.3); +testDetour; -+desired(300);
-       +detourFirst; !!detour(1); .wait(50);
-       !forget_calls; !realign; .wait(100);
-       !assert_false(mock_called(setSpeeds(_, _)));
-       -detourFirst; !forget_calls; !realign; .wait(100);
-       !assert_true(mock_called(setSpeeds(_, _)));
-       .drop_intention(balance); .drop_intention(detour(_)); -testDetour; stop.
 
 // routeHold: the sweep keeps its planned point until it is within routeReach of it or an obstacle
 // was avoided since it was planned

@@ -55,10 +55,3 @@ holdOn(Tx, Tz) :- routeHold(H) & aimChosen(Tx, Tz, T0) & .system_time(T) & T - T
 +!aimAt(Tx, Tz) : routePlanning & routeHold(_) & not travelling
     <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz); .system_time(T); -+aimChosen(Tx, Tz, T).
 @aimOnRoute +!aimAt(Tx, Tz) : routePlanning <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).
-
-// an agent's detourFirst (suspend/resume's): a detour's drive forward (heading's @detour: 1-5 s before
-// it aims again) is not cut short by the steering's re-alignment, which along a route that bends
-// comes every second; beside a wall whose unseen part the route crosses, it turned the robot back
-// into the wall within a second of the avoidance, and the trips crept along the wall at 1 cm/s.
-// The detour aims again itself when its drive is over.
-@realignAfterDetour +!realign : detourFirst & .intend(detour(_)).
