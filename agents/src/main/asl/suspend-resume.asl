@@ -23,8 +23,6 @@ routeHold(6000).
 // 105 with the turns alone: docs/comparison-wide.md)
 routeMemory(600000).
 wallGuess(1.0).
-// a wall met on the way makes its guessed continuation within 0.2 m costly to cross (route.asl's @firmWhereMet)
-wallFirmNear(0.2).
 quickTurns.
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along

@@ -21,8 +21,7 @@ routeReach(0.1).
 // its route gave for up to H ms, until it is within routeReach of it or an obstacle was avoided
 // since, instead of planning again every step, where the aim, re-planned from each new spot, swung
 // left and right near its waypoint: docs/comparison-wide.md); travelling (delivery: the trips plan
-// at every re-alignment); wallFirmNear(R) (an agent's option, e.g. suspend/resume's: @firmWhereMet),
-// detours(N) (heading's: a detour began on the way).
+// at every re-alignment).
 // Beliefs: routePlanning (heading, sweep and way-round read it: the trips take the route, the
 // boundary following stands aside), aim(X, Z) (the point headed for now), aimChosen(X, Z, T) (with
 // routeHold: the sweep's target and when its aim was planned); the rule nearTarget(X, Z) (within
@@ -56,10 +55,3 @@ holdOn(Tx, Tz) :- routeHold(H) & aimChosen(Tx, Tz, T0) & .system_time(T) & T - T
 +!aimAt(Tx, Tz) : routePlanning & routeHold(_) & not travelling
     <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz); .system_time(T); -+aimChosen(Tx, Tz, T).
 @aimOnRoute +!aimAt(Tx, Tz) : routePlanning <- routeTo(Tx, Tz, Wx, Wz); -+aim(Wx, Wz).
-
-// an agent's wallFirmNear(R) (suspend/resume's, with wallGuess): a wall met on the way (heading's
-// detour) makes its face's guessed continuation within R m of the robot costly to cross (routeFirm:
-// RouteMap.firmNear). Beside a wall the route crossed its unseen part one cell past the end seen, the
-// robot turned into it, and each turn showed a few centimetres more: the trips crept along a wall at
-// 1-2 cm/s. A crossing is then sought R m on, and the robot goes along the wall.
-@firmWhereMet +detours(N) : N > 0 & wallFirmNear(R) & travelling <- routeFirm(R).

@@ -87,22 +87,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     }
 
     /**
-     * The robot met a wall on its way (not in the thesis): a face's guessed continuation within {@code radius} m
-     * costs more to cross ({@link RouteMap#firmNear}); fails before {@code routeMap}.
-     */
-    @OPERATION
-    void routeFirm(double radius) {
-        double[] here = position();
-        if (routes == null || !(radius > 0)) {
-            failed("routeFirm(Radius) needs routeMap first and Radius > 0, got " + radius);
-            return;
-        }
-        if (here != null) {
-            routes.firmNear(here[0], here[1], radius, simTimeMs());
-        }
-    }
-
-    /**
      * The point to head for on the way to (tx, tz) (not in the thesis): the target itself when the straight
      * way is free of obstacles met, or no way round them is known; else the farthest point of the route
      * round them that the robot can reach in a straight line. Observable: {@code route(Wx, Wz, Cells)}

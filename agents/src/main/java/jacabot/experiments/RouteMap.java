@@ -40,12 +40,6 @@ final class RouteMap {
      * wall's face, when the map guesses walls on ({@link #guessWalls}).
      */
     static final int FACE_RUN = 8;
-    /**
-     * The cost of crossing a face's guessed continuation where the robot met the wall on the way to a
-     * target ({@link #firmNear}): the wall went on where the route crossed it, so a way across it is
-     * sought farther along, not a few centimetres on at the next plan.
-     */
-    static final double FIRM_COST = 4 * NEAR_COST;
 
     private final int cols, rows;
     private final double halfW, halfD, clearance;
@@ -73,9 +67,6 @@ final class RouteMap {
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
     private int lastDriven = -1;
-    /** Per cell: the simulated time the robot met a wall near it ({@link #firmNear}), or {@link #NEVER}; and how many times it did. */
-    private final long[] firmAt;
-    private int firmings, lastFirmings = -1;
 
     /**
      * @param width     the arena's side along x, metres
@@ -97,8 +88,6 @@ final class RouteMap {
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
         driven = new BitSet(cols * rows);
-        firmAt = new long[cols * rows];
-        Arrays.fill(firmAt, NEVER);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -151,29 +140,6 @@ final class RouteMap {
         lastLive = null;
     }
 
-    /**
-     * The robot at (x, z) met a wall at {@code nowMs} on its way (not in the thesis): a face's guessed
-     * continuation within {@code radius} m of it costs {@link #FIRM_COST} a cell to cross, not
-     * {@link #NEAR_COST}, for the map's memory. Beside a wall the route crossed its unseen part one cell
-     * past the end seen; each turn into the wall showed a few centimetres more of it.
-     */
-    void firmNear(double x, double z, double radius, long nowMs) {
-        int r = (int) Math.ceil(radius / CELL), c0 = cell(x, z);
-        if (c0 < 0) {
-            return;
-        }
-        int i0 = c0 % cols, j0 = c0 / cols;
-        for (int i = Math.max(0, i0 - r); i <= Math.min(cols - 1, i0 + r); i++) {
-            for (int j = Math.max(0, j0 - r); j <= Math.min(rows - 1, j0 + r); j++) {
-                double[] p = centre(index(i, j));
-                if (Math.hypot(p[0] - x, p[1] - z) <= radius) {
-                    firmAt[index(i, j)] = nowMs;
-                }
-            }
-        }
-        firmings++;
-    }
-
     /** {@return whether an obstacle is on the map at (x, z) at {@code nowMs}} */
     boolean blocked(double x, double z, long nowMs) {
         int c = cell(x, z);
@@ -197,12 +163,11 @@ final class RouteMap {
             return new double[] {tx, tz};
         }
         BitSet live = live(nowMs);
-        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven && firmings == lastFirmings);
+        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven);
         if (!sameMap) {
             lastLive = live;
             lastDriven = driven.cardinality();
-            lastFirmings = firmings;
-            lastNear = nearCosts(live, nowMs);
+            lastNear = nearCosts(live);
             lastPlan = null;
         }
         double[] near = lastNear;
@@ -254,7 +219,7 @@ final class RouteMap {
      * boundary, {@link #BESIDE_COST} within {@link #BESIDE} times the clearance, else 0 (the largest that
      * applies: the boundary's, made once, raised round each blocked cell).
      */
-    private double[] nearCosts(BitSet live, long nowMs) {
+    private double[] nearCosts(BitSet live) {
         double[] near = boundaryCosts.clone();
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
             int i = c % cols, j = c / cols;
@@ -266,13 +231,13 @@ final class RouteMap {
             }
         }
         if (guessCells > 0) {
-            guessFaces(live, near, nowMs);
+            guessFaces(live, near);
         }
         return near;
     }
 
     /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven cell. */
-    private void guessFaces(BitSet live, double[] near, long nowMs) {
+    private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
             int i = c % cols, j = c / cols;
@@ -285,8 +250,7 @@ final class RouteMap {
                     if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || band(live, a, b, d)) {
                         break;
                     }
-                    int g = index(a, b);
-                    raise(near, g, firmAt[g] != NEVER && nowMs - firmAt[g] < memoryMs ? FIRM_COST : NEAR_COST);
+                    raise(near, index(a, b), NEAR_COST);
                 }
             }
         }
