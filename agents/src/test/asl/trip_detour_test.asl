@@ -1,7 +1,6 @@
 // Skill test of the recharge trip's detour (skills/recharge-trip.asl's @realignAfterDetour, with an
 // agent's detourFirst): on the trip, a detour's drive on is not cut short by the steering's
-// re-alignment while the robot heads within 90 degrees of the way; heading farther off, on a
-// delivery, or without detourFirst, the re-alignment turns the robot at once.
+// re-alignment; on a delivery, or without detourFirst, the re-alignment turns the robot at once.
 // The operations are mocked (agents/README.md "Testing skills").
 // a detour that only drives on (heading's @detour avoids first): before the includes, so it is taken first
 @testDetour +!detour(_) : testDetour <- .wait(3000).
@@ -26,13 +25,6 @@ mock_operation(_, ok).
        !forget_calls; !realign; .wait(100);
        !assert_false(mock_called(setSpeeds(_, _)));
        .drop_intention(detour(_)); -charging; -testDetour; -detourFirst.
-
-@[test]
-+!test_on_the_trip_heading_away_from_the_way_the_realignment_turns_at_once
-    <- +detourFirst; +charging; +testDetour; -+orientation(180); !!detour(1); .wait(50);
-       !forget_calls; !realign; .wait(100);
-       !assert_true(mock_called(setSpeeds(_, _)));
-       .drop_intention(balance); .drop_intention(detour(_)); -+orientation(0); -charging; -testDetour; -detourFirst; stop.
 
 @[test]
 +!test_on_a_delivery_the_realignment_turns_at_once

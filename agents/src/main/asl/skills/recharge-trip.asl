@@ -78,10 +78,7 @@ episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
 // bends comes every second. Beside a wall whose unseen part the route crossed one cell past the end
 // seen, the re-alignment turned the robot back into the wall within a second of each avoidance: the
 // trips crept along a wall at 1 cm/s (wide world 313: 1.7 m in 170 s). The detour aims again itself.
-// Only while the robot heads within 90 degrees of the way (heading's headingOff): the avoidance turns
-// to the side its sensors choose, and a drive on the other way took a trip 0.4 m back along a wall
-// (wide world 102, seed 2: the battery empty 0.3 m short of the charger after a drain).
-@realignAfterDetour +!realign : detourFirst & charging & .intend(detour(_)) & headingOff(G) & G < 90.
+@realignAfterDetour +!realign : detourFirst & charging & .intend(detour(_)).
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
 // the charger mid-charge (tidy-up, generated world 3)
