@@ -23,8 +23,6 @@ routeHold(6000).
 // 105 with the turns alone: docs/comparison-wide.md)
 routeMemory(600000).
 wallGuess(1.0).
-// on the trip a detour drives on before the route's re-alignment (recharge-trip.asl's @realignAfterDetour)
-detourFirst.
 quickTurns.
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along

@@ -17,8 +17,7 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
-// deliverOn(R) (the agent's, optional: see @deliveryKeptOn); detourFirst (the agent's, optional: see
-// @realignAfterDetour), detour(_) (heading's goal, intended while a detour runs); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
+// deliverOn(R) (the agent's, optional: see @deliveryKeptOn); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
 // power those two sums assume instead of fullPower). Rules it extends:
 // travelling, halted.
@@ -73,12 +72,6 @@ episodeStart(X, Y, Z) :- lowFrom(X, Y, Z).
 episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
 
 @stuckAtCharger +stuck : atCharger.
-// an agent's detourFirst (suspend/resume's): on the trip, a detour's drive on (heading's @detour, 1-5 s
-// before it aims again) is not cut short by the steering's re-alignment, which along a route that
-// bends comes every second. Beside a wall whose unseen part the route crossed one cell past the end
-// seen, the re-alignment turned the robot back into the wall within a second of each avoidance: the
-// trips crept along a wall at 1 cm/s (wide world 313: 1.7 m in 170 s). The detour aims again itself.
-@realignAfterDetour +!realign : detourFirst & charging & .intend(detour(_)).
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
 // the charger mid-charge (tidy-up, generated world 3)
