@@ -25,9 +25,6 @@ lookSkip(0.6, 120000).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a sweep following begun within 0.5 m and 60 s of where one was given up for time goes on along the
-// same face, that one's side (skills/way-round.asl)
-followOnWithin(0.5, 60000).
 
 !start.
 

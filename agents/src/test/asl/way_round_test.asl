@@ -161,26 +161,6 @@ mock_operation(_, ok).
        -obstacle(true); -searching.
 
 @[test]
-+!test_a_sweep_following_begun_where_one_was_given_up_for_time_takes_its_side
-    <- .system_time(T); +followOnWithin(0.5, 60000); .abolish(followedTowards(_, _, _, _));
-       +followingWall(right, T - 70000, 1);
-       !followOrLeave(right, T - 70000, 1, 90);                  // 70 s on the sweep: given up, noted
-       !assert_true(followGaveUpAt(right, 0.5, 0, _));
-       +searching; -+waypoint(-0.9, 0, T - 30000); -+closerAt(T - 30000);
-       -obstacle(true); +obstacle(true);                          // the next waypoint, from the same place
-       !until(followingWall(_, _, _), 1000);
-       !assert_true(followingWall(right, _, _));                  // on along the same face (the longer run is left)
-       -obstacle(true); -searching;
-       !until(not followingWall(_, _, _), 1000);
-       -followOnWithin(0.5, 60000); .abolish(followGaveUpAt(_, _, _, _)); .abolish(followedTowards(_, _, _, _)).
-
-@[test]
-+!test_a_sweep_following_given_up_is_not_noted_without_follow_on
-    <- .system_time(T); +followingWall(right, T - 70000, 1);
-       !followOrLeave(right, T - 70000, 1, 90);
-       !assert_false(followGaveUpAt(_, _, _, _) | followingWall(_, _, _)).
-
-@[test]
 +!test_wedged_twice_along_a_wall_gives_the_following_up
     <- .system_time(T); +delivering; -+detours(0); +avoiding; +followingWall(right, T, 1); -wedgedAlong;
        +stuck;                                                    // the first time: back off, go on

@@ -31,8 +31,6 @@ forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // begins; 1 without it).
 // followLooped (a rule of another skill, optional: look-points.asl's; a following it holds for is
 // given up as one that found no way round).
-// followOnWithin(R, Ms) (the agent's, optional: see @followOnStall; a sweep following given up after
-// sweepFollowLimit is noted, followGaveUpAt(Side, X, Z, T)).
 // Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
 // recharge-trip); detours(N) (heading: the count of obstacles met on this trip, reset to 0 when a
 // trip starts); picking, reachCylinder(B) (picking); searching, waypoint(X, Z, T), closerAt(T)
@@ -100,22 +98,13 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 
 /* The sweep no nearer its waypoint: the next obstacle met is a wall to follow towards it */
 
-// A following given up on the sweep for time stopped part way along a wall (wide world 349: a
-// 3.7 m wall, its doorway 0.5 m beyond where 60 s of following ended); the next waypoint lies beyond
-// the same wall, and its following chose the other side and drove back over the wall's face
-// already seen, three times in 300 s. With followOnWithin(R, Ms) a sweep following begun within R m
-// and Ms of where one was given up for time takes that one's side: on along the same face.
-followOnSide(S) :- followOnWithin(R, W) & followGaveUpAt(S, X0, Z0, T0) & .system_time(T) & T - T0 < W
-    & location(X, _, Z) & (X - X0) * (X - X0) + (Z - Z0) * (Z - Z0) < R * R.
 // met head on, as on a trip (a following begun mid-turn left at once: the waypoint lay on the
-// free side); the second following towards one waypoint takes the other side, and
-// one begun where a following was given up for time (followOnSide) takes that one's side
+// free side); the second following towards one waypoint takes the other side
 @followOnStall[atomic]
 +obstacle(true) : not routePlanning & sweepStalled(X, Z) & not avoiding & not followingWall(_, _, _) & not followingOff & not insideArea
                 & location(Lx, _, Lz) & leaveNear(Near) & math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz)) > Near
     <- .succeed_goal(move(_)); Dist = math.sqrt((X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz)); .abolish(gaveUpSide(_));
        if (followedTowards(X, Z, N, Side)) { -followedTowards(X, Z, N, Side); +gaveUpSide(Side); N2 = N + 1 } else { N2 = 1 };
-       if (followOnSide(On)) { !otherSide(On, Off); +gaveUpSide(Off) };
        +followTarget(X, Z); !startFollowing(Dist, S); +followedTowards(X, Z, N2, S).
 // meanwhile the sensors are the following's: no detour, no avoidance
 @obstacleWhileFollowing +obstacle(true) : followingWall(_, _, _).
@@ -153,7 +142,6 @@ followOnSide(S) :- followOnWithin(R, W) & followGaveUpAt(S, X0, Z0, T0) & .syste
 @followGivenUp
 +!followOrLeave(S, T0, _, _) : .system_time(T) & followLimitNow(Lim) & T - T0 > Lim
     <- println("No way round found on the ", S, ": heading for the target again"); +gaveUpSide(S);
-       if (followOnWithin(_, _) & not travelling & location(X, _, Z)) { .abolish(followGaveUpAt(_, _, _, _)); +followGaveUpAt(S, X, Z, T) };
        !endFollowing; !headAgain(gaveUp).
 // the wall led to the arena's boundary, away from the target: no doorway that way; the other
 // side, along the same wall (Bug would go round the whole room first)
