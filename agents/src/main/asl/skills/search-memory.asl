@@ -14,7 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
+// Parameters (the agent's, optional): fallLookKept (see @backOffKept), placeBack (see @placeBack).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -23,7 +23,8 @@ nearSide(V, -1) :- V >= 0.
 // (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
-// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
+// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before), returnedPlace(X, Z)
+// (a place given up unseen and put back: not a second time).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -108,6 +109,15 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @searchingAlready +!searchFromMemory : searching.
 @searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.
 
+// A place looked for again is taken off the memory (lookAgain); its waypoint given up before the
+// robot had it in view or came near it (the waypoint's patience spent, an escape, noAccess by the
+// storage area, a recharge trip in between) lost it for good. An agent that believes placeBack puts
+// it back, once, after the next waypoint is chosen (so an unreachable place is not tried at once again)
+placeGivenUp(Cx, Cz) :- placeBack & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0) & not returnedPlace(Cx, Cz)
+    & location(X, _, Z) & takenRadius(R) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) > R * R.
+@placeBack
++!nextWaypoint : placeGivenUp(Cx, Cz)
+    <- -lookingAgain(Cx, Cz, 0); +returnedPlace(Cx, Cz); !nextWaypoint; +seenCylinder(Cx, Cz).
 // on the sweep too, the next waypoint is the nearest cylinder remembered before the next lane's
 // (one lost from sight while homing, behind a box, was left for the lanes across the arena)
 @nextRemembered +!nextWaypoint : searching & seenCylinder(_, _) <- !lookAgain.
