@@ -263,3 +263,18 @@ maxSpeed(100).
        +seenCylinder(0.6, -0.1); !lookAgain; !nextWaypoint;   // without placeBack: lost
        !assert_false(seenCylinder(0.6, -0.1));
        .abolish(lookingAgain(_, _, _)); -searching; -+orientation(0).
+
+// a place looked for again, not yet in view, when another is looked for instead (a homing lost from
+// sight on the way remembers its cylinder and looks there): with placeBack the first is remembered again
+@[test]
++!test_a_place_left_unseen_for_another_is_remembered_again
+    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); .abolish(returnedPlace(_, _));
+       -+location(0, 0, 0); -+orientation(180); +searching; +placeBack;
+       +seenCylinder(0.6, 0.1); !lookAgain;
+       +seenCylinder(-0.5, -0.5); !lookAgain;            // another place instead, the first unseen
+       !assert_true(waypoint(-0.5, -0.5, _) & lookingAgain(-0.5, -0.5, 0));
+       !assert_true(seenCylinder(0.6, 0.1));
+       -placeBack; .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
+       +seenCylinder(0.6, -0.1); !lookAgain; +seenCylinder(-0.5, 0.5); !lookAgain;   // without placeBack: lost
+       !assert_false(seenCylinder(0.6, -0.1));
+       .abolish(lookingAgain(_, _, _)); -searching; -+orientation(0).

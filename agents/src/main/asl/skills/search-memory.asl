@@ -111,8 +111,9 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 
 // A place looked for again is taken off the memory (lookAgain); its waypoint given up before the
 // robot had it in view or came near it (the waypoint's patience spent, an escape, noAccess by the
-// storage area, a recharge trip in between) lost it for good. An agent that believes placeBack puts
-// it back, once, after the next waypoint is chosen (so an unreachable place is not tried at once again)
+// storage area, a recharge trip in between), or another place looked for instead (a homing lost
+// from sight on the way), lost it for good. An agent that believes placeBack puts it back, once,
+// after the next waypoint is chosen (so an unreachable place is not tried at once again)
 placeGivenUp(Cx, Cz) :- placeBack & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0) & not returnedPlace(Cx, Cz)
     & location(X, _, Z) & takenRadius(R) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) > R * R.
 @placeBack
@@ -129,7 +130,9 @@ placeGivenUp(Cx, Cz) :- placeBack & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
-       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz); .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
+       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
+       if (placeGivenUp(Px, Pz) & takenRadius(R) & (Px - Cx) * (Px - Cx) + (Pz - Cz) * (Pz - Cz) > R * R) { +returnedPlace(Px, Pz); +seenCylinder(Px, Pz) };
+       .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
        println("Looking again where a cylinder was seen");
        .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 
