@@ -242,28 +242,6 @@ maxSpeed(100).
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
 
-// a place looked for again whose waypoint is given up before the robot had it in view (its patience
-// spent, an escape): with placeBack it is remembered again after the next waypoint is chosen, once;
-// without, and once reached, it is not
-@[test]
-+!test_a_place_given_up_unseen_is_remembered_again_once
-    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); .abolish(returnedPlace(_, _));
-       -+location(0, 0, 0); -+orientation(180); +searching; +placeBack;
-       +seenCylinder(0.6, 0.1); !lookAgain;
-       !assert_true(waypoint(0.6, 0.1, _) & lookingAgain(0.6, 0.1, 0));
-       !nextWaypoint;                                    // given up unseen
-       !assert_true(waypoint(0.5, 0.5, _));              // the next waypoint first
-       !assert_true(seenCylinder(0.6, 0.1));             // then the place is remembered again
-       !lookAgain; !nextWaypoint;                        // looked for again and given up again
-       !assert_false(seenCylinder(0.6, 0.1));
-       +seenCylinder(-0.6, 0.1); !lookAgain; -+location(-0.55, 0, 0.1);
-       !nextWaypoint;                                    // reached: looked at
-       !assert_false(seenCylinder(-0.6, 0.1));
-       -placeBack; -+location(0, 0, 0);
-       +seenCylinder(0.6, -0.1); !lookAgain; !nextWaypoint;   // without placeBack: lost
-       !assert_false(seenCylinder(0.6, -0.1));
-       .abolish(lookingAgain(_, _, _)); -searching; -+orientation(0).
-
 // a place looked for again, not yet in view, when another is looked for instead (a homing lost from
 // sight on the way remembers its cylinder and looks there): with placeBack the first is remembered again
 @[test]
@@ -274,6 +252,12 @@ maxSpeed(100).
        +seenCylinder(-0.5, -0.5); !lookAgain;            // another place instead, the first unseen
        !assert_true(waypoint(-0.5, -0.5, _) & lookingAgain(-0.5, -0.5, 0));
        !assert_true(seenCylinder(0.6, 0.1));
+       .abolish(seenCylinder(_, _)); +seenCylinder(0.6, 0.1); !lookAgain;            // looked for again,
+       +seenCylinder(-0.5, -0.5); !lookAgain;            // and left unseen again: not a second time
+       !assert_false(seenCylinder(0.6, 0.1));
+       .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
+       +seenCylinder(0.3, 0.3); !lookAgain; +seenCylinder(0.3, 0.5); !lookAgain;   // the same cylinder seen nearer
+       !assert_false(seenCylinder(0.3, 0.3));
        -placeBack; .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
        +seenCylinder(0.6, -0.1); !lookAgain; +seenCylinder(-0.5, 0.5); !lookAgain;   // without placeBack: lost
        !assert_false(seenCylinder(0.6, -0.1));
