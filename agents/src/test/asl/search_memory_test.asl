@@ -241,24 +241,3 @@ maxSpeed(100).
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// a place looked for again, not yet in view, when another is looked for instead (a homing lost from
-// sight on the way remembers its cylinder and looks there): with placeBack the first is remembered again
-@[test]
-+!test_a_place_left_unseen_for_another_is_remembered_again
-    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); .abolish(returnedPlace(_, _));
-       -+location(0, 0, 0); -+orientation(180); +searching; +placeBack;
-       +seenCylinder(0.6, 0.1); !lookAgain;
-       +seenCylinder(-0.5, -0.5); !lookAgain;            // another place instead, the first unseen
-       !assert_true(waypoint(-0.5, -0.5, _) & lookingAgain(-0.5, -0.5, 0));
-       !assert_true(seenCylinder(0.6, 0.1));
-       .abolish(seenCylinder(_, _)); +seenCylinder(0.6, 0.1); !lookAgain;            // looked for again,
-       +seenCylinder(-0.5, -0.5); !lookAgain;            // and left unseen again: not a second time
-       !assert_false(seenCylinder(0.6, 0.1));
-       .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
-       +seenCylinder(0.3, 0.3); !lookAgain; +seenCylinder(0.3, 0.5); !lookAgain;   // the same cylinder seen nearer
-       !assert_false(seenCylinder(0.3, 0.3));
-       -placeBack; .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
-       +seenCylinder(0.6, -0.1); !lookAgain; +seenCylinder(-0.5, 0.5); !lookAgain;   // without placeBack: lost
-       !assert_false(seenCylinder(0.6, -0.1));
-       .abolish(lookingAgain(_, _, _)); -searching; -+orientation(0).

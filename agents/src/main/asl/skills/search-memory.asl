@@ -14,7 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept), placeBack (see placeGivenUp).
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -23,8 +23,7 @@ nearSide(V, -1) :- V >= 0.
 // (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
-// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before), returnedPlace(X, Z)
-// (a place given up unseen and put back: not a second time).
+// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -109,13 +108,6 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @searchingAlready +!searchFromMemory : searching.
 @searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.
 
-// A place looked for again is taken off the memory (lookAgain): another place looked for instead
-// before the robot had it in view or came near it (a homing lost from sight on the way remembers
-// its cylinder and looks there) lost it for good. An agent that believes placeBack puts it back,
-// once, unless the new place is within takenRadius of it (tidy-up world 223 × 6: a place 0.17 m
-// from the last cylinder dropped at 220 s for a homing lost from sight, the lanes never found it)
-placeGivenUp(Cx, Cz) :- placeBack & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0) & not returnedPlace(Cx, Cz)
-    & location(X, _, Z) & takenRadius(R) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) > R * R.
 // on the sweep too, the next waypoint is the nearest cylinder remembered before the next lane's
 // (one lost from sight while homing, behind a box, was left for the lanes across the arena)
 @nextRemembered +!nextWaypoint : searching & seenCylinder(_, _) <- !lookAgain.
@@ -127,9 +119,7 @@ placeGivenUp(Cx, Cz) :- placeBack & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
-       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
-       if (placeGivenUp(Px, Pz) & takenRadius(R) & (Px - Cx) * (Px - Cx) + (Pz - Cz) * (Pz - Cz) > R * R) { +returnedPlace(Px, Pz); +seenCylinder(Px, Pz) };
-       .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
+       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz); .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
        println("Looking again where a cylinder was seen");
        .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 
