@@ -65,3 +65,14 @@ mock_operation(_, ok).
        .system_time(T); +lastAvoid(T); !forget_calls; !aimAt(0.9, 0.4);
        !assert_true(mock_called(routeTo(0.9, 0.4, _, _)));
        -routeHold(_); -lastAvoid(_); -aimChosen(_, _, _).
+
+// an agent's wallGuess and wallFirm (suspend/resume's): the map's guess is set up, and made firm for
+// wallFirm's metres; without wallGuess no firm part
+@[test]
++!test_a_firm_wall_guess_is_set_up_with_the_guess
+    <- +wallGuess(1.0); +wallFirm(0.15); !forget_calls; !setUpRoute;
+       !assert_true(mock_called(routeWallGuess(1.0)));
+       !assert_true(mock_called(routeWallFirm(0.15)));
+       -wallGuess(_); !forget_calls; !setUpRoute;
+       !assert_false(mock_called(routeWallFirm(_)));
+       -wallFirm(_).

@@ -87,6 +87,19 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     }
 
     /**
+     * Makes the wall guess firm for its first {@code metres} past a face's seen end (not in the thesis:
+     * {@link RouteMap#guessWallsFirm}; the side sensors' open rays end a guess); fails before {@code routeMap}.
+     */
+    @OPERATION
+    void routeWallFirm(double metres) {
+        if (routes == null || !(metres >= 0)) {
+            failed("routeWallFirm(Metres) needs routeMap first and Metres >= 0, got " + metres);
+            return;
+        }
+        routes.guessWallsFirm(metres);
+    }
+
+    /**
      * The point to head for on the way to (tx, tz) (not in the thesis): the target itself when the straight
      * way is free of obstacles met, or no way round them is known; else the farthest point of the route
      * round them that the robot can reach in a straight line. Observable: {@code route(Wx, Wz, Cells)}
@@ -136,6 +149,8 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
             SensorKind.FRONT_RIGHT_DISTANCE, 45.0, SensorKind.RIGHT_DISTANCE, 90.0));
     /** How far from the body a route keeps, metres, beyond the body's radius. */
     static final double ROUTE_MARGIN = 0.01;
+    /** With a firm wall guess: a side sensor (±90 degrees) reading under {@link #MAP_LEVEL} saw the floor open this far from the body, metres. */
+    static final double OPEN_REACH = 0.04;
     /** A reading over this is an obstacle put on the map (about 5 cm from the body). */
     static final double MAP_LEVEL = 100;
     /** The Khepera's infra-red calibration, reading to metres from the body: {reading, distance} pairs, readings falling. */
@@ -163,7 +178,14 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         Double bearing = SENSOR_BEARING.get(kind);
         double[] here = position();
         double compass = heading();
-        if (bearing == null || here == null || Double.isNaN(compass) || !(value > MAP_LEVEL)) {
+        if (bearing == null || here == null || Double.isNaN(compass)) {
+            return;
+        }
+        if (!(value > MAP_LEVEL)) {
+            if (routes.firmGuess() && Math.abs(bearing) == 90) {
+                double a = Math.toRadians(compass + bearing), d0 = KHEPERA_RADIUS, d1 = KHEPERA_RADIUS + OPEN_REACH;
+                routes.seenFree(here[0] + d0 * Math.cos(a), here[1] + d0 * Math.sin(a), here[0] + d1 * Math.cos(a), here[1] + d1 * Math.sin(a));
+            }
             return;
         }
         double a = Math.toRadians(compass + bearing), d = KHEPERA_RADIUS + rangeOf(value);

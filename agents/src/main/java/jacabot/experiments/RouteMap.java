@@ -41,6 +41,21 @@ final class RouteMap {
      */
     static final int FACE_RUN = 8;
 
+    /**
+     * With a firm guess ({@link #guessWallsFirm}): crossing the guessed face within its firm part, next to the
+     * seen end, costs this a cell (four cells within the clearance), so a route along a face crosses past the
+     * firm part, not just past the end the robot has seen (where it turned into the wall at every plan and
+     * crept along it at 1-2 cm/s); and a cell within the clearance of a guessed cell costs
+     * {@link #GUESS_BESIDE_COST}, so the route runs along the guess at the robot's distance from the seen face.
+     */
+    static final double FIRM_COST = 4 * NEAR_COST;
+    static final double GUESS_BESIDE_COST = 2;
+    /**
+     * With a firm guess: a guess ended within this many metres of the face's seen end by an obstacle seen, a
+     * cell the robot drove through or one a side sensor saw open is a gap between two things, perhaps a
+     * doorway, and has no firm part (the route may cross it at once).
+     */
+    static final double GAP = 0.4;
     private final int cols, rows;
     private final double halfW, halfD, clearance;
     private final long memoryMs;
@@ -64,6 +79,11 @@ final class RouteMap {
     private List<Integer> lastPlan;
     /** Per cell: whether the robot's centre has stood there (a doorway it drove through is open). */
     private final BitSet driven;
+    /** Per cell: whether a side sensor's ray passed there without an obstacle ({@link #seenFree}); with the firm guess only. */
+    private final BitSet seenOpen;
+    private int openCount, lastOpen = -1;
+    /** The firm part of a face's guess, in cells (0: none, and no cell is taken as seen open). */
+    private int firmCells;
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
     private int lastDriven = -1;
@@ -88,6 +108,7 @@ final class RouteMap {
         seenAt = new long[cols * rows];
         Arrays.fill(seenAt, NEVER);
         driven = new BitSet(cols * rows);
+        seenOpen = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -140,6 +161,35 @@ final class RouteMap {
         lastLive = null;
     }
 
+    /**
+     * Makes the guess firm for its first {@code metres} past a face's seen end (not in the thesis; 0: as
+     * {@link #guessWalls} alone): see {@link #FIRM_COST}, {@link #GUESS_BESIDE_COST} and {@link #GAP}; a guess
+     * also ends where a side sensor saw the floor open ({@link #seenFree}: the end of a wall the robot drives
+     * along, where it turns).
+     */
+    void guessWallsFirm(double metres) {
+        firmCells = (int) Math.round(Math.max(0, metres) / CELL);
+        lastLive = null;
+    }
+
+    /** {@return whether the guess has a firm part: the middleware then reports the side sensors' open rays} */
+    boolean firmGuess() {
+        return guessCells > 0 && firmCells > 0;
+    }
+
+    /** A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess ends there). */
+    void seenFree(double x, double z, double tx, double tz) {
+        int steps = (int) Math.ceil(Math.hypot(tx - x, tz - z) / (CELL / 2));
+        for (int k = 0; k <= steps; k++) {
+            double f = steps == 0 ? 0 : (double) k / steps;
+            int c = cell(x + f * (tx - x), z + f * (tz - z));
+            if (c >= 0 && !seenOpen.get(c)) {
+                seenOpen.set(c);
+                openCount++;
+            }
+        }
+    }
+
     /** {@return whether an obstacle is on the map at (x, z) at {@code nowMs}} */
     boolean blocked(double x, double z, long nowMs) {
         int c = cell(x, z);
@@ -163,10 +213,11 @@ final class RouteMap {
             return new double[] {tx, tz};
         }
         BitSet live = live(nowMs);
-        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven);
+        boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven && openCount == lastOpen);
         if (!sameMap) {
             lastLive = live;
             lastDriven = driven.cardinality();
+            lastOpen = openCount;
             lastNear = nearCosts(live);
             lastPlan = null;
         }
@@ -236,7 +287,10 @@ final class RouteMap {
         return near;
     }
 
-    /** Raises the cells past each face's seen end, along it, by {@link #NEAR_COST}, up to {@link #guessCells} or a driven cell. */
+    /**
+     * Raises the cells past each face's seen end, along it, by {@link #NEAR_COST} ({@link #FIRM_COST} within the firm
+     * part), up to {@link #guessCells} or a driven cell (or, with the firm part, one seen open).
+     */
     private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
@@ -245,12 +299,31 @@ final class RouteMap {
                 if (band(live, i + d[0], j + d[1], d) || !faceBehind(live, i, j, d)) {
                     continue;
                 }
+                int run = 0;
+                boolean bounded = false;
                 for (int k = 1; k <= guessCells; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
-                    if (a < 0 || b < 0 || a >= cols || b >= rows || driven.get(index(a, b)) || band(live, a, b, d)) {
+                    if (a < 0 || b < 0 || a >= cols || b >= rows) {
                         break;
                     }
-                    raise(near, index(a, b), NEAR_COST);
+                    if (driven.get(index(a, b)) || seenOpen.get(index(a, b)) && !live.get(index(a, b)) || band(live, a, b, d)) {
+                        bounded = k * CELL <= GAP;
+                        break;
+                    }
+                    run = k;
+                }
+                boolean firm = firmCells > 0 && !bounded;
+                for (int k = 1; k <= run; k++) {
+                    int a = i + k * d[0], b = j + k * d[1];
+                    raise(near, index(a, b), firm && k <= firmCells ? FIRM_COST : NEAR_COST);
+                    if (firmCells > 0) {
+                        for (double[] o : around) {
+                            int e = a + (int) o[0], f = b + (int) o[1];
+                            if (o[2] == NEAR_COST && e >= 0 && f >= 0 && e < cols && f < rows) {
+                                raise(near, index(e, f), GUESS_BESIDE_COST);
+                            }
+                        }
+                    }
                 }
             }
         }

@@ -109,6 +109,36 @@ class RouteMapTest {
         assertTrue(guessed > -0.95 && guessed < -0.8, "with it, through the doorway driven through: z = " + guessed);
     }
 
+    /**
+     * A wall's face seen along x = 0 from z = -0.8 to 0, the robot beside it at (-0.06, -0.05), the target
+     * across it, the guess on (1 m). The guess alone is crossed just past the seen end (the robot turned
+     * into the wall's unseen part there at every plan and crept along it); made firm for 0.15 m, it is
+     * crossed past the firm part; a side sensor that saw the floor open on the face's line, 5 cm past the
+     * seen end, ends the guess: crossed there.
+     */
+    @Test
+    void aFirmGuessIsCrossedPastItsFirmPartOrWhereTheFloorWasSeenOpen() {
+        double[] crossings = new double[3];
+        for (int variant = 0; variant < 3; variant++) {
+            RouteMap m = new RouteMap(2, 2, 0.04, 60_000);
+            m.guessWalls(1.0);
+            if (variant > 0) {
+                m.guessWallsFirm(0.15);
+            }
+            for (double z = -0.8; z <= 0; z += 0.01) {
+                m.obstacle(0.001, z, 0);
+            }
+            if (variant == 2) {
+                m.seenFree(-0.03, 0.05, 0.01, 0.05);
+            }
+            m.waypoint(-0.06, -0.05, 0.4, -0.2, 100);
+            crossings[variant] = crossingOf(m.lastRoute());
+        }
+        assertTrue(crossings[0] < 0.1, "the guess alone, just past the seen end: z = " + crossings[0]);
+        assertTrue(crossings[1] > 0.12, "firm, past its firm part: z = " + crossings[1]);
+        assertTrue(crossings[2] < 0.1, "seen open, there: z = " + crossings[2]);
+    }
+
     private static double crossingOf(List<double[]> route) {
         return route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow()[1];
     }
