@@ -79,11 +79,9 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
      */
     @OPERATION
     void routeWallGuess(double metres) {
-        if (routes == null || !(metres >= 0)) {
-            failed("routeWallGuess(Metres) needs routeMap first and Metres >= 0, got " + metres);
-            return;
+        if (guessable("routeWallGuess", metres)) {
+            routes.guessWalls(metres);
         }
-        routes.guessWalls(metres);
     }
 
     /**
@@ -92,11 +90,18 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
      */
     @OPERATION
     void routeWallFirm(double metres) {
-        if (routes == null || !(metres >= 0)) {
-            failed("routeWallFirm(Metres) needs routeMap first and Metres >= 0, got " + metres);
-            return;
+        if (guessable("routeWallFirm", metres)) {
+            routes.guessWallsFirm(metres);
         }
-        routes.guessWallsFirm(metres);
+    }
+
+    /** Whether a wall guess of {@code metres} can be set; the operation fails with one line otherwise. */
+    private boolean guessable(String operation, double metres) {
+        if (routes == null || !(metres >= 0)) {
+            failed(operation + "(Metres) needs routeMap first and Metres >= 0, got " + metres);
+            return false;
+        }
+        return true;
     }
 
     /**
