@@ -85,25 +85,3 @@ mock_operation(_, ok).
        !sweepStep;                                                      // 121 s in all: skipped
        !assert_true(waypoint(0, 0.5, _));
        -waypointPatience(60000); -lookNearing(10000).
-
-// a look point inside a thick wall is never within lookReach: one followed towards (way-round's
-// followedTowards) is reached within wallReach, and the following towards it ends (followReached)
-@[test]
-+!test_a_look_point_followed_towards_is_reached_by_the_wall
-    <- -looked; -+sweep([[-1, -0.5], [0, 0.5]]); -+waypoint(1, -0.5, 0); -+location(1, 0, -0.25);
-       +followedTowards(1, -0.5, 1, right); +followTarget(1, -0.5);
-       !assert_true(followReached(right, 95));                          // 0.25 m from it, abeam on the wall's side
-       !assert_false(followReached(right, 20));                         // ahead: perhaps a box to go round
-       !assert_false(followReached(left, 95));
-       +arrivedBy(1, -0.5);                                             // way-round's @followArrived
-       !sweepStep;
-       !assert_true(looked);
-       !assert_true(waypoint(0, 0.5, _));
-       !assert_false(arrivedBy(_, _));
-       -followedTowards(1, -0.5, 1, right); -followTarget(1, -0.5).
-
-@[test]
-+!test_a_look_point_not_followed_towards_needs_lookReach
-    <- -looked; -+sweep([[-1, -0.5], [0, 0.5]]); -+waypoint(1, -0.5, 0); -+location(1, 0, -0.25);
-       !assert_false(followReached(right, 95));
-       !assert_false(byWall(1, -0.5)).

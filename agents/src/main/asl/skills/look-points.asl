@@ -8,11 +8,6 @@
 // and the next begins (a cylinder the world moved may lie where the robot looked before).
 // Parameters (the agent's): lookSpacing(S), m; without it this skill does nothing.
 lookReach(0.15).   // m: a look point this near is reached (its look around sees as far)
-// m: a look point followed towards (way-round) is reached this near: one inside a thick wall is
-// never within lookReach (wide world 356, seed 1: a column of points in a 0.31 m wall, the robot up
-// and down its face for 60 s each, 0.2-0.25 m from them; no pick in the whole run)
-wallReach(0.3).
-wallAbeam(70).     // degrees: the bearing past which a point followed towards is abeam (see followReached)
 // a look point (a waypoint of the sweep) is skipped after 60 s, progress or not: sweep's progress
 // -based skip measured worse for navigation (generated worlds 129 -> 119 of 150)
 waypointPatience(60000).
@@ -32,15 +27,12 @@ lookPointMost(120000).
 // Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
 // memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
 // (avoidance, picking, delivery); stuck (the middleware's progress watch); followingWall(S, T, D)
-// (way-round: a following towards the look point), wedgedAlong (way-round: wedged on it once),
-// followTarget(X, Z), followedTowards(X, Z, N, S), arrivedBy(X, Z) (way-round: the point followed
-// towards, and one whose following ended by followReached).
+// (way-round: a following towards the look point), wedgedAlong (way-round: wedged on it once).
 // Beliefs: sweep(Points) (the look points left in this round), lookPointSet(X, Z, T) (when the look
 // point became the waypoint), lanesOnly (no look point lies off the
 // storage area: the sweep's lanes instead), lookAgainFrom(X, Z, T) (when the place looked for
 // again became the waypoint), followFrom(X, Z, T) (where the following begun at T began).
-// Rules it offers: followLooped (way-round gives such a following up), followReached(Side, Rel) (way-round ends
-// such a following: the look point is reached).
+// Rules it offers: followLooped (way-round gives such a following up).
 // Needs: sweep (!lookAround, waypoint, closest, closerAt; its plans are the fall-back), !escape
 // (recovery). Include it after search memory (its remembered cylinders come first) and before sweep.
 
@@ -68,19 +60,6 @@ lookPointMost(120000).
 +!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & location(Lx, _, Lz) & lookReach(R)
               & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R
     <- !nextWaypoint; !lookAround.
-// a look point followed towards is reached within wallReach: the wall between, or the point inside it
-withinWallReach(X, Z) :- location(Lx, _, Lz) & wallReach(R) & (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz) < R * R.
-byWall(X, Z) :- followedTowards(X, Z, _, _) & withinWallReach(X, Z).
-// way-round ends the following there once the point is abeam or behind on the wall's side (Rel:
-// its bearing from the heading, positive to the right), the nearest the face comes: ahead, the wall
-// may be a box the following goes round to it (wide world 339, seed 1: a point 0.25 m beyond a box
-// counted reached as the following began, the cylinder behind it found 170 s later)
-followReached(right, Rel) :- Rel > 0 & wallAbeam(A) & Rel > A & towardsReached.
-followReached(left, Rel) :- Rel < 0 & wallAbeam(A) & Rel < -A & towardsReached.
-towardsReached :- lookSpacing(_) & not travelling & followTarget(X, Z) & waypoint(X, Z, _) & not lookingAgain(X, Z, _) & byWall(X, Z).
-@lookPointByWall
-+!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & arrivedBy(X, Z) & not lookingAgain(X, Z, _) & byWall(X, Z)
-    <- .abolish(arrivedBy(_, _)); !nextWaypoint; !lookAround.
 
 // the patience run out while the robot still comes nearer: the point's clock set so that it runs
 // out lookNearing after the last approach (sweep's closerAt)

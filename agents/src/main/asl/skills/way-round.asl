@@ -30,8 +30,7 @@ forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // rehitsToFollow(N) (the agent's, optional: obstacles met near here on this trip before a following
 // begins; 1 without it).
 // followLooped (a rule of another skill, optional: look-points.asl's; a following it holds for is
-// given up as one that found no way round); followReached(Side, Rel) (the same: a following it holds for ends,
-// its target reached).
+// given up as one that found no way round).
 // Reads: targetPoint(X, Z), travelling, insideArea, delivering, nearStorage (heading, delivery,
 // recharge-trip); detours(N) (heading: the count of obstacles met on this trip, reset to 0 when a
 // trip starts); picking, reachCylinder(B) (picking); searching, waypoint(X, Z, T), closerAt(T)
@@ -40,8 +39,7 @@ forgetOnFall(followingWall(_, _, _)). forgetOnFall(followTarget(_, _)).
 // Beliefs: hitPoint(X, Z) (where obstacles were met on this trip), followingWall(Side, Since, Dist)
 // (the wall on Side, "left" or "right", since Since, Dist from the target when it began),
 // gaveUpSide(Side), wedgedAlong (wedged once on this following), avoiding (avoidance: the other skills stand aside meanwhile), followTarget(X, Z)
-// (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it),
-// arrivedBy(X, Z) (a following towards it ended by followReached: the sweep's step takes it back).
+// (the sweep's waypoint followed towards), followedTowards(X, Z, N, Side) (followings towards it).
 // An agent with route.asl (routePlanning) plans its way round what it met instead: no following;
 // one with way-back.asl goes back the way it came when its trail knows one (the hook !wallMet).
 // Needs: !computeGap, !balance, !detour (heading), !nextWaypoint (sweep). Include it after recharge, before
@@ -135,11 +133,6 @@ targetDistance(Dist) :- location(X, _, Z) & goingTo(Tx, Tz) & Dist = math.sqrt((
 @leaveWall
 +!followOrLeave(S, T0, Dist0, Rel) : .system_time(T) & minFollow(Min) & T - T0 > Min & canLeave(S, Dist0, Rel)
     <- println("The target is on the free side: heading for it again"); !endFollowing; !headAgain(left).
-// a skill's rule followReached(Side, Rel) (look-points.asl's: the look point followed towards is this
-// near and abeam, the wall between or the point inside it) ends the following: the sweep's step looks around here
-@followArrived
-+!followOrLeave(S, _, _, Rel) : followReached(S, Rel) & followTarget(X, Z)
-    <- println("By the look point, the wall between: looking around here"); +arrivedBy(X, Z); !endFollowing.
 // a skill's rule followLooped (look-points.asl's: round a box and back where the following began)
 // gives the following up as one that found no way round
 @followLooped
