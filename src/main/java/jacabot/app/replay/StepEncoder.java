@@ -19,6 +19,7 @@ import jacabot.app.replay.StepLog.Pending;
 import jacabot.app.replay.StepLog.Step;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
+import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
@@ -61,6 +62,8 @@ final class StepEncoder implements Closeable {
     private List<MindState.IntentionView> intentions = List.of();
     private List<String> events = List.of();
     private final Map<String, Moved> objects = new HashMap<>();
+    /** Walls and boxes where the header has them: they stand still unless the world file's events move one. */
+    private final Map<String, Moved> fixedAtStart = new HashMap<>();
     /** The last camera image written (the link's own array, never changed) and its text. */
     private int[] image;
     private String imageText;
@@ -70,6 +73,9 @@ final class StepEncoder implements Closeable {
         this.file = Files.newOutputStream(file);
         for (ObjectState o : header.start().objects()) {
             objects.put(o.id(), moved(o));
+            if (!o.movable()) {
+                fixedAtStart.put(o.id(), moved(o));
+            }
         }
         line(JSON.valueToTree(header));
         flushChunk();
@@ -112,6 +118,7 @@ final class StepEncoder implements Closeable {
             intentions = null;
             events = null;
             objects.clear();
+            objects.putAll(fixedAtStart); // a key step holds the walls and boxes an event moved, not the others
         }
         lastTime = timeMs;
         Map<String, Moved> movedNow = stepSink == null ? null : new LinkedHashMap<>();
@@ -130,8 +137,8 @@ final class StepEncoder implements Closeable {
             if (world != null) {
                 boolean anyMoved = false;
                 for (ObjectState o : world) {
-                    if (!o.movable()) {
-                        continue; // walls, boxes; the robot's pose is in its body
+                    if (o.kind() == ObjectKind.ROBOT || !o.movable() && samePlace(o, objects.get(o.id()))) {
+                        continue; // the robot's pose is in its body; a wall or box where it was
                     }
                     Moved now = moved(o);
                     if (!now.equals(objects.get(o.id()))) {
@@ -204,6 +211,11 @@ final class StepEncoder implements Closeable {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /** Whether {@code o} stands where {@code last} has it, without a record made per wall and step. */
+    private static boolean samePlace(ObjectState o, Moved last) {
+        return last != null && o.pose().x() == last.x() && o.pose().z() == last.z() && o.pose().heading() == last.heading();
     }
 
     private static Moved moved(ObjectState o) {
