@@ -9,6 +9,7 @@ import jacabot.experiments.link.StepData;
 import jacabot.robot.link.Command;
 import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
+import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.robot.Robot;
 import java.io.IOException;
@@ -123,7 +124,7 @@ final class RobotTap {
             var p = robot.pose();
             var placed = new ArrayList<RobotView.Placed>();
             for (ObjectState o : world.supervisor().objects()) {
-                if (o.movable()) {
+                if (o.movable() || o.kind() == ObjectKind.BOX) { // a fixed box too: the world file's events may move it
                     placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
                             StepLog.round(o.pose().heading()), o.carriedBy()));
                 }

@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
 import jacabot.sim.geom.Pose;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -17,7 +19,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A box the world file's events move (a fixed body, teleported) is in the step log from the step it
  * moved, and in every key step after, so a replay, from the start or from a key step, draws it where
- * it went; walls and boxes that stay put are never written.
+ * it went; walls and boxes that stay put are never written. The inspector's live view shows it
+ * where it went too.
  */
 class MovedFixedObjectTest {
     @Test
@@ -65,6 +68,24 @@ class MovedFixedObjectTest {
             assertEquals(250, i);
         }
         assertEquals(List.of(movedAt, 100, 200), writtenAt, "written when it moved and in each key step after");
+    }
+
+    @Test
+    void theLiveViewShowsABoxAnEventMovedWhereItWent() throws Exception {
+        String json = Files.readString(SyntheticRun.ROOT.resolve("worlds/navigation.json"));
+        SimWorld plain = SimWorld.parse(json, "navigation.json");
+        ObjectState box = plain.snapshot().objects().stream().filter(o -> o.kind() == ObjectKind.BOX && !o.movable())
+                .findFirst().orElseThrow(() -> new AssertionError("the navigation world has a fixed box"));
+        double x = box.pose().x() + 0.2, z = box.pose().z() - 0.1;
+        var tree = (ObjectNode) StepLog.JSON.readTree(json);
+        tree.putArray("events").addObject().put("at", 0.2).put("do", "move").put("object", box.id()).put("x", x).put("z", z);
+        SimWorld w = SimWorld.parse(tree.toString(), "navigation-moved.json");
+        var robot = w.robots().get(0);
+        w.step(400);
+        var placed = RobotTap.view(w, robot, List.of(), List.of()).objects().stream().filter(p -> p.id().equals(box.id()))
+                .findFirst().orElseThrow(() -> new AssertionError(box.id() + " not in the live view"));
+        assertEquals(x, placed.x(), 0.002);
+        assertEquals(z, placed.z(), 0.002);
     }
 
     private static StepLog.Header readHeader(Path dir) throws Exception {
