@@ -5,8 +5,8 @@ import java.util.List;
 /**
  * What the robot's side shows next to its agent's mind: the body's ground truth (pose, battery,
  * wheel speeds), the middleware's last commands, the readings the controller sent (the page draws
- * the distance sensors' rays from them) and where the world's movable objects and boxes are (the
- * page's drawing of the arena at that instant; a fixed box moves when the world file's events move it).
+ * the distance sensors' rays from them) and where the world's movable objects are, and a fixed box
+ * the world file's events moved (the page's drawing of the arena at that instant).
  *
  * @param battery energy in J, null without a battery
  * @param readings {@code KIND value} as in the step log ({@code FRONT_DISTANCE 512.0})
@@ -26,7 +26,7 @@ public record RobotView(long timeMs, double x, double z, double heading, Double 
         this(timeMs, x, z, heading, battery, left, right, commands, List.of(), List.of());
     }
 
-    /** A movable object or a box where it is, and who carries it (null: nobody). */
+    /** A movable object, or a fixed box an event moved, where it is, and who carries it (null: nobody). */
     public record Placed(String id, double x, double z, double heading, String carriedBy) {
     }
 }

@@ -11,11 +11,14 @@ import jacabot.robot.link.SensorInfo;
 import jacabot.sim.SimWorld;
 import jacabot.sim.engine.ObjectKind;
 import jacabot.sim.engine.ObjectState;
+import jacabot.sim.geom.Pose;
 import jacabot.sim.robot.Robot;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * One robot's part of a tap on a lockstep run, after each control step while its agent is idle:
@@ -30,6 +33,7 @@ final class RobotTap {
     private final StepLog.Writer log;
     private volatile List<String> lastCommands = List.of();
     private volatile List<SensorInfo> lastReadings = List.of();
+    private final Map<String, Pose> boxesAtStart;
 
     /**
      * @param agent     the robot's agent, or null (none to watch)
@@ -40,6 +44,7 @@ final class RobotTap {
         this.world = world;
         this.robot = robot;
         this.log = log;
+        this.boxesAtStart = fixedBoxes(world);
         this.watch = agent == null ? null : MindWatch.attach(inspector, agent, this::robotView);
     }
 
@@ -116,15 +121,29 @@ final class RobotTap {
     private RobotView robotView() {
         var readings = new ArrayList<String>();
         lastReadings.forEach(r -> readings.add(StepLog.reading(r)));
-        return view(world, robot, lastCommands, readings);
+        return view(world, robot, lastCommands, readings, boxesAtStart);
     }
 
-    static RobotView view(SimWorld world, Robot robot, List<String> commands, List<String> readings) {
+    /** {@return where the world's fixed boxes stand now, by id: the world file's events may move one later} */
+    static Map<String, Pose> fixedBoxes(SimWorld world) {
+        synchronized (world) {
+            var at = new HashMap<String, Pose>();
+            for (ObjectState o : world.supervisor().objects()) {
+                if (!o.movable() && o.kind() == ObjectKind.BOX) {
+                    at.put(o.id(), o.pose());
+                }
+            }
+            return at;
+        }
+    }
+
+    /** @param boxesAtStart the fixed boxes where they stood ({@link #fixedBoxes}): one placed elsewhere since is in the view */
+    static RobotView view(SimWorld world, Robot robot, List<String> commands, List<String> readings, Map<String, Pose> boxesAtStart) {
         synchronized (world) {
             var p = robot.pose();
             var placed = new ArrayList<RobotView.Placed>();
             for (ObjectState o : world.supervisor().objects()) {
-                if (o.movable() || o.kind() == ObjectKind.BOX) { // a fixed box too: the world file's events may move it
+                if (o.movable() || boxesAtStart.containsKey(o.id()) && !o.pose().equals(boxesAtStart.get(o.id()))) {
                     placed.add(new RobotView.Placed(o.id(), StepLog.round(o.pose().x()), StepLog.round(o.pose().z()),
                             StepLog.round(o.pose().heading()), o.carriedBy()));
                 }

@@ -151,7 +151,8 @@ public final class RunTap implements Closeable {
     /** {@return the first robot's body now, without commands (a real-time run sends them over its socket)} */
     public static Supplier<RobotView> robotView(SimWorld world) {
         Robot r = world.robots().get(0);
-        return () -> RobotTap.view(world, r, List.of(), List.of());
+        var boxesAtStart = RobotTap.fixedBoxes(world);
+        return () -> RobotTap.view(world, r, List.of(), List.of(), boxesAtStart);
     }
 
     @Override

@@ -72,9 +72,10 @@ final class StepEncoder implements Closeable {
         Files.createDirectories(file.toAbsolutePath().getParent());
         this.file = Files.newOutputStream(file);
         for (ObjectState o : header.start().objects()) {
-            objects.put(o.id(), moved(o));
+            Moved at = moved(o);
+            objects.put(o.id(), at);
             if (!o.movable()) {
-                fixedAtStart.put(o.id(), moved(o));
+                fixedAtStart.put(o.id(), at);
             }
         }
         line(JSON.valueToTree(header));

@@ -3,6 +3,7 @@ package jacabot.app.replay;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.sim.SimWorld;
@@ -19,8 +20,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A box the world file's events move (a fixed body, teleported) is in the step log from the step it
  * moved, and in every key step after, so a replay, from the start or from a key step, draws it where
- * it went; walls and boxes that stay put are never written. The inspector's live view shows it
- * where it went too.
+ * it went; walls and boxes that stay put are never written. The inspector's live view places it
+ * where it went too, and no fixed box that stayed put.
  */
 class MovedFixedObjectTest {
     @Test
@@ -81,8 +82,11 @@ class MovedFixedObjectTest {
         tree.putArray("events").addObject().put("at", 0.2).put("do", "move").put("object", box.id()).put("x", x).put("z", z);
         SimWorld w = SimWorld.parse(tree.toString(), "navigation-moved.json");
         var robot = w.robots().get(0);
+        var boxesAtStart = RobotTap.fixedBoxes(w);
+        assertTrue(RobotTap.view(w, robot, List.of(), List.of(), boxesAtStart).objects().stream()
+                .noneMatch(p -> p.id().equals(box.id())), box.id() + " in the view before it moved");
         w.step(400);
-        var placed = RobotTap.view(w, robot, List.of(), List.of()).objects().stream().filter(p -> p.id().equals(box.id()))
+        var placed = RobotTap.view(w, robot, List.of(), List.of(), boxesAtStart).objects().stream().filter(p -> p.id().equals(box.id()))
                 .findFirst().orElseThrow(() -> new AssertionError(box.id() + " not in the live view"));
         assertEquals(x, placed.x(), 0.002);
         assertEquals(z, placed.z(), 0.002);
