@@ -307,10 +307,7 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
                 if (obstacle && map != null) {
-                    // where the reading of the side that read more puts it, not a fixed range: at a
-                    // passage's mouth a weak reading of a jamb at 13 cm marked the passage's own cell
-                    double near = Math.max(left, right);
-                    map.obstacle(delta > 0 ? SENSOR_ANGLE : delta < 0 ? -SENSOR_ANGLE : 0, RIM + rangeOf(Math.min(near, 1000)));
+                    map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
                 }
                 getObsProperty("obstacle").updateValue(obstacle);
                 markTrigger();
