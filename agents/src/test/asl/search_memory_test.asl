@@ -113,7 +113,8 @@ maxSpeed(100).
 // with sightLines a place is remembered with where the robot saw it from, and a pick forgets the
 // places whose line of sight passes the cylinder picked, however far off along the line (far
 // sight's distance): one seen 1.3 m ahead goes when the cylinder is picked 0.8 m ahead, one seen
-// from the same point 0.3 m aside of it stays; without sightLines the far place stays
+// from the same point 0.3 m aside of it stays, and one seen past it from 5 cm behind it stays;
+// without sightLines the far place stays
 @[test]
 +!test_with_sight_lines_a_pick_forgets_the_places_seen_along_its_line
     <- .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); -+location(0, 0, 0); -+orientation(0);
@@ -122,10 +123,12 @@ maxSpeed(100).
        ?seenFrom(X, Z, Vx, Vz); !assert_equals(X, 1.3, 0.001); !assert_equals(Z, 0, 0.001); !assert_equals(Vx, 0, 0.001);
        +cylinderSighted(-20.56, 0.85); !until(seenCylinder(_, Zs) & Zs < -0.1, 500); -cylinderSighted(-20.56, 0.85);  // (0.8, -0.3)
        -+location(0.75, 0, 0);                          // the cylinder 0.8 m ahead in the gripper (0.05 m ahead)
+       +cylinderSighted(30, 0.6); !until(seenCylinder(_, Zp) & Zp > 0.2, 500); -cylinderSighted(30, 0.6);  // past it: (1.27, 0.3)
        +picked(true);
-       !until(not (seenCylinder(Xf, _) & Xf > 1.2), 500);
-       !assert_false(seenCylinder(Xf2, _) & Xf2 > 1.2); !assert_false(seenFrom(Xs, _, _, _) & Xs > 1.2);
-       !assert_true(seenCylinder(_, _));                // the one aside: kept
+       !until(not (seenCylinder(Xf, Zf) & Xf > 1.2 & Zf < 0.1), 500);
+       !assert_false(seenCylinder(Xf2, Zf2) & Xf2 > 1.2 & Zf2 < 0.1); !assert_false(seenFrom(Xs, Zs2, 0, 0) & Xs > 1.2);
+       !assert_true(seenCylinder(_, Za) & Za < -0.2);   // the one aside: kept
+       !assert_true(seenCylinder(_, Zb) & Zb > 0.2);    // the one seen past the cylinder from beside it: kept
        -picked(true); -sightLines;
        .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); -+location(0, 0, 0);
        +cylinderSighted(0, 1.3); !until(seenCylinder(_, _), 500); -cylinderSighted(0, 1.3);

@@ -15,8 +15,9 @@ sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
 // Parameters (the agent's, optional): fallLookKept (see @backOffKept), sightLines (see @forgetPickedSightLines).
-sightLine(0.1, 0.6). // m: with sightLines, a pick forgets a place whose line of sight passes this near the
-                     // cylinder picked, up to this far past the place (see @forgetPickedSightLines)
+sightLine(0.1, 0.15, 0.6). // m: with sightLines, a pick forgets a place whose line of sight passes this near
+                           // the cylinder picked, this far or more from where it was seen from, and up to this
+                           // far past the place (see @forgetPickedSightLines)
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -92,9 +93,11 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // picked: far sight's distance comes from the apparent width (one column of the image is 1.4 m, two
 // 0.7 m), so a place is often 0.5-1 m off along that line while its bearing is within a degree, and
 // a place of the cylinder just picked, seen from afar, outlived the pick and was driven to later
-// (tidy-up world 216 × 6: red1 seen from 0.96 m was remembered 1.57 m away by the wall)
-seenThrough(Gx, Gz, X, Z, Vx, Vz) :- sightLine(W, Past) & seenCylinder(X, Z) & seenFrom(X, Z, Vx, Vz) & Dx = X - Vx & Dz = Z - Vz
-    & L = math.sqrt(Dx * Dx + Dz * Dz) & L > 0.05 & Along = ((Gx - Vx) * Dx + (Gz - Vz) * Dz) / L & Along > 0
+// (tidy-up world 216 × 6: red1 seen from 0.96 m was remembered 1.57 m away by the wall). Not a
+// place seen from beside the cylinder picked: another cylinder, seen past it (216 × 6: red1 seen
+// 5 cm behind red4 as red4 was picked)
+seenThrough(Gx, Gz, X, Z, Vx, Vz) :- sightLine(W, Near, Past) & seenCylinder(X, Z) & seenFrom(X, Z, Vx, Vz) & Dx = X - Vx & Dz = Z - Vz
+    & L = math.sqrt(Dx * Dx + Dz * Dz) & L > 0.05 & Along = ((Gx - Vx) * Dx + (Gz - Vz) * Dz) / L & Along > Near
     & Along < L + Past & math.abs((Gx - Vx) * Dz - (Gz - Vz) * Dx) / L < W.
 @forgetPickedSightLines
 +picked(true) : sightLines & pickedAt(Cx, Cz) & takenRadius(R)
