@@ -153,42 +153,6 @@ maxSpeed(100).
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); .abolish(lastSightedFrom(_, _)); -+location(0, 0, 0); -+orientation(0).
 
-// a place looked for again, not yet in view, when another is looked for instead (a homing lost from
-// sight on the way remembers its cylinder and looks there): with placeBack the first is remembered again
-@[test]
-+!test_a_place_left_unseen_for_another_is_remembered_again
-    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); .abolish(returnedPlace(_, _));
-       -+location(0, 0, 0); -+orientation(180); +searching; +placeBack;
-       +seenCylinder(0.6, 0.1); !lookAgain;
-       +seenCylinder(-0.5, -0.5); !lookAgain;            // another place instead, the first unseen
-       !assert_true(waypoint(-0.5, -0.5, _) & lookingAgain(-0.5, -0.5, 0));
-       !assert_true(seenCylinder(0.6, 0.1));
-       .abolish(seenCylinder(_, _)); +seenCylinder(0.6, 0.1); !lookAgain;            // looked for again,
-       +seenCylinder(-0.5, -0.5); !lookAgain;            // and left unseen again: not a second time
-       !assert_false(seenCylinder(0.6, 0.1));
-       .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
-       +seenCylinder(0.3, 0.3); !lookAgain; +seenCylinder(0.3, 0.5); !lookAgain;   // the same cylinder seen nearer
-       !assert_false(seenCylinder(0.3, 0.3));
-       -placeBack; .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _));
-       +seenCylinder(0.6, -0.1); !lookAgain; +seenCylinder(-0.5, 0.5); !lookAgain;   // without placeBack: lost
-       !assert_false(seenCylinder(0.6, -0.1));
-       .abolish(lookingAgain(_, _, _)); -searching; -+orientation(0).
-
-// with sightLines and placeBack, a place looked for again whose line of sight passes the cylinder
-// picked since is that cylinder's: not put back when another place is looked for after the delivery
-@[test]
-+!test_a_place_looked_for_on_the_line_of_a_pick_is_not_put_back
-    <- .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); .abolish(lookingAgain(_, _, _)); .abolish(returnedPlace(_, _));
-       -+location(0, 0, 0); -+orientation(0); +searching; +placeBack; +sightLines;
-       +cylinderSighted(0, 1.3); !until(seenCylinder(_, _), 500); -cylinderSighted(0, 1.3);   // (1.3, 0) from (0, 0)
-       !lookAgain; !assert_true(lookingAgain(_, _, 0));
-       -+location(0.75, 0, 0); +picked(true); !until(not lookingAgain(_, _, _), 500);   // picked 0.8 m ahead, on its line
-       -picked(true); -+location(0, 0, 0);
-       +seenCylinder(-0.5, -0.5); !lookAgain;            // after the delivery, another place
-       !assert_false(seenCylinder(Xp, _) & Xp > 1.2);
-       -placeBack; -sightLines; .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); .abolish(lookingAgain(_, _, _));
-       -searching.
-
 // without a compass the cylinder's place is unknown: the places near the robot's centre go
 @[test]
 +!test_picking_without_a_compass_forgets_the_places_near_the_robot

@@ -14,8 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept), sightLines (see @forgetPickedSightLines),
-// placeBack (see placeGivenUp).
+// Parameters (the agent's, optional): fallLookKept (see @backOffKept), sightLines (see @forgetPickedSightLines).
 sightLine(0.1, 0.15, 0.6). // m: with sightLines, a pick forgets a place whose line of sight passes this near
                            // the cylinder picked, this far or more from where it was seen from, and up to this
                            // far past the place (see @forgetPickedSightLines)
@@ -28,8 +27,7 @@ sightLine(0.1, 0.15, 0.6). // m: with sightLines, a pick forgets a place whose l
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), with sightLines seenFrom(X, Z, Vx, Vz) and lastSightedFrom(Vx, Vz) (where the robot was
 // when it saw the place), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
-// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before), returnedPlace(X, Z)
-// (with placeBack, a place left unseen and put back: not a second time).
+// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -98,17 +96,13 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // (tidy-up world 216 × 6: red1 seen from 0.96 m was remembered 1.57 m away by the wall). Not a
 // place seen from beside the cylinder picked: another cylinder, seen past it (216 × 6: red1 seen
 // 5 cm behind red4 as red4 was picked)
-seenThrough(Gx, Gz, X, Z, Vx, Vz) :- seenCylinder(X, Z) & seenFrom(X, Z, Vx, Vz) & onSightLine(Gx, Gz, X, Z, Vx, Vz).
-onSightLine(Gx, Gz, X, Z, Vx, Vz) :- sightLine(W, Near, Past) & Dx = X - Vx & Dz = Z - Vz & L = math.sqrt(Dx * Dx + Dz * Dz) & L > 0.05 & Along = ((Gx - Vx) * Dx + (Gz - Vz) * Dz) / L & Along > Near
+seenThrough(Gx, Gz, X, Z, Vx, Vz) :- sightLine(W, Near, Past) & seenCylinder(X, Z) & seenFrom(X, Z, Vx, Vz) & Dx = X - Vx & Dz = Z - Vz
+    & L = math.sqrt(Dx * Dx + Dz * Dz) & L > 0.05 & Along = ((Gx - Vx) * Dx + (Gz - Vz) * Dz) / L & Along > Near
     & Along < L + Past & math.abs((Gx - Vx) * Dz - (Gz - Vz) * Dx) / L < W.
 @forgetPickedSightLines
 +picked(true) : sightLines & pickedAt(Cx, Cz) & takenRadius(R)
     <- if (backingOff) { -backingOff; -lookFirst }; !forgetNear(Cx, Cz, R);
-       for (seenThrough(Cx, Cz, X, Z, Vx, Vz)) { -seenCylinder(X, Z); -seenFrom(X, Z, Vx, Vz) };
-       for (lookingAgain(X, Z, S) & pickedThere(Cx, Cz, X, Z, R)) { -lookingAgain(X, Z, S) }.
-// the place being looked for again was this cylinder's (near it, or seen along a line through it): not put back (placeBack)
-pickedThere(Cx, Cz, X, Z, R) :- (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
-pickedThere(Cx, Cz, X, Z, _) :- seenFrom(X, Z, Vx, Vz) & onSightLine(Cx, Cz, X, Z, Vx, Vz).
+       for (seenThrough(Cx, Cz, X, Z, Vx, Vz)) { -seenCylinder(X, Z); -seenFrom(X, Z, Vx, Vz) }.
 @forgetPicked
 +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- if (backingOff) { -backingOff; -lookFirst }; !forgetNear(Cx, Cz, R).
 
@@ -151,22 +145,6 @@ pickedThere(Cx, Cz, X, Z, _) :- seenFrom(X, Z, Vx, Vz) & onSightLine(Cx, Cz, X, 
 // now (a homing lost from sight remembers one and looks again; the sweep's step took it first, and the
 // failure ended the motion loop: tidy-up world 236 × 2 stopped at 366 s)
 @lookAgainNothing +!lookAgain : not seenCylinder(_, _).
-// A place looked for again is taken off the memory (lookAgain): another place looked for instead
-// before the robot had it in view or came near it (a homing lost from sight on the way remembers
-// its cylinder and looks there) lost it for good. An agent that believes placeBack puts it back,
-// once, unless the new place is within takenRadius of it (tidy-up world 223 × 6: a place 0.17 m
-// from the last cylinder dropped at 220 s for a homing lost from sight, the lanes never found it);
-// with sightLines not one a pick since showed was that cylinder's (@forgetPickedSightLines)
-placeGivenUp(Cx, Cz) :- waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0) & not returnedPlace(Cx, Cz)
-    & location(X, _, Z) & takenRadius(R) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) > R * R.
-@lookAgainPlaceBack
-+!lookAgain : placeBack & location(X, _, Z)
-    <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
-       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz);
-       if (placeGivenUp(Px, Pz) & takenRadius(R) & (Px - Cx) * (Px - Cx) + (Pz - Cz) * (Pz - Cz) > R * R) { +returnedPlace(Px, Pz); +seenCylinder(Px, Pz) };
-       .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
-       println("Looking again where a cylinder was seen");
-       .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
