@@ -110,49 +110,6 @@ maxSpeed(100).
        !assert_true(seenCylinder(0, -0.22));
        -picked(true); -+orientation(0).
 
-// with sightLines a place is remembered with where the robot saw it from, and a pick forgets the
-// places whose line of sight passes the cylinder picked, however far off along the line (far
-// sight's distance): one seen 1.3 m ahead goes when the cylinder is picked 0.8 m ahead, one seen
-// from the same point 0.3 m aside of it stays, and one seen past it from 5 cm behind it stays;
-// without sightLines the far place stays
-@[test]
-+!test_with_sight_lines_a_pick_forgets_the_places_seen_along_its_line
-    <- .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); -+location(0, 0, 0); -+orientation(0);
-       +sightLines;
-       +cylinderSighted(0, 1.3); !until(seenCylinder(_, _), 500); -cylinderSighted(0, 1.3);   // (1.3, 0) from (0, 0)
-       ?seenFrom(X, Z, Vx, Vz); !assert_equals(X, 1.3, 0.001); !assert_equals(Z, 0, 0.001); !assert_equals(Vx, 0, 0.001);
-       +cylinderSighted(-20.56, 0.85); !until(seenCylinder(_, Zs) & Zs < -0.1, 500); -cylinderSighted(-20.56, 0.85);  // (0.8, -0.3)
-       -+location(0.75, 0, 0);                          // the cylinder 0.8 m ahead in the gripper (0.05 m ahead)
-       +cylinderSighted(30, 0.6); !until(seenCylinder(_, Zp) & Zp > 0.2, 500); -cylinderSighted(30, 0.6);  // past it: (1.27, 0.3)
-       +picked(true);
-       !until(not (seenCylinder(Xf, Zf) & Xf > 1.2 & Zf < 0.1), 500);
-       !assert_false(seenCylinder(Xf2, Zf2) & Xf2 > 1.2 & Zf2 < 0.1); !assert_false(seenFrom(Xs, Zs2, 0, 0) & Xs > 1.2);
-       !assert_true(seenCylinder(_, Za) & Za < -0.2);   // the one aside: kept
-       !assert_true(seenCylinder(_, Zb) & Zb > 0.2);    // the one seen past the cylinder from beside it: kept
-       -picked(true); -sightLines;
-       .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); -+location(0, 0, 0);
-       +cylinderSighted(0, 1.3); !until(seenCylinder(_, _), 500); -cylinderSighted(0, 1.3);
-       !assert_false(seenFrom(_, _, _, _));
-       -+location(0.75, 0, 0); +picked(true); .wait(200);
-       !assert_true(seenCylinder(Xk, _) & Xk > 1.2);   // without sightLines: only the places near the pick go
-       -picked(true); .abolish(seenCylinder(_, _)); -+location(0, 0, 0).
-
-// a homing lost from sight remembers its place with where its last sighting was seen from
-@[test]
-+!test_with_sight_lines_a_place_lost_from_sight_keeps_where_it_was_seen_from
-    <- .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _)); .abolish(lookingAgain(_, _, _));
-       -+location(0, 0, 0); -+orientation(90); +sightLines;
-       -+lastFound(-300000); -+lastSighted(-100000); -+sightDistance(0.5);
-       -+sightOffset(-90);                               // 0.5 m to the left (+x), seen from (0, 0)
-       !until(lastSightedFrom(_, _), 500);
-       -+location(0.1, 0.1, 0);                          // moved on since
-       +homing(-200000); -homing(_);
-       !until(seenCylinder(_, _), 500);
-       ?seenFrom(X, Z, Vx, Vz); !assert_equals(X, 0.5, 0.001); !assert_equals(Vx, 0, 0.001); !assert_equals(Vz, 0, 0.001);
-       -sightLines; .abolish(seenCylinder(_, _)); .abolish(seenFrom(_, _, _, _));
-       .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
-       .abolish(lastSightedAt(_, _)); .abolish(lastSightedFrom(_, _)); -+location(0, 0, 0); -+orientation(0).
-
 // without a compass the cylinder's place is unknown: the places near the robot's centre go
 @[test]
 +!test_picking_without_a_compass_forgets_the_places_near_the_robot

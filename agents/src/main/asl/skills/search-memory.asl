@@ -14,10 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept), sightLines (see @forgetPickedSightLines).
-sightLine(0.1, 0.15, 0.6). // m: with sightLines, a pick forgets a place whose line of sight passes this near
-                           // the cylinder picked, this far or more from where it was seen from, and up to this
-                           // far past the place (see @forgetPickedSightLines)
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -25,8 +22,7 @@ sightLine(0.1, 0.15, 0.6). // m: with sightLines, a pick forgets a place whose l
 // Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting); gripPoint
 // (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
-// cylinder), with sightLines seenFrom(X, Z, Vx, Vz) and lastSightedFrom(Vx, Vz) (where the robot was
-// when it saw the place), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
+// cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
 // lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
@@ -55,12 +51,9 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 // delivery 50 s of its last 250 went to three such places)
 sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
-toRemember(Off, Dist, Cx, Cz, R) :- sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R).
-@rememberSightingFrom
-+cylinderSighted(Off, Dist) : sightLines & toRemember(Off, Dist, Cx, Cz, R) & location(X, _, Z)
-    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); +seenFrom(Cx, Cz, X, Z).
 @rememberSighting
-+cylinderSighted(Off, Dist) : toRemember(Off, Dist, Cx, Cz, R) <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
++cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
 // a homing that lost sight of its cylinder (far sight then looks away a while): the cylinder is
@@ -69,40 +62,18 @@ toRemember(Off, Dist, Cx, Cz, R) :- sightedAt(Off, Dist, Cx, Cz) & not nearStore
 // behind a box 0.2 m away was left for the lanes for minutes); not a homing stale since the last
 // pick, nor one given up (its last sighting is recent). Placed ahead on the pose at the loss, it
 // was off by the turn made since (world 131: 0.7 m off, a 40 s detour)
-@sightPlaceFrom
-+sightOffset(Off) : sightLines & sightDistance(D) & sightedAt(Off, D, Cx, Cz) & location(X, _, Z)
-    <- -+lastSightedAt(Cx, Cz); -+lastSightedFrom(X, Z).
 @sightPlace +sightOffset(Off) : sightDistance(D) & sightedAt(Off, D, Cx, Cz) <- -+lastSightedAt(Cx, Cz).
-lostPlace(T0, Cx, Cz, R) :- lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
-    & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R).
-@lostFromSightFrom
--homing(T0) : sightLines & lostPlace(T0, Cx, Cz, R) & lastSightedFrom(X, Z)
-    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); +seenFrom(Cx, Cz, X, Z); if (searching) { !lookAgain }.
 @lostFromSight
--homing(T0) : lostPlace(T0, Cx, Cz, R) <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
+-homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
+              & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R)
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
 
-@forgetNearFrom
-+!forgetNear(Cx, Cz, R) : sightLines <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z); .abolish(seenFrom(X, Z, _, _)) }.
 @forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
 // the robot (gripper's gripPoint), not near the robot's centre; without a compass, near the centre
 pickedAt(Cx, Cz) :- gripPoint(Cx, Cz).
 pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
-// An agent that believes sightLines forgets too every place whose line of sight passes the cylinder
-// picked: far sight's distance comes from the apparent width (one column of the image is 1.4 m, two
-// 0.7 m), so a place is often 0.5-1 m off along that line while its bearing is within a degree, and
-// a place of the cylinder just picked, seen from afar, outlived the pick and was driven to later
-// (tidy-up world 216 × 6: red1 seen from 0.96 m was remembered 1.57 m away by the wall). Not a
-// place seen from beside the cylinder picked: another cylinder, seen past it (216 × 6: red1 seen
-// 5 cm behind red4 as red4 was picked)
-seenThrough(Gx, Gz, X, Z, Vx, Vz) :- sightLine(W, Near, Past) & seenCylinder(X, Z) & seenFrom(X, Z, Vx, Vz) & Dx = X - Vx & Dz = Z - Vz
-    & L = math.sqrt(Dx * Dx + Dz * Dz) & L > 0.05 & Along = ((Gx - Vx) * Dx + (Gz - Vz) * Dz) / L & Along > Near
-    & Along < L + Past & math.abs((Gx - Vx) * Dz - (Gz - Vz) * Dx) / L < W.
-@forgetPickedSightLines
-+picked(true) : sightLines & pickedAt(Cx, Cz) & takenRadius(R)
-    <- if (backingOff) { -backingOff; -lookFirst }; !forgetNear(Cx, Cz, R);
-       for (seenThrough(Cx, Cz, X, Z, Vx, Vz)) { -seenCylinder(X, Z); -seenFrom(X, Z, Vx, Vz) }.
 @forgetPicked
 +picked(true) : pickedAt(Cx, Cz) & takenRadius(R) <- if (backingOff) { -backingOff; -lookFirst }; !forgetNear(Cx, Cz, R).
 
