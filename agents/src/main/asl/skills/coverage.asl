@@ -53,12 +53,16 @@ seekBelow(6).
 seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
-// not in the thesis: a front sensor that read flankWatch's Level or more (a box within about 5 cm of
-// it) in the last Ms and reads nothing now had a box there that the robot has since driven past, to
-// that flank, out of both cones; an avoidance that would turn to that side turns the robot back the way it came instead (a
-// half turn on the spot, which a disc makes without touching anything new): the turn there and the
-// veer and straight leg after it slid the flank along that box (the largest share of the contact:
-// docs/comparison-obstacle-avoidance.md, "the flank turned to, by the readings before the turn")
+// not in the thesis: a front sensor that read flankWatch's Level or more (a box within about 5 cm
+// of it) in the last Ms and reads nothing now had a box there that the robot has since driven past,
+// to that flank, out of both cones. An avoidance that would turn to that side turns the robot back
+// the way it came instead (@coverBack: a half turn on the spot, which a disc makes without touching
+// anything new, and no veer): the turn there, the veer and the straight leg after them slid the
+// flank along that box, the largest share of the contact failures' touches. Wide tuning 101-160,
+// run seeds 1-2: 95 -> 96 of 120 (runs with contact over 2 s 8 -> 6), seeds 3-4: 97 -> 101 (9 -> 4),
+// extra 301-370 x 1: 49 -> 49 of 70, held out 241-300: 93 -> 93; over 1000 ms or from 300 it turned
+// back often enough to lose (docs/comparison-obstacle-avoidance.md, "a half turn from a box just
+// passed on the side turned to")
 flankWatch(480, 500).
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & narrowSide(N) & (W * D >= A | math.min(W, D) < N).
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
@@ -110,8 +114,8 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
 // Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
-// seeking(Until) and soughtAt(T). Needs: !clear (recovery). Include it before recovery (its escape,
-// a turn on the spot, is the one this robot uses).
+// seeking(Until) and soughtAt(T), strongLeft(T) and strongRight(T) (flankWatch). Needs: !clear
+// (recovery). Include it before recovery (its escape, a turn on the spot, is the one this robot uses).
 
 @setUpCoverage
 +!setUpCoverage : wheelGeometry(U, A)
