@@ -7,11 +7,7 @@
 // the wall's doorway or round its end, and the following goes that way. Without such a point, or
 // with that side given up, way-round's own choice.
 // Parameters (the agent's): trailStep(S), m; without it this skill does nothing.
-// m beyond the robot, along the axis, for a trail point to lie past the wall: a thin wall's far face is
-// followed some 0.1 m beyond its near face (the robot's centre 4-5 cm off each face); at 0.15 the way the
-// robot had come through a doorway along that face did not count, and an older point took the trip
-// to the wall's other end (wide worlds 349 and 351)
-trailPast(0.08).
+trailPast(0.15).   // m beyond the robot, along the axis, for a trail point to lie past the wall
 setUpGoal(setUpTrailSide).
 // Reads: location, goingTo(X, Z), gaveUpSide(S) (way-round).
 // Beliefs: trail(N, X, Z) (the N-th point), trailLast(N, X, Z) (the last one).
