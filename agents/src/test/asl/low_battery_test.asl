@@ -257,3 +257,11 @@ mock_operation(_, ok).
        !assert_true(fetchingKnocked);
        -fellNearStorageAt(_); -+location(X0, Y0, Z0).
 
+
+// the search heads for look points (look-points.asl, lookSpacing(1.0): in this 1 x 1 m arena the one
+// grid point, its centre), as navigation's, not for the lanes' ends at the arena's sides
+@[test]
++!test_the_search_heads_for_look_points
+    <- -sweep(_); -waypoint(_, _, _); -+location(-0.3, 0, 0.3);
+       !planSweep;
+       !assert_true(waypoint(0, 0, _)).
