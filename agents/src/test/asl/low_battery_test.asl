@@ -266,8 +266,8 @@ mock_operation(_, ok).
        !planSweep;
        !assert_true(waypoint(0, 0, _)).
 
-// a search whose round of look points is gone (a trip's .succeed_goal(move(_)) cut look-points'
-// @newLookRound between forgetting the round's end and planning the next) plans a new round
+// a search whose round of look points is gone (a goal ended look-points' @newLookRound between
+// forgetting the round's end and planning the next) plans a new round
 @[test]
 +!test_a_search_whose_round_is_gone_plans_a_new_one
     <- -sweep(_); -waypoint(_, _, _); -+location(-0.3, 0, 0.3); +searching;
