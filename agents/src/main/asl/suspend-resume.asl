@@ -29,12 +29,10 @@ wallGuess(1.0).
 wallFirm(0.15).
 quickTurns.
 // the sweep heads for look points at most 1 m apart and looks around at each, not along lanes from wall
-// to wall (3-4 m each in the wide arenas: the room the robot began in took the run), with navigation's
-// lookNearing and lookSkip (skills/look-points.asl, look-skip.asl; wide tuning 101-160 x 1-2: 111 -> 115
+// to wall (3-4 m each in the wide arenas: the room the robot began in took the run), navigation's
+// parameters (skills/look-search.asl, look-points.asl, look-skip.asl; wide tuning 101-160 x 1-2: 111 -> 115
 // of 120, x 3-4: 113 -> 116, held out 241-300 x 1-2: 112 -> 114; docs/comparison-wide.md)
-lookSpacing(1.0).
-lookNearing(10000).
-lookSkip(0.6, 120000).
+{ include("skills/look-search.asl") }
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along
 // its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,
