@@ -10,18 +10,13 @@ middlewareClass("jacabot.experiments.NavigationMiddleware").
 // turns on the spot at half speed but for the last 15 degrees (heading.asl; tidy-up's): the listing's
 // 25/-10 turn took 9 s a half turn, and every sweep step and re-alignment began with one
 quickTurns.
-// the sweep heads for look points at most this far apart (m) and looks around at each, not along
-// lanes (skills/look-points.asl; wide tuning 101-160 x 1-2: 98 -> 107 of 120, held out 103 -> 106)
-lookSpacing(1.0).
-// a look point's 60 s are stretched while the robot came nearer it within the last 10 s (look-points.asl;
-// wide tuning 101-160 x 1-2: 108 -> 109 of 120, held out 106 -> 106, classic 143 -> 143)
-lookNearing(10000).
+// the sweep heads for look points 1 m apart and looks around at each, not along lanes, the look
+// points' time stretched while the robot comes nearer, none near a recent look around
+// (skills/look-search.asl, shared with suspend/resume)
+{ include("skills/look-search.asl") }
 // a wall is followed the way the robot came (skills/trail-side.asl): a trail point every 0.1 m (wide
 // tuning 101-160 x 1-2: 109 -> 110 of 120, 273 -> 284 deliveries; held out 106 -> 107; classic 143 -> 145)
 trailStep(0.1).
-// a look point within 0.6 m of a full look around made in the last 120 s gets none (skills/look-skip.asl;
-// wide tuning 101-160 x 1-2: 110 -> 111 of 120, 284 -> 282 deliveries; held out 107 -> 109, 289 -> 298)
-lookSkip(0.6, 120000).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.

@@ -28,6 +28,11 @@ wallGuess(1.0).
 // 101-160: the first trip to the charger sooner in 30 runs, later in 5: docs/comparison-wide.md)
 wallFirm(0.15).
 quickTurns.
+// the sweep heads for look points at most 1 m apart and looks around at each, not along lanes from wall
+// to wall (3-4 m each in the wide arenas: the room the robot began in took the run), navigation's
+// parameters (skills/look-search.asl, look-points.asl, look-skip.asl; wide tuning 101-160 x 1-2: 111 -> 115
+// of 120, x 3-4: 113 -> 116, held out 241-300 x 1-2: 112 -> 114; docs/comparison-wide.md)
+{ include("skills/look-search.asl") }
 { include("skills/initial-phase.asl") }
 // the way to the charger and the sweep's waypoints through the robot's own map, the way back along
 // its trail (with the hold and @rechargeOutOfArea, held out: wide worlds 131-160 15 -> 23 of 30,
@@ -55,8 +60,15 @@ quickTurns.
 { include("skills/avoidance.asl") }
 { include("skills/picking.asl") }
 { include("skills/far-sight.asl") }
-// cylinders seen and not gone for are looked for first; the sweep goes on along the lanes not driven
+// cylinders seen and not gone for are looked for first; the sweep goes on with the look points left
 { include("skills/search-memory.asl") }
+// a search whose round of look points is gone (look-points' @newLookRound forgets the round's end and
+// plans the next; a goal ended between the two, after the way back from the charger, left neither,
+// and the sweep stepped through no waypoint at all: classic world 15, seed 2, the reasoning ran away
+// at 541 s) plans a new round
+@lookRoundLost +!nextWaypoint : searching & lookSpacing(_) & not lanesOnly & not sweep(_) <- !planSweep.
+{ include("skills/look-skip.asl") }
+{ include("skills/look-points.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/sweep.asl") }

@@ -24,7 +24,7 @@ mock_operation(_, ok).
        ?charger(Cx, Cz);
        !until(mock_called(setUpTargetPoint(Cx, 0, Cz)), 10000);
        !assert_true(charging);
-       !assert_true(mock_called(mark));                              // the point to come back to
+       !assert_true(mock_called(mark(0.1, 0, 0.2)));                 // the point to come back to
        !assert_true(mock_called(setUpTargetPoint(Cx, 0, Cz)));       // the charger is the target
        !!move(0.5);                                                  // a random move, while charging
        .wait(200);
@@ -97,6 +97,8 @@ mock_operation(_, ok).
        !until(.intend(reachMarked), 10000);
        !assert_true(mock_called(setUpTargetPoint(0.45, 0, -0.4)));   // where the battery went low
        !assert_false(mock_called(setUpTargetPoint(0.3, 0, -0.3)));
+       !assert_true(mock_called(mark(0.45, 0, -0.4)));                // and the middleware marks it
+       !assert_false(mock_called(mark(0.3, 0, -0.3)));
        -targetReached; !!perceive(targetReached);
        !until(not charging, 10000);
        !assert_false(charging).
@@ -108,7 +110,7 @@ mock_operation(_, ok).
        -lowBattery; -targetReached; -charged; -+location(-0.3, 0, 0.3); -+battery(470);  // nearer the charger
        !!perceive(lowBattery); .wait(300);
        !assert_false(charging);
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        // 80 J over the reserve no longer cover the 2.1 m to the storage point and the charger: the trip
        -lowBattery; -+battery(380); !!perceive(lowBattery);
        !until(.intend(reachCharger), 10000);
@@ -132,7 +134,7 @@ mock_operation(_, ok).
        !assert_true(deliveringFirst(1));                            // picked at 1
        -lowBattery; -+battery(200); !!perceive(lowBattery); .wait(300);   // a drain: 150 J over 50 cover it
        !assert_false(charging);
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        -lowBattery; -+battery(100); !!perceive(lowBattery);              // 50 J over it do not
        !until(.intend(reachCharger), 10000);
        !assert_true(charging);
@@ -153,7 +155,7 @@ mock_operation(_, ok).
        .system_time(T); +taskEnd(T + 100000);
        !!perceive(lowBattery); .wait(300);
        !assert_false(charging);
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        -taskEnd(_); .system_time(T2); +taskEnd(T2 + 300000);                 // 300 s left: the trip
        -lowBattery; !!perceive(lowBattery);
        !until(.intend(reachCharger), 10000);
@@ -175,7 +177,7 @@ mock_operation(_, ok).
        .system_time(T); +taskEnd(T + 200000);
        !!perceive(lowBattery); .wait(300);
        !assert_false(charging);
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        -meanPower(2); -lowBattery; !!perceive(lowBattery);              // at full power: the trip
        !until(.intend(reachCharger), 10000);
        !assert_true(charging);
@@ -215,7 +217,7 @@ mock_operation(_, ok).
        -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.3); -+battery(470);
        !!perceive(lowBattery); .wait(300);
        !assert_false(charging);                                      // the storage point is nearer
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        -lowBattery; -~delivered; !!perceive(lowBattery);             // delivered: the trip
        !until(charging, 2000);
        !assert_true(charging);
@@ -255,3 +257,20 @@ mock_operation(_, ok).
        !assert_true(fetchingKnocked);
        -fellNearStorageAt(_); -+location(X0, Y0, Z0).
 
+
+// the search heads for look points (look-points.asl, lookSpacing(1.0): in this 1 x 1 m arena the one
+// grid point, its centre), as navigation's, not for the lanes' ends at the arena's sides
+@[test]
++!test_the_search_heads_for_look_points
+    <- -sweep(_); -waypoint(_, _, _); -+location(-0.3, 0, 0.3);
+       !planSweep;
+       !assert_true(waypoint(0, 0, _)).
+
+// a search whose round of look points is gone (a goal ended look-points' @newLookRound between
+// forgetting the round's end and planning the next) plans a new round
+@[test]
++!test_a_search_whose_round_is_gone_plans_a_new_one
+    <- -sweep(_); -waypoint(_, _, _); -+location(-0.3, 0, 0.3); +searching;
+       !nextWaypoint;
+       !assert_true(waypoint(0, 0, _));
+       -searching.

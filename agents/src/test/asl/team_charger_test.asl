@@ -118,7 +118,7 @@ mock_operation(_, ok).
        -location(_, _, _); +location(0.3, 0, -0.3); -+battery(470);      // 0.16 m from the storage point
        -lowBattery; !!perceive(lowBattery); .wait(300);
        !assert_false(charging);
-       !assert_false(mock_called(mark));
+       !assert_false(mock_called(mark(_, _, _)));
        -~delivered; -lowBattery; !!perceive(lowBattery);                  // delivered: the trip
        !until(charging, 3000);
        !assert_true(charging).

@@ -113,7 +113,7 @@ episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
     <- -lowFrom(_, _, _); +charging; !!rechargeTrip(X, Y, Z, O).
 @rechargeTrip
 +!rechargeTrip(X, Y, Z, O)
-    <- mark; !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
+    <- mark(X, Y, Z); !suspendTask; ?battery(B); .print("Battery low! Level: ", B);
        !awaitChargerTurn; !goToCharger; stopAcquireDistance; !waitCharged; restartAcquireDistance; -atCharger;
        !chargerDone;
        .print("RECHARGED"); ?battery(B2); .print("Current battery level: ", B2);

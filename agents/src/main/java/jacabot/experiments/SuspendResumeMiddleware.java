@@ -9,7 +9,8 @@ import jacabot.robot.link.SensorKind;
  * the {@code lowBattery} signal while the energy is under {@value #LOW_BATTERY} (the thesis'
  * {@code battery < 480 & battery > 0}), the {@code charged} signal when, after a low battery, the
  * energy is back to {@value #CHARGED} J (ours, see suspend-resume.asl), and {@code mark}, which
- * records where the running task was suspended.
+ * records where the running task was suspended, or {@code mark(X, Y, Z)}, the point the robot comes
+ * back to (ours: where the low-battery episode began).
  */
 public class SuspendResumeMiddleware extends NavigationMiddleware {
     static final double LOW_BATTERY = 480;
@@ -53,10 +54,26 @@ public class SuspendResumeMiddleware extends NavigationMiddleware {
         charged = chargedLevel;
     }
 
-    /** Records the current location and orientation (the agent keeps its own copy as beliefs). */
+    /** Records the current location (x, z) and orientation (the agent keeps its own copy as beliefs). */
     @OPERATION
     void mark() {
-        marked = new double[] {getObsProperty("location").doubleValue(), getObsProperty("orientation").doubleValue()};
-        log("marked at " + marked[0] + ", heading " + marked[1]);
+        var location = getObsProperty("location");
+        mark(location.doubleValue(0), location.doubleValue(1), location.doubleValue(2));
+    }
+
+    /**
+     * Records the point {@code (x, y, z)} the robot comes back to and the current orientation (not in the
+     * thesis: recharge-trip.asl's way back ends where the low-battery episode began, which a trip put off by
+     * a put-down begins later and elsewhere).
+     */
+    @OPERATION
+    void mark(double x, double y, double z) {
+        marked = new double[] {x, z, getObsProperty("orientation").doubleValue()};
+        log("marked at (" + x + ", " + z + "), heading " + marked[2]);
+    }
+
+    /** {@return the last point marked, {x, z, orientation}, or null} */
+    double[] marked() {
+        return marked == null ? null : marked.clone();
     }
 }

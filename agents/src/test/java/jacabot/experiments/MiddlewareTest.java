@@ -416,4 +416,19 @@ class MiddlewareTest {
         assertEquals(List.of(Command.stop(), Command.setSpeeds(25, -10)), b.middleware.takeCommands());
         assertEquals(List.of(), b.middleware.takeCommands(), "taken once");
     }
+
+    /** {@code mark} records the robot's (x, z), {@code mark(X, Y, Z)} the point given: where the low-battery episode began. */
+    @Test
+    void markRecordsTheRobotsPlaceOrThePointGiven() throws Exception {
+        var b = new Bench(SuspendResumeMiddleware.class);
+        b.deliver(new SensorInfo(SensorKind.GPS.id(), 0.4, 0.0, -0.3));
+        assertTrue(b.op("mark", new Object[0]).succeeded());
+        double[] here = ((SuspendResumeMiddleware) b.middleware).marked();
+        assertEquals(0.4, here[0], 1e-9);
+        assertEquals(-0.3, here[1], 1e-9);
+        assertTrue(b.op("mark", new Object[] {-0.2, 0.0, 0.7}).succeeded());
+        double[] given = ((SuspendResumeMiddleware) b.middleware).marked();
+        assertEquals(-0.2, given[0], 1e-9);
+        assertEquals(0.7, given[1], 1e-9);
+    }
 }
