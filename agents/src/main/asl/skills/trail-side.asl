@@ -31,14 +31,13 @@ setUpGoal(setUpTrailSide).
        .wait(500); !trailClock.
 @trailWait +!trailClock <- .wait(500); !trailClock.
 
-// P past the wall met on the way from (X, Z) to (Tx, Tz), along the axis nearest that way
-beyondWall(X, Z, Tx, Tz, Px, _) :- trailPast(B) & math.abs(Tx - X) >= math.abs(Tz - Z) & (Px - X) * (Tx - X) / math.abs(Tx - X) > B.
-beyondWall(X, Z, Tx, Tz, _, Pz) :- trailPast(B) & math.abs(Tx - X) < math.abs(Tz - Z) & (Pz - Z) * (Tz - Z) / math.abs(Tz - Z) > B.
-pastAlong(X, Z, Tx, Tz, Px, _) :- trailPastAlong(B) & math.abs(Tx - X) >= math.abs(Tz - Z) & (Px - X) * (Tx - X) / math.abs(Tx - X) > B.
-pastAlong(X, Z, Tx, Tz, _, Pz) :- trailPastAlong(B) & math.abs(Tx - X) < math.abs(Tz - Z) & (Pz - Z) * (Tz - Z) / math.abs(Tz - Z) > B.
+// P more than B past the wall met on the way from (X, Z) to (Tx, Tz), along the axis nearest that way
+pastBy(X, Z, Tx, Tz, Px, _, B) :- math.abs(Tx - X) >= math.abs(Tz - Z) & (Px - X) * (Tx - X) / math.abs(Tx - X) > B.
+pastBy(X, Z, Tx, Tz, _, Pz, B) :- math.abs(Tx - X) < math.abs(Tz - Z) & (Pz - Z) * (Tz - Z) / math.abs(Tz - Z) > B.
+beyondWall(X, Z, Tx, Tz, Px, Pz) :- trailPast(B) & pastBy(X, Z, Tx, Tz, Px, Pz, B).
 // a point past the wall: any trail point past it by trailPast, or one laid along a wall by trailPastAlong
 pastWall(X, Z, Tx, Tz, N, Px, Pz) :- trail(N, Px, Pz) & beyondWall(X, Z, Tx, Tz, Px, Pz).
-pastWall(X, Z, Tx, Tz, N, Px, Pz) :- trailAlong(N, Px, Pz) & not beyondWall(X, Z, Tx, Tz, Px, Pz) & pastAlong(X, Z, Tx, Tz, Px, Pz).
+pastWall(X, Z, Tx, Tz, N, Px, Pz) :- trailAlong(N, Px, Pz) & not beyondWall(X, Z, Tx, Tz, Px, Pz) & trailPastAlong(B) & pastBy(X, Z, Tx, Tz, Px, Pz, B).
 // how far P lies along the wall to the robot's left as it faces the target (heading D: the left is D - 90)
 leftOfWay(X, Z, Tx, Tz, D, Px, Pz, Lw) :- math.abs(Tx - X) >= math.abs(Tz - Z) & Lw = (Pz - Z) * math.sin((D - 90) * math.pi / 180).
 leftOfWay(X, Z, Tx, Tz, D, Px, Pz, Lw) :- math.abs(Tx - X) < math.abs(Tz - Z) & Lw = (Px - X) * math.cos((D - 90) * math.pi / 180).
