@@ -82,6 +82,15 @@ mock_operation(_, ok).
        !assert_true(waypoint(0.75, 0.25, _) & sweepLeft(4));
        -resumeNearest; -resumeSweep; -sweepLeft(_); -+location(0, 0, 0).
 
+// and none within resumeBeyond (1 m) of the storage point: (0.75, 0.25), 0.5 m from it, is passed by
+@[test]
++!test_a_sweep_resumed_near_passes_by_the_points_near_the_storage_point
+    <- +resumeSweep; +resumeNearest; -+location(0.7, 0, 0.3);
+       -+sweep([[-0.75, -0.25], [0.75, 0.25], [-0.75, 0.25]]); -+sweepLeft(2);
+       !planSweep;
+       !assert_true(waypoint(-0.75, -0.25, _) & sweepLeft(1));
+       -resumeNearest; -resumeSweep; -sweepLeft(_); -+location(0, 0, 0).
+
 @[test]
 +!test_a_step_aligns_towards_the_waypoint_and_goes_on
     <- !forget_calls; -balanced; !recently_looked;
