@@ -67,32 +67,6 @@ mock_operation(_, ok).
        !assert_equals(-0.23, X2, 0.001); !assert_equals(0.23, Z2, 0.001);
        !assert_equals(-0.23, X3, 0.001); !assert_equals(-0.23, Z3, 0.001).
 
-// resumeNearest: a sweep resumed goes on at the point nearest the robot among those its round has
-// yet to take (the first three here); the ones passed over go to the end, and once the round's last
-// is taken a new round counts every point again
-@[test]
-+!test_a_sweep_resumed_near_goes_on_at_the_nearest_point_left_in_its_round
-    <- +resumeSweep; +resumeNearest; -+location(-0.7, 0, 0.2);
-       -+sweep([[0.75, -0.25], [-0.75, -0.25], [-0.75, 0.25], [0.75, 0.25], [-0.75, -0.75]]); -+sweepLeft(3);
-       !planSweep;
-       !assert_true(waypoint(-0.75, 0.25, _));                          // not (0.75, -0.25), nor (-0.75, -0.75): taken
-       !assert_true(sweep([[0.75, 0.25], [-0.75, -0.75], [0.75, -0.25], [-0.75, -0.25], [-0.75, 0.25]]));
-       !assert_true(sweepLeft(5));
-       !nextWaypoint;
-       !assert_true(waypoint(0.75, 0.25, _) & sweepLeft(4));
-       -resumeNearest; -resumeSweep; -sweepLeft(_); -+location(0, 0, 0).
-
-// and none the robot came within passRadius (0.5 m) of since its round began: (-0.75, 0.25) is passed by
-@[test]
-+!test_a_sweep_resumed_near_passes_by_the_points_the_robot_came_near
-    <- +resumeSweep; +resumeNearest; +passClockOn; -+location(-0.75, 0, 0.45);
-       -+sweep([[0.75, -0.25], [-0.75, -0.25], [-0.75, 0.25], [0.75, 0.25], [-0.75, -0.75]]); -+sweepLeft(3);
-       !markPassed; -+location(-0.7, 0, 0.2);
-       !assert_true(passedPoint(-0.75, 0.25) & not passedPoint(-0.75, -0.25));
-       !planSweep;
-       !assert_true(waypoint(-0.75, -0.25, _) & sweepLeft(1));
-       -resumeNearest; -resumeSweep; -sweepLeft(_); -passClockOn; .abolish(passedPoint(_, _)); -+location(0, 0, 0).
-
 @[test]
 +!test_a_step_aligns_towards_the_waypoint_and_goes_on
     <- !forget_calls; -balanced; !recently_looked;

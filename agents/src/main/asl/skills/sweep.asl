@@ -44,10 +44,7 @@ setUpGoal(setUpSweep).
 // Beliefs: searching, lastFound(T), lastLook(T), sweep(Waypoints), waypoint(X, Z, Since), closest(D),
 // closerAt(T) (when the robot last came nearer its waypoint: way-round reads it),
 // lookFirst (set by +fallen: a cylinder knocked out of the gripper lies beside the robot);
-// resumeSweep (the agent's, optional: a new search goes on where the last one stopped); resumeNearest
-// (the agent's, optional, with resumeSweep: at the nearest point left in the round, see @planSweepNearest).
-// Beliefs too: sweepLeft(N), passedPoint(X, Z), passClockOn (resumeNearest's: the points at the head of sweep(Ws)
-// this round has yet to take; those the robot came near; its clock begun).
+// resumeSweep (the agent's, optional: a new search goes on where the last one stopped).
 // Rules it offers: laneClearance(L) (storage-bypass keeps the way to a waypoint as far from the storage point).
 // Needs: !balance, !aimAt (heading, delivery's or the agent's own include; route.asl's way round what was met), !escape (recovery). Include it after recovery, before random walk.
 
@@ -65,31 +62,6 @@ setUpGoal(setUpSweep).
        if (T - T0 > S & not searching & not travelling) { println("No cylinder for a while: sweeping the arena"); +searching; !planSweep };
        !searchClock.
 
-// an agent that believes resumeSweep and resumeNearest goes on at the lanes' point nearest the robot among
-// those this round has yet to make its waypoint (roundLeft(N): the first N of sweep(Ws)); the points
-// passed over are left to the next round (tidy-up world 190: after the third delivery the sweep
-// went on at the far end of the lane by the storage area, 1.96 m off among 51 boxes, where the next
-// lane's end was 1.18 m off; 80 s on floor every delivery had crossed)
-// and not one the robot came within passRadius m of since its round began, on any errand (its place
-// every 5 s: passedPoint(X, Z)): the lanes by the storage area are floor every delivery crosses (world
-// 171, seed 7: the nearest left was the end of the lane by the storage area, and the last cylinder,
-// two lanes off, was picked at 587 s instead of 398 s)
-passRadius(0.5).
-roundLeft(N) :- sweepLeft(N).
-roundLeft(M) :- not sweepLeft(_) & sweep(Ws) & .length(Ws, M).
-@passClock +!passClock <- .wait(5000); !markPassed; !passClock.
-@markPassed
-+!markPassed : location(X, _, Z) & sweep(Ws) & passRadius(R)
-    <- for (.member([Px, Pz], Ws) & (Px - X) * (Px - X) + (Pz - Z) * (Pz - Z) < R * R & not passedPoint(Px, Pz)) { +passedPoint(Px, Pz) }.
-@markPassedNone +!markPassed.
-@planSweepNearest
-+!planSweep : resumeNearest & resumeSweep & sweep(Ws) & Ws = [_ | _] & sweepLeft(Nl) & location(Lx, _, Lz)
-    <- .length(Ws, Np); Left = math.min(Nl, Np);
-       .findall(d(D2, I), .range(I, 0, Left - 1) & .nth(I, Ws, [Px, Pz]) & not passedPoint(Px, Pz)
-           & D2 = (Px - Lx) * (Px - Lx) + (Pz - Lz) * (Pz - Lz), Ds);
-       if (Ds == []) { K = 0 } else { .min(Ds, d(_, K)) };
-       .findall(P, .range(I, K, Np - 1) & .nth(I, Ws, P), After); .findall(P, .range(I, 0, K - 1) & .nth(I, Ws, P), Before);
-       .concat(After, Before, Rotated); -+sweep(Rotated); -+sweepLeft(Left - K); !nextWaypoint.
 // an agent that believes resumeSweep goes on along the lanes it had not yet driven
 @planSweepResumed +!planSweep : resumeSweep & sweep([_ | _]) <- !nextWaypoint.
 // the lanes begin at the corner (Fx, Fz) gives: -Fx * W / 2, -Fz * D / 2; an agent's own
@@ -112,13 +84,6 @@ sweepPoints(Hx, Hz, N, Step, Ws)
        if (.length(Lanes) < 2) { ?sweepPoints(Hx, Hz, 1, 2 * Hz, Ws) } else { Ws = Lanes };
        -+sweep(Ws); !nextWaypoint.
 
-// resumeNearest: the points left in this round counted down, a new round once none is left
-@nextWaypointCounted
-+!nextWaypoint : resumeNearest & sweep([[X, Z] | Rest]) & roundLeft(N)
-    <- .concat(Rest, [[X, Z]], L); -+sweep(L);
-       if (N > 1) { -+sweepLeft(N - 1) } else { .length(L, M); -+sweepLeft(M); .abolish(passedPoint(_, _)) };
-       if (not passClockOn) { +passClockOn; !!passClock };
-       .system_time(T); -+waypoint(X, Z, T); -+closest(1000); -+closerAt(T).
 @nextWaypoint
 +!nextWaypoint : sweep([[X, Z] | Rest])
     <- .concat(Rest, [[X, Z]], L); -+sweep(L); .system_time(T); -+waypoint(X, Z, T); -+closest(1000); -+closerAt(T).
