@@ -22,17 +22,6 @@ final class ExplorationMap {
     static final double HORIZON = 3.0;
     /** Candidate headings: every 30 degrees around. */
     static final int DIRECTIONS = 12;
-    /**
-     * The obstacle marks' cells, metres a side: a quarter of a floor cell. A mark blocks every such
-     * cell within {@value #MARK_RADIUS} m of where the wall or box was read, the floor the robot's
-     * centre cannot reach there; with the marks on the 10 cm floor cells, a cell holding a jamb of
-     * a passage 12-17 cm wide (the robot 9 cm across) also held most of the gap.
-     */
-    static final double MARK_CELL = CELL / 4;
-    /** How far from a wall or box read the robot's centre is kept, metres: the robot's radius (4.5 cm) and 1.5 cm. */
-    static final double MARK_RADIUS = 0.06;
-    /** The mark cells whose centre lies this close to the robot's centre hold no wall: the robot stood there. */
-    static final double SWEPT = MARK_CELL;
 
     private final double speedUnit, axle;
     private double horizon = HORIZON;
@@ -41,8 +30,7 @@ final class ExplorationMap {
     private long lastMs = -1;
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
-    private final Set<Long> blocked = new HashSet<>(); // mark cells (MARK_CELL)
-    private final Set<Long> swept = new HashSet<>();   // mark cells the robot's centre passed over
+    private final Set<Long> blocked = new HashSet<>();
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -55,7 +43,6 @@ final class ExplorationMap {
         }
         this.speedUnit = speedUnit;
         this.axle = axle;
-        sweep();
         visit();
     }
 
@@ -77,7 +64,6 @@ final class ExplorationMap {
             x += v * Math.cos(mid) * dt;
             z += v * Math.sin(mid) * dt;
             heading += w * dt;
-            sweep();
             if (visit()) {
                 lastFreshMs = nowMs;
                 freshTimes.addLast(nowMs);
@@ -91,51 +77,7 @@ final class ExplorationMap {
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        for (long k : markCellsNear(x + distance * Math.cos(a), z + distance * Math.sin(a), MARK_RADIUS)) {
-            if (!swept.contains(k)) {
-                blocked.add(k);
-            }
-        }
-    }
-
-    /** {@return the mark cells whose centre lies within {@code radius} m of (px, pz)} */
-    private static List<Long> markCellsNear(double px, double pz, double radius) {
-        List<Long> cells = new ArrayList<>();
-        int i0 = (int) Math.floor((px - radius) / MARK_CELL), i1 = (int) Math.floor((px + radius) / MARK_CELL);
-        int j0 = (int) Math.floor((pz - radius) / MARK_CELL), j1 = (int) Math.floor((pz + radius) / MARK_CELL);
-        for (int i = i0; i <= i1; i++) {
-            for (int j = j0; j <= j1; j++) {
-                if (Math.hypot((i + 0.5) * MARK_CELL - px, (j + 0.5) * MARK_CELL - pz) <= radius) {
-                    cells.add(key(i, j));
-                }
-            }
-        }
-        return cells;
-    }
-
-    /** The mark cells under the robot's centre (within {@value #SWEPT} m) lose their marks and take no more. */
-    private void sweep() {
-        for (long k : markCellsNear(x, z, SWEPT)) {
-            swept.add(k);
-            blocked.remove(k);
-        }
-    }
-
-    /** {@return whether any mark cell of floor cell (i, j) holds an obstacle mark} */
-    private boolean blockedCell(int i, int j) {
-        int n = (int) Math.round(CELL / MARK_CELL);
-        for (int a = 0; a < n; a++) {
-            for (int b = 0; b < n; b++) {
-                if (blocked.contains(key(i * n + a, j * n + b))) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    private boolean blockedCell(long k) {
-        return blockedCell((int) (k >> 32), (int) k);
+        blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -155,18 +97,11 @@ final class ExplorationMap {
     private double score(double a) {
         int fresh = 0;
         long previous = key(x, z);
-        // the floor is read every half cell as before; the marks every quarter mark cell between, so
-        // that a line of marks touching only at their corners still stops the ray
-        int perSample = (int) Math.round(CELL / 2 / (MARK_CELL / 4));
-        for (int n = 1; n * (MARK_CELL / 4) <= horizon + 1e-9; n++) {
-            double d = n * (MARK_CELL / 4), px = x + d * Math.cos(a), pz = z + d * Math.sin(a);
-            if (blocked.contains(markKey(px, pz))) {
+        for (double d = CELL / 2; d <= horizon + 1e-9; d += CELL / 2) {
+            long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
+            if (blocked.contains(k)) {
                 break;
             }
-            if (n % perSample != 0) {
-                continue;
-            }
-            long k = key(px, pz);
             if (k != previous && !visited.contains(k)) {
                 fresh++;
             }
@@ -208,7 +143,7 @@ final class ExplorationMap {
             int i = (int) (k >> 32), j = (int) k;
             for (int[] d : steps) {
                 long n = key(i + d[0], j + d[1]);
-                if (parent.containsKey(n) || blockedCell(n)) {
+                if (parent.containsKey(n) || blocked.contains(n)) {
                     continue;
                 }
                 parent.put(n, k);
@@ -225,8 +160,8 @@ final class ExplorationMap {
     private boolean openBeyond(int i, int j, int[] d) {
         for (int s = 0; s <= OPEN_DEPTH; s++) {
             int a = i + s * d[0], b = j + s * d[1];
-            if ((s > 0 && visited.contains(key(a, b))) || blockedCell(a, b)
-                    || blockedCell(a + d[1], b + d[0]) || blockedCell(a - d[1], b - d[0])) {
+            if ((s > 0 && visited.contains(key(a, b))) || blocked.contains(key(a, b))
+                    || blocked.contains(key(a + d[1], b + d[0])) || blocked.contains(key(a - d[1], b - d[0]))) {
                 return false;
             }
         }
@@ -279,10 +214,6 @@ final class ExplorationMap {
 
     private static long key(double px, double pz) {
         return key((int) Math.floor(px / CELL), (int) Math.floor(pz / CELL));
-    }
-
-    private static long markKey(double px, double pz) {
-        return key((int) Math.floor(px / MARK_CELL), (int) Math.floor(pz / MARK_CELL));
     }
 
     private static long key(int i, int j) {

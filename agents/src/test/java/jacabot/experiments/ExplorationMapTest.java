@@ -92,12 +92,9 @@ class ExplorationMapTest {
         assertNull(map.frontierWaypoint());
     }
 
-    /**
-     * An obstacle met in cell (i, j), marked from where the robot is (heading 0, as {@code drive} leaves it)
-     * at the cell's side away from the lane the robot drove (z = 0): a wall lies over the robot's radius off its centre.
-     */
+    /** An obstacle met in cell (i, j), marked from where the robot is (heading 0, as {@code drive} leaves it). */
     private void mark(int i, int j) {
-        double dx = (i + 0.5) * ExplorationMap.CELL - map.x(), dz = (j + (j < 0 ? 0.2 : 0.8)) * ExplorationMap.CELL - map.z();
+        double dx = (i + 0.5) * ExplorationMap.CELL - map.x(), dz = (j + 0.5) * ExplorationMap.CELL - map.z();
         map.obstacle(Math.toDegrees(Math.atan2(dz, dx)), Math.hypot(dx, dz));
     }
 
@@ -114,28 +111,6 @@ class ExplorationMapTest {
         map.horizon(0.6);
         assertEquals(180, Math.abs(map.bestTurn()), 1e-9, "within 60 cm only the floor behind is new");
         assertThrows(IllegalArgumentException.class, () -> map.horizon(0.05));
-    }
-
-    @Test
-    void aPassageTheRobotFitsThroughStaysOpenBetweenItsJambsMarks() {
-        // a room 50 cm square round the robot, its walls read every centimetre; ahead, 25 cm off, a
-        // passage 14 cm wide (the robot is 9 cm across) to floor not crossed beyond
-        for (double u = -0.25; u <= 0.25 + 1e-9; u += 0.01) {
-            markAt(-0.25, u);
-            markAt(u, 0.25);
-            markAt(u, -0.25);
-            if (Math.abs(u) >= 0.07) {
-                markAt(0.25, u);
-            }
-        }
-        assertEquals(0, map.bestTurn(), 1e-9, "through the passage, where the most floor not crossed lies");
-        markAt(0.25, 0.0); // a box in the passage closes it
-        assertTrue(map.bestTurn() != 0, "not into the box");
-    }
-
-    /** A wall or box read at (px, pz), the robot at the start pose. */
-    private void markAt(double px, double pz) {
-        map.obstacle(Math.toDegrees(Math.atan2(pz, px)), Math.hypot(px, pz));
     }
 
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
