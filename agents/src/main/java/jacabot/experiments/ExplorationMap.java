@@ -22,17 +22,6 @@ final class ExplorationMap {
     static final double HORIZON = 3.0;
     /** Candidate headings: every 30 degrees around. */
     static final int DIRECTIONS = 12;
-    /**
-     * The fine marks' cells, metres a side (a quarter of a floor cell): beside each 10 cm cell an
-     * obstacle marks, the floor within {@value #FINE_RADIUS} m of where the wall or box was read, where
-     * the robot's centre cannot go. A 10 cm cell that holds a jamb of a passage 12-17 cm wide (the robot
-     * 9 cm across) also holds most of the gap; the fine marks tell the gap from the jambs.
-     */
-    static final double FINE_CELL = CELL / 4;
-    /** The robot's radius, metres: a fine mark blocks the floor this close to a wall or box read. */
-    static final double FINE_RADIUS = 0.045;
-    /** How far to each side of a heading a passage's jambs are looked for, metres. */
-    static final double PASSAGE_SIDE = 0.08;
 
     private final double speedUnit, axle;
     private double horizon = HORIZON;
@@ -42,7 +31,6 @@ final class ExplorationMap {
     private long lastFreshMs; // when the centre last entered a cell not crossed before
     private final Set<Long> visited = new HashSet<>();
     private final Set<Long> blocked = new HashSet<>();
-    private final Set<Long> fine = new HashSet<>(); // fine marks (FINE_CELL)
     private final Deque<Long> freshTimes = new ArrayDeque<>(); // when each cell was first crossed, oldest first
 
     /**
@@ -89,41 +77,7 @@ final class ExplorationMap {
     /** An obstacle {@code distance} metres from the centre, {@code bearing} degrees left of the heading. */
     void obstacle(double bearing, double distance) {
         double a = heading + Math.toRadians(bearing);
-        double px = x + distance * Math.cos(a), pz = z + distance * Math.sin(a);
-        blocked.add(key(px, pz));
-        int i0 = (int) Math.floor((px - FINE_RADIUS) / FINE_CELL), i1 = (int) Math.floor((px + FINE_RADIUS) / FINE_CELL);
-        int j0 = (int) Math.floor((pz - FINE_RADIUS) / FINE_CELL), j1 = (int) Math.floor((pz + FINE_RADIUS) / FINE_CELL);
-        for (int i = i0; i <= i1; i++) {
-            for (int j = j0; j <= j1; j++) {
-                if (Math.hypot((i + 0.5) * FINE_CELL - px, (j + 0.5) * FINE_CELL - pz) <= FINE_RADIUS) {
-                    fine.add(key(i, j));
-                }
-            }
-        }
-    }
-
-    private boolean fineMarked(double px, double pz) {
-        return fine.contains(key((int) Math.floor(px / FINE_CELL), (int) Math.floor(pz / FINE_CELL)));
-    }
-
-    /**
-     * {@return whether heading {@code a} passes, from {@code from} to {@code to} metres out, between two walls
-     * or boxes read (a passage the robot fits through)}: no fine mark on the way, and at {@code to} a fine
-     * mark within {@value #PASSAGE_SIDE} m on each side
-     */
-    private boolean passage(double a, double from, double to) {
-        double c = Math.cos(a), s = Math.sin(a);
-        for (double d = from; d <= to + 1e-9; d += FINE_CELL / 4) {
-            if (fineMarked(x + d * c, z + d * s)) {
-                return false;
-            }
-        }
-        boolean left = false, right = false;
-        for (double o = FINE_CELL / 4; o <= PASSAGE_SIDE + 1e-9 && !(left && right); o += FINE_CELL / 4) {
-            left |= fineMarked(x + to * c - o * s, z + to * s + o * c);
-            right |= fineMarked(x + to * c + o * s, z + to * s - o * c);
-        }
-        return left && right;
+        blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
@@ -145,7 +99,7 @@ final class ExplorationMap {
         long previous = key(x, z);
         for (double d = CELL / 2; d <= horizon + 1e-9; d += CELL / 2) {
             long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-            if (blocked.contains(k) && !passage(a, d - CELL / 2, d)) {
+            if (blocked.contains(k)) {
                 break;
             }
             if (k != previous && !visited.contains(k)) {

@@ -113,28 +113,6 @@ class ExplorationMapTest {
         assertThrows(IllegalArgumentException.class, () -> map.horizon(0.05));
     }
 
-    @Test
-    void aPassageTheRobotFitsThroughStaysOpenBetweenItsJambsMarks() {
-        // a room 50 cm square round the robot, its walls read every centimetre; ahead, 25 cm off, a
-        // passage 14 cm wide (the robot is 9 cm across) to floor not crossed beyond
-        for (double u = -0.25; u <= 0.25 + 1e-9; u += 0.01) {
-            markAt(-0.25, u);
-            markAt(u, 0.25);
-            markAt(u, -0.25);
-            if (Math.abs(u) >= 0.07) {
-                markAt(0.25, u);
-            }
-        }
-        assertEquals(0, map.bestTurn(), 1e-9, "through the passage, where the most floor not crossed lies");
-        markAt(0.25, 0.0); // a box in the passage closes it
-        assertTrue(map.bestTurn() != 0, "not into the box");
-    }
-
-    /** A wall or box read at (px, pz), the robot at the start pose. */
-    private void markAt(double px, double pz) {
-        map.obstacle(Math.toDegrees(Math.atan2(pz, px)), Math.hypot(px, pz));
-    }
-
     /** Straight at {@code speed} from {@code fromMs} to {@code toMs}, a wheel reading every 40 ms as the middleware gets them. */
     private void drive(long fromMs, long toMs, double speed) {
         for (long t = fromMs; t <= toMs; t += 40) {
