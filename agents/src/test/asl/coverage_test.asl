@@ -58,20 +58,6 @@ mock_operation(_, ok).
        ?obstacleTimes(L);
        !assert_equals(1, .length(L)).                                     // noted for the trap count
 
-// an avoidance that turns back towards the side the one before it turned away from, within
-// turnBack ms, does not veer: the arc would take the flank into the box that one avoided
-@[test]
-+!test_an_avoidance_turning_back_within_turn_back_does_not_veer
-    <- !forget_calls; -+obstacleTimes([]); .abolish(turned(_, _)); .abolish(turnedBefore(_, _));
-       !obstacle_ahead(40);                                               // on the left: turns right, veers
-       !until(mock_called(setSpeeds(100, V)) & V < 100 & V > 0, 2000);
-       !until(not veering, 2000);
-       !forget_calls; !obstacle_ahead(-40);                               // on the right: turns back left
-       !until(mock_called(setSpeeds(-100, 100)) & not avoiding & not veering, 2000);
-       .wait(100);
-       !assert_false(mock_called(setSpeeds(V2, 100)) & V2 < 100 & V2 > 0);  // no arc
-       .abolish(turned(_, _)); .abolish(turnedBefore(_, _)).
-
 @[test]
 +!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(0);

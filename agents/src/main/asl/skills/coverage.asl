@@ -17,12 +17,6 @@ trapCount(5).
 // runs, 400 ms: 134, 300 ms: 140, held out 133 -> 139; 200 ms: 9 of 10 on the default world)
 veerTime(300).
 veerSpeed(100).
-// no veer when the avoidance turns back towards the side the avoidance before it, less than turnBack
-// ms before, turned away from: obstacles on both sides, and the box that one avoided sat at the flank
-// turned to, out of the sensors' sight (40-90° off the heading); the arc towards it slid the flank
-// into it. The flank turned to was the largest kind of contact in the wide profile's contact failures
-// (docs/comparison-obstacle-avoidance.md, "the veer after a turn back")
-turnBack(1000).
 cruiseSpeed(100).             // the straight legs' wheel speed (the thesis' forward is 50)
 wheelGeometry(0.001, 0.09).   // m/s of a speed unit, axle (m): dead reckoning
 turnSpeed(100).               // the turns' wheel speed (the listing: M / 2)
@@ -101,13 +95,11 @@ obstacleTimes([]).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
-// the last avoidance turned back (turnBack above)
-turnedBack :- turned(S, T) & turnedBefore(S0, T0) & S \== S0 & turnBack(P) & T - T0 < P.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
 // Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
-// seeking(Until) and soughtAt(T), turned(Side, T) and turnedBefore(Side, T). Needs: !clear (recovery). Include it before recovery (its escape,
+// seeking(Until) and soughtAt(T). Needs: !clear (recovery). Include it before recovery (its escape,
 // a turn on the spot, is the one this robot uses).
 
 @setUpCoverage
@@ -138,15 +130,10 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !noteTurn(left); !clear; +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !noteTurn(right); !clear; +veering; -avoiding; !veer(D).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
-// the side an avoidance turns to and when (turned), and the one before it (turnedBefore)
-@noteTurn
-+!noteTurn(Side) <- .system_time(T); if (turned(S0, T0)) { -+turnedBefore(S0, T0) }; -+turned(Side, T).
-
-// the arc away from the obstacle just avoided; a new obstacle interrupts it; none after a turn back
-@veerBack +!veer(_) : turnedBack <- -veering.
+// the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
 @veerRight +!veer(D) : obstacle(false) & D > 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V, V / 3); .wait(T); -veering.
 @veerNot +!veer(_) <- -veering.
