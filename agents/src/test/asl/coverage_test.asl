@@ -68,7 +68,6 @@ mock_operation(_, ok).
        !obstacle_ahead(-250);                                             // on the right: the usual turn is left
        !until(avoiding, 1000);
        !until(not avoiding, 3000);
-       !assert_true(mock_called(setSpeeds(-100, -100)));                  // a step back off the box
        !assert_true(mock_called(setSpeeds(100, -100)));                   // the half turn on the spot
        !assert_false(mock_called(setSpeeds(-100, 100)));                  // not the turn left
        !assert_false(mock_called(setSpeeds(V, 100)) & V > 0 & V < 100);   // nor the veer left

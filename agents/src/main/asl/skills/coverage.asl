@@ -53,7 +53,6 @@ seekBelow(6).
 seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
-stepBack(150).                // ms of the step back before a turn on the spot that may begin in touch (@escapeSpin, @coverBack)
 // not in the thesis, and only in an arena narrower than narrowSide m (below): a front sensor that
 // read flankWatch's Level or more (a box within about 5 cm of it) in the last Ms and reads nothing
 // now had a box there that the robot has since driven past, to that flank, out of both cones. An
@@ -148,11 +147,8 @@ pausedUntil("-veering") :- veering.
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
-// after the escape's step back: the veer before it often left the box touching the flank, and a
-// disc turning on the spot stays in touch with it the whole half turn
-@coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A) & stepBack(B)
-    <- setSpeeds(-S, -S); .wait(B);
-       if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
+@coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
+    <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
        !clear; -avoiding.
 @coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
 @coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
@@ -182,14 +178,14 @@ pausedUntil("-veering") :- veering.
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
     <- .system_time(T); .findall(X, .member(X, L) & X > T - W, Recent); -+obstacleTimes([T | Recent]).
 
-// on the spot after a step back of stepBack ms (1.5 cm): the robot cannot see behind it, and a
-// longer back-off drove it into the box behind; the short step frees it from a box it touches out of
-// the sensors' sight, which a disc turning on the spot stays in touch with
+// on the spot after a step back of 150 ms (1.5 cm): the robot cannot see behind it, and a longer
+// back-off drove it into the box behind; the short step frees it from a box it touches out of the
+// sensors' sight, which a disc turning on the spot stays in touch with
 @escapeSpin
-+!escape : maxSpeed(M) & turnSpeed(S) & stepBack(B)
++!escape : maxSpeed(M) & turnSpeed(S)
     <- println("Trapped: turning away"); -+obstacleTimes([]);
        .random(R); W = (1800 + R * 1800) * M / 2 / S;
-       setSpeeds(-S, -S); .wait(B); setSpeeds(S, -S); .wait(W); stop.
+       setSpeeds(-S, -S); .wait(150); setSpeeds(S, -S); .wait(W); stop.
 
 /* Random motion towards new floor, suspended while avoiding (Chapter 4 §1.2, §5) */
 
