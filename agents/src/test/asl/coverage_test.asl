@@ -58,6 +58,47 @@ mock_operation(_, ok).
        ?obstacleTimes(L);
        !assert_equals(1, .length(L)).                                     // noted for the trap count
 
+// in a narrow arena, a box the left sensor read a moment ago and reads no more sits at the left
+// flank: an obstacle on the right, whose usual turn and veer go left into that box, turns the robot
+// back instead
+@[test]
++!test_a_box_just_passed_on_the_side_turned_to_turns_the_robot_back_in_a_narrow_arena
+    <- !forget_calls; -+obstacleTimes([]); -+arena(0.8, 2.4);
+       -+leftSensor(600); !until(strongLeft(_), 500); -+leftSensor(0); -+rightSensor(250);
+       !obstacle_ahead(-250);                                             // on the right: the usual turn is left
+       !until(avoiding, 1000);
+       !until(not avoiding, 3000);
+       !assert_true(mock_called(setSpeeds(100, -100)));                   // the half turn on the spot
+       !assert_false(mock_called(setSpeeds(-100, 100)));                  // not the turn left
+       !assert_false(mock_called(setSpeeds(V, 100)) & V > 0 & V < 100);   // nor the veer left
+       !assert_false(veering);
+       -leftSensor(_); -rightSensor(_); -strongLeft(_); -+arena(3, 3).
+
+// in an arena 1 m or more across, the same box leaves the usual turn left and its veer
+@[test]
++!test_a_box_just_passed_on_the_side_turned_to_leaves_the_usual_turn_in_a_wider_arena
+    <- !forget_calls; -+obstacleTimes([]); -+arena(1.5, 2.4);
+       -+leftSensor(600); .wait(100); -+leftSensor(0); -+rightSensor(250);
+       !obstacle_ahead(-250);
+       !until(mock_called(setSpeeds(V, 100)) & V > 0 & V < 100, 2000);
+       !assert_true(mock_called(setSpeeds(-100, 100)));
+       !assert_false(mock_called(setSpeeds(100, -100)));
+       !assert_false(strongLeft(_));                                      // not watched there
+       !until(not veering, 2000);
+       -leftSensor(_); -rightSensor(_); -+arena(3, 3).
+
+// the same box still read (in the cone, not at the flank): the usual turn left
+@[test]
++!test_a_box_still_read_on_the_side_turned_to_leaves_the_usual_turn
+    <- !forget_calls; -+obstacleTimes([]); -+arena(0.8, 2.4);
+       -+leftSensor(600); !until(strongLeft(_), 500); -+leftSensor(40); -+rightSensor(250);
+       !obstacle_ahead(-250);
+       !until(mock_called(setSpeeds(V, 100)) & V > 0 & V < 100, 2000);
+       !assert_true(mock_called(setSpeeds(-100, 100)));
+       !assert_false(mock_called(setSpeeds(100, -100)));
+       !until(not veering, 2000);
+       -leftSensor(_); -rightSensor(_); -strongLeft(_); -+arena(3, 3).
+
 @[test]
 +!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(0);
