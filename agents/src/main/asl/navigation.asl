@@ -20,6 +20,9 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
+// the last 0.45 m to a cylinder seen is driven at wheel speed 85, not far sight's approachSpeed 40
+// (skills/far-sight.asl's nearSpeed; tidy-up's)
+quickApproach(85).
 
 !start.
 
