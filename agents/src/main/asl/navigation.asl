@@ -21,8 +21,8 @@ trailStep(0.1).
 // (skills/search-memory.asl)
 fallLookKept.
 // the last 0.45 m to a cylinder seen is driven at wheel speed 85, not far sight's approachSpeed 40
-// (skills/far-sight.asl's nearSpeed; tidy-up's)
-quickApproach(85).
+// (skills/quick-approach.asl, shared with tidy-up)
+{ include("skills/quick-approach.asl") }
 
 !start.
 
