@@ -20,9 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// the last 0.45 m to a cylinder seen is driven at wheel speed 85, not far sight's approachSpeed 40
-// (skills/quick-approach.asl, shared with tidy-up)
-{ include("skills/quick-approach.asl") }
 
 !start.
 

@@ -2,8 +2,7 @@
 // another is carried is remembered for the search after the delivery (search-memory.asl), and the
 // sweep's way to a waypoint across the storage area heads beside the area (storage-bypass.asl); a
 // cylinder knocked out of the gripper by the storage area is turned to and may be picked there
-// (knock-fetch.asl), a knock elsewhere is left to the search (no knocked-aside.asl); the last 0.45 m
-// to a cylinder seen is driven at quickApproach's speed (far-sight.asl). The
+// (knock-fetch.asl), a knock elsewhere is left to the search (no knocked-aside.asl). The
 // operations are mocked; the robot never connects, so only the plans under test run
 // (agents/README.md "Testing skills").
 { include("tester_agent.asl") }
@@ -53,8 +52,3 @@ mock_operation(_, ok).
        !assert_false(fallenNearStorage);
        +lostBeside; .wait(50); -lostBeside;
        !assert_false(knockedAt(_)).
-
-// the last 0.45 m to a cylinder seen at wheel speed 85 (quickApproach), not far sight's approachSpeed 40
-@[test]
-+!test_a_near_cylinder_is_approached_at_the_quick_speed
-    <- ?nearSpeed(V); !assert_equals(V, 85, 0).

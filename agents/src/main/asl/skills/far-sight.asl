@@ -68,7 +68,7 @@ setUpGoal(setUpFarSight).
 @steerLeft +!steerTo(Off) : Off < -12 & maxSpeed(M) <- setSpeeds(-M / 4, M / 4).
 @steerFar +!steerTo(Off) : sightDistance(D) & farApproach(F) & D >= F & travelSpeed(V) <- setSpeeds(V - 10 + Off, V - 10 - Off).
 @steerNear +!steerTo(Off) : nearSpeed(V) <- setSpeeds(V + Off, V - Off).
-// an agent may believe quickApproach(V): the near approach at V, not approachSpeed (skills/quick-approach.asl: tidy-up, navigation)
+// an agent may believe quickApproach(V): the near approach at V, not approachSpeed (tidy-up, whose runs end on time)
 nearSpeed(V) :- quickApproach(V).
 nearSpeed(V) :- not quickApproach(_) & approachSpeed(V).
 
