@@ -20,9 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a place where a cylinder was seen is looked for again only within 1.5 m, the camera's reach; a
-// farther one waits for a look point near it (skills/search-memory.asl)
-lookAgainWithin(1.5).
 
 !start.
 

@@ -241,18 +241,3 @@ maxSpeed(100).
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// with lookAgainWithin(R) a place remembered farther than R waits: the next look point first; one
-// within R is looked for again
-@[test]
-+!test_a_place_remembered_beyond_look_again_within_waits_for_a_look_point
-    <- .abolish(seenCylinder(_, _)); .abolish(waypoint(_, _, _)); +searching; -+sweep([[0.5, 0.5]]);
-       +lookAgainWithin(1.5); -+location(0, 0, 0);
-       +seenCylinder(2, 1);                             // 2.2 m off
-       !nextWaypoint;
-       !assert_false(waypoint(2, 1, _));
-       !assert_true(seenCylinder(2, 1));                // still remembered
-       +seenCylinder(1, 0.5);                           // 1.1 m off
-       !nextWaypoint;
-       !assert_true(waypoint(1, 0.5, _));
-       .abolish(seenCylinder(_, _)); -lookAgainWithin(1.5); -searching.

@@ -14,8 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept); lookAgainWithin(R) (see
-// @nextRemembered).
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -110,13 +109,8 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 @searchOnTheLanes +!searchFromMemory <- +searching; !planSweep.
 
 // on the sweep too, the next waypoint is the nearest cylinder remembered before the next lane's
-// (one lost from sight while homing, behind a box, was left for the lanes across the arena); an
-// agent that believes lookAgainWithin(R) looks again only at a place within R m, a farther one
-// waiting until a look point brings the robot within R (wide world 112, seed 2: after the
-// delivery 40 s went towards a place 3.3 m off, given up half way by lookAgainFor)
-rememberedToLook :- not lookAgainWithin(_) & seenCylinder(_, _).
-rememberedToLook :- lookAgainWithin(R) & location(X, _, Z) & seenCylinder(Cx, Cz) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
-@nextRemembered +!nextWaypoint : searching & rememberedToLook <- !lookAgain.
+// (one lost from sight while homing, behind a box, was left for the lanes across the arena)
+@nextRemembered +!nextWaypoint : searching & seenCylinder(_, _) <- !lookAgain.
 
 // nothing left to look for: another intention took the last place remembered between the call and
 // now (a homing lost from sight remembers one and looks again; the sweep's step took it first, and the
