@@ -57,12 +57,17 @@ final class RouteMap {
      */
     static final double GAP = 0.4;
     /**
-     * With {@link #guessWallsCost} set: how far past a face's end, along its line, a cell the robot drove through
-     * makes that end a doorway driven through ({@link #doorwayBehind}), metres (a doorway is 12-40 cm wide).
+     * With {@link #guessWallsCost} set: the widest gap in a wall's line, driven through, taken for a doorway
+     * ({@link #doorwayBehind}), metres (the wide worlds' doorways are 12-40 cm wide; the wall past one may not
+     * have been seen, up to the arena's boundary).
      */
-    static final double DOORWAY_REACH = 0.5;
-    /** With {@link #guessWallsCost} set: the face's line seen over this (m) for a doorway driven through on it to close it. */
-    static final double WALL_SEEN = 0.4;
+    static final double DOORWAY_REACH = 0.7;
+    /**
+     * With {@link #guessWallsCost} set: the face's line seen over this (m) for a doorway driven through on it to
+     * close it (a box is 12 cm at most; a corridor's side, as long as its wall is thick, 0.6 m at most: one seen
+     * whole closed the room past the corridor's mouth, and the trip to the charger turned back there).
+     */
+    static final double WALL_SEEN = 0.7;
     private final int cols, rows;
     private final double halfW, halfD, clearance;
     private final long memoryMs;
@@ -360,29 +365,34 @@ final class RouteMap {
     /**
      * {@return whether the face that ends at (i, j) towards d lies on a wall with a doorway the robot drove
      * through}: back along the face's line, against d, over what is seen (a cell or a neighbour across d) and
-     * over gaps not driven through of under {@link #DOORWAY_REACH} m, a cell of the line the robot's centre
-     * stood on (it crossed the line there: beside a wall the centre is a cell or more off the face), the line
-     * seen over {@link #WALL_SEEN} m before it (a box is 12 cm at most). A wall across the arena with one
-     * doorway: the way to the other side is that doorway, not the wall's unseen part.
+     * over gaps not driven through that more of the line seen ends, a gap of at most {@link #DOORWAY_REACH} m
+     * with a cell of the line the robot's centre stood on (it crossed the line there: beside a wall the centre
+     * is a cell or more off the face), ended by more of the line seen or by the arena's boundary; the line seen
+     * over {@link #WALL_SEEN} m before it. A wall across the arena with one doorway:
+     * the way to the other side is that doorway, not the wall's unseen part. A face's line driven across in the
+     * open (a corridor's side, the room beyond its mouth) has no such gap.
      */
     private boolean doorwayBehind(BitSet live, int i, int j, int[] d) {
         int reach = (int) Math.round(DOORWAY_REACH / CELL), seen = 0, gap = 0;
-        for (int m = 1; gap < reach; m++) {
+        boolean drove = false;
+        for (int m = 1; ; m++) {
             int a = i - m * d[0], b = j - m * d[1];
             if (a < 0 || b < 0 || a >= cols || b >= rows) {
-                return false;
+                return drove && seen * CELL >= WALL_SEEN;
             }
             if (band(live, a, b, d)) {
+                if (drove) {
+                    return seen * CELL >= WALL_SEEN;
+                }
                 seen++;
                 gap = 0;
                 continue;
             }
-            if (driven.get(index(a, b))) {
-                return seen * CELL >= WALL_SEEN;
+            drove |= driven.get(index(a, b));
+            if (++gap > reach) {
+                return false;
             }
-            gap++;
         }
-        return false;
     }
 
     /** {@return whether cell (a, b) and its two neighbours across direction d were seen open, none of them blocked} */
