@@ -27,9 +27,6 @@ wallGuess(1.0).
 // trips go along a wall at full speed, where they crept at 1-2 cm/s into its unseen part (wide tuning
 // 101-160: the first trip to the charger sooner in 30 runs, later in 5: docs/comparison-wide.md)
 wallFirm(0.15).
-// past its firm part the guess costs 160 cells (4 m) of path to cross, not 20: a way across a wall takes the
-// doorway driven through, or goes round the guess's end (docs/comparison-wide.md)
-wallCost(160).
 quickTurns.
 // the sweep heads for look points at most 1 m apart and looks around at each, not along lanes from wall
 // to wall (3-4 m each in the wide arenas: the room the robot began in took the run), navigation's

@@ -76,13 +76,3 @@ mock_operation(_, ok).
        -wallGuess(_); !forget_calls; !setUpRoute;
        !assert_false(mock_called(routeWallFirm(_)));
        -wallFirm(_).
-
-// an agent's wallCost (suspend/resume's): a wall with a doorway driven through is guessed closed at that
-// cost (RouteMap.guessWallsCost); not without the guess
-@[test]
-+!test_a_wall_closed_but_for_its_doorway_is_set_up_with_the_guess
-    <- +wallGuess(1.0); +wallCost(160); !forget_calls; !setUpRoute;
-       !assert_true(mock_called(routeWallCost(160)));
-       -wallGuess(_); !forget_calls; !setUpRoute;
-       !assert_false(mock_called(routeWallCost(_)));
-       -wallCost(_).

@@ -16,7 +16,7 @@ routeNear(0.3).
 // m: with routeHold, a held point this near is reached and the way planned again (a sweep step, 2 s,
 // goes about 0.1 m; the point lies at most 0.2 m on: RouteMap.LOOKAHEAD)
 routeReach(0.1).
-// Reads: arena(W, D) (the world); wallGuess(M), wallFirm(F), wallCost(C) (an agent's options, below); lastAvoid(T)
+// Reads: arena(W, D) (the world); wallGuess(M), wallFirm(F) (an agent's options, below); lastAvoid(T)
 // (avoidance); routeHold(H) (an agent's option, e.g. suspend/resume's: the sweep keeps the point
 // its route gave for up to H ms, until it is within routeReach of it or an obstacle was avoided
 // since, instead of planning again every step, where the aim, re-planned from each new spot, swung
@@ -40,12 +40,8 @@ setUpGoal(setUpRoute).
 // wallFirm(F) too, its first F metres are crossed only at a high cost, and a side sensor that sees the
 // floor open ends it (RouteMap.guessWallsFirm: a route along a wall crosses past the firm part, where
 // it turned into the wall's unseen part at every plan, not past the end seen)
-// with wallCost(C) too, crossing the guess past its firm part costs C cells of path (RouteMap.guessWallsCost; 20,
-// as a cell by an obstacle, without it), where no gap bounds it: a way to a target across a wall takes a
-// doorway driven through, or goes round the guess's end, before the wall's unseen part
 @setUpRoute +!setUpRoute : arena(W, D) & routeMemory(M)
-    <- routeMap(W, D, M); if (wallGuess(G)) { routeWallGuess(G) }; if (wallGuess(_) & wallFirm(F)) { routeWallFirm(F) };
-       if (wallGuess(_) & wallCost(C)) { routeWallCost(C) }.
+    <- routeMap(W, D, M); if (wallGuess(G)) { routeWallGuess(G) }; if (wallGuess(_) & wallFirm(F)) { routeWallFirm(F) }.
 
 // within routeNear of (Tx, Tz): the robot heads for it straight (tidy-up's re-alignment reads it too)
 nearTarget(Tx, Tz) :- location(X, _, Z) & routeNear(N) & (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz) < N * N.

@@ -79,7 +79,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
      */
     @OPERATION
     void routeWallGuess(double metres) {
-        if (guessable("routeWallGuess(Metres)", metres)) {
+        if (guessable("routeWallGuess", metres)) {
             routes.guessWalls(metres);
         }
     }
@@ -90,26 +90,15 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
      */
     @OPERATION
     void routeWallFirm(double metres) {
-        if (guessable("routeWallFirm(Metres)", metres)) {
+        if (guessable("routeWallFirm", metres)) {
             routes.guessWallsFirm(metres);
         }
     }
 
-    /**
-     * Sets the cost of crossing the wall guess past its firm part, in cells of path (not in the thesis:
-     * {@link RouteMap#guessWallsCost}); fails before {@code routeMap}.
-     */
-    @OPERATION
-    void routeWallCost(double cells) {
-        if (guessable("routeWallCost(Cells)", cells)) {
-            routes.guessWallsCost(cells);
-        }
-    }
-
-    /** Whether a wall guess's setting {@code value} can be set; the operation fails with one line otherwise. */
-    private boolean guessable(String operation, double value) {
-        if (routes == null || !(value >= 0)) {
-            failed(operation + " needs routeMap first and a value >= 0, got " + value);
+    /** Whether a wall guess of {@code metres} can be set; the operation fails with one line otherwise. */
+    private boolean guessable(String operation, double metres) {
+        if (routes == null || !(metres >= 0)) {
+            failed(operation + "(Metres) needs routeMap first and Metres >= 0, got " + metres);
             return false;
         }
         return true;

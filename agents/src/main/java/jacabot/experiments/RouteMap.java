@@ -56,18 +56,6 @@ final class RouteMap {
      * doorway, and has no firm part (the route may cross it at once).
      */
     static final double GAP = 0.4;
-    /**
-     * With {@link #guessWallsCost} set: the widest gap in a wall's line, driven through, taken for a doorway
-     * ({@link #doorwayBehind}), metres (the wide worlds' doorways are 12-40 cm wide; the wall past one may not
-     * have been seen, up to the arena's boundary).
-     */
-    static final double DOORWAY_REACH = 0.7;
-    /**
-     * With {@link #guessWallsCost} set: the face's line seen over this (m) for a doorway driven through on it to
-     * close it (a box is 12 cm at most; a corridor's side, as long as its wall is thick, 0.6 m at most: one seen
-     * whole closed the room past the corridor's mouth, and the trip to the charger turned back there).
-     */
-    static final double WALL_SEEN = 0.7;
     private final int cols, rows;
     private final double halfW, halfD, clearance;
     private final long memoryMs;
@@ -99,8 +87,6 @@ final class RouteMap {
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
     private int lastDriven = -1;
-    /** The cost of crossing a cell of a face's guess closed by a doorway driven through, in cells of path ({@link #guessWallsCost}). */
-    private double guessCost = NEAR_COST;
 
     /**
      * @param width     the arena's side along x, metres
@@ -183,20 +169,6 @@ final class RouteMap {
      */
     void guessWallsFirm(double metres) {
         firmCells = (int) Math.round(Math.max(0, metres) / CELL);
-        lastLive = null;
-    }
-
-    /**
-     * Guesses a wall closed but for a doorway the robot drove through (not in the thesis; off unless set over
-     * {@link #NEAR_COST}): a face seen on the wall's line, the doorway driven through past its other end,
-     * is guessed to go on to the arena's boundary (or another cell driven through), and crossing that costs
-     * {@code cells} cells of path a cell ({@link #FIRM_COST} at least). A route to a target across the wall
-     * then goes through the doorway driven through, not through the wall's unseen part (wide world 139: the
-     * search after a trip drove 40 s along the wall to the arena's boundary, the doorway it had driven
-     * through twice 1.2 m the other way).
-     */
-    void guessWallsCost(double cells) {
-        guessCost = Math.max(NEAR_COST, cells);
         lastLive = null;
     }
 
@@ -317,9 +289,7 @@ final class RouteMap {
 
     /**
      * Raises the cells past each face's seen end, along it, by {@link #NEAR_COST} ({@link #FIRM_COST} within the firm
-     * part), up to {@link #guessCells} or a driven cell (or, with the firm part, one seen open). A face whose other end
-     * lies by a doorway the robot drove through ({@link #doorwayBehind}) is guessed closed with {@link #guessWallsCost}
-     * set: its guess goes on to the arena's boundary at that cost a cell, unless a gap bounds it.
+     * part), up to {@link #guessCells} or a driven cell (or, with the firm part, one seen open).
      */
     private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -329,16 +299,14 @@ final class RouteMap {
                 if (band(live, i + d[0], j + d[1], d) || !faceBehind(live, i, j, d)) {
                     continue;
                 }
-                boolean closed = guessCost > NEAR_COST && doorwayBehind(live, i, j, d);
                 int run = 0;
                 boolean bounded = false;
-                for (int k = 1; closed || k <= guessCells; k++) {
+                for (int k = 1; k <= guessCells; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
                     if (a < 0 || b < 0 || a >= cols || b >= rows) {
                         break;
                     }
-                    if (closed ? driven.get(index(a, b)) || openAcross(live, a, b, d)
-                            : driven.get(index(a, b)) || seenOpen.get(index(a, b)) && !live.get(index(a, b)) || band(live, a, b, d)) {
+                    if (driven.get(index(a, b)) || seenOpen.get(index(a, b)) && !live.get(index(a, b)) || band(live, a, b, d)) {
                         bounded = k * CELL <= GAP;
                         break;
                     }
@@ -347,8 +315,7 @@ final class RouteMap {
                 boolean firm = firmCells > 0 && !bounded;
                 for (int k = 1; k <= run; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
-                    double cost = closed ? Math.max(FIRM_COST, guessCost) : bounded ? NEAR_COST : firm && k <= firmCells ? FIRM_COST : NEAR_COST;
-                    raise(near, index(a, b), cost);
+                    raise(near, index(a, b), firm && k <= firmCells ? FIRM_COST : NEAR_COST);
                     if (firmCells > 0) {
                         for (double[] o : around) {
                             int e = a + (int) o[0], f = b + (int) o[1];
@@ -360,50 +327,6 @@ final class RouteMap {
                 }
             }
         }
-    }
-
-    /**
-     * {@return whether the face that ends at (i, j) towards d lies on a wall with a doorway the robot drove
-     * through}: back along the face's line, against d, over what is seen (a cell or a neighbour across d) and
-     * over gaps not driven through that more of the line seen ends, a gap of at most {@link #DOORWAY_REACH} m
-     * with a cell of the line the robot's centre stood on (it crossed the line there: beside a wall the centre
-     * is a cell or more off the face), ended by more of the line seen or by the arena's boundary; the line seen
-     * over {@link #WALL_SEEN} m before it. A wall across the arena with one doorway:
-     * the way to the other side is that doorway, not the wall's unseen part. A face's line driven across in the
-     * open (a corridor's side, the room beyond its mouth) has no such gap.
-     */
-    private boolean doorwayBehind(BitSet live, int i, int j, int[] d) {
-        int reach = (int) Math.round(DOORWAY_REACH / CELL), seen = 0, gap = 0;
-        boolean drove = false;
-        for (int m = 1; ; m++) {
-            int a = i - m * d[0], b = j - m * d[1];
-            if (a < 0 || b < 0 || a >= cols || b >= rows) {
-                return drove && seen * CELL >= WALL_SEEN;
-            }
-            if (band(live, a, b, d)) {
-                if (drove) {
-                    return seen * CELL >= WALL_SEEN;
-                }
-                seen++;
-                gap = 0;
-                continue;
-            }
-            drove |= driven.get(index(a, b));
-            if (++gap > reach) {
-                return false;
-            }
-        }
-    }
-
-    /** {@return whether cell (a, b) and its two neighbours across direction d were seen open, none of them blocked} */
-    private boolean openAcross(BitSet live, int a, int b, int[] d) {
-        for (int s = -1; s <= 1; s++) {
-            int x = a + s * d[1], y = b + s * d[0];
-            if (x >= 0 && y >= 0 && x < cols && y < rows && (!seenOpen.get(index(x, y)) || live.get(index(x, y)))) {
-                return false;
-            }
-        }
-        return true;
     }
 
     /** {@return whether the {@link #FACE_RUN} - 1 cells behind (i, j), against d, are blocked, each or a neighbour across d} */

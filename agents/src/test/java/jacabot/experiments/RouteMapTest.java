@@ -139,39 +139,6 @@ class RouteMapTest {
         assertTrue(crossings[2] < 0.1, "seen open, there: z = " + crossings[2]);
     }
 
-    /**
-     * A wall along x = 0 seen from z = -0.8 to 0, its doorway at z -0.95..-0.8 driven through; beyond z = 0
-     * (to the boundary at z = 1) it has not been seen. The robot at (-0.2, 0.5), its target across the wall at
-     * (0.3, 0.5): the guess (1 m, firm for 0.15 m) is crossed in the wall's unseen part; with the wall guessed
-     * closed but for its doorway (guessWallsCost), the route takes the doorway driven through. A wall whose
-     * line was never crossed keeps the guess alone.
-     */
-    @Test
-    void aWallWithADoorwayDrivenThroughIsGuessedClosedElsewhere() {
-        double[] crossings = new double[3];
-        for (int variant = 0; variant < 3; variant++) {
-            RouteMap m = new RouteMap(2, 2, 0.04, 60_000);
-            m.guessWalls(1.0);
-            m.guessWallsFirm(0.15);
-            if (variant > 0) {
-                m.guessWallsCost(160);
-            }
-            for (double z = -0.8; z <= 0; z += 0.01) {
-                m.obstacle(0.001, z, 0);
-            }
-            if (variant < 2) {
-                for (double x = -0.1; x <= 0.1; x += 0.01) {
-                    m.standing(x, -0.875);
-                }
-            }
-            m.waypoint(-0.2, 0.5, 0.3, 0.5, 100);
-            crossings[variant] = crossingOf(m.lastRoute());
-        }
-        assertTrue(crossings[0] > 0, "the guess alone, through the unseen part: z = " + crossings[0]);
-        assertTrue(crossings[1] > -0.95 && crossings[1] < -0.8, "closed, through the doorway driven through: z = " + crossings[1]);
-        assertTrue(crossings[2] > 0, "no doorway driven through, the guess alone: z = " + crossings[2]);
-    }
-
     private static double crossingOf(List<double[]> route) {
         return route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow()[1];
     }
