@@ -62,11 +62,6 @@ quickTurns.
 { include("skills/far-sight.asl") }
 // cylinders seen and not gone for are looked for first; the sweep goes on with the look points left
 { include("skills/search-memory.asl") }
-// a search whose round of look points is gone (look-points' @newLookRound forgets the round's end and
-// plans the next; a goal ended between the two, after the way back from the charger, left neither,
-// and the sweep stepped through no waypoint at all: classic world 15, seed 2, the reasoning ran away
-// at 541 s) plans a new round
-@lookRoundLost +!nextWaypoint : searching & lookSpacing(_) & not lanesOnly & not sweep(_) <- !planSweep.
 { include("skills/look-skip.asl") }
 { include("skills/look-points.asl") }
 { include("skills/recovery.asl") }

@@ -85,3 +85,12 @@ mock_operation(_, ok).
        !sweepStep;                                                      // 121 s in all: skipped
        !assert_true(waypoint(0, 0.5, _));
        -waypointPatience(60000); -lookNearing(10000).
+
+// a search whose round is gone (a goal ended @newLookRound between forgetting the round's end and planning
+// the next) plans a new round, the nearest point first: sweep's @noWaypoint did nothing, at every step
+@[test]
++!test_a_search_whose_round_is_gone_plans_a_new_one
+    <- -sweep(_); -waypoint(_, _, _); -+location(-0.9, 0, -0.4); +searching;
+       !nextWaypoint;
+       !assert_true(waypoint(-1, -0.5, _));
+       -searching; -sweep(_); -waypoint(_, _, _).

@@ -267,7 +267,7 @@ mock_operation(_, ok).
        !assert_true(waypoint(0, 0, _)).
 
 // a search whose round of look points is gone (a goal ended look-points' @newLookRound between
-// forgetting the round's end and planning the next) plans a new round
+// forgetting the round's end and planning the next) plans a new round (look-points' @lookRoundLost)
 @[test]
 +!test_a_search_whose_round_is_gone_plans_a_new_one
     <- -sweep(_); -waypoint(_, _, _); -+location(-0.3, 0, 0.3); +searching;

@@ -53,6 +53,11 @@ lookPointMost(120000).
        .system_time(T); -+waypoint(Wx, Wz, T); -+lookPointSet(Wx, Wz, T); -+closest(1000); -+closerAt(T).
 @newLookRound
 +!nextWaypoint : lookSpacing(_) & not lanesOnly & sweep([]) <- -sweep([]); !planSweep.
+// a search whose round is gone plans a new one: @newLookRound forgets the round's end and then plans the
+// next, and a goal ended between the two (suspend/resume: after the way back from the charger) left
+// neither; the sweep then stepped through no waypoint at all (classic world 15, seed 2: the reasoning
+// ran away at 541 s)
+@lookRoundLost +!nextWaypoint : searching & lookSpacing(_) & not lanesOnly & not sweep(_) <- !planSweep.
 
 // a look point is reached within lookReach (a point among boxes was driven round for the waypoint's
 // 0.1 m until its patience ran out)
