@@ -165,8 +165,8 @@ final class ExplorationMap {
      * Open beyond a frontier cell: {@value #OPEN_DEPTH} cells straight on not crossed and no obstacle met
      * in them; and either no obstacle met beside any of them across the way (a doorway two cells wide
      * at least), or, within the first {@value #GAP_DEPTH} cells, a cell with obstacles met on both sides
-     * (one cell clear between marks, as a passage as wide as a cell or a little more leaves in a wall
-     * line) and none beside the cells past it.
+     * (one cell clear between two marks on each side, as a passage as wide as a cell or a little more
+     * leaves in a wall line met along its length) and none beside the cells past it.
      */
     private boolean openBeyond(int i, int j, int[] d) {
         return openBeyond(i, j, d, false) || openBeyond(i, j, d, true);
@@ -181,7 +181,8 @@ final class ExplorationMap {
             }
             boolean one = blocked.contains(key(a + d[1], b + d[0])), other = blocked.contains(key(a - d[1], b - d[0]));
             if (gap && s < GAP_DEPTH) {
-                between |= one && other;
+                between |= one && other && blocked.contains(key(a + 2 * d[1], b + 2 * d[0]))
+                        && blocked.contains(key(a - 2 * d[1], b - 2 * d[0]));
             } else if (one || other) {
                 return false;
             }
