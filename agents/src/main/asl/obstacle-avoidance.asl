@@ -7,8 +7,6 @@ middlewareClass("jacabot.experiments.ObstacleAvoidanceMiddleware").
 
 !start.
 
-seekShare(0.5).                // frontier seeking on (skills/coverage.asl)
-
 { include("skills/initial-phase.asl") }
 { include("skills/coverage.asl") }
 { include("skills/recovery.asl") }

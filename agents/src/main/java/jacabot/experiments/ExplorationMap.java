@@ -127,9 +127,8 @@ final class ExplorationMap {
     /**
      * The way to the nearest frontier (not in the thesis): the nearest cell not crossed yet, reached
      * through crossed cells only, which and {@value #OPEN_DEPTH} more cells straight on beyond it are
-     * not crossed and have no obstacle met in them or, but for a gap in a wall line ({@code openBeyond}),
-     * beside them across the way: a doorway out of a covered room, not the margin along its walls, where
-     * obstacles were met on one side. {@return {turn in degrees, left positive; distance in metres} to a waypoint up to
+     * not crossed and have no obstacle met in them or beside them across the way: a doorway out of a
+     * covered room (two cells wide at least), not the margin along its walls, where obstacles were met. {@return {turn in degrees, left positive; distance in metres} to a waypoint up to
      * {@value #WAYPOINT} cells along that way, or null when there is none}
      */
     double[] frontierWaypoint() {
@@ -158,36 +157,15 @@ final class ExplorationMap {
         return null;
     }
 
-    /** How many cells from a frontier cell on may have obstacles met on both sides: a gap in a wall line. */
-    static final int GAP_DEPTH = 2;
-
-    /**
-     * Open beyond a frontier cell: {@value #OPEN_DEPTH} cells straight on not crossed and no obstacle met
-     * in them; and either no obstacle met beside any of them across the way (a doorway two cells wide
-     * at least), or, within the first {@value #GAP_DEPTH} cells, a cell with obstacles met on both sides
-     * (one cell clear between two marks on each side, as a passage as wide as a cell or a little more
-     * leaves in a wall line met along its length) and none beside the cells past it.
-     */
     private boolean openBeyond(int i, int j, int[] d) {
-        return openBeyond(i, j, d, false) || openBeyond(i, j, d, true);
-    }
-
-    private boolean openBeyond(int i, int j, int[] d, boolean gap) {
-        boolean between = false;
         for (int s = 0; s <= OPEN_DEPTH; s++) {
             int a = i + s * d[0], b = j + s * d[1];
-            if ((s > 0 && visited.contains(key(a, b))) || blocked.contains(key(a, b))) {
-                return false;
-            }
-            boolean one = blocked.contains(key(a + d[1], b + d[0])), other = blocked.contains(key(a - d[1], b - d[0]));
-            if (gap && s < GAP_DEPTH) {
-                between |= one && other && blocked.contains(key(a + 2 * d[1], b + 2 * d[0]))
-                        && blocked.contains(key(a - 2 * d[1], b - 2 * d[0]));
-            } else if (one || other) {
+            if ((s > 0 && visited.contains(key(a, b))) || blocked.contains(key(a, b))
+                    || blocked.contains(key(a + d[1], b + d[0])) || blocked.contains(key(a - d[1], b - d[0]))) {
                 return false;
             }
         }
-        return !gap || between;
+        return true;
     }
 
     private double[] waypoint(Map<Long, Long> parent, long target, long start) {
