@@ -99,29 +99,32 @@ mock_operation(_, ok).
        !until(not veering, 2000);
        -leftSensor(_); -rightSensor(_); -strongLeft(_); -+arena(3, 3).
 
-// a box at the edge of the left sensor's cone, read faintly (under the obstacle levels) on a
-// straight leg: a slight turn right, then straight on
+// a box coming onto the left sensor's outer ray at the edge of its cone, its reading jumping from
+// nothing to under the obstacle levels on a straight leg: a slight turn right, then straight on
 @[test]
 +!test_a_faint_reading_at_the_flank_on_a_straight_leg_steers_slightly_away
     <- !forget_calls; -+obstacle(false); -+rightSensor(0); -+driving(1, straight);
-       -+leftSensor(190);
+       -+leftSensor(0); .wait(50); -+leftSensor(190);
        !until(mock_called(setSpeeds(100, 50)), 1000);
        !until(not nudging, 1000);
        !assert_true(mock_called(setSpeeds(100, 100)));                   // the leg goes on
        !assert_false(mock_called(setSpeeds(-100, 100)) | mock_called(setSpeeds(100, -100)));
-       !forget_calls; -+leftSensor(0); -+rightSensor(200);
+       !forget_calls; -+leftSensor(0); .wait(50); -+rightSensor(200);
        !until(mock_called(setSpeeds(50, 100)), 1000);                    // the same on the right
        !until(not nudging, 1000);
        -leftSensor(_); -rightSensor(_); -driving(_, _); -obstacle(false).
 
-// the same reading while the robot veers away from that side (its veer already turns away), or
-// with the other sensor reading as much: no nudge
+// the same jump while the robot veers away from that side (its veer already turns away), or with
+// the other sensor reading as much, or a reading that rose step by step (a box ahead): no nudge
 @[test]
-+!test_a_faint_reading_leaves_a_veer_away_from_it_and_an_even_pair
++!test_a_faint_reading_leaves_a_veer_away_from_it_an_even_pair_and_a_slow_rise
     <- !forget_calls; -+obstacle(false); -+rightSensor(0); -+driving(1, right);
-       -+leftSensor(190); .wait(300);
+       -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(100, 50)));
-       -+driving(1, straight); -+rightSensor(150); -+leftSensor(0); -+leftSensor(190); .wait(300);
+       -+driving(1, straight); -+rightSensor(150); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -+rightSensor(0); -+leftSensor(0); .wait(50); -+leftSensor(80); .wait(50); -+leftSensor(130); .wait(50);
+       -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
        -leftSensor(_); -rightSensor(_); -driving(_, _); -obstacle(false).
 
