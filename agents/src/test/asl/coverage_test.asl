@@ -123,7 +123,7 @@ mock_operation(_, ok).
        .system_time(T); -+obstacleTimes([T]);
        -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(100, 50)));
-       -+driving(1, straight); -+rightSensor(150); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
+       -+driving(1, straight); -+rightSensor(60); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
        -+obstacleTimes([T - 5000]); -+rightSensor(0); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));

@@ -69,7 +69,7 @@ flankTime(2000).              // how long after an obstacle the robot may still 
 // passed, in narrow arenas"
 flankWatch(480, 500).
 // not in the thesis, in any arena: in the flankTime after an obstacle (its veer and the straight leg
-// after it), a front sensor reading flankNudge's Level or more, twice the other's, while no obstacle
+// after it), a front sensor reading flankNudge's Level or more, the other under a third of it, while no obstacle
 // is signalled and the robot veers towards that side or drives straight, has a box at the edge of
 // its cone: the sensor averages its three rays, so a box on the outer ray alone reads 150-230 down
 // to a centimetre off the rim, under the obstacle levels, the robot's only sign of it before the
@@ -195,12 +195,12 @@ pausedUntil("-veering") :- veering.
 // the box at the flank's edge of a cone (flankNudge): steer slightly away; back to the straight
 // leg after it (driving(K, Way): the leg or veer under way, its start time and way)
 @nudgeLeft
-+leftSensor(L) : flankNudge(Level, C, Ms) & L >= Level & rightSensor(R) & R * 2 < L & obstacle(false)
++leftSensor(L) : flankNudge(Level, C, Ms) & L >= Level & rightSensor(R) & R < Level / 3 & obstacle(false)
                & not avoiding & not nudging & driving(K, Way) & Way \== right & justAvoided & cruiseSpeed(V)
     <- +nudging; setSpeeds(V, V - C); .wait(Ms);
        if (driving(K, straight) & not avoiding & not veering) { setSpeeds(V, V) }; -nudging.
 @nudgeRight
-+rightSensor(R) : flankNudge(Level, C, Ms) & R >= Level & leftSensor(L) & L * 2 < R & obstacle(false)
++rightSensor(R) : flankNudge(Level, C, Ms) & R >= Level & leftSensor(L) & L < Level / 3 & obstacle(false)
                 & not avoiding & not nudging & driving(K, Way) & Way \== left & justAvoided & cruiseSpeed(V)
     <- +nudging; setSpeeds(V - C, V); .wait(Ms);
        if (driving(K, straight) & not avoiding & not veering) { setSpeeds(V, V) }; -nudging.
