@@ -99,11 +99,11 @@ mock_operation(_, ok).
        !until(not veering, 2000);
        -leftSensor(_); -rightSensor(_); -strongLeft(_); -+arena(3, 3).
 
-// just after an obstacle, a box at the edge of the left sensor's cone, read faintly (under the
-// obstacle levels) on the straight leg: a slight turn right, then straight on
+// in a narrow arena, just after an obstacle, a box at the edge of the left sensor's cone, read
+// faintly (under the obstacle levels) on the straight leg: a slight turn right, then straight on
 @[test]
-+!test_a_faint_reading_at_the_flank_on_a_straight_leg_steers_slightly_away
-    <- !forget_calls; -+obstacle(false); -+rightSensor(0); -+driving(1, straight);
++!test_a_faint_reading_at_the_flank_after_an_obstacle_steers_slightly_away_in_a_narrow_arena
+    <- !forget_calls; -+arena(0.8, 2.4); -+obstacle(false); -+rightSensor(0);
        .system_time(T); -+obstacleTimes([T]); -+leftSensor(190);
        !until(mock_called(setSpeeds(100, 50)), 1000);
        !until(not nudging, 1000);
@@ -112,22 +112,25 @@ mock_operation(_, ok).
        !forget_calls; -+leftSensor(0); .wait(50); -+rightSensor(200);
        !until(mock_called(setSpeeds(50, 100)), 1000);                    // the same on the right
        !until(not nudging, 1000);
-       -leftSensor(_); -rightSensor(_); -driving(_, _); -obstacle(false); -+obstacleTimes([]).
+       -leftSensor(_); -rightSensor(_); -obstacle(false); -+obstacleTimes([]); -+arena(3, 3).
 
 // the same reading while the robot veers away from that side (its veer already turns away), or
-// with the other sensor reading as much, or long after the last obstacle (a box met ahead, which the
-// usual avoidance takes): no nudge
+// with the other sensor reading too, or long after the last obstacle (a box met ahead, which the
+// usual avoidance takes), or in an arena 1 m or more across: no nudge
 @[test]
-+!test_a_faint_reading_leaves_a_veer_away_from_it_an_even_pair_and_a_box_ahead
-    <- !forget_calls; -+obstacle(false); -+rightSensor(0); -+driving(1, right);
++!test_a_faint_reading_leaves_a_veer_away_an_obstacle_both_sides_a_box_ahead_and_wider_arenas
+    <- !forget_calls; -+arena(0.8, 2.4); -+obstacle(false); -+rightSensor(0); -+leftSensor(0);
        .system_time(T); -+obstacleTimes([T]);
-       -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
+       +veering; !!veer(1); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(100, 50)));
-       -+driving(1, straight); -+rightSensor(60); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
+       !until(not veering, 1000); !forget_calls;
+       -+rightSensor(60); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
        -+obstacleTimes([T - 5000]); -+rightSensor(0); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
        !assert_false(mock_called(setSpeeds(_, _)));
-       -leftSensor(_); -rightSensor(_); -driving(_, _); -obstacle(false); -+obstacleTimes([]).
+       .system_time(T2); -+obstacleTimes([T2]); -+arena(1.5, 2.4); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
+       !assert_false(mock_called(setSpeeds(_, _)));
+       -leftSensor(_); -rightSensor(_); -obstacle(false); -+obstacleTimes([]); -+arena(3, 3).
 
 @[test]
 +!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
