@@ -99,39 +99,6 @@ mock_operation(_, ok).
        !until(not veering, 2000);
        -leftSensor(_); -rightSensor(_); -strongLeft(_); -+arena(3, 3).
 
-// in a narrow arena, just after an obstacle, a box at the edge of the left sensor's cone, read
-// faintly (under the obstacle levels) on the straight leg: a slight turn right, then straight on
-@[test]
-+!test_a_faint_reading_at_the_flank_after_an_obstacle_steers_slightly_away_in_a_narrow_arena
-    <- !forget_calls; -+arena(0.8, 2.4); -+obstacle(false); -+rightSensor(0);
-       .system_time(T); -+obstacleTimes([T]); -+leftSensor(190);
-       !until(mock_called(setSpeeds(100, 50)), 1000);
-       !until(not nudging, 1000);
-       !assert_true(mock_called(setSpeeds(100, 100)));                   // the leg goes on
-       !assert_false(mock_called(setSpeeds(-100, 100)) | mock_called(setSpeeds(100, -100)));
-       !forget_calls; -+leftSensor(0); .wait(50); -+rightSensor(200);
-       !until(mock_called(setSpeeds(50, 100)), 1000);                    // the same on the right
-       !until(not nudging, 1000);
-       -leftSensor(_); -rightSensor(_); -obstacle(false); -+obstacleTimes([]); -+arena(3, 3).
-
-// the same reading while the robot veers away from that side (its veer already turns away), or
-// with the other sensor reading too, or long after the last obstacle (a box met ahead, which the
-// usual avoidance takes), or in an arena 1 m or more across: no nudge
-@[test]
-+!test_a_faint_reading_leaves_a_veer_away_an_obstacle_both_sides_a_box_ahead_and_wider_arenas
-    <- !forget_calls; -+arena(0.8, 2.4); -+obstacle(false); -+rightSensor(0); -+leftSensor(0);
-       .system_time(T); -+obstacleTimes([T]);
-       +veering; !!veer(1); .wait(50); -+leftSensor(190); .wait(300);
-       !assert_false(mock_called(setSpeeds(100, 50)));
-       !until(not veering, 1000); !forget_calls;
-       -+rightSensor(60); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
-       !assert_false(mock_called(setSpeeds(_, _)));
-       -+obstacleTimes([T - 5000]); -+rightSensor(0); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
-       !assert_false(mock_called(setSpeeds(_, _)));
-       .system_time(T2); -+obstacleTimes([T2]); -+arena(1.5, 2.4); -+leftSensor(0); .wait(50); -+leftSensor(190); .wait(300);
-       !assert_false(mock_called(setSpeeds(_, _)));
-       -leftSensor(_); -rightSensor(_); -obstacle(false); -+obstacleTimes([]); -+arena(3, 3).
-
 @[test]
 +!test_a_central_obstacle_makes_the_robot_back_off_and_turn_around
     <- !forget_calls; -+obstacleTimes([]); !obstacle_ahead(0);

@@ -68,18 +68,6 @@ flankTime(2000).              // how long after an obstacle the robot may still 
 // 1-3: 146 -> 142 of 150); docs/comparison-obstacle-avoidance.md, "a half turn from a box just
 // passed, in narrow arenas"
 flankWatch(480, 500).
-// not in the thesis, only in an arena narrower than narrowSide m: in the flankTime after an
-// obstacle (its veer and the straight leg after it), a front sensor reading flankNudge's Level or
-// more, the other under a third of that, while no obstacle is signalled and the robot veers towards
-// that side or drives straight, has a box at the edge of its cone: the sensor averages its three rays, so a box on the outer ray alone reads 150-230 down
-// to a centimetre off the rim, under the obstacle levels, the robot's only sign of it before the
-// flank touches it (wide tuning 139, run seed 1, at 286 s: the veer towards the box the robot had
-// just turned from, 80 -> 204, then the touch). The robot steers away from it, the wheel on the
-// other side Cut units slower for Ms ms (a slight turn, not an avoidance), then goes on straight.
-// On every straight leg and in every arena, boxes met ahead were passed at the flank instead of
-// avoided (wide tuning 101-160, run seeds 1-2: 97 -> 88 of 120, runs with contact over 2 s 6 -> 21);
-// docs/comparison-obstacle-avoidance.md, "a slight turn from a faint reading at the flank"
-flankNudge(150, 50, 200).
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & (W * D >= A | narrowArena).
 narrowArena :- arena(W, D) & narrowSide(N) & math.min(W, D) < N.
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
@@ -125,16 +113,13 @@ obstacleTimes([]).
 boxTurnedTo(D) :- narrowArena & D < 0 & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
 boxTurnedTo(D) :- narrowArena & D > 0 & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
 setUpGoal(setUpCoverage).
-// an obstacle within flankTime: the robot may still have it at its flank
-justAvoided :- obstacleTimes([T | _]) & flankTime(FT) & .system_time(Now) & Now - T < FT.
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 // what random motion waits for
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
 // Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
-// seeking(Until) and soughtAt(T), strongLeft(T) and strongRight(T) (flankWatch), nudging
-// (flankNudge). Needs: !clear
+// seeking(Until) and soughtAt(T), strongLeft(T) and strongRight(T) (flankWatch). Needs: !clear
 // (recovery). Include it before recovery (its escape, a turn on the spot, is the one this robot uses).
 
 @setUpCoverage
@@ -191,19 +176,6 @@ pausedUntil("-veering") :- veering.
 
 @watchLeft +leftSensor(L) : narrowArena & flankWatch(Level, _) & L >= Level <- .system_time(T); -+strongLeft(T).
 @watchRight +rightSensor(R) : narrowArena & flankWatch(Level, _) & R >= Level <- .system_time(T); -+strongRight(T).
-
-// the box at the flank's edge of a cone (flankNudge): steer slightly away, then straight on (within
-// flankTime of an obstacle the robot veers or drives the straight leg after it: @moveAway)
-@nudgeLeft
-+leftSensor(L) : narrowArena & flankNudge(Level, C, Ms) & L >= Level & rightSensor(R) & R < Level / 3 & obstacle(false)
-               & not avoiding & not nudging & justAvoided & (not veering | .intend(veer(D)) & D < 0) & cruiseSpeed(V)
-    <- +nudging; setSpeeds(V, V - C); .wait(Ms);
-       if (not avoiding & not veering & justAvoided) { setSpeeds(V, V) }; -nudging.
-@nudgeRight
-+rightSensor(R) : narrowArena & flankNudge(Level, C, Ms) & R >= Level & leftSensor(L) & L < Level / 3 & obstacle(false)
-                & not avoiding & not nudging & justAvoided & (not veering | .intend(veer(D)) & D > 0) & cruiseSpeed(V)
-    <- +nudging; setSpeeds(V - C, V); .wait(Ms);
-       if (not avoiding & not veering & justAvoided) { setSpeeds(V, V) }; -nudging.
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
