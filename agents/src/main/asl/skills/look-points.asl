@@ -45,16 +45,10 @@ lookPointMost(120000).
                 & Z = -D / 2 + (J + 0.5) * D / Nz & offStorage(X, Z), Ps);
        if (Ps == []) { +lanesOnly; !planSweep } else { -+sweep(Ps); !nextWaypoint }.
 
-// the nearest look point left, each neighbour it still has (a point of the grid one step away)
-// counting as lookCrowding * lookSpacing^2 more: among points about as near, the one at the edge of
-// what is left goes first, so the round does not leave points stranded far apart for its end (a
-// rule of thumb of tours on a grid, Warnsdorff's); with none left a new round
-lookCrowding(0.2).
+// the nearest look point left; with none left a new round
 @nextLookPoint
-+!nextWaypoint : lookSpacing(S) & not lanesOnly & sweep(Ps) & Ps = [_ | _] & location(Lx, _, Lz) & lookCrowding(K)
-    <- .findall(d(C, X, Z), .member([X, Z], Ps) & D2 = (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz)
-                & .findall(n, .member([Xn, Zn], Ps) & (Xn - X) * (Xn - X) + (Zn - Z) * (Zn - Z) < 1.5 * S * S, Ns)
-                & .length(Ns, N) & C = D2 + K * N * S * S, Ds);
++!nextWaypoint : lookSpacing(_) & not lanesOnly & sweep(Ps) & Ps = [_ | _] & location(Lx, _, Lz)
+    <- .findall(d(D2, X, Z), .member([X, Z], Ps) & D2 = (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz), Ds);
        .min(Ds, d(_, Wx, Wz)); .delete([Wx, Wz], Ps, Rest); -+sweep(Rest);
        .system_time(T); -+waypoint(Wx, Wz, T); -+lookPointSet(Wx, Wz, T); -+closest(1000); -+closerAt(T).
 @newLookRound
