@@ -54,19 +54,12 @@ seekTime(40000).
 seekLookEvery(5000).          // while new floor still comes, the next look at its rate
 flankTime(2000).              // how long after an obstacle the robot may still touch it at its flank
 // not in the thesis, and only in an arena narrower than narrowSide m (below): a front sensor that
-// read flankWatch's Level or more (a box within about 5 cm of it) in the last Ms and reads nothing
-// now had a box there that the robot has since driven past, to that flank, out of both cones. An
-// avoidance that would turn to that side turns the robot back the way it came instead (@coverBack:
-// a half turn on the spot, which a disc makes without touching anything new, and no veer): the turn
-// there, the veer and the straight leg after them slid the flank along that box, the largest share
-// of the contact failures' touches (most of them when the avoidance before it, under a second
-// earlier, had turned away from that side: a box on one side, a wall or box on the other, and no
-// room between). Wide tuning 101-160, run seeds 1-2: 95 -> 97 of 120 (runs with contact over 2 s
-// 8 -> 6), seeds 3-4: 97 -> 99 (9 -> 6), extra 301-370 x 1: 49 -> 50 of 70, held out 241-300:
-// 93 -> 94; only the runs in narrow arenas changed. In wider arenas (the classic profile's, 1-3 m
-// of open floor) the half turn reshuffled the paths and lost more runs than it won (classic 1-50 x
-// 1-3: 146 -> 142 of 150); docs/comparison-obstacle-avoidance.md, "a half turn from a box just
-// passed, in narrow arenas"
+// read flankWatch's Level or more (a box within about 5 cm) in the last Ms and reads nothing now has
+// that box beside the robot, out of its cone. An avoidance that would turn to that side turns back
+// the way it came on the spot instead (@coverBack, no veer): the turn, veer and straight leg slid
+// the flank along the box, the largest share of the contact failures' touches. In wider arenas the
+// half turn reshuffled paths and lost more runs than it won (docs/comparison-obstacle-avoidance.md,
+// "a half turn from a box just passed, in narrow arenas")
 flankWatch(480, 500).
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & (W * D >= A | narrowArena).
 narrowArena :- arena(W, D) & narrowSide(N) & math.min(W, D) < N.
