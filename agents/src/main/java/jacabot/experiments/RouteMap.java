@@ -179,15 +179,31 @@ final class RouteMap {
 
     /** A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess ends there). */
     void seenFree(double x, double z, double tx, double tz) {
-        int steps = (int) Math.ceil(Math.hypot(tx - x, tz - z) / (CELL / 2));
-        for (int k = 0; k <= steps; k++) {
-            double f = steps == 0 ? 0 : (double) k / steps;
-            int c = cell(x + f * (tx - x), z + f * (tz - z));
+        walk(x, z, tx, tz, (f, c) -> {
             if (c >= 0 && !seenOpen.get(c)) {
                 seenOpen.set(c);
                 openCount++;
             }
+            return true;
+        });
+    }
+
+    /** One point of a line walked by {@link #walk}: its fraction of the way (0 and 1 exactly at the ends) and its cell (-1: off the map). */
+    private interface LineStep {
+        /** {@return whether the walk goes on} */
+        boolean at(double f, int cell);
+    }
+
+    /** Walks the line from (x, z) to (tx, tz) in half-cell steps, both ends included; {@return false when a step stopped it} */
+    private boolean walk(double x, double z, double tx, double tz, LineStep step) {
+        int steps = (int) Math.ceil(Math.hypot(tx - x, tz - z) / (CELL / 2));
+        for (int k = 0; k <= steps; k++) {
+            double f = steps == 0 ? 0 : (double) k / steps;
+            if (!step.at(f, cell(x + f * (tx - x), z + f * (tz - z)))) {
+                return false;
+            }
         }
+        return true;
     }
 
     /** {@return whether an obstacle is on the map at (x, z) at {@code nowMs}} */
@@ -362,20 +378,13 @@ final class RouteMap {
      */
     private boolean clear(double x, double z, double tx, double tz, double[] near, long nowMs) {
         double length = Math.hypot(tx - x, tz - z);
-        int steps = (int) Math.ceil(length / (CELL / 2));
-        for (int k = 0; k <= steps; k++) {
-            double f = steps == 0 ? 0 : (double) k / steps;
-            double px = x + f * (tx - x), pz = z + f * (tz - z);
-            int c = cell(px, pz);
+        return walk(x, z, tx, tz, (f, c) -> {
             if (c < 0) {
                 return false;
             }
             boolean atEnd = f * length <= CELL || (1 - f) * length <= clearance + CELL;
-            if (live(c, nowMs) && !(k == 0 || k == steps) || near[c] > 0 && !atEnd) {
-                return false;
-            }
-        }
-        return true;
+            return !(live(c, nowMs) && !(f == 0 || f == 1) || near[c] > 0 && !atEnd);
+        });
     }
 
     /**
