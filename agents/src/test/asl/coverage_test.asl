@@ -24,8 +24,7 @@ mock_operation(_, ok).
        !assert_true(mock_called(odometry(0.001, 0.09)));
        !assert_true(mock_called(exploreHorizon(0.6)));
        !assert_true(mock_called(obstacleLevels(480, 300)));
-       !assert_true(mock_called(deltaLimit(150)));
-       !assert_true(mock_called(sideMarks)).
+       !assert_true(mock_called(deltaLimit(150))).
 
 @[test]
 +!test_set_up_in_a_small_arena_keeps_the_thesis_obstacle_levels
@@ -87,30 +86,6 @@ mock_operation(_, ok).
        !assert_false(strongLeft(_));                                      // not watched there
        !until(not veering, 2000);
        -leftSensor(_); -rightSensor(_); -+arena(3, 3).
-
-// an obstacle straight ahead (a difference under mapSide), slightly more on the right: the usual
-// turn is left, but the robot's map holds obstacles met beside its left flank and none on its right,
-// so it turns right and veers right
-@[test]
-+!test_an_obstacle_ahead_is_avoided_towards_the_flank_the_map_finds_clear
-    <- !forget_calls; -+obstacleTimes([]); -+flankMarks(2, 0);
-       !obstacle_ahead(-40);
-       !until(mock_called(setSpeeds(100, V)) & V > 0 & V < 100, 2000);
-       !assert_true(mock_called(setSpeeds(100, -100)));
-       !assert_false(mock_called(setSpeeds(-100, 100)));
-       !until(not veering, 2000);
-       -flankMarks(_, _).
-
-// the same marks with a clear difference (the obstacle on the right): the usual turn left
-@[test]
-+!test_an_obstacle_on_one_side_is_avoided_the_usual_way_whatever_the_map
-    <- !forget_calls; -+obstacleTimes([]); -+flankMarks(2, 0);
-       !obstacle_ahead(-250);
-       !until(mock_called(setSpeeds(V, 100)) & V > 0 & V < 100, 2000);
-       !assert_true(mock_called(setSpeeds(-100, 100)));
-       !assert_false(mock_called(setSpeeds(100, -100)));
-       !until(not veering, 2000);
-       -flankMarks(_, _).
 
 // the same box still read (in the cone, not at the flank): the usual turn left
 @[test]

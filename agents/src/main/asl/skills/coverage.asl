@@ -101,15 +101,6 @@ warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
 obstacleTimes([]).
-// not in the thesis, and only in an arena narrowSide m or more across: an obstacle whose left-right
-// difference is under mapSide (a wall or box straight ahead, either turn would do) is avoided by the
-// turn to the side whose cells beside the robot hold fewer obstacles met on the dead-reckoning map
-// (the middleware's flankMarks, given as the obstacle is signalled): the flank on the side turned
-// to, sliding along a box beside it out of the sensors' sight, took most of the contact
-mapSide(100).
-flipSide(V) :- mapSide(C) & V \== 0 & math.abs(V) < C & flankMarks(L, R) & ((V < 0 & L > R) | (V > 0 & R > L)).
-avoidSide(V, E) :- flipSide(V) & E = -V.
-avoidSide(V, V) :- not flipSide(V).
 // the side an avoidance of difference D turns to read a box a moment ago (flankWatch) and reads
 // nothing now: the box is beside the robot, out of that sensor's cone
 boxTurnedTo(D) :- narrowArena & D < 0 & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
@@ -130,8 +121,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (mapSide(_) & not narrowArena) { sideMarks }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
@@ -148,8 +138,8 @@ pausedUntil("-veering") :- veering.
 @coverCorridor
 +obstacle(true) : not avoiding & inCorridor <- +avoiding; -veering; .succeed_goal(move(_)); !steer.
 @coverObstacle
-+obstacle(true) : delta(V) & not avoiding & avoidSide(V, D)
-    <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(D).
++obstacle(true) : delta(V) & not avoiding
+    <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
 
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.

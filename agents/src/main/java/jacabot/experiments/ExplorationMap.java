@@ -80,29 +80,6 @@ final class ExplorationMap {
         blocked.add(key(x + distance * Math.cos(a), z + distance * Math.sin(a)));
     }
 
-    /** Where {@link #flankMarks} looks beside the robot: bearings off the heading, degrees, and distances from the centre, metres. */
-    private static final double[] FLANK_BEARINGS = {60, 75, 90, 105, 120}, FLANK_DISTANCES = {0.08, 0.13};
-
-    /**
-     * {@return how many cells beside the robot, on its left ({@code left}) or right, hold an obstacle met}
-     * (not in the thesis): the cells at {@link #FLANK_BEARINGS} and {@link #FLANK_DISTANCES}, each counted
-     * once, the robot's own cell not counted
-     */
-    int flankMarks(boolean left) {
-        Set<Long> cells = new HashSet<>();
-        long own = key(x, z);
-        for (double b : FLANK_BEARINGS) {
-            double a = heading + Math.toRadians(left ? b : -b);
-            for (double d : FLANK_DISTANCES) {
-                long k = key(x + d * Math.cos(a), z + d * Math.sin(a));
-                if (k != own && blocked.contains(k)) {
-                    cells.add(k);
-                }
-            }
-        }
-        return cells.size();
-    }
-
     /** {@return the turn in degrees (positive: left) towards the most cells not yet crossed, small turns first on a tie} */
     double bestTurn() {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;

@@ -227,27 +227,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         return RESPONSE[RESPONSE.length - 1][1];
     }
 
-    /** Whether each obstacle signalled first gives {@code flankMarks(Left, Right)} (not in the thesis). */
-    private boolean flankMarks;
-
-    /**
-     * From now on, the observable property {@code flankMarks(Left, Right)}, set as each obstacle is
-     * signalled (before {@code obstacle(true)}): how many cells beside the robot on each side hold an
-     * obstacle met on the dead-reckoning map (not in the thesis; {@code ExplorationMap.flankMarks}).
-     * Fails before {@code odometry}.
-     */
-    @OPERATION
-    void sideMarks() {
-        if (map == null) {
-            failed("sideMarks needs odometry(SpeedUnit, AxleLength) first");
-            return;
-        }
-        flankMarks = true;
-        if (!hasObsProperty("flankMarks")) {
-            defineObsProperty("flankMarks", 0, 0);
-        }
-    }
-
     /** Both sensors' level for a corridor, and how far the robot must drive seeing both (NaN: off). */
     private double corridorLevel = Double.NaN, corridorSpan;
     /** Where the robot was (dead reckoning) when both sensors began to read corridorLevel; NaN: not now. */
@@ -327,9 +306,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
                 obstacle = false;
             }
             if (obstacle != getObsProperty("obstacle").booleanValue()) {
-                if (obstacle && flankMarks) {
-                    getObsProperty("flankMarks").updateValues(map.flankMarks(true), map.flankMarks(false));
-                }
                 if (obstacle && map != null) {
                     map.obstacle(delta > 0 ? 20 : delta < 0 ? -20 : 0, OBSTACLE_RANGE);
                 }
