@@ -61,7 +61,6 @@ flankTime(2000).              // how long after an obstacle the robot may still 
 // half turn reshuffled paths and lost more runs than it won (docs/comparison-obstacle-avoidance.md,
 // "a half turn from a box just passed, in narrow arenas")
 flankWatch(480, 500).
-pivotWatch(150, 1000, 60, 200).
 obstacleThresholds(480, 300, 150) :- arena(W, D) & closeArea(A) & (W * D >= A | narrowArena).
 narrowArena :- arena(W, D) & narrowSide(N) & math.min(W, D) < N.
 // in an arena of looseArea m2 or more, a left-right difference signals an obstacle only over 200
@@ -147,27 +146,8 @@ pausedUntil("-veering") :- veering.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
     <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
        !clear; -avoiding.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; !noteTurn(left); +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; !noteTurn(right); +veering; -avoiding; !veer(D).
-
-@noteTurnWide +!noteTurn(Side) : not narrowArena <- .system_time(T); -+turnedTo(Side, T).
-@noteTurnNarrow +!noteTurn(_).
-
-// a reading rising on the side just turned to: a pivot on the spot away from it, not the veer or leg
-@pivotFromLeft
-+leftSensor(L) : turnedTo(left, T) & pivotWatch(Level, W, _, _) & L >= Level & not avoiding & obstacle(false)
-               & .system_time(Now) & Now - T < W
-    <- +avoiding; -turnedTo(left, T); .succeed_goal(veer(_)); -veering; .succeed_goal(move(_)); !pivot(right); -avoiding.
-@pivotFromRight
-+rightSensor(R) : turnedTo(right, T) & pivotWatch(Level, W, _, _) & R >= Level & not avoiding & obstacle(false)
-                & .system_time(Now) & Now - T < W
-    <- +avoiding; -turnedTo(right, T); .succeed_goal(veer(_)); -veering; .succeed_goal(move(_)); !pivot(left); -avoiding.
-@pivotTurn
-+!pivot(Way) : turnSpeed(S) & pivotWatch(_, _, Low, Ms)
-    <- if (Way == right) { setSpeeds(S, -S) } else { setSpeeds(-S, S) };
-       .system_time(T0); !pivotOn(Way, T0 + Ms, Low); stop.
-@pivotDone +!pivotOn(Way, Until, Low) : (Way == right & leftSensor(L) & L < Low) | (Way == left & rightSensor(R) & R < Low) | (.system_time(T) & T >= Until).
-@pivotOn +!pivotOn(Way, Until, Low) <- .wait(40); !pivotOn(Way, Until, Low).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
