@@ -105,11 +105,6 @@ obstacleTimes([]).
 // nothing now: the box is beside the robot, out of that sensor's cone
 boxTurnedTo(D) :- narrowArena & D < 0 & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
 boxTurnedTo(D) :- narrowArena & D > 0 & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-// wider arenas: only when this avoidance turns back the way the one before turned from, within turnBack ms
-boxTurnedTo(D) :- not narrowArena & D < 0 & turnedBack(right) & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-boxTurnedTo(D) :- not narrowArena & D > 0 & turnedBack(left) & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-turnedBack(Side) :- lastTurn(Side, T) & turnBack(B) & .system_time(Now) & Now - T < B.
-turnBack(600).
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
@@ -151,8 +146,8 @@ pausedUntil("-veering") :- veering.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
     <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
        !clear; -avoiding.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); .system_time(T); -+lastTurn(left, T); !clear; +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); .system_time(T); -+lastTurn(right, T); !clear; +veering; -avoiding; !veer(D).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
@@ -172,8 +167,8 @@ pausedUntil("-veering") :- veering.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
 @steerDone +!steer <- .system_time(T); -+steeredAt(T); -avoiding.
 
-@watchLeft +leftSensor(L) : flankWatch(Level, _) & L >= Level <- .system_time(T); -+strongLeft(T).
-@watchRight +rightSensor(R) : flankWatch(Level, _) & R >= Level <- .system_time(T); -+strongRight(T).
+@watchLeft +leftSensor(L) : narrowArena & flankWatch(Level, _) & L >= Level <- .system_time(T); -+strongLeft(T).
+@watchRight +rightSensor(R) : narrowArena & flankWatch(Level, _) & R >= Level <- .system_time(T); -+strongRight(T).
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
