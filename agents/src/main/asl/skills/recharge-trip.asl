@@ -23,7 +23,8 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
 // power those two sums assume instead of fullPower). Rules it extends:
 // travelling, halted.
-// Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
+// Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), with markedByRoute a
+// middleware with routeLength (NavigationMiddleware's route map), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
 // energy-agent.asl's when it is another agent's.
 // Deviations from the listing: the listing waits 3 s at the charger (".wait(3000)"); with the
