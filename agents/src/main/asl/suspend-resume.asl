@@ -28,6 +28,9 @@ wallGuess(1.0).
 // 101-160: the first trip to the charger sooner in 30 runs, later in 5: docs/comparison-wide.md)
 wallFirm(0.15).
 quickTurns.
+// the way back's progress judged along the route map too, not only in a straight line (recharge-trip's
+// @reachMarkedAlongRoute: docs/comparison-wide.md)
+markedByRoute.
 // the sweep heads for look points at most 1 m apart and looks around at each, not along lanes from wall
 // to wall (3-4 m each in the wide arenas: the room the robot began in took the run), navigation's
 // parameters (skills/look-search.asl, look-points.asl, look-skip.asl; wide tuning 101-160 x 1-2: 111 -> 115

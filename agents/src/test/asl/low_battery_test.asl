@@ -15,6 +15,9 @@ charger(-0.38, 0.38).
 // towards any target is 90 degrees; every other operation succeeds
 mock_operation(lookupArtifact(_, middleware), ok).
 mock_operation(computeAngle(_, _, _, _, 90), ok).
+// the way along the route map: 2 m from the charger, 1 m from anywhere else
+mock_operation(routeLength(-0.38, 0.38, _, _, 2.0), ok).
+mock_operation(routeLength(_, _, _, _, 1.0), ok).
 mock_operation(_, ok).
 
 @[test]
@@ -61,6 +64,26 @@ mock_operation(_, ok).
        !until(not charging, 10000);                                  // no nearer on it: given up, resumed
        !assert_false(charging);
        -+tripTimeout(150000).
+
+// a way back round a wall goes away from the marked point first: tried again when its time runs out
+// while the way left along the route map is markedProgress shorter than from the charger, given up once
+// a try brought it no nearer along the route either
+@[test]
++!test_a_way_back_nearer_along_the_route_is_tried_again_when_its_time_runs_out
+    <- !until(not charging, 10000); !forget_calls; -markedTryFrom(_, _, _, _); -+tripTimeout(600);
+       -lowBattery; -targetReached; -charged; -+location(0.3, 0, -0.1); -+battery(470);
+       !!perceive(lowBattery);
+       !until(.intend(reachCharger), 10000);
+       -+location(-0.38, 0, 0.38); !!perceive(targetReached);
+       !until(.intend(waitCharged), 10000);
+       -+battery(950); -targetReached; !!perceive(charged);
+       !until(.intend(reachMarked), 10000);
+       -+location(-0.5, 0, -0.3);                                    // 0.83 m -> 0.82 m from the mark in a straight line
+       !until(markedTryFrom(0.3, -0.1, -0.5, -0.3), 10000);          // 2 m -> 1 m along the route: a second try
+       !assert_true(markedTryFrom(0.3, -0.1, -0.5, -0.3) & charging);
+       !until(not charging, 10000);                                  // 1 m -> 1 m on it: given up, resumed
+       !assert_false(charging);
+       -markedTryFrom(_, _, _, _); -+tripTimeout(150000).
 
 // an agent whose task goes on from anywhere (tidy-up) resumes at the charger
 @[test]

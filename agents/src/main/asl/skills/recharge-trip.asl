@@ -13,7 +13,9 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
 // stored(N) (delivery); lastFound(T) (sweep's, with deliverOn).
 // Beliefs: charging, atCharger, lowFrom(X, Y, Z) (where the low-battery episode began, until its trip begins), deliveringFirst(T) (the delivery of the cylinder picked at T went on first), markedFrom(D) (the way back's distance left when its try began);
-// resumeAtCharger (the agent's, optional: no way back to the marked point); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
+// markedTryFrom(X, Z, Fx, Fz) (with markedByRoute: where the last try of the way back to the marked point (X, Z) began, when it was
+// given another); resumeAtCharger (the agent's, optional: no way back to the marked point); markedByRoute (the agent's, optional: see
+// @reachMarkedAlongRoute); deliverFirst(Reserve) (the agent's, optional: a delivery under way nearer the storage
 // point than the charger, or the last, ends first while the battery less Reserve J covers the way
 // via the storage point to the charger); taskEnd(T) (optional, the launcher tells tidy-up its run's end:
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
@@ -21,7 +23,8 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
 // power those two sums assume instead of fullPower). Rules it extends:
 // travelling, halted.
-// Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
+// Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), with markedByRoute a
+// middleware with routeLength (NavigationMiddleware's route map), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
 // energy-agent.asl's when it is another agent's.
 // Deviations from the listing: the listing waits 3 s at the charger (".wait(3000)"); with the
@@ -167,9 +170,24 @@ chargedEnough :- chargeUntilLasts(R) & .system_time(T) & taskEnd(End) & T < End 
 +!reachMarked : tripTimeout(T) & markedDistance(D)
     <- -+markedFrom(D); .wait({+targetReached}, T).
 @reachMarkedAgain
--!reachMarked : markedFrom(D0) & markedDistance(D) & markedProgress(P) & D < D0 - P
+-!reachMarked : markedFrom(D0) & markedDistance(D) & markedProgress(P) & D < D0 - P & targetPoint(Tx, Tz) & location(X, _, Z)
     <- println("Marked point not reached in time, still coming nearer (", D, " m): trying again");
-       !computeGap; !!balance; !reachMarked.
+       -markedTryFrom(_, _, _, _); +markedTryFrom(Tx, Tz, X, Z); !computeGap; !!balance; !reachMarked.
+// markedByRoute: a try no markedProgress nearer in a straight line is given another when the way left along
+// the route map (the middleware's routeLength, round the walls met) is markedProgress shorter than from
+// where the try began (the charger, or where the last try ran out): a way back round an inner wall goes
+// away from the marked point first, and was given up just through the wall's corridor (wide world 313)
+markedTryStart(Tx, Tz, X, Z) :- markedTryFrom(Tx, Tz, X, Z).
+markedTryStart(Tx, Tz, X, Z) :- not markedTryFrom(Tx, Tz, _, _) & charger(X, Z).
+@reachMarkedAlongRoute
+-!reachMarked : markedByRoute & targetPoint(Tx, Tz) & location(X, _, Z) & markedTryStart(Tx, Tz, X0, Z0)
+    <- routeLength(X0, Z0, Tx, Tz, L0); routeLength(X, Z, Tx, Tz, L); !markedAlongRoute(L0, L, X, Z).
+@markedNearerAlongRoute
++!markedAlongRoute(L0, L, X, Z) : markedProgress(P) & L < L0 - P & targetPoint(Tx, Tz)
+    <- println("Marked point not reached in time, nearer along the route (", L, " m against ", L0, "): trying again");
+       -markedTryFrom(_, _, _, _); +markedTryFrom(Tx, Tz, X, Z); !computeGap; !!balance; !reachMarked.
+@markedNoNearerAlongRoute
++!markedAlongRoute(L0, L, _, _) <- println("Marked point not reached in time, no nearer along the route (", L, " m against ", L0, "): resuming from here").
 @markedGivenUp
 -!reachMarked[error(E), error_msg(M)]
     <- println("Marked point not reached in time (", E, " ", M, "): resuming from here").

@@ -125,6 +125,16 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         }
     }
 
+    /**
+     * The length, metres, of the way from (x, z) to (tx, tz) round the obstacles met (not in the thesis:
+     * {@link RouteMap#routeLength}); without {@code routeMap}, the straight distance.
+     */
+    @OPERATION
+    void routeLength(double x, double z, double tx, double tz, OpFeedbackParam<Double> length) {
+        double l = routes == null ? Math.hypot(tx - x, tz - z) : routes.routeLength(x, z, tx, tz, simTimeMs());
+        length.set(Math.round(l * 1000) / 1000.0);
+    }
+
     /** Keeps the way the robot drives from now on (not in the thesis): {@code trailTo} goes back along it. */
     @OPERATION
     void keepTrail() {

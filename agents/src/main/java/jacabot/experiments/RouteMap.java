@@ -266,6 +266,25 @@ final class RouteMap {
         return points.get(Math.min(1, points.size() - 1));
     }
 
+    /**
+     * {@return the length, metres, of the way from (x, z) to the target (tx, tz) the map gives at {@code nowMs}}:
+     * along the route {@link #waypoint} plans, or the straight distance when the straight way is free or no
+     * route is known. {@link #lastRoute} stays the last {@code waypoint} call's (the robot's own route).
+     */
+    double routeLength(double x, double z, double tx, double tz, long nowMs) {
+        List<double[]> robots = lastRoute;
+        waypoint(x, z, tx, tz, nowMs);
+        List<double[]> route = lastRoute;
+        lastRoute = robots;
+        double length = 0, px = x, pz = z;
+        for (double[] p : route) {
+            length += Math.hypot(p[0] - px, p[1] - pz);
+            px = p[0];
+            pz = p[1];
+        }
+        return route.isEmpty() ? Math.hypot(tx - x, tz - z) : length;
+    }
+
     private boolean live(int c, long nowMs) {
         return seenAt[c] != NEVER && nowMs - seenAt[c] < memoryMs;
     }

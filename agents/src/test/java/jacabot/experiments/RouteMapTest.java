@@ -46,6 +46,21 @@ class RouteMapTest {
     }
 
     @Test
+    void theRoutesLengthGoesByTheDoorwayAndLeavesTheRobotsRoute() {
+        assertEquals(Math.hypot(1.2, 1.0), map.routeLength(-0.6, -0.5, 0.6, 0.5, 0), 1e-9);
+        wallWithDoorway(0.50, 0.65, 0);
+        map.waypoint(-0.6, -0.5, 0.6, -0.5, 1000);
+        List<double[]> robots = map.lastRoute();
+        // from (-0.6, -0.5) to (0.6, -0.5) by the doorway at z 0.5-0.65: the two straight legs through it, and a grid path's bends
+        double viaDoorway = 2 * Math.hypot(0.6, 1.075);
+        double length = map.routeLength(-0.6, -0.5, 0.6, -0.5, 1000);
+        assertTrue(length > viaDoorway - 0.05 && length < viaDoorway + 0.3, "by the doorway: " + length + " m");
+        // from the doorway on, the straight way
+        assertEquals(Math.hypot(0.54, 1.075), map.routeLength(0.06, 0.575, 0.6, -0.5, 1000), 1e-9);
+        assertTrue(robots == map.lastRoute(), "the robot's own route stays the inspector's");
+    }
+
+    @Test
     void aBoxThatMovedIsForgottenWhereTheRobotStandsOrOnceItsMemoryIsOver() {
         for (double z = -0.05; z <= 0.05; z += 0.01) {
             map.obstacle(0, z, 0);
