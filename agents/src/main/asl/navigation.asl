@@ -20,9 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// after a delivery the search takes the half of the arena the round has looked at less first
-// (skills/look-points.asl)
-lookHalfAfterDelivery.
 
 !start.
 

@@ -94,24 +94,3 @@ mock_operation(_, ok).
        !nextWaypoint;
        !assert_true(waypoint(-1, -0.5, _));
        -searching; -sweep(_); -waypoint(_, _, _).
-
-// after a delivery the half of the arena the round has taken fewer points of comes first (an agent
-// that believes lookHalfAfterDelivery): the round took (1, -0.5), in the half X > 0; the nearest is
-// (0, 0.5), on the middle line, and the nearest in the other half is (-1, 0.5); once per delivery
-@[test]
-+!test_after_a_delivery_the_half_less_looked_at_comes_first
-    <- -sweep(_); -waypoint(_, _, _); -+location(0.9, 0, 0.3); +lookHalfAfterDelivery; -+stored(1);
-       -+sweep([[-1, -0.5], [-1, 0.5], [0, -0.5], [0, 0.5]]);
-       !nextWaypoint;
-       !assert_true(waypoint(-1, 0.5, _));
-       !nextWaypoint;
-       !assert_true(waypoint(0, 0.5, _));
-       -lookHalfAfterDelivery; -stored(_); .abolish(lookHalfDone(_)); -sweep(_); -waypoint(_, _, _).
-
-@[test]
-+!test_without_the_belief_the_nearest_comes_first_after_a_delivery
-    <- -sweep(_); -waypoint(_, _, _); -+location(0.9, 0, 0.3); -+stored(1);
-       -+sweep([[-1, -0.5], [-1, 0.5], [0, -0.5], [0, 0.5]]);
-       !nextWaypoint;
-       !assert_true(waypoint(0, 0.5, _));
-       -stored(_); -sweep(_); -waypoint(_, _, _).

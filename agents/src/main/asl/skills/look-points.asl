@@ -45,30 +45,6 @@ lookPointMost(120000).
                 & Z = -D / 2 + (J + 0.5) * D / Nz & offStorage(X, Z), Ps);
        if (Ps == []) { +lanesOnly; !planSweep } else { -+sweep(Ps); !nextWaypoint }.
 
-// An agent that believes lookHalfAfterDelivery: after a delivery the next look point is the nearest in
-// the half of the arena (split across its longer side) of which the round has taken fewer points, not
-// the nearest: the points left by the storage point in the half the search came from were mostly seen
-// from their neighbours, and the nearest first left the far half for the round's end.
-lookHalf(W, D, 1, X, _) :- W >= D & X < 0.
-lookHalf(W, D, 2, X, _) :- W >= D & X > 0.
-lookHalf(W, D, 1, _, Z) :- W < D & Z < 0.
-lookHalf(W, D, 2, _, Z) :- W < D & Z > 0.
-lookTaken(Ps, H, K) :- lookSpacing(S) & arena(W, D) & Nx = math.ceil(W / S) & Nz = math.ceil(D / S)
-    & .count(.range(I, 0, Nx - 1) & .range(J, 0, Nz - 1) & X = -W / 2 + (I + 0.5) * W / Nx
-             & Z = -D / 2 + (J + 0.5) * D / Nz & offStorage(X, Z) & lookHalf(W, D, H, X, Z), G)
-    & .count(.member([X1, Z1], Ps) & lookHalf(W, D, H, X1, Z1), R) & K = G - R.
-lookHalfFirst(Ps, 1) :- lookTaken(Ps, 1, K1) & lookTaken(Ps, 2, K2) & K1 < K2.
-lookHalfFirst(Ps, 2) :- lookTaken(Ps, 1, K1) & lookTaken(Ps, 2, K2) & K2 < K1.
-lookHalfDue(N) :- lookHalfAfterDelivery & stored(N) & N > 0 & not lookHalfDone(N).
-@nextLookPointHalf
-+!nextWaypoint : lookHalfDue(N) & lookSpacing(_) & not lanesOnly & sweep(Ps) & Ps = [_ | _] & location(Lx, _, Lz)
-                 & arena(W, D) & lookHalfFirst(Ps, H)
-    <- -+lookHalfDone(N);
-       .findall(d(D2, X, Z), .member([X, Z], Ps) & lookHalf(W, D, H, X, Z) & D2 = (X - Lx) * (X - Lx) + (Z - Lz) * (Z - Lz), Ds);
-       .min(Ds, d(_, Wx, Wz)); .delete([Wx, Wz], Ps, Rest); -+sweep(Rest);
-       .system_time(T); -+waypoint(Wx, Wz, T); -+lookPointSet(Wx, Wz, T); -+closest(1000); -+closerAt(T).
-@nextLookPointNoHalf +!nextWaypoint : lookHalfDue(N) & lookSpacing(_) & not lanesOnly & sweep([_ | _]) <- -+lookHalfDone(N); !nextWaypoint.
-
 // the nearest look point left; with none left a new round
 @nextLookPoint
 +!nextWaypoint : lookSpacing(_) & not lanesOnly & sweep(Ps) & Ps = [_ | _] & location(Lx, _, Lz)
