@@ -37,8 +37,6 @@ fallLookKept.
 // cylinders seen and not gone for are remembered and looked for first; the sweep goes on along the
 // lanes not yet driven, from the corner nearest the robot
 { include("skills/search-memory.asl") }
-// (a try) places remembered from far sightings are forgotten at a delivery
-{ include("skills/far-places.asl") }
 { include("skills/recovery.asl") }
 { include("skills/progress-watch.asl") }
 { include("skills/look-skip.asl") }
