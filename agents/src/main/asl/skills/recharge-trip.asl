@@ -19,7 +19,8 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
 // deliverOn(R) (the agent's, optional: see @deliveryKeptOn); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
-// power those two sums assume instead of fullPower). Rules it extends:
+// power those two sums assume instead of fullPower); parkInTime(S, M) (the agent's, optional, with taskEnd: see
+// @parkAtTheEnd). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), and the two
 // hooks: +!suspendTask and +!resumeTask(O): recharge.asl's when the task is this agent's own,
@@ -71,6 +72,17 @@ forgetOnFall(atCharger).
 episodeStart(X, Y, Z) :- lowFrom(X, Y, Z).
 episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
 
+// parkInTime(S, M): a task that ends parked on the charger (tidy-up) parks once the time left falls under
+// S s a metre of the straight way to the charger and M s more, whatever it counts as done; not with a
+// cylinder held (its delivery first), nor on a trip already. Its count of stored cylinders is its own
+// deliveries, and a cylinder pushed into the storage area is not among them (no sensor sees the pile):
+// the world counts it, the robot searched for it to the run's end, away from the charger (world 202 × 8)
+parkDue(T) :- parkInTime(S, M) & taskEnd(End) & location(X, _, Z) & charger(Cx, Cz)
+    & End - T < 1000 * (S * math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)) + M).
+@parkAtTheEnd
++battery(_) : parkInTime(_, _) & not charging & not ~delivered & not picked(true) & .system_time(T) & parkDue(T)
+    <- .print("Time is nearly up: parking on the charger"); +charging; !goToCharger; stopAcquireDistance;
+       .print("Parked on the charger").
 @stuckAtCharger +stuck : atCharger.
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
