@@ -14,7 +14,8 @@ mock_operation(_, ok).
 
 // an agent that parks in time (tidy-up: parkInTime) parks on the charger once the time left falls under
 // S s a metre of the straight way to it and M s, whatever it counts as stored (a cylinder pushed into
-// the storage area is not among its deliveries): 0.83 m from the charger, 32 s a metre and 15 s, 42 s
+// the storage area is not among its deliveries), while it searches: 0.83 m from the charger, 32 s a metre
+// and 15 s, 42 s
 @[test]
 +!test_an_agent_that_parks_in_time_parks_once_the_time_left_is_the_way_to_the_charger
     <- +orientation(90); !forget_calls; +parkInTime(32, 15);
@@ -24,7 +25,13 @@ mock_operation(_, ok).
        +~delivered; -taskEnd(_); .system_time(T2); +taskEnd(T2 + 30000);
        -battery(_); !!perceive(battery(699)); .wait(300);
        !assert_false(charging);                                      // a cylinder held: its delivery first
-       -~delivered; -battery(_); !!perceive(battery(698));
+       -~delivered; -battery(_); !!perceive(battery(698)); .wait(300);
+       !assert_false(charging);                                      // a cylinder found: not searching
+       +searching; +picking; -battery(_); !!perceive(battery(697)); .wait(300);
+       !assert_false(charging);                                      // a cylinder caught: its pick first
+       -picking; -battery(_); !!perceive(battery(696)); .wait(300);
+       !assert_false(charging);                                      // a pick just ended
+       -+parkAfterPick(0); -battery(_); !!perceive(battery(695));
        !until(charging, 2000);
        !assert_true(charging);                                       // 30 s left: parking
        ?charger(Cx, Cz);
