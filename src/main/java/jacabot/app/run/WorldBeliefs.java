@@ -38,14 +38,31 @@ public final class WorldBeliefs {
 
     /**
      * {@return the landmark beliefs of a world for an experiment: tidy-up's task also names how many
-     * cylinders there are to store, {@code cylinders(N)}}
+     * cylinders there are to store, {@code cylinders(N)}, and how many of them lie in the storage area
+     * already, {@code stored(K)}, when some do}
      */
     public static List<Literal> of(WorldSpec spec, Experiment experiment) {
         var out = new ArrayList<Literal>(of(spec));
         if (experiment == Experiment.TIDY_UP) {
             out.add(Literal.of("cylinders", NumberTerm.of(spec.cylinders().size())));
+            long stored = storedAtStart(spec);
+            if (stored > 0) {
+                out.add(Literal.of("stored", NumberTerm.of(stored)));
+            }
         }
         return out;
+    }
+
+    /**
+     * {@return how many of the world's cylinders start in the storage area} (centre within its radius,
+     * the success criterion's test, {@link jacabot.sim.world.AreaSpec#contains(double, double)}): they
+     * count as stored from the start, so tidy-up's agent is told {@code stored(K)} in place of its
+     * delivery skill's {@code stored(0)}; none when there are none (the generator keeps the area free
+     * of cylinders; a hand-made world or a scripted move may not)
+     */
+    static long storedAtStart(WorldSpec spec) {
+        return spec.storage() == null ? 0
+                : spec.cylinders().stream().filter(c -> spec.storage().contains(c.x(), c.z())).count();
     }
 
     /**

@@ -29,6 +29,6 @@ public record EndState(int cylinders, int stored, boolean parked) {
     }
 
     private static boolean within(AreaSpec area, double x, double z) {
-        return area != null && Math.hypot(x - area.x(), z - area.z()) <= area.radius();
+        return area != null && area.contains(x, z);
     }
 }

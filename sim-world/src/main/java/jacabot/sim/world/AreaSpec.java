@@ -16,4 +16,13 @@ public record AreaSpec(double x, double z, double radius, double power) {
     public boolean contains(Vec2 p) {
         return p.distanceTo(centre()) <= radius;
     }
+
+    /**
+     * {@return whether the point (x, z) lies in the zone, its distance from the centre at most the radius}:
+     * tidy-up's success criterion counts a cylinder as stored by it, and the robot is told of the
+     * cylinders its world starts with in the storage area by the same test
+     */
+    public boolean contains(double x, double z) {
+        return Math.hypot(x - this.x, z - this.z) <= radius;
+    }
 }
