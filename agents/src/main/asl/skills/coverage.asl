@@ -115,9 +115,8 @@ turnBack(600).
 turnedBack(Side) :- lastTurn(Side, T) & turnBack(B) & .system_time(Now) & Now - T < B.
 boxShortTurn(D) :- not narrowArena & D < 0 & turnedBack(right) & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
 boxShortTurn(D) :- not narrowArena & D > 0 & turnedBack(left) & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-shortRead(150).
-readAgain(D) :- D < 0 & leftSensor(L) & shortRead(Level) & L >= Level.
-readAgain(D) :- D > 0 & rightSensor(R) & shortRead(Level) & R >= Level.
+readAgain(D) :- D < 0 & leftSensor(L) & flankWatch(Level, _) & L >= Level.
+readAgain(D) :- D > 0 & rightSensor(R) & flankWatch(Level, _) & R >= Level.
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
@@ -157,8 +156,8 @@ pausedUntil("-veering") :- veering.
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
-    <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) };
-       .system_time(T); !shortTurn(D, T + math.pi * A / (2 * S * U) * 1000); !clear; -avoiding.
+    <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
+       !clear; -avoiding.
 @coverShort +!avoid(D) : boxShortTurn(D) & turnSpeed(S) & wheelGeometry(U, A)
     <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) };
        .system_time(T); !shortTurn(D, T + math.pi * A / (2 * S * U) * 1000); !clear; -avoiding.
