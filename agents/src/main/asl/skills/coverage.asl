@@ -105,18 +105,6 @@ obstacleTimes([]).
 // nothing now: the box is beside the robot, out of that sensor's cone
 boxTurnedTo(D) :- narrowArena & D < 0 & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
 boxTurnedTo(D) :- narrowArena & D > 0 & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-// the short turn, not in the thesis, in an arena 1 m or more across, where the half turn reshuffled
-// paths: the box just passed (boxTurnedTo's sign) on the side an avoidance would turn to, right
-// after a turn back (the avoidance before turned the other way under turnBack ms earlier): the robot
-// turns on the spot away from that box until the front sensor on the box's side reads flankWatch's
-// Level (the obstacle swept across the front) or for the half turn's time at most, then until clear,
-// with no veer
-turnBack(600).
-turnedBack(Side) :- lastTurn(Side, T) & turnBack(B) & .system_time(Now) & Now - T < B.
-boxShortTurn(D) :- not narrowArena & D < 0 & turnedBack(right) & leftSensor(L) & L < 1 & strongLeft(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-boxShortTurn(D) :- not narrowArena & D > 0 & turnedBack(left) & rightSensor(R) & R < 1 & strongRight(T) & flankWatch(_, W) & .system_time(Now) & Now - T < W.
-readAgain(D) :- D < 0 & leftSensor(L) & flankWatch(Level, _) & L >= Level.
-readAgain(D) :- D > 0 & rightSensor(R) & flankWatch(Level, _) & R >= Level.
 setUpGoal(setUpCoverage).
 // trapped: trapCount obstacles within trapWindow
 trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
@@ -158,15 +146,8 @@ pausedUntil("-veering") :- veering.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
     <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) }; .wait(math.pi * A / (2 * S * U) * 1000);
        !clear; -avoiding.
-@coverShort +!avoid(D) : boxShortTurn(D) & turnSpeed(S) & wheelGeometry(U, A)
-    <- if (D < 0) { setSpeeds(S, -S) } else { setSpeeds(-S, S) };
-       .system_time(T); !shortTurn(D, T + math.pi * A / (2 * S * U) * 1000); !clear; -avoiding.
-@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); .system_time(T); -+lastTurn(left, T); !clear; +veering; -avoiding; !veer(D).
-@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); .system_time(T); -+lastTurn(right, T); !clear; +veering; -avoiding; !veer(D).
-
-// the short turn's wait, a control step (40 ms) at a time
-@shortTurnOn +!shortTurn(D, Until) : .system_time(T) & T < Until & not readAgain(D) <- .wait(40); !shortTurn(D, Until).
-@shortTurnDone +!shortTurn(_, _).
+@coverLeft +!avoid(D) : D < 0 & turnSpeed(S) <- setSpeeds(-S, S); !clear; +veering; -avoiding; !veer(D).
+@coverRight +!avoid(D) : turnSpeed(S) <- setSpeeds(S, -S); !clear; +veering; -avoiding; !veer(D).
 
 // the arc away from the obstacle just avoided; a new obstacle interrupts it
 @veerLeft +!veer(D) : obstacle(false) & D < 0 & veerSpeed(V) & veerTime(T) <- setSpeeds(V / 3, V); .wait(T); -veering.
@@ -186,8 +167,8 @@ pausedUntil("-veering") :- veering.
 @steerOut +!steer : obstacle(true) & delta(V) <- stop; !noteObstacle; !avoid(V).
 @steerDone +!steer <- .system_time(T); -+steeredAt(T); -avoiding.
 
-@watchLeft +leftSensor(L) : flankWatch(Level, _) & L >= Level <- .system_time(T); -+strongLeft(T).
-@watchRight +rightSensor(R) : flankWatch(Level, _) & R >= Level <- .system_time(T); -+strongRight(T).
+@watchLeft +leftSensor(L) : narrowArena & flankWatch(Level, _) & L >= Level <- .system_time(T); -+strongLeft(T).
+@watchRight +rightSensor(R) : narrowArena & flankWatch(Level, _) & R >= Level <- .system_time(T); -+strongRight(T).
 
 @noteObstacle
 +!noteObstacle : obstacleTimes(L) & trapWindow(W)
