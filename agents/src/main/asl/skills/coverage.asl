@@ -100,11 +100,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// the trap where both walls are read (@coverTrappedSteer): steered through for at most trapSteer ms
-// while both sensors read corridorSteer's Level and neither its cut-off
-inCorridor :- trapSteering(Until) & .system_time(Now) & Now < Until & bothWalls.
-bothWalls :- corridorSteer(C, _, _) & steerCut(M) & leftSensor(L) & rightSensor(R) & L >= C & R >= C & L < M & R < M.
-trapSteer(1000).
 obstacleTimes([]).
 // the side an avoidance of difference D turns to read a box a moment ago (flankWatch) and reads
 // nothing now: the box is beside the robot, out of that sensor's cone
@@ -146,12 +141,6 @@ pausedUntil("-veering") :- veering.
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
 
-// trapped with both walls read: steer on between them (the corridor steering) instead of the spin;
-// the next trap within trapWindow, or an obstacle still there when the steering ends, spins
-@coverTrappedSteer
-+!avoid(D) : trapped & D \== 0 & bothWalls & trapWindow(W) & trapSteer(TS) & turnSpeed(S) & .system_time(Now)
-           & not (trapSteeredAt(G) & Now - G < W)
-    <- setSpeeds(-S, -S); .wait(150); .system_time(Now2); -+trapSteeredAt(Now2); -+trapSteering(Now2 + TS); !steer.
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)
