@@ -1,12 +1,12 @@
-// Tidy-up, not in the thesis: every cylinder to the storage area, recharging when needed, then park on the charger. From
-// skills alone and its own plans that decide when the task is done and when to search. No way round (way-round.asl).
-// From the world file: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D); from the run: taskEnd(Ms).
+// Tidy-up (not in the thesis): every cylinder to the storage area, recharging when needed, then park on the charger; skills and its own plans for when
+// the task is done and when to search (no way round). Told: cylinders(N), storagePoint(X, Z), storageRadius(R), charger(X, Z), arena(W, D); taskEnd(Ms).
 middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // a search goes on from anywhere (no way back after a recharge), a look around first, the sweep after 5 s; a delivery under way ends first while the battery
 // less 150 J covers the way on to the charger, and goes on while less 50 J (a drain came); a homing still nearing goes on past far sight's limit (a nearer
 // sighting in the last 15 s); every red run seen; turns at half speed but for the last 15 degrees; no trip while the battery covers the time left, a charge
-// ends once it covers it and 100 J (2 W); near approach at 85; a waypoint given up at the storage area's edge only when it lies past the storage point
-resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85). waypointPastStorage.
+// ends once it covers it and 100 J (2 W); near approach at 85; a waypoint given up at the storage area's edge only when it lies past the storage point;
+// parked, whatever is counted, once the time left is under 32 s a metre to the charger and 15 s
+resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85). waypointPastStorage. parkInTime(32, 15).
 !start.
 // trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
 // re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)

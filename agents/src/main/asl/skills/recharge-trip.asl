@@ -10,8 +10,10 @@ tripTimeout(150000).    // ms for the trip to the charger or back (recovery, not
 wayEnergy(50).          // J a metre at full speed (the Khepera: 2.5 W at 5 cm/s): deliverFirst, team-charger
 fullPower(2.5).         // W: both wheels at full speed (the Khepera): taskEnd
 markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the way back to go on
+parkAfterPick(10000).   // ms: with parkInTime, no park as soon after a pick ended (a cylinder at hand)
 // Reads: charger(X, Z), storagePoint(X, Z), cylinders(N) when known (the world file); ~delivered,
-// stored(N) (delivery); lastFound(T) (sweep's, with deliverOn).
+// stored(N) (delivery); lastFound(T), searching (sweep's, with deliverOn, parkInTime); picking, picked (picking's), homing (far
+// sight's), sweep(L) (sweep's lanes, turned one waypoint on at each waypoint taken), with parkInTime.
 // Beliefs: charging, atCharger, lowFrom(X, Y, Z) (where the low-battery episode began, until its trip begins), deliveringFirst(T) (the delivery of the cylinder picked at T went on first), markedFrom(D) (the way back's distance left when its try began);
 // markedTryFrom(X, Z, Fx, Fz) (with markedByRoute: where the last try of the way back to the marked point (X, Z) began, when it was
 // given another); resumeAtCharger (the agent's, optional: no way back to the marked point); markedByRoute (the agent's, optional: see
@@ -21,7 +23,8 @@ markedProgress(0.3).    // m nearer the marked point in one tripTimeout for the 
 // the task's end, ms on the agent's clock: no trip while the battery covers the time left at full power);
 // deliverOn(R) (the agent's, optional: see @deliveryKeptOn); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
-// power those two sums assume instead of fullPower). Rules it extends:
+// power those two sums assume instead of fullPower); parkInTime(S, M) (the agent's, optional, with taskEnd: see
+// @parkAtTheEnd; pickEnded(T), lanesTaken(K) and sweptRound, its beliefs). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), with markedByRoute a
 // middleware with routeLength (NavigationMiddleware's route map), and the two
@@ -74,6 +77,33 @@ forgetOnFall(atCharger).
 episodeStart(X, Y, Z) :- lowFrom(X, Y, Z).
 episodeStart(X, Y, Z) :- not lowFrom(_, _, _) & location(X, Y, Z).
 
+// parkInTime(S, M): a task that ends parked on the charger (tidy-up) parks once the time left falls under
+// S s a metre of the straight way to the charger and M s more, whatever it counts as done, while it
+// searches (sweep's searching) with no cylinder caught, held or delivered (picking's picking, picked(true),
+// delivery's ~delivered), not on a trip already. Its count of stored cylinders is its own deliveries, and
+// a cylinder pushed into the storage area is not among them (no sensor sees the pile): the world counts
+// it, the robot searched for it to the run's end, away from the charger (world 202 × 8). Not while a
+// cylinder is at hand, nor while far sight homes on a sighting, nor parkAfterPick ms after a pick ended
+// (pickEnded(T)): a park begun as a pick failed, the cylinder in front of the gripper, lost a run that
+// caught it 1 s later, stored it and parked 0.5 s before the end (world 242 × 1)
+parkDue(T) :- parkInTime(S, M) & taskEnd(End) & location(X, _, Z) & charger(Cx, Cz)
+    & End - T < 1000 * (S * math.sqrt((X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz)) + M).
+pickedLately(T) :- pickEnded(S) & parkAfterPick(W) & T - S < W.
+@pickEndedNoted -picking : parkInTime(_, _) <- .system_time(T); -+pickEnded(T).
+// Only on a sign that the count is wrong (sweptRound): the sweep has taken every waypoint of its lanes
+// and come back to the first one since the search began or the last pick ended it (lanesTaken(K)
+// counts the sweep's lists: the one planned, then one more at each waypoint taken). Without it a park
+// left a search that still had time to end (32 s a metre is pessimistic): a lost run and a delivery
+// less in five runs on the target's set.
+@lanesCounted +sweep(L) : parkInTime(_, _) & searching
+    <- if (lanesTaken(K)) { K1 = K + 1 } else { K1 = 1 }; -+lanesTaken(K1);
+       if (K1 > .length(L) + 1) { +sweptRound }.
+@lanesForgotten -searching : parkInTime(_, _) <- -lanesTaken(_); -sweptRound.
+@parkAtTheEnd
++battery(_) : parkInTime(_, _) & searching & sweptRound & not charging & not picking & not ~delivered & not picked(true) & not homing(_)
+    & .system_time(T) & not pickedLately(T) & parkDue(T)
+    <- .print("Time is nearly up: parking on the charger"); +charging; !goToCharger; stopAcquireDistance;
+       .print("Parked on the charger").
 @stuckAtCharger +stuck : atCharger.
 // on the charger nothing turns or cruises: the steering's re-alignment, begun in the control step
 // the charger was reached, came after the trip's .drop_intention(balance) and drove the robot off
