@@ -14,8 +14,8 @@ mock_operation(_, ok).
 
 // an agent that parks in time (tidy-up: parkInTime) parks on the charger once the time left falls under
 // S s a metre of the straight way to it and M s, whatever it counts as stored (a cylinder pushed into
-// the storage area is not among its deliveries), while it searches, once the sweep has gone round its
-// lanes (a sign the count is wrong): 0.83 m from the charger, 32 s a metre and 15 s, 42 s
+// the storage area is not among its deliveries), while it searches, once the sweep has taken every waypoint
+// of its lanes (a sign the count is wrong): 0.83 m from the charger, 32 s a metre and 15 s, 42 s
 @[test]
 +!test_an_agent_that_parks_in_time_parks_once_the_time_left_is_the_way_to_the_charger
     <- +orientation(90); !forget_calls; +parkInTime(32, 15);
@@ -33,9 +33,9 @@ mock_operation(_, ok).
        !assert_false(charging);                                      // a pick just ended
        -+parkAfterPick(0); -battery(_); !!perceive(battery(695)); .wait(300);
        !assert_false(charging);                                      // no sign the count is wrong: searching on
-       -+sweep([[0.5, 0.5], [-0.5, 0.5]]); -+sweep([[-0.5, 0.5], [0.5, 0.5]]); -+sweep([[0.5, 0.5], [-0.5, 0.5]]);
-       .wait(300); !assert_false(charging);                          // the lanes not yet gone round
-       -+sweep([[-0.5, 0.5], [0.5, 0.5]]); -battery(_); !!perceive(battery(694));
+       -+sweep([[0.5, 0.5], [-0.5, 0.5]]); -battery(_); !!perceive(battery(694)); .wait(300);
+       !assert_false(charging);                                      // one waypoint of two taken
+       -+sweep([[-0.5, 0.5], [0.5, 0.5]]); -battery(_); !!perceive(battery(693));
        !until(charging, 2000);
        !assert_true(charging);                                       // 30 s left: parking
        ?charger(Cx, Cz);
