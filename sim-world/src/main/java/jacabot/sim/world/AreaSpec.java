@@ -14,7 +14,7 @@ public record AreaSpec(double x, double z, double radius, double power) {
 
     /** {@return whether a point lies in the zone} */
     public boolean contains(Vec2 p) {
-        return p.distanceTo(centre()) <= radius;
+        return contains(p.x(), p.z());
     }
 
     /**
