@@ -223,10 +223,30 @@ final class RouteMap {
      * route seen in a straight line.
      */
     double[] waypoint(double x, double z, double tx, double tz, long nowMs) {
-        int start = cell(x, z), goal = cell(tx, tz);
-        lastRoute = List.of();
-        if (start < 0 || goal < 0 || start == goal) {
+        List<double[]> points = route(x, z, tx, tz, nowMs);
+        lastRoute = points;
+        if (points.isEmpty()) {
             return new double[] {tx, tz};
+        }
+        int ahead = Math.min(points.size() - 1, (int) Math.round(LOOKAHEAD / CELL));
+        for (int i = ahead; i > 0; i--) {
+            double[] p = points.get(i);
+            if (clear(x, z, p[0], p[1], lastNear, nowMs)) {
+                return p;
+            }
+        }
+        return points.get(Math.min(1, points.size() - 1));
+    }
+
+    /**
+     * {@return the route from the robot at (x, z) to the target (tx, tz), cell centres {x, z} and the target
+     * last; empty when the straight way is free or no route is known}; the map's costs and the plan are kept
+     * for the next call while the map and the cells stay the same
+     */
+    private List<double[]> route(double x, double z, double tx, double tz, long nowMs) {
+        int start = cell(x, z), goal = cell(tx, tz);
+        if (start < 0 || goal < 0 || start == goal) {
+            return List.of();
         }
         BitSet live = live(nowMs);
         boolean sameMap = live.equals(lastLive) && (guessCells == 0 || driven.cardinality() == lastDriven && openCount == lastOpen);
@@ -237,45 +257,33 @@ final class RouteMap {
             lastNear = nearCosts(live);
             lastPlan = null;
         }
-        double[] near = lastNear;
-        if (clear(x, z, tx, tz, near, nowMs)) {
-            return new double[] {tx, tz};
+        if (clear(x, z, tx, tz, lastNear, nowMs)) {
+            return List.of();
         }
         if (lastPlan == null || start != lastStart || goal != lastGoal) {
-            lastPlan = plan(start, goal, near, nowMs);
+            lastPlan = plan(start, goal, lastNear, nowMs);
             lastStart = start;
             lastGoal = goal;
         }
-        List<Integer> route = lastPlan;
-        if (route.isEmpty()) {
-            return new double[] {tx, tz};
+        if (lastPlan.isEmpty()) {
+            return List.of();
         }
         List<double[]> points = new ArrayList<>();
-        for (int c : route) {
+        for (int c : lastPlan) {
             points.add(centre(c));
         }
         points.set(points.size() - 1, new double[] {tx, tz});
-        lastRoute = Collections.unmodifiableList(points);
-        int ahead = Math.min(points.size() - 1, (int) Math.round(LOOKAHEAD / CELL));
-        for (int i = ahead; i > 0; i--) {
-            double[] p = points.get(i);
-            if (clear(x, z, p[0], p[1], near, nowMs)) {
-                return p;
-            }
-        }
-        return points.get(Math.min(1, points.size() - 1));
+        return Collections.unmodifiableList(points);
     }
 
     /**
      * {@return the length, metres, of the way from (x, z) to the target (tx, tz) the map gives at {@code nowMs}}:
-     * along the route {@link #waypoint} plans, or the straight distance when the straight way is free or no
-     * route is known. {@link #lastRoute} stays the last {@code waypoint} call's (the robot's own route).
+     * along the route {@link #route} plans (the one {@link #waypoint} heads along), or the straight distance
+     * when the straight way is free or no route is known. {@link #lastRoute} stays the last {@code waypoint}
+     * call's (the robot's own route).
      */
     double routeLength(double x, double z, double tx, double tz, long nowMs) {
-        List<double[]> robots = lastRoute;
-        waypoint(x, z, tx, tz, nowMs);
-        List<double[]> route = lastRoute;
-        lastRoute = robots;
+        List<double[]> route = route(x, z, tx, tz, nowMs);
         double length = 0, px = x, pz = z;
         for (double[] p : route) {
             length += Math.hypot(p[0] - px, p[1] - pz);
