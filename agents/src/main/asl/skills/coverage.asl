@@ -100,19 +100,6 @@ warningLevel(W) :- obstacleThresholds(W, _, _).
 warningLevel(W) :- not obstacleThresholds(_, _, _) & thesisWarning(W).
 thesisWarning(350).
 inCorridor :- walledIn(true) & steerCut(M) & leftSensor(L) & rightSensor(R) & L < M & R < M.
-// the trap where both walls are read (@coverTrappedSteer), not in the thesis: at a passage's mouth
-// the trap escape's spin turned the robot back into the room it was in, and a room held it (two-room
-// worlds joined by a 12-17 cm passage). There it steers on between the two walls for at most
-// trapSteer ms, while both sensors read corridorSteer's Level and neither its cut-off, but only where
-// both are longer than a box: passageSign(Level, Reach, Length), the points read at Level or more in
-// the last trapWindow ms (the middleware's wallTrace) within Reach m, the wall on each side at least
-// Length m long (sideWalls: a box is at most 10 x 12 cm, its diagonal under 16 cm). Two boxes side by
-// side read as a passage's walls, and steering on between them rubbed the flank the spin frees
-// (docs/comparison-obstacle-avoidance.md, "the trap where both walls are read")
-inCorridor :- trapSteering(Until) & .system_time(Now) & Now < Until & bothWalls.
-bothWalls :- corridorSteer(C, _, _) & steerCut(M) & leftSensor(L) & rightSensor(R) & L >= C & R >= C & L < M & R < M.
-trapSteer(3000).
-passageSign(100, 0.3, 0.2).
 obstacleTimes([]).
 // the side an avoidance of difference D turns to read a box a moment ago (flankWatch) and reads
 // nothing now: the box is beside the robot, out of that sensor's cone
@@ -125,7 +112,7 @@ trapped :- obstacleTimes(L) & trapCount(K) & .length(L, N) & N >= K.
 pausedUntil("-avoiding") :- avoiding.
 pausedUntil("-veering") :- veering.
 // Reads: arena(W, D) (the world); maxSpeed(M); leftSensor, rightSensor, walledIn (the middleware's); seekShare(S) (the agent's, if any); its own
-// seeking(Until) and soughtAt(T), strongLeft(T) and strongRight(T) (flankWatch), trapSteeredAt(T) and trapSteering(Until). Needs: !clear
+// seeking(Until) and soughtAt(T), strongLeft(T) and strongRight(T) (flankWatch). Needs: !clear
 // (recovery). Include it before recovery (its escape, a turn on the spot, is the one this robot uses).
 
 @setUpCoverage
@@ -134,8 +121,7 @@ pausedUntil("-veering") :- veering.
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };
-       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) };
-       if (passageSign(Level, _, _) & trapWindow(TW)) { wallTrace(Level, TW) }.
+       if (corridorSpan(Span) & corridorSteer(C, _, _)) { corridorSpan(C, Span) }.
 
 /* Obstacle avoidance (Chapter 4 §1.2) */
 
@@ -155,17 +141,6 @@ pausedUntil("-veering") :- veering.
 +obstacle(true) : delta(V) & not avoiding
     <- +avoiding; -veering; .succeed_goal(move(_)); stop; !noteObstacle; !avoid(V).
 
-// trapped with both walls read, each longer than a box (passageSign): a step back, then steer on
-// between them (the corridor steering) instead of the spin; the next trap within trapWindow, or an
-// obstacle still there when the steering ends, spins
-@coverTrappedSteer
-+!avoid(D) : trapped & D \== 0 & bothWalls & trapWindow(W) & trapSteer(TS) & turnSpeed(S) & passageSign(_, Reach, Length)
-           & .system_time(Now) & not (trapSteeredAt(G) & Now - G < W)
-    <- sideWalls(Reach, SL, SR, LeftOff, RightOff);
-       if (SL >= Length & SR >= Length) {
-           println("Trapped between two walls (", SL, ", ", SR, "): steering on");
-           setSpeeds(-S, -S); .wait(150); .system_time(Then); -+trapSteeredAt(Then); -+trapSteering(Then + TS); !steer
-       } else { println("Trapped between ", SL, " and ", SR, " (off a line ", LeftOff, ", ", RightOff, "): no passage"); !escape; -avoiding }.
 @coverTrapped +!avoid(_) : trapped <- !escape; -avoiding.
 @coverFront +!avoid(0) <- backward; turnAround; !clear; -avoiding.
 @coverBack +!avoid(D) : boxTurnedTo(D) & turnSpeed(S) & wheelGeometry(U, A)

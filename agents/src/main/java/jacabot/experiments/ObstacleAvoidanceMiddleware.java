@@ -4,11 +4,6 @@ import jacabot.cartago.OPERATION;
 import jacabot.cartago.OpFeedbackParam;
 import jacabot.robot.link.SensorInfo;
 import jacabot.robot.link.SensorKind;
-import java.util.ArrayDeque;
-import java.util.ArrayList;
-import java.util.HashSet;
-import java.util.List;
-import java.util.Set;
 
 /**
  * Experiment 1's middleware (thesis Chapter 4 §1.2): {@code leftSensor}, {@code rightSensor},
@@ -281,148 +276,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         }
     }
 
-    /** The weakest front reading kept as a point for {@code sideWalls}, and for how long (NaN: off). */
-    private double traceLevel = Double.NaN;
-    private long traceMs;
-    /** The points read lately, {time ms, x, z} on the dead-reckoning map, oldest first. */
-    private final ArrayDeque<double[]> trace = new ArrayDeque<>();
-    /** Points of one wall or box lie closer than this to each other; separate obstacles are 12 cm apart or more. */
-    static final double TRACE_LINK = 0.05;
-
-    /**
-     * From now on, keeps for {@code windowMs} every point where a front reading of {@code level} or
-     * more puts a wall or box on the dead-reckoning map (not in the thesis), for {@code sideWalls}.
-     * Fails before {@code odometry}, for a level under 1 or a window under 1 ms.
-     */
-    @OPERATION
-    void wallTrace(double level, double windowMs) {
-        if (map == null || !(level >= 1) || !(windowMs >= 1)) {
-            failed("wallTrace needs odometry(SpeedUnit, AxleLength) first, a level of at least 1 and a window of 1 ms or more, got "
-                    + level + ", " + windowMs);
-            return;
-        }
-        traceLevel = level;
-        traceMs = Math.round(windowMs);
-    }
-
-    /**
-     * How long, in metres, are the wall or box on each side of the robot's heading line (not in the
-     * thesis): of the points kept by {@code wallTrace} within {@code reach} m of the robot, the one
-     * nearest the robot on its left and the one on its right each start an obstacle, the points
-     * linked to it by gaps under {@value #TRACE_LINK} m; {@code left} and {@code right} are their
-     * lengths (the greatest distance between two of their points), 0 for a side with no point, and
-     * {@code right} 0 when the two are one obstacle; {@code leftOff} and {@code rightOff} how far their
-     * points lie off a straight line ({@code offLine}). A box is at most its diagonal long; a wall's face
-     * or a corridor's side, read along as the robot turned, longer. Fails before {@code wallTrace}.
-     */
-    @OPERATION
-    void sideWalls(double reach, OpFeedbackParam<Double> left, OpFeedbackParam<Double> right,
-                   OpFeedbackParam<Double> leftOff, OpFeedbackParam<Double> rightOff) {
-        if (Double.isNaN(traceLevel)) {
-            failed("sideWalls needs wallTrace(Level, WindowMs) first");
-            return;
-        }
-        pruneTrace();
-        double h = Math.toRadians(map.headingDegrees());
-        double cx = map.x(), cz = map.z();
-        List<double[]> near = new ArrayList<>();
-        for (double[] p : trace) {
-            if (Math.hypot(p[1] - cx, p[2] - cz) <= reach) {
-                near.add(p);
-            }
-        }
-        int seedL = -1, seedR = -1;
-        double bestL = Double.POSITIVE_INFINITY, bestR = Double.POSITIVE_INFINITY;
-        for (int i = 0; i < near.size(); i++) {
-            double dx = near.get(i)[1] - cx, dz = near.get(i)[2] - cz;
-            double lateral = -Math.sin(h) * dx + Math.cos(h) * dz; // left of the heading: positive
-            double d = Math.hypot(dx, dz);
-            if (lateral > 0 && d < bestL) {
-                bestL = d;
-                seedL = i;
-            } else if (lateral <= 0 && d < bestR) {
-                bestR = d;
-                seedR = i;
-            }
-        }
-        Set<Integer> l = linked(near, seedL), r = linked(near, seedR);
-        left.set(length(near, l));
-        right.set(seedR >= 0 && l.contains(seedR) ? 0.0 : length(near, r));
-        leftOff.set(offLine(near, l));
-        rightOff.set(offLine(near, r));
-    }
-
-    private static Set<Integer> linked(List<double[]> points, int seed) {
-        Set<Integer> in = new HashSet<>();
-        if (seed < 0) {
-            return in;
-        }
-        ArrayDeque<Integer> queue = new ArrayDeque<>();
-        in.add(seed);
-        queue.add(seed);
-        while (!queue.isEmpty()) {
-            double[] p = points.get(queue.poll());
-            for (int j = 0; j < points.size(); j++) {
-                if (!in.contains(j) && Math.hypot(points.get(j)[1] - p[1], points.get(j)[2] - p[2]) < TRACE_LINK) {
-                    in.add(j);
-                    queue.add(j);
-                }
-            }
-        }
-        return in;
-    }
-
-    /**
-     * How far, in metres, the points of one obstacle lie off the straight line that fits them best
-     * (the root mean square, 0 for fewer than three points): a wall read along its face is straight,
-     * a box read as the robot turned beside it an arc round the robot.
-     */
-    private static double offLine(List<double[]> points, Set<Integer> members) {
-        int n = members.size();
-        if (n < 3) {
-            return 0;
-        }
-        double mx = 0, mz = 0;
-        for (int i : members) {
-            mx += points.get(i)[1] / n;
-            mz += points.get(i)[2] / n;
-        }
-        double sxx = 0, szz = 0, sxz = 0;
-        for (int i : members) {
-            double dx = points.get(i)[1] - mx, dz = points.get(i)[2] - mz;
-            sxx += dx * dx / n;
-            szz += dz * dz / n;
-            sxz += dx * dz / n;
-        }
-        double half = (sxx + szz) / 2, root = Math.sqrt(Math.max(0, (sxx - szz) * (sxx - szz) / 4 + sxz * sxz));
-        return Math.sqrt(Math.max(0, half - root));
-    }
-
-    private static double length(List<double[]> points, Set<Integer> members) {
-        double longest = 0;
-        for (int i : members) {
-            for (int j : members) {
-                longest = Math.max(longest, Math.hypot(points.get(i)[1] - points.get(j)[1], points.get(i)[2] - points.get(j)[2]));
-            }
-        }
-        return longest;
-    }
-
-    private void pruneTrace() {
-        long now = simTimeMs();
-        while (!trace.isEmpty() && trace.peekFirst()[0] < now - traceMs) {
-            trace.pollFirst();
-        }
-    }
-
-    private void traceReading(double reading, double bearing) {
-        if (map != null && reading >= traceLevel) {
-            double a = Math.toRadians(map.headingDegrees() + bearing), d = RIM + rangeOf(Math.min(reading, 1000));
-            trace.addLast(new double[] {simTimeMs(), map.x() + d * Math.cos(a), map.z() + d * Math.sin(a)});
-            pruneTrace();
-        }
-    }
-
     @Override
     protected void onReading(SensorInfo info, SensorKind kind) {
         if (kind == SensorKind.WHEEL_SPEEDS && map != null) {
@@ -437,12 +290,10 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
         if (kind == leftKind()) {
             getObsProperty("leftSensor").updateValue(info.getVal());
             markReading(info.getVal(), SENSOR_ANGLE);
-            traceReading(info.getVal(), SENSOR_ANGLE);
         } else if (kind == rightKind()) {
             // the right reading closes a left/right pair: decide as the thesis does
             double right = info.getVal();
             markReading(right, -SENSOR_ANGLE);
-            traceReading(right, -SENSOR_ANGLE);
             double left = getObsProperty("leftSensor").doubleValue();
             getObsProperty("rightSensor").updateValue(right);
             trackCorridor(left, right);
