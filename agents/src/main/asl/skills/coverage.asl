@@ -25,9 +25,6 @@ staleLimit(2000).             // how long a straight leg may go over floor alrea
 // the floor beyond a wall looked new, so the robot followed the walls (generated worlds: 126 -> 134
 // of 150, held out 126 -> 133)
 exploreHorizon(0.6).
-// tried (forty-third session, dropped): from looseArea on, where walls seen are marked, a heading with
-// fewer than 3 new cells within exploreHorizon counts as none (the middleware's exploreMinimum)
-exploreMin(3) :- arena(W, D) & looseArea(A) & W * D >= A.
 // in an arena of closeArea m2 or more, closer to obstacles: obstacle at a front reading over 480
 // (about 5 cm; the thesis: 350, about 8 cm), clear under 300 (200), or a left-right difference over
 // 150 (100): with the thesis' levels the floor next to walls and boxes, a large share of a big
@@ -120,7 +117,7 @@ pausedUntil("-veering") :- veering.
 
 @setUpCoverage
 +!setUpCoverage : wheelGeometry(U, A)
-    <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) }; if (exploreMin(K)) { exploreMinimum(K) };
+    <- odometry(U, A); if (exploreHorizon(H)) { exploreHorizon(H) };
        if (obstacleThresholds(W, S, L)) { obstacleLevels(W, S); deltaLimit(L) };
        if (deltaLevels(Over, Under)) { deltaLimit(Over); deltaClear(Under) };
        if (wallMarks(M)) { markWalls(M) };

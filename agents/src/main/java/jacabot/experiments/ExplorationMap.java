@@ -25,7 +25,6 @@ final class ExplorationMap {
 
     private final double speedUnit, axle;
     private double horizon = HORIZON;
-    private int minimum = 1; // fewer new cells than this on a heading count as none
     private double x, z, heading; // metres, metres, radians
     private double left, right;   // wheel speeds in effect, speed units
     private long lastMs = -1;
@@ -53,14 +52,6 @@ final class ExplorationMap {
             throw new IllegalArgumentException("horizon must be at least " + CELL + " m, got " + metres);
         }
         horizon = metres;
-    }
-
-    /** A heading with fewer than {@code cells} new cells within the horizon scores as one with none. */
-    void minimum(int cells) {
-        if (cells < 1) {
-            throw new IllegalArgumentException("minimum must be at least 1 cell, got " + cells);
-        }
-        minimum = cells;
     }
 
     /** The wheel speeds in effect from {@code nowMs} on: the motion since the last call is integrated first. */
@@ -94,8 +85,7 @@ final class ExplorationMap {
         double best = 0, bestScore = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < DIRECTIONS; k++) {
             double turn = k <= DIRECTIONS / 2 ? k * 360.0 / DIRECTIONS : (k - DIRECTIONS) * 360.0 / DIRECTIONS;
-            double fresh = score(heading + Math.toRadians(turn));
-            double score = (fresh < minimum ? 0 : fresh) - Math.abs(turn) / 360.0;
+            double score = score(heading + Math.toRadians(turn)) - Math.abs(turn) / 360.0;
             if (score > bestScore) {
                 bestScore = score;
                 best = turn;

@@ -113,19 +113,6 @@ public class ObstacleAvoidanceMiddleware extends MiddlewareArtifact {
     }
 
     /**
-     * How many new cells a heading needs within the horizon for {@code exploreTurn} to count them (not in
-     * the thesis, default 1): fewer count as none. Fails before {@code odometry} or under 1.
-     */
-    @OPERATION
-    void exploreMinimum(double cells) {
-        if (map == null || !(cells >= 1)) {
-            failed("exploreMinimum needs odometry(SpeedUnit, AxleLength) first and at least 1 cell, got " + cells);
-            return;
-        }
-        map.minimum((int) Math.round(cells));
-    }
-
-    /**
      * The turn on the spot towards the most floor not crossed yet (not in the thesis): {@code side} "left" or
      * "right", and how long to turn at wheel speeds ±{@code speed}. Fails before {@code odometry}.
      */
