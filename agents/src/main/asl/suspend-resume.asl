@@ -25,9 +25,8 @@ routeMemory(600000).
 wallGuess(1.0).
 // the guess's first 0.15 m past the seen end firm, ended by a side sensor seeing the floor open: the
 // trips go along a wall at full speed, where they crept at 1-2 cm/s into its unseen part (wide tuning
-// 101-160: the first trip to the charger sooner in 30 runs, later in 5: docs/comparison-wide.md); try:
-// 0.3 m, past the route's lookahead (0.2 m), so the point headed for beside a wall is not at the crossing
-wallFirm(0.3).
+// 101-160: the first trip to the charger sooner in 30 runs, later in 5: docs/comparison-wide.md)
+wallFirm(0.15).
 quickTurns.
 // the way back's progress judged along the route map too, not only in a straight line (recharge-trip's
 // @reachMarkedAlongRoute: docs/comparison-wide.md)
