@@ -20,9 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a sighting at the image's edge (a cylinder the frame may cut, its distance too long) is not
-// remembered, nor a homing lost on one (skills/search-memory.asl)
-edgeSightingsUnplaced.
 
 !start.
 

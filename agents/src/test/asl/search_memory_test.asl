@@ -16,7 +16,6 @@ storageClearance(0.15).
 mock_operation(_, ok).
 
 maxSpeed(100).
-cameraFov(60).      // far sight's
 
 // what the skill needs of sweep
 +!planSweep <- +sweepPlanned; -+sweep([[0.5, 0.5]]).
@@ -242,37 +241,3 @@ cameraFov(60).      // far sight's
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// an agent that believes edgeSightingsUnplaced: a red run at the image's edge (one column wide at
-// 29.5 degrees, two at -29.1) may be a near cylinder the frame cuts, put far beyond it: not
-// remembered; one a column in from the edge is, and without the belief the edge's is too
-@[test]
-+!test_a_sighting_at_the_image_edge_is_not_remembered_when_edge_sightings_unplaced
-    <- .abolish(seenCylinder(_, _)); -+location(0, 0, 0); -+orientation(0); +edgeSightingsUnplaced;
-       +cylinderSighted(29.5, 1.53); .wait(100); -cylinderSighted(29.5, 1.53);
-       +cylinderSighted(-29.1, 0.76); .wait(100); -cylinderSighted(-29.1, 0.76);
-       !assert_false(seenCylinder(_, _));
-       +cylinderSighted(28.6, 1.53);                     // one column in from the edge
-       !until(seenCylinder(_, _), 500);
-       !assert_true(seenCylinder(_, _));
-       -cylinderSighted(28.6, 1.53); .abolish(seenCylinder(_, _)); -edgeSightingsUnplaced;
-       +cylinderSighted(29.5, 1.53);                     // without the belief: remembered
-       !until(seenCylinder(_, _), 500);
-       !assert_true(seenCylinder(_, _));
-       -cylinderSighted(29.5, 1.53); .abolish(seenCylinder(_, _)).
-
-// a homing whose last sighting was at the image's edge is remembered nowhere when lost (its place
-// before, 0.5 m to the left, went with that sighting)
-@[test]
-+!test_a_homing_lost_on_a_sighting_at_the_image_edge_is_remembered_nowhere
-    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(90);
-       +edgeSightingsUnplaced;
-       -+lastFound(-300000); -+lastSighted(-100000); -+sightDistance(0.5);
-       -+sightOffset(-20);                               // a sighting inside the image
-       !until(lastSightedAt(_, _), 500);
-       -+sightDistance(0.76); -+sightOffset(-29.1);      // the last: at the edge
-       !until(not lastSightedAt(_, _), 500);
-       +homing(-200000); -homing(_); .wait(200);
-       !assert_false(seenCylinder(_, _));
-       -edgeSightingsUnplaced; .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_));
-       .abolish(sightOffset(_)); .abolish(lastSightedAt(_, _)); -+orientation(0).

@@ -14,12 +14,12 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept), edgeSightingsUnplaced (see atImageEdge).
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
-// Reads too: sightDistance(D), sightOffset(Off), cameraFov(F) (far sight's: the homing's last sighting, the image's angle); gripPoint
+// Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting); gripPoint
 // (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
@@ -51,20 +51,8 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 // delivery 50 s of its last 250 went to three such places)
 sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
-// A red run at the image's edge may be a cylinder the frame cuts: its width, the distance's only
-// measure, is too small, and the place far beyond the cylinder (wide world 110, seed 1: a cylinder
-// 0.3 m away at the image's left edge was put 1.5 m away; world 107: one beside the robot, reached by
-// picking's lateral reach, 0.76 m away; after the delivery the search spent some 40 s at each such
-// place). An agent that believes edgeSightingsUnplaced remembers no such sighting, and a homing whose
-// last sighting was one is remembered nowhere when lost (lastSightedAt goes). The run's outer side:
-// its offset and half its width, oneColumnAt m being one of the image's imageColumns columns' width.
-imageColumns(64).
-oneColumnAt(1.53).
-atImageEdge(Off, Dist) :- edgeSightingsUnplaced & cameraFov(F) & imageColumns(N) & oneColumnAt(C)
-    & math.abs(Off) + F / N / 2 * C / Dist > F / 2 - 0.2.
-
 @rememberSighting
-+cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & not atImageEdge(Off, Dist) & sameSighting(R)
++cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
@@ -74,7 +62,6 @@ atImageEdge(Off, Dist) :- edgeSightingsUnplaced & cameraFov(F) & imageColumns(N)
 // behind a box 0.2 m away was left for the lanes for minutes); not a homing stale since the last
 // pick, nor one given up (its last sighting is recent). Placed ahead on the pose at the loss, it
 // was off by the turn made since (world 131: 0.7 m off, a 40 s detour)
-@sightAtEdge +sightOffset(Off) : sightDistance(D) & atImageEdge(Off, D) <- .abolish(lastSightedAt(_, _)).
 @sightPlace +sightOffset(Off) : sightDistance(D) & sightedAt(Off, D, Cx, Cz) <- -+lastSightedAt(Cx, Cz).
 @lostFromSight
 -homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
