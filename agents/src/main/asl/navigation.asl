@@ -20,6 +20,9 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
+// a place where a cylinder was seen that the robot comes no nearer for 20 s is left for the next
+// (skills/look-points.asl)
+lookAgainStall(20000).
 
 !start.
 

@@ -20,11 +20,15 @@ lookAgainFor(40000).
 // began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
 loopAfter(8000).
 loopRadius(0.08).
+// Optional (the agent's): lookAgainStall(S), ms: a place looked for again that the robot has come
+// no nearer (sweep's closerAt: by 0.1 m) for S ms is given up as one looked for too long (wide
+// world 112, seed 4: after the delivery 100 s went to two places remembered early, the robot
+// never within 1 m of them).
 // Optional (the agent's): lookNearing(G), ms: a look point whose patience (sweep's) has run out is
 // kept while the robot came nearer it within the last G ms, up to lookPointMost ms in all (wide
 // world 128, seed 1: 0.33 m from a point in a doorway when its 60 s ran out).
 lookPointMost(120000).
-// Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
+// Reads: arena(W, D); location; offStorage(X, Z), searching, closerAt(T) (sweep); lookingAgain(X, Z, T) (search
 // memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
 // (avoidance, picking, delivery); stuck (the middleware's progress watch); followingWall(S, T, D)
 // (way-round: a following towards the look point), wedgedAlong (way-round: wedged on it once).
@@ -78,6 +82,10 @@ lookPointMost(120000).
 +!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainFor(L)
               & .system_time(T) & T - T0 > L
     <- .abolish(lookingAgain(_, _, _)); println("Looked for too long where a cylinder was seen: on to the next"); !nextWaypoint.
+
+@lookAgainStalled
++!sweepStep : lookAgainStall(S) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & closerAt(C) & .system_time(T) & T - C > S
+    <- .abolish(lookingAgain(_, _, _)); println("No nearer where a cylinder was seen: on to the next"); !nextWaypoint.
 
 // an avoidance cut off leaves "avoiding" behind: recovery's avoidance of an obstacle still seen runs
 // inside the motion loop's move, and a lateral cylinder's reach ends that move before the avoidance
