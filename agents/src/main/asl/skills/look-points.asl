@@ -16,14 +16,18 @@ waypointProgress(off).
 // boundary following towards it starts its waypoint's patience again: one place held the search
 // 167 s of the 384 after the delivery, wide world 138 seed 1)
 lookAgainFor(40000).
+// an agent's own lookAgainMost(Ms) replaces it (navigation: longer, with lookAgainStall below)
+lookAgainLimit(L) :- lookAgainMost(L).
+lookAgainLimit(L) :- not lookAgainMost(_) & lookAgainFor(L).
 // ms after which a following towards a look point that is back within loopRadius (m) of where it
 // began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
 loopAfter(8000).
 loopRadius(0.08).
 // Optional (the agent's): lookAgainStall(S), ms: a place looked for again that the robot has come
-// no nearer (sweep's closerAt: by 0.1 m) for S ms is given up as one looked for too long (wide
-// world 112, seed 4: after the delivery 100 s went to two places remembered early, the robot
-// never within 1 m of them).
+// no nearer (sweep's closerAt: by 0.1 m) for S ms is given up as one looked for too long, and
+// lookAgainMost(L) (above) lets one still neared be looked for longer (wide world 112, seed 4: after
+// the delivery the nearest place remembered, 0.09 m from a cylinder, lay 2.8 m away across the
+// arena; lookAgainFor ran out 40 s later, the robot still coming nearer, 2.3 m from it).
 // Optional (the agent's): lookNearing(G), ms: a look point whose patience (sweep's) has run out is
 // kept while the robot came nearer it within the last G ms, up to lookPointMost ms in all (wide
 // world 128, seed 1: 0.33 m from a point in a doorway when its 60 s ran out).
@@ -79,7 +83,7 @@ lookPointMost(120000).
 
 @lookAgainStarted +lookingAgain(X, Z, 0) : lookSpacing(_) <- .system_time(T); .abolish(lookAgainFrom(_, _, _)); +lookAgainFrom(X, Z, T).
 @lookAgainTooLong
-+!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainFor(L)
++!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainLimit(L)
               & .system_time(T) & T - T0 > L
     <- .abolish(lookingAgain(_, _, _)); println("Looked for too long where a cylinder was seen: on to the next"); !nextWaypoint.
 
