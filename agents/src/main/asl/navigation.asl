@@ -20,10 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a place where a cylinder was seen is looked for while the robot comes nearer, up to 90 s (not
-// look-points' 40 s), and left for the next once it has come no nearer for 20 s (skills/look-points.asl)
-lookAgainStall(20000).
-lookAgainMost(90000).
 
 !start.
 

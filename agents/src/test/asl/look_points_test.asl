@@ -56,39 +56,6 @@ mock_operation(_, ok).
        !assert_false(lookingAgain(_, _, _));
        !assert_true(waypoint(0, 0.5, _)).
 
-// an agent that believes lookAgainStall(S): a place looked for again the robot came no nearer for S
-// ms gives way to the look points, one it came nearer within them does not
-@[test]
-+!test_a_place_looked_for_again_and_come_no_nearer_gives_way_to_the_look_points
-    <- -+sweep([[0, 0.5]]); -+location(0, 0, 0.3); -+waypoint(-0.6, 0.2, 0); +lookAgainStall(20000);
-       +lookingAgain(-0.6, 0.2, 0);
-       !until(lookAgainFrom(-0.6, 0.2, _), 500);
-       .system_time(T); -+closerAt(T - 10000);                         // came nearer 10 s ago
-       !sweepStep;
-       !assert_true(lookingAgain(-0.6, 0.2, _));
-       -+closerAt(T - 21000);                                          // 21 s ago
-       !sweepStep;
-       !assert_false(lookingAgain(_, _, _));
-       !assert_true(waypoint(0, 0.5, _));
-       -lookAgainStall(20000).
-
-// an agent that believes lookAgainMost(L): a place looked for again is kept past lookAgainFor's 40 s
-// while the robot comes nearer, and given up after L ms
-@[test]
-+!test_a_place_looked_for_again_is_kept_up_to_the_agents_own_most
-    <- -+sweep([[0, 0.5]]); -+location(0, 0, 0.3); -+waypoint(-0.6, 0.2, 0); +lookAgainMost(90000);
-       +lookingAgain(-0.6, 0.2, 0);
-       !until(lookAgainFrom(-0.6, 0.2, _), 500);
-       ?lookAgainFrom(-0.6, 0.2, T); -lookAgainFrom(-0.6, 0.2, T); +lookAgainFrom(-0.6, 0.2, T - 41000);
-       .system_time(Now); -+closerAt(Now);
-       !sweepStep;
-       !assert_true(lookingAgain(-0.6, 0.2, _));
-       -lookAgainFrom(-0.6, 0.2, T - 41000); +lookAgainFrom(-0.6, 0.2, T - 91000);
-       !sweepStep;
-       !assert_false(lookingAgain(_, _, _));
-       !assert_true(waypoint(0, 0.5, _));
-       -lookAgainMost(90000).
-
 // an avoidance cut off (its move ended by a cylinder's reach) left "avoiding" behind: no progress
 // then is an escape and the next waypoint, and "avoiding" goes (without it the robot stood still)
 @[test]

@@ -16,23 +16,15 @@ waypointProgress(off).
 // boundary following towards it starts its waypoint's patience again: one place held the search
 // 167 s of the 384 after the delivery, wide world 138 seed 1)
 lookAgainFor(40000).
-// an agent's own lookAgainMost(Ms) replaces it (navigation: longer, with lookAgainStall below)
-lookAgainLimit(L) :- lookAgainMost(L).
-lookAgainLimit(L) :- not lookAgainMost(_) & lookAgainFor(L).
 // ms after which a following towards a look point that is back within loopRadius (m) of where it
 // began has gone round an obstacle, a box and no wall: no way round (way-round's @followLooped)
 loopAfter(8000).
 loopRadius(0.08).
-// Optional (the agent's): lookAgainStall(S), ms: a place looked for again that the robot has come
-// no nearer (sweep's closerAt: by 0.1 m) for S ms is given up as one looked for too long, and
-// lookAgainMost(L) (above) lets one still neared be looked for longer (wide world 112, seed 4: after
-// the delivery the nearest place remembered, 0.09 m from a cylinder, lay 2.8 m away across the
-// arena; lookAgainFor ran out 40 s later, the robot still coming nearer, 2.3 m from it).
 // Optional (the agent's): lookNearing(G), ms: a look point whose patience (sweep's) has run out is
 // kept while the robot came nearer it within the last G ms, up to lookPointMost ms in all (wide
 // world 128, seed 1: 0.33 m from a point in a doorway when its 60 s ran out).
 lookPointMost(120000).
-// Reads: arena(W, D); location; offStorage(X, Z), searching, closerAt(T) (sweep); lookingAgain(X, Z, T) (search
+// Reads: arena(W, D); location; offStorage(X, Z), searching (sweep); lookingAgain(X, Z, T) (search
 // memory: its place looked for again is no look point); avoiding, picking, travelling, insideArea
 // (avoidance, picking, delivery); stuck (the middleware's progress watch); followingWall(S, T, D)
 // (way-round: a following towards the look point), wedgedAlong (way-round: wedged on it once).
@@ -83,13 +75,9 @@ lookPointMost(120000).
 
 @lookAgainStarted +lookingAgain(X, Z, 0) : lookSpacing(_) <- .system_time(T); .abolish(lookAgainFrom(_, _, _)); +lookAgainFrom(X, Z, T).
 @lookAgainTooLong
-+!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainLimit(L)
++!sweepStep : lookSpacing(_) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & lookAgainFrom(X, Z, T0) & lookAgainFor(L)
               & .system_time(T) & T - T0 > L
     <- .abolish(lookingAgain(_, _, _)); println("Looked for too long where a cylinder was seen: on to the next"); !nextWaypoint.
-
-@lookAgainStalled
-+!sweepStep : lookAgainStall(S) & waypoint(X, Z, _) & lookingAgain(X, Z, _) & closerAt(C) & .system_time(T) & T - C > S
-    <- .abolish(lookingAgain(_, _, _)); println("No nearer where a cylinder was seen: on to the next"); !nextWaypoint.
 
 // an avoidance cut off leaves "avoiding" behind: recovery's avoidance of an obstacle still seen runs
 // inside the motion loop's move, and a lateral cylinder's reach ends that move before the avoidance
