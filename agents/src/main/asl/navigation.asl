@@ -20,8 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a homing ended by picking's lateral reach is not remembered as lost (skills/search-memory.asl)
-reachNotLost.
 
 !start.
 

@@ -241,23 +241,3 @@ maxSpeed(100).
        !assert_false(seenCylinder(_, _));
        .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_)); .abolish(sightOffset(_));
        .abolish(lastSightedAt(_, _)); -+orientation(0).
-
-// an agent that believes reachNotLost: a homing during which picking's lateral reach began (its
-// cylinder beside the robot) is not remembered lost where its last sighting put it
-@[test]
-+!test_a_homing_ended_by_a_lateral_reach_is_not_remembered_lost
-    <- .abolish(seenCylinder(_, _)); .abolish(lookingAgain(_, _, _)); -+location(0, 0, 0); -+orientation(90);
-       +reachNotLost;
-       .system_time(Now); -+lastFound(Now - 300000); -+lastSighted(Now - 100000); -+sightDistance(0.76);
-       -+sightOffset(-29.1);
-       !until(lastSightedAt(_, _), 500);
-       +homing(Now - 200000); -+reachCylinder(true);
-       !until(reachDuringHoming(_), 500);
-       -+reachCylinder(false); -homing(_); .wait(200);
-       !assert_false(seenCylinder(_, _));
-       -reachNotLost; .abolish(reachDuringHoming(_));
-       +homing(Now - 200000); -+reachCylinder(true); .wait(100); -+reachCylinder(false); -homing(_);
-       !until(seenCylinder(_, _), 500);                   // without the belief: remembered
-       !assert_true(seenCylinder(_, _));
-       .abolish(seenCylinder(_, _)); .abolish(lastFound(_)); .abolish(lastSighted(_)); .abolish(sightDistance(_));
-       .abolish(sightOffset(_)); .abolish(lastSightedAt(_, _)); -+orientation(0).

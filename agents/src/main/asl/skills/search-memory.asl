@@ -14,17 +14,16 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept), reachNotLost (see @reachDuringHoming).
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
 // ended for the look around after a fall).
 // Reads too: sightDistance(D), sightOffset(Off) (far sight's: the homing's last sighting); gripPoint
-// (gripper's, which picking includes); reachCylinder(B) (picking's lateral reach).
+// (gripper's, which picking includes).
 // Beliefs: seenCylinder(X, Z), lastSightedAt(X, Z) (where the homing's last sighting put its
 // cylinder), lostBeside, backingOff (a back-off after a fall begun, its look around not yet whole),
-// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before), reachDuringHoming(T)
-// (when picking's reach began during a homing).
+// lookingAgain(X, Z, Since) (the place looked for again, in view since, 0 before).
 // Needs: sweep (!planSweep, !lookAround, waypoint, closest). Include it after far sight (its sighting plan
 // takes only the sightings far sight leaves) and before sweep (its +!nextWaypoint plan comes first).
 
@@ -64,15 +63,8 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 // pick, nor one given up (its last sighting is recent). Placed ahead on the pose at the loss, it
 // was off by the turn made since (world 131: 0.7 m off, a 40 s detour)
 @sightPlace +sightOffset(Off) : sightDistance(D) & sightedAt(Off, D, Cx, Cz) <- -+lastSightedAt(Cx, Cz).
-// picking's lateral reach of a cylinder beside the robot (reachCylinder(true)) begun during a homing
-// ends the homing's sightings: the homing then ends stale, not lost, its cylinder beside the robot,
-// and its last sighting's place is none of it (wide world 107, seeds 1-2: a sighting at the image's
-// edge 0.76 m off, 0.55-0.63 m past the cylinder picked; 40 s there after the delivery). An agent
-// that believes reachNotLost remembers no such homing
-@reachDuringHoming +reachCylinder(true) : reachNotLost & homing(_) <- .system_time(T); -+reachDuringHoming(T).
 @lostFromSight
 -homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
-              & not (reachDuringHoming(R) & R >= S)
               & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
 
