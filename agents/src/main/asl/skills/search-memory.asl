@@ -135,11 +135,6 @@ inView(Cx, Cz) :- location(X, _, Z) & orientation(O) & emptyView(A, R) & Dx = Cx
 @inViewFirst
 +!sweepStep : searching & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, 0) & inView(Cx, Cz) & not ignoring
     <- .system_time(T); -lookingAgain(Cx, Cz, 0); +lookingAgain(Cx, Cz, T); !sweepStep.
-// a place looked for again whose way the storage area's edge turned away (delivery's noAccess) is
-// given up there, wherever it lies (delivery's waypointIntoStorage, a rule it extends; with
-// waypointPastStorage only one past the storage point was): a cylinder there lies in or at the
-// storage area, where no cylinder is picked
-waypointIntoStorage :- waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, _).
 @notThere
 +!sweepStep : searching & waypoint(Cx, Cz, _) & lookingAgain(Cx, Cz, T0) & T0 > 0 & .system_time(T) & T - T0 > 2000
               & inView(Cx, Cz) & not ignoring
