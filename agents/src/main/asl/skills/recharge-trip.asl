@@ -24,7 +24,7 @@ parkAfterPick(10000).   // ms: with parkInTime, no park as soon after a pick end
 // deliverOn(R) (the agent's, optional: see @deliveryKeptOn); chargeUntilLasts(R) (the agent's, optional, with taskEnd: a charge ends once the battery less R J
 // covers the time left at full power, or at chargedLevel); meanPower(W) (the agent's, optional: the
 // power those two sums assume instead of fullPower); parkInTime(S, M) (the agent's, optional, with taskEnd: see
-// @parkAtTheEnd; pickEnded(T), lanesTaken(K) and sweptRound, its beliefs; lookingAgain(X, Z, T), search-memory's, if included). Rules it extends:
+// @parkAtTheEnd; pickEnded(T), lanesTaken(K) and sweptRound, its beliefs). Rules it extends:
 // travelling, halted.
 // Needs: heading (computeGap, balance, steer, the target point), recovery (!escape), with markedByRoute a
 // middleware with routeLength (NavigationMiddleware's route map), and the two
@@ -95,17 +95,8 @@ pickedLately(T) :- pickEnded(S) & parkAfterPick(W) & T - S < W.
 // (lanesTaken(K) counts the lists sweep believes while searching: one more at each waypoint taken).
 // Without it a park left a search that still had time to end (32 s a metre is pessimistic): a run
 // lost and a delivery less in five failed runs on generated worlds 1-50 × 1..3.
-// A place search-memory looks at again (lookingAgain(X, Z, 0), a remembered sighting) counts as a
-// waypoint taken too: @nextRemembered sends the robot to the nearest one at each waypoint, so with
-// places remembered after every look around the sweep's list never turned and the sign never came
-// (world 215 × 7: eleven places from the third delivery to the end, every cylinder stored by 453 s).
-waypointsTaken(K1) :- lanesTaken(K) & K1 = K + 1.
-waypointsTaken(1) :- not lanesTaken(_).
 @lanesCounted[atomic] +sweep(L) : parkInTime(_, _) & searching
-    <- ?waypointsTaken(K1); -+lanesTaken(K1);
-       if (K1 >= .length(L)) { +sweptRound }.
-@placesCounted[atomic] +lookingAgain(_, _, 0) : parkInTime(_, _) & searching & sweep(L)
-    <- ?waypointsTaken(K1); -+lanesTaken(K1);
+    <- if (lanesTaken(K)) { K1 = K + 1 } else { K1 = 1 }; -+lanesTaken(K1);
        if (K1 >= .length(L)) { +sweptRound }.
 @lanesForgotten -searching : parkInTime(_, _) <- -lanesTaken(_); -sweptRound.
 @parkAtTheEnd
