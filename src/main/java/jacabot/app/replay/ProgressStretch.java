@@ -2,7 +2,10 @@ package jacabot.app.replay;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -15,7 +18,8 @@ import java.util.regex.Pattern;
  * {@code targetPoint(X, Z)} (the storage point, the charger, the marked point) or
  * {@code waypoint(X, Z, _)} (the sweep), and the target point again once the sweep's waypoint is
  * dropped: beliefs of the Khepera agents, read from the step log's mind changes. A run without
- * them is judged by coverage alone.
+ * them is judged by coverage alone. A key step of the log lists the whole mind: a target in it is new
+ * only when it was not believed at the step before.
  */
 public final class ProgressStretch {
     /** How much nearer than ever before the robot must come to its target, metres. */
@@ -36,6 +40,7 @@ public final class ProgressStretch {
     /** {@return the longest stretch without progress in the step log {@code file}, with coverage cells of {@code cell} m} */
     public static Stretch longest(Path file, double cell) throws IOException {
         Set<Long> cells = new HashSet<>();
+        Set<String> believed = new LinkedHashSet<>(); // the targets believed, as kind(X,Z)
         double[] point = null, target = null;
         double nearest = Double.POSITIVE_INFINITY;
         double last = 0, t = 0;
@@ -44,24 +49,40 @@ public final class ProgressStretch {
             for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
                 t = s.timeMs() / 1000.0;
                 if (s.mind() != null) {
-                    if (s.mind().removed() != null) {
-                        for (String b : s.mind().removed()) {
-                            if (b.startsWith("waypoint(") && target != point) {
-                                target = point;
-                                nearest = Double.POSITIVE_INFINITY;
-                            }
-                        }
-                    }
+                    List<String> added = new ArrayList<>(), removed = new ArrayList<>();
                     if (s.mind().added() != null) {
                         for (var b : s.mind().added()) {
-                            Matcher m = TARGET.matcher(b.literal());
-                            if (m.matches()) {
-                                target = new double[] {Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))};
-                                nearest = Double.POSITIVE_INFINITY;
-                                if (m.group(1).equals("targetPoint")) {
-                                    point = target;
-                                }
+                            addTarget(b.literal(), added);
+                        }
+                    }
+                    if (s.key()) { // the whole mind: only what was not believed before is new
+                        removed.addAll(believed);
+                        removed.removeAll(added);
+                        var snapshot = new LinkedHashSet<>(added);
+                        added.removeAll(believed);
+                        believed = snapshot;
+                    } else {
+                        if (s.mind().removed() != null) {
+                            for (String b : s.mind().removed()) {
+                                addTarget(b, removed);
                             }
+                        }
+                        believed.removeAll(removed);
+                        believed.addAll(added);
+                    }
+                    for (String b : removed) {
+                        if (b.startsWith("waypoint(") && target != point) {
+                            target = point;
+                            nearest = Double.POSITIVE_INFINITY;
+                        }
+                    }
+                    for (String b : added) {
+                        Matcher m = TARGET.matcher(b);
+                        m.matches();
+                        target = new double[] {Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))};
+                        nearest = Double.POSITIVE_INFINITY;
+                        if (m.group(1).equals("targetPoint")) {
+                            point = target;
                         }
                     }
                 }
@@ -83,5 +104,13 @@ public final class ProgressStretch {
             }
         }
         return t - last > worst.seconds() ? new Stretch(last, t) : worst;
+    }
+
+    /** Adds {@code literal}, when it is a target belief, to {@code targets} as {@code kind(X,Z)}. */
+    private static void addTarget(String literal, List<String> targets) {
+        Matcher m = TARGET.matcher(literal);
+        if (m.matches()) {
+            targets.add(m.group(1) + "(" + m.group(2) + "," + m.group(3) + ")");
+        }
     }
 }
