@@ -129,8 +129,10 @@ final class RobotLink {
             return;
         }
         SensorDataWriter w = writer;
+        // first, in both kinds of link: the middleware closes the connection on our goodbye, and the
+        // receiver that sees that end must find the link closed, not report a drop and reconnect
+        closed.countDown();
         if (memory != null) {
-            closed.countDown(); // first: the goodbye that closes the link is then no problem to report
             if (w != null) {
                 try {
                     memory.fromController(out -> out.writeBye(new Uplink.Bye(reason)));
@@ -148,7 +150,6 @@ final class RobotLink {
                 // the link is going anyway
             }
         }
-        closed.countDown();
         closeSocket();
         sender.interrupt();
         receiver.interrupt();
