@@ -62,4 +62,16 @@ public final class Installation {
     public static Path resolve(String bundled) {
         return home().map(h -> h.resolve(bundled)).filter(Files::exists).orElse(Path.of(bundled));
     }
+
+    /**
+     * {@return the name to show for {@code file}}: a bundled file by its path inside the installation
+     * ({@code worlds/navigation.json}, the path a checkout has, as {@code gradle run} shows it), any
+     * other as given
+     */
+    public static String shown(Path file) {
+        return home().map(h -> h.toAbsolutePath().normalize())
+                .filter(h -> file.toAbsolutePath().normalize().startsWith(h))
+                .map(h -> h.relativize(file.toAbsolutePath().normalize()).toString())
+                .orElse(file.toString());
+    }
 }

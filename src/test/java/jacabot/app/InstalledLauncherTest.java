@@ -108,7 +108,8 @@ class InstalledLauncherTest {
         for (String f : List.of("summary.json", "event-log.txt", "trajectory.png", "steps.jsonl.gz", "battery.png", "speed.png")) {
             assertTrue(Files.isRegularFile(runDir.resolve(f)), f + " missing in " + runDir + ":\n" + out);
         }
-        assertTrue(out.contains("worlds/navigation.json"), out);
+        // the bundled world by its path in the installation (as in a checkout), not this machine's folder
+        assertTrue(out.contains("World worlds/navigation.json,") && out.contains("files: world worlds/navigation.json,"), out);
     }
 
     @Test

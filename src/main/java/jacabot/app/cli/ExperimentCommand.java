@@ -169,6 +169,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
         Path worldFile = world != null ? Installation.locate(world) : Installation.resolve(experiment.worldFile());
+        String worldName = Installation.shown(worldFile);
         WorldSpec spec;
         try {
             spec = WorldFileReader.read(worldFile);
@@ -177,10 +178,10 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         if (spec.basicTimeStep() <= 0 || spec.controlStep() <= 0 || spec.controlStep() % spec.basicTimeStep() != 0) {
             // sim-world's reader takes the number as an int: 2^40 arrives here as 0
-            throw new UserError(worldFile + ": $.controlStep must be a positive multiple of $.basicTimeStep ("
+            throw new UserError(worldName + ": $.controlStep must be a positive multiple of $.basicTimeStep ("
                     + spec.basicTimeStep() + " ms) below 2^31 ms, got " + spec.controlStep());
         }
-        var missing = Landmarks.missing(experiment, spec, worldFile.toString());
+        var missing = Landmarks.missing(experiment, spec, worldName);
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
             throw UserError.located(missing.get());
         }
@@ -196,10 +197,10 @@ final class ExperimentCommand implements Callable<Integer> {
         var mixUps = new ArrayList<String>();
         if (!baseline) {
             for (RobotAgent a : robotAgents) {
-                mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldFile.toString(), a.source().text(), a.source().name()));
+                mixUps.addAll(ExperimentMatch.check(experiment, spec.name(), worldName, a.source().text(), a.source().name()));
             }
         } else {
-            ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldFile
+            ExperimentMatch.ofWorld(spec.name()).filter(w -> w != experiment).ifPresent(w -> mixUps.add(worldName
                     + " is a world of experiment " + w.number() + " (" + w + "), not of " + experiment));
         }
         // several agents: their names stand for the agent file's in the folder (runs/suspend-resume-task-energy-13)
@@ -211,10 +212,10 @@ final class ExperimentCommand implements Callable<Integer> {
         try {
             simWorld = SimWorld.of(spec);
         } catch (RuntimeException e) {
-            throw new UserError(worldFile + ": this world cannot run: " + JacabotCommand.describe(e));
+            throw new UserError(worldName + ": this world cannot run: " + JacabotCommand.describe(e));
         }
         if (simWorld.robots().isEmpty()) {
-            throw new UserError(worldFile + ": the world has no robot; add one under \"robots\"");
+            throw new UserError(worldName + ": the world has no robot; add one under \"robots\"");
         }
         log.info("Experiment " + experiment.number() + " (" + experiment + "): " + experiment.summary() + ".");
         mixUps.forEach(log::warn); // before the run, which goes on
@@ -222,7 +223,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new UserError("--baseline: " + experiment + " has no procedural baseline (only the thesis' four experiments have one)");
         }
         if (baseline) {
-            log.info("World " + worldFile + ", seed " + runSeed + ", " + duration
+            log.info("World " + worldName + ", seed " + runSeed + ", " + duration
                     + " of simulated time, procedural baseline, headless.");
             long t0 = System.nanoTime();
             // as BaselineRunner.execute, with the step log an agent's run writes: replayed and plotted alike
@@ -233,19 +234,19 @@ final class ExperimentCommand implements Callable<Integer> {
                 controller.runFor(seconds);
             }
             report(log, recorder.summary(BaselineRunner.CONTROLLER), baselineWorld, outDir,
-                    (System.nanoTime() - t0) / 1e9, -1, files(worldFile, null));
+                    (System.nanoTime() - t0) / 1e9, -1, files(worldName, null));
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
         // a real-time run hosts one agent; several run in lockstep
         boolean viewer = !headless && !lockstep && !pipeline && agentNames == null && !GraphicsEnvironment.isHeadless();
         if (viewer || realTime) {
-            log.info("World " + worldFile + ", seed " + runSeed + ", real time x" + speed + (viewer
+            log.info("World " + worldName + ", seed " + runSeed + ", real time x" + speed + (viewer
                     ? " with the viewer (close the window to stop)." : ", " + duration + ", headless (Ctrl-C to stop)."));
             return new RealTimeExperiment(experiment, speed, port, inspectorOptions, viewer).run(simWorld, worldFile, source,
                     runSeed, seconds, log, outDir);
         }
-        log.info("World " + worldFile + ", seed " + runSeed + ", " + duration + " of simulated time, "
+        log.info("World " + worldName + ", seed " + runSeed + ", " + duration + " of simulated time, "
                 + (pipeline ? "pipelined lockstep" : "lockstep") + ", headless.");
         LockstepRun run;
         // the agents' console with its simulated times, for the inspector's console panel (the world is here only)
@@ -344,7 +345,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), simWorld, outDir, runWall, run.cycles(), files(worldFile, sourceName));
+            report(log, recorder.summary("agent"), simWorld, outDir, runWall, run.cycles(), files(worldName, sourceName));
             if (wall - runWall >= 0.05) { // the step log's writer catching up: a recording, not the run
                 log.result(String.format(Locale.ROOT, "The recordings (step log, console) were finished %.1f s after the last step.", wall - runWall));
             }

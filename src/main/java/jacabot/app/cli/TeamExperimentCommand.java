@@ -124,7 +124,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         }
         Path outDir = out != null ? out : runFolder(world == null ? null : worldFile, baseline, n, runSeed);
         Files.createDirectories(outDir);
-        log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + worldFile + ", seed " + runSeed + ", " + duration
+        log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + Installation.shown(worldFile) + ", seed " + runSeed + ", " + duration
                 + " of simulated time, " + (baseline ? "procedural baseline (no coordination)" : "agent " + source.name())
                 + ", lockstep.");
         long t0 = System.nanoTime();
@@ -249,14 +249,14 @@ final class TeamExperimentCommand implements Callable<Integer> {
         if (n < 1) {
             throw new UserError("--robots must be at least 1, got " + n);
         }
-        var missing = TeamWorld.missing(spec, n, worldFile.toString());
+        var missing = TeamWorld.missing(spec, n, Installation.shown(worldFile));
         if (missing.isPresent()) {
             throw UserError.located(missing.get());
         }
         try {
             return TeamWorld.firstRobots(spec, n);
         } catch (IllegalArgumentException e) {
-            throw new UserError(worldFile + ": " + e.getMessage());
+            throw new UserError(Installation.shown(worldFile) + ": " + e.getMessage());
         }
     }
 
@@ -275,7 +275,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
     /** {@return the summary's lines: one per robot, then the team's and the verdict} */
     static List<String> summary(TeamDeliveryRun.Outcome o, Path worldFile, String agentName, double wallSeconds) {
         List<String> lines = new ArrayList<>();
-        lines.add("team-delivery, " + o.robots().size() + " robots, seed " + o.seed() + ", world " + worldFile + ", "
+        lines.add("team-delivery, " + o.robots().size() + " robots, seed " + o.seed() + ", world " + Installation.shown(worldFile) + ", "
                 + (agentName == null ? "procedural baseline" : "agent " + agentName));
         var f = o.figures();
         for (int i = 0; i < o.robots().size(); i++) {
