@@ -40,7 +40,7 @@ public final class ProgressStretch {
     /** {@return the longest stretch without progress in the step log {@code file}, with coverage cells of {@code cell} m} */
     public static Stretch longest(Path file, double cell) throws IOException {
         Set<Long> cells = new HashSet<>();
-        Set<String> believed = new LinkedHashSet<>(); // the targets believed, as kind(X,Z)
+        Set<Target> believed = new LinkedHashSet<>();
         double[] point = null, target = null;
         double nearest = Double.POSITIVE_INFINITY;
         double last = 0, t = 0;
@@ -49,7 +49,7 @@ public final class ProgressStretch {
             for (StepLog.Step s = reader.next(); s != null; s = reader.next()) {
                 t = s.timeMs() / 1000.0;
                 if (s.mind() != null) {
-                    List<String> added = new ArrayList<>(), removed = new ArrayList<>();
+                    List<Target> added = new ArrayList<>(), removed = new ArrayList<>();
                     if (s.mind().added() != null) {
                         for (var b : s.mind().added()) {
                             addTarget(b.literal(), added);
@@ -70,18 +70,16 @@ public final class ProgressStretch {
                         believed.removeAll(removed);
                         believed.addAll(added);
                     }
-                    for (String b : removed) {
-                        if (b.startsWith("waypoint(") && target != point) {
+                    for (Target b : removed) {
+                        if (b.kind().equals("waypoint") && target != point) {
                             target = point;
                             nearest = Double.POSITIVE_INFINITY;
                         }
                     }
-                    for (String b : added) {
-                        Matcher m = TARGET.matcher(b);
-                        m.matches();
-                        target = new double[] {Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))};
+                    for (Target b : added) {
+                        target = new double[] {b.x(), b.z()};
                         nearest = Double.POSITIVE_INFINITY;
-                        if (m.group(1).equals("targetPoint")) {
+                        if (b.kind().equals("targetPoint")) {
                             point = target;
                         }
                     }
@@ -106,11 +104,15 @@ public final class ProgressStretch {
         return t - last > worst.seconds() ? new Stretch(last, t) : worst;
     }
 
-    /** Adds {@code literal}, when it is a target belief, to {@code targets} as {@code kind(X,Z)}. */
-    private static void addTarget(String literal, List<String> targets) {
+    /** A target belief: its functor ({@code targetPoint} or {@code waypoint}) and its point. */
+    private record Target(String kind, double x, double z) {
+    }
+
+    /** Adds {@code literal}, when it is a target belief, to {@code targets}. */
+    private static void addTarget(String literal, List<Target> targets) {
         Matcher m = TARGET.matcher(literal);
         if (m.matches()) {
-            targets.add(m.group(1) + "(" + m.group(2) + "," + m.group(3) + ")");
+            targets.add(new Target(m.group(1), Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))));
         }
     }
 }
