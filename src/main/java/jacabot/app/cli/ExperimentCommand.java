@@ -234,7 +234,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 controller.runFor(seconds);
             }
             report(log, recorder.summary(BaselineRunner.CONTROLLER), baselineWorld, outDir,
-                    (System.nanoTime() - t0) / 1e9, -1, files(worldName, null));
+                    (System.nanoTime() - t0) / 1e9, -1, files(worldFile, null));
             RunPlots.writeAll(outDir, ConsoleLog.lines(log::result));
             return 0;
         }
@@ -345,7 +345,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 result.linkLog().forEach(l -> log.detail("[link] " + l));
             }
             double wall = (System.nanoTime() - start) / 1e9;
-            report(log, recorder.summary("agent"), simWorld, outDir, runWall, run.cycles(), files(worldName, sourceName));
+            report(log, recorder.summary("agent"), simWorld, outDir, runWall, run.cycles(), files(worldFile, sourceName));
             if (wall - runWall >= 0.05) { // the step log's writer catching up: a recording, not the run
                 log.result(String.format(Locale.ROOT, "The recordings (step log, console) were finished %.1f s after the last step.", wall - runWall));
             }
@@ -464,8 +464,9 @@ final class ExperimentCommand implements Callable<Integer> {
     record RunFiles(String world, String agent) {
     }
 
-    static RunFiles files(Object world, String agent) {
-        return new RunFiles(world.toString(), agent);
+    /** {@return the files of a run on {@code world}, the world by the name a user knows it by ({@link Installation#shown})} */
+    static RunFiles files(Path world, String agent) {
+        return new RunFiles(Installation.shown(world), agent);
     }
 
     /** Writes the summary (JSON and text, naming the world and agent files), the event log and the trajectory, and prints them. */
