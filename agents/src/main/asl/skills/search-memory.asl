@@ -51,11 +51,6 @@ seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z)
 // delivery 50 s of its last 250 went to three such places)
 sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
-// an agent that judges its places (placeJudged, below) counts the sightings that agree on each and
-// keeps when the last came: placeSeen(X, Z, T, N)
-@rememberSightingCounted
-+cylinderSighted(Off, Dist) : placeJudged(_, _) & sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
-    <- !countedPlace(Cx, Cz, R).
 @rememberSighting
 +cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
     <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
@@ -71,16 +66,9 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 @lostFromSight
 -homing(T0) : lastFound(F) & T0 > F & lastSighted(S) & .system_time(T) & T - S >= 1500 & lastSightedAt(Cx, Cz)
               & not picking & not picked(true) & not nearStored(Cx, Cz) & sameSighting(R)
-    <- !countedPlace(Cx, Cz, R); if (searching) { !lookAgain }.
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (searching) { !lookAgain }.
 
-@forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z); .abolish(placeSeen(X, Z, _, _)); .abolish(placeViewed(X, Z)) }.
-// a place remembered: one sighting more than the most any place it replaces had (placeJudged only)
-@countedPlaceJudged
-+!countedPlace(Cx, Cz, R) : placeJudged(_, _)
-    <- .findall(N, seenNear(Cx, Cz, R, X, Z) & placeSeen(X, Z, _, N), Ns);
-       if (Ns == []) { M = 1 } else { .max(Ns, K); M = K + 1 };
-       !forgetNear(Cx, Cz, R); .system_time(T); +seenCylinder(Cx, Cz); +placeSeen(Cx, Cz, T, M).
-@countedPlace +!countedPlace(Cx, Cz, R) <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
+@forgetNear +!forgetNear(Cx, Cz, R) <- for (seenNear(Cx, Cz, R, X, Z)) { -seenCylinder(X, Z) }.
 
 // the cylinder picked is no longer to be looked for: the places near it, in the gripper ahead of
 // the robot (gripper's gripPoint), not near the robot's centre; without a compass, near the centre
@@ -128,32 +116,10 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // now (a homing lost from sight remembers one and looks again; the sweep's step took it first, and the
 // failure ended the motion loop: tidy-up world 236 × 2 stopped at 366 s)
 @lookAgainNothing +!lookAgain : not seenCylinder(_, _).
-// Optional (the agent's): placeJudged(C, M): the nearest place, when taken, is left when fewer than M
-// sightings agreed on it and a whole look around (look-skip's lookedAt) was made within C m of it
-// since the last of them: a cylinder there would have cut that look around short
-nearestPlace(X, Z, Cx, Cz) :- .findall(d(D2, Px, Pz), seenCylinder(Px, Pz) & D2 = (Px - X) * (Px - X) + (Pz - Z) * (Pz - Z), L)
-    & .min(L, d(_, Cx, Cz)).
-lookedOverSince(Cx, Cz, C) :- placeSeen(Cx, Cz, Ts, _) & lookedAt(Lx, Lz, T) & T > Ts & (Lx - Cx) * (Lx - Cx) + (Lz - Cz) * (Lz - Cz) < C * C.
-// With placeViewJudged (the agent's, optional) a place counts as looked over too when it came
-// straight ahead and near (inView, below) a second or more after its last sighting, the robot
-// neither homing nor picking (far sight would then have shown a cylinder there, and a sighting
-// within sameSighting would have replaced the place): placeViewed(X, Z)
-lookedOver(Cx, Cz, C) :- lookedOverSince(Cx, Cz, C).
-lookedOver(Cx, Cz, _) :- placeViewed(Cx, Cz).
-@placeInView
-+location(_, _, _) : placeJudged(_, _) & placeViewJudged & placeSeen(Cx, Cz, Ts, _) & not placeViewed(Cx, Cz) & .system_time(T) & T - Ts > 1000
-                     & inView(Cx, Cz) & not homing(_) & not picking
-    <- +placeViewed(Cx, Cz).
-@lookAgainDoubtful
-+!lookAgain : placeJudged(C, M) & location(X, _, Z) & nearestPlace(X, Z, Cx, Cz) & placeSeen(Cx, Cz, _, N) & N < M
-              & lookedOver(Cx, Cz, C)
-    <- -seenCylinder(Cx, Cz); .abolish(placeSeen(Cx, Cz, _, _)); .abolish(placeViewed(Cx, Cz));
-       println("A place seen ", N, " times and looked over since: left");
-       if (seenCylinder(_, _)) { !lookAgain } else { !nextWaypoint }.
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
-       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz); .abolish(placeSeen(Cx, Cz, _, _)); .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
+       .min(L, d(_, Cx, Cz)); -seenCylinder(Cx, Cz); .abolish(lookingAgain(_, _, _)); +lookingAgain(Cx, Cz, 0);
        println("Looking again where a cylinder was seen");
        .system_time(T); -+waypoint(Cx, Cz, T); -+closest(1000); -+closerAt(T).
 
