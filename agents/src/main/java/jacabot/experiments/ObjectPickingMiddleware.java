@@ -250,7 +250,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         return isRed(rgb[3 * section], rgb[3 * section + 1], rgb[3 * section + 2]);
     }
 
-    /** The thesis' red test (§2.2), for a section mean or a pixel: bright enough, twice green and blue. */
+    /** The thesis' red test (Chapter 4 §2.2: red over twice green and blue) for a section mean or a pixel; bright enough: ours. */
     static boolean isRed(int r, int g, int b) {
         return r > 40 && r > RED_RATIO * g && r > RED_RATIO * b;
     }

@@ -27,7 +27,7 @@ class TeamWorldTest {
         return TestWorlds.world(members.isBlank() ? robots : robots + ", " + members);
     }
 
-    /** The thesis' red test (Chapter 4 §2.2): bright enough, red at least twice green and twice blue. */
+    /** The thesis' red test (Chapter 4 §2.2: red over twice green and twice blue), and the middleware's own: bright enough. */
     private static boolean isRed(int r, int g, int b) {
         return r > 40 && r > 2 * g && r > 2 * b;
     }

@@ -9,7 +9,7 @@ import java.util.function.Consumer;
 
 /**
  * The link's events on their way to the middleware: a bounded queue that {@link MiddlewareLink#receive()}
- * takes from (one {@code await(IBlockingCmd)} of the artifact, thesis §2.3), or, after
+ * takes from (one {@code await(IBlockingCmd)} of the artifact, thesis Chapter 3 §2.4), or, after
  * {@link #handOver}, a handler called on the connection's reading thread. When nobody reads, the
  * oldest readings make room; a connection event is never dropped.
  */

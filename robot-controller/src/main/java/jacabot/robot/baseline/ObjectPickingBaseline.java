@@ -276,9 +276,10 @@ public class ObjectPickingBaseline extends BaselineController {
      * the main loop then sees it very close and picks it. Gives up after the time limits.
      *
      * <p>The trigger is the camera alone: the Khepera's front-left/front-right sensors look 35 to
-     * 55 degrees aside, outside the camera's 60-degree field, so "a lateral obstacle whose side of
-     * the image is red" (§2.1) never happens. Red ruling a third of the image already means near:
-     * a cylinder 20 cm away fills too little of it.
+     * 55 degrees aside, outside the camera's 60-degree field, so the lateral case of Chapter 4
+     * §2.1 (an object next to the robot's left/right, then the red of the camera's lateral
+     * sections) never happens. Red ruling a third of the image already means near: a cylinder
+     * 20 cm away fills too little of it.
      */
     private void reachLateral(int side) {
         print(side < 0 ? "Left Cylinder" : "Right Cylinder");
