@@ -33,6 +33,8 @@ final class ErrorCollector extends BaseErrorListener {
     private static final Pattern MISSING = Pattern.compile("missing (.*) at (.*)");
     private static final Pattern NO_VIABLE = Pattern.compile("no viable alternative at input (.*)");
     private static final Pattern LEXER = Pattern.compile("token recognition error at: (.*)");
+    /** One token of ANTLR's set: a quoted literal (which may be {@code ','}) or a name. */
+    private static final Pattern TOKEN = Pattern.compile("'(?:[^'\\\\]|\\\\.)*'|[^,\\s{}]+");
 
     ErrorCollector(String file) {
         this.file = file;
@@ -73,8 +75,10 @@ final class ErrorCollector extends BaseErrorListener {
     private static String expected(String tokens) {
         String inner = tokens.startsWith("{") && tokens.endsWith("}") ? tokens.substring(1, tokens.length() - 1) : tokens;
         var words = new LinkedHashSet<String>();
-        for (String t : inner.split(",\\s*")) {
-            words.add(WORDS.getOrDefault(t.trim(), t.trim()));
+        // not split at commas: the token ',' is one of them
+        Matcher t = TOKEN.matcher(inner);
+        while (t.find()) {
+            words.add(WORDS.getOrDefault(t.group(), t.group()));
         }
         var list = new ArrayList<>(words);
         if (list.size() == 1) {

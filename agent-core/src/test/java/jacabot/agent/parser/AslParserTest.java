@@ -109,6 +109,10 @@ class AslParserTest {
         assertTrue(!msg.contains("NS_ATOM") && !msg.contains("VAR,") && !msg.contains("expecting"), msg);
         var extra = assertThrows(AslSyntaxException.class, () -> parser.parse("b(1)).\n", "x.asl"));
         assertEquals("unexpected ')', expected ':-' or '.'", extra.errors().get(0).message());
+        // the token ',' among those expected is named whole, not cut at its own comma
+        var open = assertThrows(AslSyntaxException.class, () -> parser.parseTerm("[x(]"));
+        String said = open.errors().get(0).message();
+        assertTrue(said.contains("'**', ',', '['"), said);
     }
 
     @Test
