@@ -96,13 +96,13 @@ public final class MasLauncher {
                 var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath);
-                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
+                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
-                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
+                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                         }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
@@ -129,9 +129,13 @@ public final class MasLauncher {
     /**
      * The {@code beliefs="b(1), c"} and {@code goals="g"} options of a {@code .mas2j} agent add
      * initial beliefs and goals, before the file's (as Jason 3.2.0 orders them).
+     *
+     * @param project the project file, named in the error when an option cannot be read
+     * @throws UserError {@code PROJECT: agent A's beliefs "x(": cannot read ...}: the
+     *         option's text is read alone, so its own line and column would point nowhere
      */
-    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser)
-            throws AslSyntaxException {
+    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser, Path project)
+            throws UserError {
         String beliefs = spec.options().get("beliefs");
         String goals = spec.options().get("goals");
         if (beliefs == null && goals == null) {
@@ -140,13 +144,11 @@ public final class MasLauncher {
         var bs = new ArrayList<Object>();
         var gs = new ArrayList<Literal>();
         if (beliefs != null && !beliefs.isBlank()) {
-            for (Term t : termsOf(parser, beliefs)) {
-                bs.add(t);
-            }
+            bs.addAll(optionTerms(parser, beliefs, "beliefs", spec, project));
         }
         bs.addAll(p.beliefs());
         if (goals != null && !goals.isBlank()) {
-            for (Term t : termsOf(parser, goals)) {
+            for (Term t : optionTerms(parser, goals, "goals", spec, project)) {
                 gs.add((Literal) t);
             }
         }
@@ -157,6 +159,18 @@ public final class MasLauncher {
     private static AgentProgram adapted(ProjectReader reader, MasProject.AgentSpec spec, AgentProgram p, AslParser parser)
             throws UserError {
         return reader == null ? p : reader.adapt(spec, p, parser);
+    }
+
+    private static List<Term> optionTerms(AslParser parser, String text, String option, MasProject.AgentSpec spec,
+            Path project) throws UserError {
+        try {
+            return termsOf(parser, text);
+        } catch (AslSyntaxException e) {
+            // the first error, without the position inside the option's text read as a term
+            String why = e.errors().isEmpty() ? e.getMessage() : e.errors().get(0).message();
+            throw new UserError(project + ": agent " + spec.name() + "'s " + option + " \"" + text.strip()
+                    + "\": " + why);
+        }
     }
 
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {

@@ -1,6 +1,7 @@
 package jacabot.agent.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -215,6 +216,17 @@ class LocalMASTest {
         assertEquals(List.of("[ag1] 1 c", "[ag1] h1"), got.stream().filter(l -> l.startsWith("[ag1]")).collect(Collectors.toList()));
         assertTrue(got.contains("[ag2] 1 c") && got.contains("[ag2] h1"), got.toString());
         assertTrue(got.stream().noneMatch(l -> l.startsWith("[other] 1")), "other has no option beliefs: " + got);
+    }
+
+    /** An option that does not read is told with the project and the agent, not as a nameless {@code <term>:1:3}. */
+    @Test
+    void anOptionThatDoesNotReadNamesTheProjectAndTheAgent(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("ag.asl"), "!g.\n+!g <- .stopMAS.\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: ag [beliefs=\"b(1), c(\"];\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertTrue(e.getMessage().startsWith(dir.resolve("p.mas2j") + ": agent ag's beliefs \"b(1), c(\": "), e.getMessage());
+        assertFalse(e.getMessage().contains("<term>") || e.getMessage().contains("\n"), e.getMessage());
     }
 
     /** CArtAgO's remote examples give the environment a structure: it reaches the class as its text. */
