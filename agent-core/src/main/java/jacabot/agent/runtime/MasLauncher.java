@@ -95,7 +95,7 @@ public final class MasLauncher {
                 SourceResolver resolver = includes.apply(sourcePath);
                 var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
-                    Path asl = locate(spec.file(), sourcePath);
+                    Path asl = locate(spec.file(), sourcePath, file);
                     AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
@@ -198,14 +198,22 @@ public final class MasLauncher {
         }
     }
 
-    private static Path locate(String file, List<Path> sourcePath) throws UserError {
+    private static Path locate(String file, List<Path> sourcePath, Path project) throws UserError {
         for (Path dir : sourcePath) {
             Path p = dir.resolve(file);
             if (Files.isRegularFile(p)) {
                 return p;
             }
         }
-        throw new UserError("agent source '" + file + "' not found in " + sourcePath);
+        // the folders as the user wrote them, relative to here: no absolute path of this machine when not needed
+        Path here = Path.of("").toAbsolutePath();
+        var looked = new ArrayList<String>();
+        for (Path dir : sourcePath) {
+            Path a = dir.toAbsolutePath().normalize();
+            String shown = a.startsWith(here) ? here.relativize(a).toString() : a.toString();
+            looked.add(shown.isEmpty() ? "." : shown);
+        }
+        throw new UserError(project + ": agent source '" + file + "' not found (looked in " + String.join(", ", looked) + ")");
     }
 
     private static <T> T newInstance(String className, Class<T> type) throws UserError {

@@ -229,6 +229,15 @@ class LocalMASTest {
         assertFalse(e.getMessage().contains("<term>") || e.getMessage().contains("\n"), e.getMessage());
     }
 
+    /** A source a project names that is nowhere is told with the project and where it was looked for. */
+    @Test
+    void aMissingSourceNamesTheProjectAndTheFolders(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: nobody;\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertEquals(dir.resolve("p.mas2j") + ": agent source 'nobody.asl' not found (looked in " + dir + ")", e.getMessage());
+    }
+
     /** CArtAgO's remote examples give the environment a structure: it reaches the class as its text. */
     @Test
     void environmentArgumentsMayBeStructures(@TempDir Path dir) throws Exception {
