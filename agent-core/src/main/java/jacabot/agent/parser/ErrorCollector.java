@@ -32,7 +32,7 @@ final class ErrorCollector extends BaseErrorListener {
             Map.entry("NS_ATOM", "a namespace (ns::)"), Map.entry("NS_VAR", "a namespace (ns::)"),
             Map.entry("NUMBER", "a number"), Map.entry("STRING", "a string"), Map.entry("RBRACE", "'}'"),
             Map.entry("<EOF>", "the end of the file"), Map.entry("EOF", "the end of the file"),
-            Map.entry("ERROR_CHAR", "a character"));
+            Map.entry("ERROR_CHAR", "a character"), Map.entry("ID", "a name"));
 
     private static final int MAX_EXPECTED = 12;
     private static final Pattern INPUT = Pattern.compile("(?:mismatched|extraneous) input (.*) expecting (.*)");

@@ -247,6 +247,15 @@ class LocalMASTest {
         assertEquals(List.of("standalone", "protocol(lipermi)", "3", "-1"), project.environmentArgs());
     }
 
+    /** A project's syntax errors are said as an agent's are, not with ANTLR's token sets. */
+    @Test
+    void aProjectsSyntaxErrorIsSaidInOurWords(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a beliefs=\"x\";\n}\n");
+        var e = assertThrows(AslSyntaxException.class, () -> Mas2jReader.read(dir.resolve("p.mas2j")));
+        assertTrue(e.getMessage().startsWith(dir.resolve("p.mas2j") + ":2:19: error: unexpected '=', expected "), e.getMessage());
+        assertFalse(e.getMessage().contains("expecting") || e.getMessage().contains("{"), e.getMessage());
+    }
+
     @Test
     void anInfrastructureOtherThanLocalIsRefused(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n infrastructure: Jade\n agents: a;\n}\n");
