@@ -20,6 +20,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Builds a {@link LocalMAS} from a {@code .mas2j} project or a single {@code .asl} file (a
@@ -166,8 +168,12 @@ public final class MasLauncher {
         try {
             return termsOf(parser, text);
         } catch (AslSyntaxException e) {
-            // the first error, without the position inside the option's text read as a term
+            // the first error, without the position inside the option's text read as a term: the
+            // text is read as "[TEXT]", so its ']' and its columns (one on) are not the user's
             String why = e.errors().isEmpty() ? e.getMessage() : e.errors().get(0).message();
+            why = why.replace("before ']'", "before the option's end");
+            Matcher at = Pattern.compile(" at 1:(\\d+)").matcher(why);
+            why = at.find() ? at.replaceFirst(" at column " + (Integer.parseInt(at.group(1)) - 1)) : why;
             throw new UserError(project + ": agent " + spec.name() + "'s " + option + " \"" + text.strip()
                     + "\": " + why);
         }

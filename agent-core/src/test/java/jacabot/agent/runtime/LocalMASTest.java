@@ -227,6 +227,7 @@ class LocalMASTest {
         var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
         assertTrue(e.getMessage().startsWith(dir.resolve("p.mas2j") + ": agent ag's beliefs \"b(1), c(\": "), e.getMessage());
         assertFalse(e.getMessage().contains("<term>") || e.getMessage().contains("\n"), e.getMessage());
+        assertTrue(e.getMessage().endsWith("expected ')' before the option's end: the '(' at column 8 is not closed"), e.getMessage());
     }
 
     /** A source a project names that is nowhere is told with the project and where it was looked for. */
