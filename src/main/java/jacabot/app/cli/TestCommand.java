@@ -106,7 +106,8 @@ final class TestCommand implements Callable<Integer> {
         return switch (c.status()) {
             case PASSED -> "  passed  " + who + what;
             case FAILED -> "  FAILED  " + who + what + ": " + c.message();
-            case ERROR -> "  ERROR   " + who + what + ": " + c.message();
+            // a message of several lines (each error of a file that does not read) stays under its test
+            case ERROR -> "  ERROR   " + who + what + ": " + c.message().replace("\n", "\n          ");
         };
     }
 

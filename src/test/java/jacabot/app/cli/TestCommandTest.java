@@ -36,6 +36,22 @@ class TestCommandTest {
                 .contains("failures=\"1\""));
     }
 
+    /** A test file that does not read is an ERROR whose every error line stays indented under it. */
+    @Test
+    void aFileThatDoesNotReadIsAnErrorIndentedUnderItsUnit(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("t.asl"), """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_a <- !assert_true(true) ?x.
+                @[test]
+                +!test_b <- !assert_true(true) ?y.
+                """);
+        String[] r = CliRun.run("test", dir.toString());
+        assertEquals("1", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains("  ERROR   (run): "), r[1]);
+        assertTrue(r[1].lines().filter(l -> l.contains("t.asl:")).allMatch(l -> l.startsWith("  ")), r[1]);
+    }
+
     @Test
     void noTestsIsAUserError(@TempDir Path dir) {
         String[] r = CliRun.run("test", dir.toString());
