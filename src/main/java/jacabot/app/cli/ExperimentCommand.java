@@ -523,7 +523,7 @@ final class ExperimentCommand implements Callable<Integer> {
         @Override
         public Experiment convert(String value) {
             return Experiment.parse(value).orElseThrow(() -> new TypeConversionException("unknown experiment '" + value
-                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up)"));
+                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up, 1-5; or team-delivery)"));
         }
     }
 }
