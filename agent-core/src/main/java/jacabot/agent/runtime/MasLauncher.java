@@ -68,6 +68,18 @@ public final class MasLauncher {
 
     /** Loads the system described by a file. */
     public LocalMAS load(Path file) throws UserError {
+        if (Files.isDirectory(file)) {
+            // a newcomer's first try is the example's folder: name the projects in it
+            var projects = new ArrayList<String>();
+            try (var in = Files.list(file)) {
+                in.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".mas2j") || n.endsWith(".jcm")).sorted()
+                        .forEach(n -> projects.add(file.resolve(n).toString()));
+            } catch (IOException e) {
+                // as a folder without projects
+            }
+            throw new UserError(file + ": a folder, not a project: "
+                    + (projects.isEmpty() ? "give a .mas2j, a .jcm or an .asl file" : "run " + String.join(" or ", projects)));
+        }
         if (!Files.isRegularFile(file)) {
             throw new UserError(file + ": no such file");
         }

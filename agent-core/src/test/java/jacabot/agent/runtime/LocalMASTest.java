@@ -230,6 +230,16 @@ class LocalMASTest {
         assertTrue(e.getMessage().endsWith("expected ')' before the option's end: the '(' at column 8 is not closed"), e.getMessage());
     }
 
+    /** A folder given as the project names the projects in it. */
+    @Test
+    void aFolderNamesItsProjects(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("b.mas2j"), "MAS b {\n agents: a;\n}\n");
+        Files.writeString(dir.resolve("a.jcm"), "mas a {\n agent a\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir));
+        assertEquals(dir + ": a folder, not a project: run " + dir.resolve("a.jcm") + " or " + dir.resolve("b.mas2j"), e.getMessage());
+    }
+
     /** A source a project names that is nowhere is told with the project and where it was looked for. */
     @Test
     void aMissingSourceNamesTheProjectAndTheFolders(@TempDir Path dir) throws Exception {
