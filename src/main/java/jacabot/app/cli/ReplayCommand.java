@@ -111,6 +111,9 @@ final class ReplayCommand implements Callable<Integer> {
                 throw new UserError(e.getMessage());
             }
         }
+        if (frames < 0) {
+            throw new UserError("--frames " + frames + ": a number of pictures, 1 or more");
+        }
         Long atMs = null;
         if (at != null) {
             // told before the step log is read, not after its summary

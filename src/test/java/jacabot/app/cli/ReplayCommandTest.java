@@ -36,6 +36,7 @@ class ReplayCommandTest {
         assertEquals("2", bad[0], bad[1]);
         assertTrue(bad[2].contains("--at: bad duration 'soon'") && bad[1].isEmpty(), bad[2]);
         assertTrue(CliRun.run("replay", run.toString(), "--headless", "--at", "5s")[1].contains("Mind at t=4.96 s"));
+        assertEquals("2", CliRun.run("replay", run.toString(), "--headless", "--frames", "-1")[0]);
 
         Files.delete(run.resolve("speed.png"));
         String[] p = CliRun.run("plot", run.toString());
