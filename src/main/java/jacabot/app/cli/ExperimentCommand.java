@@ -445,15 +445,19 @@ final class ExperimentCommand implements Callable<Integer> {
         return (dot > 0 ? n.substring(0, dot) : n).replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
+    /** {@return why a directory could not be made, in a few words} */
+    static String whyNot(IOException e) {
+        return e instanceof FileAlreadyExistsException ? "a file of that name exists"
+                : e instanceof AccessDeniedException ? "permission denied"
+                : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
+    }
+
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
     private static void prepareOut(Path dir) {
         try {
             Files.createDirectories(dir);
         } catch (IOException e) {
-            String why = e instanceof FileAlreadyExistsException ? "a file of that name exists"
-                    : e instanceof AccessDeniedException ? "permission denied"
-                    : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
-            throw new UserError("--out " + dir + ": cannot make the directory (" + why + "); choose another with --out DIR");
+            throw new UserError("--out " + dir + ": cannot make the directory (" + whyNot(e) + "); choose another with --out DIR");
         }
         if (!Files.isWritable(dir)) {
             throw new UserError("--out " + dir + ": not writable; choose another with --out DIR");
@@ -523,7 +527,7 @@ final class ExperimentCommand implements Callable<Integer> {
         @Override
         public Experiment convert(String value) {
             return Experiment.parse(value).orElseThrow(() -> new TypeConversionException("unknown experiment '" + value
-                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up)"));
+                    + "' (expected one of obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up, 1-5; or team-delivery)"));
         }
     }
 }

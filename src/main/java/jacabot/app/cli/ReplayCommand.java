@@ -111,6 +111,18 @@ final class ReplayCommand implements Callable<Integer> {
                 throw new UserError(e.getMessage());
             }
         }
+        if (frames < 0) {
+            throw new UserError("--frames " + frames + ": a number of pictures, 1 or more");
+        }
+        Long atMs = null;
+        if (at != null) {
+            // told before the step log is read, not after its summary
+            try {
+                atMs = Math.round(ExperimentCommand.parseDuration(at) * 1000);
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--at: " + e.getMessage());
+            }
+        }
         Replay replay;
         try {
             replay = Replay.open(dir);
@@ -120,8 +132,13 @@ final class ReplayCommand implements Callable<Integer> {
         if (replay.frames().isEmpty()) {
             throw new UserError(dir + ": the step log has no step");
         }
+        long endMs = replay.frames().get(replay.frames().size() - 1).timeMs() + replay.header().controlStep();
+        if (atMs != null && atMs > endMs) {
+            // the last step is one control step before the end its summary tells (599.96 s of a 600 s run)
+            throw new UserError(String.format("--at %s: after the run's end (%.1f s simulated)", at, endMs / 1000.0));
+        }
         if (!window) {
-            return headlessReplay(replay);
+            return headlessReplay(replay, atMs);
         }
         Inspector inspector = inspectorOptions.start(true, "replay of " + dir, out, this::warn);
         var history = inspector == null ? null : inspector.add("robot");
@@ -214,7 +231,7 @@ final class ReplayCommand implements Callable<Integer> {
         }
     }
 
-    private int headlessReplay(Replay replay) throws IOException {
+    private int headlessReplay(Replay replay, Long atMs) throws IOException {
         var h = replay.header();
         var all = replay.frames();
         var last = all.get(all.size() - 1);
@@ -242,14 +259,8 @@ final class ReplayCommand implements Callable<Integer> {
                 selections, plans.size());
         plans.entrySet().stream().sorted(Map.Entry.<String, Integer>comparingByValue().reversed()).limit(5)
                 .forEach(e -> out.printf("  %6d x %s%n", e.getValue(), e.getKey()));
-        if (at != null) {
-            double seconds;
-            try {
-                seconds = ExperimentCommand.parseDuration(at);
-            } catch (IllegalArgumentException e) {
-                throw new UserError("--at: " + e.getMessage());
-            }
-            printMind(replay, replay.indexAt(Math.round(seconds * 1000)));
+        if (atMs != null) {
+            printMind(replay, replay.indexAt(atMs));
         }
         if (frames > 0) {
             Path frameDir = (Files.isDirectory(dir) ? dir : dir.getParent()).resolve("frames");

@@ -121,13 +121,13 @@ final class SweepCommand implements Callable<Integer> {
         int shardIndex = 1, shards = 1;
         try {
             if (experiment == null) {
-                throw new IllegalArgumentException("which experiment? (obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up or all)");
+                throw new IllegalArgumentException("which experiment? (obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up, all or team-delivery)");
             }
             if (experiment.equals("all")) {
                 experiments = Experiment.thesis();
             } else {
                 experiments = List.of(Experiment.parse(experiment).orElseThrow(() -> new IllegalArgumentException(
-                        "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up or all)")));
+                        "unknown experiment '" + experiment + "' (expected obstacle-avoidance, object-picking, navigation, suspend-resume, tidy-up, all or team-delivery)")));
             }
             seconds = ExperimentCommand.parseDuration(duration);
             wallLimit = ExperimentCommand.parseDuration(timeout);

@@ -7,6 +7,7 @@ import jacabot.cartago.bridge.ProjectClasses;
 import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -57,6 +58,14 @@ final class TestCommand implements Callable<Integer> {
             throw new UserError("--timeout must be positive, got " + timeoutSeconds);
         }
         List<Path> units;
+        if (junit != null) {
+            // told before the tests run, not as an unexpected failure after the first one
+            try {
+                Files.createDirectories(junit);
+            } catch (IOException e) {
+                throw new UserError("--junit " + junit + ": cannot make the directory (" + ExperimentCommand.whyNot(e) + ")");
+            }
+        }
         try {
             units = AslTestRunner.discover(paths);
         } catch (IOException e) {
@@ -106,7 +115,8 @@ final class TestCommand implements Callable<Integer> {
         return switch (c.status()) {
             case PASSED -> "  passed  " + who + what;
             case FAILED -> "  FAILED  " + who + what + ": " + c.message();
-            case ERROR -> "  ERROR   " + who + what + ": " + c.message();
+            // a message of several lines (each error of a file that does not read) stays under its test
+            case ERROR -> "  ERROR   " + who + what + ": " + c.message().replace("\n", "\n          ");
         };
     }
 

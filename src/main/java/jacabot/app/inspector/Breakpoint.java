@@ -49,6 +49,10 @@ public record Breakpoint(String kind, String text, Pattern event, Pattern belief
     /** A term pattern: {@code f} any {@code f(...)}; {@code f(a, _)} with {@code _} any term; annotations allowed. */
     private static Pattern term(String t) {
         String p = t.trim();
+        // an unclosed pattern would be taken and never match: the run would never halt
+        if (count(p, '(') != count(p, ')') || count(p, '[') != count(p, ']')) {
+            throw new IllegalArgumentException("'" + p + "': its parentheses or brackets do not close");
+        }
         if (!p.contains("(")) {
             return Pattern.compile(Pattern.quote(p) + "(\\(.*\\))?(\\[.*\\])?");
         }
@@ -60,6 +64,10 @@ public record Breakpoint(String kind, String text, Pattern event, Pattern belief
             out.append(Pattern.quote(part.replace(" ", "")));
         }
         return Pattern.compile(out + "(\\[.*\\])?");
+    }
+
+    private static long count(String s, char c) {
+        return s.chars().filter(x -> x == c).count();
     }
 
     private static long millis(String d) {

@@ -72,6 +72,9 @@ public final class DebugConsole {
             } else if (c.startsWith("d ")) {
                 out.println(d.remove(c.substring(2)) ? "  deleted" : "  no breakpoint " + c.substring(2));
             } else if (c.equals("l")) {
+                if (d.breakpoints().isEmpty()) {
+                    out.println("  no breakpoints (a time one is gone once reached)");
+                }
                 d.breakpoints().forEach(b -> out.println("  " + b.text()));
             } else if (c.equals("p") && h != null) {
                 MindText.print(h.mind(), out);

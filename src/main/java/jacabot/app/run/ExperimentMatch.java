@@ -60,8 +60,10 @@ public final class ExperimentMatch {
         ofWorld(worldName).filter(w -> w != experiment).ifPresent(w -> warnings.add(worldFile + " is a world of experiment "
                 + w.number() + " (" + w + "), not of " + experiment + "; its landmarks and robot may not suit this agent "
                 + "(jacabot experiment " + w + " runs it)"));
+        String own = Middlewares.of(experiment).getSimpleName();
         for (String made : middlewaresMadeBy(agentSource)) {
-            ofMiddleware(made).filter(a -> a != experiment).ifPresent(a -> warnings.add(agentFile + " is written for "
+            // by the class, not the experiment: tidy-up's agent makes the SuspendResumeMiddleware, its own too
+            ofMiddleware(made).filter(a -> !made.equals(own)).ifPresent(a -> warnings.add(agentFile + " is written for "
                     + "experiment " + a.number() + " (" + a + ": it makes the " + made + "), but runs here with the "
                     + Middlewares.of(experiment).getSimpleName() + " of " + experiment
                     + "; its percepts and actions may not match"));
@@ -78,7 +80,7 @@ public final class ExperimentMatch {
         Optional<Experiment> project = Experiment.parse(masName.replace('_', '-'));
         for (String made : middlewares) {
             var of = ofMiddleware(made);
-            if (project.isPresent() && of.isPresent() && of.get() != project.get()) {
+            if (project.isPresent() && of.isPresent() && !made.equals(Middlewares.of(project.get()).getSimpleName())) {
                 warnings.add(projectFile + ": the project '" + masName + "' makes the " + made + " of experiment "
                         + of.get().number() + " (" + of.get() + "); its controller must then run a world of " + of.get()
                         + " (jacabot controller --world worlds/" + of.get().id() + ".json)");

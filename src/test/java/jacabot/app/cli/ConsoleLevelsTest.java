@@ -94,6 +94,10 @@ class ConsoleLevelsTest {
                 + "ObstacleAvoidanceMiddleware), but runs here with the NavigationMiddleware of navigation"), mixed[2]);
         String[] fine = CliRun.run("experiment", "navigation", "--headless", "--duration", "1s", "--out", dir.toString());
         assertFalse(fine[2].contains("warning"), fine[2]);
+        // tidy-up's own agent makes the middleware tidy-up shares with suspend-resume: no mix-up
+        String[] tidy = CliRun.run("experiment", "tidy-up", "--headless", "--duration", "1s", "--out", dir.toString());
+        assertEquals("0", tidy[0], tidy[2]);
+        assertFalse(tidy[2].contains("warning"), tidy[2]);
     }
 
     @Test

@@ -25,6 +25,13 @@ class NewcomerMessagesTest {
         assertError(CliRun.run("sweep", "navigation", "--seed", "3"), "2", "did you mean --seeds?");
     }
 
+    /** An unknown experiment's list names the team's too, which has its own command line. */
+    @Test
+    void anUnknownExperimentListsTheTeamToo() {
+        assertError(CliRun.run("experiment", "team-deliver"), "2", "; or team-delivery)");
+        assertError(CliRun.run("sweep", "team-deliver"), "2", "all or team-delivery)");
+    }
+
     @Test
     void worldRenderErrorsSayError(@TempDir Path dir) {
         assertError(CliRun.run("world", "render", dir.resolve("none.json").toString(), "--out", dir.resolve("x.png").toString()),

@@ -29,6 +29,15 @@ class ReplayCommandTest {
         assertTrue(r[1].matches("(?s).*intentions:\\R\\s+intention \\d+ .*"), r[1]); // which ones run at 3 s is the agent's business
         assertTrue(Files.isRegularFile(run.resolve("frames/frame-0002.png")), r[1]);
 
+        String[] after = CliRun.run("replay", run.toString(), "--headless", "--at", "9s");
+        assertEquals("2", after[0], after[1]);
+        assertTrue(after[2].contains("--at 9s: after the run's end (5.0 s simulated)") && after[1].isEmpty(), after[2]);
+        String[] bad = CliRun.run("replay", run.toString(), "--headless", "--at", "soon");
+        assertEquals("2", bad[0], bad[1]);
+        assertTrue(bad[2].contains("--at: bad duration 'soon'") && bad[1].isEmpty(), bad[2]);
+        assertTrue(CliRun.run("replay", run.toString(), "--headless", "--at", "5s")[1].contains("Mind at t=4.96 s"));
+        assertEquals("2", CliRun.run("replay", run.toString(), "--headless", "--frames", "-1")[0]);
+
         Files.delete(run.resolve("speed.png"));
         String[] p = CliRun.run("plot", run.toString());
         assertEquals("0", p[0], p[2]);

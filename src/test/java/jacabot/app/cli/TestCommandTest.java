@@ -36,6 +36,33 @@ class TestCommandTest {
                 .contains("failures=\"1\""));
     }
 
+    /** A test file that does not read is an ERROR whose every error line stays indented under it. */
+    @Test
+    void aFileThatDoesNotReadIsAnErrorIndentedUnderItsUnit(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("t.asl"), """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_a <- !assert_true(true) ?x.
+                @[test]
+                +!test_b <- !assert_true(true) ?y.
+                """);
+        String[] r = CliRun.run("test", dir.toString());
+        assertEquals("1", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains("  ERROR   (run): "), r[1]);
+        assertTrue(r[1].lines().filter(l -> l.contains("t.asl:")).allMatch(l -> l.startsWith("  ")), r[1]);
+    }
+
+    /** A --junit folder that cannot be made is told first, as a usage error, before any test runs. */
+    @Test
+    void aJunitFolderThatCannotBeMadeIsAUserError(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("taken"), "a file, not a folder");
+        Path examples = Path.of(System.getProperty("jacabot.rootDir", "."), "examples", "asl-tests");
+        String[] r = CliRun.run("test", examples.toString(), "--junit", dir.resolve("taken").toString());
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("--junit " + dir.resolve("taken") + ": cannot make the directory (a file of that name exists)"), r[2]);
+        assertTrue(r[1].isEmpty(), r[1]);
+    }
+
     @Test
     void noTestsIsAUserError(@TempDir Path dir) {
         String[] r = CliRun.run("test", dir.toString());

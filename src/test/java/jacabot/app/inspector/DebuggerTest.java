@@ -166,6 +166,23 @@ class DebuggerTest {
         assertEquals(120_000, Breakpoint.parse("t=2m").timeMs());
         var e = assertThrows(IllegalArgumentException.class, () -> Breakpoint.parse("avoidFront"));
         assertTrue(e.getMessage().contains("label:NAME"), e.getMessage());
+        var open = assertThrows(IllegalArgumentException.class, () -> Breakpoint.parse("belief:at(_,"));
+        assertTrue(open.getMessage().contains("'at(_,': its parentheses or brackets do not close"), open.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> Breakpoint.parse("+!pick(c1"));
+    }
+
+    /** The console's {@code l} says so when there is no breakpoint left, rather than printing nothing. */
+    @Test
+    void theConsoleListsBreakpointsOrSaysThereAreNone() {
+        var d = new Debugger();
+        var bytes = new java.io.ByteArrayOutputStream();
+        var out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        DebugConsole.command(d, "l", out);
+        assertTrue(bytes.toString(StandardCharsets.UTF_8).contains("no breakpoints"), bytes.toString(StandardCharsets.UTF_8));
+        bytes.reset();
+        DebugConsole.command(d, "b +!pick", out);
+        DebugConsole.command(d, "l", out);
+        assertEquals("  breakpoint +!pick\n  +!pick\n", bytes.toString(StandardCharsets.UTF_8).replace("\r", ""));
     }
 
     private static Debugger.Halt await(Debugger d) throws InterruptedException {

@@ -42,6 +42,7 @@ class InspectorServerTest {
 
             String page = get(client, inspector.address().toString());
             assertTrue(page.contains("<title>") && page.contains("/api/stream"), page);
+            assertTrue(page.contains("<link rel=\"icon\" href=\"data:,\">"), "no favicon request that would be refused: " + page);
             assertEquals("[\"robot\"]", get(client, inspector.url("api/agents")));
             String latest = get(client, inspector.url("api/state?agent=robot"));
             assertTrue(latest.contains("at(2)") && latest.contains("\"unifier\":\"{X=1}\""), latest);

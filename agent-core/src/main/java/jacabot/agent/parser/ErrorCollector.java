@@ -1,15 +1,21 @@
 package jacabot.agent.parser;
 
 import jacabot.agent.syntax.SourceInfo;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.antlr.v4.runtime.BaseErrorListener;
+import org.antlr.v4.runtime.BufferedTokenStream;
+import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
+import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.TokenStream;
 
 /**
  * The one funnel for lexer and parser errors: each becomes a {@link SyntaxError} with its
@@ -26,23 +32,110 @@ final class ErrorCollector extends BaseErrorListener {
             Map.entry("NS_ATOM", "a namespace (ns::)"), Map.entry("NS_VAR", "a namespace (ns::)"),
             Map.entry("NUMBER", "a number"), Map.entry("STRING", "a string"), Map.entry("RBRACE", "'}'"),
             Map.entry("<EOF>", "the end of the file"), Map.entry("EOF", "the end of the file"),
-            Map.entry("ERROR_CHAR", "a character"));
+            Map.entry("ERROR_CHAR", "a character"), Map.entry("ID", "a name"));
 
     private static final int MAX_EXPECTED = 12;
     private static final Pattern INPUT = Pattern.compile("(?:mismatched|extraneous) input (.*) expecting (.*)");
     private static final Pattern MISSING = Pattern.compile("missing (.*) at (.*)");
     private static final Pattern NO_VIABLE = Pattern.compile("no viable alternative at input (.*)");
     private static final Pattern LEXER = Pattern.compile("token recognition error at: (.*)");
+    /** One token of ANTLR's set: a quoted literal (which may be {@code ','}) or a name. */
+    private static final Pattern TOKEN = Pattern.compile("'(?:[^'\\\\]|\\\\.)*'|[^,\\s{}]+");
 
     ErrorCollector(String file) {
         this.file = file;
     }
 
+    /** Set once a string left open is told: the errors after it are its consequences. */
+    private boolean openString;
+    /** The token where an open bracket was told: ANTLR's errors up to it are its consequences. */
+    private int quietUntil = -1;
+
     @Override
     public void syntaxError(Recognizer<?, ?> recognizer, Object offendingSymbol, int line, int col,
             String msg, RecognitionException e) {
+        if (openString) {
+            return;
+        }
+        if (recognizer instanceof Parser parser && offendingSymbol instanceof Token at) {
+            if (at.getTokenIndex() <= quietUntil) {
+                return;
+            }
+            // ANTLR tells these where its prediction began (an opening '(' that is fine), not
+            // where the text went wrong: said at the cause instead
+            if (parser.getTokenStream() instanceof BufferedTokenStream all) {
+                all.fill(); // the rest of the text too: the cause may come after the token told
+            }
+            Token quote = strayQuote(parser.getTokenStream(), at);
+            if (quote != null) {
+                openString = true;
+                errors.add(new SyntaxError(new SourceInfo(file, quote.getLine(), quote.getCharPositionInLine() + 1),
+                        "a string is not closed on its line (a '\"' is missing)"));
+                return;
+            }
+            if (NO_VIABLE.matcher(msg).matches()) {
+                Token cause = unclosed(parser.getTokenStream(), at);
+                if (cause != null) {
+                    quietUntil = cause.getTokenIndex();
+                    return;
+                }
+            }
+        }
         errors.add(new SyntaxError(new SourceInfo(file, line, col + 1), inAgentSpeak(msg, recognizer, e)));
     }
+
+    /** {@return a lone '"' (the lexer's one-character token) up to the offending token's line, or null} */
+    private static Token strayQuote(TokenStream tokens, Token at) {
+        for (int i = 0; i < tokens.size(); i++) {
+            Token t = tokens.get(i);
+            if (t.getType() == Token.EOF || t.getLine() > at.getLine()) {
+                return null;
+            }
+            if (t.getType() == AgentSpeakLexer.ERROR_CHAR && "\"".equals(t.getText())) {
+                return t;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * {@return the error at the token that comes where the '(' or '[' {@code open} should have
+     * been closed (a ';', '<-', ':-', the clause's '.', the end of the file, a bracket of the other
+     * kind), told as an error; or null when it is closed}
+     */
+    private Token unclosed(TokenStream tokens, Token open) {
+        if (!open.getText().equals("(") && !open.getText().equals("[")) {
+            return null;
+        }
+        var stack = new ArrayDeque<Token>();
+        for (int i = open.getTokenIndex(); i < tokens.size(); i++) {
+            Token t = tokens.get(i);
+            String x = t.getType() == Token.EOF ? "<EOF>" : t.getText();
+            Token top = stack.peek();
+            if (CLOSES.containsValue(x)) {
+                stack.push(t);
+            } else if (CLOSES.containsKey(x) && top != null && CLOSES.get(x).equals(top.getText())) {
+                stack.pop();
+                if (stack.isEmpty()) {
+                    return null;
+                }
+            } else if (top != null && !top.getText().equals("{") && (CLOSES.containsKey(x) || ENDS.contains(x))) {
+                String closer = top.getText().equals("(") ? ")" : "]";
+                errors.add(new SyntaxError(new SourceInfo(file, t.getLine(), t.getCharPositionInLine() + 1),
+                        "expected '" + closer + "' before '" + x + "': the '" + top.getText() + "' at " + top.getLine()
+                                + ":" + (top.getCharPositionInLine() + 1) + " is not closed"));
+                return t;
+            } else if (CLOSES.containsKey(x) || ENDS.contains(x) && top == null) {
+                return null;
+            }
+        }
+        return null;
+    }
+
+    /** What closes what. */
+    private static final Map<String, String> CLOSES = Map.of(")", "(", "]", "[", "}", "{");
+    /** Tokens that never come inside an open '(' or '[' (a plan term's braces aside). */
+    private static final Set<String> ENDS = Set.of(";", "<-", ":-", ".", "<EOF>");
 
     /** {@return ANTLR's message said with AgentSpeak's words} */
     static String inAgentSpeak(String msg, Recognizer<?, ?> recognizer, RecognitionException e) {
@@ -73,8 +166,10 @@ final class ErrorCollector extends BaseErrorListener {
     private static String expected(String tokens) {
         String inner = tokens.startsWith("{") && tokens.endsWith("}") ? tokens.substring(1, tokens.length() - 1) : tokens;
         var words = new LinkedHashSet<String>();
-        for (String t : inner.split(",\\s*")) {
-            words.add(WORDS.getOrDefault(t.trim(), t.trim()));
+        // not split at commas: the token ',' is one of them
+        Matcher t = TOKEN.matcher(inner);
+        while (t.find()) {
+            words.add(WORDS.getOrDefault(t.group(), t.group()));
         }
         var list = new ArrayList<>(words);
         if (list.size() == 1) {

@@ -29,7 +29,7 @@ public final class Mas2jReader {
         var listener = new BaseErrorListener() {
             @Override
             public void syntaxError(Recognizer<?, ?> r, Object o, int line, int col, String msg, RecognitionException e) {
-                errors.add(new SyntaxError(new SourceInfo(file.toString(), line, col + 1), msg));
+                errors.add(new SyntaxError(new SourceInfo(file.toString(), line, col + 1), SyntaxError.inOurWords(msg, r, e)));
             }
         };
         var lexer = new Mas2jLexer(CharStreams.fromString(text));

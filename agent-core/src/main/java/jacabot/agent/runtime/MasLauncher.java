@@ -20,6 +20,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Builds a {@link LocalMAS} from a {@code .mas2j} project or a single {@code .asl} file (a
@@ -66,6 +68,18 @@ public final class MasLauncher {
 
     /** Loads the system described by a file. */
     public LocalMAS load(Path file) throws UserError {
+        if (Files.isDirectory(file)) {
+            // a newcomer's first try is the example's folder: name the projects in it
+            var projects = new ArrayList<String>();
+            try (var in = Files.list(file)) {
+                in.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".mas2j") || n.endsWith(".jcm")).sorted()
+                        .forEach(n -> projects.add(file.resolve(n).toString()));
+            } catch (IOException e) {
+                // as a folder without projects
+            }
+            throw new UserError(file + ": a folder, not a project: "
+                    + (projects.isEmpty() ? "give a .mas2j, a .jcm or an .asl file" : "run " + String.join(" or ", projects)));
+        }
         if (!Files.isRegularFile(file)) {
             throw new UserError(file + ": no such file");
         }
@@ -95,14 +109,14 @@ public final class MasLauncher {
                 SourceResolver resolver = includes.apply(sourcePath);
                 var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
-                    Path asl = locate(spec.file(), sourcePath);
-                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
+                    Path asl = locate(spec.file(), sourcePath, file);
+                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
                         String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
-                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser), parser);
+                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                         }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
@@ -129,9 +143,13 @@ public final class MasLauncher {
     /**
      * The {@code beliefs="b(1), c"} and {@code goals="g"} options of a {@code .mas2j} agent add
      * initial beliefs and goals, before the file's (as Jason 3.2.0 orders them).
+     *
+     * @param project the project file, named in the error when an option cannot be read
+     * @throws UserError {@code PROJECT: agent A's beliefs "x(": cannot read ...}: the
+     *         option's text is read alone, so its own line and column would point nowhere
      */
-    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser)
-            throws AslSyntaxException {
+    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser, Path project)
+            throws UserError {
         String beliefs = spec.options().get("beliefs");
         String goals = spec.options().get("goals");
         if (beliefs == null && goals == null) {
@@ -140,13 +158,11 @@ public final class MasLauncher {
         var bs = new ArrayList<Object>();
         var gs = new ArrayList<Literal>();
         if (beliefs != null && !beliefs.isBlank()) {
-            for (Term t : termsOf(parser, beliefs)) {
-                bs.add(t);
-            }
+            bs.addAll(optionTerms(parser, beliefs, "beliefs", spec, project));
         }
         bs.addAll(p.beliefs());
         if (goals != null && !goals.isBlank()) {
-            for (Term t : termsOf(parser, goals)) {
+            for (Term t : optionTerms(parser, goals, "goals", spec, project)) {
                 gs.add((Literal) t);
             }
         }
@@ -157,6 +173,22 @@ public final class MasLauncher {
     private static AgentProgram adapted(ProjectReader reader, MasProject.AgentSpec spec, AgentProgram p, AslParser parser)
             throws UserError {
         return reader == null ? p : reader.adapt(spec, p, parser);
+    }
+
+    private static List<Term> optionTerms(AslParser parser, String text, String option, MasProject.AgentSpec spec,
+            Path project) throws UserError {
+        try {
+            return termsOf(parser, text);
+        } catch (AslSyntaxException e) {
+            // the first error, without the position inside the option's text read as a term: the
+            // text is read as "[TEXT]", so its ']' and its columns (one on) are not the user's
+            String why = e.errors().isEmpty() ? e.getMessage() : e.errors().get(0).message();
+            why = why.replace("before ']'", "before the option's end");
+            Matcher at = Pattern.compile(" at 1:(\\d+)").matcher(why);
+            why = at.find() ? at.replaceFirst(" at column " + (Integer.parseInt(at.group(1)) - 1)) : why;
+            throw new UserError(project + ": agent " + spec.name() + "'s " + option + " \"" + text.strip()
+                    + "\": " + why);
+        }
     }
 
     private static List<Term> termsOf(AslParser parser, String text) throws AslSyntaxException {
@@ -184,14 +216,22 @@ public final class MasLauncher {
         }
     }
 
-    private static Path locate(String file, List<Path> sourcePath) throws UserError {
+    private static Path locate(String file, List<Path> sourcePath, Path project) throws UserError {
         for (Path dir : sourcePath) {
             Path p = dir.resolve(file);
             if (Files.isRegularFile(p)) {
                 return p;
             }
         }
-        throw new UserError("agent source '" + file + "' not found in " + sourcePath);
+        // the folders as the user wrote them, relative to here: no absolute path of this machine when not needed
+        Path here = Path.of("").toAbsolutePath();
+        var looked = new ArrayList<String>();
+        for (Path dir : sourcePath) {
+            Path a = dir.toAbsolutePath().normalize();
+            String shown = a.startsWith(here) ? here.relativize(a).toString() : a.toString();
+            looked.add(shown.isEmpty() ? "." : shown);
+        }
+        throw new UserError(project + ": agent source '" + file + "' not found (looked in " + String.join(", ", looked) + ")");
     }
 
     private static <T> T newInstance(String className, Class<T> type) throws UserError {

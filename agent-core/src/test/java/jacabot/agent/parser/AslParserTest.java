@@ -101,6 +101,28 @@ class AslParserTest {
         assertTrue(lexical.errors().get(0).toString().startsWith("lex.asl:1:6: error:"), lexical.getMessage());
     }
 
+    /**
+     * A bracket left open or a string left open is told where the text went wrong, once, not as
+     * "cannot read '(' here" at the bracket that opened fine.
+     */
+    @Test
+    void anOpenBracketOrStringIsToldWhereItShouldHaveClosed() {
+        Map<String, String> cases = Map.of(
+                "!start.\n+!start <- .print(\"hi\"; .stopMAS.\n",
+                "m.asl:2:23: error: expected ')' before ';': the '(' at 2:18 is not closed",
+                "+g <- -+x(1.\n", "m.asl:1:12: error: expected ')' before '.': the '(' at 1:10 is not closed",
+                "p(1\n!g.\n", "m.asl:2:3: error: expected ')' before '.': the '(' at 1:2 is not closed",
+                "+!g <- .print([a, b(1); c.\n", "m.asl:1:23: error: expected ']' before ';': the '[' at 1:15 is not closed",
+                "+!g <- .print(\"hi).\n+!h <- true.\n", "m.asl:1:15: error: a string is not closed on its line (a '\"' is missing)");
+        for (var c : cases.entrySet()) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse(c.getKey(), "m.asl"), c.getKey());
+            assertEquals(c.getValue(), e.getMessage(), c.getKey());
+        }
+        // a closed bracket keeps ANTLR's own message
+        var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- .print(\"hi\") .stopMAS.\n", "m.asl"));
+        assertTrue(e.getMessage().startsWith("m.asl:1:21: error: "), e.getMessage());
+    }
+
     @Test
     void syntaxErrorsSayWhatWasExpectedInAgentSpeaksWords() {
         var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- !ns::.\n", "ns.asl"));
@@ -109,6 +131,9 @@ class AslParserTest {
         assertTrue(!msg.contains("NS_ATOM") && !msg.contains("VAR,") && !msg.contains("expecting"), msg);
         var extra = assertThrows(AslSyntaxException.class, () -> parser.parse("b(1)).\n", "x.asl"));
         assertEquals("unexpected ')', expected ':-' or '.'", extra.errors().get(0).message());
+        // the token ',' among those expected is named whole, not cut at its own comma
+        assertEquals("unexpected ';', expected '**', ',' or '['",
+                ErrorCollector.inAgentSpeak("mismatched input ';' expecting {'**', ',', '['}", null, null));
     }
 
     @Test

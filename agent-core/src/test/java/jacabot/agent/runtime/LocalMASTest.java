@@ -1,6 +1,7 @@
 package jacabot.agent.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -217,6 +218,37 @@ class LocalMASTest {
         assertTrue(got.stream().noneMatch(l -> l.startsWith("[other] 1")), "other has no option beliefs: " + got);
     }
 
+    /** An option that does not read is told with the project and the agent, not as a nameless {@code <term>:1:3}. */
+    @Test
+    void anOptionThatDoesNotReadNamesTheProjectAndTheAgent(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("ag.asl"), "!g.\n+!g <- .stopMAS.\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: ag [beliefs=\"b(1), c(\"];\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertTrue(e.getMessage().startsWith(dir.resolve("p.mas2j") + ": agent ag's beliefs \"b(1), c(\": "), e.getMessage());
+        assertFalse(e.getMessage().contains("<term>") || e.getMessage().contains("\n"), e.getMessage());
+        assertTrue(e.getMessage().endsWith("expected ')' before the option's end: the '(' at column 8 is not closed"), e.getMessage());
+    }
+
+    /** A folder given as the project names the projects in it. */
+    @Test
+    void aFolderNamesItsProjects(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("b.mas2j"), "MAS b {\n agents: a;\n}\n");
+        Files.writeString(dir.resolve("a.jcm"), "mas a {\n agent a\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir));
+        assertEquals(dir + ": a folder, not a project: run " + dir.resolve("a.jcm") + " or " + dir.resolve("b.mas2j"), e.getMessage());
+    }
+
+    /** A source a project names that is nowhere is told with the project and where it was looked for. */
+    @Test
+    void aMissingSourceNamesTheProjectAndTheFolders(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: nobody;\n}\n");
+        var launcher = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true);
+        var e = assertThrows(MasLauncher.UserError.class, () -> launcher.load(dir.resolve("p.mas2j")));
+        assertEquals(dir.resolve("p.mas2j") + ": agent source 'nobody.asl' not found (looked in " + dir + ")", e.getMessage());
+    }
+
     /** CArtAgO's remote examples give the environment a structure: it reaches the class as its text. */
     @Test
     void environmentArgumentsMayBeStructures(@TempDir Path dir) throws Exception {
@@ -224,6 +256,15 @@ class LocalMASTest {
                 "MAS m {\n environment: my.Env(\"standalone\", protocol(lipermi), 3, -1)\n agents: a;\n}\n");
         var project = Mas2jReader.read(dir.resolve("p.mas2j"));
         assertEquals(List.of("standalone", "protocol(lipermi)", "3", "-1"), project.environmentArgs());
+    }
+
+    /** A project's syntax errors are said as an agent's are, not with ANTLR's token sets. */
+    @Test
+    void aProjectsSyntaxErrorIsSaidInOurWords(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a beliefs=\"x\";\n}\n");
+        var e = assertThrows(AslSyntaxException.class, () -> Mas2jReader.read(dir.resolve("p.mas2j")));
+        assertTrue(e.getMessage().startsWith(dir.resolve("p.mas2j") + ":2:19: error: unexpected '=', expected "), e.getMessage());
+        assertFalse(e.getMessage().contains("expecting") || e.getMessage().contains("{"), e.getMessage());
     }
 
     @Test

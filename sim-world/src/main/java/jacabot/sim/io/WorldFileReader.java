@@ -15,6 +15,7 @@ import jacabot.sim.world.RobotSpec;
 import jacabot.sim.world.WorldSpec;
 import java.io.IOException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -48,6 +49,9 @@ public final class WorldFileReader {
         String text;
         try {
             text = Files.readString(file);
+        } catch (NoSuchFileException e) {
+            // said as the other commands say it, not by the exception's class and the name again
+            throw new WorldFileException(file.toString(), "$", "cannot read the world file (no such file)");
         } catch (IOException e) {
             throw new WorldFileException(file.toString(), "$", "cannot read the world file (" + e.getClass().getSimpleName()
                     + (e.getMessage() == null ? "" : ": " + e.getMessage()) + ")");

@@ -60,7 +60,7 @@ class WorldFileReaderTest {
     void aMissingFileIsAWorldFileErrorToo() {
         WorldFileException e = assertThrows(WorldFileException.class, () -> WorldFileReader.read(Path.of("no/such/world.json")));
         assertEquals("$", e.jsonPath());
-        assertTrue(e.problem().startsWith("cannot read the world file"));
+        assertEquals("cannot read the world file (no such file)", e.problem());
     }
 
     @Test
