@@ -5,9 +5,8 @@ middlewareClass("jacabot.experiments.SuspendResumeMiddleware").
 // less 150 J covers the way on to the charger, and goes on while less 50 J (a drain came); a homing still nearing goes on past far sight's limit (a nearer
 // sighting in the last 15 s); every red run seen; turns at half speed but for the last 15 degrees; no trip while the battery covers the time left, a charge
 // ends once it covers it and 100 J (2 W); near approach at 85; a waypoint given up at the storage area's edge only when it lies past the storage point;
-// parked, whatever is counted, once the time left is under 32 s a metre to the charger and 15 s and the sweep has taken all its lanes' waypoints;
-// no turn to a lateral cylinder the camera puts in the storage area (delivery's reachOff)
-resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85). waypointPastStorage. parkInTime(32, 15). reachNotStored.
+// parked, whatever is counted, once the time left is under 32 s a metre to the charger and 15 s and the sweep has taken all its lanes' waypoints
+resumeAtCharger. lookFirst. searchDelay(5000). deliverFirst(150). deliverOn(50). homingProgress(15000). everyRedRun. quickTurns. chargeUntilLasts(100). meanPower(2). quickApproach(85). waypointPastStorage. parkInTime(32, 15).
 !start.
 // trips and waypoints through the robot's own map (route), a way out of the storage corner; near the storage point
 // re-aligned when 3 degrees off, not 10 (else it passed it 4 cm aside); a knocked cylinder no obstacle (knocked-aside)

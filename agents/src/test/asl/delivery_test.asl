@@ -242,16 +242,3 @@ mock_operation(_, ok).
        -delivering; -~delivered;
        !until(moved(_), 2000);
        !assert_true(moved(0.1)).
-
-// reachOff (picking reads it): a lateral cylinder put 0.1 m ahead and 20 degrees to its side, within the
-// clearance less the gripper's reach (0.19 - 0.05 m) of the storage point, is not turned to; only for an
-// agent that believes reachNotStored. Facing +z (90 degrees) from (0.25, -0.5): the left one is put 0.116 m
-// from the storage point, the right one 0.184 m
-@[test]
-+!test_a_lateral_cylinder_put_in_the_storage_area_is_not_reached
-    <- -+location(0.25, 0, -0.5); -+orientation(90); +gripReach(0.05);
-       !assert_false(reachOff(-1));
-       +reachNotStored;
-       !assert_true(reachOff(-1));
-       !assert_false(reachOff(1));
-       -reachNotStored; -gripReach(0.05); -+location(0, 0, 0).

@@ -54,19 +54,6 @@ mock_operation(_, ok).
        !assert_false(mock_called(catching));
        !assert_false(mock_called(setSpeeds(10, 0))).
 
-// reachOff(S) (delivery's: a lateral cylinder the camera puts in the storage area) holds for the left
-// only: the left cylinder is not turned to, the right one is
-@[test]
-+!test_a_lateral_cylinder_is_not_turned_to_on_a_side_whose_reach_is_off
-    <- !forget_calls; +reachOff(-1); !!perceive(cylinderLeft);
-       .wait(300);
-       !assert_false(mock_called(setSpeeds(0, 10)));
-       !assert_true(reachCylinder(false));
-       !!perceive(cylinderRight);
-       !until(mock_called(setSpeeds(10, 0)), 2000);
-       !assert_true(reachCylinder(true));
-       .drop_desire(reach); -+reachCylinder(false); -reachOff(-1); -cylinderLeft; -cylinderRight.
-
 // a lateral reach whose cylinder comes in front once picking is off (a low battery meanwhile): the
 // reach ends, the cylinder is not taken, and moves no longer wait for it
 @[test]

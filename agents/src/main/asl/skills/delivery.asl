@@ -19,7 +19,6 @@ areaLimit(10000).   // ms from entering the area to the put-down before the robo
 // gripper next to the area where no plan would pick it up again)
 storageClearance(C) :- storageRadius(R) & C = R + 0.09.
 storageClearance(0.15) :- not storageRadius(_).
-lateralRange(0.1).  // m from the robot's centre where the camera's side section shows a cylinder red (see reachOff)
 // Reads: storagePoint(X, Z), storageRadius(R) (from the world file, as initial beliefs: no
 // coordinate is written in an agent); lastAvoid(T) (avoidance); gripPoint(X, Z) (gripper.asl's, optional);
 // onErrand, halted (rules a skill that sends the robot elsewhere extends, e.g. recharge).
@@ -43,15 +42,6 @@ pickingOff :- nearStorage & not fetchingKnocked.   // fetchingKnocked: knock-fet
 pickingOff :- insideArea.
 halted :- insideArea.
 nearStorage :- storageWithin(0).
-// an agent that believes reachNotStored (tidy-up) turns to no lateral cylinder (picking's reachOff) put,
-// lateralRange ahead and 20 degrees to its side (the camera's side sections span 10 to 30), within the
-// clearance less the gripper's reach (gripper's gripReach) of the storage point: there a cylinder is
-// stored (its centre within the radius, the success criterion's test) or lies where no pick from
-// outside the clearance takes it. The stored pile, seen beside the robot as it left the area, began
-// reaches 0.155 m from the storage point that met noAccess and failed 5-12 s later
-reachOff(S) :- reachNotStored & not fetchingKnocked & location(X, _, Z) & orientation(O) & storagePoint(Sx, Sz)
-    & storageClearance(C) & gripReach(G) & lateralRange(L) & H = (O + 20 * S) * math.pi / 180
-    & Cx = X + L * math.cos(H) & Cz = Z + L * math.sin(H) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C - G) * (C - G).
 // within the storage clearance and E m more (knock-fetch's fallenNearStorage reads it too)
 storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(C)
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + E) * (C + E).

@@ -7,8 +7,7 @@
 // time (the cylinder moved away), the arm does not rise.
 // Beliefs: reachCylinder(true|false), picking.
 // Reads: maxSpeed(M); pickingOff (a rule other skills extend: no cylinder is taken while it holds,
-// e.g. while delivering or charging); reachOff(S) (likewise, optional: no lateral cylinder on that
-// side, -1 left, 1 right, is turned to, e.g. one delivery's reachOff puts in the storage area).
+// e.g. while delivering or charging).
 // Needs: +!go_ahead : picked(true) (what to do with the cylinder: the agent's, or delivery's);
 // !escape (recovery). Include it after avoidance, before far sight.
 // Fixed from the listings: "+reachCylinder(b)" that added a second reachCylinder belief is
@@ -20,10 +19,10 @@
 reachCylinder(false).
 
 @reachLeft
-+cylinderLeft : reachCylinder(false) & not picking & not pickingOff & not reachOff(-1)
++cylinderLeft : reachCylinder(false) & not picking & not pickingOff
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Left Cylinder"); setSpeeds(0, 10); !reach.
 @reachRight
-+cylinderRight : reachCylinder(false) & not picking & not pickingOff & not reachOff(1)
++cylinderRight : reachCylinder(false) & not picking & not pickingOff
     <- -+reachCylinder(true); .succeed_goal(move(_)); stop; .print("Right Cylinder"); setSpeeds(10, 0); !reach.
 @approachCentred
 +cylinderBeyond : reachCylinder(true) & maxSpeed(M)
