@@ -26,7 +26,7 @@ connectionPoll(100).   // ms between looks for connected(true) (§5; Appendix B:
     <- println("Connection successful, waiting for sensor data"); for (setUpGoal(G)) { !G }; acquireData; !moving.
 @awaitConnection +!waitConnection : connectionPoll(T) <- .wait(T); !waitConnection.
 
-// The motion loop (Chapter 4 §1.2): a random number chooses among the moves of random motion;
+// The motion loop (Chapter 5 §2 and Appendix B, +!moving): a random number chooses among the moves of random motion;
 // the +!move plans of the other skills suspend it while a more relevant task runs.
 @moving +!moving <- while (true) { .random(R); !move(R) }.
 // A move that fails is reported once per kind of failure (error and error_msg annotations), and

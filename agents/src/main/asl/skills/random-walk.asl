@@ -1,4 +1,4 @@
-// Skill: random motion (thesis Chapter 4 §1.2): forward for a random time, or a turn left or right
+// Skill: random motion (thesis Chapter 4 §5, the common aspects; §1.1 gives its strategy): forward for a random time, or a turn left or right
 // for a random time and a second forward. The last +!move plans: every other skill's come first.
 // Reads: legSpeed(V) (optional): the wheel speed of the straight stretches; without it, the
 // thesis' forward.
