@@ -236,7 +236,7 @@ final class RouteMap {
         for (int i = ahead; i > 0; i--) {
             double[] p = points.get(i);
             if (clear(x, z, p[0], p[1], lastNear, nowMs)) {
-                return i == points.size() - 1 || !firmGuess() || !crossesGuess(points, ahead) ? p : alongFace(x, z, p, nowMs);
+                return i == points.size() - 1 || !firmGuess() ? p : alongFace(x, z, p, nowMs);
             }
         }
         return points.get(Math.min(1, points.size() - 1));
@@ -296,17 +296,6 @@ final class RouteMap {
         }
         double[] q = alongZ ? new double[] {face[0] + side * lane, p[1]} : new double[] {p[0], face[1] + side * lane};
         return clear(x, z, q[0], q[1], lastNear, nowMs) ? q : p;
-    }
-
-    /** {@return whether one of the route's first {@code ahead} cells lies on a face's guess (the route crosses it there)} */
-    private boolean crossesGuess(List<double[]> points, int ahead) {
-        for (int i = 1; i <= ahead && i < points.size(); i++) {
-            int c = cell(points.get(i)[0], points.get(i)[1]);
-            if (c >= 0 && (guessAlongX.get(c) || guessAlongZ.get(c))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** {@return whether a run of {@link #FACE_RUN} cells blocked along d (or beside it) goes through cell c} */
