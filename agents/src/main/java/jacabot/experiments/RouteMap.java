@@ -87,8 +87,6 @@ final class RouteMap {
     /** How far past a face's seen end the wall is guessed to go on, in cells (0: no guess), and the driven cells' count the costs were made with. */
     private int guessCells;
     private int lastDriven = -1;
-    /** The cells of the faces' guesses ({@link #guessFaces}), by the face's line: along x (z fixed) or along z (x fixed). */
-    private final BitSet guessAlongX, guessAlongZ;
 
     /**
      * @param width     the arena's side along x, metres
@@ -111,8 +109,6 @@ final class RouteMap {
         Arrays.fill(seenAt, NEVER);
         driven = new BitSet(cols * rows);
         seenOpen = new BitSet(cols * rows);
-        guessAlongX = new BitSet(cols * rows);
-        guessAlongZ = new BitSet(cols * rows);
         double beside = BESIDE * clearance;
         boundaryCosts = new double[cols * rows];
         for (int i = 0; i < cols; i++) {
@@ -236,77 +232,10 @@ final class RouteMap {
         for (int i = ahead; i > 0; i--) {
             double[] p = points.get(i);
             if (clear(x, z, p[0], p[1], lastNear, nowMs)) {
-                return i == points.size() - 1 || !firmGuess() ? p : alongFace(x, z, p, nowMs);
+                return p;
             }
         }
         return points.get(Math.min(1, points.size() - 1));
-    }
-
-    /**
-     * {@return the point p moved across to the robot's own distance from a wall's face, when p lies beside the
-     * face where it is guessed or seen, nearer it than the robot (or on it or past it), and the robot is beside it too; else p}. With
-     * the firm guess the route runs along a face and crosses the guess past its firm part, within the
-     * lookahead: the point taken from it lay 10-45 degrees into the wall's unseen part, the front sensors saw
-     * the face, and heading's detour took 3.6 s for 4-5 cm, again and again (docs/comparison-wide.md). Moved
-     * across, the robot goes along the face until a side sensor sees the floor open past its end.
-     */
-    private double[] alongFace(double x, double z, double[] p, long nowMs) {
-        int at = cell(p[0], p[1]);
-        if (at < 0) {
-            return p;
-        }
-        int r = (int) Math.ceil(BESIDE * clearance / CELL) + 1;
-        int pi = at % cols, pj = at / cols, best = -1;
-        double nearest = Double.POSITIVE_INFINITY;
-        for (int di = -r; di <= r; di++) {
-            for (int dj = -r; dj <= r; dj++) {
-                int a = pi + di, b = pj + dj;
-                if (a >= 0 && b >= 0 && a < cols && b < rows && Math.hypot(di, dj) < nearest) {
-                    int c = index(a, b);
-                    if (lastLive.get(c) || guessAlongX.get(c) || guessAlongZ.get(c)) {
-                        nearest = Math.hypot(di, dj);
-                        best = c;
-                    }
-                }
-            }
-        }
-        if (best < 0) {
-            return p;
-        }
-        // the face's line: along z (x fixed) or along x (z fixed): a guessed cell's own, or a seen run of FACE_RUN cells
-        boolean alongZ;
-        if (guessAlongZ.get(best) || guessAlongX.get(best)) {
-            alongZ = guessAlongZ.get(best);
-        } else if (faceRun(best, new int[] {0, 1})) {
-            alongZ = true;
-        } else if (faceRun(best, new int[] {1, 0})) {
-            alongZ = false;
-        } else {
-            return p;
-        }
-        double[] face = centre(best);
-        double robotAcross = alongZ ? x - face[0] : z - face[1];
-        double pointAcross = alongZ ? p[0] - face[0] : p[1] - face[1];
-        // the lane along the face: the robot's own distance from it, but no nearer than BESIDE clearances (nearer, the
-        // front sensors saw the face even when the robot went along it); the point on the robot's side nearer the
-        // face than the lane, on its line or past it (the route crossing the guess) is moved to the lane
-        double lane = Math.max(Math.abs(robotAcross), BESIDE * clearance), side = Math.signum(robotAcross);
-        if (side == 0 || pointAcross * side >= lane || Math.abs(robotAcross) > 2 * BESIDE * clearance) {
-            return p;
-        }
-        double[] q = alongZ ? new double[] {face[0] + side * lane, p[1]} : new double[] {p[0], face[1] + side * lane};
-        return clear(x, z, q[0], q[1], lastNear, nowMs) ? q : p;
-    }
-
-    /** {@return whether a run of {@link #FACE_RUN} cells blocked along d (or beside it) goes through cell c} */
-    private boolean faceRun(int c, int[] d) {
-        int i = c % cols, j = c / cols, run = 1;
-        for (int sign = -1; sign <= 1; sign += 2) {
-            for (int k = 1; k < FACE_RUN && band(lastLive, i + sign * k * d[0], j + sign * k * d[1], d); k++) {
-                run++;
-            }
-        }
-        return run >= FACE_RUN;
     }
 
     /**
@@ -407,8 +336,6 @@ final class RouteMap {
      */
     private void guessFaces(BitSet live, double[] near) {
         int[][] dirs = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        guessAlongX.clear();
-        guessAlongZ.clear();
         for (int c = live.nextSetBit(0); c >= 0; c = live.nextSetBit(c + 1)) {
             int i = c % cols, j = c / cols;
             for (int[] d : dirs) {
@@ -432,7 +359,6 @@ final class RouteMap {
                 for (int k = 1; k <= run; k++) {
                     int a = i + k * d[0], b = j + k * d[1];
                     raise(near, index(a, b), firm && k <= firmCells ? FIRM_COST : NEAR_COST);
-                    (d[0] != 0 ? guessAlongX : guessAlongZ).set(index(a, b));
                     if (firmCells > 0) {
                         for (double[] o : around) {
                             int e = a + (int) o[0], f = b + (int) o[1];

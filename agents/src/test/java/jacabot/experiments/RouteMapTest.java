@@ -154,35 +154,6 @@ class RouteMapTest {
         assertTrue(crossings[2] < 0.1, "seen open, there: z = " + crossings[2]);
     }
 
-    /**
-     * The robot beside a wall's face seen along x = 0 up to z = 0, the target across it, the guess firm for
-     * 0.15 m: the route runs next to the face and crosses the guess within the lookahead. The point to head
-     * for is moved out to the robot's lane along the face (its own distance, at least BESIDE clearances),
-     * not 10-45 degrees into the wall; with the guess not firm it is the route's.
-     */
-    @Test
-    void besideAFirmGuessThePointIsInTheRobotsLaneAlongTheFace() {
-        for (double rx : new double[] {-0.053, -0.08, -0.10}) {
-            for (boolean firm : new boolean[] {false, true}) {
-                RouteMap m = new RouteMap(3, 3, 0.0385, 600_000);
-                m.guessWalls(1.0);
-                if (firm) {
-                    m.guessWallsFirm(0.15);
-                }
-                for (double z = -0.8; z <= 0; z += 0.01) {
-                    m.obstacle(0.001, z, 0);
-                }
-                double[] w = m.waypoint(rx, 0, 0.6, 0.8, 100);
-                double degrees = Math.toDegrees(Math.atan2(w[0] - rx, w[1]));
-                if (firm) {
-                    assertTrue(w[1] > 0.05 && Math.abs(degrees) < 5, "along the face from x = " + rx + ": " + w[0] + ", " + w[1]);
-                } else {
-                    assertTrue(degrees > 5, "the route's own point, towards the face, from x = " + rx + ": " + w[0] + ", " + w[1]);
-                }
-            }
-        }
-    }
-
     private static double crossingOf(List<double[]> route) {
         return route.stream().filter(p -> Math.abs(p[0]) < RouteMap.CELL).findFirst().orElseThrow()[1];
     }
