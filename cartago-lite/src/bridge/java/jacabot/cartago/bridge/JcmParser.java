@@ -5,6 +5,7 @@ import jacabot.cartago.bridge.JcmProject.ArtifactDecl;
 import jacabot.cartago.bridge.JcmProject.WorkspaceDecl;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
@@ -37,6 +38,8 @@ final class JcmParser {
     private static final Set<String> UNSUPPORTED_HINTS = Set.of("organisation", "organization");
     private final Path file;
     private final String text;
+    /** Each {@code focus:} entry as read, checked against the declared workspaces once all are read. */
+    private final List<FocusRef> focusRefs = new ArrayList<>();
     private int pos;
 
     private JcmParser(Path file, String text) {
@@ -78,6 +81,7 @@ final class JcmParser {
         if (pos < text.length()) {
             throw error(pos, "unexpected text after the project's closing '}'");
         }
+        checkFocus(workspaces);
         return new JcmProject(file, name, agents, workspaces, classPath, aslPath);
     }
 
@@ -112,11 +116,15 @@ final class JcmParser {
             case "beliefs" -> p.beliefs = joined(p.beliefs, restOfEntry());
             case "goals" -> p.goals = joined(p.goals, restOfEntry());
             case "focus" -> {
-                for (String f : names()) {
+                var starts = new ArrayList<Integer>();
+                List<String> names = names(starts);
+                for (int i = 0; i < names.size(); i++) {
+                    String f = names.get(i);
                     if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
                         throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
                     p.focus.add(f);
+                    focusRefs.add(new FocusRef(f, starts.get(i)));
                 }
             }
             case "join" -> p.join.addAll(names());
@@ -125,6 +133,30 @@ final class JcmParser {
             default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
                     : "the agent parameter '" + key + "' is not supported")
                     + " (beliefs, goals, focus, join, instances, ag-arch)");
+        }
+    }
+
+    /** A {@code focus:} entry and where it starts. */
+    private record FocusRef(String name, int at) {
+        String workspace() {
+            return name.substring(0, name.lastIndexOf('.'));
+        }
+    }
+
+    /**
+     * A focus names a workspace the project declares (or {@code main}, which is always there): the
+     * agent's setup joins it before it looks the artifact up, and an undeclared one would only fail
+     * when the agent starts.
+     */
+    private void checkFocus(List<WorkspaceDecl> workspaces) throws JcmError {
+        var declared = new LinkedHashSet<String>();
+        declared.add("main");
+        workspaces.forEach(w -> declared.add(w.name()));
+        for (FocusRef f : focusRefs) {
+            if (!declared.contains(f.workspace())) {
+                throw error(f.at(), "focus '" + f.name() + "': no workspace '" + f.workspace()
+                        + "' is declared (declared: " + String.join(", ", declared) + ")");
+            }
         }
     }
 
@@ -263,7 +295,14 @@ final class JcmParser {
 
     /** Names separated by commas, on one line (or continued after a comma). */
     private List<String> names() throws JcmError {
+        return names(new ArrayList<>());
+    }
+
+    /** {@link #names()}, adding where each name starts to {@code starts}. */
+    private List<String> names(List<Integer> starts) throws JcmError {
         var out = new ArrayList<String>();
+        skip();
+        starts.add(pos);
         out.add(name("a name"));
         while (true) {
             int save = pos;
@@ -273,6 +312,8 @@ final class JcmParser {
                 return out;
             }
             pos++;
+            skip();
+            starts.add(pos);
             out.add(name("a name after ','"));
         }
     }
