@@ -41,7 +41,6 @@ import java.io.Writer;
 import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
-import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -445,23 +444,9 @@ final class ExperimentCommand implements Callable<Integer> {
         return (dot > 0 ? n.substring(0, dot) : n).replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
-    /** {@return why a directory could not be made, in a few words} */
-    static String whyNot(IOException e) {
-        return e instanceof FileAlreadyExistsException ? "a file of that name exists"
-                : e instanceof AccessDeniedException ? "permission denied"
-                : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
-    }
-
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
     private static void prepareOut(Path dir) {
-        try {
-            Files.createDirectories(dir);
-        } catch (IOException e) {
-            throw new UserError("--out " + dir + ": cannot make the directory (" + whyNot(e) + "); choose another with --out DIR");
-        }
-        if (!Files.isWritable(dir)) {
-            throw new UserError("--out " + dir + ": not writable; choose another with --out DIR");
-        }
+        OutPlace.directory("--out", dir);
     }
 
     /** The world and agent files a run used, as the summary names them (agent null: the baseline). */
