@@ -68,6 +68,13 @@ class LauncherErrorsTest {
                 "--out /dev/null/x: cannot make the directory (not a directory); choose another with --out DIR");
     }
 
+    /** A label no plan has would never halt the run: refused with the labels nearest to it. */
+    @Test
+    void aBreakOnALabelTheAgentDoesNotHaveIsRefused(@TempDir Path dir) {
+        assertOneLine(experiment("--break", "label:coverFrnt", "--duration", "1s", "--out", dir.resolve("o").toString()), "2",
+                "--break label:coverFrnt: the agent has no plan labelled @coverFrnt (nearest: coverFront, ");
+    }
+
     @Test
     void agentsThatAreNotPackagedOrClashAreUserErrors(@TempDir Path dir) {
         String out = dir.resolve("o").toString();
