@@ -38,8 +38,8 @@ final class JcmParser {
     private static final Set<String> UNSUPPORTED_HINTS = Set.of("organisation", "organization");
     private final Path file;
     private final String text;
-    /** Each {@code focus:} entry as read, checked against the declared workspaces once all are read. */
-    private final List<FocusRef> focusRefs = new ArrayList<>();
+    /** Each {@code focus:} and {@code join:} entry as read, checked against the declared workspaces once all are read. */
+    private final List<WorkspaceRef> workspaceRefs = new ArrayList<>();
     private int pos;
 
     private JcmParser(Path file, String text) {
@@ -81,7 +81,7 @@ final class JcmParser {
         if (pos < text.length()) {
             throw error(pos, "unexpected text after the project's closing '}'");
         }
-        checkFocus(workspaces);
+        checkWorkspaces(workspaces);
         return new JcmProject(file, name, agents, workspaces, classPath, aslPath);
     }
 
@@ -124,10 +124,17 @@ final class JcmParser {
                         throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
                     p.focus.add(f);
-                    focusRefs.add(new FocusRef(f, starts.get(i)));
+                    workspaceRefs.add(new WorkspaceRef("focus", f, f.substring(0, f.lastIndexOf('.')), starts.get(i)));
                 }
             }
-            case "join" -> p.join.addAll(names());
+            case "join" -> {
+                var starts = new ArrayList<Integer>();
+                List<String> names = names(starts);
+                for (int i = 0; i < names.size(); i++) {
+                    p.join.add(names.get(i));
+                    workspaceRefs.add(new WorkspaceRef("join", names.get(i), names.get(i), starts.get(i)));
+                }
+            }
             case "instances" -> p.instances = number(at);
             case "ag-arch" -> p.arch = name("an architecture class");
             default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
@@ -136,25 +143,22 @@ final class JcmParser {
         }
     }
 
-    /** A {@code focus:} entry and where it starts. */
-    private record FocusRef(String name, int at) {
-        String workspace() {
-            return name.substring(0, name.lastIndexOf('.'));
-        }
+    /** A {@code focus:} or {@code join:} entry ({@code key}), the workspace it names and where it starts. */
+    private record WorkspaceRef(String key, String name, String workspace, int at) {
     }
 
     /**
-     * A focus names a workspace the project declares (or {@code main}, which is always there): the
-     * agent's setup joins it before it looks the artifact up, and an undeclared one would only fail
-     * when the agent starts.
+     * A focus or a join names a workspace the project declares (or {@code main}, which is always
+     * there): the agent's setup joins it first, and an undeclared one would only fail when the
+     * agent starts, as its setup goal's failure.
      */
-    private void checkFocus(List<WorkspaceDecl> workspaces) throws JcmError {
+    private void checkWorkspaces(List<WorkspaceDecl> workspaces) throws JcmError {
         var declared = new LinkedHashSet<String>();
         declared.add("main");
         workspaces.forEach(w -> declared.add(w.name()));
-        for (FocusRef f : focusRefs) {
-            if (!declared.contains(f.workspace())) {
-                throw error(f.at(), "focus '" + f.name() + "': no workspace '" + f.workspace()
+        for (WorkspaceRef r : workspaceRefs) {
+            if (!declared.contains(r.workspace())) {
+                throw error(r.at(), r.key() + " '" + r.name() + "': no workspace '" + r.workspace()
                         + "' is declared (declared: " + String.join(", ", declared) + ")");
             }
         }
