@@ -181,8 +181,9 @@ final class ErrorCollector extends BaseErrorListener {
     /**
      * {@return what may separate two terms at token {@code i}, by the innermost bracket open there
      * in its clause: ',' or ')' in a structure's arguments, ',' '|' or ']' in a list, ';' or '}'
-     * in a block, ';' or '.' in a plan's body, an operator or ')' in other parentheses; null
-     * elsewhere (a belief, a context: left to ANTLR)}
+     * in a block, ';' or '.' in a plan's body, '&', '|', '<-' or '.' in its context, '&', '|' or
+     * '.' in a rule's body, an operator or ')' in other parentheses; null elsewhere (a belief's
+     * or a trigger's literal: left to ANTLR)}
      */
     private static String separators(TokenStream tokens, int i) {
         int depth = 0;
@@ -201,7 +202,11 @@ final class ErrorCollector extends BaseErrorListener {
                 };
             } else if (depth == 0 && "<-".equals(x)) {
                 return "';' or '.'";
-            } else if (depth == 0 && (".".equals(x) || ":".equals(x) || ":-".equals(x))) {
+            } else if (depth == 0 && ":".equals(x)) {
+                return "'&', '|', '<-' or '.'";
+            } else if (depth == 0 && ":-".equals(x)) {
+                return "'&', '|' or '.'";
+            } else if (depth == 0 && ".".equals(x)) {
                 return null;
             }
         }

@@ -136,7 +136,9 @@ class AslParserTest {
                 "+!g <- .print([a, b c]).\n", "m.asl:1:21: error: expected ',', '|' or ']' before 'c'",
                 "+!g <- if (a) { b !c }.\n", "m.asl:1:19: error: expected ';' or '}' before '!'",
                 "+!g <- if (a b) { c }.\n", "m.asl:1:14: error: expected an operator or ')' before 'b'",
-                "+!g <- .print(p[x], 1 2).\n", "m.asl:1:23: error: expected ',' or ')' before '2'");
+                "+!g <- .print(p[x], 1 2).\n", "m.asl:1:23: error: expected ',' or ')' before '2'",
+                "+!g : a b <- c.\n", "m.asl:1:9: error: expected '&', '|', '<-' or '.' before 'b'",
+                "r(X) :- p(X) q(X).\n", "m.asl:1:14: error: expected '&', '|' or '.' before 'q'");
         for (var c : cases.entrySet()) {
             var e = assertThrows(AslSyntaxException.class, () -> parser.parse(c.getKey(), "m.asl"), c.getKey());
             assertEquals(c.getValue(), e.getMessage(), c.getKey());
