@@ -48,13 +48,17 @@ class DocsTest {
                 "The readings: `robot-controller/.../link/SensorInfo.java`; now `robot-link/.../link/SensorInfo.java`.",
                 "The class `jacabot.robot.link.SensorInfo` and `jacabot.robot.link.Gone`.",
                 "```", "jacabot experiment navigation --headles", "jacabot experiment navigation --headless", "```",
-                "[the map](map.md), [nothing](none.md)", ""));
+                "[the map](map.md), [nothing](none.md)",
+                "`jacabot world generate team-delivery --robots 2`, `jacabot world generate`, `jacabot run --tls-store`", ""));
         List<String> found = problems(dir);
-        assertTrue(found.size() == 4, String.join("\n", found));
+        assertTrue(found.size() == 5, String.join("\n", found));
         assertTrue(found.get(0).startsWith("docs/map.md:1: no such path: robot-controller/.../link/SensorInfo.java"), found.get(0));
         assertTrue(found.get(1).startsWith("docs/map.md:2: no source for class jacabot.robot.link.Gone"), found.get(1));
         assertTrue(found.get(2).startsWith("docs/map.md:4: `jacabot experiment navigation --headles` does not parse"), found.get(2));
         assertTrue(found.get(3).startsWith("docs/map.md:7: no such path: none.md"), found.get(3));
+        // a required option left out of a command given its arguments, not a command named alone or an option's value
+        assertTrue(found.get(4).startsWith("docs/map.md:8: `jacabot world generate team-delivery --robots 2` does not parse: "
+                + "Missing required option: '--seed=N'"), found.get(4));
     }
 
     // ---- the check ---------------------------------------------------------------------------
@@ -265,16 +269,30 @@ class DocsTest {
         return JacabotCommand.commandLine(args.toArray(new String[0]));
     }
 
-    /** A span may name a command without all it needs (`jacabot run`, `jacabot run --tls-store`); a code line may not. */
+    /**
+     * A span may name a command without all it needs (`jacabot run`, `jacabot run --tls-store`); a
+     * code line may not, nor a span that gives its command arguments but leaves out a required
+     * option (`jacabot world generate team-delivery --robots N` without its --seed).
+     */
     private static void parse(CommandLine launcher, List<String> args, boolean partial, String where, List<String> out) {
         try {
             launcher.parseArgs(args.toArray(new String[0]));
         } catch (CommandLine.MissingParameterException e) {
-            if (!partial) {
+            if (!partial || leavesOutARequiredOption(e, args)) {
                 out.add(where + "`jacabot " + String.join(" ", args) + "` does not parse: " + e.getMessage());
             }
         } catch (CommandLine.ParameterException e) {
             out.add(where + "`jacabot " + String.join(" ", args) + "` does not parse: " + e.getMessage());
         }
+    }
+
+    /** {@return whether the command is given arguments and a required option it leaves out is not named among them} */
+    private static boolean leavesOutARequiredOption(CommandLine.MissingParameterException e, List<String> args) {
+        int at = args.indexOf(e.getCommandLine().getCommandName());
+        if (at < 0 || at == args.size() - 1) {
+            return false; // the command named alone
+        }
+        return e.getMissing().stream().anyMatch(a -> a instanceof CommandLine.Model.OptionSpec o
+                && java.util.Arrays.stream(o.names()).noneMatch(n -> args.stream().anyMatch(x -> x.equals(n) || x.startsWith(n + "="))));
     }
 }

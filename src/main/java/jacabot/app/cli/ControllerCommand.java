@@ -168,7 +168,7 @@ final class ControllerCommand implements Callable<Integer> {
             try {
                 events = Files.newBufferedWriter(eventLog, StandardCharsets.UTF_8);
             } catch (IOException e) {
-                throw new UserError("--event-log " + eventLog + ": cannot write it (" + e.getMessage() + ")");
+                throw OutPlace.cannotWrite("--event-log", eventLog, e);
             }
             config = config.withEventLog(LineSink.into(events));
         }

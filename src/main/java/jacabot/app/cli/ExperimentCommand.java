@@ -3,8 +3,10 @@ package jacabot.app.cli;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import jacabot.agent.parser.AslSyntaxException;
+import jacabot.agent.runtime.LocalMAS;
 import jacabot.app.Installation;
 import jacabot.app.console.ConsoleLog;
+import jacabot.app.inspector.Breakpoint;
 import jacabot.app.inspector.ConsoleFile;
 import jacabot.app.inspector.ConsoleRecorder;
 import jacabot.app.inspector.DebugConsole;
@@ -41,7 +43,6 @@ import java.io.Writer;
 import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
-import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -279,6 +280,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (!breaks.isEmpty() || inspector != null) {
             Debugger debugger;
             try { // the page can halt the run too
+                checkLabels(breaks, run.mas());
                 debugger = breaks.isEmpty() ? new Debugger() : DebugConsole.start(breaks, System.in, System.out);
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
@@ -445,23 +447,26 @@ final class ExperimentCommand implements Callable<Integer> {
         return (dot > 0 ? n.substring(0, dot) : n).replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
-    /** {@return why a directory could not be made, in a few words} */
-    static String whyNot(IOException e) {
-        return e instanceof FileAlreadyExistsException ? "a file of that name exists"
-                : e instanceof AccessDeniedException ? "permission denied"
-                : e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
+    /**
+     * A {@code --break label:X} whose label no plan of the agents has would never halt the run:
+     * refused, with the labels nearest to it.
+     */
+    private static void checkLabels(List<String> breaks, LocalMAS mas) {
+        var labels = new ArrayList<String>();
+        for (String name : mas.agentNames()) {
+            mas.agent(name).plans().stream().filter(p -> p.label() != null).forEach(p -> labels.add(p.label().functor()));
+        }
+        for (String b : breaks) {
+            String why = Breakpoint.parse(b).missingLabel(labels);
+            if (why != null) {
+                throw new UserError("--break " + b.trim() + ": " + why);
+            }
+        }
     }
 
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
     private static void prepareOut(Path dir) {
-        try {
-            Files.createDirectories(dir);
-        } catch (IOException e) {
-            throw new UserError("--out " + dir + ": cannot make the directory (" + whyNot(e) + "); choose another with --out DIR");
-        }
-        if (!Files.isWritable(dir)) {
-            throw new UserError("--out " + dir + ": not writable; choose another with --out DIR");
-        }
+        OutPlace.directory("--out", dir);
     }
 
     /** The world and agent files a run used, as the summary names them (agent null: the baseline). */

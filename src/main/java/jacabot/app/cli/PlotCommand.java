@@ -38,6 +38,9 @@ final class PlotCommand implements Callable<Integer> {
             RunPlots.writeTeam(dirs.get(0), out); // a team's run: each robot's plots and every trajectory in one
             return 0;
         }
+        if (dirs.size() > 1) {
+            OutPlace.file("--out", overlay);
+        }
         for (Path dir : dirs) {
             if (!Files.isRegularFile(dir.resolve(StepLog.FILE))) {
                 throw new UserError(dir + ": no " + StepLog.FILE

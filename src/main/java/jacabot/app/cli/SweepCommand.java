@@ -195,6 +195,7 @@ final class SweepCommand implements Callable<Integer> {
             }
         }
         Path dir = out != null ? out : Path.of("runs", shards == 1 ? "sweep" : "sweep-" + shardIndex + "-of-" + shards);
+        OutPlace.directory("--out", dir);
         Files.createDirectories(dir.resolve("logs"));
         List<SweepPlan.World> list = worlds != null ? SweepPlan.directory(experiments, worlds)
                 : SweepPlan.generated(experiments, generatorSeeds != null ? generatorSeeds
@@ -321,7 +322,7 @@ final class SweepCommand implements Callable<Integer> {
             List<RunOutcome> all = SweepReport.merge(parts);
             String throughput = allRates ? String.format(Locale.ROOT,
                     "%.2f simulated minutes per wall-clock second (the sum of the %d parts' rates).", rate, dirs.size()) : null;
-            Files.createDirectories(out);
+            OutPlace.directory("--out", out);
             Files.writeString(out.resolve("runs.csv"), SweepReport.csv(all), StandardCharsets.UTF_8);
             Files.writeString(out.resolve("report.md"), SweepReport.markdown(all, throughput), StandardCharsets.UTF_8);
             PrintWriter o = spec.commandLine().getOut();

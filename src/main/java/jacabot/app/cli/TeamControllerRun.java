@@ -65,7 +65,7 @@ final class TeamControllerRun {
             }
         } catch (IOException e) {
             closeAll(logs);
-            throw new UserError("--out " + out + ": cannot write it (" + e.getMessage() + ")");
+            throw OutPlace.cannotWrite("--out", out, e);
         }
         List<RunRecorder> recorders = TeamDeliveryRun.attach(world);
         TeamLockstep team = new TeamLockstep(world, controllers, null);
@@ -127,7 +127,7 @@ final class TeamControllerRun {
                 Files.writeString(dir.resolve("event-log.txt"), r.eventLog());
             }
         } catch (IOException e) {
-            throw new UserError("--out " + out + ": cannot write it (" + e.getMessage() + ")");
+            throw OutPlace.cannotWrite("--out", out, e);
         }
         stdout.println("Written: per robot " + out.resolve("ROBOT") + "/summary.json, event-log.txt" + (linkLogs ? ", link-log.txt" : ""));
     }

@@ -123,7 +123,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
             return runWithRemoteController(spec, source, runSeed, seconds, log);
         }
         Path outDir = out != null ? out : runFolder(world == null ? null : worldFile, baseline, n, runSeed);
-        Files.createDirectories(outDir);
+        OutPlace.directory("--out", outDir);
         log.info("Team delivery: " + n + (n == 1 ? " Khepera" : " Kheperas") + ", world " + Installation.shown(worldFile) + ", seed " + runSeed + ", " + duration
                 + " of simulated time, " + (baseline ? "procedural baseline (no coordination)" : "agent " + source.name())
                 + ", lockstep.");

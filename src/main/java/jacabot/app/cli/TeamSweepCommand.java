@@ -127,7 +127,7 @@ final class TeamSweepCommand implements Callable<Integer> {
         // every world is read and checked before the first run: a bad file is one line, not a sweep of crashes
         List<Arena> arenas = worldFiles != null ? worldFiles(Installation.locate(worldFiles), largest)
                 : generated(seedsOf("--world-seeds", worldSeeds == null ? "1..5" : worldSeeds), largest, range);
-        Files.createDirectories(out);
+        OutPlace.directory("--out", out);
         AgentSource agent = AgentSource.resource("/asl/team-delivery.asl", "agents/src/main/asl/team-delivery.asl");
         PrintStream quiet = new PrintStream(OutputStream.nullOutputStream());
         ExecutorService pool = Executors.newFixedThreadPool(jobs);

@@ -63,7 +63,7 @@ final class TestCommand implements Callable<Integer> {
             try {
                 Files.createDirectories(junit);
             } catch (IOException e) {
-                throw new UserError("--junit " + junit + ": cannot make the directory (" + ExperimentCommand.whyNot(e) + ")");
+                throw new UserError("--junit " + junit + ": cannot make the directory (" + OutPlace.whyNot(e) + ")");
             }
         }
         try {

@@ -64,7 +64,7 @@ final class WhatIfRun {
             throw new UserError(e.getMessage());
         }
         Path target = out != null ? out : Path.of(dir.toString().replaceAll("/+$", "") + "-whatif-" + atMs / 1000 + "s");
-        Files.createDirectories(target);
+        OutPlace.directory("--out", target);
         console.printf("What if: %s as recorded up to t=%.2f s (seed %d), then the plans of %s; %d s into %s%n", dir,
                 atMs / 1000.0, h.seed(), agent, seconds, target);
         WhatIf.Result r;

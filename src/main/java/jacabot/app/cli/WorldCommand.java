@@ -102,10 +102,12 @@ final class WorldCommand implements Runnable {
                 o.print(json);
                 o.flush();
             } else {
-                if (out.getParent() != null) {
-                    Files.createDirectories(out.getParent());
+                OutPlace.file("--out", out);
+                try {
+                    Files.writeString(out, json, StandardCharsets.UTF_8);
+                } catch (IOException e) {
+                    throw OutPlace.cannotWrite("--out", out, e);
                 }
-                Files.writeString(out, json, StandardCharsets.UTF_8);
             }
             return 0;
         }

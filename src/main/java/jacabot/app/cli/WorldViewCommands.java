@@ -105,18 +105,16 @@ final class WorldViewCommands {
             }
             System.setProperty("java.awt.headless", "true");
             SimWorld world = load(file);
+            OutPlace.file("--out", out); // before the simulated seconds
             Wander wander = new Wander();
             while (world.time() < seconds) {
                 wander.accept(world);
                 world.step();
             }
             try {
-                if (out.toAbsolutePath().getParent() != null) {
-                    Files.createDirectories(out.toAbsolutePath().getParent());
-                }
                 PngRenderer.write(world, out, size, size + 60);
             } catch (IOException e) {
-                throw new UserError("cannot write " + out + ": " + e.getMessage());
+                throw OutPlace.cannotWrite("--out", out, e);
             }
             PrintWriter o = spec.commandLine().getOut();
             o.printf("wrote %s after %.1f s of simulated time%n", out, world.time());

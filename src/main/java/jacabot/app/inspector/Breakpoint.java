@@ -1,5 +1,7 @@
 package jacabot.app.inspector;
 
+import java.util.Collection;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Pattern;
@@ -44,6 +46,44 @@ public record Breakpoint(String kind, String text, Pattern event, Pattern belief
         }
         throw new IllegalArgumentException("'" + spec + "' is no breakpoint: label:NAME, +!goal, -belief(_), "
                 + "belief:PATTERN, failure or t=60s");
+    }
+
+    /**
+     * {@return null when this is no {@code label:} breakpoint or a plan of these labels has its
+     * label; else why it would never halt the run, with the labels nearest to its own by spelling}
+     */
+    public String missingLabel(Collection<String> labels) {
+        if (!kind.equals("label")) {
+            return null;
+        }
+        String label = text.substring(6).replaceFirst("^@", "");
+        if (labels.contains(label)) {
+            return null;
+        }
+        List<String> near = labels.stream().distinct()
+                .sorted(Comparator.comparingInt((String l) -> distance(label.toLowerCase(Locale.ROOT), l.toLowerCase(Locale.ROOT)))
+                        .thenComparing(Comparator.naturalOrder()))
+                .limit(3).toList();
+        return "the agent has no plan labelled @" + label
+                + (near.isEmpty() ? " (it has no labelled plan)" : " (nearest: " + String.join(", ", near) + ")");
+    }
+
+    /** {@return the edit distance between two names (insertions, deletions, substitutions)} */
+    private static int distance(String a, String b) {
+        int[] row = new int[b.length() + 1];
+        for (int j = 0; j <= b.length(); j++) {
+            row[j] = j;
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            int diag = row[0];
+            row[0] = i;
+            for (int j = 1; j <= b.length(); j++) {
+                int up = row[j];
+                row[j] = Math.min(Math.min(row[j] + 1, row[j - 1] + 1), diag + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1));
+                diag = up;
+            }
+        }
+        return row[b.length()];
     }
 
     /** A term pattern: {@code f} any {@code f(...)}; {@code f(a, _)} with {@code _} any term; annotations allowed. */

@@ -47,6 +47,34 @@ class LauncherErrorsTest {
         assertOneLine(experiment("--out", "/dev/null/x", "--duration", "1s"), "2", "--out /dev/null/x: cannot make the directory");
     }
 
+    /** Every command that takes --out tells a place it cannot write as one plain line, without an exception's class. */
+    @Test
+    void everyOutThatCannotBeMadeIsOnePlainLine() {
+        String world = ROOT.resolve("worlds/obstacle-avoidance.json").toString();
+        String[][] commands = {
+            {"experiment", "team-delivery", "--seed", "1", "--out", "/dev/null/x"},
+            {"sweep", "navigation", "--world-seeds", "1", "--seeds", "1", "--jobs", "1", "--no-progress", "--out", "/dev/null/x"},
+            {"sweep", "team-delivery", "--world-seeds", "1", "--seeds", "1", "--jobs", "1", "--no-progress", "--out", "/dev/null/x"},
+            {"world", "generate", "navigation", "--seed", "1", "--out", "/dev/null/x/w.json"},
+            {"world", "render", world, "--seconds", "0", "--out", "/dev/null/x/w.png"},
+            {"plot", "a", "b", "--out", "/dev/null/x/o.png"},
+        };
+        for (String[] c : commands) {
+            String[] r = CliRun.run(c);
+            assertOneLine(r, "2", "/dev/null/x");
+            assertTrue(r[2].contains("(not a directory)") && !r[2].contains("Exception"), String.join(" ", c) + ": " + r[2]);
+        }
+        assertOneLine(experiment("--out", "/dev/null/x", "--duration", "1s"), "2",
+                "--out /dev/null/x: cannot make the directory (not a directory); choose another with --out DIR");
+    }
+
+    /** A label no plan has would never halt the run: refused with the labels nearest to it. */
+    @Test
+    void aBreakOnALabelTheAgentDoesNotHaveIsRefused(@TempDir Path dir) {
+        assertOneLine(experiment("--break", "label:coverFrnt", "--duration", "1s", "--out", dir.resolve("o").toString()), "2",
+                "--break label:coverFrnt: the agent has no plan labelled @coverFrnt (nearest: coverFront, ");
+    }
+
     @Test
     void agentsThatAreNotPackagedOrClashAreUserErrors(@TempDir Path dir) {
         String out = dir.resolve("o").toString();

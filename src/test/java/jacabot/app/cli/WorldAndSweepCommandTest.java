@@ -250,7 +250,8 @@ class WorldAndSweepCommandTest {
         var bad = CliRun.run("sweep", "obstacle-avoidance", "--agent", agent.toString(), "--worlds", worlds.toString(),
                 "--out", dir.resolve("t").toString());
         assertEquals("2", bad[0]);
-        assertTrue(bad[2].startsWith(agent + ":1:"), bad[2]); // file:line:col
+        // file:line:col where the '(' should have closed: the end of the file, on line 2
+        assertTrue(bad[2].startsWith(agent + ":2:1: error: expected ')'"), bad[2]);
         assertEquals("2", CliRun.run("sweep", "all", "--agent", agent.toString(), "--out", dir.toString())[0]);
     }
 

@@ -79,6 +79,11 @@ final class ErrorCollector extends BaseErrorListener {
                     quietUntil = cause.getTokenIndex();
                     return;
                 }
+                Token end = juxtaposed(parser.getTokenStream(), at);
+                if (end != null) {
+                    quietUntil = end.getTokenIndex();
+                    return;
+                }
             }
         }
         errors.add(new SyntaxError(new SourceInfo(file, line, col + 1), inAgentSpeak(msg, recognizer, e)));
@@ -131,6 +136,100 @@ final class ErrorCollector extends BaseErrorListener {
         }
         return null;
     }
+
+    /**
+     * {@return the clause's end, after telling an error at the first term that follows another with
+     * nothing between them ({@code .print("a" "b")}, {@code a(1) b(2)} without the ';'), from
+     * {@code at} (the token ANTLR told, which may be the '(' of a list of arguments that went
+     * wrong further on) to the clause's end; null when there is none: what separates them is
+     * said by where they are (in a '(', a '[', a '{', a plan's body)}
+     */
+    private Token juxtaposed(TokenStream tokens, Token at) {
+        int clauseEnd = -1;
+        int depth = 0;
+        for (int i = at.getTokenIndex(); i < tokens.size(); i++) {
+            Token t = tokens.get(i);
+            String x = t.getText();
+            if (t.getType() == Token.EOF || depth == 0 && ".".equals(x)) {
+                clauseEnd = i;
+                break;
+            }
+            if (CLOSES.containsValue(x)) {
+                depth++;
+            } else if (CLOSES.containsKey(x)) {
+                depth--;
+            }
+        }
+        if (clauseEnd < 0) {
+            return null;
+        }
+        for (int i = Math.max(at.getTokenIndex(), 1); i < clauseEnd; i++) {
+            Token b = tokens.get(i);
+            if (endsTerm(tokens.get(i - 1)) && startsTerm(b)) {
+                String expected = separators(tokens, i);
+                if (expected == null) {
+                    return null;
+                }
+                errors.add(new SyntaxError(new SourceInfo(file, b.getLine(), b.getCharPositionInLine() + 1),
+                        "expected " + expected + " before '" + b.getText() + "'"));
+                return tokens.get(clauseEnd);
+            }
+        }
+        return null;
+    }
+
+    /**
+     * {@return what may separate two terms at token {@code i}, by the innermost bracket open there
+     * in its clause: ',' or ')' in a structure's arguments, ',' '|' or ']' in a list, ';' or '}'
+     * in a block, ';' or '.' in a plan's body, '&', '|', '<-' or '.' in its context, '&', '|' or
+     * '.' in a rule's body, an operator or ')' in other parentheses; null elsewhere (a belief's
+     * or a trigger's literal: left to ANTLR)}
+     */
+    private static String separators(TokenStream tokens, int i) {
+        int depth = 0;
+        for (int j = i - 1; j >= 0; j--) {
+            Token t = tokens.get(j);
+            String x = t.getText();
+            if (CLOSES.containsKey(x)) {
+                depth++;
+            } else if (CLOSES.containsValue(x) && depth > 0) {
+                depth--;
+            } else if (CLOSES.containsValue(x)) {
+                return switch (x) {
+                    case "(" -> j > 0 && tokens.get(j - 1).getType() == AgentSpeakLexer.ATOM ? "',' or ')'" : "an operator or ')'";
+                    case "[" -> "',', '|' or ']'";
+                    default -> "';' or '}'";
+                };
+            } else if (depth == 0 && "<-".equals(x)) {
+                return "';' or '.'";
+            } else if (depth == 0 && ":".equals(x)) {
+                return "'&', '|', '<-' or '.'";
+            } else if (depth == 0 && ":-".equals(x)) {
+                return "'&', '|' or '.'";
+            } else if (depth == 0 && ".".equals(x)) {
+                return null;
+            }
+        }
+        return null;
+    }
+
+    /** {@return whether a term may end with this token (a '}' may close a block, which needs no ';' after it)} */
+    private static boolean endsTerm(Token t) {
+        return TERM_TOKENS.contains(t.getType()) || Set.of(")", "]", "true", "false").contains(t.getText());
+    }
+
+    /**
+     * {@return whether a term or a body formula may start with this token ('+', '-' and '(' may
+     * continue one, a '[' may be a literal's annotations)}
+     */
+    private static boolean startsTerm(Token t) {
+        return TERM_TOKENS.contains(t.getType()) || t.getType() == AgentSpeakLexer.NS_ATOM
+                || t.getType() == AgentSpeakLexer.NS_VAR || Set.of("!", "!!", "?", "~", "not", "true", "false").contains(t.getText());
+    }
+
+    /** Tokens that are a term by themselves. */
+    private static final Set<Integer> TERM_TOKENS = Set.of(AgentSpeakLexer.STRING, AgentSpeakLexer.NUMBER,
+            AgentSpeakLexer.ATOM, AgentSpeakLexer.VAR, AgentSpeakLexer.UNNAMEDVAR);
 
     /** What closes what. */
     private static final Map<String, String> CLOSES = Map.of(")", "(", "]", "[", "}", "{");

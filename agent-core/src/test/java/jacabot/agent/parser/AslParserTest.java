@@ -123,6 +123,28 @@ class AslParserTest {
         assertTrue(e.getMessage().startsWith("m.asl:1:21: error: "), e.getMessage());
     }
 
+    /**
+     * Two terms side by side are told at the second with what should have come between them, by
+     * where they are, once, not as "cannot read '(' here" at the arguments' bracket.
+     */
+    @Test
+    void aMissingSeparatorIsToldWithWhatWasExpected() {
+        Map<String, String> cases = Map.of(
+                "!g.\n+!g <- .print(\"a\" \"b\").\n", "m.asl:2:19: error: expected ',' or ')' before '\"b\"'",
+                "+!g <- .print(\"a\") .print(\"b\").\n", "m.asl:1:20: error: expected ';' or '.' before '.print'",
+                "+!g <- X = 1 Y = 2.\n", "m.asl:1:14: error: expected ';' or '.' before 'Y'",
+                "+!g <- .print([a, b c]).\n", "m.asl:1:21: error: expected ',', '|' or ']' before 'c'",
+                "+!g <- if (a) { b !c }.\n", "m.asl:1:19: error: expected ';' or '}' before '!'",
+                "+!g <- if (a b) { c }.\n", "m.asl:1:14: error: expected an operator or ')' before 'b'",
+                "+!g <- .print(p[x], 1 2).\n", "m.asl:1:23: error: expected ',' or ')' before '2'",
+                "+!g : a b <- c.\n", "m.asl:1:9: error: expected '&', '|', '<-' or '.' before 'b'",
+                "r(X) :- p(X) q(X).\n", "m.asl:1:14: error: expected '&', '|' or '.' before 'q'");
+        for (var c : cases.entrySet()) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse(c.getKey(), "m.asl"), c.getKey());
+            assertEquals(c.getValue(), e.getMessage(), c.getKey());
+        }
+    }
+
     @Test
     void syntaxErrorsSayWhatWasExpectedInAgentSpeaksWords() {
         var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- !ns::.\n", "ns.asl"));

@@ -5,6 +5,7 @@ import jacabot.cartago.bridge.JcmProject.ArtifactDecl;
 import jacabot.cartago.bridge.JcmProject.WorkspaceDecl;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
@@ -37,6 +38,8 @@ final class JcmParser {
     private static final Set<String> UNSUPPORTED_HINTS = Set.of("organisation", "organization");
     private final Path file;
     private final String text;
+    /** Each {@code focus:} and {@code join:} entry as read, checked against the declared workspaces once all are read. */
+    private final List<WorkspaceRef> workspaceRefs = new ArrayList<>();
     private int pos;
 
     private JcmParser(Path file, String text) {
@@ -78,6 +81,7 @@ final class JcmParser {
         if (pos < text.length()) {
             throw error(pos, "unexpected text after the project's closing '}'");
         }
+        checkWorkspaces(workspaces);
         return new JcmProject(file, name, agents, workspaces, classPath, aslPath);
     }
 
@@ -112,19 +116,51 @@ final class JcmParser {
             case "beliefs" -> p.beliefs = joined(p.beliefs, restOfEntry());
             case "goals" -> p.goals = joined(p.goals, restOfEntry());
             case "focus" -> {
-                for (String f : names()) {
+                var starts = new ArrayList<Integer>();
+                List<String> names = names(starts);
+                for (int i = 0; i < names.size(); i++) {
+                    String f = names.get(i);
                     if (f.lastIndexOf('.') <= 0 || f.endsWith(".")) {
                         throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
                     p.focus.add(f);
+                    workspaceRefs.add(new WorkspaceRef("focus", f, f.substring(0, f.lastIndexOf('.')), starts.get(i)));
                 }
             }
-            case "join" -> p.join.addAll(names());
+            case "join" -> {
+                var starts = new ArrayList<Integer>();
+                List<String> names = names(starts);
+                for (int i = 0; i < names.size(); i++) {
+                    p.join.add(names.get(i));
+                    workspaceRefs.add(new WorkspaceRef("join", names.get(i), names.get(i), starts.get(i)));
+                }
+            }
             case "instances" -> p.instances = number(at);
             case "ag-arch" -> p.arch = name("an architecture class");
             default -> throw error(at, ("roles".equals(key) ? "roles need an organisation, which is not supported"
                     : "the agent parameter '" + key + "' is not supported")
                     + " (beliefs, goals, focus, join, instances, ag-arch)");
+        }
+    }
+
+    /** A {@code focus:} or {@code join:} entry ({@code key}), the workspace it names and where it starts. */
+    private record WorkspaceRef(String key, String name, String workspace, int at) {
+    }
+
+    /**
+     * A focus or a join names a workspace the project declares (or {@code main}, which is always
+     * there): the agent's setup joins it first, and an undeclared one would only fail when the
+     * agent starts, as its setup goal's failure.
+     */
+    private void checkWorkspaces(List<WorkspaceDecl> workspaces) throws JcmError {
+        var declared = new LinkedHashSet<String>();
+        declared.add("main");
+        workspaces.forEach(w -> declared.add(w.name()));
+        for (WorkspaceRef r : workspaceRefs) {
+            if (!declared.contains(r.workspace())) {
+                throw error(r.at(), r.key() + " '" + r.name() + "': no workspace '" + r.workspace()
+                        + "' is declared (declared: " + String.join(", ", declared) + ")");
+            }
         }
     }
 
@@ -263,7 +299,14 @@ final class JcmParser {
 
     /** Names separated by commas, on one line (or continued after a comma). */
     private List<String> names() throws JcmError {
+        return names(new ArrayList<>());
+    }
+
+    /** {@link #names()}, adding where each name starts to {@code starts}. */
+    private List<String> names(List<Integer> starts) throws JcmError {
         var out = new ArrayList<String>();
+        skip();
+        starts.add(pos);
         out.add(name("a name"));
         while (true) {
             int save = pos;
@@ -273,6 +316,8 @@ final class JcmParser {
                 return out;
             }
             pos++;
+            skip();
+            starts.add(pos);
             out.add(name("a name after ','"));
         }
     }

@@ -112,6 +112,10 @@ class JcmProjectTest {
                 + "class-path, asl-path)", loadError(dir, "u.jcm", "mas u {\n    platform: cartago()\n}\n"));
         assertEquals(dir.resolve("f.jcm") + ":2:15: error: focus 'c' is not workspace.artifact",
                 loadError(dir, "f.jcm", "mas f {\n    agent a { focus: c }\n}\n"));
+        assertEquals(dir.resolve("w.jcm") + ":2:30: error: focus 'tool.c': no workspace 'tool' is declared (declared: main, tools)",
+                loadError(dir, "w.jcm", "mas w {\n    agent a { focus: main.x, tool.c }\n    workspace tools {\n    }\n}\n"));
+        assertEquals(dir.resolve("j.jcm") + ":2:27: error: join 'nowhere': no workspace 'nowhere' is declared (declared: main)",
+                loadError(dir, "j.jcm", "mas j {\n    agent a { join: main, nowhere }\n}\n"));
         assertEquals(dir.resolve("b.jcm") + ":2:1: error: expected '}' before the end of the file",
                 loadError(dir, "b.jcm", "mas b {\n"));
         String missing = loadError(dir, "m.jcm", "mas m {\n    workspace w {\n        artifact c: no.Such(1)\n    }\n}\n");
