@@ -32,7 +32,6 @@ mock_operation(_, ok).
        !assert_true(mock_called(deltaBased(false)));
        !assert_true(mock_called(setUpTargetPoint(0.4, 0, -0.4)));
        !assert_true(mock_called(ignoreCylindersNear(0.4, -0.4, C)) & C > 0.189 & C < 0.191);  // radius + 9 cm
-       !assert_true(mock_called(ignoreLateralCylindersNear(0.4, -0.4, R)) & R > 0.099 & R < 0.101);  // the radius
        !assert_true(mock_called(setThreshold(0.04)));
        !assert_true(targetPoint(0.4, -0.4)).
 

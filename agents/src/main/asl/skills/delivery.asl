@@ -19,9 +19,6 @@ areaLimit(10000).   // ms from entering the area to the put-down before the robo
 // gripper next to the area where no plan would pick it up again)
 storageClearance(C) :- storageRadius(R) & C = R + 0.09.
 storageClearance(0.15) :- not storageRadius(_).
-// the storage area itself (the clearance less the held cylinder's 0.09 m): a cylinder red in a side section of the
-// camera that the middleware puts in it is stored, and no reach is begun at it (ignoreLateralCylindersNear)
-storageAreaRadius(R) :- storageClearance(C) & R = C - 0.09.
 // Reads: storagePoint(X, Z), storageRadius(R) (from the world file, as initial beliefs: no
 // coordinate is written in an agent); lastAvoid(T) (avoidance); gripPoint(X, Z) (gripper.asl's, optional);
 // onErrand, halted (rules a skill that sends the robot elsewhere extends, e.g. recharge).
@@ -50,9 +47,8 @@ storageWithin(E) :- location(X, _, Z) & storagePoint(Sx, Sz) & storageClearance(
     & (X - Sx) * (X - Sx) + (Z - Sz) * (Z - Sz) < (C + E) * (C + E).
 
 @setUpDelivery
-+!setUpDelivery : storagePoint(X, Z) & storageClearance(SC) & storageAreaRadius(SR) & threshold(T)
-    <- deltaBased(false); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z); ignoreCylindersNear(X, Z, SC);
-       ignoreLateralCylindersNear(X, Z, SR); setThreshold(T).
++!setUpDelivery : storagePoint(X, Z) & storageClearance(SC) & threshold(T)
+    <- deltaBased(false); -+targetPoint(X, Z); setUpTargetPoint(X, 0, Z); ignoreCylindersNear(X, Z, SC); setThreshold(T).
 
 /* At the storage point (Chapter 4 §3.1) */
 

@@ -45,18 +45,14 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
      */
     static final long LATERAL_MEMORY_MS = 6000;
     /**
-     * Where a red side section puts its cylinder (ours): the middle of the side section (the 60° image in
-     * three, so 20° off the centre) at the camera's red range.
+     * Where a red side section puts its cylinder, for the excluded areas (ours): the middle of the side
+     * section (the 60° image in three, so 20° off the centre) at the camera's red range. A cylinder so
+     * placed in an excluded area (the stored pile, beside the robot just after a delivery) is not signalled:
+     * the reach it began met "too close to storage area" and was given up, and the signal, held until
+     * LATERAL_MEMORY_MS, kept far sightings and lateral obstacles back meanwhile.
      */
     static final double LATERAL_OFFSET_DEG = 20;
     static final double LATERAL_RANGE = 0.1;
-    /**
-     * Circles (x, z, radius) in which a lateral cylinder so placed is not signalled (ignoreLateralCylindersNear):
-     * the stored pile, red beside the robot just after a delivery, began a reach that met "too close to storage
-     * area" and was given up, and its signal, held until LATERAL_MEMORY_MS, kept far sightings and lateral
-     * obstacles back meanwhile.
-     */
-    private final List<double[]> lateralExcluded = new ArrayList<>();
     private long lateralSinceMs;
     private boolean holding;
     private double armPosition = 0;
@@ -121,26 +117,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
     @OPERATION
     void ignoreCylindersNear(double x, double z, double radius) {
         excluded.add(new double[] {x, z, radius});
-    }
-
-    /**
-     * A red side section whose cylinder, put {@link #LATERAL_RANGE} m away in the section's middle, lies inside
-     * this circle is not signalled as a lateral cylinder (e.g. the storage area's pile); ours.
-     */
-    @OPERATION
-    void ignoreLateralCylindersNear(double x, double z, double radius) {
-        lateralExcluded.add(new double[] {x, z, radius});
-    }
-
-    /** Whether the cylinder red in the side section ({@code left} or not) is put in an area of ignoreLateralCylindersNear. */
-    private boolean lateralExcluded(boolean left) {
-        if (position == null || Double.isNaN(heading) || lateralExcluded.isEmpty()) {
-            return false;
-        }
-        // as far sight's rays: degrees from the heading, positive to the right
-        double a = Math.toRadians(heading + (left ? -LATERAL_OFFSET_DEG : LATERAL_OFFSET_DEG));
-        double x = position[0] + LATERAL_RANGE * Math.cos(a), z = position[1] + LATERAL_RANGE * Math.sin(a);
-        return lateralExcluded.stream().anyMatch(e -> Math.hypot(x - e[0], z - e[1]) < e[2]);
     }
 
     /**
@@ -219,18 +195,25 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         }
     }
 
-    /** Whether the sighting's ray meets an excluded area about as far as the cylinder seems to be. */
     private boolean excluded(CylinderSighting s) {
+        return excluded(s.offset(), s.distance());
+    }
+
+    /**
+     * Whether the ray {@code offset} degrees off the heading (positive to the right) meets an excluded area
+     * about as far as the cylinder seems to be ({@code distance} metres), or the robot stands in one.
+     */
+    private boolean excluded(double offset, double distance) {
         if (position == null || Double.isNaN(heading)) {
             return false;
         }
-        double a = Math.toRadians(heading + s.offset());
+        double a = Math.toRadians(heading + offset);
         double ux = Math.cos(a), uz = Math.sin(a);
         for (double[] e : excluded) {
             double dx = e[0] - position[0], dz = e[1] - position[1];
             double along = dx * ux + dz * uz;
             double across = Math.abs(dx * uz - dz * ux);
-            if (Math.hypot(dx, dz) < e[2] || (across < e[2] && along > 0.5 * s.distance() - 0.1 && along < 2 * s.distance() + 0.1)) {
+            if (Math.hypot(dx, dz) < e[2] || (across < e[2] && along > 0.5 * distance - 0.1 && along < 2 * distance + 0.1)) {
                 return true;
             }
         }
@@ -301,7 +284,8 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                     lateralCylinder = null; // turned towards it: now it is ahead
                     signal("cylinderBeyond");
                 } else if (lateralCylinder == null && !stopDistance && !holding && !cylinderSignalled
-                        && !red(1) && (red(0) || red(2)) && !lateralExcluded(red(0))) {
+                        && !red(1) && (red(0) || red(2))
+                        && !excluded(red(0) ? -LATERAL_OFFSET_DEG : LATERAL_OFFSET_DEG, LATERAL_RANGE)) {
                     lateralCylinder = red(0) ? "left" : "right";
                     lateralSinceMs = simTimeMs();
                     signal(red(0) ? "cylinderLeft" : "cylinderRight");
