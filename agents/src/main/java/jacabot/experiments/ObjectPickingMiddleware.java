@@ -44,15 +44,6 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
      * nor far ones were signalled again: the robot drove past cylinders for the rest of the run.
      */
     static final long LATERAL_MEMORY_MS = 6000;
-    /**
-     * Where a red side section puts its cylinder, for the excluded areas (ours): the middle of the side
-     * section (the 60° image in three, so 20° off the centre) at the camera's red range. A cylinder so
-     * placed in an excluded area (the stored pile, beside the robot just after a delivery) is not signalled:
-     * the reach it began met "too close to storage area" and was given up, and the signal, held until
-     * LATERAL_MEMORY_MS, kept far sightings and lateral obstacles back meanwhile.
-     */
-    static final double LATERAL_OFFSET_DEG = 20;
-    static final double LATERAL_RANGE = 0.1;
     private long lateralSinceMs;
     private boolean holding;
     private double armPosition = 0;
@@ -195,25 +186,18 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
         }
     }
 
+    /** Whether the sighting's ray meets an excluded area about as far as the cylinder seems to be. */
     private boolean excluded(CylinderSighting s) {
-        return excluded(s.offset(), s.distance());
-    }
-
-    /**
-     * Whether the ray {@code offset} degrees off the heading (positive to the right) meets an excluded area
-     * about as far as the cylinder seems to be ({@code distance} metres), or the robot stands in one.
-     */
-    private boolean excluded(double offset, double distance) {
         if (position == null || Double.isNaN(heading)) {
             return false;
         }
-        double a = Math.toRadians(heading + offset);
+        double a = Math.toRadians(heading + s.offset());
         double ux = Math.cos(a), uz = Math.sin(a);
         for (double[] e : excluded) {
             double dx = e[0] - position[0], dz = e[1] - position[1];
             double along = dx * ux + dz * uz;
             double across = Math.abs(dx * uz - dz * ux);
-            if (Math.hypot(dx, dz) < e[2] || (across < e[2] && along > 0.5 * distance - 0.1 && along < 2 * distance + 0.1)) {
+            if (Math.hypot(dx, dz) < e[2] || (across < e[2] && along > 0.5 * s.distance() - 0.1 && along < 2 * s.distance() + 0.1)) {
                 return true;
             }
         }
@@ -284,8 +268,7 @@ public class ObjectPickingMiddleware extends ObstacleAvoidanceMiddleware {
                     lateralCylinder = null; // turned towards it: now it is ahead
                     signal("cylinderBeyond");
                 } else if (lateralCylinder == null && !stopDistance && !holding && !cylinderSignalled
-                        && !red(1) && (red(0) || red(2))
-                        && !excluded(red(0) ? -LATERAL_OFFSET_DEG : LATERAL_OFFSET_DEG, LATERAL_RANGE)) {
+                        && !red(1) && (red(0) || red(2))) {
                     lateralCylinder = red(0) ? "left" : "right";
                     lateralSinceMs = simTimeMs();
                     signal(red(0) ? "cylinderLeft" : "cylinderRight");

@@ -173,32 +173,6 @@ class MiddlewareTest {
         assertEquals(1, other.signals.size(), "an area off the line of sight hides nothing: " + other.signals);
     }
 
-    /**
-     * Just after a delivery the stored pile is red in a side section: a cylinder put there (20° off, 0.1 m) inside
-     * an ignored area is not signalled, so nothing is held and the other side's cylinder is signalled at once.
-     */
-    @Test
-    void aLateralCylinderInAnIgnoredAreaIsNotSignalled() throws Exception {
-        var left = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {200, 40, 30, 90, 90, 90, 90, 90, 90});
-        var right = new SensorInfo(SensorKind.CAMERA_SECTIONS.id(), new int[] {90, 90, 90, 90, 90, 90, 200, 40, 30});
-        // at the origin facing +x; the area 0.155 m off along the left section's middle (20° to the left: -z)
-        var gps = new SensorInfo(SensorKind.GPS.id(), 0.0, 0.0, 0.0);
-        var compass = new SensorInfo(SensorKind.COMPASS.id(), 1.0, 0.0, 0.0);
-        double ax = 0.155 * Math.cos(Math.toRadians(20)), az = -0.155 * Math.sin(Math.toRadians(20));
-        var b = new Bench(ObjectPickingMiddleware.class);
-        b.op("ignoreCylindersNear", new Object[] {ax, az, 0.06});
-        b.deliver(gps, compass, left);
-        b.deliver(gps, compass, left);
-        assertTrue(b.signals.isEmpty(), "the left one lies in the ignored area: " + b.signals);
-        b.deliver(gps, compass, right);
-        assertEquals(List.of("cylinderRight"), b.signals, "nothing held: the right one at once");
-        var plain = new Bench(ObjectPickingMiddleware.class);
-        plain.op("ignoreCylindersNear", new Object[] {-ax, -az, 0.06}); // behind the robot: hides nothing beside it
-        plain.deliver(gps, compass, left);
-        plain.deliver(gps, compass, right);
-        assertEquals(List.of("cylinderLeft"), plain.signals, "held until turned to or forgotten: " + plain.signals);
-    }
-
     /** The storage area's pile ahead (the widest run) and a lone cylinder to the left: only every red run shows the lone one. */
     @Test
     void aCylinderBesideAnIgnoredAreaIsSignalledWhenEveryRedRunIsLookedAt() throws Exception {
