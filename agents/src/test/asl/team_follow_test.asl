@@ -64,14 +64,3 @@ mock_operation(_, ok).
        .wait(400);
        !assert_false(following(_));
        -robotAt(khepera1, _, _).
-
-@[test]
-+!test_a_teammate_queued_near_the_charger_is_not_followed
-    <- !forget_calls; -followedOut(_); -+targetPoint(0.41, -0.41); -+delivering;
-       -location(_, _, _); +location(-0.1, 0, 0.1); -+orientation(315);
-       -+charger(0.2, -0.2); -+chargerQueue([khepera1]);           // its turn, 0.28 m from the charger
-       !!perceive(robotAt(khepera1, 0.0, 0.0));                  // 0.14 m ahead, nearer the point
-       .wait(400);
-       !assert_false(following(_));                              // bound for the charger: no wait behind it
-       !assert_false(mock_called(stop));
-       -robotAt(khepera1, _, _); -+chargerQueue([]); -+charger(-0.38, 0.38); -delivering.

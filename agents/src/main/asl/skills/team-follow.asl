@@ -17,9 +17,9 @@ followTimeStanding(30000). // ms it waits behind one that does
 followAgain(8000).     // ms during which a teammate waited for that long is not waited for again
 followPoll(200).       // ms between two looks at the places while waiting
 // Beliefs: following(A), followedOut(A). Rules it extends: halted, waitingTurn. Rules it offers: followBehind(A).
-// Reads: robotAt(A, X, Z) (the board), chargerQueue(L), targetPoint(X, Z), delivering, onErrand, avoiding, givingWay,
+// Reads: robotAt(A, X, Z) (the board), targetPoint(X, Z), delivering, onErrand, avoiding, givingWay,
 // waitingStorage, storageTurnMine, location, orientation.
-// Needs: team-places (the places), team-way (aheadOfMe, standing, inChargerReach, !standStill), heading (computeGap, balance,
+// Needs: team-places (the places), team-way (aheadOfMe, standing, !standStill), heading (computeGap, balance,
 // steer). Include it after team-way (a teammate too close is given way first) and before heading:
 // its plans for obstacles while following come first.
 
@@ -32,12 +32,7 @@ followBehind(A) :- delivering & not onErrand & not storageTurnMine & targetPoint
     & robotAt(A, Ax, Az) & not .my_name(A) & not followedOut(A) & followDistance(D)
     & (Ax - X) * (Ax - X) + (Az - Z) * (Az - Z) < D * D
     & (Ax - Tx) * (Ax - Tx) + (Az - Tz) * (Az - Tz) < (X - Tx) * (X - Tx) + (Z - Tz) * (Z - Tz)
-    & aheadOfMe(Ax, Az) & not chargerBound(A).
-// a teammate queued for the charger and near it is bound for the charger, not the storage point:
-// waiting behind it parts nothing (team world 399, four robots, seed 1: a recharged robot bringing its
-// cylinder stood 10 s beside the charger behind the one whose turn had come, in its way, and the
-// charger stood empty 25 s between two robots)
-chargerBound(A) :- chargerQueue(L) & .member(A, L) & inChargerReach(A).
+    & aheadOfMe(Ax, Az).
 
 @followTeammate[atomic]
 +robotAt(_, _, _) : not halted & not avoiding & not givingWay & not following(_) & followBehind(A)
