@@ -269,3 +269,13 @@ mock_operation(_, ok).
        -+battery(650);
        !assert_false(chargedEnough);                    // 550 J does not
        -robotAt(khepera9, _, _); -taskEnd(_); -+battery(470).
+
+@[test]
++!test_a_no_progress_signal_just_after_a_wait_at_the_charger_is_the_waits
+    <- !until(not charging, 10000); !forget_calls; -avoiding; -waitingCharger;
+       .system_time(Now); -+chargerWaitOver(Now - 500);           // its turn came 0.5 s ago
+       !!perceive(stuck);
+       !until(not chargerWaitOver(_), 3000);
+       !assert_false(chargerWaitOver(_));                         // taken as the wait's
+       !assert_false(avoiding);                                   // no escape
+       !assert_false(mock_called(stop)).

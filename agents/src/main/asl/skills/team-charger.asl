@@ -51,7 +51,7 @@ teamMeanPower(2.0).         // W: with teammates, the power recharge-trip's task
 teamChargeReserve(100).     // J: ... and a charge ends once the battery less this covers the time left
                             // at that power (chargeUntilLasts)
 chargerNearTeammate(0.5).    // m from the charger: a teammate this near is driven away from
-// Beliefs: waitingCharger, yieldedCharger, chargerBooked, leavingCharger. Rules it extends: halted, waitingTurn.
+// Beliefs: waitingCharger, chargerWaitFrom(T), chargerWaitOver(T), yieldedCharger, chargerBooked, leavingCharger. Rules it extends: halted, waitingTurn.
 // Reads: charger(X, Z) (the world), charging, atCharger, wayEnergy, batteryLasts (recharge-trip; taskEnd(T), the
 // run's end, told by the team's runner), chargerQueue(L),
 // chargerWaiting(L) (the charger), location, battery, insideArea (delivery), robotAt(A, X, Z) (team-places).
@@ -143,10 +143,17 @@ squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
 // at the charger: its need now, then it waits as a robot that has arrived (before the booked ones)
 @queueForCharger
 +!queueForCharger : battery(B)
-    <- +waitingCharger; !standStill; requestCharger(B); .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+    <- +waitingCharger; !standStill; requestCharger(B); .print("Waiting for the charger"); !markChargerWait; awaitCharger; -waitingCharger;
+       !markChargerWaitOver.
 @queueForChargerNoReading
 +!queueForCharger
-    <- +waitingCharger; !standStill; .print("Waiting for the charger"); awaitCharger; -waitingCharger.
+    <- +waitingCharger; !standStill; .print("Waiting for the charger"); !markChargerWait; awaitCharger; -waitingCharger;
+       !markChargerWaitOver.
+// a wait of a second or more is marked (its end), for the no-progress signal that follows it (below)
+@markChargerWait +!markChargerWait : .system_time(Now) <- -+chargerWaitFrom(Now).
+@markChargerWaitOver
++!markChargerWaitOver : chargerWaitFrom(T) & .system_time(Now) & Now - T >= 1000 <- -+chargerWaitOver(Now).
+@chargerWaitBrief +!markChargerWaitOver.
 @queueForChargerFailed -!queueForCharger <- -waitingCharger.
 
 // the turn given to a robot that does not reach the charger in time goes to the next one
@@ -231,3 +238,9 @@ squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
 @obstacleWhileWaitingCharger +obstacle(true) : waitingCharger.
 @lateralWhileWaitingCharger +lateralObstacle(_) : waitingCharger.
 @stuckWhileWaitingCharger +stuck : waitingCharger.
+// the middleware's progress windows ran on while the robot stood waiting: the first no-progress
+// signal within the short window after the wait is the wait's, not the way's (team world 399, four
+// robots, seed 1: the robot whose turn had come escaped 0.44 s later, backing away and re-aligning
+// for 7 s, and reached the charger 24 s after its turn while two robots waited there)
+@stuckFromTheChargerWait
++stuck : chargerWaitOver(T) & stuckWindows(W, _, _, _) & .system_time(Now) & Now - T < W <- -chargerWaitOver(T).
