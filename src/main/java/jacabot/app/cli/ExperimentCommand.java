@@ -282,6 +282,8 @@ final class ExperimentCommand implements Callable<Integer> {
             try { // the page can halt the run too
                 checkLabels(breaks, run.mas());
                 debugger = breaks.isEmpty() ? new Debugger() : DebugConsole.start(breaks, System.in, System.out);
+                // a breakpoint typed in the console or added from the page is checked as --break is
+                debugger.labels(() -> labels(run.mas()));
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
             }
@@ -452,16 +454,29 @@ final class ExperimentCommand implements Callable<Integer> {
      * refused, with the labels nearest to it.
      */
     private static void checkLabels(List<String> breaks, LocalMAS mas) {
-        var labels = new ArrayList<String>();
-        for (String name : mas.agentNames()) {
-            mas.agent(name).plans().stream().filter(p -> p.label() != null).forEach(p -> labels.add(p.label().functor()));
-        }
+        var labels = labels(mas);
         for (String b : breaks) {
             String why = Breakpoint.parse(b).missingLabel(labels);
             if (why != null) {
                 throw new UserError("--break " + b.trim() + ": " + why);
             }
         }
+    }
+
+    /**
+     * {@return the labels of the agents' plans now, or null when they cannot be read now (a plan
+     * added by the running agent meanwhile): a breakpoint is then taken unchecked}
+     */
+    private static List<String> labels(LocalMAS mas) {
+        var labels = new ArrayList<String>();
+        try {
+            for (String name : mas.agentNames()) {
+                mas.agent(name).plans().stream().filter(p -> p.label() != null).forEach(p -> labels.add(p.label().functor()));
+            }
+        } catch (java.util.ConcurrentModificationException e) {
+            return null;
+        }
+        return labels;
     }
 
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
