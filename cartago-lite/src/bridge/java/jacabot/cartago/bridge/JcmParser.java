@@ -97,7 +97,7 @@ final class JcmParser {
         if (optionalBlock()) {
             block("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)", (key, at) -> agentParam(p, key, at));
         }
-        return new AgentDecl(name, source, p.beliefs, p.goals, p.focus, p.join, p.instances, p.arch);
+        return new AgentDecl(name, source, p.beliefs, p.goals, p.focus, p.focusAt, p.join, p.instances, p.arch);
     }
 
     /** An agent's parameters as they are read. */
@@ -105,6 +105,7 @@ final class JcmParser {
         String beliefs;
         String goals;
         final List<String> focus = new ArrayList<>();
+        final List<String> focusAt = new ArrayList<>();
         final List<String> join = new ArrayList<>();
         int instances = 1;
         String arch;
@@ -124,6 +125,7 @@ final class JcmParser {
                         throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
                     p.focus.add(f);
+                    p.focusAt.add(where(starts.get(i)));
                     workspaceRefs.add(new WorkspaceRef("focus", f, f.substring(0, f.lastIndexOf('.')), starts.get(i)));
                 }
             }

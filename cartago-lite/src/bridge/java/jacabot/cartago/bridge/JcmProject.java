@@ -15,9 +15,10 @@ public record JcmProject(Path file, String name, List<AgentDecl> agents, List<Wo
      *
      * @param beliefs the text after {@code beliefs:} (AgentSpeak literals separated by commas), or null
      * @param focus   {@code workspace.artifact} names
+     * @param focusAt {@code file:line:col} of each {@code focus} entry
      */
     public record AgentDecl(String name, String source, String beliefs, String goals, List<String> focus,
-            List<String> join, int instances, String archClass) {
+            List<String> focusAt, List<String> join, int instances, String archClass) {
     }
 
     /** {@code workspace NAME { artifact A: C(args) ... agents: a, b }}. */

@@ -102,6 +102,46 @@ class JcmProjectTest {
                 lines.stream().sorted().toList(), lines.toString());
     }
 
+    /**
+     * A {@code focus:} on an artifact the project does not make: as in JaCaMo, the agent waits a
+     * little for another agent to make it (five tries, 200 ms apart), and focuses on it once made;
+     * never made, one line says so with the entry's place in the .jcm and the agent goes on.
+     */
+    @Test
+    void aFocusOnAnArtifactMadeAtRunTimeWaitsForItOrSaysWhereItWasAskedFor(@TempDir Path dir) throws Exception {
+        ProjectRun.write(dir, Map.of("p.jcm", """
+                mas p {
+                    agent bob {
+                        focus: w.c
+                    }
+                    agent maker
+                    workspace w
+                }
+                """, "bob.asl", """
+                +count(N) <- .print("sees ", N); .stopMAS.
+                """, "maker.asl", """
+                !make.
+                +!make <- .wait(300); joinWorkspace("w", _); makeArtifact("c", "jacabot.cartago.examples.Counter", [], _).
+                """, "n.jcm", """
+                mas n {
+                    agent carol {
+                        focus: w.c,
+                               w.d
+                    }
+                    workspace w {
+                        artifact d: jacabot.cartago.examples.Counter
+                    }
+                }
+                """, "carol.asl", """
+                !go.
+                +!go <- .wait(1500); .print("goes on"); ?count(N); .print("sees ", N); .stopMAS.
+                """));
+        assertEquals(List.of("[bob] sees 0"), ProjectRun.run(dir.resolve("p.jcm"), 0, 60_000).lines());
+        assertEquals(List.of("[carol] " + dir.resolve("n.jcm") + ":3:16: error: focus 'w.c': no artifact 'c' in workspace 'w' "
+                + "(none made it in 5 tries, 1 s)", "[carol] goes on", "[carol] sees 0"),
+                ProjectRun.run(dir.resolve("n.jcm"), 0, 60_000).lines());
+    }
+
     @Test
     void organisationsAndUnknownEntriesAreRefusedWithTheirPlace(@TempDir Path dir) throws Exception {
         assertEquals(dir.resolve("o.jcm") + ":3:5: error: organisations (Moise) are not supported: jacabot runs the agents "
