@@ -518,13 +518,18 @@ final class ExperimentCommand implements Callable<Integer> {
                 + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
     }
 
-    /** {@return the seconds of a --duration} @throws UserError when it is not one */
+    /** {@return the seconds of a --duration} @throws UserError when it is not one, or no time at all */
     static double duration(String text) {
+        double seconds;
         try {
-            return parseDuration(text);
+            seconds = parseDuration(text);
         } catch (IllegalArgumentException e) {
             throw new UserError("--duration: " + e.getMessage());
         }
+        if (!(seconds > 0)) { // a run of no time has no step to write, and a run waiting for its end would wait for ever
+            throw new UserError("--duration: must be more than 0, got '" + text + "' (examples: 90s, 10m, 1h)");
+        }
+        return seconds;
     }
 
     static double parseDuration(String text) {
