@@ -113,7 +113,7 @@ public final class MasLauncher {
                     AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
-                        String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
+                        String agName = mas.newAgentName(spec.instances() > 1 ? spec.name() + k : spec.name());
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
                             program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
