@@ -162,6 +162,12 @@ public final class JcmReader implements ProjectReader {
         return "\"" + s.replace("\\", "\\\\").replace("\"", "\\\"") + "\"";
     }
 
+    @Override
+    public String optionPlace(MasProject.AgentSpec spec, String option) {
+        return project.agents().stream().filter(a -> a.name().equals(spec.name())).findFirst()
+                .map(a -> a.optionsAt().get(option)).orElse(null);
+    }
+
     /** The class path entries of a project's {@code class-path:}. */
     public static List<String> classPath(Path file) throws UserError {
         return parse(file).classPath();

@@ -158,6 +158,15 @@ class JcmProjectTest {
                 loadError(dir, "j.jcm", "mas j {\n    agent a { join: main, nowhere }\n}\n"));
         assertEquals(dir.resolve("b.jcm") + ":2:1: error: expected '}' before the end of the file",
                 loadError(dir, "b.jcm", "mas b {\n"));
+        // beliefs: and goals: that do not read are told where they are written, as every other entry
+        Files.writeString(dir.resolve("a.asl"), "!g.\n+!g.\n");
+        assertEquals(dir.resolve("bel.jcm") + ":3:9: error: agent a's beliefs \"x(\": expected ')' before the option's end: "
+                + "the '(' at column 2 is not closed", loadError(dir, "bel.jcm", "mas bel {\n    agent a {\n        beliefs: x(\n    }\n}\n"));
+        assertEquals(dir.resolve("goal.jcm") + ":2:15: error: agent a's goals \"1\": '1' is not a literal in the option '1'",
+                loadError(dir, "goal.jcm", "mas goal {\n    agent a { goals: 1 }\n}\n"));
+        // a ')' too many is the option's text, told as such, not dropped
+        assertEquals(dir.resolve("par.jcm") + ":2:15: error: agent a's beliefs \"x)\": unexpected ')', expected ',' or the option's end",
+                loadError(dir, "par.jcm", "mas par {\n    agent a { beliefs: x) }\n}\n"));
         String missing = loadError(dir, "m.jcm", "mas m {\n    workspace w {\n        artifact c: no.Such(1)\n    }\n}\n");
         assertTrue(missing.startsWith(dir.resolve("m.jcm") + ":3:9: error: cannot make the artifact c: "), missing);
     }
