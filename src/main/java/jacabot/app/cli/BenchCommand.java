@@ -1,5 +1,6 @@
 package jacabot.app.cli;
 
+import jacabot.app.Installation;
 import jacabot.app.bench.InterpreterBenchmark;
 import jacabot.app.bench.LatencyBenchmark;
 import jacabot.app.bench.SimulationBenchmark;
@@ -185,7 +186,8 @@ final class BenchCommand implements Runnable {
                 throw new UserError(e.getMessage());
             }
             if (robots < 1 || robots > world.robots().size()) {
-                throw new UserError("--robots must be in 1.." + world.robots().size() + " (the robots of " + file + "), got " + robots);
+                throw new UserError("--robots must be in 1.." + world.robots().size() + " (the robots of " + Installation.shown(file)
+                        + "), got " + robots);
             }
             boolean defaultDuration = spec.commandLine().getParseResult().matchedOption("--duration") == null;
             boolean defaultWarmup = spec.commandLine().getParseResult().matchedOption("--warmup") == null;

@@ -141,9 +141,10 @@ final class ControllerCommand implements Callable<Integer> {
         if (viewer && GraphicsEnvironment.isHeadless()) {
             throw new UserError("--viewer needs a display, and this Java runs headless");
         }
+        WorldSpec spec = spec(); // its own errors are the user's, said as they are
         SimWorld simWorld;
         try {
-            simWorld = SimWorld.of(spec());
+            simWorld = SimWorld.of(spec);
         } catch (RuntimeException e) {
             throw new UserError(world + ": this world cannot run: " + JacabotCommand.describe(e));
         }
@@ -221,7 +222,8 @@ final class ControllerCommand implements Callable<Integer> {
                 throw new UserError("--robots N makes a team, --robot NAME runs one robot: choose one");
             }
             if (robots < 1 || robots > spec.robots().size()) {
-                throw new UserError("--robots must be in 1.." + spec.robots().size() + " (the robots of " + file + "), got " + robots);
+                throw new UserError("--robots must be in 1.." + spec.robots().size() + " (the robots of " + Installation.shown(file)
+                        + "), got " + robots);
             }
             spec = TeamWorld.firstRobots(spec, robots);
         }

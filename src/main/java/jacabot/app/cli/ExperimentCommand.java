@@ -282,6 +282,8 @@ final class ExperimentCommand implements Callable<Integer> {
             try { // the page can halt the run too
                 checkLabels(breaks, run.mas());
                 debugger = breaks.isEmpty() ? new Debugger() : DebugConsole.start(breaks, System.in, System.out);
+                // a breakpoint typed in the console or added from the page is checked as --break is
+                debugger.labels(() -> labels(run.mas()));
             } catch (IllegalArgumentException e) {
                 throw new UserError("--break: " + e.getMessage());
             }
@@ -452,16 +454,29 @@ final class ExperimentCommand implements Callable<Integer> {
      * refused, with the labels nearest to it.
      */
     private static void checkLabels(List<String> breaks, LocalMAS mas) {
-        var labels = new ArrayList<String>();
-        for (String name : mas.agentNames()) {
-            mas.agent(name).plans().stream().filter(p -> p.label() != null).forEach(p -> labels.add(p.label().functor()));
-        }
+        var labels = labels(mas);
         for (String b : breaks) {
             String why = Breakpoint.parse(b).missingLabel(labels);
             if (why != null) {
                 throw new UserError("--break " + b.trim() + ": " + why);
             }
         }
+    }
+
+    /**
+     * {@return the labels of the agents' plans now, or null when they cannot be read now (a plan
+     * added by the running agent meanwhile): a breakpoint is then taken unchecked}
+     */
+    private static List<String> labels(LocalMAS mas) {
+        var labels = new ArrayList<String>();
+        try {
+            for (String name : mas.agentNames()) {
+                mas.agent(name).plans().stream().filter(p -> p.label() != null).forEach(p -> labels.add(p.label().functor()));
+            }
+        } catch (java.util.ConcurrentModificationException e) {
+            return null;
+        }
+        return labels;
     }
 
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */
@@ -503,13 +518,18 @@ final class ExperimentCommand implements Callable<Integer> {
                 + (Files.exists(outDir.resolve(ConsoleFile.FILE)) ? ", " + ConsoleFile.FILE : ""));
     }
 
-    /** {@return the seconds of a --duration} @throws UserError when it is not one */
+    /** {@return the seconds of a --duration} @throws UserError when it is not one, or no time at all */
     static double duration(String text) {
+        double seconds;
         try {
-            return parseDuration(text);
+            seconds = parseDuration(text);
         } catch (IllegalArgumentException e) {
             throw new UserError("--duration: " + e.getMessage());
         }
+        if (!(seconds > 0)) { // a run of no time has no step to write, and a run waiting for its end would wait for ever
+            throw new UserError("--duration: must be more than 0, got '" + text + "' (examples: 90s, 10m, 1h)");
+        }
+        return seconds;
     }
 
     static double parseDuration(String text) {

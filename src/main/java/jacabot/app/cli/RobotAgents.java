@@ -23,6 +23,9 @@ final class RobotAgents {
         if (conflict != null) {
             throw new UserError("--agents: not with " + conflict + " (--agents names the robot's agents)");
         }
+        if (names.stream().allMatch(String::isBlank)) {
+            throw new UserError("--agents: no agent named (suspend-resume has task and energy: --agents task,energy)");
+        }
         var out = new ArrayList<RobotAgent>();
         for (String name : names) {
             if (!name.matches("[a-z][A-Za-z0-9_]*") || out.stream().anyMatch(a -> a.name().equals(name))) {

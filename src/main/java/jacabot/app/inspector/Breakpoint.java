@@ -49,11 +49,12 @@ public record Breakpoint(String kind, String text, Pattern event, Pattern belief
     }
 
     /**
-     * {@return null when this is no {@code label:} breakpoint or a plan of these labels has its
-     * label; else why it would never halt the run, with the labels nearest to its own by spelling}
+     * {@return null when this is no {@code label:} breakpoint, a plan of these labels has its
+     * label or the labels are not known (null); else why it would never halt the run, with the
+     * labels nearest to its own by spelling}
      */
     public String missingLabel(Collection<String> labels) {
-        if (!kind.equals("label")) {
+        if (!kind.equals("label") || labels == null) {
             return null;
         }
         String label = text.substring(6).replaceFirst("^@", "");

@@ -2,6 +2,7 @@ package jacabot.app.inspector;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Queue;
@@ -37,6 +38,8 @@ public final class Debugger {
 
     private final List<Breakpoint> breakpoints = new CopyOnWriteArrayList<>();
     private final List<Consumer<Halt>> listeners = new CopyOnWriteArrayList<>();
+    /** The plan labels a {@code label:} breakpoint is checked against (none known: any label is taken). */
+    private volatile Supplier<Collection<String>> labels = () -> null;
     private Set<String> beliefs = new HashSet<>();
     private Halt halted;
     /** The halt is at the start of a reasoning cycle (that cycle runs first when the run goes on). */
@@ -51,9 +54,25 @@ public final class Debugger {
     private boolean pauseAsked;
     private boolean stopped;
 
-    /** Adds a breakpoint. {@return it} */
+    /**
+     * Where the agents' plan labels come from (read at each breakpoint added: a reload may change
+     * them): a {@code label:} breakpoint that no plan has would never halt the run.
+     */
+    public void labels(Supplier<Collection<String>> labels) {
+        this.labels = labels;
+    }
+
+    /**
+     * Adds a breakpoint. {@return it}
+     *
+     * @throws IllegalArgumentException when it does not parse, or names a label no plan has
+     */
     public Breakpoint add(String spec) {
         Breakpoint b = Breakpoint.parse(spec);
+        String why = b.missingLabel(labels.get());
+        if (why != null) {
+            throw new IllegalArgumentException(why);
+        }
         synchronized (this) {
             breakpoints.add(b);
             version++;

@@ -35,6 +35,8 @@ class ControllerCommandTest {
         Files.writeString(bad, "{ \"robots\": [ { \"name\": \"k\", \"model\": \"tank\" } ] }");
         var result = run("controller", "--world", bad.toString());
         assertUserError(result, bad + ": $.robots[0].model");
+        // said once, as the other commands say it: not as a world that "cannot run", its name twice
+        assertTrue(result[2].startsWith("error: " + bad + ": $.robots[0].model"), result[2]);
         assertUserError(run("controller", "--world", dir.resolve("missing.json").toString()), "cannot read the world file");
     }
 
@@ -52,8 +54,11 @@ class ControllerCommandTest {
         String team = Path.of(System.getProperty("jacabot.rootDir", "."), "worlds", "team-delivery.json").toString();
         String secret = dir.resolve("secret").toString();
         assertUserError(run("controller", "--world", team, "--secret-file", secret), "runs in lockstep only: add --lockstep");
-        assertUserError(run("controller", "--world", team, "--lockstep", "--robots", "9", "--secret-file", secret),
-                "--robots must be in 1..4");
+        String[] nine = run("controller", "--world", team, "--lockstep", "--robots", "9", "--secret-file", secret);
+        assertUserError(nine, "--robots must be in 1..4");
+        assertEquals("error: --robots must be in 1..4 (the robots of " + team + "), got 9", nine[2].strip());
+        String[] both = run("controller", "--world", team, "--robots", "2", "--robot", "khepera1", "--secret-file", secret);
+        assertEquals("error: --robots N makes a team, --robot NAME runs one robot: choose one", both[2].strip());
         assertUserError(run("controller", "--world", team, "--lockstep", "--event-log", dir.resolve("e").toString(),
                 "--secret-file", secret), "use --out DIR --link-log");
         assertUserError(run("controller", "--world", NAVIGATION, "--out", dir.toString(), "--secret-file", secret), "--out is for a team");

@@ -139,6 +139,14 @@ class LauncherErrorsTest {
         assertOneLine(experiment("--speed", "-1"), "2", "--speed must be a positive number");
         assertOneLine(experiment("--port", "70000"), "2", "--port must be in 0..65535");
         assertOneLine(experiment("--duration", "soon"), "2", "bad duration");
+        // no time at all: the agents' run waited for ever, the baseline's and the team's failed drawing empty plots
+        assertOneLine(experiment("--duration", "0s"), "2", "--duration: must be more than 0, got '0s' (examples: 90s, 10m, 1h)");
+        assertOneLine(experiment("--duration", "0s", "--baseline"), "2", "--duration: must be more than 0");
+        assertOneLine(CliRun.run("experiment", "team-delivery", "--robots", "1", "--duration", "0m"), "2",
+                "--duration: must be more than 0");
+        // an empty list of names said so, not an IndexOutOfBoundsException
+        assertOneLine(CliRun.run("experiment", "suspend-resume", "--agents", ",,"), "2",
+                "--agents: no agent named (suspend-resume has task and energy: --agents task,energy)");
         assertOneLine(CliRun.run("experiment", "navigation", "--seed", "x"), "2", "--seed");
     }
 

@@ -185,6 +185,33 @@ class DebuggerTest {
         assertEquals("  breakpoint +!pick\n  +!pick\n", bytes.toString(StandardCharsets.UTF_8).replace("\r", ""));
     }
 
+    /**
+     * A {@code label:} breakpoint typed in the console or added from the page is checked against
+     * the agent's plan labels as {@code --break label:X} is: one that would never halt the run is
+     * refused with the labels nearest to it, and not added.
+     */
+    @Test
+    void aBreakpointOnALabelNoPlanHasIsRefusedFromTheConsoleAndThePage() throws Exception {
+        var d = new Debugger();
+        d.labels(() -> List.of("drive", "driveOn", "charge"));
+        var bytes = new java.io.ByteArrayOutputStream();
+        var out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        DebugConsole.command(d, "b label:drve", out);
+        DebugConsole.command(d, "b label:charge", out);
+        assertEquals("  the agent has no plan labelled @drve (nearest: drive, driveOn, charge)\n  breakpoint label:charge\n",
+                bytes.toString(StandardCharsets.UTF_8).replace("\r", ""));
+        assertEquals(List.of("label:charge"), d.breakpoints().stream().map(Breakpoint::text).toList());
+        var client = java.net.http.HttpClient.newHttpClient();
+        try (Inspector inspector = Inspector.startOnFreePort()) {
+            inspector.debugger(d);
+            var r = client.send(java.net.http.HttpRequest.newBuilder(java.net.URI.create(inspector.url("api/debug?cmd=break&spec=label:chrge")))
+                    .POST(java.net.http.HttpRequest.BodyPublishers.noBody()).build(), java.net.http.HttpResponse.BodyHandlers.ofString());
+            assertEquals(400, r.statusCode());
+            assertEquals("the agent has no plan labelled @chrge (nearest: charge, drive, driveOn)", r.body().trim());
+        }
+        assertEquals(List.of("label:charge"), d.breakpoints().stream().map(Breakpoint::text).toList());
+    }
+
     private static Debugger.Halt await(Debugger d) throws InterruptedException {
         for (int i = 0; i < 1200 && d.halted() == null; i++) {
             Thread.sleep(50);

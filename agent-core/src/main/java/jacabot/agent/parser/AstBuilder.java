@@ -270,12 +270,32 @@ final class AstBuilder {
 
     private Term arithExpr(ArithExprContext ctx) {
         Term t = arithTerm(ctx.arithTerm(0));
+        boolean told = false; // Jason stops at an expression's first bad operand: the others are not told
         for (int i = 1; i < ctx.arithTerm().size(); i++) {
             var op = ctx.op.get(i - 1).getText().equals("+") ? ArithExpr.Op.PLUS : ArithExpr.Op.MINUS;
-            Term left = operand(t, "ArithExpr", "first", ctx);
-            t = new ArithExpr(op, left, operand(arithTerm(ctx.arithTerm(i)), "ArithExpr", "second", ctx), where(ctx));
+            told = told || operand(t, "ArithExpr", "first", ctx);
+            Term right = arithTerm(ctx.arithTerm(i));
+            told = told || operand(right, "ArithExpr", "second", ctx);
+            t = new ArithExpr(op, t, right, where(ctx));
         }
         return t;
+    }
+
+    /**
+     * {@return the message of an operand of + or - that is no number, as {@link #operand} tells it}
+     * (for a later rule that knows its likely cause, {@link #amend})
+     */
+    static String operandError(String which, Term t) {
+        return "ArithExpr: " + which + " operand '" + t + "' is not numeric or variable";
+    }
+
+    /** {@return whether this term is no operand of arithmetic: an atom, a structure or a relation} */
+    static boolean notNumeric(Term t) {
+        return t instanceof Literal || t instanceof RelExpr || t instanceof LogExpr;
+    }
+
+    void amend(SourceInfo where, String message, String more) {
+        errors.amend(where, message, more);
     }
 
     /**
@@ -284,15 +304,17 @@ final class AstBuilder {
      * the file (its message names the grammar rule: ArithExpr for + and -, ArithTerm for *, /, div
      * and mod, ArithFactor for **).
      */
-    private Term operand(Term t, String rule, String which, ParserRuleContext ctx) {
-        if (t instanceof Literal || t instanceof RelExpr || t instanceof LogExpr) {
+    private boolean operand(Term t, String rule, String which, ParserRuleContext ctx) {
+        if (notNumeric(t)) {
             errors.add(where(ctx), rule + ": " + which + " operand '" + t + "' is not numeric or variable");
+            return true;
         }
-        return t;
+        return false;
     }
 
     private Term arithTerm(ArithTermContext ctx) {
         Term t = arithFactor(ctx.arithFactor(0));
+        boolean told = false;
         for (int i = 1; i < ctx.arithFactor().size(); i++) {
             ArithExpr.Op op;
             switch (ctx.op.get(i - 1).getText()) {
@@ -301,16 +323,25 @@ final class AstBuilder {
                 case "div": op = ArithExpr.Op.INTDIV; break;
                 default: op = ArithExpr.Op.MOD; break;
             }
-            Term left = operand(t, "ArithTerm", "first", ctx);
-            t = new ArithExpr(op, left, operand(arithFactor(ctx.arithFactor(i)), "ArithTerm", "second", ctx), where(ctx));
+            told = told || operand(t, "ArithTerm", "first", ctx);
+            Term right = arithFactor(ctx.arithFactor(i));
+            told = told || operand(right, "ArithTerm", "second", ctx);
+            t = new ArithExpr(op, t, right, where(ctx));
         }
         return t;
     }
 
     private Term arithFactor(ArithFactorContext ctx) {
         Term base = arithSimple(ctx.arithSimple());
-        return ctx.arithFactor() == null ? base : new ArithExpr(ArithExpr.Op.POW, operand(base, "ArithFactor", "first", ctx),
-                operand(arithFactor(ctx.arithFactor()), "ArithFactor", "second", ctx), where(ctx));
+        if (ctx.arithFactor() == null) {
+            return base;
+        }
+        boolean told = operand(base, "ArithFactor", "first", ctx);
+        Term exponent = arithFactor(ctx.arithFactor());
+        if (!told) {
+            operand(exponent, "ArithFactor", "second", ctx);
+        }
+        return new ArithExpr(ArithExpr.Op.POW, base, exponent, where(ctx));
     }
 
     private Term arithSimple(ArithSimpleContext ctx) {

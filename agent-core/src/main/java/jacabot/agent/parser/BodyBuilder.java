@@ -2,6 +2,7 @@ package jacabot.agent.parser;
 
 import jacabot.agent.parser.AgentSpeakParser.*;
 import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.ArithExpr;
 import jacabot.agent.syntax.ArithFunction;
 import jacabot.agent.syntax.BodyStep;
 import jacabot.agent.syntax.BodyStep.Kind;
@@ -131,7 +132,9 @@ final class BodyBuilder {
             // not a constraint: its LogExpr is a Literal there, and only a relation is a constraint
             return new BodyStep(Kind.ACTION, t, src);
         }
-        ast.error(src, "'" + t + "' is not a valid plan body formula");
+        if (!missingSemicolon(t)) {
+            ast.error(src, "'" + t + "' is not a valid plan body formula");
+        }
         return new BodyStep(Kind.CONSTRAINT, Literal.TRUE, src);
     }
 
@@ -185,11 +188,34 @@ final class BodyBuilder {
             return new BodyStep(kind, Literal.TRUE, src);
         }
         if (!(t instanceof Literal) && !(t instanceof Var) && !(t instanceof AnnotatedVar)) {
-            ast.error(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
+            if (!missingSemicolon(t)) {
+                ast.error(src, "the operand of '" + kind.prefix() + "' must be a literal, not '" + t + "'");
+            }
             t = Literal.TRUE;
         } else if (t instanceof Literal l && l.isInternalAction()) {
             ast.error(src, "wrong combination of operator '" + kind.prefix() + "' and internal action " + l);
         }
         return new BodyStep(kind, t, src);
+    }
+
+    /**
+     * Whether a formula is {@code a(1) -b} read as arithmetic, as Jason reads {@code +a(1) -b}: the
+     * error at its operand that is no number is told already, and gets the likely cause (a {@code ;} left out
+     * between two formulas); nothing more is told of it.
+     */
+    private boolean missingSemicolon(Term t) {
+        if (!(t instanceof ArithExpr a) || (a.op() != ArithExpr.Op.PLUS && a.op() != ArithExpr.Op.MINUS)) {
+            return false;
+        }
+        if (a.left() instanceof ArithExpr) {
+            return missingSemicolon(a.left());
+        }
+        String which = AstBuilder.notNumeric(a.left()) ? "first" : AstBuilder.notNumeric(a.right()) ? "second" : null;
+        if (which == null) {
+            return false;
+        }
+        ast.amend(a.src(), AstBuilder.operandError(which, which.equals("first") ? a.left() : a.right()),
+                " (a ';' missing before '" + a.op() + a.right() + "'?)");
+        return true;
     }
 }

@@ -281,6 +281,11 @@ final class ErrorCollector extends BaseErrorListener {
         errors.add(new SyntaxError(where, message));
     }
 
+    /** Adds {@code more} to the error told at {@code where} with {@code message}, once a later rule knows the likely cause. */
+    void amend(SourceInfo where, String message, String more) {
+        errors.replaceAll(e -> e.where().equals(where) && e.message().equals(message) ? new SyntaxError(where, message + more) : e);
+    }
+
     List<SyntaxError> errors() {
         return errors;
     }

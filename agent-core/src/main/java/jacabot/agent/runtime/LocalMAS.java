@@ -120,6 +120,19 @@ public final class LocalMAS {
     /** The unnamed variables ({@code _}) in Jason 3.2's {@code kqmlPlans.asl}, which each Jason agent reads. */
     static final int JASON_KQML_PLANS_UNNAMED_VARS = 18;
 
+    /**
+     * {@return {@code name} when no agent has it, else Jason's next free one: {@code name_1},
+     * {@code name_2}, ... (Jason 3.2.0's RuntimeServices.getNewAgentName, for a project's agents
+     * and for {@code .create_agent})}
+     */
+    public synchronized String newAgentName(String name) {
+        String free = name;
+        for (int i = 1; agents.containsKey(free); i++) {
+            free = name + "_" + i;
+        }
+        return free;
+    }
+
     public synchronized Agent createAgent(String name, AgentProgram program, AslParser parser,
             Function<LocalArch, AgentArch> archFactory) {
         if (agents.containsKey(name)) {
@@ -348,12 +361,19 @@ public final class LocalMAS {
 
     /** An agent created while the system runs: it gets its own thread when agents have threads. */
     String spawn(String name, AgentProgram program, AslParser parser) {
-        return start(createAgent(name, program, parser, null));
+        Agent ag;
+        synchronized (this) {
+            ag = createAgent(newAgentName(name), program, parser, null);
+        }
+        return start(ag);
     }
 
     /** A copy of an agent: its beliefs are there from the start, without {@code +b} events. */
     String spawnCopy(String name, AgentProgram program, AslParser parser) {
-        Agent ag = createAgent(name, program, parser, null);
+        Agent ag;
+        synchronized (this) {
+            ag = createAgent(newAgentName(name), program, parser, null);
+        }
         ag.circumstance().eventList().forEach(ag.circumstance()::removeEvent);
         return start(ag);
     }

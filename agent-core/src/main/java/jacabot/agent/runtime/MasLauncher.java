@@ -110,13 +110,13 @@ public final class MasLauncher {
                 var parser = new AslParser(sourcePath, reader == null ? resolver : reader.includes(resolver));
                 for (MasProject.AgentSpec spec : project.agents()) {
                     Path asl = locate(spec.file(), sourcePath, file);
-                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
+                    AgentProgram program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file, reader), parser);
                     Function<LocalArch, AgentArch> arch = spec.archClass() == null ? null : archFactory(spec.archClass());
                     for (int k = 1; k <= spec.instances(); k++) {
-                        String agName = spec.instances() > 1 ? spec.name() + k : spec.name();
+                        String agName = mas.newAgentName(spec.instances() > 1 ? spec.name() + k : spec.name());
                         if (k > 1) {
                             // as Jason, each instance reads its source: its own unnamed variables and local namespaces
-                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file), parser);
+                            program = adapted(reader, spec, withOptions(parser.parseFile(asl), spec, parser, file, reader), parser);
                         }
                         Agent created = mas.createAgent(agName, program, parser, arch);
                         if ("0".equals(spec.options().get("verbose"))) {
@@ -148,8 +148,8 @@ public final class MasLauncher {
      * @throws UserError {@code PROJECT: agent A's beliefs "x(": cannot read ...}: the
      *         option's text is read alone, so its own line and column would point nowhere
      */
-    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser, Path project)
-            throws UserError {
+    static AgentProgram withOptions(AgentProgram p, MasProject.AgentSpec spec, AslParser parser, Path project,
+            ProjectReader reader) throws UserError {
         String beliefs = spec.options().get("beliefs");
         String goals = spec.options().get("goals");
         if (beliefs == null && goals == null) {
@@ -158,11 +158,11 @@ public final class MasLauncher {
         var bs = new ArrayList<Object>();
         var gs = new ArrayList<Literal>();
         if (beliefs != null && !beliefs.isBlank()) {
-            bs.addAll(optionTerms(parser, beliefs, "beliefs", spec, project));
+            bs.addAll(optionTerms(parser, beliefs, "beliefs", spec, project, reader));
         }
         bs.addAll(p.beliefs());
         if (goals != null && !goals.isBlank()) {
-            for (Term t : optionTerms(parser, goals, "goals", spec, project)) {
+            for (Term t : optionTerms(parser, goals, "goals", spec, project, reader)) {
                 gs.add((Literal) t);
             }
         }
@@ -176,18 +176,19 @@ public final class MasLauncher {
     }
 
     private static List<Term> optionTerms(AslParser parser, String text, String option, MasProject.AgentSpec spec,
-            Path project) throws UserError {
+            Path project, ProjectReader reader) throws UserError {
         try {
             return termsOf(parser, text);
         } catch (AslSyntaxException e) {
             // the first error, without the position inside the option's text read as a term: the
             // text is read as "[TEXT]", so its ']' and its columns (one on) are not the user's
             String why = e.errors().isEmpty() ? e.getMessage() : e.errors().get(0).message();
-            why = why.replace("before ']'", "before the option's end");
+            why = why.replace("before ']'", "before the option's end").replace("'|', ',' or ']'", "',' or the option's end");
             Matcher at = Pattern.compile(" at 1:(\\d+)").matcher(why);
             why = at.find() ? at.replaceFirst(" at column " + (Integer.parseInt(at.group(1)) - 1)) : why;
-            throw new UserError(project + ": agent " + spec.name() + "'s " + option + " \"" + text.strip()
-                    + "\": " + why);
+            String place = reader == null ? null : reader.optionPlace(spec, option);
+            throw new UserError((place != null ? place + ": error" : project.toString()) + ": agent " + spec.name() + "'s "
+                    + option + " \"" + text.strip() + "\": " + why);
         }
     }
 

@@ -33,6 +33,14 @@ public interface ProjectReader {
         return program;
     }
 
+    /**
+     * {@return {@code file:line:col} of an agent's option ({@code beliefs}, {@code goals}) in the
+     * project, when the reader knows it; null: the launcher names the project file alone}
+     */
+    default String optionPlace(MasProject.AgentSpec spec, String option) {
+        return null;
+    }
+
     /** {@return a new reader for {@code file}, or null when no reader on the class path reads it} */
     static ProjectReader forFile(Path file) {
         for (ProjectReader r : ServiceLoader.load(ProjectReader.class)) {

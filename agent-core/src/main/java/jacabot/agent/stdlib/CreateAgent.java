@@ -5,8 +5,10 @@ import jacabot.agent.semantics.Agent;
 import jacabot.agent.semantics.IaException;
 import jacabot.agent.semantics.Unifier;
 import jacabot.agent.syntax.AgentProgram;
-import jacabot.agent.syntax.Literal;
+import jacabot.agent.syntax.AnnotatedVar;
+import jacabot.agent.syntax.StringTerm;
 import jacabot.agent.syntax.Term;
+import jacabot.agent.syntax.Var;
 import java.io.IOException;
 import java.nio.file.Path;
 
@@ -21,7 +23,11 @@ final class CreateAgent extends DefaultInternalAction {
 
     @Override
     public Object execute(Agent ag, Unifier un, Term[] args) throws IaException {
+        boolean unbound = args[0] instanceof Var || args[0] instanceof AnnotatedVar;
         String name = text(args[0]);
+        if (unbound && !name.isEmpty()) { // as Jason: a variable's own name, its first letter in lower case
+            name = name.substring(0, 1).toLowerCase(java.util.Locale.ROOT) + name.substring(1);
+        }
         String source = text(args[1]);
         Path file = ag.parser().locate(source);
         if (file == null) {
@@ -42,6 +48,7 @@ final class CreateAgent extends DefaultInternalAction {
         if (created == null) {
             throw IaException.wrongArguments(name(), "this infrastructure cannot create agents");
         }
-        return un.unifies(args[0], Literal.atom(created));
+        // as Jason: a name taken is the next free one (NAME_1, ...), which only a variable is bound to, as a string
+        return !unbound || un.unifies(args[0], new StringTerm(created));
     }
 }

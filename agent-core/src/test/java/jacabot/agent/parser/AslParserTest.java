@@ -79,6 +79,23 @@ class AslParserTest {
     }
 
     @Test
+    void aBeliefUpdateFollowedByAnotherWithoutASemicolonIsOneErrorAsInJason() throws Exception {
+        // Jason 3.2.0 reads `+a(1) -b` as the arithmetic a(1)-b and refuses it at its first operand
+        // ("ArithExpr: first operand 'a(1)' is not numeric or variable"): one line, no consequences
+        // of it (the second operand, the operand of '+'), and the likely cause named
+        for (String body : List.of("+a(1) -b", "+a -b(2)", ".print(1) -b", "-a(1) +b")) {
+            var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- " + body + ".\n", "m.asl"), body);
+            String first = body.replaceAll("^[+-]", "").replaceAll(" [+-].*", "");
+            assertEquals(1, e.getMessage().strip().lines().count(), e.getMessage());
+            assertTrue(e.getMessage().contains("error: ArithExpr: first operand '" + first + "' is not numeric or variable"
+                    + " (a ';' missing before '" + body.substring(body.indexOf(' ') + 1) + "'?)"), e.getMessage());
+        }
+        var e = assertThrows(AslSyntaxException.class, () -> parser.parse("+!g <- +X -b.\n", "m.asl"));
+        assertEquals("m.asl:1:9: error: ArithExpr: second operand 'b' is not numeric or variable (a ';' missing before '-b'?)",
+                e.getMessage().strip());
+    }
+
+    @Test
     void anOperandThatIsNoNumberIsAnErrorAsInJason() throws Exception {
         // Jason 3.2.0's messages, the grammar rule of the operator named
         var cases = Map.of("1 + a", "ArithExpr: second operand 'a' is not numeric or variable",

@@ -181,6 +181,25 @@ class LocalMASTest {
     }
 
     /**
+     * A name given twice is Jason 3.2.0's next free one, NAME_1, NAME_2, ... (its RuntimeServices'
+     * getNewAgentName), for a project's agents and for .create_agent of a name an agent has: Jason
+     * printed these names for `agents: a; a; a #2; a; c;`, and c's .create_agent(a, ...) succeeds (a_3).
+     */
+    @Test
+    void aNameGivenTwiceIsJasonsNextFreeOne(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("a.asl"), "!hi.\n+!hi <- .my_name(N); .print(N).\n");
+        Files.writeString(dir.resolve("c.asl"), "!go.\n+!go <- .create_agent(a, \"a.asl\"); .print(created); "
+                + ".create_agent(Xy, \"a.asl\"); .string(Xy); .print(Xy, \" a string\").\n");
+        Files.writeString(dir.resolve("p.mas2j"), "MAS m {\n agents: a; a; a #2; a; c;\n}\n");
+        var launched = new MasLauncher(new PrintStream(bytes, true, StandardCharsets.UTF_8), 0, true).load(dir.resolve("p.mas2j"));
+        assertEquals(List.of("a", "a_1", "a1", "a2", "a_2", "c"), launched.agentNames());
+        launched.runUntilQuiescent(1000);
+        // a variable: Jason names the agent after it, its first letter in lower case, and binds it to that name as a string
+        assertTrue(lines().containsAll(List.of("[a_1] a_1", "[c] created", "[c] xy a string")), lines().toString());
+        assertEquals(List.of("a", "a_1", "a1", "a2", "a_2", "c", "a_3", "xy"), launched.agentNames());
+    }
+
+    /**
      * Fresh variables of all agents come from one counter, as Jason's: each agent's own unnamed
      * variables (each instance reads its source) and Jason's 18 in kqmlPlans.asl take numbers first
      * (18 for a, 2 + 18 for each b), then .relevant_plans' source(_) and the plan's renaming.

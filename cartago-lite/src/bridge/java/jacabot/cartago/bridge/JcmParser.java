@@ -5,8 +5,10 @@ import jacabot.cartago.bridge.JcmProject.ArtifactDecl;
 import jacabot.cartago.bridge.JcmProject.WorkspaceDecl;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -97,7 +99,7 @@ final class JcmParser {
         if (optionalBlock()) {
             block("an agent parameter (beliefs, goals, focus, join, instances, ag-arch)", (key, at) -> agentParam(p, key, at));
         }
-        return new AgentDecl(name, source, p.beliefs, p.goals, p.focus, p.join, p.instances, p.arch);
+        return new AgentDecl(name, source, p.beliefs, p.goals, p.focus, p.focusAt, p.join, p.instances, p.arch, p.optionsAt);
     }
 
     /** An agent's parameters as they are read. */
@@ -105,6 +107,8 @@ final class JcmParser {
         String beliefs;
         String goals;
         final List<String> focus = new ArrayList<>();
+        final List<String> focusAt = new ArrayList<>();
+        final Map<String, String> optionsAt = new HashMap<>();
         final List<String> join = new ArrayList<>();
         int instances = 1;
         String arch;
@@ -113,8 +117,14 @@ final class JcmParser {
     private void agentParam(AgentParams p, String key, int at) throws JcmError {
         expect(':');
         switch (key) {
-            case "beliefs" -> p.beliefs = joined(p.beliefs, restOfEntry());
-            case "goals" -> p.goals = joined(p.goals, restOfEntry());
+            case "beliefs" -> {
+                p.optionsAt.putIfAbsent(key, where(at));
+                p.beliefs = joined(p.beliefs, restOfEntry());
+            }
+            case "goals" -> {
+                p.optionsAt.putIfAbsent(key, where(at));
+                p.goals = joined(p.goals, restOfEntry());
+            }
             case "focus" -> {
                 var starts = new ArrayList<Integer>();
                 List<String> names = names(starts);
@@ -124,6 +134,7 @@ final class JcmParser {
                         throw error(at, "focus '" + f + "' is not workspace.artifact");
                     }
                     p.focus.add(f);
+                    p.focusAt.add(where(starts.get(i)));
                     workspaceRefs.add(new WorkspaceRef("focus", f, f.substring(0, f.lastIndexOf('.')), starts.get(i)));
                 }
             }
@@ -337,23 +348,36 @@ final class JcmParser {
         }
     }
 
-    /** The text up to the end of the line, going on to the next lines while it ends with a comma. */
+    /**
+     * The text up to the end of the line, going on to the next lines while it ends with a comma,
+     * or up to the '}' that closes the agent's block ({@code agent a { goals: g }} on one line).
+     */
     private String restOfEntry() {
         var sb = new StringBuilder();
         while (true) {
             skipSpacesOnLine();
             int start = pos;
             boolean quoted = false;
+            boolean closed = false;
+            int depth = 0;
             while (pos < text.length() && text.charAt(pos) != '\n') {
                 char c = text.charAt(pos);
                 if (c == '"') {
                     quoted = !quoted;
                 } else if (!quoted && text.startsWith("//", pos)) {
                     break;
+                } else if (!quoted && (c == '(' || c == '[' || c == '{')) {
+                    depth++;
+                } else if (!quoted && (c == ')' || c == ']' || c == '}') && --depth < 0 && c == '}') {
+                    closed = true; // the block's end: left for the block to read
+                    break;
                 }
                 pos++;
             }
             String line = text.substring(start, pos).trim();
+            if (closed) {
+                return sb.append(line).toString();
+            }
             while (pos < text.length() && text.charAt(pos) != '\n') {
                 pos++; // a comment
             }

@@ -2,6 +2,7 @@ package jacabot.cartago.bridge;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A JaCaMo project ({@code .jcm}) as far as jacabot runs it: agents, workspaces with their
@@ -15,9 +16,11 @@ public record JcmProject(Path file, String name, List<AgentDecl> agents, List<Wo
      *
      * @param beliefs the text after {@code beliefs:} (AgentSpeak literals separated by commas), or null
      * @param focus   {@code workspace.artifact} names
+     * @param focusAt {@code file:line:col} of each {@code focus} entry
+     * @param optionsAt {@code file:line:col} of the {@code beliefs} and {@code goals} entries, by key (the first of each)
      */
     public record AgentDecl(String name, String source, String beliefs, String goals, List<String> focus,
-            List<String> join, int instances, String archClass) {
+            List<String> focusAt, List<String> join, int instances, String archClass, Map<String, String> optionsAt) {
     }
 
     /** {@code workspace NAME { artifact A: C(args) ... agents: a, b }}. */

@@ -35,6 +35,20 @@ import java.util.List;
  */
 public final class JcmReader implements ProjectReader {
     static final String SETUP_GOAL = "jcm_setup";
+    static final String FOCUS_GOAL = "jcm_focus";
+    /** As JaCaMo's {@code jcm::focus_env_art}: five tries, 200 ms apart, for an artifact another agent makes. */
+    static final int FOCUS_TRIES = 5;
+    /**
+     * {@code !jcm_focus(Workspace, Artifact, Where, Tries)}: focuses on the artifact; while it is
+     * not there (another agent may make it as the system starts), waits 200 ms and tries again; at
+     * the last try, says once where the focus was asked for and lets the agent go on, as JaCaMo does.
+     */
+    private static final List<String> FOCUS_PLANS = List.of(
+            "@" + FOCUS_GOAL + "NotMade +!" + FOCUS_GOAL + "(W, A, At, 0) <- .print(At, \": error: focus '\", W, \".\", A, "
+                    + "\"': no artifact '\", A, \"' in workspace '\", W, \"' (none made it in " + FOCUS_TRIES + " tries, "
+                    + FOCUS_TRIES * 200 / 1000 + " s)\").",
+            "@" + FOCUS_GOAL + " +!" + FOCUS_GOAL + "(W, A, _, _) <- lookupArtifact(A, Id)[wsp(W)]; focus(Id).",
+            "@" + FOCUS_GOAL + "Again -!" + FOCUS_GOAL + "(W, A, At, Try) <- .wait(200); !" + FOCUS_GOAL + "(W, A, At, Try - 1).");
     private JcmProject project;
 
     @Override
@@ -114,14 +128,13 @@ public final class JcmReader implements ProjectReader {
         var joins = new LinkedHashSet<String>(decl.join());
         project.workspaces().stream().filter(w -> w.agents().contains(decl.name())).forEach(w -> joins.add(w.name()));
         var steps = new ArrayList<String>();
-        int n = 0;
         decl.focus().forEach(f -> joins.add(f.substring(0, f.lastIndexOf('.')))); // workspace.artifact, checked when read
-        joins.forEach(w -> steps.add("joinWorkspace(\"" + w + "\", _)"));
-        for (String f : decl.focus()) {
+        joins.forEach(w -> steps.add("joinWorkspace(" + quoted(w) + ", _)"));
+        for (int i = 0; i < decl.focus().size(); i++) {
+            String f = decl.focus().get(i);
             int dot = f.lastIndexOf('.');
-            String var = "JcmArt" + (++n);
-            steps.add("lookupArtifact(\"" + f.substring(dot + 1) + "\", " + var + ")[wsp(\"" + f.substring(0, dot) + "\")]");
-            steps.add("focus(" + var + ")");
+            steps.add("!" + FOCUS_GOAL + "(" + quoted(f.substring(0, dot)) + ", " + quoted(f.substring(dot + 1)) + ", "
+                    + quoted(decl.focusAt().get(i)) + ", " + FOCUS_TRIES + ")");
         }
         if (steps.isEmpty()) {
             return program;
@@ -130,6 +143,11 @@ public final class JcmReader implements ProjectReader {
             Plan setup = parser.parsePlan("@" + SETUP_GOAL + "[atomic] +!" + SETUP_GOAL + " <- " + String.join("; ", steps) + ".");
             var plans = new ArrayList<Plan>();
             plans.add(setup);
+            if (!decl.focus().isEmpty()) {
+                for (String plan : FOCUS_PLANS) {
+                    plans.add(parser.parsePlan(plan));
+                }
+            }
             plans.addAll(program.plans());
             var goals = new ArrayList<Literal>();
             goals.add(Literal.atom(SETUP_GOAL));
@@ -138,6 +156,16 @@ public final class JcmReader implements ProjectReader {
         } catch (AslSyntaxException e) {
             throw new UserError(project.file() + ": error: agent " + decl.name() + ": " + e.getMessage());
         }
+    }
+
+    private static String quoted(String s) {
+        return "\"" + s.replace("\\", "\\\\").replace("\"", "\\\"") + "\"";
+    }
+
+    @Override
+    public String optionPlace(MasProject.AgentSpec spec, String option) {
+        return project.agents().stream().filter(a -> a.name().equals(spec.name())).findFirst()
+                .map(a -> a.optionsAt().get(option)).orElse(null);
     }
 
     /** The class path entries of a project's {@code class-path:}. */

@@ -102,6 +102,46 @@ class JcmProjectTest {
                 lines.stream().sorted().toList(), lines.toString());
     }
 
+    /**
+     * A {@code focus:} on an artifact the project does not make: as in JaCaMo, the agent waits a
+     * little for another agent to make it (five tries, 200 ms apart), and focuses on it once made;
+     * never made, one line says so with the entry's place in the .jcm and the agent goes on.
+     */
+    @Test
+    void aFocusOnAnArtifactMadeAtRunTimeWaitsForItOrSaysWhereItWasAskedFor(@TempDir Path dir) throws Exception {
+        ProjectRun.write(dir, Map.of("p.jcm", """
+                mas p {
+                    agent bob {
+                        focus: w.c
+                    }
+                    agent maker
+                    workspace w
+                }
+                """, "bob.asl", """
+                +count(N) <- .print("sees ", N); .stopMAS.
+                """, "maker.asl", """
+                !make.
+                +!make <- .wait(300); joinWorkspace("w", _); makeArtifact("c", "jacabot.cartago.examples.Counter", [], _).
+                """, "n.jcm", """
+                mas n {
+                    agent carol {
+                        focus: w.c,
+                               w.d
+                    }
+                    workspace w {
+                        artifact d: jacabot.cartago.examples.Counter
+                    }
+                }
+                """, "carol.asl", """
+                !go.
+                +!go <- .wait(1500); .print("goes on"); ?count(N); .print("sees ", N); .stopMAS.
+                """));
+        assertEquals(List.of("[bob] sees 0"), ProjectRun.run(dir.resolve("p.jcm"), 0, 60_000).lines());
+        assertEquals(List.of("[carol] " + dir.resolve("n.jcm") + ":3:16: error: focus 'w.c': no artifact 'c' in workspace 'w' "
+                + "(none made it in 5 tries, 1 s)", "[carol] goes on", "[carol] sees 0"),
+                ProjectRun.run(dir.resolve("n.jcm"), 0, 60_000).lines());
+    }
+
     @Test
     void organisationsAndUnknownEntriesAreRefusedWithTheirPlace(@TempDir Path dir) throws Exception {
         assertEquals(dir.resolve("o.jcm") + ":3:5: error: organisations (Moise) are not supported: jacabot runs the agents "
@@ -118,6 +158,15 @@ class JcmProjectTest {
                 loadError(dir, "j.jcm", "mas j {\n    agent a { join: main, nowhere }\n}\n"));
         assertEquals(dir.resolve("b.jcm") + ":2:1: error: expected '}' before the end of the file",
                 loadError(dir, "b.jcm", "mas b {\n"));
+        // beliefs: and goals: that do not read are told where they are written, as every other entry
+        Files.writeString(dir.resolve("a.asl"), "!g.\n+!g.\n");
+        assertEquals(dir.resolve("bel.jcm") + ":3:9: error: agent a's beliefs \"x(\": expected ')' before the option's end: "
+                + "the '(' at column 2 is not closed", loadError(dir, "bel.jcm", "mas bel {\n    agent a {\n        beliefs: x(\n    }\n}\n"));
+        assertEquals(dir.resolve("goal.jcm") + ":2:15: error: agent a's goals \"1\": '1' is not a literal in the option '1'",
+                loadError(dir, "goal.jcm", "mas goal {\n    agent a { goals: 1 }\n}\n"));
+        // a ')' too many is the option's text, told as such, not dropped
+        assertEquals(dir.resolve("par.jcm") + ":2:15: error: agent a's beliefs \"x)\": unexpected ')', expected ',' or the option's end",
+                loadError(dir, "par.jcm", "mas par {\n    agent a { beliefs: x) }\n}\n"));
         String missing = loadError(dir, "m.jcm", "mas m {\n    workspace w {\n        artifact c: no.Such(1)\n    }\n}\n");
         assertTrue(missing.startsWith(dir.resolve("m.jcm") + ":3:9: error: cannot make the artifact c: "), missing);
     }

@@ -19,6 +19,16 @@ import org.junit.jupiter.params.provider.ValueSource;
 class WorldFileReaderTest {
     static final String K = "\"robots\": [{\"name\": \"k\", \"model\": \"khepera\"}]";
 
+    /** The world the README shows, every field of the format in it, loads as written there once its page-only comments go. */
+    @Test
+    void theReadmesExampleWorldLoads() throws Exception {
+        String readme = java.nio.file.Files.readString(Path.of(System.getProperty("jacabot.rootDir", "."), "sim-world", "README.md"));
+        int start = readme.indexOf("```json\n") + 8;
+        String json = readme.substring(start, readme.indexOf("```", start)).replaceAll("(?m)\\s+//.*$", "");
+        WorldSpec spec = WorldFileReader.parse(json, "sim-world/README.md");
+        assertEquals(7, spec.events().size());
+    }
+
     static Stream<Arguments> invalidWorlds() {
         return Stream.of(
                 Arguments.of("{\"robots\": [{\"name\": \"r\", \"model\": \"pioneer\"}]}", "$.robots[0].model", "unknown robot model 'pioneer' (known: mybot, khepera)"),
