@@ -166,6 +166,9 @@ final class ExperimentCommand implements Callable<Integer> {
                     + "option (jacabot controller --lockstep --pipeline)" : baseline ? "the baseline has no agent to pipeline"
                     : "--break halts the agent with the world a step ahead: drop one of them"));
         }
+        if (baseline && agent != null) { // before the agent file is looked for: the baseline would not read it
+            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
+        }
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
