@@ -187,7 +187,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         var missing = Landmarks.missing(experiment, spec, worldName);
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
-            throw UserError.located(missing.get());
+            throw new UserError(missing.get()); // a world file's error, said as the reader's are: error: file: $.path: problem
         }
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),

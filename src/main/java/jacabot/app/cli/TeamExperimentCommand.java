@@ -254,7 +254,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         }
         var missing = TeamWorld.missing(spec, n, Installation.shown(worldFile));
         if (missing.isPresent()) {
-            throw UserError.located(missing.get());
+            throw new UserError(missing.get()); // a world file's error, said as the reader's are: error: file: $.path: problem
         }
         try {
             return TeamWorld.firstRobots(spec, n);
