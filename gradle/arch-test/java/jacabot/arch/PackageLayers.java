@@ -4,12 +4,16 @@ import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 
+import com.tngtech.archunit.core.domain.JavaClass;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
 import com.tngtech.archunit.library.Architectures.LayeredArchitecture;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
 
 /**
  * The one rule behind every module's {@code ArchitectureTest}: the module's packages, listed from
@@ -52,10 +56,26 @@ public final class PackageLayers {
         }
         slices().matching(root + ".(**)").should().beFreeOfCycles().allowEmptyShould(true).check(classes);
         if (bottomUp.size() > 1) {
+            everyPackageListed(classes);
             layers().check(classes);
         }
         if (forbidden.length > 0) {
             noClasses().should().dependOnClassesThat().resideInAnyPackage(forbidden).check(classes);
+        }
+    }
+
+    /** A package left out of the order is in no layer, so nothing about it would be checked: a new package must be placed. */
+    private void everyPackageListed(JavaClasses classes) {
+        Set<String> listed = bottomUp.stream().map(this::packageOf).collect(Collectors.toSet());
+        Set<String> unlisted = new TreeSet<>();
+        for (JavaClass c : classes) {
+            if (!listed.contains(c.getPackageName())) {
+                unlisted.add(c.getPackageName());
+            }
+        }
+        if (!unlisted.isEmpty()) {
+            throw new AssertionError("packages in no place of the module's order, so not checked: " + unlisted
+                    + "; add each to PackageLayers.of(...) above the packages it uses");
         }
     }
 

@@ -7,7 +7,7 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     @Test
     void packagesDependOneWayAndNeverUpwards() {
-        PackageLayers.of("jacabot.sim", "geom", "world", "device", "robot", "engine", "io", "", "demo", "viewer", "bench")
+        PackageLayers.of("jacabot.sim", "geom", "world", "device", "robot", "engine", "io", "", "demo", "viewer")
                 .mustNotUse("jacabot.robot..", "jacabot.agent..", "jacabot.cartago..", "jacabot.experiments..", "jacabot.app..").check();
     }
 }

@@ -166,6 +166,9 @@ final class ExperimentCommand implements Callable<Integer> {
                     + "option (jacabot controller --lockstep --pipeline)" : baseline ? "the baseline has no agent to pipeline"
                     : "--break halts the agent with the world a step ahead: drop one of them"));
         }
+        if (baseline && agent != null) { // before the agent file is looked for: the baseline would not read it
+            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
+        }
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
@@ -184,7 +187,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         var missing = Landmarks.missing(experiment, spec, worldName);
         if (missing.isPresent()) { // before anything starts, agent and baseline alike
-            throw UserError.located(missing.get());
+            throw new UserError(missing.get()); // a world file's error, said as the reader's are: error: file: $.path: problem
         }
         long runSeed = seed != null ? seed : spec.seed();
         spec = new WorldSpec(spec.name(), spec.arena(), spec.basicTimeStep(), spec.controlStep(), runSeed, spec.sensorNoise(),

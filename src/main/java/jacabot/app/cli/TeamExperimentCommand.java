@@ -113,6 +113,9 @@ final class TeamExperimentCommand implements Callable<Integer> {
         }
         ConsoleLog log = verbosity.console(commandSpec);
         double seconds = ExperimentCommand.duration(duration);
+        if (baseline && agent != null) { // before the agent file is looked for: the baseline would not read it
+            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
+        }
         Path worldFile = world != null ? Installation.locate(world) : Installation.resolve("worlds/team-delivery.json");
         WorldSpec spec = teamWorld(worldFile, robots);
         long runSeed = seed != null ? seed : spec.seed();
@@ -251,7 +254,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         }
         var missing = TeamWorld.missing(spec, n, Installation.shown(worldFile));
         if (missing.isPresent()) {
-            throw UserError.located(missing.get());
+            throw new UserError(missing.get()); // a world file's error, said as the reader's are: error: file: $.path: problem
         }
         try {
             return TeamWorld.firstRobots(spec, n);

@@ -14,6 +14,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -102,6 +103,10 @@ final class WorldViewCommands {
         public Integer call() {
             if (!(seconds >= 0) || size < 50 || size > 10_000) {
                 throw new UserError("--seconds must be >= 0 and --size in 50..10000");
+            }
+            // the picture is always a PNG: a file named otherwise would hold one under a name that says it is not
+            if (!out.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+                throw new UserError("--out " + out + ": world render writes a PNG; give the file a .png name");
             }
             System.setProperty("java.awt.headless", "true");
             SimWorld world = load(file);

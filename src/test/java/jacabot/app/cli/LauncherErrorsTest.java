@@ -132,6 +132,17 @@ class LauncherErrorsTest {
         assertOneLine(experiment("--real-time", "--remote-controller", "--out", out), "2", "--remote-controller is for lockstep runs");
     }
 
+    /** The baseline reads no agent: --agent with it was ignored (or, naming no file, said the file was missing). */
+    @Test
+    void anAgentWithTheBaselineIsAUserError() {
+        String both = "--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them";
+        assertOneLine(experiment("--baseline", "--agent", "agents/src/main/asl/navigation.asl"), "2", both);
+        assertOneLine(experiment("--baseline", "--agent", "no-such-agent.asl"), "2", both);
+        assertOneLine(CliRun.run("experiment", "team-delivery", "--baseline", "--agent", "no-such-agent.asl"), "2", both);
+        assertOneLine(CliRun.run("experiment", "team-delivery", "--baseline", "--agent", "agents/src/main/asl/team-delivery.asl"),
+                "2", both);
+    }
+
     @Test
     void badNumbersAreUserErrors() {
         assertOneLine(CliRun.run("bench", "latency", "--duration", "abc"), "2", "--duration: bad duration 'abc'");

@@ -1,6 +1,7 @@
 package jacabot.app.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jacabot.robot.Experiment;
@@ -38,6 +39,10 @@ class NewcomerMessagesTest {
                 "2", "none.json: $: cannot read the world file");
         assertError(CliRun.run("world", "render", "worlds/navigation.json", "--out", "x.png", "--size", "3"), "2",
                 "--size in 50..10000");
+        Path txt = dir.resolve("x.txt");
+        assertError(CliRun.run("world", "render", "worlds/navigation.json", "--out", txt.toString()), "2",
+                "--out " + txt + ": world render writes a PNG; give the file a .png name");
+        assertFalse(Files.exists(txt), "nothing written under a name that is not a PNG's");
     }
 
     @Test

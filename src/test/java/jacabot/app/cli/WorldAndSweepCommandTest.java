@@ -187,7 +187,8 @@ class WorldAndSweepCommandTest {
                 {"experiment", "suspend-resume", "--world", file.toString(), "--baseline", "--duration", "5s", "--out", dir.toString()}}) {
             var r = CliRun.run(args);
             assertEquals("2", r[0], r[1] + r[2]);
-            assertEquals(file + ": $.charger: the suspend-resume experiment needs a charger; the world has none", r[2].strip());
+            assertEquals("error: " + file + ": $.charger: the suspend-resume experiment needs a charger; the world has none",
+                    r[2].strip());
             assertFalse(r[1].contains("t=  "), "no run started: " + r[1]);
         }
         Path nav = dir.resolve("nostorage.json");
