@@ -177,10 +177,17 @@ final class RouteMap {
         return guessCells > 0 && firmCells > 0;
     }
 
-    /** A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess ends there). */
-    void seenFree(double x, double z, double tx, double tz) {
+    /**
+     * A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess
+     * ends there), but not the cell holding (wx, wz), a point past the ray's end where a face may still be (the
+     * reading's threshold is only a little farther: a wall 5 cm off the body read just under it, and the ray's
+     * last centimetre lay in the cell of the wall's own face, which ended the guess of the wall the robot was
+     * going along).
+     */
+    void seenFree(double x, double z, double tx, double tz, double wx, double wz) {
+        int face = cell(wx, wz);
         walk(x, z, tx, tz, (f, c) -> {
-            if (c >= 0 && !seenOpen.get(c)) {
+            if (c >= 0 && c != face && !seenOpen.get(c)) {
                 seenOpen.set(c);
                 openCount++;
             }
