@@ -46,7 +46,10 @@ final class RouteMap {
      * seen end, costs this a cell (four cells within the clearance), so a route along a face crosses past the
      * firm part, not just past the end the robot has seen (where it turned into the wall at every plan and
      * crept along it at 1-2 cm/s); and a cell within the clearance of a guessed cell costs
-     * {@link #GUESS_BESIDE_COST}, so the route runs along the guess at the robot's distance from the seen face.
+     * {@link #GUESS_BESIDE_COST}, so the route runs along the guess at the robot's distance from the seen face;
+     * one farther, within {@link #BESIDE} clearances, {@link #BESIDE_COST}, as beside a face seen (else the route,
+     * past the seen end, left the robot's lane for the one next to the guess, which cost no more, and the point
+     * headed for lay 10-16 degrees into the wall).
      */
     static final double FIRM_COST = 4 * NEAR_COST;
     static final double GUESS_BESIDE_COST = 2;
@@ -369,8 +372,8 @@ final class RouteMap {
                     if (firmCells > 0) {
                         for (double[] o : around) {
                             int e = a + (int) o[0], f = b + (int) o[1];
-                            if (o[2] == NEAR_COST && e >= 0 && f >= 0 && e < cols && f < rows) {
-                                raise(near, index(e, f), GUESS_BESIDE_COST);
+                            if (e >= 0 && f >= 0 && e < cols && f < rows) {
+                                raise(near, index(e, f), o[2] == NEAR_COST ? GUESS_BESIDE_COST : BESIDE_COST);
                             }
                         }
                     }
