@@ -166,12 +166,6 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
     static final double ROUTE_MARGIN = 0.01;
     /** With a firm wall guess: a side sensor (±90 degrees) reading under {@link #MAP_LEVEL} saw the floor open this far from the body, metres. */
     static final double OPEN_REACH = 0.04;
-    /**
-     * How near the body a face may still be when a side sensor reads under {@link #MAP_LEVEL}, metres (the level's
-     * 5 cm, less the cone's side rays, which see a face square to the axis farther off): the cell holding that
-     * point of the ray is not taken as open, as it may hold the face itself.
-     */
-    static final double OPEN_FACE = 0.045;
     /** A reading over this is an obstacle put on the map (about 5 cm from the body). */
     static final double MAP_LEVEL = 100;
     /** The Khepera's infra-red calibration, reading to metres from the body: {reading, distance} pairs, readings falling. */
@@ -205,9 +199,7 @@ public class NavigationMiddleware extends ObjectPickingMiddleware {
         if (!(value > MAP_LEVEL)) {
             if (routes.firmGuess() && Math.abs(bearing) == 90) {
                 double a = Math.toRadians(compass + bearing), d0 = KHEPERA_RADIUS, d1 = KHEPERA_RADIUS + OPEN_REACH;
-                double d2 = KHEPERA_RADIUS + OPEN_FACE;
-                routes.seenFree(here[0] + d0 * Math.cos(a), here[1] + d0 * Math.sin(a), here[0] + d1 * Math.cos(a), here[1] + d1 * Math.sin(a),
-                        here[0] + d2 * Math.cos(a), here[1] + d2 * Math.sin(a));
+                routes.seenFree(here[0] + d0 * Math.cos(a), here[1] + d0 * Math.sin(a), here[0] + d1 * Math.cos(a), here[1] + d1 * Math.sin(a));
             }
             return;
         }

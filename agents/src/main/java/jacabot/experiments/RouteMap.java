@@ -46,10 +46,7 @@ final class RouteMap {
      * seen end, costs this a cell (four cells within the clearance), so a route along a face crosses past the
      * firm part, not just past the end the robot has seen (where it turned into the wall at every plan and
      * crept along it at 1-2 cm/s); and a cell within the clearance of a guessed cell costs
-     * {@link #GUESS_BESIDE_COST}, so the route runs along the guess at the robot's distance from the seen face;
-     * one farther, within {@link #BESIDE} clearances, {@link #BESIDE_COST}, as beside a face seen (else the route,
-     * past the seen end, left the robot's lane for the one next to the guess, which cost no more, and the point
-     * headed for lay 10-16 degrees into the wall).
+     * {@link #GUESS_BESIDE_COST}, so the route runs along the guess at the robot's distance from the seen face.
      */
     static final double FIRM_COST = 4 * NEAR_COST;
     static final double GUESS_BESIDE_COST = 2;
@@ -180,17 +177,10 @@ final class RouteMap {
         return guessCells > 0 && firmCells > 0;
     }
 
-    /**
-     * A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess
-     * ends there), but not the cell holding (wx, wz), a point past the ray's end where a face may still be (the
-     * reading's threshold is only a little farther: a wall 5 cm off the body read just under it, and the ray's
-     * last centimetre lay in the cell of the wall's own face, which ended the guess of the wall the robot was
-     * going along).
-     */
-    void seenFree(double x, double z, double tx, double tz, double wx, double wz) {
-        int face = cell(wx, wz);
+    /** A side sensor saw no obstacle along its ray from (x, z) to (tx, tz): those cells are open (a face's guess ends there). */
+    void seenFree(double x, double z, double tx, double tz) {
         walk(x, z, tx, tz, (f, c) -> {
-            if (c >= 0 && c != face && !seenOpen.get(c)) {
+            if (c >= 0 && !seenOpen.get(c)) {
                 seenOpen.set(c);
                 openCount++;
             }
@@ -372,8 +362,8 @@ final class RouteMap {
                     if (firmCells > 0) {
                         for (double[] o : around) {
                             int e = a + (int) o[0], f = b + (int) o[1];
-                            if (e >= 0 && f >= 0 && e < cols && f < rows) {
-                                raise(near, index(e, f), o[2] == NEAR_COST ? GUESS_BESIDE_COST : BESIDE_COST);
+                            if (o[2] == NEAR_COST && e >= 0 && f >= 0 && e < cols && f < rows) {
+                                raise(near, index(e, f), GUESS_BESIDE_COST);
                             }
                         }
                     }
