@@ -177,3 +177,20 @@ mock_operation(_, ok).
        -delivering; -insideArea;                                  // out again: the leaving starts anew
        !assert_true(storageLeaving(_));
        -storageLeaving(_); -storageTurnMine; -robotAt(khepera2, _, _); -+storageQueue([]).
+
+// the first no-progress signal just after a wait for the storage area (a second or more) is the
+// wait's: the robot does not escape (the progress windows ran on while it stood)
+@[test]
++!test_a_no_progress_signal_just_after_a_wait_for_the_storage_area_is_the_waits
+    <- !forget_calls; -storageWaitOver(_); -avoiding; -stuck; -waitingStorage; -delivering; -insideArea;
+       -location(_, _, _); +location(0.2, 0, -0.3);
+       .system_time(T1); !markStorageWaitOver(T1 - 300);
+       !assert_false(storageWaitOver(_));                       // a brief wait: nothing marked
+       .system_time(T2); !markStorageWaitOver(T2 - 5000);        // its turn came after 5 s
+       !assert_true(storageWaitOver(_));
+       !!perceive(stuck);
+       !until(not storageWaitOver(_), 3000);
+       !assert_false(storageWaitOver(_));                       // taken as the wait's
+       !assert_false(avoiding);                                 // no escape
+       !assert_false(mock_called(stop));
+       -stuck.
