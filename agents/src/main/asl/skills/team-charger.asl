@@ -202,13 +202,11 @@ squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
               & chargerQueue([Me, _ | _]) & .intend(waitCharged)
     <- .print("Charged to ", B, " J: a needier robot waits (", E, " J)"); .succeed_goal(waitCharged).
 
-// with teammates: the drive off (above), the queue left on the way. The charge was a stand too: its
-// end is marked as a wait's (@stuckFromTheChargerWait), for the progress windows ran on meanwhile
+// with teammates: the drive off (above), the queue left on the way
 @driveOffCharger
 +!chargerDone : withTeammates & location(X, _, Z) & charger(Cx, Cz) & .my_name(Me) & chargerNearTeammate(Q)
                 & chargerOffReach(R) & chargerOffTime(T) & .system_time(Now)
-    <- -+chargerWaitOver(Now);
-       .findall(p(Rx, Rz), robotAt(A, Rx, Rz) & A \== Me & (Rx - Cx) * (Rx - Cx) + (Rz - Cz) * (Rz - Cz) < Q * Q, Near);
+    <- .findall(p(Rx, Rz), robotAt(A, Rx, Rz) & A \== Me & (Rx - Cx) * (Rx - Cx) + (Rz - Cz) * (Rz - Cz) < Q * Q, Near);
        ?awaySum(Near, X, Z, Ax, Az); ?chargerWayOff(X, Z, Ax, Az, Wx, Wz);
        +leavingCharger; -avoiding; -+detours(0); stop;
        -+targetPoint(X + R * Wx, Z + R * Wz); setUpTargetPoint(X + R * Wx, 0, Z + R * Wz);
@@ -243,9 +241,6 @@ squareWay(Ux, Uz, Ax, Az, Px, Pz) :- Uz * Ax - Ux * Az < 0 & Px = -Uz & Pz = Ux.
 // the middleware's progress windows ran on while the robot stood waiting: the first no-progress
 // signal within the short window after the wait is the wait's, not the way's (team world 399, four
 // robots, seed 1: the robot whose turn had come escaped 0.44 s later, backing away and re-aligning
-// for 7 s, and reached the charger 24 s after its turn while two robots waited there). So is the
-// first one on the drive off after a charge (@driveOffCharger marks the charge's end): it came within a
-// second of the charge's end in 8 of some 60 charges (team tuning worlds 1-24, four robots, seed 1),
-// and the robot backed away and re-aligned on the charger, 2-4 s more before the next one's turn
+// for 7 s, and reached the charger 24 s after its turn while two robots waited there)
 @stuckFromTheChargerWait
 +stuck : chargerWaitOver(T) & stuckWindows(W, _, _, _) & .system_time(Now) & Now - T < W <- -chargerWaitOver(T).

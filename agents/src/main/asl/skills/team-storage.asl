@@ -33,10 +33,10 @@ clearOutStep(1000).         // ms of one step straight off while clearing out (t
 clearOutMargin(0.2).        // m from the arena's wall within which the way off does not lead towards it
 lookInTurnLimit(9000).      // ms after storageLeaveTimeout the turn is kept for a look around (it lasts 7 s)
 handOverGap(0.3).           // m between the holder and the teammate waiting for an early hand-over
-// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageWaitOver(T), storageLeaving(T), lookInTurn(T), handedOverTo(A). Rules it extends: halted, waitingTurn,
+// Beliefs: waitingStorage, storageTurnMine, storageTurnSince(T), storageLeaving(T), lookInTurn(T), handedOverTo(A). Rules it extends: halted, waitingTurn,
 // quickTurn(V, A) (heading's).
 // Reads: storageQueue(L), robotAt(A, X, Z) (the board), arena(W, D), searching, lastLook(T), lookEvery(L) (sweep), quickTurnAt(V, A) (heading), travelSpeed(V) (far-sight), justAvoided(T) (sweep), delivering, insideArea, picking, onErrand (delivery, recharge), storagePoint(X, Z) (the world),
-// location; the middleware's stuck; stuckWindows (progress-watch).
+// location; the middleware's stuck.
 // Needs: team-way (!standStill), delivery (computeGap, balance, desired), the board focused (team-claims). Include it first (its
 // +location plan applies now and then, team-places' almost always), before
 // delivery, heading and avoidance: its plans for obstacles while waiting come first.
@@ -116,13 +116,7 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 
 @storageTurnFree +!storageTurn : storageQueue([]) <- awaitStorageTurn; !storageTurnTaken.
 @storageTurnBusy
-+!storageTurn : .system_time(T0)
-    <- !standStill; .print("Waiting for the storage area"); awaitStorageTurn; !markStorageWaitOver(T0); !storageTurnTaken;
-       !computeGap; !balance.
-// a wait of a second or more is marked (its end), for the no-progress signal that follows it (below)
-@markStorageWaitOver
-+!markStorageWaitOver(T0) : .system_time(Now) & Now - T0 >= 1000 <- -+storageWaitOver(Now).
-@storageWaitBrief +!markStorageWaitOver(_).
++!storageTurn <- !standStill; .print("Waiting for the storage area"); awaitStorageTurn; !storageTurnTaken; !computeGap; !balance.
 @storageTurnLost -!storageTurn <- -waitingStorage.
 @storageTurnTaken
 +!storageTurnTaken : .system_time(T) <- +storageTurnMine; -+storageTurnSince(T); -waitingStorage; !!storageTurnWatch(T).
@@ -154,10 +148,3 @@ offWall(X, V, H, 0) :- V < 0 & X < -H.
 @obstacleWhileWaitingStorage +obstacle(true) : waitingStorage.
 @lateralWhileWaitingStorage +lateralObstacle(_) : waitingStorage.
 @stuckWhileWaitingStorage +stuck : waitingStorage.
-// the middleware's progress windows ran on while the robot stood waiting: the first no-progress
-// signal within the short window after the wait is the wait's, not the way's, as at the charger
-// (team-charger's @stuckFromTheChargerWait). Team world 18, four robots, seed 1: the turn came 14 s
-// into the wait, the signal 0.1 s later, before the robot had moved 3 cm; it backed away, turned
-// and came back, 11 s, while the holder that had just left stepped aside for it six times
-@stuckFromTheStorageWait
-+stuck : storageWaitOver(T) & stuckWindows(W, _, _, _) & .system_time(Now) & Now - T < W <- -storageWaitOver(T).
