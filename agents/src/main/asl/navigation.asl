@@ -20,9 +20,6 @@ trailStep(0.1).
 // the look around after a cylinder fell on the way comes whole even when an avoidance cuts it short
 // (skills/search-memory.asl)
 fallLookKept.
-// a place from a sighting cut by the image's edge is looked for from the look point nearest it
-// (skills/search-memory.asl)
-edgeLookPoint.
 
 !start.
 

@@ -14,7 +14,7 @@ resumeSweep.         // the sweep goes on where it stopped (sweep.asl)
 sweepFrom(Fx, Fz) :- location(X, _, Z) & nearSide(X, Fx) & nearSide(Z, Fz).
 nearSide(V, 1) :- V < 0.
 nearSide(V, -1) :- V >= 0.
-// Parameters (the agent's, optional): fallLookKept (see @backOffKept); edgeLookPoint (see edgeCut).
+// Parameter (the agent's, optional): fallLookKept (see @backOffKept).
 // Reads: location, orientation; arena(W, D); storagePoint(X, Z), storageClearance(C), stored(N)
 // (delivery: the cylinders stored there are not to be looked for; delivering, insideArea, lookFirst:
 // a cylinder lost on the way); searching, sweep(L) (sweep); maxSpeed(M); ignoring (far sight's,
@@ -42,16 +42,6 @@ towardsStored(Off, Dist) :- stored(N) & N > 0 & location(X, _, Z) & orientation(
     & storageClearance(C) & H = (O + Off) * math.pi / 180 & Along = (Sx - X) * math.cos(H) + (Sz - Z) * math.sin(H)
     & Along > 0 & Along < 4 * Dist + 0.1 & math.abs((Sx - X) * math.sin(H) - (Sz - Z) * math.cos(H)) < C.
 nearStored(Cx, Cz) :- storagePoint(Sx, Sz) & storageClearance(C) & (Cx - Sx) * (Cx - Sx) + (Cz - Sz) * (Cz - Sz) < (C + 0.1) * (C + 0.1).
-// A sighting whose red run reaches the image's edge (far sight's cameraFov; 0.0125 m is the cylinder's
-// radius, as the middleware's distance takes it) shows the part of the cylinder in view: its direction
-// is right, its distance too long (one 0.5 m off was put 1.5 m away, at the wall). An agent that believes
-// edgeLookPoint marks such a place (edgeSeen(X, Z)); taken, it is looked for from the look point
-// (look-points' grid) nearest it, with a whole look around there, not by driving to the place itself
-edgeCut(Off, Dist) :- edgeLookPoint & cameraFov(F) & math.abs(Off) + math.atan(0.0125 / Dist) * 180 / math.pi > F / 2 - 0.5.
-gridPointNear(Cx, Cz, Gx, Gz) :- lookSpacing(S) & arena(W, D) & Nx = math.ceil(W / S) & Nz = math.ceil(D / S)
-    & .findall(d(D2, X, Z), .range(I, 0, Nx - 1) & .range(J, 0, Nz - 1) & X = -W / 2 + (I + 0.5) * W / Nx
-               & Z = -D / 2 + (J + 0.5) * D / Nz & offStorage(X, Z) & D2 = (X - Cx) * (X - Cx) + (Z - Cz) * (Z - Cz), L)
-    & L = [_ | _] & .min(L, d(_, Gx, Gz)).
 seenNear(Cx, Cz, R, X, Z) :- seenCylinder(X, Z) & (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z) < R * R.
 
 /* Remembering and forgetting */
@@ -63,7 +53,7 @@ sightingOff(Off, Dist) :- towardsStored(Off, Dist).
 
 @rememberSighting
 +cylinderSighted(Off, Dist) : sightedAt(Off, Dist, Cx, Cz) & not nearStored(Cx, Cz) & not towardsStored(Off, Dist) & sameSighting(R)
-    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz); if (edgeCut(Off, Dist)) { +edgeSeen(Cx, Cz) }.
+    <- !forgetNear(Cx, Cz, R); +seenCylinder(Cx, Cz).
 @sightingNotRemembered +cylinderSighted(_, _).
 
 // a homing that lost sight of its cylinder (far sight then looks away a while): the cylinder is
@@ -126,13 +116,6 @@ pickedAt(X, Z) :- location(X, _, Z) & not orientation(_).
 // now (a homing lost from sight remembers one and looks again; the sweep's step took it first, and the
 // failure ended the motion loop: tidy-up world 236 × 2 stopped at 366 s)
 @lookAgainNothing +!lookAgain : not seenCylinder(_, _).
-@lookAgainEdge
-+!lookAgain : edgeLookPoint & location(X, _, Z)
-              & .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L) & .min(L, d(_, Cx, Cz))
-              & edgeSeen(Cx, Cz) & gridPointNear(Cx, Cz, Gx, Gz)
-    <- -seenCylinder(Cx, Cz); .abolish(edgeSeen(Cx, Cz)); .abolish(lookingAgain(_, _, _));
-       println("Looking from the look point nearest a place seen at the image's edge");
-       .system_time(T); -+waypoint(Gx, Gz, T); -+lookPointSet(Gx, Gz, T); -+closest(1000); -+closerAt(T).
 @lookAgain
 +!lookAgain : location(X, _, Z)
     <- .findall(d(D2, Cx, Cz), seenCylinder(Cx, Cz) & D2 = (Cx - X) * (Cx - X) + (Cz - Z) * (Cz - Z), L);
