@@ -27,7 +27,7 @@ class AgentSpeakSkillTest {
         Path dir = Path.of(System.getProperty("jacabot.projectDir", ".")).resolve("src/test/asl");
         List<Path> units = AslTestRunner.discover(List.of(dir));
         assertFalse(units.isEmpty(), "AgentSpeak tests in " + dir);
-        var runner = new AslTestRunner(null, Duration.ofSeconds(60), 0, null);
+        var runner = new AslTestRunner(null, Duration.ofSeconds(60), 0, null, true);
         var nodes = new ArrayList<DynamicNode>();
         for (Path unit : units) {
             AslTestRunner.UnitResult r = runner.run(unit);

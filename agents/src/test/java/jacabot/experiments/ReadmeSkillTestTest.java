@@ -28,7 +28,7 @@ class ReadmeSkillTestTest {
         Files.createDirectories(dir.resolve("src/main"));
         Files.createSymbolicLink(dir.resolve("src/main/asl"), project.resolve("src/main/asl").toAbsolutePath());
         Path unit = Files.writeString(dir.resolve("src/test/asl/readme_test.asl"), test);
-        List<AslTestCase> cases = new AslTestRunner(null, Duration.ofSeconds(60), 0, null).run(unit).cases();
+        List<AslTestCase> cases = new AslTestRunner(null, Duration.ofSeconds(60), 0, null, true).run(unit).cases();
         assertFalse(cases.isEmpty());
         for (AslTestCase c : cases) {
             assertTrue(c.passed(), c.test() + ": " + c.message());

@@ -44,6 +44,12 @@ final class TestCommand implements Callable<Integer> {
     @Option(names = "--classpath", paramLabel = "PATH", description = "more class path entries for test projects' artifacts")
     private List<String> classpath = new ArrayList<>();
 
+    @Option(names = "--simulated-time", description = "run each test file on simulated time, in one thread: when every "
+            + "agent is idle the clock jumps to the next timer, so .wait(300) takes no real time and the agents have done "
+            + "all they could before it ends, however loaded the machine; a run where nothing more can happen ends at once. "
+            + "Test projects keep the wall clock. Default: the wall clock, an agent per thread, as Jason's test framework")
+    private boolean simulatedTime;
+
     @Option(names = {"-v", "--verbose"}, description = "also print the agents' console")
     private boolean verbose;
 
@@ -81,7 +87,7 @@ final class TestCommand implements Callable<Integer> {
             var classes = ProjectClasses.prepare(mas2j, entries);
             classes.classpath().warnings().forEach(err::println);
             Thread.currentThread().setContextClassLoader(classes.loader());
-        });
+        }, simulatedTime);
         long passed = 0;
         long failed = 0;
         for (Path unit : units) {

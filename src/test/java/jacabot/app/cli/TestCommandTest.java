@@ -36,6 +36,21 @@ class TestCommandTest {
                 .contains("failures=\"1\""));
     }
 
+    /** --simulated-time: a minute's wait costs no real time, and the clock the agent reads says a minute went by. */
+    @Test
+    void simulatedTimeMakesAWaitCostNothing(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("t.asl"), """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_wait <- .system_time(T0); .wait(60000); .system_time(T1); !assert_equals(60000, T1 - T0).
+                """);
+        long start = System.nanoTime();
+        String[] r = CliRun.run("test", "--simulated-time", dir.toString());
+        assertEquals("0", r[0], r[1] + r[2]);
+        assertTrue(r[1].contains("  passed  t test_wait assert_equals"), r[1]);
+        assertTrue(System.nanoTime() - start < 30_000_000_000L, "well under the minute waited");
+    }
+
     /** A test file that does not read is an ERROR whose every error line stays indented under it. */
     @Test
     void aFileThatDoesNotReadIsAnErrorIndentedUnderItsUnit(@TempDir Path dir) throws Exception {

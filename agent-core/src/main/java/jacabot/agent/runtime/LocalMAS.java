@@ -51,6 +51,9 @@ public final class LocalMAS {
     /** Whether the stepping thread waits (or is about to): only then does a wake take its lock. */
     private volatile boolean steppingAsleep;
     private final CountDownLatch finished = new CountDownLatch(1);
+    /** In {@link #runSimulated}: the time {@code .stopMAS(T)} stops the system at (else a thread sleeps T). */
+    private volatile long simulatedStopDue = Long.MAX_VALUE;
+    private volatile SimulatedTime simulatedTime;
     /** Stepping: told of an agent whose reasoning cycle threw; null: the throw ends the step. */
     private volatile BiConsumer<String, Throwable> onAgentDied;
 
@@ -223,6 +226,11 @@ public final class LocalMAS {
         for (Agent a : agentList()) {
             a.postExternalEvent(event);
         }
+        SimulatedTime time = simulatedTime;
+        if (time != null) {
+            simulatedStopDue = Math.min(simulatedStopDue, time.millis() + deadlineMs);
+            return;
+        }
         Thread timer = new Thread(() -> {
             try {
                 Thread.sleep(deadlineMs);
@@ -355,6 +363,39 @@ public final class LocalMAS {
                 stepLock.unlock();
             }
         }
+    }
+
+    /**
+     * Runs in stepping mode on simulated time until {@code .stopMAS} or {@link #stop()}: whenever
+     * every agent is idle, {@code time} jumps to the earliest timer due (or {@code .stopMAS(T)}'s
+     * deadline) instead of sleeping. Only for systems whose every event comes from the agents
+     * themselves: an environment acting on threads of its own would race simulated time.
+     * {@return false when the run ended because nothing could happen any more: every agent
+     * idle and no timer due}
+     */
+    public boolean runSimulated(SimulatedTime time) {
+        useClock(time);
+        simulatedTime = time;
+        while (!stopped) {
+            runUntilQuiescent(Long.MAX_VALUE);
+            if (stopped) {
+                break;
+            }
+            long due = simulatedStopDue;
+            for (Agent a : agentList()) {
+                if (!a.isStopped()) {
+                    due = Math.min(due, a.nextTimerDue());
+                }
+            }
+            if (due == Long.MAX_VALUE) {
+                return false;
+            }
+            time.advanceTo(due);
+            if (simulatedStopDue <= time.millis()) {
+                stop();
+            }
+        }
+        return true;
     }
 
     // ---- threads ----------------------------------------------------------------------------------

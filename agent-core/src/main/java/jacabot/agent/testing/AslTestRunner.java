@@ -5,6 +5,7 @@ import jacabot.agent.parser.AslSyntaxException;
 import jacabot.agent.runtime.DefaultEnvironment;
 import jacabot.agent.runtime.LocalMAS;
 import jacabot.agent.runtime.MasLauncher;
+import jacabot.agent.runtime.SimulatedTime;
 import jacabot.agent.semantics.Clock;
 import jacabot.agent.testing.AslTestCase.Status;
 import java.io.ByteArrayOutputStream;
@@ -33,7 +34,11 @@ import java.util.stream.Stream;
  *     actions answered by its {@code mock_operation} beliefs ({@link MockingArch});</li>
  * <li>a test project ({@code .mas2j} with a {@code test_manager} agent): run as {@code jacabot run} runs it.</li>
  * </ul>
- * A unit runs until its manager stops the system, or the timeout.
+ * A unit runs until its manager stops the system, or the timeout. By default on the wall clock, each
+ * agent on its own thread, as Jason's test framework runs; with simulated time, a test file runs in
+ * stepping mode and its clock jumps to the next timer when every agent is idle ({@link
+ * LocalMAS#runSimulated}), so that a {@code .wait(300)} before an assertion holds however loaded the
+ * machine is. A test project keeps the wall clock: its environment may act on threads of its own.
  */
 public final class AslTestRunner {
     /** Prepares a project before it is loaded (its artifacts' classes); a failure is the unit's error. */
@@ -74,13 +79,20 @@ public final class AslTestRunner {
     private final Duration timeout;
     private final long seed;
     private final ProjectSetup setup;
+    private final boolean simulatedTime;
 
     /** @param echo where the agents' console lines go as well (null: nowhere) */
     public AslTestRunner(Consumer<String> echo, Duration timeout, long seed, ProjectSetup setup) {
+        this(echo, timeout, seed, setup, false);
+    }
+
+    /** @param simulatedTime whether test files run on simulated time (test projects keep the wall clock) */
+    public AslTestRunner(Consumer<String> echo, Duration timeout, long seed, ProjectSetup setup, boolean simulatedTime) {
         this.echo = echo;
         this.timeout = timeout;
         this.seed = seed;
         this.setup = setup;
+        this.simulatedTime = simulatedTime;
     }
 
     /**
@@ -145,10 +157,9 @@ public final class AslTestRunner {
         var console = new PrintStream(new LineTap(parser, echo), true, StandardCharsets.UTF_8);
         String problem = null;
         try {
-            LocalMAS mas = file.toString().endsWith(".mas2j") ? loadProject(file, console) : loadTestFile(file, console);
-            if (!runBounded(mas)) {
-                problem = "timed out after " + timeout.toSeconds() + " s (the test manager did not stop the system)";
-            }
+            boolean project = file.toString().endsWith(".mas2j");
+            LocalMAS mas = project ? loadProject(file, console) : loadTestFile(file, console);
+            problem = runBounded(mas, simulatedTime && !project);
         } catch (MasLauncher.UserError e) {
             problem = e.getMessage();
         } catch (InterruptedException e) {
@@ -192,8 +203,8 @@ public final class AslTestRunner {
         return mas;
     }
 
-    /** {@return true when the system stopped by itself within the timeout} */
-    private boolean runBounded(LocalMAS mas) throws InterruptedException {
+    /** {@return null when the system stopped by itself within the timeout, else why not} */
+    private String runBounded(LocalMAS mas, boolean simulated) throws InterruptedException {
         var timedOut = new boolean[1];
         Thread watchdog = new Thread(() -> {
             try {
@@ -206,10 +217,20 @@ public final class AslTestRunner {
         }, "asl-test-timeout");
         watchdog.setDaemon(true);
         watchdog.start();
-        mas.runThreads();
+        boolean couldGoOn = true;
+        if (simulated) {
+            couldGoOn = mas.runSimulated(new SimulatedTime());
+        } else {
+            mas.runThreads();
+        }
         watchdog.interrupt();
         watchdog.join();
-        return !timedOut[0];
+        if (timedOut[0]) {
+            return "timed out after " + timeout.toSeconds() + " s (the test manager did not stop the system)";
+        }
+        // on the wall clock the run would wait for the timeout: nothing is left to happen
+        return couldGoOn ? null : "every agent idle and no timer due in simulated time: nothing more could happen "
+                + "(the test manager did not stop the system)";
     }
 
     /** Splits the console into lines for the parser, and echoes them. */

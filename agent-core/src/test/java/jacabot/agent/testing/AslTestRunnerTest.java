@@ -71,4 +71,39 @@ class AslTestRunnerTest {
         var r = new AslTestRunner(null, Duration.ofSeconds(60), 0, null).run(dir.resolve("proj/unit.mas2j"));
         assertEquals(List.of(new AslTestCase("t", "test_t", "force_pass", Status.PASSED, "")), r.cases());
     }
+
+    @Test
+    void simulatedTimeLetsTheAgentFinishBeforeAWaitEnds(@TempDir Path dir) throws Exception {
+        String busy = """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_busy <- !!count(20000); .wait(1); !assert_true(done).
+                +!count(0) <- +done.
+                +!count(N) <- !!count(N - 1).
+                """;
+        // 20000 reasoning cycles take far longer than 1 ms on the wall clock
+        var wall = new AslTestRunner(null, Duration.ofSeconds(60), 0, null).run(Files.writeString(dir.resolve("busy_test.asl"), busy));
+        assertEquals(Status.FAILED, wall.cases().get(0).status(), wall.cases().toString());
+        // and a minute of simulated time is no real time at all
+        Path file = Files.writeString(dir.resolve("busy_clock_test.asl"), busy + """
+                @[test]
+                +!test_clock <- .system_time(T0); .wait(60000); .system_time(T1); !assert_equals(60000, T1 - T0).
+                """);
+        var simulated = new AslTestRunner(null, Duration.ofSeconds(60), 0, null, true).run(file);
+        assertEquals(List.of(Status.PASSED, Status.PASSED), simulated.cases().stream().map(AslTestCase::status).toList());
+        assertTrue(simulated.millis() < 5000, simulated.millis() + " ms");
+    }
+
+    @Test
+    void simulatedTimeEndsARunThatCannotGoOnAtOnce(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("stuck_test.asl"), """
+                { include("tester_agent.asl") }
+                @[test]
+                +!test_stuck <- .wait({+never}); !force_pass.
+                """);
+        var r = new AslTestRunner(null, Duration.ofSeconds(60), 0, null, true).run(file);
+        assertEquals(Status.ERROR, r.cases().get(r.cases().size() - 1).status());
+        assertTrue(r.cases().get(r.cases().size() - 1).message().contains("nothing more could happen"), r.cases().toString());
+        assertTrue(r.millis() < 5000, r.millis() + " ms");
+    }
 }
