@@ -282,11 +282,11 @@ final class AstBuilder {
     }
 
     /**
-     * {@return the message of an operand of + or - that is no number, as {@link #operand} tells it}
-     * (for a later rule that knows its likely cause, {@link #amend})
+     * {@return the message of an operand that is no number, named by its grammar rule as Jason names
+     * it} ({@link #operand} tells it; a later rule that knows its likely cause finds it by it, {@link #amend})
      */
-    static String operandError(String which, Term t) {
-        return "ArithExpr: " + which + " operand '" + t + "' is not numeric or variable";
+    static String operandError(String rule, String which, Term t) {
+        return rule + ": " + which + " operand '" + t + "' is not numeric or variable";
     }
 
     /** {@return whether this term is no operand of arithmetic: an atom, a structure or a relation} */
@@ -306,7 +306,7 @@ final class AstBuilder {
      */
     private boolean operand(Term t, String rule, String which, ParserRuleContext ctx) {
         if (notNumeric(t)) {
-            errors.add(where(ctx), rule + ": " + which + " operand '" + t + "' is not numeric or variable");
+            errors.add(where(ctx), operandError(rule, which, t));
             return true;
         }
         return false;

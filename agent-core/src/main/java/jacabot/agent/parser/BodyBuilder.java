@@ -214,7 +214,7 @@ final class BodyBuilder {
         if (which == null) {
             return false;
         }
-        ast.amend(a.src(), AstBuilder.operandError(which, which.equals("first") ? a.left() : a.right()),
+        ast.amend(a.src(), AstBuilder.operandError("ArithExpr", which, which.equals("first") ? a.left() : a.right()),
                 " (a ';' missing before '" + a.op() + a.right() + "'?)");
         return true;
     }

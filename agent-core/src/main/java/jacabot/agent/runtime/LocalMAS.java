@@ -402,21 +402,19 @@ public final class LocalMAS {
 
     /** An agent created while the system runs: it gets its own thread when agents have threads. */
     String spawn(String name, AgentProgram program, AslParser parser) {
-        Agent ag;
-        synchronized (this) {
-            ag = createAgent(newAgentName(name), program, parser, null);
-        }
-        return start(ag);
+        return start(createUnderFreeName(name, program, parser));
     }
 
     /** A copy of an agent: its beliefs are there from the start, without {@code +b} events. */
     String spawnCopy(String name, AgentProgram program, AslParser parser) {
-        Agent ag;
-        synchronized (this) {
-            ag = createAgent(newAgentName(name), program, parser, null);
-        }
+        Agent ag = createUnderFreeName(name, program, parser);
         ag.circumstance().eventList().forEach(ag.circumstance()::removeEvent);
         return start(ag);
+    }
+
+    /** Creates an agent under {@code name} or, when it is taken, Jason's next free one ({@link #newAgentName}). */
+    private synchronized Agent createUnderFreeName(String name, AgentProgram program, AslParser parser) {
+        return createAgent(newAgentName(name), program, parser, null);
     }
 
     private String start(Agent ag) {
