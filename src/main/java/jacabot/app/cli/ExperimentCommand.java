@@ -166,9 +166,7 @@ final class ExperimentCommand implements Callable<Integer> {
                     + "option (jacabot controller --lockstep --pipeline)" : baseline ? "the baseline has no agent to pipeline"
                     : "--break halts the agent with the world a step ahead: drop one of them"));
         }
-        if (baseline && agent != null) { // before the agent file is looked for: the baseline would not read it
-            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
-        }
+        agentOrBaseline(baseline, agent);
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be in 0..65535 (0: a free port), got " + port);
         }
@@ -480,6 +478,13 @@ final class ExperimentCommand implements Callable<Integer> {
             return null;
         }
         return labels;
+    }
+
+    /** Refuses {@code --agent} with {@code --baseline}, before the agent file is looked for: the baseline would not read it. */
+    static void agentOrBaseline(boolean baseline, Path agent) {
+        if (baseline && agent != null) {
+            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
+        }
     }
 
     /** Makes the output directory now, so a bad --out is told before the run, not after it. */

@@ -113,9 +113,7 @@ final class TeamExperimentCommand implements Callable<Integer> {
         }
         ConsoleLog log = verbosity.console(commandSpec);
         double seconds = ExperimentCommand.duration(duration);
-        if (baseline && agent != null) { // before the agent file is looked for: the baseline would not read it
-            throw new UserError("--agent: not with --baseline (the baseline is the procedural controller, no agent): drop one of them");
-        }
+        ExperimentCommand.agentOrBaseline(baseline, agent);
         Path worldFile = world != null ? Installation.locate(world) : Installation.resolve("worlds/team-delivery.json");
         WorldSpec spec = teamWorld(worldFile, robots);
         long runSeed = seed != null ? seed : spec.seed();
